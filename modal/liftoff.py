@@ -1,0 +1,302 @@
+"""Lift-off of a massless body resting on the pole, criteria (i) and (ii) of §3(a).
+
+Written once for every backend: it takes any pole motion that yields u, u_t and
+u_tt -- a :class:`~modal.series.ModalSeries` in closed form, or samples from a
+time integrator wrapped in :class:`SampledPoleMotion`.  Everything here is
+dimensionless (length R, time 1/c, gravity gamma = g/(R c^2)).
+
+Criterion (i): the contact force ``u_tt + gamma`` crosses zero from above at t_l > 0.
+Criterion (ii): the body moves up, ``u_t(t_l) > 0``, and its ballistic path
+``s(t) = u(t_l) + v_l (t - t_l) - gamma (t - t_l)^2 / 2`` stays strictly above the
+pole over the re-contact horizon: to the end of the modelled window (``window``,
+the default) or for ``t - t_l < t_l`` as written in §3(a)(ii) (``paper``).
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+from typing import Literal, Protocol, runtime_checkable
+
+import numpy as np
+from numpy.typing import ArrayLike
+from scipy.interpolate import BPoly
+
+from .errors import NumericalError, ParameterError
+from .roots import bracketed_roots
+from .series import PoleState
+
+Horizon = Literal["window", "paper"]
+HORIZONS: tuple[str, ...] = ("window", "paper")
+DEFAULT_T_END = 4.0 * math.pi  # dimensionless window: two transits of the wave (4 pi / c seconds)
+TIME_TOLERANCE = 1e-12  # dimensionless time accuracy of every refined root
+
+
+@runtime_checkable
+class PoleMotion(Protocol):
+    """Anything that gives the pole's u, u_t, u_tt at arbitrary times (dimensionless)."""
+
+    @property
+    def max_frequency(self) -> float:
+        """Highest angular frequency present; sets the bracketing grid."""
+
+    def pole(self, t: ArrayLike) -> PoleState:
+        """Pole displacement, velocity and acceleration at times ``t``."""
+
+
+class SampledPoleMotion:
+    """Pole motion known at sample times, interpolated by quintic Hermite splines.
+
+    The spline matches u, u_t and u_tt at every sample, so its second derivative
+    is continuous and equals the sampled acceleration at the samples.  The
+    lift-off search brackets on the sample times themselves.
+
+    Parameters
+    ----------
+    t, u, u_t, u_tt : array_like, shape (M,)
+        Increasing sample times and the pole's displacement, velocity and
+        acceleration there (dimensionless).
+    """
+
+    def __init__(self, t: ArrayLike, u: ArrayLike, u_t: ArrayLike, u_tt: ArrayLike) -> None:
+        t = np.asarray(t, dtype=float)
+        data = np.column_stack([np.asarray(v, dtype=float) for v in (u, u_t, u_tt)])
+        if t.ndim != 1 or t.size < 2 or data.shape[0] != t.size:
+            raise ValueError("samples must be 1-D arrays of equal length >= 2")
+        if not np.all(np.diff(t) > 0):
+            raise ValueError("sample times must increase")
+        if not np.all(np.isfinite(data)):
+            raise NumericalError("pole samples contain NaN or inf")
+        self.times = t
+        self._spline = BPoly.from_derivatives(t, data.tolist(), extrapolate=False)
+        self._velocity = self._spline.derivative(1)
+        self._acceleration = self._spline.derivative(2)
+
+    @property
+    def grid_times(self) -> np.ndarray:
+        """The sample times, used as the bracketing grid."""
+        return self.times
+
+    @property
+    def max_frequency(self) -> float:
+        """The frequency resolved at 16 samples per period by the coarsest sample spacing."""
+        return 2.0 * math.pi / (16.0 * float(np.max(np.diff(self.times))))
+
+    def pole(self, t: ArrayLike) -> PoleState:
+        """Interpolated u, u_t, u_tt at ``t`` (inside the sampled range)."""
+        t = np.asarray(t, dtype=float)
+        return PoleState(self._spline(t), self._velocity(t), self._acceleration(t))
+
+
+@dataclass(frozen=True)
+class Candidate:
+    """A zero of the contact force ``u_tt + gamma`` crossed from above (dimensionless).
+
+    ``reason`` says why it was rejected (empty for the accepted one); ``clearance``
+    is the smallest gap ``s - u`` found over the horizon (negative: re-contact);
+    ``recontact`` the time at which the body would touch the pole again.
+    """
+
+    t: float
+    displacement: float
+    velocity: float
+    accepted: bool
+    reason: str
+    clearance: float | None = None
+    recontact: float | None = None
+
+
+@dataclass(frozen=True)
+class LiftoffResult:
+    """Outcome of the lift-off search (dimensionless).
+
+    ``lifted`` False with ``t``/``velocity`` None is a normal result: no candidate
+    passed both criteria within the window.
+    """
+
+    lifted: bool
+    t: float | None
+    velocity: float | None
+    displacement: float | None
+    candidates: tuple[Candidate, ...]
+    gamma: float
+    t_end: float
+    horizon: str
+
+    @property
+    def rejected(self) -> tuple[Candidate, ...]:
+        """The candidates before the accepted one, each with its reason."""
+        return tuple(c for c in self.candidates if not c.accepted)
+
+
+def bracketing_grid(motion: PoleMotion, t_end: float, samples_per_period: int) -> np.ndarray:
+    """Grid on [0, t_end] with at least ``samples_per_period`` points per shortest period."""
+    grid = getattr(motion, "grid_times", None)
+    if grid is not None:
+        grid = np.asarray(grid, dtype=float)
+        return grid[(grid >= 0.0) & (grid <= t_end)]
+    omega = max(float(motion.max_frequency), 1.0)
+    count = math.ceil(t_end * omega * samples_per_period / (2.0 * math.pi)) + 1
+    return np.linspace(0.0, t_end, max(count, 2))
+
+
+def _refine(f, lower: np.ndarray, upper: np.ndarray) -> np.ndarray:
+    """Roots of ``f(t, index)`` in the brackets [lower, upper], all at once, to 1e-12."""
+    return bracketed_roots(f, np.asarray(lower), np.asarray(upper), xtol=TIME_TOLERANCE)
+
+
+def _check_options(gamma: float, t_end: float, horizon: str, samples_per_period: int) -> None:
+    if not (math.isfinite(gamma) and gamma > 0):
+        raise ParameterError("gamma", "a finite number > 0", gamma)
+    if not (math.isfinite(t_end) and t_end > 0):
+        raise ParameterError("--t-end", "a finite time > 0", t_end)
+    if horizon not in HORIZONS:
+        raise ParameterError("--recontact", "one of window, paper", horizon)
+    if samples_per_period < 16:
+        raise ParameterError("samples_per_period", "an integer >= 16", samples_per_period)
+
+
+def find_liftoff(
+    motion: PoleMotion,
+    gamma: float,
+    t_end: float = DEFAULT_T_END,
+    horizon: Horizon = "window",
+    samples_per_period: int = 16,
+) -> LiftoffResult:
+    """First time the body lifts off the pole and is not caught again, §3(a) (i)-(ii).
+
+    Parameters
+    ----------
+    motion : PoleMotion
+        Pole motion (a ModalSeries, a SampledPoleMotion, ...), dimensionless.
+    gamma : float
+        Dimensionless gravity ``g / (R c^2)``; lift-off needs ``u_tt = -gamma``.
+    t_end : float
+        End of the modelled window (dimensionless; default 4 pi).
+    horizon : {"window", "paper"}
+        Re-contact horizon: to ``t_end``, or ``t - t_l < t_l`` (capped at t_end).
+    samples_per_period : int
+        Bracketing grid density for the highest frequency (>= 16).
+
+    Returns
+    -------
+    LiftoffResult
+        The accepted time and velocity (dimensionless) and every earlier candidate
+        with the reason it was rejected.
+    """
+    _check_options(gamma, t_end, horizon, samples_per_period)
+    grid = bracketing_grid(motion, t_end, samples_per_period)
+    u, u_t, u_tt = motion.pole(grid)
+    force = u_tt + gamma
+    down = np.flatnonzero((force[:-1] > 0.0) & (force[1:] <= 0.0))
+    times = _refine(lambda t, i: motion.pole(t).u_tt + gamma, grid[down], grid[down + 1])
+    state = motion.pole(times)
+    # Too close to t_l the gap s - u ~ |u_ttt| (t - t_l)^3 / 6 is below round-off; skip it.
+    skip = 1e-2 / max(float(motion.max_frequency), 1.0)
+    path = _Ballistic(motion, gamma)
+    verdicts: list[tuple[bool, str, float | None]] = []
+    brackets: list[tuple[int, float, float]] = []  # (candidate, lower, upper) of a re-contact
+    for k, (t_l, u_l, v_l) in enumerate(zip(times, state.u, state.u_t, strict=True)):
+        if v_l <= 0.0:
+            verdicts.append((False, "moving down (u_t <= 0)", None))
+            continue
+        end = t_end if horizon == "window" else min(2.0 * t_l, t_end)
+        clearance, bracket = path.clearance(grid, u, u_t, t_l, u_l, v_l, t_l + skip, end)
+        if bracket is None:
+            verdicts.append((True, "", clearance))
+            break
+        verdicts.append((False, "re-contact", clearance))
+        brackets.append((k, *bracket))
+    recontact = path.first_contacts(brackets, times, state)
+    candidates = tuple(
+        Candidate(
+            float(times[k]),
+            float(state.u[k]),
+            float(state.u_t[k]),
+            accepted,
+            reason,
+            clearance,
+            recontact.get(k),
+        )
+        for k, (accepted, reason, clearance) in enumerate(verdicts)
+    )
+    if candidates and candidates[-1].accepted:
+        last = candidates[-1]
+        return LiftoffResult(
+            True, last.t, last.velocity, last.displacement, candidates, gamma, t_end, horizon
+        )
+    return LiftoffResult(False, None, None, None, candidates, gamma, t_end, horizon)
+
+
+class _Ballistic:
+    """Gap ``s - u`` between the free body's parabola and the pole after a lift-off."""
+
+    def __init__(self, motion: PoleMotion, gamma: float) -> None:
+        self.motion = motion
+        self.gamma = gamma
+
+    def clearance(
+        self,
+        grid: np.ndarray,
+        u: np.ndarray,
+        u_t: np.ndarray,
+        t_l: float,
+        u_l: float,
+        v_l: float,
+        start: float,
+        end: float,
+    ) -> tuple[float, tuple[float, float] | None]:
+        """Smallest gap on (start, end] and a bracket of the first re-contact, if any.
+
+        The gap is checked at the grid points; where it stays positive there, also at
+        every local minimum between them (zeros of ``s' - u_t`` crossed from below,
+        refined to 1e-12).  ``start`` only anchors brackets: its gap is round-off.
+        """
+        gamma, motion = self.gamma, self.motion
+        inside = (grid > start) & (grid < end)
+        edge = motion.pole(np.array([start, end]))
+        t = np.concatenate([[start], grid[inside], [end]])
+        dt = t - t_l
+        gaps = (
+            u_l
+            + v_l * dt
+            - 0.5 * gamma * dt * dt
+            - np.concatenate([[edge.u[0]], u[inside], [edge.u[1]]])
+        )
+        closed = np.flatnonzero(gaps[1:] <= 0.0)
+        if closed.size:
+            first = closed[0] + 1
+            return float(gaps[1:].min()), (float(t[first - 1]), float(t[first]))
+        slopes = v_l - gamma * dt - np.concatenate([[edge.u_t[0]], u_t[inside], [edge.u_t[1]]])
+        rising = np.flatnonzero((slopes[:-1] < 0.0) & (slopes[1:] >= 0.0))
+        minima = _refine(
+            lambda x, i: v_l - gamma * (x - t_l) - motion.pole(x).u_t, t[rising], t[rising + 1]
+        )
+        dm = minima - t_l
+        low = u_l + v_l * dm - 0.5 * gamma * dm * dm - motion.pole(minima).u
+        clearance = float(min(gaps[1:].min(), low.min(initial=np.inf)))
+        closed = np.flatnonzero(low <= 0.0)
+        if closed.size == 0:
+            return clearance, None
+        first = closed[0]
+        return clearance, (float(t[rising[first]]), float(minima[first]))
+
+    def first_contacts(
+        self, brackets: list[tuple[int, float, float]], times: np.ndarray, state: PoleState
+    ) -> dict[int, float]:
+        """Refine every re-contact bracket at once: candidate index -> re-contact time."""
+        if not brackets:
+            return {}
+        which = np.array([b[0] for b in brackets])
+        t_l, u_l, v_l = times[which], state.u[which], state.u_t[which]
+        gamma, motion = self.gamma, self.motion
+
+        def gap(x: np.ndarray, i: np.ndarray) -> np.ndarray:
+            dt = x - t_l[i]
+            return u_l[i] + v_l[i] * dt - 0.5 * gamma * dt * dt - motion.pole(x).u
+
+        lower = np.array([b[1] for b in brackets])
+        upper = np.array([b[2] for b in brackets])
+        # a bracket whose lower end already touches (gap <= 0 at the grid) keeps its upper end
+        roots = _refine(gap, lower, upper)
+        return {int(k): float(r) for k, r in zip(which, roots, strict=True)}

@@ -1,0 +1,136 @@
+"""Lift-off in SI units: the edge between the dimensionless solvers and people.
+
+One function turns any backend's pole motion into the same report, so the
+Legendre series and the finite elements are judged by one lift-off check.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field
+from typing import Any
+
+from .filters import FilterKind, SpectralFilter
+from .legendre import legendre_series
+from .liftoff import DEFAULT_T_END, Horizon, LiftoffResult, PoleMotion, find_liftoff
+from .parameters import Case
+
+
+@dataclass(frozen=True)
+class LiftoffReport:
+    """A lift-off result with its case, in SI units (seconds, m/s).
+
+    Attributes
+    ----------
+    case : Case
+        The impact (SI).
+    result : LiftoffResult
+        The dimensionless outcome of :func:`modal.liftoff.find_liftoff`.
+    backend : str
+        Which solver produced the pole motion (``legendre``, ``fem``).
+    sigma, recontact : str
+        Filter and re-contact horizon used.
+    extra : dict
+        Backend details (DOFs, modes used, mesh, ...), passed through to JSON.
+    """
+
+    case: Case
+    result: LiftoffResult
+    backend: str
+    sigma: str
+    recontact: str
+    extra: dict[str, Any] = field(default_factory=dict)
+
+    @property
+    def t_liftoff_s(self) -> float | None:
+        """Lift-off time t_l [s] after maximal compression, or None."""
+        return None if self.result.t is None else self.result.t * self.case.scalings.time
+
+    @property
+    def v_liftoff_m_s(self) -> float | None:
+        """Lift-off velocity v_l [m/s] (upwards), or None."""
+        if self.result.velocity is None:
+            return None
+        return self.result.velocity * self.case.scalings.velocity
+
+    @property
+    def ratio(self) -> float | None:
+        """``v_l / |v0|``, the rebound ratio of the upper body (Fig. 11, 12)."""
+        v = self.v_liftoff_m_s
+        return None if v is None else v / self.case.v0
+
+    def as_dict(self) -> dict[str, Any]:
+        """JSON-ready dictionary (SI units; keys end in their unit)."""
+        scale = self.case.scalings
+        rejected = [
+            {
+                "t_s": c.t * scale.time,
+                "v_m_s": c.velocity * scale.velocity,
+                "u_m": c.displacement * scale.length,
+                "reason": c.reason,
+                "recontact_s": None if c.recontact is None else c.recontact * scale.time,
+                "clearance_m": None if c.clearance is None else c.clearance * scale.length,
+            }
+            for c in self.result.rejected
+        ]
+        data: dict[str, Any] = {
+            "lifted": self.result.lifted,
+            "t_liftoff_s": self.t_liftoff_s,
+            "v_liftoff_m_s": self.v_liftoff_m_s,
+            "ratio": self.ratio,
+            "phi_a": self.case.phi_a,
+            "gamma": self.case.gamma,
+            "backend": self.backend,
+            "rejected": rejected,
+            "radius_m": self.case.radius,
+            "wave_speed_1_s": self.case.wave_speed,
+            "v0_m_s": self.case.v0,
+            "damping": self.case.damping,
+            "modes": self.case.modes,
+            "sigma": self.sigma,
+            "recontact": self.recontact,
+            "t_end_s": self.result.t_end * scale.time,
+        }
+        data.update(self.extra)
+        return data
+
+
+def t_end_dimensionless(case: Case, t_end_s: float | None) -> float:
+    """The modelled window in units of 1/c; default 4 pi (i.e. 4 pi / c seconds)."""
+    if t_end_s is None:
+        return DEFAULT_T_END
+    from .errors import ParameterError
+
+    if not (math.isfinite(t_end_s) and t_end_s > 0):
+        raise ParameterError("--t-end", "a time > 0 [s]", t_end_s)
+    return float(t_end_s) / case.scalings.time
+
+
+def report_liftoff(
+    case: Case,
+    motion: PoleMotion,
+    *,
+    backend: str,
+    sigma: str,
+    recontact: Horizon = "window",
+    t_end_s: float | None = None,
+    extra: dict[str, Any] | None = None,
+) -> LiftoffReport:
+    """Apply the shared lift-off criteria to any backend's pole motion; report in SI."""
+    result = find_liftoff(
+        motion, case.gamma, t_end=t_end_dimensionless(case, t_end_s), horizon=recontact
+    )
+    return LiftoffReport(case, result, backend, sigma, recontact, dict(extra or {}))
+
+
+def legendre_liftoff(
+    case: Case,
+    sigma: FilterKind = "lanczos",
+    recontact: Horizon = "window",
+    t_end_s: float | None = None,
+) -> LiftoffReport:
+    """Lift-off of the closed-form CEM, eqs. (3.12)-(3.16) with criteria (i)-(ii) of §3(a)."""
+    series = legendre_series(case.phi_a, case.damping, SpectralFilter(sigma, case.modes))
+    return report_liftoff(
+        case, series, backend="legendre", sigma=sigma, recontact=recontact, t_end_s=t_end_s
+    )

@@ -1,0 +1,112 @@
+"""The twoball command line: JSON contract, tables, and one-line errors with exit status 2."""
+
+import json
+import math
+import shutil
+import subprocess
+import sys
+
+import pytest
+
+from verify.cli import main
+
+
+def run(capsys, *argv):
+    code = main(list(argv))
+    out = capsys.readouterr()
+    return code, out.out, out.err
+
+
+def test_liftoff_json_contract(capsys):
+    code, out, _ = run(capsys, "liftoff", "--json")
+    data = json.loads(out)
+    assert code == 0
+    for key in ("lifted", "t_liftoff_s", "v_liftoff_m_s", "ratio", "phi_a", "gamma", "backend"):
+        assert key in data
+    assert data["backend"] == "legendre" and data["lifted"] is True
+    assert data["t_liftoff_s"] == pytest.approx(0.0099, rel=0.01)
+    assert data["ratio"] == pytest.approx(data["v_liftoff_m_s"] / 4.1)
+    assert isinstance(data["rejected"], list) and data["rejected"][0]["reason"]
+
+
+def test_liftoff_table_for_people(capsys):
+    code, out, _ = run(capsys, "liftoff")
+    assert code == 0 and "t_l [ms]" in out and "v_l [m/s]" in out
+
+
+def test_v0_without_phi_a_uses_eq_3_7(capsys):
+    _, out, _ = run(capsys, "liftoff", "--v0", "-4.1", "--json")
+    assert json.loads(out)["phi_a"] == pytest.approx(2.5928, abs=1e-4)
+
+
+def test_pressure_and_mass_give_the_wave_speed(capsys):
+    _, out, _ = run(capsys, "liftoff", "--pressure", "77200", "--mass", "0.567", "--json")
+    assert json.loads(out)["wave_speed_1_s"] == pytest.approx(320.40, abs=0.01)
+
+
+def test_sweep_json_in_order(capsys):
+    code, out, _ = run(capsys, "sweep", "--param", "v0", "--values", "2:8:4", "--json")
+    data = json.loads(out)
+    assert code == 0 and [d["v0_m_s"] for d in data] == pytest.approx([2, 4, 6, 8])
+    assert len({d["phi_a"] for d in data}) == 4  # phi_a re-derived per value
+
+
+def test_sweep_modes(capsys):
+    code, out, _ = run(capsys, "sweep", "--param", "modes", "--values", "30:60:2", "--json")
+    assert code == 0 and [d["modes"] for d in json.loads(out)] == [30, 60]
+
+
+@pytest.mark.parametrize(
+    ("argv", "flag"),
+    [
+        (["liftoff", "--radius", "0"], "--radius"),
+        (["liftoff", "--radius", "-0.1"], "--radius"),
+        (["liftoff", "--damping", "1"], "--damping"),
+        (["liftoff", "--damping", "-0.01"], "--damping"),
+        (["liftoff", "--phi-a", "1.2"], "--phi-a"),
+        (["liftoff", "--phi-a", "3.2"], "--phi-a"),
+        (["liftoff", "--preset", "volleyball"], "--preset"),
+        (["liftoff", "--modes", "0"], "--modes"),
+        (["liftoff", "--v0", "0"], "--v0"),
+        (["liftoff", "--wave-speed", "-3"], "--wave-speed"),
+        (["liftoff", "--pressure", "77200"], "--pressure"),
+        (["liftoff", "--wave-speed", "300", "--pressure", "1", "--mass", "1"], "--wave-speed"),
+        (["liftoff", "--t-end", "-1"], "--t-end"),
+        (["liftoff", "--sigma", "hann"], "--sigma"),
+        (["liftoff", "--recontact", "never"], "--recontact"),
+        (["liftoff", "--damping", "abc"], "--damping"),
+        (["liftoff", "--radius", "nan"], "--radius"),
+        (["sweep", "--param", "damping", "--values", "0:1"], "--values"),
+        (["sweep", "--param", "damping", "--values", "a:b:3"], "--values"),
+        (["sweep", "--param", "damping", "--values", "0:0.5:0"], "--values"),
+        (["sweep", "--param", "modes", "--values", "1:2:3"], "--values"),
+        (["sweep", "--param", "mass", "--values", "0:1:3"], "--param"),
+        (["sweep", "--param", "damping", "--values", "0:1:3"], "--damping"),
+    ],
+)
+def test_bad_input_is_one_line_exit_2(capsys, argv, flag):
+    with pytest.raises(SystemExit) as stop:
+        main(argv)
+    err = capsys.readouterr().err
+    assert stop.value.code == 2
+    lines = err.strip().splitlines()
+    assert len(lines) == 1, err
+    assert flag in lines[0] and "Traceback" not in err
+
+
+def test_console_script_error_has_no_traceback():
+    exe = shutil.which("twoball")
+    cmd = [exe] if exe else [sys.executable, "-m", "verify.cli"]
+    proc = subprocess.run(
+        [*cmd, "liftoff", "--damping", "2"], capture_output=True, text=True, check=False
+    )
+    assert proc.returncode == 2
+    assert proc.stderr.strip() == "twoball: error: --damping must be in [0, 1), got 2.0"
+    assert proc.stdout == ""
+
+
+def test_no_liftoff_is_a_normal_result(capsys):
+    code, out, _ = run(capsys, "liftoff", "--damping", "0.9", "--json")
+    data = json.loads(out)
+    assert code == 0 and data["lifted"] is False and data["t_liftoff_s"] is None
+    assert math.isfinite(data["gamma"])

@@ -1,0 +1,82 @@
+"""Case parameters, scalings and presets (SI edge of the model)."""
+
+import math
+
+import pytest
+
+from modal.errors import ParameterError
+from modal.parameters import PRESETS, Case, Scalings, preset, wave_speed_from_pressure
+
+
+def test_table2_wave_speed_from_pressure():
+    # Table 2: P = 77200 Pa, m = 0.567 kg, R = 0.12 m gives c ~ 320 1/s
+    c = wave_speed_from_pressure(77200.0, 0.567, 0.12)
+    tension, density = 77200 * 0.12 / 2, 0.567 / (4 * math.pi * 0.12**2)
+    assert c == pytest.approx(math.sqrt(tension / density) / 0.12, rel=1e-15)
+    assert c == pytest.approx(320.0, rel=0.01)
+
+
+def test_scalings_units():
+    s = Scalings(0.12, 320.0)
+    assert s.time == pytest.approx(1 / 320)
+    assert s.velocity == pytest.approx(0.12 * 320)
+    assert s.acceleration == pytest.approx(0.12 * 320**2)
+    assert s.gamma == pytest.approx(9.81 / (0.12 * 320**2))
+
+
+def test_basketball_preset():
+    case = preset("basketball")
+    assert (case.radius, case.wave_speed, case.v0, case.phi_a) == (0.12, 320.0, 4.1, 2.6)
+    assert (case.damping, case.modes) == (0.13, 30)
+    assert PRESETS["basketball"] is case
+
+
+def test_negative_speed_is_a_speed():
+    assert Case(v0=-4.1).v0 == 4.1
+
+
+def test_derive_rederives_phi_a_only_for_v0_c_r():
+    case = preset("basketball")
+    assert case.derive(damping=0.2).phi_a == 2.6
+    moved = case.derive(v0=4.1)
+    assert moved.phi_a != 2.6 and 2.5 < moved.phi_a < 2.7
+    assert case.derive(v0=5.0, phi_a=2.4).phi_a == 2.4
+
+
+def test_from_measurements_pressure():
+    case = Case.from_measurements(radius=0.12, v0=4.1, pressure=77200, mass=0.567)
+    assert case.wave_speed == pytest.approx(320.40, abs=0.01)
+
+
+@pytest.mark.parametrize(
+    ("changes", "flag"),
+    [
+        ({"radius": 0.0}, "--radius"),
+        ({"radius": -1.0}, "--radius"),
+        ({"wave_speed": 0.0}, "--wave-speed"),
+        ({"damping": 1.0}, "--damping"),
+        ({"damping": -0.1}, "--damping"),
+        ({"phi_a": math.pi / 2}, "--phi-a"),
+        ({"phi_a": math.pi}, "--phi-a"),
+        ({"modes": 0}, "--modes"),
+        ({"modes": 2.5}, "--modes"),
+        ({"v0": 0.0}, "--v0"),
+        ({"v0": math.nan}, "--v0"),
+    ],
+)
+def test_invalid_case_names_parameter_and_range(changes, flag):
+    with pytest.raises(ParameterError) as error:
+        Case(**changes)
+    assert error.value.name == flag
+    assert flag in str(error.value) and "must be" in str(error.value)
+
+
+def test_unknown_preset():
+    with pytest.raises(ParameterError, match="--preset must be one of basketball"):
+        preset("volleyball")
+
+
+@pytest.mark.parametrize("args", [(0, 0.5, 0.1), (1e5, -1, 0.1), (1e5, 0.5, 0)])
+def test_invalid_pressure_inputs(args):
+    with pytest.raises(ParameterError):
+        wave_speed_from_pressure(*args)

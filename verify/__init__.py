@@ -1,0 +1,1 @@
+"""twoball.verify -- cross-checks, studies, reports and the ``twoball`` command line."""
