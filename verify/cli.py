@@ -6,7 +6,7 @@ import argparse
 import json
 import sys
 from collections.abc import Sequence
-from typing import Any, NoReturn
+from typing import NoReturn
 
 from modal.errors import NumericalError, ParameterError
 from modal.report import LiftoffReport, legendre_liftoff
@@ -119,6 +119,99 @@ def _cmd_sweep(args: argparse.Namespace) -> int:
     return 0
 
 
+def _cmd_icm(args: argparse.Namespace) -> int:
+    from dataclasses import asdict
+
+    from rich.console import Console
+    from rich.table import Table
+
+    from modal import icm
+
+    console = Console(markup=False, highlight=False, width=max(Console().width, 120))
+    if args.table1:
+        checks = icm.table1_check()
+        if args.json:
+            rows = [
+                {
+                    **asdict(c.row),
+                    "ours_v1": c.v1,
+                    "ours_v2": c.v2,
+                    "ours_v1_rounded": c.v1_rounded,
+                    "ours_v2_rounded": c.v2_rounded,
+                    "v1_differs": c.v1_differs,
+                    "v2_differs": c.v2_differs,
+                }
+                for c in checks
+            ]
+            print(json.dumps(rows, indent=2))
+            return 0
+        table = Table(title="Table 1: ICM (eq. (2.6)) recomputed beside the printed values")
+        for name in (
+            "lower",
+            "upper",
+            "mu",
+            "e2",
+            "e12",
+            "v1 printed",
+            "v1 ours",
+            "",
+            "v2 printed",
+            "v2 ours",
+            " ",
+        ):
+            table.add_column(name, justify="right")
+        for c in checks:
+            r = c.row
+            table.add_row(
+                r.lower,
+                r.upper,
+                f"{r.mu:g}",
+                f"{r.e2:g}",
+                f"{r.e12:g}",
+                f"{r.icm_v1:g}",
+                f"{c.v1:.3f}",
+                "DIFFERS" if c.v1_differs else "ok",
+                f"{r.icm_v2:g}",
+                f"{c.v2:.3f}",
+                "DIFFERS" if c.v2_differs else "ok",
+            )
+        console.print(table)
+        console.print("Ratios are v/|v0|; 'ok' means equal after rounding to the printed digits.")
+        return 0
+    missing = [
+        f for f, v in (("--mu", args.mu), ("--e2", args.e2), ("--e12", args.e12)) if v is None
+    ]
+    if missing:
+        raise ParameterError(missing[0], "given (or use --table1)")
+    if (args.dx is None) != (args.drop_height is None) and args.dx not in (None, 0.0):
+        raise ParameterError("--drop-height", "given with --dx")
+    result = icm.icm(
+        args.mu,
+        args.e2,
+        args.e12,
+        dx=0.0 if args.dx is None else args.dx,
+        drop_height=1.0 if args.drop_height is None else args.drop_height,
+    )
+    if args.json:
+        print(json.dumps(asdict(result), indent=2))
+        return 0
+    table = Table(title="Independent collision model (§2)")
+    table.add_column("quantity")
+    table.add_column("value", justify="right")
+    for name, value in (
+        ("impact velocity v0 [m/s]", result.v0),
+        ("lower-ball rebound u0 [m/s] (2.1)", result.u0),
+        ("delay to second impact dt [s] (2.2)", result.dt),
+        ("upper ball after v1 [m/s] (2.5)", result.v1),
+        ("lower ball after v2 [m/s] (2.5)", result.v2),
+        ("v1 / |v0|", result.v1_ratio),
+        ("v2 / |v0|", result.v2_ratio),
+    ):
+        table.add_row(name, f"{value:.6g}")
+    console.print(table)
+    return 0
+
+
 def build_parser() -> argparse.ArgumentParser:
     """The ``twoball`` argument parser (subcommands: liftoff, sweep, icm)."""
     parser = _Parser(
@@ -139,6 +232,18 @@ def build_parser() -> argparse.ArgumentParser:
     add_case_options(sweep)
     sweep.add_argument("--json", action="store_true", help="print a JSON list")
     sweep.set_defaults(run=_cmd_sweep)
+
+    collision = sub.add_parser("icm", help="independent collision model (§2), Table 1")
+    collision.add_argument("--mu", type=float, help="mass ratio m1/m2 >= 0")
+    collision.add_argument("--e2", type=float, help="restitution lower ball-floor in [0, 1]")
+    collision.add_argument("--e12", type=float, help="restitution between the balls in [0, 1]")
+    collision.add_argument("--dx", type=float, help="initial separation [m] (default 0)")
+    collision.add_argument("--drop-height", type=float, help="drop height x2 - r2 [m] (default 1)")
+    collision.add_argument(
+        "--table1", action="store_true", help="recompute Table 1 beside the printed values"
+    )
+    collision.add_argument("--json", action="store_true", help="print JSON")
+    collision.set_defaults(run=_cmd_icm)
     return parser
 
 
@@ -152,10 +257,6 @@ def main(argv: Sequence[str] | None = None) -> int:
         _fail(str(error))
     except NumericalError as error:
         _fail(f"numerical trouble: {error}", EXIT_NUMERICAL)
-
-
-def _jsonable(value: Any) -> Any:  # pragma: no cover - helper for subcommands
-    return value
 
 
 if __name__ == "__main__":
