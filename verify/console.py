@@ -1,0 +1,35 @@
+"""Terminal output shared by the subcommands: rich tables without markup surprises."""
+
+from __future__ import annotations
+
+import json
+from typing import Any
+
+from rich.console import Console
+from rich.table import Table
+
+
+def console(wide: bool = False) -> Console:
+    """A console that prints brackets literally (units like ``[m/s]`` are not markup)."""
+    width = max(Console().width, 120) if wide else None
+    return Console(markup=False, highlight=False, width=width)
+
+
+def number(value: float | None, scale: float = 1.0, digits: int = 4) -> str:
+    """``value * scale`` with fixed digits, or ``-`` for None."""
+    return "-" if value is None else f"{value * scale:.{digits}f}"
+
+
+def print_json(data: Any) -> None:
+    """Print JSON (two-space indent) to standard output."""
+    print(json.dumps(data, indent=2))
+
+
+def key_value_table(title: str, rows: list[tuple[str, str]]) -> Table:
+    """A two-column table of quantities and values."""
+    table = Table(title=title)
+    table.add_column("quantity")
+    table.add_column("value", justify="right")
+    for name, value in rows:
+        table.add_row(name, value)
+    return table
