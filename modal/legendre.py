@@ -63,7 +63,7 @@ def legendre_coefficients(phi_a: float, modes: int) -> np.ndarray:
     w = weights * (length / 2.0)
     # F = cos(phi_a)/x - 1 = (cos(phi_a) - x)/x, with cos(phi_a) - x = length (1 - node)/2
     integrand = (length * (1.0 - nodes) / 2.0) / x
-    integrals = legvander(x, modes).T @ (w * integrand)
+    integrals = np.einsum("mn,m->n", legvander(x, modes), w * integrand)
     n = np.arange(modes + 1)
     coefficients = (2 * n + 1) / 2.0 * integrals
     if not np.all(np.isfinite(coefficients)):

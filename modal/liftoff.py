@@ -23,7 +23,7 @@ from numpy.typing import ArrayLike
 from scipy.interpolate import BPoly
 
 from .errors import NumericalError, ParameterError
-from .roots import bracketed_roots
+from .roots import bracketed_roots, newton_bracketed
 from .series import PoleState
 
 Horizon = Literal["window", "paper"]
@@ -71,6 +71,7 @@ class SampledPoleMotion:
         self._spline = BPoly.from_derivatives(t, data.tolist(), extrapolate=False)
         self._velocity = self._spline.derivative(1)
         self._acceleration = self._spline.derivative(2)
+        self._jerk = self._spline.derivative(3)
 
     @property
     def grid_times(self) -> np.ndarray:
@@ -81,6 +82,10 @@ class SampledPoleMotion:
     def max_frequency(self) -> float:
         """The frequency resolved at 16 samples per period by the coarsest sample spacing."""
         return 2.0 * math.pi / (16.0 * float(np.max(np.diff(self.times))))
+
+    def jerk(self, t: ArrayLike) -> np.ndarray:
+        """Third derivative of the interpolant (piecewise quadratic) at ``t``."""
+        return self._jerk(np.asarray(t, dtype=float))
 
     def pole(self, t: ArrayLike) -> PoleState:
         """Interpolated u, u_t, u_tt at ``t`` (inside the sampled range)."""
@@ -189,7 +194,16 @@ def find_liftoff(
     u, u_t, u_tt = motion.pole(grid)
     force = u_tt + gamma
     down = np.flatnonzero((force[:-1] > 0.0) & (force[1:] <= 0.0))
-    times = _refine(lambda t, i: motion.pole(t).u_tt + gamma, grid[down], grid[down + 1])
+    jerk = getattr(motion, "jerk", None)
+    if jerk is None:
+        times = _refine(lambda t, i: motion.pole(t).u_tt + gamma, grid[down], grid[down + 1])
+    else:
+        times = newton_bracketed(
+            lambda t, i: (motion.pole(t).u_tt + gamma, jerk(t)),
+            grid[down],
+            grid[down + 1],
+            xtol=TIME_TOLERANCE,
+        )
     state = motion.pole(times)
     # Too close to t_l the gap s - u ~ |u_ttt| (t - t_l)^3 / 6 is below round-off; skip it.
     skip = 1e-2 / max(float(motion.max_frequency), 1.0)
@@ -269,8 +283,12 @@ class _Ballistic:
             return float(gaps[1:].min()), (float(t[first - 1]), float(t[first]))
         slopes = v_l - gamma * dt - np.concatenate([[edge.u_t[0]], u_t[inside], [edge.u_t[1]]])
         rising = np.flatnonzero((slopes[:-1] < 0.0) & (slopes[1:] >= 0.0))
-        minima = _refine(
-            lambda x, i: v_l - gamma * (x - t_l) - motion.pole(x).u_t, t[rising], t[rising + 1]
+        def slope_and_curvature(x: np.ndarray, i: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+            state = motion.pole(x)
+            return v_l - gamma * (x - t_l) - state.u_t, -gamma - state.u_tt
+
+        minima = newton_bracketed(
+            slope_and_curvature, t[rising], t[rising + 1], xtol=TIME_TOLERANCE
         )
         dm = minima - t_l
         low = u_l + v_l * dm - 0.5 * gamma * dm * dm - motion.pole(minima).u
@@ -291,12 +309,13 @@ class _Ballistic:
         t_l, u_l, v_l = times[which], state.u[which], state.u_t[which]
         gamma, motion = self.gamma, self.motion
 
-        def gap(x: np.ndarray, i: np.ndarray) -> np.ndarray:
+        def gap_and_slope(x: np.ndarray, i: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
             dt = x - t_l[i]
-            return u_l[i] + v_l[i] * dt - 0.5 * gamma * dt * dt - motion.pole(x).u
+            state = motion.pole(x)
+            gap = u_l[i] + v_l[i] * dt - 0.5 * gamma * dt * dt - state.u
+            return gap, v_l[i] - gamma * dt - state.u_t
 
         lower = np.array([b[1] for b in brackets])
         upper = np.array([b[2] for b in brackets])
-        # a bracket whose lower end already touches (gap <= 0 at the grid) keeps its upper end
-        roots = _refine(gap, lower, upper)
+        roots = newton_bracketed(gap_and_slope, lower, upper, xtol=TIME_TOLERANCE)
         return {int(k): float(r) for k, r in zip(which, roots, strict=True)}

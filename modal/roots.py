@@ -72,3 +72,51 @@ def bracketed_roots(
     # the halved values are not f any more: pick by a fresh evaluation
     fa, fb = f(a, everything), f(b, everything)
     return np.where(np.abs(fa) <= np.abs(fb), a, b)
+
+
+def newton_bracketed(
+    f_and_slope: Callable[[np.ndarray, np.ndarray], tuple[np.ndarray, np.ndarray]],
+    lower: np.ndarray,
+    upper: np.ndarray,
+    xtol: float = 1e-12,
+    max_iter: int = 100,
+) -> np.ndarray:
+    """Roots in brackets by Newton's method kept inside the bracket, all at once.
+
+    ``f_and_slope(x, index)`` returns ``(f, f')`` of bracket ``index[j]`` at ``x[j]``.
+    A Newton step that leaves the current bracket is replaced by bisection; the
+    bracket shrinks around the sign change after every evaluation.  A bracket is
+    done when the Newton step is below ``xtol`` (quadratic convergence makes the
+    remaining error far smaller) or the bracket is narrower than ``xtol``.
+    """
+    a = np.array(lower, dtype=float, copy=True)
+    b = np.array(upper, dtype=float, copy=True)
+    if a.size == 0:
+        return a
+    everything = np.arange(a.size)
+    fa, _ = f_and_slope(a, everything)
+    fb, _ = f_and_slope(b, everything)
+    if np.any(fa * fb > 0):
+        raise NumericalError("root search: a bracket does not change sign")
+    sign_a = np.sign(fa)
+    x = np.where(fa == 0, a, np.where(fb == 0, b, 0.5 * (a + b)))
+    active = (fa != 0) & (fb != 0)
+    for _ in range(max_iter):
+        if not active.any():
+            break
+        i = np.flatnonzero(active)
+        fx, slope = f_and_slope(x[i], i)
+        same = np.sign(fx) == sign_a[i]
+        a[i[same]] = x[i[same]]
+        b[i[~same]] = x[i[~same]]
+        with np.errstate(divide="ignore", invalid="ignore"):
+            step = fx / slope
+        trial = x[i] - step
+        inside = np.isfinite(trial) & (trial > a[i]) & (trial < b[i])
+        x[i] = np.where(inside, trial, 0.5 * (a[i] + b[i]))
+        done = (fx == 0) | (inside & (np.abs(step) < xtol)) | (b[i] - a[i] < xtol)
+        x[i[fx == 0]] -= step[fx == 0]  # undo: f(x) was exactly zero
+        active[i[done]] = False
+    else:
+        raise NumericalError("root search did not converge")
+    return x

@@ -135,7 +135,7 @@ class ModalSeries:
         out = np.empty((flat.size,) + amplitudes.shape[1:])
         for start in range(0, flat.size, _CHUNK):
             block = _exponential_table(flat[start : start + _CHUNK], rates)
-            out[start : start + _CHUNK] = (block @ amplitudes).real
+            out[start : start + _CHUNK] = _product(block, amplitudes).real
         if not np.all(np.isfinite(out)):
             raise NumericalError("modal series: evaluation is not finite")
         return out.reshape(times.shape + amplitudes.shape[1:])
@@ -147,6 +147,12 @@ class ModalSeries:
         """
         out = self._evaluate(t, self._pole_matrix)
         return PoleState(out[..., 0], out[..., 1], out[..., 2])
+
+    def jerk(self, t: ArrayLike) -> np.ndarray:
+        """Third time derivative of the pole displacement (dimensionless), closed form."""
+        keep, rates, factor = self._exponents
+        amps = (self.pole_amplitudes[keep] * factor * rates**3)[:, None]
+        return self._evaluate(t, amps)[..., 0]
 
     def field(self, t: ArrayLike, shapes: np.ndarray, derivative: int = 0) -> np.ndarray:
         """Field values at P points, shape ``t.shape + (P,)`` (dimensionless).
@@ -206,3 +212,10 @@ def _exponential_table(times: np.ndarray, rates: np.ndarray) -> np.ndarray:
         np.multiply.outer(times[0] + step * block * np.arange(-(-count // block)), rates)
     )
     return (outer[:, None, :] * inner[None, :, :]).reshape(-1, rates.size)[:count]
+
+
+def _product(table: np.ndarray, amplitudes: np.ndarray) -> np.ndarray:
+    """``table @ amplitudes``; narrow products avoid BLAS, whose threads only add overhead."""
+    if amplitudes.ndim == 2 and amplitudes.shape[1] <= 8:
+        return np.einsum("tk,kc->tc", table, amplitudes)
+    return table @ amplitudes
