@@ -283,6 +283,7 @@ class _Ballistic:
             return float(gaps[1:].min()), (float(t[first - 1]), float(t[first]))
         slopes = v_l - gamma * dt - np.concatenate([[edge.u_t[0]], u_t[inside], [edge.u_t[1]]])
         rising = np.flatnonzero((slopes[:-1] < 0.0) & (slopes[1:] >= 0.0))
+
         def slope_and_curvature(x: np.ndarray, i: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
             state = motion.pole(x)
             return v_l - gamma * (x - t_l) - state.u_t, -gamma - state.u_tt
