@@ -57,6 +57,11 @@ def main(argv: Sequence[str] | None = None) -> int:
         fail(str(error))
     except NumericalError as error:
         fail(f"numerical trouble: {error}", EXIT_NUMERICAL)
+    except BrokenPipeError:  # output piped into a reader that stopped (e.g. `head`)
+        import os
+
+        os.dup2(os.open(os.devnull, os.O_WRONLY), sys.stdout.fileno())
+        return 0
 
 
 if __name__ == "__main__":
