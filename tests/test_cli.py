@@ -146,3 +146,18 @@ def test_icm_bad_input(capsys, argv, flag):
         main(argv)
     err = capsys.readouterr().err.strip().splitlines()
     assert stop.value.code == 2 and len(err) == 1 and flag in err[0]
+
+
+@pytest.mark.parametrize(
+    ("argv", "expected"),
+    [
+        (["liftoff", "--damping", "abc"], "--damping must be a number in [0, 1), got 'abc'"),
+        (["liftoff", "--modes", "2.5"], "--modes must be an integer >= 1, got '2.5'"),
+        (["icm", "--mu", "x"], "--mu must be a number >= 0, got 'x'"),
+    ],
+)
+def test_unparsable_numbers_state_the_valid_range(capsys, argv, expected):
+    with pytest.raises(SystemExit) as stop:
+        main(argv)
+    assert stop.value.code == 2
+    assert capsys.readouterr().err.strip() == f"twoball: error: {expected}"

@@ -10,6 +10,18 @@ from modal.filters import FILTER_KINDS
 from modal.liftoff import HORIZONS
 from modal.parameters import PRESETS, Case, preset
 
+VALID_RANGES: dict[str, str] = {
+    "--radius": "a number > 0 [m]",
+    "--wave-speed": "a number > 0 [1/s]",
+    "--pressure": "a number > 0 [Pa]",
+    "--mass": "a number > 0 [kg]",
+    "--v0": "a nonzero number [m/s]",
+    "--phi-a": "a number in (pi/2, pi) [rad]",
+    "--damping": "a number in [0, 1)",
+    "--modes": "an integer >= 1",
+    "--t-end": "a number > 0 [s]",
+}
+
 
 def add_case_options(parser: argparse.ArgumentParser) -> None:
     """Add the case options (all SI) to ``parser``."""
@@ -71,4 +83,4 @@ def case_from_options(args: argparse.Namespace) -> Case:
     return base.derive(**changes)
 
 
-__all__ = ["PRESETS", "add_case_options", "case_from_options"]
+__all__ = ["PRESETS", "VALID_RANGES", "add_case_options", "case_from_options"]

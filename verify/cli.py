@@ -9,6 +9,7 @@ and :class:`~modal.errors.NumericalError` into one with exit status 3.
 from __future__ import annotations
 
 import argparse
+import re
 import sys
 from collections.abc import Sequence
 from typing import NoReturn
@@ -16,6 +17,7 @@ from typing import NoReturn
 from modal.errors import NumericalError, ParameterError
 
 from . import cli_icm, cli_liftoff, cli_sweep
+from .case_options import VALID_RANGES as CASE_RANGES
 
 EXIT_USAGE = 2
 EXIT_NUMERICAL = 3
@@ -26,7 +28,20 @@ class _Parser(argparse.ArgumentParser):
     """ArgumentParser whose errors are one line (no usage block) and exit status 2."""
 
     def error(self, message: str) -> NoReturn:
+        bad_type = re.fullmatch(r"argument (--[\w-]+): invalid \w+ value: (.*)", message)
+        if bad_type:
+            flag, got = bad_type.groups()
+            valid = valid_ranges().get(flag, "a number" if "float" in message else "an integer")
+            fail(f"{flag} must be {valid}, got {got}")
         fail(message)
+
+
+def valid_ranges() -> dict[str, str]:
+    """Valid range of every numeric flag, for one-line messages (modules add theirs)."""
+    ranges = dict(CASE_RANGES)
+    for module in SUBCOMMANDS:
+        ranges.update(getattr(module, "VALID_RANGES", {}))
+    return ranges
 
 
 def fail(message: str, status: int = EXIT_USAGE) -> NoReturn:

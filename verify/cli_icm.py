@@ -12,6 +12,14 @@ from modal.errors import ParameterError
 
 from .console import console, print_json
 
+VALID_RANGES = {
+    "--mu": "a number >= 0",
+    "--e2": "a number in [0, 1]",
+    "--e12": "a number in [0, 1]",
+    "--dx": "a number >= 0 [m]",
+    "--drop-height": "a number > 0 [m]",
+}
+
 
 def run(args: argparse.Namespace) -> int:
     """Run ``twoball icm``."""
