@@ -318,5 +318,18 @@ class _Ballistic:
 
         lower = np.array([b[1] for b in brackets])
         upper = np.array([b[2] for b in brackets])
-        roots = newton_bracketed(gap_and_slope, lower, upper, xtol=TIME_TOLERANCE)
+        every = np.arange(lower.size)
+        # A lower end at t_l + skip can sit at round-off level (gap ~ 1e-17, either sign):
+        # then the body touches again at once and the lower end is the re-contact time.
+        touching = gap_and_slope(lower, every)[0] <= 0.0
+        roots = lower.copy()
+        open_ = np.flatnonzero(~touching)
+        if open_.size:
+
+            def gap_open(x: np.ndarray, i: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+                return gap_and_slope(x, open_[i])
+
+            roots[open_] = newton_bracketed(
+                gap_open, lower[open_], upper[open_], xtol=TIME_TOLERANCE
+            )
         return {int(k): float(r) for k, r in zip(which, roots, strict=True)}

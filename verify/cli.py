@@ -16,12 +16,12 @@ from typing import NoReturn
 
 from modal.errors import NumericalError, ParameterError
 
-from . import cli_icm, cli_liftoff, cli_sweep
+from . import cli_icm, cli_liftoff, cli_reproduce, cli_sweep
 from .case_options import VALID_RANGES as CASE_RANGES
 
 EXIT_USAGE = 2
 EXIT_NUMERICAL = 3
-SUBCOMMANDS = [cli_liftoff, cli_sweep, cli_icm]
+SUBCOMMANDS = [cli_liftoff, cli_sweep, cli_icm, cli_reproduce]
 
 
 class _Parser(argparse.ArgumentParser):
