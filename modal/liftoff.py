@@ -20,7 +20,7 @@ from typing import Literal, Protocol, runtime_checkable
 
 import numpy as np
 from numpy.typing import ArrayLike
-from scipy.interpolate import BPoly
+from scipy.interpolate import BPoly, CubicSpline
 
 from .errors import NumericalError, ParameterError
 from .roots import bracketed_roots, newton_bracketed
@@ -45,20 +45,40 @@ class PoleMotion(Protocol):
 
 
 class SampledPoleMotion:
-    """Pole motion known at sample times, interpolated by quintic Hermite splines.
+    """Pole motion known at sample times, interpolated between them.
 
-    The spline matches u, u_t and u_tt at every sample, so its second derivative
-    is continuous and equals the sampled acceleration at the samples.  The
-    lift-off search brackets on the sample times themselves.
+    Two interpolations, for two kinds of samples:
+
+    ``hermite`` (default)
+        One quintic Hermite spline through u, u_t and u_tt: right when the
+        samples are exact derivatives of one motion (e.g. a closed form sampled).
+        u_tt is continuous and equals the samples there; error O(h^6) in u.
+    ``splines``
+        Each of u, u_t and u_tt through its own cubic spline: right for a time
+        integrator, whose u, u_t and u_tt are each accurate to O(dt^2) but are not
+        derivatives of one another.  Forcing them into one Hermite polynomial would
+        turn that mismatch into an O(dt) error of u_tt between the steps and a
+        first-order lift-off time; separate splines keep every field O(dt^2).
+
+    The lift-off search brackets on the sample times themselves.
 
     Parameters
     ----------
     t, u, u_t, u_tt : array_like, shape (M,)
         Increasing sample times and the pole's displacement, velocity and
         acceleration there (dimensionless).
+    interpolation : {"hermite", "splines"}
+        See above.
     """
 
-    def __init__(self, t: ArrayLike, u: ArrayLike, u_t: ArrayLike, u_tt: ArrayLike) -> None:
+    def __init__(
+        self,
+        t: ArrayLike,
+        u: ArrayLike,
+        u_t: ArrayLike,
+        u_tt: ArrayLike,
+        interpolation: Literal["hermite", "splines"] = "hermite",
+    ) -> None:
         t = np.asarray(t, dtype=float)
         data = np.column_stack([np.asarray(v, dtype=float) for v in (u, u_t, u_tt)])
         if t.ndim != 1 or t.size < 2 or data.shape[0] != t.size:
@@ -68,10 +88,16 @@ class SampledPoleMotion:
         if not np.all(np.isfinite(data)):
             raise NumericalError("pole samples contain NaN or inf")
         self.times = t
-        self._spline = BPoly.from_derivatives(t, data.tolist(), extrapolate=False)
-        self._velocity = self._spline.derivative(1)
-        self._acceleration = self._spline.derivative(2)
-        self._jerk = self._spline.derivative(3)
+        self.interpolation = interpolation
+        if interpolation == "hermite":
+            spline = BPoly.from_derivatives(t, data.tolist(), extrapolate=False)
+            self._fields = (spline, spline.derivative(1), spline.derivative(2))
+            self._jerk = spline.derivative(3)
+        elif interpolation == "splines":
+            self._fields = tuple(CubicSpline(t, data[:, j], extrapolate=False) for j in range(3))
+            self._jerk = self._fields[2].derivative(1)
+        else:
+            raise ValueError("interpolation must be 'hermite' or 'splines'")
 
     @property
     def grid_times(self) -> np.ndarray:
@@ -90,7 +116,7 @@ class SampledPoleMotion:
     def pole(self, t: ArrayLike) -> PoleState:
         """Interpolated u, u_t, u_tt at ``t`` (inside the sampled range)."""
         t = np.asarray(t, dtype=float)
-        return PoleState(self._spline(t), self._velocity(t), self._acceleration(t))
+        return PoleState(*(f(t) for f in self._fields))
 
 
 @dataclass(frozen=True)

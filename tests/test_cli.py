@@ -161,3 +161,59 @@ def test_unparsable_numbers_state_the_valid_range(capsys, argv, expected):
         main(argv)
     assert stop.value.code == 2
     assert capsys.readouterr().err.strip() == f"twoball: error: {expected}"
+
+
+def test_fem_liftoff_json_adds_backend_details(capsys):
+    argv = ["liftoff", "--backend", "fem", "--mesh", "axisym", "--elements", "200", "--json"]
+    code, out, _ = run(capsys, *argv)
+    data = json.loads(out)
+    assert code == 0 and data["backend"] == "fem"
+    for key in ("dofs", "modes_used", "mesh", "order", "time_scheme", "seconds"):
+        assert key in data
+    assert data["dofs"] == 401 and data["time_scheme"] == "modal"
+    _, out, _ = run(capsys, "liftoff", "--json")
+    legendre = json.loads(out)
+    assert data["t_liftoff_s"] == pytest.approx(legendre["t_liftoff_s"], rel=1e-6)
+    assert data["v_liftoff_m_s"] == pytest.approx(legendre["v_liftoff_m_s"], rel=1e-6)
+
+
+def test_fem_alpha_liftoff_with_step_in_seconds(capsys):
+    argv = ["liftoff", "--backend", "fem", "--mesh", "axisym", "--elements", "100"]
+    code, out, _ = run(capsys, *argv, "--time", "alpha", "--dt", "2e-6", "--json")
+    data = json.loads(out)
+    assert code == 0 and data["time_scheme"] == "alpha"
+    assert data["dt_s"] == pytest.approx(2e-6)
+    assert data["t_liftoff_s"] == pytest.approx(0.0099, rel=0.01)
+
+
+def test_eigen_json_lists_clusters(capsys):
+    code, out, _ = run(
+        capsys, "eigen", "--mesh", "sphere", "--level", "1", "--count", "8", "--json"
+    )
+    rows = json.loads(out)
+    assert code == 0 and [r["l"] for r in rows[:4]] == [0, 1, 1, 1]
+    assert all(r["multiplicity"] == 2 * r["l"] + 1 for r in rows)
+
+
+@pytest.mark.parametrize(
+    ("argv", "flag"),
+    [
+        (["liftoff", "--backend", "fem", "--level", "-1"], "--level"),
+        (["liftoff", "--backend", "fem", "--order", "3"], "--order"),
+        (["liftoff", "--backend", "fem", "--dt", "0"], "--dt"),
+        (["liftoff", "--backend", "fem", "--dt", "-1e-5"], "--dt"),
+        (["liftoff", "--backend", "fem", "--mesh", "axisym", "--elements", "1"], "--elements"),
+        (["liftoff", "--backend", "fem", "--mesh", "cube"], "--mesh"),
+        (["liftoff", "--backend", "fem", "--time", "euler"], "--time"),
+        (["liftoff", "--backend", "fem", "--damping-model", "viscous"], "--damping-model"),
+        (["liftoff", "--backend", "spectral"], "--backend"),
+        (["eigen", "--level", "-2"], "--level"),
+        (["eigen", "--count", "0"], "--count"),
+        (["eigen", "--order", "x"], "--order"),
+    ],
+)
+def test_fem_bad_input_is_one_line_exit_2(capsys, argv, flag):
+    with pytest.raises(SystemExit) as stop:
+        main(argv)
+    err = capsys.readouterr().err.strip().splitlines()
+    assert stop.value.code == 2 and len(err) == 1 and flag in err[0], err

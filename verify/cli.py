@@ -16,12 +16,34 @@ from typing import NoReturn
 
 from modal.errors import NumericalError, ParameterError
 
-from . import cli_icm, cli_liftoff, cli_reproduce, cli_sweep
+from . import (
+    cli_converge,
+    cli_eigen,
+    cli_export,
+    cli_icm,
+    cli_liftoff,
+    cli_plot,
+    cli_render,
+    cli_reproduce,
+    cli_sweep,
+    cli_verify,
+)
 from .case_options import VALID_RANGES as CASE_RANGES
 
 EXIT_USAGE = 2
 EXIT_NUMERICAL = 3
-SUBCOMMANDS = [cli_liftoff, cli_sweep, cli_icm, cli_reproduce]
+SUBCOMMANDS = [
+    cli_verify,
+    cli_liftoff,
+    cli_eigen,
+    cli_sweep,
+    cli_icm,
+    cli_reproduce,
+    cli_export,
+    cli_render,
+    cli_plot,
+    cli_converge,
+]
 
 
 class _Parser(argparse.ArgumentParser):

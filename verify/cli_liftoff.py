@@ -4,10 +4,12 @@ from __future__ import annotations
 
 import argparse
 
+from modal.errors import ParameterError
 from modal.report import LiftoffReport, legendre_liftoff
 
 from .case_options import add_case_options, case_from_options
 from .console import console, key_value_table, number, print_json
+from .fem_options import add_mesh_options, add_time_options
 
 
 def liftoff_rows(report: LiftoffReport) -> list[tuple[str, str]]:
@@ -28,7 +30,9 @@ def liftoff_rows(report: LiftoffReport) -> list[tuple[str, str]]:
         ("rejected candidates", str(len(report.result.rejected))),
     ]
     for key, value in report.extra.items():
-        if isinstance(value, (int, float, str)):
+        if isinstance(value, float):
+            rows.append((key, f"{value:.4g}"))
+        elif isinstance(value, (int, str)):
             rows.append((key, str(value)))
     return rows
 
@@ -40,8 +44,14 @@ def print_liftoff(report: LiftoffReport) -> None:
 
 
 def solve_from_options(args: argparse.Namespace) -> LiftoffReport:
-    """Solve the case described by the options with the closed form."""
+    """Solve the case described by the options with the chosen backend."""
     case = case_from_options(args)
+    if args.backend == "fem":
+        from .fem_options import fem_liftoff
+
+        return fem_liftoff(case, args)
+    if args.backend != "legendre":
+        raise ParameterError("--backend", "one of legendre, fem", args.backend)
     return legendre_liftoff(case, args.sigma, args.recontact, args.t_end)
 
 
@@ -58,7 +68,12 @@ def run(args: argparse.Namespace) -> int:
 def register(sub: argparse._SubParsersAction) -> argparse.ArgumentParser:
     """Add the ``liftoff`` subcommand."""
     parser = sub.add_parser("liftoff", help="lift-off time and velocity for one case")
+    parser.add_argument(
+        "--backend", default="legendre", help="legendre (closed form, default) or fem"
+    )
     add_case_options(parser)
+    add_mesh_options(parser)
+    add_time_options(parser)
     parser.add_argument("--json", action="store_true", help="print one JSON object")
     parser.set_defaults(run=run)
     return parser

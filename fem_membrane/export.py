@@ -1,0 +1,417 @@
+"""Write a sphere mesh with time-dependent point data: XDMF + HDF5, PVD + VTU, or one VTU.
+
+The writers store whatever numbers they are given; the ``twoball export`` command
+passes SI values (node coordinates in m, displacements in m, velocities in m/s,
+accelerations in m/s^2, times in s), see :func:`verify.fields.field_series`.
+
+Three layouts, chosen by :func:`series_format` from ``--format`` or the suffix:
+
+``xdmf``
+    ``NAME.xdmf`` (XML) with its arrays in ``NAME.h5`` beside it, written with
+    :class:`meshio.xdmf.TimeSeriesWriter`.  meshio puts the HDF5 file into the
+    *current directory* (meshio issue #1442); :class:`_XdmfWriter` puts it next to
+    the XML file instead.  Series-wide scalars (lift-off time, ...) are stored as
+    ``<Information Name=... Value=...>`` elements of the XDMF domain and as HDF5
+    attributes of the root group.
+``pvd``
+    ``NAME.pvd`` (a ParaView collection, written here) listing one
+    ``NAME_0000.vtu``, ``NAME_0001.vtu``, ... per frame beside it.
+``vtu``
+    A single frame in one ``.vtu`` file.
+
+Every VTU carries the series-wide scalars as VTK field data plus ``TimeValue``
+(the frame's time, which ParaView shows).  All files are written into a hidden
+scratch folder beside the target and moved into place only when complete, so a
+failed run leaves no partial files (see :func:`check_output_path`).
+"""
+
+from __future__ import annotations
+
+import contextlib
+import math
+import os
+import re
+import shutil
+import tempfile
+import xml.etree.ElementTree as ET
+from collections.abc import Iterator, Mapping, Sequence
+from dataclasses import dataclass, field
+from pathlib import Path
+
+import meshio
+import numpy as np
+from meshio.xdmf import TimeSeriesReader, TimeSeriesWriter
+
+from modal.errors import ParameterError
+
+FORMATS: tuple[str, ...] = ("xdmf", "vtu", "pvd")
+SUFFIXES: dict[str, str] = {"xdmf": ".xdmf", "vtu": ".vtu", "pvd": ".pvd"}
+CELL_TYPES: dict[int, str] = {3: "triangle", 6: "triangle6"}
+TIME_VALUE = "TimeValue"  # the VTK/ParaView name of a dataset's time in field data
+
+
+@dataclass(frozen=True)
+class TimeSeries:
+    """A fixed mesh with point data at a sequence of times (units: the caller's; SI in twoball).
+
+    Parameters
+    ----------
+    points : ndarray, shape (P, 3)
+        Node coordinates.
+    cells : ndarray, shape (T, 3) or (T, 6)
+        Triangles (``triangle``) or quadratic triangles (``triangle6``, meshio/VTK
+        node order: vertices, then the nodes on edges 01, 12, 20).
+    times : ndarray, shape (F,)
+        Frame times, increasing.
+    point_data : dict of str -> ndarray
+        Per-frame nodal values, shape (F, P) for scalars or (F, P, 3) for vectors.
+    field_data : dict of str -> float
+        Scalars describing the whole series (e.g. ``t_liftoff_s``).  VTU files
+        leave out non-finite entries (VTK cannot parse ``nan`` in field data).
+    """
+
+    points: np.ndarray
+    cells: np.ndarray
+    times: np.ndarray
+    point_data: dict[str, np.ndarray]
+    field_data: dict[str, float] = field(default_factory=dict)
+
+    def __post_init__(self) -> None:
+        points = np.ascontiguousarray(self.points, dtype=float)
+        cells = np.ascontiguousarray(self.cells, dtype=np.int64)
+        times = np.atleast_1d(np.asarray(self.times, dtype=float))
+        if points.ndim != 2 or points.shape[1] != 3:
+            raise ValueError("points must have shape (P, 3)")
+        if cells.ndim != 2 or cells.shape[1] not in CELL_TYPES:
+            raise ValueError("cells must have shape (T, 3) or (T, 6)")
+        if times.ndim != 1 or times.size < 1 or np.any(np.diff(times) <= 0):
+            raise ValueError("times must be a non-empty increasing 1-D array")
+        data = {}
+        for name, values in self.point_data.items():
+            values = np.ascontiguousarray(values, dtype=float)
+            if values.shape[:2] != (times.size, points.shape[0]) or values.ndim not in (2, 3):
+                raise ValueError(f"point data {name!r} must have shape (F, P) or (F, P, 3)")
+            data[name] = values
+        object.__setattr__(self, "points", points)
+        object.__setattr__(self, "cells", cells)
+        object.__setattr__(self, "times", times)
+        object.__setattr__(self, "point_data", data)
+        object.__setattr__(
+            self, "field_data", {k: float(v) for k, v in dict(self.field_data).items()}
+        )
+
+    @property
+    def cell_type(self) -> str:
+        """meshio cell type: ``triangle`` (P1) or ``triangle6`` (P2)."""
+        return CELL_TYPES[self.cells.shape[1]]
+
+    def __len__(self) -> int:
+        return int(self.times.size)
+
+    def frame(self, k: int) -> dict[str, np.ndarray]:
+        """Point data of frame ``k``: name -> (P,) or (P, 3)."""
+        return {name: values[k] for name, values in self.point_data.items()}
+
+    def select(self, frames: Sequence[int]) -> TimeSeries:
+        """The series restricted to the frames with the given indices."""
+        index = np.asarray(frames, dtype=int)
+        return TimeSeries(
+            self.points,
+            self.cells,
+            self.times[index],
+            {name: values[index] for name, values in self.point_data.items()},
+            self.field_data,
+        )
+
+
+# --------------------------------------------------------------------------- paths
+def series_format(path: str | os.PathLike[str], fmt: str | None = None) -> str:
+    """The output format: ``fmt`` if given (must match the suffix), else from the suffix.
+
+    Raises
+    ------
+    ParameterError
+        ``--format`` unknown, or ``--out`` with a suffix that is not ``.FORMAT``.
+    """
+    suffix = Path(path).suffix.lower()
+    if fmt is not None:
+        if fmt not in FORMATS:
+            raise ParameterError("--format", "one of " + ", ".join(FORMATS), fmt)
+        if suffix != SUFFIXES[fmt]:
+            raise ParameterError("--out", f"a file name ending in {SUFFIXES[fmt]}", str(path))
+        return fmt
+    for name, ending in SUFFIXES.items():
+        if suffix == ending:
+            return name
+    raise ParameterError(
+        "--out", "a file name ending in " + ", ".join(SUFFIXES.values()), str(path)
+    )
+
+
+def check_output_path(path: str | os.PathLike[str], flag: str = "--out") -> Path:
+    """Check, before any work, that a file can be written at ``path``.
+
+    The parent folder must exist and be writable (proved by creating and
+    removing a scratch folder in it); ``path`` itself may exist (it is replaced)
+    but must not be a folder.
+
+    Raises
+    ------
+    ParameterError
+        Naming ``flag``, for the one-line command-line error (exit status 2).
+    """
+    out = Path(path).expanduser()
+    valid = "a file path in an existing, writable folder"
+    if out.name in ("", ".", ".."):
+        raise ParameterError(flag, valid, str(path))
+    if out.is_dir():
+        raise ParameterError(flag, valid + " (it is a folder)", str(path))
+    parent = out.absolute().parent
+    if not parent.is_dir():
+        raise ParameterError(flag, valid + " (the folder does not exist)", str(path))
+    try:
+        probe = tempfile.mkdtemp(prefix=f".{out.name}.probe-", dir=parent)
+    except OSError:
+        raise ParameterError(flag, valid + " (the folder is not writable)", str(path)) from None
+    os.rmdir(probe)
+    return out
+
+
+@contextlib.contextmanager
+def staged_files(path: str | os.PathLike[str], flag: str = "--out") -> Iterator[Path]:
+    """Yield a scratch folder beside ``path``; move its files next to ``path`` on success.
+
+    The main file (named like ``path``) is moved last, so a reader never sees it
+    before the files it refers to.  On any error the scratch folder is removed
+    and nothing is moved; an :class:`OSError` becomes a :class:`ParameterError`
+    naming ``flag``.
+    """
+    out = check_output_path(path, flag).absolute()
+    scratch = Path(tempfile.mkdtemp(prefix=f".{out.name}.new-", dir=out.parent))
+    try:
+        yield scratch
+        names = sorted(p.name for p in scratch.iterdir())
+        names.sort(key=lambda name: name == out.name)  # main file last
+        for name in names:
+            os.replace(scratch / name, out.parent / name)
+    except OSError as error:
+        raise ParameterError(
+            flag, "a file path in an existing, writable folder", f"{path} ({error.strerror})"
+        ) from error
+    finally:
+        shutil.rmtree(scratch, ignore_errors=True)
+
+
+# --------------------------------------------------------------------------- VTU
+def _field_element(field_data: Mapping[str, float]) -> ET.Element:
+    element = ET.Element("FieldData")
+    for name, value in field_data.items():
+        if not math.isfinite(value):  # VTK's ASCII parser rejects nan: leave the entry out
+            continue
+        array = ET.SubElement(
+            element,
+            "DataArray",
+            type="Float64",
+            Name=name,
+            NumberOfTuples="1",
+            format="ascii",
+        )
+        array.text = repr(float(value))
+    return element
+
+
+def _write_vtu_file(
+    target: Path, series: TimeSeries, k: int, field_data: Mapping[str, float]
+) -> None:
+    """One frame as VTU (meshio), with VTK field data inserted into the grid element."""
+    mesh = meshio.Mesh(series.points, [(series.cell_type, series.cells)], series.frame(k))
+    meshio.write(str(target), mesh, file_format="vtu")
+    tree = ET.parse(target)
+    grid = tree.getroot().find("UnstructuredGrid")
+    if grid is None:  # pragma: no cover - meshio always writes one
+        raise ValueError(f"{target}: no UnstructuredGrid element")
+    grid.insert(0, _field_element(field_data))
+    tree.write(target, xml_declaration=True, encoding="utf-8")
+
+
+def write_vtu(path: str | os.PathLike[str], series: TimeSeries, frame: int = 0) -> list[Path]:
+    """Write frame ``frame`` of ``series`` as one ``.vtu`` file.
+
+    Field data: the series-wide scalars and ``TimeValue`` (the frame's time).
+
+    Returns
+    -------
+    list of Path
+        The file written.
+    """
+    out = Path(path).expanduser()
+    with staged_files(out) as scratch:
+        field_data = {**series.field_data, TIME_VALUE: float(series.times[frame])}
+        _write_vtu_file(scratch / out.name, series, frame, field_data)
+    return [out]
+
+
+# --------------------------------------------------------------------------- PVD
+def frame_name(path: str | os.PathLike[str], k: int) -> str:
+    """File name of frame ``k`` of a PVD collection: ``NAME_0000.vtu`` beside ``NAME.pvd``."""
+    return f"{Path(path).stem}_{k:04d}.vtu"
+
+
+def _pvd_files(path: Path) -> list[str]:
+    """Files listed by an existing PVD collection (names relative to its folder)."""
+    try:
+        root = ET.parse(path).getroot()
+    except (OSError, ET.ParseError):
+        return []
+    return [d.get("file", "") for d in root.iter("DataSet") if d.get("file")]
+
+
+def write_pvd(path: str | os.PathLike[str], series: TimeSeries) -> list[Path]:
+    """Write a ParaView collection: ``NAME.pvd`` and one VTU per frame beside it.
+
+    Frames of a previous collection at the same path that the new one does not
+    rewrite are removed.
+
+    Returns
+    -------
+    list of Path
+        The PVD file, then the VTU files.
+    """
+    out = Path(path).expanduser()
+    stale = [
+        out.parent / name
+        for name in _pvd_files(out)
+        if "/" not in name
+        and "\\" not in name
+        and re.fullmatch(rf"{re.escape(out.stem)}_\d+\.vtu", name)
+    ]
+    names = [frame_name(out, k) for k in range(len(series))]
+    with staged_files(out) as scratch:
+        root = ET.Element("VTKFile", type="Collection", version="0.1", byte_order="LittleEndian")
+        collection = ET.SubElement(root, "Collection")
+        for k, name in enumerate(names):
+            time = float(series.times[k])
+            _write_vtu_file(scratch / name, series, k, {**series.field_data, TIME_VALUE: time})
+            ET.SubElement(collection, "DataSet", timestep=repr(time), group="", part="0", file=name)
+        ET.indent(root)
+        ET.ElementTree(root).write(scratch / out.name, xml_declaration=True, encoding="utf-8")
+    for old in stale:
+        if old.name not in names:
+            with contextlib.suppress(OSError):
+                old.unlink()
+    return [out] + [out.parent / name for name in names]
+
+
+# --------------------------------------------------------------------------- XDMF
+class _XdmfWriter(TimeSeriesWriter):
+    """meshio's XDMF time-series writer with the HDF5 file beside the XML file.
+
+    meshio opens ``stem + ".h5"`` relative to the current directory (meshio
+    issue #1442); here it is opened next to ``filename``.  The XML refers to the
+    HDF5 file by its base name, as meshio's reader and ParaView expect.
+    """
+
+    def __enter__(self) -> _XdmfWriter:
+        import h5py
+
+        self.h5_filename = str(self.filename.with_suffix(".h5"))
+        self.h5_file = h5py.File(self.h5_filename, "w")
+        return self
+
+
+def write_xdmf(path: str | os.PathLike[str], series: TimeSeries) -> list[Path]:
+    """Write an XDMF 3 time series, ``NAME.xdmf`` with ``NAME.h5`` beside it.
+
+    Readable with :class:`meshio.xdmf.TimeSeriesReader` (also :func:`read_series`)
+    and ParaView's XDMF readers.  Series-wide scalars are ``Information``
+    elements of the domain and attributes of the HDF5 root group.
+
+    Returns
+    -------
+    list of Path
+        The XDMF and the HDF5 file.
+    """
+    out = Path(path).expanduser()
+    h5_name = out.with_suffix(".h5").name
+    with staged_files(out) as scratch:
+        target = scratch / out.name
+        with _XdmfWriter(target) as writer:
+            writer.write_points_cells(series.points, [(series.cell_type, series.cells)])
+            for k, time in enumerate(series.times):
+                writer.write_data(float(time), point_data=series.frame(k))
+            for name, value in series.field_data.items():
+                ET.SubElement(writer.domain, "Information", Name=name, Value=repr(value))
+                writer.h5_file.attrs[name] = value
+        if not (scratch / h5_name).is_file():  # pragma: no cover - guards the workaround
+            raise OSError(f"the HDF5 file {h5_name} was not written beside {out.name}")
+    return [out, out.with_name(h5_name)]
+
+
+# --------------------------------------------------------------------------- dispatch
+WRITERS = {"xdmf": write_xdmf, "pvd": write_pvd}
+
+
+def write_series(
+    path: str | os.PathLike[str], series: TimeSeries, fmt: str | None = None
+) -> list[Path]:
+    """Write ``series`` in the format given by ``fmt`` or by the suffix of ``path``.
+
+    A ``.vtu`` file holds one frame, so ``series`` must have exactly one frame.
+
+    Returns
+    -------
+    list of Path
+        Every file written, the main file first.
+    """
+    fmt = series_format(path, fmt)
+    if fmt == "vtu":
+        if len(series) != 1:
+            raise ParameterError("--times", "exactly one time for a single .vtu file", len(series))
+        return write_vtu(path, series, 0)
+    return WRITERS[fmt](path, series)
+
+
+# --------------------------------------------------------------------------- reading back
+def _field_from_xdmf(path: Path) -> dict[str, float]:
+    root = ET.parse(path).getroot()
+    return {
+        info.get("Name", ""): float(info.get("Value", "nan")) for info in root.iter("Information")
+    }
+
+
+def _read_vtu(path: Path) -> tuple[meshio.Mesh, dict[str, float]]:
+    mesh = meshio.read(str(path), file_format="vtu")
+    fields = {name: float(np.asarray(v).ravel()[0]) for name, v in mesh.field_data.items()}
+    return mesh, fields
+
+
+def _stack(frames: list[dict[str, np.ndarray]]) -> dict[str, np.ndarray]:
+    return {name: np.stack([f[name] for f in frames]) for name in frames[0]}
+
+
+def read_series(path: str | os.PathLike[str]) -> TimeSeries:
+    """Read a series written by :func:`write_series` (any of the three formats).
+
+    XDMF goes through :class:`meshio.xdmf.TimeSeriesReader` (``meshio.read`` of a
+    time series exits the interpreter), PVD and VTU through meshio's VTU reader.
+    """
+    path = Path(path)
+    fmt = series_format(path)
+    if fmt == "xdmf":
+        with TimeSeriesReader(path) as reader:
+            points, cells = reader.read_points_cells()
+            times, frames = [], []
+            for k in range(reader.num_steps):
+                t, point_data, _ = reader.read_data(k)
+                times.append(t)
+                frames.append(point_data)
+        return TimeSeries(points, cells[0].data, times, _stack(frames), _field_from_xdmf(path))
+    files = [path.name] if fmt == "vtu" else _pvd_files(path)
+    meshes = [_read_vtu(path.parent / name) for name in files]
+    fields = dict(meshes[0][1])
+    times = [f.pop(TIME_VALUE) for _, f in meshes]
+    fields.pop(TIME_VALUE, None)
+    mesh = meshes[0][0]
+    return TimeSeries(
+        mesh.points, mesh.cells[0].data, times, _stack([m.point_data for m, _ in meshes]), fields
+    )

@@ -1,0 +1,111 @@
+"""Reference-to-surface mapping that lets scikit-fem integrate on triangles in 3D.
+
+scikit-fem maps reference triangles to the plane only.  For a triangle on a
+surface the Jacobian ``J = dx/dxi`` is 3 x 2; with the metric ``G = J^T J``
+
+* the area element is ``sqrt(det G)`` (returned as ``detDF``), and
+* the pseudo-inverse ``(J^T J)^{-1} J^T`` (returned as ``invDF``, shape 2 x 3)
+  turns reference gradients into tangential gradients,
+
+so skfem's ``grad`` becomes the surface gradient and ``dot(grad(u), grad(v))``
+the Laplace-Beltrami form (the weak form of eq. (3.9) on the sphere).  The
+geometry is Lagrange-interpolated from nodes: P1 (flat triangles) or P2 (curved,
+isoparametric when the P2 element is used).  Dimensionless.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+from skfem.element import Element
+from skfem.mapping import Mapping
+
+
+class SurfaceMapping(Mapping):
+    """Lagrange mapping of reference triangles onto a surface in R^3.
+
+    Parameters
+    ----------
+    nodes : ndarray, shape (3, P)
+        Geometry node coordinates.
+    element_nodes : ndarray, shape (n_local, T)
+        Geometry node indices per element, in the local order of ``elem``.
+    elem : skfem Element
+        Lagrange element of the geometry (``ElementTriP1`` or ``ElementTriP2``).
+
+    Notes
+    -----
+    Implements what :class:`skfem.CellBasis` needs: ``F``, ``DF``, ``detDF`` and
+    ``invDF`` at reference points ``X`` of shape (2, Q).  Boundary maps are not
+    implemented (a closed surface has no boundary).
+    """
+
+    def __init__(self, nodes: np.ndarray, element_nodes: np.ndarray, elem: Element) -> None:
+        self.nodes = np.asarray(nodes, dtype=float)
+        self.element_nodes = np.asarray(element_nodes, dtype=np.int64)
+        self.elem = elem
+        self.dim = 2
+        if self.nodes.shape[0] != 3:
+            raise ValueError("nodes must have shape (3, P)")
+        if self.element_nodes.shape[0] != elem.doflocs.shape[0]:
+            raise ValueError("element_nodes must have one row per local node of elem")
+        self._cache: dict[tuple, np.ndarray] = {}
+
+    def _select(self, tind: np.ndarray | None) -> np.ndarray:
+        return self.element_nodes if tind is None else self.element_nodes[:, tind]
+
+    @staticmethod
+    def _check_points(X: np.ndarray) -> np.ndarray:
+        X = np.asarray(X, dtype=float)
+        if X.ndim != 2:
+            raise NotImplementedError("SurfaceMapping needs reference points of shape (2, Q)")
+        return X
+
+    def F(self, X: np.ndarray, tind: np.ndarray | None = None) -> np.ndarray:
+        """Surface points x(xi), shape (3, T, Q)."""
+        X = self._check_points(X)
+        elements = self._select(tind)
+        out = np.zeros((3, elements.shape[1], X.shape[1]))
+        for k in range(elements.shape[0]):
+            phi, _ = self.elem.lbasis(X, k)
+            out += self.nodes[:, elements[k]][:, :, None] * phi[None, None, :]
+        return out
+
+    def DF(self, X: np.ndarray, tind: np.ndarray | None = None) -> np.ndarray:
+        """Jacobian ``J[i, j] = dx_i / dxi_j``, shape (3, 2, T, Q) (cached)."""
+        X = self._check_points(X)
+        key = (X.tobytes(), X.shape, None if tind is None else np.asarray(tind).tobytes())
+        if key not in self._cache:
+            elements = self._select(tind)
+            out = np.zeros((3, 2, elements.shape[1], X.shape[1]))
+            for k in range(elements.shape[0]):
+                _, dphi = self.elem.lbasis(X, k)
+                out += self.nodes[:, elements[k]][:, None, :, None] * dphi[None, :, None, :]
+            self._cache = {key: out}  # keep only the latest quadrature
+        return self._cache[key]
+
+    def metric(self, X: np.ndarray, tind: np.ndarray | None = None) -> np.ndarray:
+        """First fundamental form ``G = J^T J``, shape (2, 2, T, Q)."""
+        J = self.DF(X, tind)
+        return np.einsum("kitq,kjtq->ijtq", J, J)
+
+    def detDF(self, X: np.ndarray, tind: np.ndarray | None = None) -> np.ndarray:
+        """Area element ``sqrt(det(J^T J))``, shape (T, Q)."""
+        G = self.metric(X, tind)
+        det = G[0, 0] * G[1, 1] - G[0, 1] * G[1, 0]
+        if np.any(det <= 0.0):
+            raise ValueError("degenerate surface element (zero area)")
+        return np.sqrt(det)
+
+    def invDF(self, X: np.ndarray, tind: np.ndarray | None = None) -> np.ndarray:
+        """Pseudo-inverse ``(J^T J)^{-1} J^T``, shape (2, 3, T, Q).
+
+        skfem forms ``grad_j = sum_i invDF[i, j] dphi_i``, the tangential gradient.
+        """
+        J = self.DF(X, tind)
+        G = self.metric(X, tind)
+        det = G[0, 0] * G[1, 1] - G[0, 1] * G[1, 0]
+        inverse = np.array([[G[1, 1], -G[0, 1]], [-G[1, 0], G[0, 0]]]) / det
+        return np.einsum("ijtq,kjtq->iktq", inverse, J)
+
+    def normals(self, X, tind, find, t2f):  # noqa: D102 - closed surfaces have no facets
+        raise NotImplementedError("SurfaceMapping: a closed surface has no boundary facets")

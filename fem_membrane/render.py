@@ -1,0 +1,424 @@
+"""Off-screen pictures and animations of the bouncing ball with pyvista (PNG, GIF, MP4).
+
+The ball is drawn deformed by its radial displacement (magnified by a *warp*
+factor) and coloured by the displacement in mm; the upper body, a small sphere,
+sits on the pole until lift-off and then follows its free flight.  All inputs
+are SI (m, s); :func:`verify.fields.ball_scene` builds a :class:`BallScene` from
+a case.
+
+Works without a display: before VTK is loaded, ``VTK_DEFAULT_OPENGL_WINDOW`` is
+set to ``vtkEGLRenderWindow`` unless the user has chosen a window class
+(otherwise VTK tries X first and prints "bad X server connection"); pyvista's
+``OFF_SCREEN`` is switched on, and VTK's log and output window are kept quiet
+while rendering, so no warnings reach the terminal.  GIFs are written with
+imageio (pillow), MP4 files with imageio-ffmpeg (H.264, frame sizes rounded up
+to multiples of 16 so that no encoder has to resize).
+"""
+
+from __future__ import annotations
+
+import contextlib
+import math
+import os
+from collections.abc import Iterator
+from dataclasses import dataclass
+from pathlib import Path
+
+import numpy as np
+
+from modal.errors import ParameterError
+
+from .export import staged_files
+
+IMAGE_KINDS: tuple[str, ...] = (".png", ".gif", ".mp4")
+DEFAULT_SIZE = (640, 480)
+MACRO_BLOCK = 16  # MP4 (H.264, yuv420p) frame sizes must be multiples of this
+AUTO_WARP_SHARE = 0.15  # auto warp: the largest displacement drawn at 15 % of R
+BODY_SHARE = 0.2  # radius of the drawn upper body, as a share of R
+MAX_SIZE = 4096  # largest accepted image side [px]
+
+
+@dataclass(frozen=True)
+class BallScene:
+    """What a picture shows, in SI units.
+
+    Parameters
+    ----------
+    points : ndarray, shape (P, 3)
+        Undeformed node coordinates [m] on the sphere of radius ``radius``.
+    cells : ndarray, shape (T, 3) or (T, 6)
+        Triangles or quadratic triangles (meshio ``triangle6`` node order).
+    times : ndarray, shape (F,)
+        Frame times [s] after maximal compression.
+    u : ndarray, shape (F, P)
+        Radial displacement [m] at the nodes.
+    body : ndarray, shape (F,)
+        Radial position [m] of the upper body's contact point relative to the
+        undeformed pole: ``u(t, 0)`` before lift-off, the ballistic path after.
+    radius : float
+        Ball radius R [m].
+    t_liftoff : float or None
+        Lift-off time [s], if the body lifts off.
+    label : str
+        Short description drawn in a corner (case, backend).
+    """
+
+    points: np.ndarray
+    cells: np.ndarray
+    times: np.ndarray
+    u: np.ndarray
+    body: np.ndarray
+    radius: float
+    t_liftoff: float | None = None
+    label: str = ""
+
+    def __post_init__(self) -> None:
+        times = np.atleast_1d(np.asarray(self.times, dtype=float))
+        u = np.atleast_2d(np.asarray(self.u, dtype=float))
+        body = np.atleast_1d(np.asarray(self.body, dtype=float))
+        points = np.asarray(self.points, dtype=float)
+        if u.shape != (times.size, points.shape[0]) or body.shape != times.shape:
+            raise ValueError("u must have shape (F, P) and body shape (F,) for F times")
+        object.__setattr__(self, "times", times)
+        object.__setattr__(self, "u", u)
+        object.__setattr__(self, "body", body)
+        object.__setattr__(self, "points", points)
+        object.__setattr__(self, "cells", np.asarray(self.cells, dtype=np.int64))
+
+    def auto_warp(self) -> float:
+        """Warp factor drawing the largest displacement at 15 % of R, never below 1.
+
+        Physical displacements of the basketball are a few mm at the pole on a
+        120 mm ball; the initial flattening of the bottom is ~15 % of R already,
+        so this is ~1 for the preset and magnifies only small deformations.
+        """
+        largest = float(np.abs(self.u).max()) if self.u.size else 0.0
+        if largest <= 0.0:
+            return 1.0
+        return max(1.0, AUTO_WARP_SHARE * self.radius / largest)
+
+
+# --------------------------------------------------------------------------- options
+def check_size(size: tuple[int, int] | str, flag: str = "--size") -> tuple[int, int]:
+    """Image size ``(width, height)`` in pixels from a tuple or a ``WxH`` string."""
+    valid = f"WIDTHxHEIGHT in pixels, each an integer in [16, {MAX_SIZE}]"
+    if isinstance(size, str):
+        parts = size.lower().replace(" ", "").split("x")
+        try:
+            width, height = (int(p) for p in parts)
+        except ValueError:
+            raise ParameterError(flag, valid, size) from None
+    else:
+        try:
+            width, height = size
+        except (TypeError, ValueError):
+            raise ParameterError(flag, valid, size) from None
+        if not all(isinstance(v, int | np.integer) for v in (width, height)):
+            raise ParameterError(flag, valid, size)
+    if not (16 <= width <= MAX_SIZE and 16 <= height <= MAX_SIZE):
+        raise ParameterError(flag, valid, size if isinstance(size, str) else tuple(size))
+    return int(width), int(height)
+
+
+def round_size(size: tuple[int, int], block: int = MACRO_BLOCK) -> tuple[int, int]:
+    """``size`` with each side rounded up to a multiple of ``block`` (MP4 macro blocks)."""
+    return tuple(int(math.ceil(s / block) * block) for s in size)  # type: ignore[return-value]
+
+
+def check_warp(warp: float | None, flag: str = "--warp") -> float | None:
+    """A warp factor: None (automatic) or a finite number >= 0."""
+    if warp is None:
+        return None
+    if isinstance(warp, bool) or not math.isfinite(float(warp)) or float(warp) < 0.0:
+        raise ParameterError(flag, "a finite number >= 0 (or auto)", warp)
+    return float(warp)
+
+
+def image_kind(path: str | os.PathLike[str], flag: str = "--out") -> str:
+    """``.png``, ``.gif`` or ``.mp4`` from the suffix of ``path``."""
+    suffix = Path(path).suffix.lower()
+    if suffix not in IMAGE_KINDS:
+        raise ParameterError(flag, "a file name ending in .png, .gif or .mp4", str(path))
+    return suffix
+
+
+# --------------------------------------------------------------------------- VTK set-up
+def _pyvista():
+    """Import pyvista for off-screen use (EGL unless the user chose a window class)."""
+    os.environ.setdefault("VTK_DEFAULT_OPENGL_WINDOW", "vtkEGLRenderWindow")
+    import pyvista
+
+    pyvista.OFF_SCREEN = True
+    return pyvista
+
+
+@contextlib.contextmanager
+def quiet_vtk() -> Iterator[None]:
+    """Keep VTK's warnings off the terminal while rendering (restored afterwards).
+
+    VTK reports through two channels: the logger (``vtkLogger``, e.g. window
+    creation messages) and the output window (``vtkOutputWindow``, e.g. warnings
+    of filters).  The logger's terminal verbosity is lowered to errors and the
+    output window replaced by a string buffer for the duration.
+    """
+    from vtkmodules.vtkCommonCore import vtkLogger, vtkOutputWindow, vtkStringOutputWindow
+
+    previous_window = vtkOutputWindow.GetInstance()
+    previous_level = vtkLogger.GetCurrentVerbosityCutoff()
+    buffer = vtkStringOutputWindow()
+    vtkOutputWindow.SetInstance(buffer)
+    vtkLogger.SetStderrVerbosity(vtkLogger.VERBOSITY_ERROR)
+    try:
+        yield
+    finally:
+        vtkOutputWindow.SetInstance(previous_window)
+        vtkLogger.SetStderrVerbosity(previous_level)
+
+
+# --------------------------------------------------------------------------- geometry
+def surface_triangles(cells: np.ndarray) -> np.ndarray:
+    """Flat triangles for drawing: P1 cells as they are, each P2 cell split into four.
+
+    The split uses the three edge nodes (meshio ``triangle6`` order), so every
+    node of a quadratic mesh is a drawn vertex.
+    """
+    cells = np.asarray(cells, dtype=np.int64)
+    if cells.shape[1] == 3:
+        return cells
+    a, b, c, ab, bc, ca = cells.T
+    return np.vstack(
+        [
+            np.column_stack([a, ab, ca]),
+            np.column_stack([ab, b, bc]),
+            np.column_stack([ca, bc, c]),
+            np.column_stack([ab, bc, ca]),
+        ]
+    )
+
+
+def deformed_points(points: np.ndarray, u: np.ndarray, warp: float) -> np.ndarray:
+    """``x + warp * u * n`` with the outward unit normal ``n = x / |x|`` of the sphere."""
+    normal = points / np.linalg.norm(points, axis=1, keepdims=True)
+    return points + (warp * u)[:, None] * normal
+
+
+def color_limits(u_mm: np.ndarray) -> tuple[float, float]:
+    """Symmetric colour range [mm] covering 99.5 % of the nodal values of all frames.
+
+    A percentile, not the maximum: the flattened bottom at t = 0 is far deeper
+    than the later waves and would wash out every other frame.
+    """
+    spread = float(np.percentile(np.abs(u_mm), 99.5)) if u_mm.size else 0.0
+    spread = spread if spread > 0 else 1.0
+    return -spread, spread
+
+
+# --------------------------------------------------------------------------- rendering
+class _Renderer:
+    """One off-screen plotter reused for every frame of a scene."""
+
+    def __init__(self, scene: BallScene, warp: float, size: tuple[int, int]) -> None:
+        pv = _pyvista()
+        self.scene = scene
+        self.warp = warp
+        radius = scene.radius
+        self.body_radius = BODY_SHARE * radius
+        triangles = surface_triangles(scene.cells)
+        faces = np.hstack([np.full((len(triangles), 1), 3), triangles]).ravel()
+        self.surface = pv.PolyData(scene.points.copy(), faces)
+        self.surface.point_data["u [mm]"] = scene.u[0] * 1e3
+        self.plotter = pv.Plotter(off_screen=True, window_size=list(size))
+        scale = min(size[0] / DEFAULT_SIZE[0], size[1] / DEFAULT_SIZE[1])  # text follows size
+        small, large = max(6, round(8 * scale)), max(8, round(11 * scale))
+        self.plotter.set_background("white")
+        clim = color_limits(scene.u * 1e3)
+        self.actor = self.plotter.add_mesh(
+            self.surface,
+            scalars="u [mm]",
+            cmap="coolwarm",
+            clim=clim,
+            smooth_shading=True,
+            copy_mesh=False,
+            scalar_bar_args={
+                "title": "u [mm]",
+                "color": "black",
+                "vertical": True,
+                "position_x": 0.86,
+                "position_y": 0.2,
+                "height": 0.6,
+                "width": 0.08,
+                "fmt": "%.1f",
+                "title_font_size": max(10, round(16 * scale)),
+                "label_font_size": max(9, round(14 * scale)),
+                "unconstrained_font_size": True,
+            },
+        )
+        self.drawn = self.actor.mapper.dataset  # what the mapper draws (normals added)
+        body = pv.Sphere(radius=self.body_radius, theta_resolution=32, phi_resolution=32)
+        self.body = self.plotter.add_mesh(body, color="gold", smooth_shading=True)
+        self.plotter.add_text(scene.label, position="lower_left", font_size=small, color="black")
+        self.clock = self.plotter.add_text(
+            "", position="upper_left", font_size=large, color="black"
+        )
+        self._place_camera()
+
+    def _place_camera(self) -> None:
+        radius = self.scene.radius
+        top = radius + self.warp * float(self.scene.body.max()) + 2.0 * self.body_radius
+        bottom = -radius * (1.0 + 0.2)
+        centre = 0.5 * (top + bottom)
+        height = top - bottom
+        distance = 1.25 * max(height, 2.4 * radius) / (2.0 * math.tan(math.radians(15.0)))
+        direction = np.array([1.0, -2.6, 0.35])
+        direction /= np.linalg.norm(direction)
+        focus = np.array([0.0, 0.0, centre])
+        self.plotter.camera_position = [
+            tuple(focus + distance * direction),
+            tuple(focus),
+            (0, 0, 1),
+        ]
+        self.plotter.camera.view_angle = 30.0
+
+    def frame(self, k: int) -> np.ndarray:
+        """RGB image (H, W, 3) of frame ``k``."""
+        scene = self.scene
+        u = scene.u[k]
+        points = deformed_points(scene.points, u, self.warp)
+        self.surface.points = points
+        self.surface.point_data["u [mm]"] = u * 1e3
+        self.drawn.points = points
+        self.drawn.point_data["u [mm]"] = u * 1e3
+        normals = self.surface.compute_normals(
+            cell_normals=False, split_vertices=False, auto_orient_normals=False
+        ).point_data["Normals"]
+        self.drawn.point_data["Normals"] = normals
+        self.drawn.point_data.active_normals_name = "Normals"
+        height = scene.radius + self.warp * float(scene.body[k]) + self.body_radius
+        self.body.position = (0.0, 0.0, height)
+        text = f"t = {scene.times[k] * 1e3:6.2f} ms"
+        if scene.t_liftoff is not None:
+            flying = scene.times[k] >= scene.t_liftoff - 1e-12
+            # short lines: the corner annotation shrinks its font to fit the longest
+            text += f"\nlift-off {scene.t_liftoff * 1e3:.2f} ms"
+            text += "\nbody in flight" if flying else "\nbody on the pole"
+        if self.warp != 1.0:
+            text += f"\nwarp x{self.warp:.3g}"
+        self.clock.set_text("upper_left", text)
+        self.plotter.render()
+        return np.asarray(self.plotter.screenshot(return_img=True))[..., :3].copy()
+
+    def close(self) -> None:
+        self.plotter.close()
+
+
+def render_frames(
+    scene: BallScene, warp: float | None = None, size: tuple[int, int] = DEFAULT_SIZE
+) -> Iterator[np.ndarray]:
+    """Yield one RGB image (H, W, 3), uint8, per frame of ``scene``.
+
+    Parameters
+    ----------
+    scene : BallScene
+        Geometry and motion (SI).
+    warp : float or None
+        Displacement magnification; None: :meth:`BallScene.auto_warp`.
+    size : (int, int)
+        Image width and height [px].
+    """
+    warp = scene.auto_warp() if warp is None else check_warp(warp)
+    with quiet_vtk():
+        renderer = _Renderer(scene, warp, check_size(size))
+        try:
+            for k in range(scene.times.size):
+                yield renderer.frame(k)
+        finally:
+            renderer.close()
+
+
+def _write_png(target: Path, images: Iterator[np.ndarray]) -> int:
+    import imageio.v3 as iio
+
+    image = next(images)
+    iio.imwrite(target, image, extension=".png")
+    return 1
+
+
+def _write_gif(target: Path, images: Iterator[np.ndarray], fps: float) -> int:
+    import imageio.v3 as iio
+
+    frames = list(images)
+    iio.imwrite(target, np.stack(frames), extension=".gif", duration=1000.0 / fps, loop=0)
+    return len(frames)
+
+
+def _write_mp4(target: Path, images: Iterator[np.ndarray], fps: float) -> int:
+    import imageio.v2 as imageio
+
+    count = 0
+    writer = imageio.get_writer(
+        target,
+        format="FFMPEG",  # type: ignore[arg-type]
+        mode="I",
+        fps=fps,
+        codec="libx264",
+        pixelformat="yuv420p",
+        macro_block_size=MACRO_BLOCK,
+        ffmpeg_log_level="error",
+    )
+    try:
+        for image in images:
+            writer.append_data(image)
+            count += 1
+    finally:
+        writer.close()
+    return count
+
+
+def render_scene(
+    path: str | os.PathLike[str],
+    scene: BallScene,
+    *,
+    warp: float | None = None,
+    size: tuple[int, int] | str = DEFAULT_SIZE,
+    fps: float = 20.0,
+) -> Path:
+    """Render ``scene`` to a PNG (its first frame), an animated GIF or an MP4.
+
+    Parameters
+    ----------
+    path : path-like
+        Output file; the suffix (``.png``, ``.gif``, ``.mp4``) chooses the kind.
+        Written beside, then renamed into place (no partial file on failure).
+    scene : BallScene
+        What to draw (SI).
+    warp : float or None
+        Displacement magnification (``--warp``); None for :meth:`BallScene.auto_warp`.
+    size : (int, int) or "WxH"
+        Image size [px] (``--size``); rounded up to multiples of 16 for MP4.
+    fps : float
+        Frames per second of an animation.
+
+    Returns
+    -------
+    Path
+        ``path``.
+    """
+    out = Path(path).expanduser()
+    kind = image_kind(out)
+    size = check_size(size)
+    warp = check_warp(warp)
+    if not (math.isfinite(fps) and fps > 0):
+        raise ParameterError("--fps", "a finite number > 0", fps)
+    if kind == ".mp4":
+        size = round_size(size)
+    with staged_files(out) as scratch:
+        target = scratch / out.name
+        images = render_frames(scene, warp, size)
+        if kind == ".png":
+            _write_png(target, images)
+        elif kind == ".gif":
+            _write_gif(target, images, fps)
+        else:
+            _write_mp4(target, images, fps)
+        images.close()
+    return out

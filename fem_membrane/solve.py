@@ -1,0 +1,288 @@
+"""Finite-element pole motion: the entry point for the command line.
+
+Two independent time discretisations of the semi-discrete membrane equation
+(3.9) with damping ratio D:
+
+``modal``
+    Superposition of finite-element eigenmodes in closed form, eqs. (3.14)-(3.16),
+    returned as the shared :class:`modal.series.ModalSeries`.
+``alpha``
+    Direct generalized-alpha stepping of ``M u'' + C u' + K u = 0`` from the
+    filtered initial displacement, returned as
+    :class:`modal.liftoff.SampledPoleMotion` (each of the pole's u, u_t, u_tt
+    through its own cubic spline on the step grid).
+
+Both motions go to :func:`modal.liftoff.find_liftoff`; nothing here decides
+lift-off, filters or scales.  Everything is dimensionless.
+"""
+
+from __future__ import annotations
+
+import time as clock
+from dataclasses import dataclass, field
+from typing import Any
+
+import numpy as np
+
+from modal.errors import ParameterError
+from modal.filters import FilterKind, SpectralFilter
+from modal.initial import _check_phi_a
+from modal.liftoff import DEFAULT_T_END, PoleMotion, SampledPoleMotion
+from modal.series import ModalSeries, check_damping
+
+from .alpha import GeneralizedAlpha, automatic_step
+from .build import build_space
+from .checks import (
+    DAMPING_MODELS,
+    INITIAL_METHODS,
+    TIME_SCHEMES,
+    check_choice,
+    check_dt,
+    check_rho_inf,
+    check_t_end,
+)
+from .damping import RAYLEIGH_LOW, ModalDamping, RayleighDamping
+from .eigen import Eigenpairs, eigenpairs
+from .initial import initial_moments
+from .modal import filtered_displacement, modal_series
+from .space import Discretisation
+
+STEP_ACCURACY = 0.2  # automatic dt: omega_cut * dt <= 0.2
+
+
+@dataclass
+class ModalModel:
+    """Space, eigenpairs and modal series of one finite-element run (dimensionless)."""
+
+    space: Discretisation
+    pairs: Eigenpairs
+    moments: np.ndarray
+    series: ModalSeries
+    seconds: dict[str, float] = field(default_factory=dict)
+
+    @property
+    def filter(self) -> SpectralFilter:
+        """The spectral filter of the series."""
+        return self.series.filter
+
+
+def as_filter(filter: SpectralFilter | FilterKind, modes: int = 30) -> SpectralFilter:
+    """A SpectralFilter from a filter or a kind name (with ``modes``)."""
+    if isinstance(filter, SpectralFilter):
+        return filter
+    return SpectralFilter(filter, modes)
+
+
+def modal_model(
+    phi_a: float,
+    damping: float,
+    filter: SpectralFilter | FilterKind = "lanczos",
+    *,
+    mesh: str = "sphere",
+    level: int | None = None,
+    elements: int | None = None,
+    order: int = 2,
+    initial: str = "projection",
+) -> ModalModel:
+    """Assemble, project F (eq. (3.10)) and compute all eigenpairs below the filter cutoff.
+
+    The eigenvalue cutoff is ``filter.omega_cut**2``, so every mode the filter
+    keeps is computed (eqs. (3.12), (3.16)).  See :func:`fem_pole_motion`.
+    """
+    phi_a = _check_phi_a(phi_a)
+    damping = check_damping(damping)
+    filter = as_filter(filter)
+    initial = check_choice("--initial", initial, INITIAL_METHODS)
+    seconds = {}
+    start = clock.perf_counter()
+    space = build_space(mesh, level=level, elements=elements, order=order, phi_a=phi_a)
+    moments = initial_moments(space, phi_a, initial)
+    seconds["assembly"] = clock.perf_counter() - start
+    start = clock.perf_counter()
+    pairs = eigenpairs(space.stiffness, space.mass, filter.omega_cut**2)
+    seconds["eigen"] = clock.perf_counter() - start
+    series = modal_series(pairs, moments, space.pole, damping, filter)
+    return ModalModel(space, pairs, moments, series, seconds)
+
+
+def rayleigh_damping(
+    model: ModalModel, frequencies: tuple[float, float] | None = None
+) -> RayleighDamping:
+    """Rayleigh damping fitted to D at ``frequencies`` (default sqrt(2) and omega_N)."""
+    low, high = (RAYLEIGH_LOW, model.filter.omega_n) if frequencies is None else frequencies
+    return RayleighDamping.fit(model.series.damping, low, high)
+
+
+def alpha_motion(
+    model: ModalModel,
+    *,
+    damping_model: str = "modal",
+    dt: float | None = None,
+    rho_inf: float = 1.0,
+    t_end: float = DEFAULT_T_END,
+    rayleigh_frequencies: tuple[float, float] | None = None,
+) -> tuple[SampledPoleMotion, dict[str, Any]]:
+    """Generalized-alpha stepping from the filtered initial displacement.
+
+    ``u0 = Phi diag(sigma) Phi^T M u_proj`` (the filtered series at t = 0),
+    ``u_t(0) = 0`` and ``M u_tt(0) = -K u0``; the sampled pole motion matches the
+    modal series as dt -> 0 (for ``damping_model="modal"``).
+
+    Returns
+    -------
+    SampledPoleMotion, dict
+        Pole samples and ``dt``, ``steps``, ``rho_inf`` (and ``rayleigh``:
+        alpha, beta, fitting frequencies and the effective-ratio table).
+    """
+    damping_model = check_choice("--damping-model", damping_model, DAMPING_MODELS)
+    dt = check_dt(dt)
+    rho_inf = check_rho_inf(rho_inf)
+    t_end = check_t_end(t_end)
+    space, pairs, series = model.space, model.pairs, model.series
+    if dt is None:
+        dt = automatic_step(model.filter.omega_cut, t_end, STEP_ACCURACY)
+    info: dict[str, Any] = {"dt": dt, "rho_inf": rho_inf}
+    if damping_model == "modal":
+        damping = ModalDamping.from_modes(space.mass, pairs, series.damping)
+    else:
+        rayleigh = rayleigh_damping(model, rayleigh_frequencies)
+        damping = rayleigh.matrix(space.mass, space.stiffness)
+        retained = series.omega[series.retained]
+        info["rayleigh"] = {
+            "alpha": rayleigh.alpha,
+            "beta": rayleigh.beta,
+            "omega_low": rayleigh.omega_low,
+            "omega_high": rayleigh.omega_high,
+            "table": rayleigh.table(retained),
+        }
+    start = clock.perf_counter()
+    stepper = GeneralizedAlpha(space.mass, space.stiffness, dt, damping, rho_inf)
+    u0 = filtered_displacement(series, pairs)
+    history = stepper.run(u0, np.zeros_like(u0), t_end, space.pole)
+    info["steps"] = history.t.size - 1
+    info["seconds_stepping"] = clock.perf_counter() - start
+    # an integrator's u, u_t, u_tt are each O(dt^2), not derivatives of one another
+    motion = SampledPoleMotion(
+        history.t, history.u, history.u_t, history.u_tt, interpolation="splines"
+    )
+    return motion, info
+
+
+def fem_pole_motion(
+    phi_a: float,
+    damping: float,
+    filter: SpectralFilter | FilterKind = "lanczos",
+    *,
+    mesh: str = "sphere",
+    level: int | None = None,
+    elements: int | None = None,
+    order: int = 2,
+    time: str = "modal",
+    damping_model: str = "modal",
+    dt: float | None = None,
+    rho_inf: float = 1.0,
+    t_end: float = DEFAULT_T_END,
+    initial: str = "projection",
+    rayleigh_frequencies: tuple[float, float] | None = None,
+) -> tuple[PoleMotion, dict[str, Any]]:
+    """Pole motion of the damped membrane from finite elements (dimensionless).
+
+    Solves eq. (3.9) with modal damping ratio D (eq. (3.14)) from the initial
+    displacement F of eq. (3.10), Galerkin-projected (the discrete eq. (3.12)),
+    filtered by frequency as in eq. (3.16).
+
+    Parameters
+    ----------
+    phi_a : float
+        Contact angle [rad] in (pi/2, pi) (``--phi-a``).
+    damping : float
+        Damping ratio D in [0, 1) (``--damping``).
+    filter : SpectralFilter or {"lanczos", "printed", "none"}
+        Spectral filter; a kind name uses N = 30.  Its ``omega_cut`` is the
+        eigenvalue cutoff, also for ``"none"``.
+    mesh : {"sphere", "ring", "axisym"}
+        Icosphere, sphere with a ring of edges at phi_a, or axisymmetric line.
+    level : int, optional
+        Sphere refinement level >= 0 (``--level``, default 3).
+    elements : int, optional
+        Axisymmetric elements >= 2 (``--elements``, default 400).
+    order : {1, 2}
+        P1 on flat triangles or isoparametric P2 (``--order``).
+    time : {"modal", "alpha"}
+        Modal superposition or generalized-alpha stepping (``--time``).
+    damping_model : {"modal", "rayleigh"}
+        ``alpha`` only: ratio D on every computed mode (low rank), or Rayleigh
+        ``C = a M + b K`` fitted at ``rayleigh_frequencies`` (default sqrt(2)
+        and omega_N) (``--damping-model``).
+    dt : float, optional
+        Time step > 0 (``--dt``); default ``omega_cut dt <= 0.2``.
+    rho_inf : float
+        Generalized-alpha spectral radius in [0, 1] (``--rho-inf``); 1 =
+        average acceleration.
+    t_end : float
+        End of the stepped window (``--t-end``), default 4 pi.
+    initial : {"projection", "interpolation"}
+        Galerkin L2 projection of F, or nodal interpolation (``--initial``).
+    rayleigh_frequencies : (float, float), optional
+        The two frequencies where the Rayleigh ratio equals D.
+
+    Returns
+    -------
+    motion : ModalSeries or SampledPoleMotion
+        Anything :func:`modal.liftoff.find_liftoff` accepts.
+    info : dict
+        ``dofs``, ``modes_used`` (nonzero filter weight), ``modes_computed``,
+        ``mesh``, ``order``, ``time_scheme``, ``damping_model``, ``initial``,
+        ``omega_cut``, ``omega_next`` (first frequency above the cutoff),
+        ``seconds`` (assembly, eigen, stepping); for ``alpha`` also ``dt``,
+        ``steps``, ``rho_inf`` and, for Rayleigh damping, ``rayleigh`` with
+        ``alpha``, ``beta``, ``omega_low``, ``omega_high`` and ``table`` (rows
+        ``mode``, ``omega``, ``zeta``, ``ratio`` = zeta / D).
+    """
+    time = check_choice("--time", time, TIME_SCHEMES)
+    damping_model = check_choice("--damping-model", damping_model, DAMPING_MODELS)
+    dt = check_dt(dt)
+    rho_inf = check_rho_inf(rho_inf)
+    t_end = check_t_end(t_end)
+    if time == "modal" and damping_model != "modal":
+        raise ParameterError(
+            "--damping-model", "modal with --time modal (one ratio D for all modes)", damping_model
+        )
+    model = modal_model(
+        phi_a,
+        damping,
+        filter,
+        mesh=mesh,
+        level=level,
+        elements=elements,
+        order=order,
+        initial=initial,
+    )
+    space, pairs, series = model.space, model.pairs, model.series
+    next_value = pairs.next_value
+    info: dict[str, Any] = {
+        "dofs": space.dofs,
+        "modes_used": int(np.count_nonzero(series.retained)),
+        "modes_computed": len(pairs),
+        "mesh": space.name,
+        "order": space.order,
+        "time_scheme": time,
+        "damping_model": damping_model,
+        "initial": initial,
+        "omega_cut": series.filter.omega_cut,
+        "omega_next": None if next_value is None else float(np.sqrt(max(next_value, 0.0))),
+        "seconds": dict(model.seconds),
+    }
+    if time == "modal":
+        return series, info
+    motion, extra = alpha_motion(
+        model,
+        damping_model=damping_model,
+        dt=dt,
+        rho_inf=rho_inf,
+        t_end=t_end,
+        rayleigh_frequencies=rayleigh_frequencies,
+    )
+    info["seconds"]["stepping"] = extra.pop("seconds_stepping")
+    info.update(extra)
+    return motion, info

@@ -1,0 +1,172 @@
+"""twoball converge: refinement studies, their orders and their report files."""
+
+import json
+
+import numpy as np
+import pytest
+
+from modal.parameters import preset
+from verify.cli import main
+from verify.studies import (
+    converged_legendre,
+    parse_modes,
+    run_dt_study,
+    run_h_study,
+    run_modes_study,
+    run_order_study,
+)
+
+FILES = {"report.md", "results.json", "results.csv", "convergence.png"}
+
+
+def run(capsys, *argv):
+    code = main(list(argv))
+    out = capsys.readouterr()
+    return code, out.out, out.err
+
+
+def test_converged_reference_settles_to_1e7():
+    case = preset("basketball")
+    limit = converged_legendre(case)
+    assert limit.converged and limit.clear
+    (_, t0, v0), (_, t1, v1) = limit.history[-2:]
+    assert abs(v1 - v0) <= 1e-7 * abs(v1) and abs(t1 - t0) <= 1e-7 * t1
+    assert limit.velocity * case.scalings.velocity == pytest.approx(3.94537, abs=1e-5)
+
+
+def test_modes_study_is_second_order_and_states_the_n30_truncation():
+    study = run_modes_study(preset("basketball"), modes=(30, 60, 120, 240))
+    assert study.passed
+    orders = {q.spec.key: q.checked_order for q in study.quantities}
+    assert set(orders) == {"t_l", "v_l", "pole_l2", "energy_end"}
+    for order in orders.values():
+        assert order == pytest.approx(2.0, abs=0.1)
+    v_l = next(q for q in study.quantities if q.spec.key == "v_l")
+    assert v_l.relative_errors[0] == pytest.approx(0.0287, abs=5e-4)  # N = 30
+    assert v_l.analysis.gci is not None and v_l.analysis.gci.convergence == "monotone"
+    assert any("Truncation error of N = 30" in note for note in study.notes)
+
+
+def test_converge_modes_cli_writes_every_file(capsys, tmp_path):
+    out = tmp_path / "modes"
+    code, stdout, _ = run(
+        capsys, "converge", "--study", "modes", "--modes-list", "30,60,120", "--out", str(out),
+        "--json",
+    )  # fmt: skip
+    assert code == 0
+    data = json.loads(stdout)
+    assert data["study"] == "modes" and data["passed"] is True
+    assert {p.name for p in out.iterdir()} == FILES
+    report = (out / "report.md").read_text()
+    assert "Truncation error of N = 30" in report and "PASS" in report
+    csv_lines = (out / "results.csv").read_text().splitlines()
+    assert csv_lines[0].startswith("quantity,label,grid") and len(csv_lines) == 1 + 4 * 3
+    assert json.loads((out / "results.json").read_text())["quantities"][0]["key"] == "t_l"
+
+
+def test_converge_replaces_an_old_report_and_leaves_no_scratch(capsys, tmp_path):
+    out = tmp_path / "report"
+    out.mkdir()
+    (out / "stale.txt").write_text("old")
+    code, _, _ = run(capsys, "converge", "--study", "modes", "--modes-list", "30,60,120",
+                     "--out", str(out))  # fmt: skip
+    assert code == 0 and not (out / "stale.txt").exists()
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["report"]
+
+
+@pytest.mark.parametrize(
+    ("argv", "flag"),
+    [
+        (["--study", "h", "--levels", "3"], "--levels"),
+        (["--study", "h", "--levels", "4:2"], "--levels"),
+        (["--study", "h", "--levels", "a:b"], "--levels"),
+        (["--study", "h", "--levels", "2:99"], "--levels"),
+        (["--study", "nonsense"], "--study"),
+        (["--study", "modes", "--modes-list", "30,20,40"], "--modes-list"),
+    ],
+)
+def test_bad_input_is_one_line_exit_2_and_no_files(capsys, tmp_path, argv, flag):
+    out = tmp_path / "never"
+    with pytest.raises(SystemExit) as exit_info:
+        main(["converge", *argv, "--out", str(out)])
+    err = capsys.readouterr().err
+    assert exit_info.value.code == 2
+    assert err.count("\n") == 1 and err.startswith("twoball: error:") and flag in err
+    assert not out.exists() and list(tmp_path.iterdir()) == []
+
+
+def test_unwritable_out_is_one_line_exit_2(capsys, tmp_path):
+    blocker = tmp_path / "file"
+    blocker.write_text("x")
+    for out in (blocker, blocker / "sub"):
+        with pytest.raises(SystemExit) as exit_info:
+            main(["converge", "--study", "modes", "--out", str(out)])
+        err = capsys.readouterr().err
+        assert exit_info.value.code == 2 and "--out" in err and err.count("\n") == 1
+    assert [p.name for p in tmp_path.iterdir()] == ["file"]
+
+
+def test_parse_modes():
+    assert parse_modes("30:240") == (30, 60, 120, 240)
+    assert parse_modes("30,45,60") == (30, 45, 60)
+    assert parse_modes("1:4") == (1, 2, 4)
+
+
+def _by_key(study):
+    return {q.spec.key: q for q in study.quantities}
+
+
+@pytest.mark.parametrize(("order", "expected"), [(1, 2.0), (2, 4.0)])
+def test_axisym_h_study_orders(order, expected):
+    study = run_h_study(preset("basketball"), mesh="axisym", order=order, levels=(1, 2, 3, 4))
+    assert study.passed, [(q.spec.key, q.checked_order) for q in study.quantities if not q.passed]
+    q = _by_key(study)
+    assert q["lambda_6"].checked_order == pytest.approx(expected, abs=0.1)
+    assert q["t_l"].checked_order == pytest.approx(expected, abs=0.2)
+    assert q["v_l"].analysis.reference_kind == "reference"  # the Legendre series, same filter
+    # P_1(x) = x (and P_2 for P2) lies in the space: those eigenvalues are exact
+    assert q["lambda_1"].remark == "exact to round-off"
+    assert (q["lambda_2"].remark == "exact to round-off") == (order == 2)
+    assert q["strain_energy"].checked_order == pytest.approx(order + 1.0, abs=0.3)
+
+
+def test_axisym_order_study_compares_p1_and_p2_at_equal_dofs():
+    study = run_order_study(preset("basketball"), mesh="axisym", levels=(2, 3, 4))
+    assert study.passed
+    keys = {q.spec.key for q in study.quantities}
+    assert {"v_l (P1)", "v_l (P2)", "lambda_6 (P1)", "lambda_6 (P2)"} <= keys
+    assert any("times smaller with P2" in note for note in study.notes)
+
+
+def test_dt_study_is_second_order_for_generalized_alpha():
+    study = run_dt_study(preset("basketball"), mesh="axisym", order=2, levels=(1, 2, 3))
+    assert study.passed
+    q = _by_key(study)
+    for key in ("t_l", "v_l", "pole_l2", "pole_samples"):
+        assert q[key].checked_order == pytest.approx(2.0, abs=0.15)
+    assert q["t_l_quintic"].spec.band is None  # reported, not checked
+
+
+def test_converge_h_cli_axisym(capsys, tmp_path):
+    out = tmp_path / "h"
+    code, stdout, _ = run(
+        capsys, "converge", "--study", "h", "--mesh", "axisym", "--order", "2", "--levels", "2:4",
+        "--out", str(out), "--json",
+    )  # fmt: skip
+    data = json.loads(stdout)
+    assert code == 0 and data["study"] == "h" and data["passed"]
+    assert {p.name for p in out.iterdir()} == FILES
+    assert "lambda_6" in (out / "report.md").read_text()
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize(
+    ("order", "levels", "expected"), [(1, (2, 3, 4), 2.0), (2, (1, 2, 3), 4.0)]
+)
+def test_sphere_h_study_eigenvalue_orders(order, levels, expected):
+    study = run_h_study(preset("basketball"), mesh="sphere", order=order, levels=levels)
+    q = _by_key(study)
+    for degree in range(1, 7):
+        assert q[f"lambda_{degree}"].checked_order == pytest.approx(expected, abs=0.35)
+    assert q["v_l"].relative_errors[-1] < q["v_l"].relative_errors[0]
+    assert np.isfinite(q["v_l"].checked_order)
