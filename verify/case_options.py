@@ -8,7 +8,7 @@ import math
 from modal.errors import ParameterError
 from modal.filters import FILTER_KINDS
 from modal.liftoff import HORIZONS
-from modal.parameters import PRESETS, Case, preset
+from modal.parameters import PRESETS, STANDARD_GRAVITY, Case, preset
 
 VALID_RANGES: dict[str, str] = {
     "--radius": "a number > 0 [m]",
@@ -37,7 +37,7 @@ def add_case_options(parser: argparse.ArgumentParser) -> None:
     )
     group.add_argument("--damping", type=float, metavar="D", help="modal damping ratio in [0, 1)")
     group.add_argument("--modes", type=int, metavar="N", help="Legendre modes N (default 30)")
-    group.add_argument("--g", type=float, default=9.81, help=argparse.SUPPRESS)
+    group.add_argument("--g", type=float, default=STANDARD_GRAVITY, help=argparse.SUPPRESS)
     model = parser.add_argument_group("model")
     model.add_argument(
         "--sigma", choices=FILTER_KINDS, default="lanczos", help="spectral filter (eq. (3.16))"

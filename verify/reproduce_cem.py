@@ -24,7 +24,7 @@ from modal.legendre import (
     legendre_series,
     quadrature_points,
 )
-from modal.parameters import Case, preset
+from modal.parameters import STANDARD_GRAVITY, Case, preset
 
 from .parallel import Outcome
 from .reproduce_common import (
@@ -43,7 +43,7 @@ from .reproduce_common import (
 )
 from .sweeps import SweepSolver, run_sweep
 
-G = 9.81
+G = STANDARD_GRAVITY
 
 # --- the lift-off criteria compared in Fig. 11(a) and the thresholds ----------------
 

@@ -9,7 +9,7 @@ from __future__ import annotations
 import numpy as np
 
 from modal import icm
-from modal.parameters import preset, wave_speed_from_pressure
+from modal.parameters import STANDARD_GRAVITY, preset, wave_speed_from_pressure
 
 from .reproduce_common import (
     Comparison,
@@ -225,7 +225,8 @@ def part_icm(ctx: Context) -> Section:
     sec.paragraphs += [
         f"Fall height H = x2 - r2 with r2 = {BASKETBALL_RADIUS} m (the basketball): "
         f"H = {h3:.2f} m for Fig. 3 and {h8:.2f} m for Fig. 8 (impact speeds "
-        f"{np.sqrt(2 * 9.81 * h3):.2f} and {np.sqrt(2 * 9.81 * h8):.2f} m/s).  The paper "
+        f"{np.sqrt(2 * STANDARD_GRAVITY * h3):.2f} and "
+        f"{np.sqrt(2 * STANDARD_GRAVITY * h8):.2f} m/s).  The paper "
         "gives no number on these curves other than their parameters; at dx = 0 they reduce "
         "to eq. (2.6), whose printed values are the ICM columns of Table 1 (rows 4-6): the "
         "rows above compare with those.",
