@@ -7,7 +7,7 @@ a kink at phi = phi_a, so the load b is integrated with a composite rule
 (the reference element split ``4**s`` times for triangles, ``2**s`` times for
 lines) on every element the kink may touch, and with an ordinary Gauss rule
 elsewhere.  On the sphere F is evaluated at the radial projection of each
-quadrature point onto the unit sphere (cos(phi) = z / |x|).  Nodal interpolation
+quadrature point onto the unit sphere (``cos(phi) = z / |x|``).  Nodal interpolation
 is offered as an alternative.  Dimensionless.
 """
 

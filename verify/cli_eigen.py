@@ -22,7 +22,10 @@ def run(args: argparse.Namespace) -> int:
     if args.json:
         print_json(rows)
         return 0
-    size = f"level {args.level}" if args.elements is None else f"{args.elements} elements"
+    if args.mesh == "axisym":
+        size = f"{400 if args.elements is None else args.elements} elements"
+    else:
+        size = f"level {3 if args.level is None else args.level}"
     table = Table(title=f"Eigenvalues of -Laplace-Beltrami: {args.mesh}, P{args.order}, {size}")
     for name in ("#", "l", "lambda (FE)", "l(l+1)", "rel. error", "cluster", "expected"):
         table.add_column(name, justify="right")

@@ -545,7 +545,7 @@ FIG12_UNITS = {"v0": "m/s", "c": "1/s", "R": "m"}
 
 @dataclass(frozen=True)
 class OptimumTask:
-    """Picklable refinement of the largest v_l/|v0| between two grid neighbours."""
+    """Picklable refinement of the largest ``v_l/|v0|`` between two grid neighbours."""
 
     base: Case
     field: str
@@ -578,7 +578,7 @@ def _early(point) -> bool:
 
 
 def main_branch(points) -> np.ndarray:
-    """v_l/|v0| of the points, NaN where there is no lift-off or it is an early one."""
+    """``v_l/|v0|`` of the points, NaN where there is no lift-off or it is an early one."""
     return np.array([np.nan if _early(p) else p.ratio for p in points])
 
 
@@ -609,7 +609,7 @@ def fig12_sweeps(ctx: Context) -> dict[tuple[str, float], list]:
 
 
 def part_fig12(ctx: Context) -> Section:
-    """v_l/|v0| against v0, c and R for D = 0, 0.05, 0.13, 0.3; optimum for D = 0.13."""
+    """``v_l/|v0|`` against v0, c and R for D = 0, 0.05, 0.13, 0.3; optimum for D = 0.13."""
     import time
 
     base = fig12_base()

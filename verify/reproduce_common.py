@@ -56,7 +56,7 @@ class Comparison:
 
     @property
     def relative(self) -> float | None:
-        """(ours - paper) / |paper|."""
+        """``(ours - paper) / |paper|``."""
         d = self.difference
         if d is None or self.paper == 0:
             return None

@@ -146,7 +146,7 @@ def _curves(mu: float, e2: float, e12: float, x2: float, dx: np.ndarray):
 
 
 def part_icm(ctx: Context) -> Section:
-    """ICM curves v1/|v0| and v2/|v0| against the gap for Fig. 3 and Fig. 8 (theory only)."""
+    """ICM curves ``v1/|v0|`` and ``v2/|v0|`` against the gap (Figs. 3 and 8, theory only)."""
     sec = Section("icm", "Figs. 3 and 8: ICM rebound ratios against the gap")
     dx3 = np.linspace(0.0, 0.150, 151)
     v1, v2 = _curves(0.1007, 0.80, 0.89, 1.0, dx3)

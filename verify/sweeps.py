@@ -264,7 +264,7 @@ def save_figure(figure: Any, target: Path, flag: str = "--plot") -> None:
 
 
 def plot_sweep(grid: SweepGrid, points: list[SweepPoint], target: Path) -> None:
-    """v_l/|v0| and t_l against the parameter (1-D) or as heat maps (2-D), one PNG."""
+    """``v_l/|v0|`` and t_l against the parameter (1-D) or as heat maps (2-D), one PNG."""
     import matplotlib
 
     matplotlib.use("Agg")
