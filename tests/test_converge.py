@@ -56,7 +56,7 @@ def test_converge_modes_cli_writes_every_file(capsys, tmp_path):
     assert code == 0
     data = json.loads(stdout)
     assert data["study"] == "modes" and data["passed"] is True
-    assert {p.name for p in out.iterdir()} == FILES
+    assert {p.name for p in out.iterdir()} == FILES | {".twoball-report"}
     report = (out / "report.md").read_text()
     assert "Truncation error of N = 30" in report and "PASS" in report
     csv_lines = (out / "results.csv").read_text().splitlines()
@@ -67,6 +67,7 @@ def test_converge_modes_cli_writes_every_file(capsys, tmp_path):
 def test_converge_replaces_an_old_report_and_leaves_no_scratch(capsys, tmp_path):
     out = tmp_path / "report"
     out.mkdir()
+    (out / ".twoball-report").write_text("")  # an earlier report
     (out / "stale.txt").write_text("old")
     code, _, _ = run(capsys, "converge", "--study", "modes", "--modes-list", "30,60,120",
                      "--out", str(out))  # fmt: skip
@@ -144,7 +145,7 @@ def test_dt_study_is_second_order_for_generalized_alpha():
     q = _by_key(study)
     for key in ("t_l", "v_l", "pole_l2", "pole_samples"):
         assert q[key].checked_order == pytest.approx(2.0, abs=0.15)
-    assert q["t_l_quintic"].spec.band is None  # reported, not checked
+    assert q["t_l_hermite"].spec.band is None  # reported, not checked
 
 
 def test_converge_h_cli_axisym(capsys, tmp_path):
@@ -155,7 +156,7 @@ def test_converge_h_cli_axisym(capsys, tmp_path):
     )  # fmt: skip
     data = json.loads(stdout)
     assert code == 0 and data["study"] == "h" and data["passed"]
-    assert {p.name for p in out.iterdir()} == FILES
+    assert {p.name for p in out.iterdir()} == FILES | {".twoball-report"}
     assert "lambda_6" in (out / "report.md").read_text()
 
 

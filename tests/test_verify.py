@@ -74,7 +74,7 @@ def test_verify_cli_writes_every_file_and_exits_0(capsys, tmp_path):
     code = main(["verify", "--fast", "--out", str(out), "--json"])
     data = json.loads(capsys.readouterr().out)
     assert code == 0 and data["passed"] is True and data["configuration"] == "fast"
-    assert {p.name for p in out.iterdir()} == FILES
+    assert {p.name for p in out.iterdir()} == FILES | {".twoball-report"}
     report = (out / "report.md").read_text()
     assert report.startswith("# twoball verify: PASS") and "![" in report
     header = (out / "results.csv").read_text().splitlines()[0]
@@ -132,7 +132,7 @@ def test_old_report_survives_a_failed_write(tmp_path):
     assert (out / "a.txt").read_text() == "old" and not (out / "b.txt").exists()
     assert sorted(p.name for p in tmp_path.iterdir()) == ["report"]
     write_report_dir(out, {"c.txt": lambda p: p.write_text("newer")})
-    assert sorted(p.name for p in out.iterdir()) == ["c.txt"]
+    assert sorted(p.name for p in out.iterdir()) == [".twoball-report", "c.txt"]
 
 
 @pytest.mark.slow
@@ -141,6 +141,23 @@ def test_default_verify_passes(capsys, tmp_path):
     code = main(["verify", "--out", str(out), "--json"])
     data = json.loads(capsys.readouterr().out)
     assert code == 0 and data["passed"], [c["name"] for c in data["checks"] if not c["passed"]]
-    assert {p.name for p in out.iterdir()} == FILES
+    assert {p.name for p in out.iterdir()} == FILES | {".twoball-report"}
     meshes = {r["mesh"] for r in data["runs"]}
     assert {"axisym P2 400 el.", "sphere P1 L4", "sphere P2 L3"} <= meshes
+
+
+def test_out_refuses_a_folder_that_is_not_a_report(tmp_path):
+    from modal.errors import ParameterError
+    from verify.report_files import MARKER, check_output_dir, write_report_dir
+
+    foreign = tmp_path / "home"
+    foreign.mkdir()
+    (foreign / "thesis.tex").write_text("precious")
+    with pytest.raises(ParameterError, match="--out"):
+        check_output_dir(foreign)
+    assert (foreign / "thesis.tex").read_text() == "precious"
+    report = tmp_path / "report"
+    write_report_dir(report, {"a.txt": lambda p: p.write_text("1")})
+    assert (report / MARKER).is_file()
+    write_report_dir(report, {"a.txt": lambda p: p.write_text("2")})  # an earlier report
+    assert (report / "a.txt").read_text() == "2"

@@ -276,7 +276,7 @@ class GCIResult:
     gci_fine : float
         ``GCI_fine21 = Fs e_a21 / (r21**p - 1)`` (eq. (6)), relative.
     gci_fine_absolute : float
-        The same without dividing by |phi1| (for quantities near zero).
+        The same without dividing by ``|phi1|`` (for quantities near zero).
     safety_factor : float
         Fs.
     """

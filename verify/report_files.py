@@ -27,14 +27,17 @@ from .checks import VerifyResult
 from .studies import QuantityResult, StudyResult
 
 Writer = Callable[[Path], None]
+MARKER = ".twoball-report"  # written into every report directory; only such are replaced
 
 
 # --------------------------------------------------------------------------- directories
 def check_output_dir(path: str | os.PathLike[str], flag: str = "--out") -> Path:
     """Validate an output directory before any work is done.
 
-    ``path`` may exist (then it must be a directory, which will be replaced) or
-    not (then its parent must be an existing directory).  A scratch directory
+    ``path`` may exist -- then it must be an empty directory or an earlier twoball
+    report (it holds the marker file ``.twoball-report``), which will be replaced;
+    any other folder is refused, so ``--out ~`` cannot delete a home directory --
+    or not (then its parent must be an existing directory).  A scratch directory
     is created and removed in the parent to prove that it is writable.
 
     Raises
@@ -46,6 +49,10 @@ def check_output_dir(path: str | os.PathLike[str], flag: str = "--out") -> Path:
     valid = "a directory path whose parent exists and is writable"
     if out.exists() and not out.is_dir():
         raise ParameterError(flag, valid + " (it is an existing file)", str(path))
+    if out.is_dir() and any(out.iterdir()) and not (out / MARKER).is_file():
+        raise ParameterError(
+            flag, "a new or empty directory, or an earlier twoball report", str(path)
+        )
     parent = out.absolute().parent
     if not parent.is_dir():
         raise ParameterError(flag, valid, str(path))
@@ -72,10 +79,13 @@ def write_report_dir(out: str | os.PathLike[str], writers: Mapping[str, Writer])
     Path
         ``out``.
     """
-    out = Path(out).expanduser()
+    out = check_output_dir(out)
     parent = out.absolute().parent
     scratch = Path(tempfile.mkdtemp(prefix=f".{out.name}.new-", dir=parent))
     try:
+        (scratch / MARKER).write_text(
+            "written by twoball; this folder is replaced by the next run\n"
+        )
         for name, write in writers.items():
             write(scratch / name)
         os.chmod(scratch, 0o755)
@@ -454,7 +464,7 @@ SUMMARY_HEADER = (
     "DOFs",
     "t_l [ms]",
     "v_l [m/s]",
-    "v_l/|v0|",
+    "v_l/v0",
     "dt_l/t_l",
     "dv_l/v_l",
     "dt_l/t_l (N->inf)",
