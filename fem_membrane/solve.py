@@ -44,6 +44,7 @@ from .checks import (
 from .damping import RAYLEIGH_LOW, ModalDamping, RayleighDamping
 from .eigen import Eigenpairs, eigenpairs
 from .initial import initial_moments
+from .krylov import ROUTES, choose_route, krylov_modal_series
 from .modal import filtered_displacement, modal_series
 from .space import Discretisation
 
@@ -55,10 +56,12 @@ class ModalModel:
     """Space, eigenpairs and modal series of one finite-element run (dimensionless)."""
 
     space: Discretisation
-    pairs: Eigenpairs
+    pairs: Eigenpairs | None
     moments: np.ndarray
     series: ModalSeries
     seconds: dict[str, float] = field(default_factory=dict)
+    krylov: dict[str, Any] | None = None
+    """Krylov route details (None on the full eigen route, where ``pairs`` is set)."""
 
     @property
     def filter(self) -> SpectralFilter:
@@ -83,11 +86,17 @@ def modal_model(
     elements: int | None = None,
     order: int = 2,
     initial: str = "projection",
+    route: str = "full",
 ) -> ModalModel:
-    """Assemble, project F (eq. (3.10)) and compute all eigenpairs below the filter cutoff.
+    """Assemble, project F (eq. (3.10)) and build the filtered modal series.
 
-    The eigenvalue cutoff is ``filter.omega_cut**2``, so every mode the filter
-    keeps is computed (eqs. (3.12), (3.16)).  See :func:`fem_pole_motion`.
+    ``route="full"`` (the reference) computes every eigenpair below the filter
+    cutoff ``filter.omega_cut**2`` (eqs. (3.12), (3.16)); ``route="krylov"`` finds
+    only the modes the pole and the initial displacement see, by the rational
+    Krylov method of :mod:`fem_membrane.krylov` (pole motion exact to 1e-10
+    relative; no eigenvector set, ``pairs`` is None); ``route="auto"`` takes
+    Krylov from :data:`fem_membrane.krylov.AUTO_THRESHOLD` DOFs on.  See
+    :func:`fem_pole_motion`.
     """
     phi_a = _check_phi_a(phi_a)
     damping = check_damping(damping)
@@ -98,11 +107,17 @@ def modal_model(
     space = build_space(mesh, level=level, elements=elements, order=order, phi_a=phi_a)
     moments = initial_moments(space, phi_a, initial)
     seconds["assembly"] = clock.perf_counter() - start
+    route = choose_route(route, space.dofs)
     start = clock.perf_counter()
-    pairs = eigenpairs(space.stiffness, space.mass, filter.omega_cut**2)
+    if route == "full":
+        pairs = eigenpairs(space.stiffness, space.mass, filter.omega_cut**2)
+        series = modal_series(pairs, moments, space.pole, damping, filter)
+        krylov = None
+    else:
+        series, details = krylov_modal_series(space, moments, damping, filter)
+        pairs, krylov = None, details.as_dict()
     seconds["eigen"] = clock.perf_counter() - start
-    series = modal_series(pairs, moments, space.pole, damping, filter)
-    return ModalModel(space, pairs, moments, series, seconds)
+    return ModalModel(space, pairs, moments, series, seconds, krylov)
 
 
 def rayleigh_damping(
@@ -184,6 +199,7 @@ def fem_pole_motion(
     t_end: float = DEFAULT_T_END,
     initial: str = "projection",
     rayleigh_frequencies: tuple[float, float] | None = None,
+    route: str = "auto",
 ) -> tuple[PoleMotion, dict[str, Any]]:
     """Pole motion of the damped membrane from finite elements (dimensionless).
 
@@ -210,6 +226,11 @@ def fem_pole_motion(
         P1 on flat triangles or isoparametric P2 (``--order``).
     time : {"modal", "alpha"}
         Modal superposition or generalized-alpha stepping (``--time``).
+    route : {"auto", "full", "krylov"}
+        ``modal`` only: every eigenpair below the cutoff (``full``, the reference),
+        the rational Krylov route of :mod:`fem_membrane.krylov` (``krylov``), or
+        Krylov from 2000 DOFs on (``auto``, default) (``--route``).  ``alpha``
+        always uses the full eigenpairs.
     damping_model : {"modal", "rayleigh"}
         ``alpha`` only: ratio D on every computed mode (low rank), or Rayleigh
         ``C = a M + b K`` fitted at ``rayleigh_frequencies`` (default sqrt(2)
@@ -248,6 +269,11 @@ def fem_pole_motion(
         raise ParameterError(
             "--damping-model", "modal with --time modal (one ratio D for all modes)", damping_model
         )
+    route = check_choice("--route", route, ROUTES)
+    if time == "alpha":
+        if route == "krylov":
+            raise ParameterError("--route", "full or auto with --time alpha", route)
+        route = "full"  # time stepping needs the eigenvectors for damping and filtering
     model = modal_model(
         phi_a,
         damping,
@@ -257,13 +283,15 @@ def fem_pole_motion(
         elements=elements,
         order=order,
         initial=initial,
+        route=route,
     )
     space, pairs, series = model.space, model.pairs, model.series
-    next_value = pairs.next_value
+    next_value = None if pairs is None else pairs.next_value
     info: dict[str, Any] = {
         "dofs": space.dofs,
+        "route": "full" if pairs is not None else "krylov",
         "modes_used": int(np.count_nonzero(series.retained)),
-        "modes_computed": len(pairs),
+        "modes_computed": len(series.omega),
         "mesh": space.name,
         "order": space.order,
         "time_scheme": time,
@@ -273,6 +301,8 @@ def fem_pole_motion(
         "omega_next": None if next_value is None else float(np.sqrt(max(next_value, 0.0))),
         "seconds": dict(model.seconds),
     }
+    if model.krylov is not None:
+        info["krylov"] = model.krylov
     if time == "modal":
         return series, info
     motion, extra = alpha_motion(

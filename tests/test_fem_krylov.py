@@ -10,7 +10,7 @@ from fem_membrane.eigen import eigenpairs
 from fem_membrane.initial import initial_moments
 from fem_membrane.krylov import default_shifts, krylov_modal_series
 from fem_membrane.modal import modal_series
-from modal.errors import NumericalError
+from modal.errors import NumericalError, ParameterError
 from modal.filters import SpectralFilter
 from modal.liftoff import find_liftoff
 from modal.series import ModalSeries
@@ -128,3 +128,27 @@ def test_choose_route():
     assert choose_route("krylov", 10) == "krylov"
     with pytest.raises(ParameterError):
         choose_route("fast", 10)
+
+
+def test_fem_pole_motion_routes_agree_and_auto_picks_krylov_on_large_meshes():
+    from fem_membrane.solve import fem_pole_motion
+    from modal.liftoff import find_liftoff
+
+    gamma = 9.81 / (0.12 * 320.0**2)
+    full, info_full = fem_pole_motion(2.6, 0.13, mesh="sphere", level=2, order=2, route="full")
+    fast, info_fast = fem_pole_motion(2.6, 0.13, mesh="sphere", level=2, order=2, route="krylov")
+    assert info_full["route"] == "full" and info_fast["route"] == "krylov"
+    a, b = find_liftoff(full, gamma), find_liftoff(fast, gamma)
+    assert b.t == pytest.approx(a.t, rel=1e-8) and b.velocity == pytest.approx(a.velocity, rel=1e-8)
+    _, auto_small = fem_pole_motion(2.6, 0.13, mesh="axisym", elements=100, order=2)
+    _, auto_large = fem_pole_motion(2.6, 0.13, mesh="sphere", level=3, order=2)
+    assert auto_small["route"] == "full" and auto_large["route"] == "krylov"
+    with pytest.raises(ParameterError, match="--route"):
+        fem_pole_motion(2.6, 0.13, mesh="axisym", elements=50, time="alpha", route="krylov")
+
+
+def test_thorough_verify_uses_the_fast_route_at_level_5_p2():
+    from verify.checks import config
+
+    specs = [(t.spec.mesh, t.spec.order, t.spec.size) for t in config("thorough").krylov]
+    assert ("sphere", 2, 5) in specs

@@ -51,6 +51,12 @@ def add_time_options(parser: argparse.ArgumentParser) -> None:
     group.add_argument(
         "--dt", type=float, metavar="SECONDS", help="time step [s] (default: omega_cut dt = 0.2)"
     )
+    group.add_argument(
+        "--route",
+        default="auto",
+        help="modal eigen route: full (every pair below the cutoff), krylov (rational "
+        "Krylov, pole motion exact to 1e-10 relative) or auto (krylov from 2000 DOFs; default)",
+    )
 
 
 def fem_liftoff(case: Case, args: argparse.Namespace) -> LiftoffReport:
@@ -69,6 +75,7 @@ def fem_liftoff(case: Case, args: argparse.Namespace) -> LiftoffReport:
         damping_model=args.damping_model,
         dt=None if dt_s is None else dt_s / case.scalings.time,
         t_end=t_end_dimensionless(case, args.t_end),
+        route=args.route,
     )
     extra: dict[str, Any] = {
         "dofs": info["dofs"],
@@ -76,6 +83,7 @@ def fem_liftoff(case: Case, args: argparse.Namespace) -> LiftoffReport:
         "mesh": info["mesh"],
         "order": info["order"],
         "time_scheme": info["time_scheme"],
+        "route": info["route"],
         "damping_model": info.get("damping_model", args.damping_model),
         "seconds": time.perf_counter() - started,
     }

@@ -738,19 +738,29 @@ class FEMRun:
 
 
 def fem_run(
-    case: Case, spec: FEMSpec, sigma: FilterKind, recontact: Horizon, t_end: float
+    case: Case,
+    spec: FEMSpec,
+    sigma: FilterKind,
+    recontact: Horizon,
+    t_end: float,
+    route: str = "full",
 ) -> FEMRun:
-    """Assemble, solve the eigenproblem to the filter cutoff, and find lift-off.
+    """Assemble, build the filtered modal series, and find lift-off.
 
     Uses :func:`fem_membrane.solve.modal_model`, the same path as
     ``fem_pole_motion(..., time="modal")``, and keeps the model for the
-    eigenvalue and energy checks.
+    eigenvalue and energy checks (``route="full"``; the Krylov route has no
+    eigenvector set and serves lift-off checks only).
     """
     from fem_membrane.solve import modal_model
 
     start = time.perf_counter()
     model = modal_model(
-        case.phi_a, case.damping, SpectralFilter(sigma, case.modes), **spec.options()
+        case.phi_a,
+        case.damping,
+        SpectralFilter(sigma, case.modes),
+        route=route,
+        **spec.options(),
     )
     result = find_liftoff(model.series, case.gamma, t_end=t_end, horizon=recontact)
     energy = float(model.series.energy(np.array([t_end]))[0])
