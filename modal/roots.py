@@ -113,9 +113,10 @@ def newton_bracketed(
             step = fx / slope
         trial = x[i] - step
         inside = np.isfinite(trial) & (trial > a[i]) & (trial < b[i])
-        x[i] = np.where(inside, trial, 0.5 * (a[i] + b[i]))
-        done = (fx == 0) | (inside & (np.abs(step) < xtol)) | (b[i] - a[i] < xtol)
-        x[i[fx == 0]] -= step[fx == 0]  # undo: f(x) was exactly zero
+        # a Newton step below xtol means x is a root to quadratic accuracy; at that point x
+        # may coincide with a bracket end, so do not let "outside" trigger a bisection
+        done = (fx == 0) | (np.abs(step) < xtol) | (b[i] - a[i] < xtol)
+        x[i] = np.where(inside, trial, np.where(done, x[i], 0.5 * (a[i] + b[i])))
         active[i[done]] = False
     else:
         raise NumericalError("root search did not converge")

@@ -163,3 +163,19 @@ def test_bracketed_roots_vectorised_to_1e_12():
     np.testing.assert_allclose(roots, k * math.pi, atol=1e-12, rtol=0)
     with pytest.raises(NumericalError):
         bracketed_roots(f, np.array([0.5]), np.array([1.0]))
+
+
+def test_newton_bracketed_converges_quadratically_to_1e_12():
+    from modal.roots import newton_bracketed
+
+    calls = []
+
+    def f(x, i):
+        calls.append(x.size)
+        return np.cos(x) - x * (1 + 0.1 * i), -np.sin(x) - (1 + 0.1 * i)
+
+    lower, upper = np.zeros(5), np.ones(5)
+    roots = newton_bracketed(f, lower, upper, xtol=1e-12)
+    value, _ = f(roots, np.arange(5))
+    assert np.all(np.abs(value) < 1e-14)
+    assert len(calls) <= 2 + 7  # two end evaluations, then a few Newton steps, no bisection tail
