@@ -63,17 +63,15 @@ Everything is dimensionless.
 
 from __future__ import annotations
 
-import contextlib
-import ctypes
 import math
 import time as clock
-from collections.abc import Iterator
 from dataclasses import dataclass, field
 from typing import Any
 
 import numpy as np
 import scipy.sparse as sp
 from scipy.sparse.linalg import splu
+from threadpoolctl import threadpool_limits
 
 from modal.errors import NumericalError, ParameterError
 from modal.filters import SpectralFilter
@@ -256,52 +254,13 @@ def _trajectory(series: ModalSeries, grid: np.ndarray) -> tuple[np.ndarray, np.n
     return state.u, state.u_tt
 
 
-_OPENBLAS_SYMBOLS = ("scipy_openblas_", "scipy_", "")  # prefixes of the OpenBLAS thread API
-_OPENBLAS_SUFFIXES = ("64_", "")
-
-
-def _openblas_libraries() -> list[tuple[Any, Any]]:
-    """(getter, setter) of the thread count of every OpenBLAS loaded in this process."""
-    try:
-        with open("/proc/self/maps") as maps:
-            paths = {line.split()[-1] for line in maps if "openblas" in line.lower()}
-    except OSError:  # not Linux
-        return []
-    found = []
-    for path in sorted(paths):
-        try:
-            library = ctypes.CDLL(path)
-        except OSError:
-            continue
-        for prefix in _OPENBLAS_SYMBOLS:
-            for suffix in _OPENBLAS_SUFFIXES:
-                getter = getattr(library, f"{prefix}openblas_get_num_threads{suffix}", None)
-                setter = getattr(library, f"{prefix}openblas_set_num_threads{suffix}", None)
-                if getter is not None and setter is not None:
-                    found.append((getter, setter))
-                    break
-            else:
-                continue
-            break
-    return found
-
-
-@contextlib.contextmanager
-def _serial_blas() -> Iterator[None]:
-    """One OpenBLAS thread while inside (restored afterwards).
+def _serial_blas() -> threadpool_limits:
+    """One BLAS thread while inside (restored afterwards).
 
     The dense work of the Krylov loop is many thin products and small eigenproblems,
-    which OpenBLAS threads slow down by orders of magnitude on a loaded machine.
+    which BLAS threads slow down by orders of magnitude on a loaded machine.
     """
-    libraries = _openblas_libraries()
-    saved = [int(getter()) for getter, _ in libraries]
-    for _, setter in libraries:
-        setter(1)
-    try:
-        yield
-    finally:
-        for (_, setter), count in zip(libraries, saved, strict=True):
-            setter(count)
+    return threadpool_limits(limits=1, user_api="blas")
 
 
 def _unpack(

@@ -268,6 +268,33 @@ def find_liftoff(
     return LiftoffResult(False, None, None, None, candidates, gamma, t_end, horizon)
 
 
+def flight_clearance(
+    motion: PoleMotion,
+    gamma: float,
+    t_l: float,
+    end: float,
+    samples_per_period: int = 16,
+) -> float:
+    """Smallest gap ``s - u`` over (t_l, end] for a body leaving the pole at ``t_l``.
+
+    The body leaves with the pole's displacement and velocity at ``t_l`` and flies
+    ``s(t) = u(t_l) + u_t(t_l) (t - t_l) - gamma (t - t_l)^2 / 2`` (criterion (ii) of
+    §3(a)); the gap is checked exactly as :func:`find_liftoff` checks it (grid points
+    and refined local minima).  Positive: the body stays clear.  Dimensionless.
+    """
+    if end <= t_l:
+        return math.inf
+    omega = max(float(motion.max_frequency), 1.0)
+    count = math.ceil((end - t_l) * omega * samples_per_period / (2.0 * math.pi)) + 2
+    grid = np.linspace(t_l, end, count)
+    u, u_t, _ = motion.pole(grid)
+    start = t_l + 1e-2 / omega  # as in find_liftoff: the gap is round-off closer than this
+    clearance, _ = _Ballistic(motion, gamma).clearance(
+        grid, u, u_t, t_l, float(u[0]), float(u_t[0]), start, end
+    )
+    return clearance
+
+
 class _Ballistic:
     """Gap ``s - u`` between the free body's parabola and the pole after a lift-off."""
 

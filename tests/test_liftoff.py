@@ -179,3 +179,18 @@ def test_newton_bracketed_converges_quadratically_to_1e_12():
     value, _ = f(roots, np.arange(5))
     assert np.all(np.abs(value) < 1e-14)
     assert len(calls) <= 2 + 7  # two end evaluations, then a few Newton steps, no bisection tail
+
+
+def test_flight_clearance_agrees_with_the_verdicts_and_brute_force():
+    from modal.liftoff import flight_clearance
+
+    gamma = preset("basketball").gamma
+    series = legendre_series(2.6, 0.13, SpectralFilter("lanczos", 30))
+    result = find_liftoff(series, gamma)
+    for c in result.candidates:
+        if c.velocity <= 0:
+            continue
+        clearance = flight_clearance(series, gamma, c.t, 4 * math.pi)
+        brute = brute_force_gap(series, gamma, c, 4 * math.pi)[100:].min()
+        assert (clearance > 0) == c.accepted == (brute > 0)
+    assert flight_clearance(series, gamma, 5.0, 4.0) == math.inf

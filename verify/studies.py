@@ -25,7 +25,13 @@ from modal.errors import ParameterError
 from modal.filters import FilterKind, SpectralFilter, legendre_frequency
 from modal.initial import deformation_work
 from modal.legendre import legendre_coefficients_recurrence, legendre_series
-from modal.liftoff import Horizon, PoleMotion, SampledPoleMotion, find_liftoff
+from modal.liftoff import (
+    Horizon,
+    PoleMotion,
+    SampledPoleMotion,
+    find_liftoff,
+    flight_clearance,
+)
 from modal.parameters import Case
 from modal.report import t_end_dimensionless
 from modal.roots import bracketed_roots
@@ -151,19 +157,6 @@ def _track_root(
     return float(root), float(series.pole(np.array([root])).u_t[0])
 
 
-def _clear_flight(series: ModalSeries, gamma: float, t_l: float, v_l: float, end: float) -> bool:
-    """Whether the ballistic path after (t_l, v_l) stays above the pole on a fine grid."""
-    if end <= t_l:
-        return True
-    samples = max(4001, int(32 * (end - t_l) * max(series.max_frequency, 1.0) / (2 * math.pi)))
-    t = np.linspace(t_l, end, samples)[1:]
-    u_l = float(series.pole(np.array([t_l])).u[0])
-    dt = t - t_l
-    gap = u_l + v_l * dt - 0.5 * gamma * dt * dt - series.pole(t).u
-    skip = dt > 1e-2 / max(series.max_frequency, 1.0)
-    return bool(np.all(gap[skip] > 0.0))
-
-
 def converged_legendre(
     case: Case,
     sigma: FilterKind = "lanczos",
@@ -216,7 +209,7 @@ def converged_legendre(
         )
     _, t_l, v_l = history[-1]
     end = t_end if recontact == "window" else min(2 * t_l, t_end)
-    clear = v_l > 0 and _clear_flight(series, case.gamma, t_l, v_l, end)
+    clear = v_l > 0 and flight_clearance(series, case.gamma, t_l, end) > 0.0
     energy = float(series.energy(np.array([t_end]))[0])
     return ConvergedReference(
         t_l,
