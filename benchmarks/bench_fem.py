@@ -18,14 +18,13 @@ import math
 import time
 
 import numpy as np
-
-from fem_membrane.build import build_space
-from fem_membrane.eigen import lowest_eigenpairs
-from fem_membrane.solve import alpha_motion, modal_model
-from modal.filters import SpectralFilter
-from modal.legendre import legendre_series
-from modal.liftoff import find_liftoff
-from modal.parameters import Case
+from twoball.fem_membrane.build import build_space
+from twoball.fem_membrane.eigen import lowest_eigenpairs
+from twoball.fem_membrane.solve import alpha_motion, modal_model
+from twoball.modal.filters import SpectralFilter
+from twoball.modal.legendre import legendre_series
+from twoball.modal.liftoff import find_liftoff
+from twoball.modal.parameters import Case
 
 PHI_A = 2.6
 DAMPING = 0.13
@@ -138,7 +137,7 @@ TIMING_RUNS = (
 
 def timing_study() -> None:
     """Wall-clock seconds of :func:`fem_pole_motion` (plus the lift-off search)."""
-    from fem_membrane.solve import fem_pole_motion
+    from twoball.fem_membrane.solve import fem_pole_motion
 
     gamma = Case().gamma
     ref = find_liftoff(legendre_series(PHI_A, DAMPING, SpectralFilter("lanczos", 30)), gamma)

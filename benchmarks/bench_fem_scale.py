@@ -36,13 +36,13 @@ ROUTES = ("full", "krylov")
 
 def worker(order: int, level: int, route: str, kind: str, modes: int) -> dict[str, object]:
     """One case and route in this process; returns timings, peak memory and the lift-off."""
-    from fem_membrane.build import build_space
-    from fem_membrane.eigen import eigenpairs
-    from fem_membrane.initial import initial_moments
-    from fem_membrane.krylov import krylov_modal_series
-    from fem_membrane.modal import modal_series
-    from modal.filters import SpectralFilter
-    from modal.liftoff import find_liftoff
+    from twoball.fem_membrane.build import build_space
+    from twoball.fem_membrane.eigen import eigenpairs
+    from twoball.fem_membrane.initial import initial_moments
+    from twoball.fem_membrane.krylov import krylov_modal_series
+    from twoball.fem_membrane.modal import modal_series
+    from twoball.modal.filters import SpectralFilter
+    from twoball.modal.liftoff import find_liftoff
 
     filter = SpectralFilter(kind, modes)
     start = time.perf_counter()

@@ -87,11 +87,11 @@ def _seconds(value: float) -> str:
 
 def run(repeats: int) -> list[Timing]:
     """Time the baseline and the four solver tasks; the baseline comes first."""
-    from modal.filters import SpectralFilter
-    from modal.legendre import legendre_series
-    from modal.parameters import preset
-    from modal.report import legendre_liftoff
-    from verify.sweeps import sweep_cases
+    from twoball.modal.filters import SpectralFilter
+    from twoball.modal.legendre import legendre_series
+    from twoball.modal.parameters import preset
+    from twoball.modal.report import legendre_liftoff
+    from twoball.verify.sweeps.sweeps import sweep_cases
 
     case = preset("basketball")  # D = 0.13, N = 30, phi_a = 2.6
     fine = case.derive(modes=240)

@@ -5,8 +5,8 @@ isoparametric P2 triangles on the sphere itself (a surface mapping makes
 scikit-fem's ``grad`` the surface gradient) or on the axisymmetric line
 x = cos(phi).  The initial displacement (3.10) is Galerkin-projected, all
 eigenpairs below the spectral filter's cutoff are computed, and the pole motion
-is obtained either by modal superposition (a :class:`modal.series.ModalSeries`)
-or by generalized-alpha time stepping (a :class:`modal.liftoff.SampledPoleMotion`).
+is obtained either by modal superposition (a :class:`twoball.modal.series.ModalSeries`)
+or by generalized-alpha time stepping (a :class:`twoball.modal.liftoff.SampledPoleMotion`).
 Lift-off, filters and scalings live in :mod:`modal`; everything here is
 dimensionless.
 
@@ -16,7 +16,14 @@ Entry points for the command line:
 * :func:`eigen_table` -- lowest eigenvalues beside ``l (l + 1)``.
 """
 
-from .eigen import eigen_table
-from .solve import fem_pole_motion
+from twoball._lazy import attach
 
-__all__ = ["eigen_table", "fem_pole_motion"]
+__getattr__, __dir__ = attach(
+    __name__,
+    {
+        "eigen_table": ".eigen",
+        "fem_pole_motion": ".solve",
+    },
+)
+
+__all__ = sorted(__dir__())

@@ -31,8 +31,7 @@ import numpy as np
 import scipy.linalg as sl
 import scipy.sparse as sp
 from scipy.sparse.linalg import splu
-
-from modal.errors import NumericalError
+from twoball.modal.errors import NumericalError
 
 from .checks import check_dt, check_rho_inf, check_t_end
 from .damping import ModalDamping

@@ -20,8 +20,7 @@ import math
 
 import numpy as np
 from skfem import CellBasis, ElementLineP1, ElementLineP2, MeshLine1, asm
-
-from modal.initial import _check_phi_a
+from twoball.modal.initial import _check_phi_a
 
 from .checks import check_elements, check_order
 from .forms import AZIMUTH, axisym_mass, axisym_stiffness

@@ -2,7 +2,7 @@
 
 from __future__ import annotations
 
-from modal.initial import _check_phi_a
+from twoball.modal.initial import _check_phi_a
 
 from .axisym import axisym_space
 from .checks import MESH_KINDS, check_choice, check_elements, check_level, check_order

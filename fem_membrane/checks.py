@@ -1,6 +1,6 @@
 """Input validation shared by the finite-element entry points.
 
-Every check raises :class:`modal.errors.ParameterError` naming the command-line
+Every check raises :class:`twoball.modal.errors.ParameterError` naming the command-line
 flag the value comes from, so the CLI can print the message unchanged.
 """
 
@@ -9,7 +9,7 @@ from __future__ import annotations
 import math
 from numbers import Integral, Real
 
-from modal.errors import ParameterError
+from twoball.modal.errors import ParameterError
 
 ORDERS: tuple[int, ...] = (1, 2)
 MESH_KINDS: tuple[str, ...] = ("sphere", "ring", "axisym")

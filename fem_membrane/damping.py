@@ -22,9 +22,8 @@ from dataclasses import dataclass
 
 import numpy as np
 import scipy.sparse as sp
-
-from modal.errors import ParameterError
-from modal.series import check_damping
+from twoball.modal.errors import ParameterError
+from twoball.modal.series import check_damping
 
 from .eigen import Eigenpairs
 

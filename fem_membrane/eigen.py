@@ -35,8 +35,7 @@ import numpy as np
 import scipy.linalg as sl
 import scipy.sparse as sp
 from scipy.sparse.linalg import LinearOperator, eigsh, splu
-
-from modal.errors import NumericalError, ParameterError
+from twoball.modal.errors import NumericalError, ParameterError
 
 FIRST_SHIFT = -1e-2  # below the constant mode lambda = 0
 DENSE_LIMIT = 200  # dense eigensolver up to this many degrees of freedom
@@ -312,7 +311,7 @@ def eigen_table(
     Parameters
     ----------
     mesh : {"sphere", "ring", "axisym"}
-        Mesh kind (see :func:`fem_membrane.build.build_space`).
+        Mesh kind (see :func:`twoball.fem_membrane.build.build_space`).
     level, elements : int, optional
         Sphere level (``--level``) or axisymmetric element count (``--elements``).
     order : {1, 2}

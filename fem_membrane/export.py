@@ -2,7 +2,7 @@
 
 The writers store whatever numbers they are given; the ``twoball export`` command
 passes SI values (node coordinates in m, displacements in m, velocities in m/s,
-accelerations in m/s^2, times in s), see :func:`verify.fields.field_series`.
+accelerations in m/s^2, times in s), see :func:`twoball.verify.output.fields.field_series`.
 
 Three layouts, chosen by :func:`series_format` from ``--format`` or the suffix:
 
@@ -41,8 +41,7 @@ from pathlib import Path
 import meshio
 import numpy as np
 from meshio.xdmf import TimeSeriesReader, TimeSeriesWriter
-
-from modal.errors import ParameterError
+from twoball.modal.errors import ParameterError
 
 FORMATS: tuple[str, ...] = ("xdmf", "vtu", "pvd")
 SUFFIXES: dict[str, str] = {"xdmf": ".xdmf", "vtu": ".vtu", "pvd": ".pvd"}

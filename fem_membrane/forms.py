@@ -1,7 +1,7 @@
 """Weak forms of the membrane equation (3.9), as scikit-fem bilinear forms.
 
 Dimensionless.  On the sphere ``grad`` is the surface gradient (see
-:mod:`fem_membrane.mapping`), so the stiffness form is the weak Laplace-Beltrami
+:mod:`twoball.fem_membrane.mapping`), so the stiffness form is the weak Laplace-Beltrami
 operator.  On the axisymmetric line ``x = cos(phi)`` the surface measure is
 ``dS = dx dtheta`` and ``|grad_s u|^2 = (1 - x^2) u'^2``; the forms there carry
 the full azimuthal factor 2 pi, so that both backends use the measure of the

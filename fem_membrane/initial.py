@@ -20,8 +20,7 @@ from scipy.sparse.linalg import splu
 from skfem import CellBasis, LinearForm, MeshLine1, MeshTri1
 from skfem.quadrature import get_quadrature
 from skfem.refdom import RefLine, RefTri
-
-from modal.initial import _check_phi_a, initial_displacement_x
+from twoball.modal.initial import _check_phi_a, initial_displacement_x
 
 from .checks import INITIAL_METHODS, check_choice
 from .space import Discretisation

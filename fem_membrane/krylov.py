@@ -9,7 +9,7 @@ is a bilinear form ``e_pole^T f_t(K, M) b`` of the pole functional and the load
 ``M^{-1} b`` and ``M^{-1} e_pole`` have components matter; for the axisymmetric F
 on a sphere mesh that is about one (zonal) mode per degree l, plus the few modes of
 the pole's symmetry class that mesh anisotropy mixes in.  Instead of every
-eigenpair below the cutoff (:func:`fem_membrane.eigen.eigenpairs`), this module
+eigenpair below the cutoff (:func:`twoball.fem_membrane.eigen.eigenpairs`), this module
 finds just those by a rational block Krylov method:
 
 1. Shifts ``sigma_1 < ... < sigma_s`` are put in spectral gaps ``(l + 1)^2``
@@ -26,8 +26,8 @@ finds just those by a rational block Krylov method:
 4. Rayleigh-Ritz: ``V^T K V s = theta V^T M V s`` on the basis V gives Ritz pairs
    ``(theta_k, y_k = V s_k)``; the series uses ``omega = sqrt(theta)``,
    ``coefficients = y_k^T b`` and ``pole_values = y_k[pole]`` -- the same
-   :class:`modal.series.ModalSeries` the full route builds, so the filter and
-   :func:`modal.liftoff.find_liftoff` apply unchanged.
+   :class:`twoball.modal.series.ModalSeries` the full route builds, so the filter and
+   :func:`twoball.modal.liftoff.find_liftoff` apply unchanged.
 
 Stopping rule (``tol`` defaults to 1e-10): the filtered pole displacement u and
 acceleration u_tt of the Ritz series, sampled 16 times per period of omega_cut on
@@ -72,11 +72,10 @@ import numpy as np
 import scipy.sparse as sp
 from scipy.sparse.linalg import splu
 from threadpoolctl import threadpool_limits
-
-from modal.errors import NumericalError, ParameterError
-from modal.filters import SpectralFilter
-from modal.liftoff import DEFAULT_T_END
-from modal.series import ModalSeries, check_damping
+from twoball.modal.errors import NumericalError, ParameterError
+from twoball.modal.filters import SpectralFilter
+from twoball.modal.liftoff import DEFAULT_T_END
+from twoball.modal.series import ModalSeries, check_damping
 
 from .eigen import Eigenpairs
 from .space import Discretisation
@@ -288,7 +287,7 @@ def krylov_modal_series(
     """The filtered finite-element modal series of eq. (3.16) from Ritz pairs.
 
     Equivalent, to the stated tolerance at the pole, to
-    :func:`fem_membrane.modal.modal_series` on all eigenpairs below the cutoff
+    :func:`twoball.fem_membrane.modal.modal_series` on all eigenpairs below the cutoff
     (eqs. (3.14)-(3.16)), at the cost of one sparse LU per shift.  See the module
     docstring for the method and the stopping rule.  Dimensionless.
 

@@ -30,8 +30,7 @@ from pathlib import Path
 import meshio
 import numpy as np
 from skfem import MeshTri1
-
-from modal.errors import ParameterError
+from twoball.modal.errors import ParameterError
 
 from .checks import check_level, check_order
 
@@ -329,7 +328,7 @@ def topology(mesh: SphereMesh) -> MeshTri1:
     """scikit-fem mesh carrying the connectivity (and the 3D vertices) of ``mesh``.
 
     Only its topology is used -- degrees of freedom and element numbering; the
-    geometry enters through :class:`fem_membrane.mapping.SurfaceMapping`.  Built
+    geometry enters through :class:`twoball.fem_membrane.mapping.SurfaceMapping`.  Built
     with ``sort_t=False`` because sorting the vertices of each triangle would
     flip the orientation of half of them.
     """

@@ -5,16 +5,15 @@ displacements are ``q_k(0) = phi_k^T M u0`` -- for the Galerkin projection of F
 this is ``int F phi_k dS``, the discrete form of eq. (3.12) -- and each mode
 evolves as the damped oscillator of eq. (3.14) with its own frequency
 ``omega_k = sqrt(lambda_k)``.  The result is the shared
-:class:`modal.series.ModalSeries`, so filter, pole motion and lift-off are
+:class:`twoball.modal.series.ModalSeries`, so filter, pole motion and lift-off are
 evaluated by exactly the same code as for the Legendre series.
 """
 
 from __future__ import annotations
 
 import numpy as np
-
-from modal.filters import SpectralFilter
-from modal.series import ModalSeries
+from twoball.modal.filters import SpectralFilter
+from twoball.modal.series import ModalSeries
 
 from .eigen import Eigenpairs
 

@@ -3,7 +3,7 @@
 The ball is drawn deformed by its radial displacement (magnified by a *warp*
 factor) and coloured by the displacement in mm; the upper body, a small sphere,
 sits on the pole until lift-off and then follows its free flight.  All inputs
-are SI (m, s); :func:`verify.fields.ball_scene` builds a :class:`BallScene` from
+are SI (m, s); :func:`twoball.verify.output.fields.ball_scene` builds a :class:`BallScene` from
 a case.
 
 Works without a display: before VTK is loaded, ``VTK_DEFAULT_OPENGL_WINDOW`` is
@@ -25,8 +25,7 @@ from dataclasses import dataclass
 from pathlib import Path
 
 import numpy as np
-
-from modal.errors import ParameterError
+from twoball.modal.errors import ParameterError
 
 from .export import staged_files
 

@@ -5,14 +5,14 @@ Two independent time discretisations of the semi-discrete membrane equation
 
 ``modal``
     Superposition of finite-element eigenmodes in closed form, eqs. (3.14)-(3.16),
-    returned as the shared :class:`modal.series.ModalSeries`.
+    returned as the shared :class:`twoball.modal.series.ModalSeries`.
 ``alpha``
     Direct generalized-alpha stepping of ``M u'' + C u' + K u = 0`` from the
     filtered initial displacement, returned as
-    :class:`modal.liftoff.SampledPoleMotion` (each of the pole's u, u_t, u_tt
+    :class:`twoball.modal.liftoff.SampledPoleMotion` (each of the pole's u, u_t, u_tt
     through its own cubic spline on the step grid).
 
-Both motions go to :func:`modal.liftoff.find_liftoff`; nothing here decides
+Both motions go to :func:`twoball.modal.liftoff.find_liftoff`; nothing here decides
 lift-off, filters or scales.  Everything is dimensionless.
 """
 
@@ -23,12 +23,11 @@ from dataclasses import dataclass, field
 from typing import Any
 
 import numpy as np
-
-from modal.errors import ParameterError
-from modal.filters import FilterKind, SpectralFilter
-from modal.initial import _check_phi_a
-from modal.liftoff import DEFAULT_T_END, PoleMotion, SampledPoleMotion
-from modal.series import ModalSeries, check_damping
+from twoball.modal.errors import ParameterError
+from twoball.modal.filters import FilterKind, SpectralFilter
+from twoball.modal.initial import _check_phi_a
+from twoball.modal.liftoff import DEFAULT_T_END, PoleMotion, SampledPoleMotion
+from twoball.modal.series import ModalSeries, check_damping
 
 from .alpha import GeneralizedAlpha, automatic_step
 from .build import build_space
@@ -93,9 +92,9 @@ def modal_model(
     ``route="full"`` (the reference) computes every eigenpair below the filter
     cutoff ``filter.omega_cut**2`` (eqs. (3.12), (3.16)); ``route="krylov"`` finds
     only the modes the pole and the initial displacement see, by the rational
-    Krylov method of :mod:`fem_membrane.krylov` (pole motion exact to 1e-10
+    Krylov method of :mod:`twoball.fem_membrane.krylov` (pole motion exact to 1e-10
     relative; no eigenvector set, ``pairs`` is None); ``route="auto"`` takes
-    Krylov from :data:`fem_membrane.krylov.AUTO_THRESHOLD` DOFs on.  See
+    Krylov from :data:`twoball.fem_membrane.krylov.AUTO_THRESHOLD` DOFs on.  See
     :func:`fem_pole_motion`.
     """
     phi_a = _check_phi_a(phi_a)
@@ -228,7 +227,7 @@ def fem_pole_motion(
         Modal superposition or generalized-alpha stepping (``--time``).
     route : {"auto", "full", "krylov"}
         ``modal`` only: every eigenpair below the cutoff (``full``, the reference),
-        the rational Krylov route of :mod:`fem_membrane.krylov` (``krylov``), or
+        the rational Krylov route of :mod:`twoball.fem_membrane.krylov` (``krylov``), or
         Krylov from 2000 DOFs on (``auto``, default) (``--route``).  ``alpha``
         always uses the full eigenpairs.
     damping_model : {"modal", "rayleigh"}
@@ -250,7 +249,7 @@ def fem_pole_motion(
     Returns
     -------
     motion : ModalSeries or SampledPoleMotion
-        Anything :func:`modal.liftoff.find_liftoff` accepts.
+        Anything :func:`twoball.modal.liftoff.find_liftoff` accepts.
     info : dict
         ``dofs``, ``modes_used`` (nonzero filter weight), ``modes_computed``,
         ``mesh``, ``order``, ``time_scheme``, ``damping_model``, ``initial``,

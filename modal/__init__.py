@@ -1,49 +1,41 @@
 """twoball.modal -- the continuum elastic model (CEM) in closed form, and the ICM.
 
-Dimensionless inside (length R, time 1/c); SI at :mod:`modal.report`.
+Dimensionless inside (length R, time 1/c); SI at :mod:`twoball.modal.report`.
 """
 
-from .errors import NumericalError, ParameterError
-from .filters import SpectralFilter, legendre_frequency
-from .initial import (
-    deformation_work,
-    initial_displacement,
-    phi_a_from_v0,
-    v0_dimensionless,
-    v0_from_phi_a,
-)
-from .legendre import legendre_coefficients, legendre_series, mean_displacement
-from .liftoff import Candidate, LiftoffResult, PoleMotion, SampledPoleMotion, find_liftoff
-from .parameters import PRESETS, Case, Scalings, preset, wave_speed_from_pressure
-from .report import LiftoffReport, legendre_liftoff, report_liftoff
-from .series import ModalSeries, PoleState
+from twoball._lazy import attach
 
-__all__ = [
-    "Candidate",
-    "Case",
-    "LiftoffReport",
-    "LiftoffResult",
-    "ModalSeries",
-    "NumericalError",
-    "PRESETS",
-    "ParameterError",
-    "PoleMotion",
-    "PoleState",
-    "SampledPoleMotion",
-    "Scalings",
-    "SpectralFilter",
-    "deformation_work",
-    "find_liftoff",
-    "initial_displacement",
-    "legendre_coefficients",
-    "legendre_frequency",
-    "legendre_liftoff",
-    "legendre_series",
-    "mean_displacement",
-    "phi_a_from_v0",
-    "preset",
-    "report_liftoff",
-    "v0_dimensionless",
-    "v0_from_phi_a",
-    "wave_speed_from_pressure",
-]
+__getattr__, __dir__ = attach(
+    __name__,
+    {
+        "Candidate": ".liftoff",
+        "Case": ".parameters",
+        "LiftoffReport": ".report",
+        "LiftoffResult": ".liftoff",
+        "ModalSeries": ".series",
+        "NumericalError": ".errors",
+        "PRESETS": ".parameters",
+        "ParameterError": ".errors",
+        "PoleMotion": ".liftoff",
+        "PoleState": ".series",
+        "SampledPoleMotion": ".liftoff",
+        "Scalings": ".parameters",
+        "SpectralFilter": ".filters",
+        "deformation_work": ".initial",
+        "find_liftoff": ".liftoff",
+        "initial_displacement": ".initial",
+        "legendre_coefficients": ".legendre",
+        "legendre_frequency": ".filters",
+        "legendre_liftoff": ".report",
+        "legendre_series": ".legendre",
+        "mean_displacement": ".legendre",
+        "phi_a_from_v0": ".initial",
+        "preset": ".parameters",
+        "report_liftoff": ".report",
+        "v0_dimensionless": ".initial",
+        "v0_from_phi_a": ".initial",
+        "wave_speed_from_pressure": ".parameters",
+    },
+)
+
+__all__ = sorted(__dir__())

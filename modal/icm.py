@@ -33,7 +33,7 @@ import numpy as np
 from .errors import ParameterError
 from .parameters import STANDARD_GRAVITY
 
-# The paper's value (§2).  modal.parameters defines the same constant for the
+# The paper's value (§2).  twoball.modal.parameters defines the same constant for the
 # continuum model; it is repeated here so the ICM has no dependency on it.
 
 #: Significant figures of the ICM columns in Table 1.

@@ -1,7 +1,7 @@
 """Lift-off of a massless body resting on the pole, criteria (i) and (ii) of §3(a).
 
 Written once for every backend: it takes any pole motion that yields u, u_t and
-u_tt -- a :class:`~modal.series.ModalSeries` in closed form, or samples from a
+u_tt -- a :class:`~twoball.modal.series.ModalSeries` in closed form, or samples from a
 time integrator wrapped in :class:`SampledPoleMotion`.  Everything here is
 dimensionless (length R, time 1/c, gravity gamma = g/(R c^2)).
 

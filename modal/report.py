@@ -25,7 +25,7 @@ class LiftoffReport:
     case : Case
         The impact (SI).
     result : LiftoffResult
-        The dimensionless outcome of :func:`modal.liftoff.find_liftoff`.
+        The dimensionless outcome of :func:`twoball.modal.liftoff.find_liftoff`.
     backend : str
         Which solver produced the pole motion (``legendre``, ``fem``).
     sigma, recontact : str

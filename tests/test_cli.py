@@ -7,8 +7,7 @@ import subprocess
 import sys
 
 import pytest
-
-from verify.cli import main
+from twoball.verify.cli.main import main
 
 
 def run(capsys, *argv):
@@ -96,7 +95,7 @@ def test_bad_input_is_one_line_exit_2(capsys, argv, flag):
 
 def test_console_script_error_has_no_traceback():
     exe = shutil.which("twoball")
-    cmd = [exe] if exe else [sys.executable, "-m", "verify.cli"]
+    cmd = [exe] if exe else [sys.executable, "-m", "twoball"]
     proc = subprocess.run(
         [*cmd, "liftoff", "--damping", "2"], capture_output=True, text=True, check=False
     )

@@ -4,10 +4,9 @@ import json
 
 import numpy as np
 import pytest
-
-from modal.parameters import preset
-from verify.cli import main
-from verify.studies import (
+from twoball.modal.parameters import preset
+from twoball.verify.cli.main import main
+from twoball.verify.studies.studies import (
     converged_legendre,
     parse_modes,
     run_dt_study,

@@ -9,17 +9,16 @@ import numpy as np
 import pytest
 import pyvista as pv
 from meshio.xdmf import TimeSeriesReader
-
-from fem_membrane import export
-from fem_membrane.export import TimeSeries, read_series, write_series
-from fem_membrane.initial import initial_load
-from fem_membrane.space import sphere_space
-from modal.errors import ParameterError
-from modal.filters import SpectralFilter
-from modal.legendre import displacement, legendre_series
-from modal.parameters import preset
-from verify.cli import main
-from verify.fields import ball_model, field_series, frame_times
+from twoball.fem_membrane import export
+from twoball.fem_membrane.export import TimeSeries, read_series, write_series
+from twoball.fem_membrane.initial import initial_load
+from twoball.fem_membrane.space import sphere_space
+from twoball.modal.errors import ParameterError
+from twoball.modal.filters import SpectralFilter
+from twoball.modal.legendre import displacement, legendre_series
+from twoball.modal.parameters import preset
+from twoball.verify.cli.main import main
+from twoball.verify.output.fields import ball_model, field_series, frame_times
 
 FIELDS = ("u", "u_t", "u_tt", "displacement", "u_fem", "u_legendre", "u_diff")
 
@@ -36,7 +35,7 @@ def series(model):
 
 
 def closed_form(model, t_s):
-    """u [m] of eq. (3.16) at the node angles, evaluated independently of verify.fields."""
+    """u [m] of eq. (3.16) at the node angles, evaluated without twoball.verify.output.fields."""
     case = model.case
     scale = case.scalings
     legendre = legendre_series(case.phi_a, case.damping, SpectralFilter("lanczos", case.modes))

@@ -5,14 +5,13 @@ from __future__ import annotations
 import numpy as np
 import pytest
 import scipy.sparse as sp
-
-from fem_membrane.alpha import AlphaParameters, GeneralizedAlpha, automatic_step
-from fem_membrane.damping import ModalDamping
-from fem_membrane.eigen import Eigenpairs
-from fem_membrane.modal import filtered_displacement
-from fem_membrane.solve import alpha_motion, fem_pole_motion, modal_model
-from modal.liftoff import SampledPoleMotion, find_liftoff
-from modal.parameters import Case
+from twoball.fem_membrane.alpha import AlphaParameters, GeneralizedAlpha, automatic_step
+from twoball.fem_membrane.damping import ModalDamping
+from twoball.fem_membrane.eigen import Eigenpairs
+from twoball.fem_membrane.modal import filtered_displacement
+from twoball.fem_membrane.solve import alpha_motion, fem_pole_motion, modal_model
+from twoball.modal.liftoff import SampledPoleMotion, find_liftoff
+from twoball.modal.parameters import Case
 
 PHI_A, DAMPING = 2.6, 0.13
 GAMMA = Case().gamma

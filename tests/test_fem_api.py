@@ -3,11 +3,10 @@
 from __future__ import annotations
 
 import pytest
-
-from fem_membrane import eigen_table, fem_pole_motion
-from fem_membrane.axisym import axisym_space
-from fem_membrane.mesh import icosphere, ring_sphere
-from modal.errors import ParameterError
+from twoball.fem_membrane import eigen_table, fem_pole_motion
+from twoball.fem_membrane.axisym import axisym_space
+from twoball.fem_membrane.mesh import icosphere, ring_sphere
+from twoball.modal.errors import ParameterError
 
 PHI_A, DAMPING = 2.6, 0.13
 

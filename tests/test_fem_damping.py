@@ -6,12 +6,11 @@ import math
 
 import numpy as np
 import pytest
-
-from fem_membrane.damping import RayleighDamping
-from fem_membrane.solve import alpha_motion, fem_pole_motion, modal_model
-from modal.errors import ParameterError
-from modal.filters import SpectralFilter
-from modal.series import ModalSeries
+from twoball.fem_membrane.damping import RayleighDamping
+from twoball.fem_membrane.solve import alpha_motion, fem_pole_motion, modal_model
+from twoball.modal.errors import ParameterError
+from twoball.modal.filters import SpectralFilter
+from twoball.modal.series import ModalSeries
 
 PHI_A, DAMPING = 2.6, 0.13
 

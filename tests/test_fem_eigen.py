@@ -7,12 +7,11 @@ import math
 import numpy as np
 import pytest
 import scipy.linalg as sl
-
-import fem_membrane.eigen as eigen_module
-from fem_membrane.axisym import axisym_space
-from fem_membrane.eigen import eigen_table, eigenpairs, inertia, lowest_eigenpairs
-from fem_membrane.mesh import icosphere
-from fem_membrane.space import sphere_space
+import twoball.fem_membrane.eigen as eigen_module
+from twoball.fem_membrane.axisym import axisym_space
+from twoball.fem_membrane.eigen import eigen_table, eigenpairs, inertia, lowest_eigenpairs
+from twoball.fem_membrane.mesh import icosphere
+from twoball.fem_membrane.space import sphere_space
 
 COUNT = 25  # nonzero eigenvalues checked: l = 1 .. 4 and the first of l = 5
 BANDS = {1: (1.7, 2.3), 2: (3.5, 4.6)}

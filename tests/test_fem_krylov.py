@@ -4,16 +4,15 @@ from __future__ import annotations
 
 import numpy as np
 import pytest
-
-from fem_membrane.build import build_space
-from fem_membrane.eigen import eigenpairs
-from fem_membrane.initial import initial_moments
-from fem_membrane.krylov import default_shifts, krylov_modal_series
-from fem_membrane.modal import modal_series
-from modal.errors import NumericalError, ParameterError
-from modal.filters import SpectralFilter
-from modal.liftoff import find_liftoff
-from modal.series import ModalSeries
+from twoball.fem_membrane.build import build_space
+from twoball.fem_membrane.eigen import eigenpairs
+from twoball.fem_membrane.initial import initial_moments
+from twoball.fem_membrane.krylov import default_shifts, krylov_modal_series
+from twoball.fem_membrane.modal import modal_series
+from twoball.modal.errors import NumericalError, ParameterError
+from twoball.modal.filters import SpectralFilter
+from twoball.modal.liftoff import find_liftoff
+from twoball.modal.series import ModalSeries
 
 PHI_A = 2.6
 DAMPING = 0.13
@@ -119,8 +118,8 @@ def test_default_shifts_lie_in_gaps():
 
 
 def test_choose_route():
-    from fem_membrane.krylov import AUTO_THRESHOLD, choose_route
-    from modal.errors import ParameterError
+    from twoball.fem_membrane.krylov import AUTO_THRESHOLD, choose_route
+    from twoball.modal.errors import ParameterError
 
     assert choose_route("auto", AUTO_THRESHOLD) == "krylov"
     assert choose_route("auto", AUTO_THRESHOLD - 1) == "full"
@@ -131,8 +130,8 @@ def test_choose_route():
 
 
 def test_fem_pole_motion_routes_agree_and_auto_picks_krylov_on_large_meshes():
-    from fem_membrane.solve import fem_pole_motion
-    from modal.liftoff import find_liftoff
+    from twoball.fem_membrane.solve import fem_pole_motion
+    from twoball.modal.liftoff import find_liftoff
 
     gamma = 9.81 / (0.12 * 320.0**2)
     full, info_full = fem_pole_motion(2.6, 0.13, mesh="sphere", level=2, order=2, route="full")
@@ -148,7 +147,7 @@ def test_fem_pole_motion_routes_agree_and_auto_picks_krylov_on_large_meshes():
 
 
 def test_thorough_verify_uses_the_fast_route_at_level_5_p2():
-    from verify.checks import config
+    from twoball.verify.checks.checks import config
 
     specs = [(t.spec.mesh, t.spec.order, t.spec.size) for t in config("thorough").krylov]
     assert ("sphere", 2, 5) in specs

@@ -6,14 +6,13 @@ import math
 
 import numpy as np
 import pytest
-
-from fem_membrane.eigen import sphere_degree
-from fem_membrane.initial import initial_load
-from fem_membrane.solve import fem_pole_motion, modal_model
-from modal.filters import SpectralFilter
-from modal.legendre import legendre_coefficients, legendre_series, mean_displacement
-from modal.liftoff import find_liftoff
-from modal.parameters import Case
+from twoball.fem_membrane.eigen import sphere_degree
+from twoball.fem_membrane.initial import initial_load
+from twoball.fem_membrane.solve import fem_pole_motion, modal_model
+from twoball.modal.filters import SpectralFilter
+from twoball.modal.legendre import legendre_coefficients, legendre_series, mean_displacement
+from twoball.modal.liftoff import find_liftoff
+from twoball.modal.parameters import Case
 
 PHI_A, DAMPING = 2.6, 0.13
 FILTER = SpectralFilter("lanczos", 30)

@@ -9,10 +9,9 @@ import pytest
 import scipy.sparse as sp
 from skfem import BilinearForm, asm
 from skfem.helpers import dot, grad
-
-from fem_membrane.axisym import axisym_space
-from fem_membrane.mesh import elevate, icosphere, ring_sphere
-from fem_membrane.space import dof_nodes, sphere_space, surface_basis
+from twoball.fem_membrane.axisym import axisym_space
+from twoball.fem_membrane.mesh import elevate, icosphere, ring_sphere
+from twoball.fem_membrane.space import dof_nodes, sphere_space, surface_basis
 
 
 def cotangent_laplacian(points: np.ndarray, triangles: np.ndarray) -> sp.csr_matrix:

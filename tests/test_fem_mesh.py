@@ -6,8 +6,7 @@ import math
 
 import numpy as np
 import pytest
-
-from fem_membrane.mesh import (
+from twoball.fem_membrane.mesh import (
     elevate,
     icosphere,
     min_angle,

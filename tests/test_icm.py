@@ -1,4 +1,4 @@
-"""Tests of the independent collision model, modal.icm (§2 and Table 1)."""
+"""Tests of the independent collision model, twoball.modal.icm (§2 and Table 1)."""
 
 from __future__ import annotations
 
@@ -7,9 +7,8 @@ import math
 
 import numpy as np
 import pytest
-
-from modal.errors import ParameterError
-from modal.icm import (
+from twoball.modal.errors import ParameterError
+from twoball.modal.icm import (
     STANDARD_GRAVITY,
     TABLE1,
     ICMResult,

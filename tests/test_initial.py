@@ -5,9 +5,8 @@ import math
 import numpy as np
 import pytest
 from scipy.integrate import quad
-
-from modal.errors import ParameterError
-from modal.initial import (
+from twoball.modal.errors import ParameterError
+from twoball.modal.initial import (
     deformation_work,
     initial_displacement,
     initial_displacement_x,

@@ -6,10 +6,9 @@ import mpmath
 import numpy as np
 import pytest
 from scipy.special import eval_legendre
-
-from modal.filters import SpectralFilter
-from modal.initial import deformation_work, initial_displacement
-from modal.legendre import (
+from twoball.modal.filters import SpectralFilter
+from twoball.modal.initial import deformation_work, initial_displacement
+from twoball.modal.legendre import (
     displacement,
     legendre_coefficients,
     legendre_coefficients_recurrence,

@@ -4,15 +4,14 @@ import math
 
 import numpy as np
 import pytest
-
-from modal.errors import NumericalError, ParameterError
-from modal.filters import SpectralFilter
-from modal.legendre import legendre_series
-from modal.liftoff import SampledPoleMotion, find_liftoff
-from modal.parameters import preset
-from modal.report import legendre_liftoff
-from modal.roots import bracketed_roots
-from modal.series import ModalSeries
+from twoball.modal.errors import NumericalError, ParameterError
+from twoball.modal.filters import SpectralFilter
+from twoball.modal.legendre import legendre_series
+from twoball.modal.liftoff import SampledPoleMotion, find_liftoff
+from twoball.modal.parameters import preset
+from twoball.modal.report import legendre_liftoff
+from twoball.modal.roots import bracketed_roots
+from twoball.modal.series import ModalSeries
 
 
 def single_mode(amplitude: float, omega: float) -> ModalSeries:
@@ -166,7 +165,7 @@ def test_bracketed_roots_vectorised_to_1e_12():
 
 
 def test_newton_bracketed_converges_quadratically_to_1e_12():
-    from modal.roots import newton_bracketed
+    from twoball.modal.roots import newton_bracketed
 
     calls = []
 
@@ -182,7 +181,7 @@ def test_newton_bracketed_converges_quadratically_to_1e_12():
 
 
 def test_flight_clearance_agrees_with_the_verdicts_and_brute_force():
-    from modal.liftoff import flight_clearance
+    from twoball.modal.liftoff import flight_clearance
 
     gamma = preset("basketball").gamma
     series = legendre_series(2.6, 0.13, SpectralFilter("lanczos", 30))

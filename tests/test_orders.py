@@ -4,8 +4,7 @@ import math
 
 import numpy as np
 import pytest
-
-from verify.orders import (
+from twoball.verify.studies.orders import (
     OrderBand,
     analyse,
     classify,

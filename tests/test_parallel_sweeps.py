@@ -7,13 +7,12 @@ import time
 
 import numpy as np
 import pytest
-
-from modal.errors import NumericalError
-from modal.parameters import Case, preset
-from verify import parallel
-from verify.cli import main
-from verify.parallel import MIN_PARALLEL_ITEMS, Outcome, Runner, chunk_size
-from verify.sweeps import SweepGrid, SweepSolver, make_grid, run_sweep, sweep_cases
+from twoball.modal.errors import NumericalError
+from twoball.modal.parameters import Case, preset
+from twoball.verify.sweeps import parallel
+from twoball.verify.cli.main import main
+from twoball.verify.sweeps.parallel import MIN_PARALLEL_ITEMS, Outcome, Runner, chunk_size
+from twoball.verify.sweeps.sweeps import SweepGrid, SweepSolver, make_grid, run_sweep, sweep_cases
 
 
 def cases(count=40):
@@ -126,7 +125,7 @@ def test_a_failed_point_is_a_row_with_its_parameters():
 
 
 def test_sweep_cli_reports_failed_points(capsys, monkeypatch):
-    monkeypatch.setattr("verify.cli_sweep.SweepSolver", lambda *a: FailAbove(3.0))
+    monkeypatch.setattr("twoball.verify.cli.sweep.SweepSolver", lambda *a: FailAbove(3.0))
     assert main(["sweep", "--param", "v0", "--values", "2:4:3", "--json", "--workers", "1"]) == 0
     rows = json.loads(capsys.readouterr().out)
     assert [r["error"] is not None for r in rows] == [False, False, True]
@@ -201,7 +200,7 @@ def test_unreachable_scheduler_is_one_line_exit_2(capsys, monkeypatch):
 
 @pytest.mark.slow
 def test_fig12_sweeps_finish_in_30_s_on_two_workers():
-    from verify.reproduce_cem import FIG12_AXES, FIG12_DAMPING, fig12_base
+    from twoball.verify.reproduce.cem import FIG12_AXES, FIG12_DAMPING, fig12_base
 
     base = fig12_base()
     cs = [

@@ -3,9 +3,8 @@
 import math
 
 import pytest
-
-from modal.errors import ParameterError
-from modal.parameters import PRESETS, Case, Scalings, preset, wave_speed_from_pressure
+from twoball.modal.errors import ParameterError
+from twoball.modal.parameters import PRESETS, Case, Scalings, preset, wave_speed_from_pressure
 
 
 def test_table2_wave_speed_from_pressure():

@@ -5,12 +5,11 @@ from __future__ import annotations
 import matplotlib.image as mpimg
 import numpy as np
 import pytest
-
-from modal.errors import ParameterError
-from modal.parameters import preset
-from verify.cli import main
-from verify.fields import ball_model
-from verify.plots import (
+from twoball.modal.errors import ParameterError
+from twoball.modal.parameters import preset
+from twoball.verify.cli.main import main
+from twoball.verify.output.fields import ball_model
+from twoball.verify.output.plots import (
     eigen_figure,
     eigen_table,
     pole_figure,

@@ -9,8 +9,7 @@ import sys
 import imageio.v3 as iio
 import numpy as np
 import pytest
-
-from fem_membrane.render import (
+from twoball.fem_membrane.render import (
     BallScene,
     check_size,
     check_warp,
@@ -19,10 +18,10 @@ from fem_membrane.render import (
     round_size,
     surface_triangles,
 )
-from modal.errors import ParameterError
-from modal.parameters import preset
-from verify.cli import main
-from verify.fields import ball_model, ball_scene, liftoff_frame
+from twoball.modal.errors import ParameterError
+from twoball.modal.parameters import preset
+from twoball.verify.cli.main import main
+from twoball.verify.output.fields import ball_model, ball_scene, liftoff_frame
 
 WHITE = 255
 
@@ -142,7 +141,7 @@ def test_cli_render_png_without_display_is_quiet(tmp_path):
     root = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
     env["PYTHONPATH"] = root + os.pathsep + env.get("PYTHONPATH", "")
     proc = subprocess.run(
-        [sys.executable, "-m", "verify.cli", "render", "--level", "1", "--size", "200x150"]
+        [sys.executable, "-m", "twoball", "render", "--level", "1", "--size", "200x150"]
         + ["--out", str(out)],
         capture_output=True,
         text=True,

@@ -6,19 +6,17 @@ import os
 
 import numpy as np
 import pytest
-
-from modal.parameters import preset
-from verify import reproduce as rep
-from verify.cli import main
-from verify.parallel import Runner
-from verify.reproduce_cem import (
+from twoball.modal.parameters import preset
+from twoball.verify.reproduce import driver as rep
+from twoball.verify.cli.main import main
+from twoball.verify.reproduce.cem import (
     OptimumTask,
     ThresholdTask,
     _fit_damping,
     fig12_base,
     main_branch,
 )
-from verify.reproduce_common import (
+from twoball.verify.reproduce.common import (
     Comparison,
     Context,
     acceleration_minima,
@@ -26,6 +24,7 @@ from verify.reproduce_common import (
     find_threshold,
     series_for,
 )
+from twoball.verify.sweeps.parallel import Runner
 
 
 def context(tmp_path):
@@ -130,7 +129,7 @@ def test_whole_window_minimum_is_the_initial_truncation_value():
 def test_recurrence_fallback_matches_the_quadrature():
     case = preset("basketball").derive(radius=2e-3)  # ~290 Gauss points: recurrence
     fast = series_for(case)
-    from modal.legendre import legendre_series
+    from twoball.modal.legendre import legendre_series
 
     slow = legendre_series(case.phi_a, case.damping, "lanczos", case.modes)
     t = np.linspace(0, 12, 50)
@@ -151,7 +150,7 @@ def test_optimum_location_d_0_13():
 
 
 def test_early_ringing_liftoffs_are_left_out_of_the_curves():
-    from verify.sweeps import SweepSolver, run_sweep, sweep_cases
+    from twoball.verify.sweeps.sweeps import SweepSolver, run_sweep, sweep_cases
 
     cases = sweep_cases(fig12_base().derive(damping=0.3), "v0", [10.0, 15.0])
     points = run_sweep(cases, SweepSolver())

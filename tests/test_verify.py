@@ -5,12 +5,11 @@ import math
 
 import numpy as np
 import pytest
-
-from modal.parameters import preset
-from verify import cli_verify
-from verify.checks import Check, bounded, config, decay_band, run_verify
-from verify.cli import main
-from verify.report_files import write_report_dir
+from twoball.modal.parameters import preset
+from twoball.verify.cli import verify as cli_verify
+from twoball.verify.checks.checks import Check, bounded, config, decay_band, run_verify
+from twoball.verify.cli.main import main
+from twoball.verify.output.report_files import write_report_dir
 
 FILES = {
     "report.md",
@@ -147,8 +146,8 @@ def test_default_verify_passes(capsys, tmp_path):
 
 
 def test_out_refuses_a_folder_that_is_not_a_report(tmp_path):
-    from modal.errors import ParameterError
-    from verify.report_files import MARKER, check_output_dir, write_report_dir
+    from twoball.modal.errors import ParameterError
+    from twoball.verify.output.report_files import MARKER, check_output_dir, write_report_dir
 
     foreign = tmp_path / "home"
     foreign.mkdir()

@@ -1,0 +1,39 @@
+"""Lazy package attributes (PEP 562): a name imports its module on first use.
+
+Keeps ``import twoball`` and ``twoball --help`` free of numpy, scipy,
+scikit-fem and matplotlib until a computation needs them.
+"""
+
+from __future__ import annotations
+
+import importlib
+from collections.abc import Callable
+
+
+def attach(
+    package: str, names: dict[str, str]
+) -> tuple[Callable[[str], object], Callable[[], list[str]]]:
+    """``__getattr__`` and ``__dir__`` for ``package``, mapping each name to its module.
+
+    Parameters
+    ----------
+    package : str
+        The package's ``__name__``.
+    names : dict
+        Public name -> module path relative to ``package`` (for example ``".parameters"``).
+    """
+
+    def __getattr__(name: str) -> object:
+        try:
+            module = names[name]
+        except KeyError:
+            raise AttributeError(f"module {package!r} has no attribute {name!r}") from None
+        value = getattr(importlib.import_module(module, package), name)
+        globals_of_package = importlib.import_module(package).__dict__
+        globals_of_package[name] = value  # later look-ups are plain attribute reads
+        return value
+
+    def __dir__() -> list[str]:
+        return sorted(names)
+
+    return __getattr__, __dir__

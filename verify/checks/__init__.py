@@ -1,0 +1,1 @@
+"""twoball.verify.checks -- the checks of twoball verify."""

@@ -1,0 +1,1 @@
+"""twoball.verify.cli -- the command line."""

@@ -1,0 +1,86 @@
+"""Command-line case options (SI) shared by every subcommand, turned into a :class:`Case`."""
+
+from __future__ import annotations
+
+import argparse
+import math
+
+from twoball.modal.errors import ParameterError
+from twoball.modal.filters import FILTER_KINDS
+from twoball.modal.liftoff import HORIZONS
+from twoball.modal.parameters import PRESETS, STANDARD_GRAVITY, Case, preset
+
+VALID_RANGES: dict[str, str] = {
+    "--radius": "a number > 0 [m]",
+    "--wave-speed": "a number > 0 [1/s]",
+    "--pressure": "a number > 0 [Pa]",
+    "--mass": "a number > 0 [kg]",
+    "--v0": "a nonzero number [m/s]",
+    "--phi-a": "a number in (pi/2, pi) [rad]",
+    "--damping": "a number in [0, 1)",
+    "--modes": "an integer >= 1",
+    "--t-end": "a number > 0 [s]",
+}
+
+
+def add_case_options(parser: argparse.ArgumentParser) -> None:
+    """Add the case options (all SI) to ``parser``."""
+    group = parser.add_argument_group("case (SI units; defaults: the preset)")
+    group.add_argument("--preset", default="basketball", help="named case (basketball)")
+    group.add_argument("--radius", type=float, metavar="R", help="ball radius R [m]")
+    group.add_argument("--wave-speed", type=float, metavar="C", help="angular wave speed c [1/s]")
+    group.add_argument("--pressure", type=float, metavar="P", help="excess pressure P [Pa]")
+    group.add_argument("--mass", type=float, metavar="M", help="ball mass m [kg] (with --pressure)")
+    group.add_argument("--v0", type=float, metavar="V", help="impact speed |v0| [m/s]")
+    group.add_argument(
+        "--phi-a", type=float, metavar="A", help="contact angle [rad]; default from eq. (3.7)"
+    )
+    group.add_argument("--damping", type=float, metavar="D", help="modal damping ratio in [0, 1)")
+    group.add_argument("--modes", type=int, metavar="N", help="Legendre modes N (default 30)")
+    group.add_argument("--g", type=float, default=STANDARD_GRAVITY, help=argparse.SUPPRESS)
+    model = parser.add_argument_group("model")
+    model.add_argument(
+        "--sigma", choices=FILTER_KINDS, default="lanczos", help="spectral filter (eq. (3.16))"
+    )
+    model.add_argument(
+        "--recontact",
+        choices=HORIZONS,
+        default="window",
+        help="re-contact horizon: the whole window, or dt < t_l as in §3(a)(ii)",
+    )
+    model.add_argument(
+        "--t-end", type=float, metavar="SECONDS", help="modelled window [s] (default 4 pi / c)"
+    )
+
+
+def case_from_options(args: argparse.Namespace) -> Case:
+    """Build the case: preset values, overridden by any option given.
+
+    Rules: ``--pressure``/``--mass`` replace ``--wave-speed`` (eq. (3.8), §4(b));
+    when v0, c or R is given without ``--phi-a``, phi_a follows from eq. (3.7).
+    """
+    base = preset(args.preset)
+    if (args.pressure is None) != (args.mass is None):
+        raise ParameterError("--pressure/--mass", "given together")
+    if args.pressure is not None and args.wave_speed is not None:
+        raise ParameterError("--wave-speed", "given alone, not with --pressure and --mass")
+    changes: dict[str, float] = {}
+    for name in ("radius", "wave_speed", "v0", "damping", "modes", "g"):
+        value = getattr(args, name)
+        if value is not None:
+            changes[name] = value
+    for name in ("radius", "v0", "damping", "pressure", "mass", "wave_speed", "phi_a", "t_end"):
+        value = getattr(args, name, None)
+        if value is not None and not math.isfinite(value):
+            raise ParameterError("--" + name.replace("_", "-"), "a finite number", value)
+    if args.pressure is not None:
+        from twoball.modal.parameters import wave_speed_from_pressure
+
+        radius = changes.get("radius", base.radius)
+        changes["wave_speed"] = wave_speed_from_pressure(args.pressure, args.mass, radius)
+    if args.phi_a is not None:
+        changes["phi_a"] = args.phi_a
+    return base.derive(**changes)
+
+
+__all__ = ["PRESETS", "VALID_RANGES", "add_case_options", "case_from_options"]

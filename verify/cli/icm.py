@@ -1,0 +1,120 @@
+"""``twoball icm``: the independent collision model (§2) and Table 1."""
+
+from __future__ import annotations
+
+import argparse
+from dataclasses import asdict
+
+from rich.table import Table
+from twoball.modal import icm
+from twoball.modal.errors import ParameterError
+from twoball.verify.cli.console import console, print_json
+
+VALID_RANGES = {
+    "--mu": "a number >= 0",
+    "--e2": "a number in [0, 1]",
+    "--e12": "a number in [0, 1]",
+    "--dx": "a number >= 0 [m]",
+    "--drop-height": "a number > 0 [m]",
+}
+
+
+def run(args: argparse.Namespace) -> int:
+    """Run ``twoball icm``."""
+    out = console(wide=True)
+    if args.table1:
+        checks = icm.table1_check()
+        if args.json:
+            rows = [
+                {
+                    **asdict(c.row),
+                    "ours_v1": c.v1,
+                    "ours_v2": c.v2,
+                    "ours_v1_rounded": c.v1_rounded,
+                    "ours_v2_rounded": c.v2_rounded,
+                    "v1_differs": c.v1_differs,
+                    "v2_differs": c.v2_differs,
+                }
+                for c in checks
+            ]
+            print_json(rows)
+            return 0
+        table = Table(title="Table 1: ICM (eq. (2.6)) recomputed beside the printed values")
+        for name in (
+            "lower",
+            "upper",
+            "mu",
+            "e2",
+            "e12",
+            "v1 printed",
+            "v1 ours",
+            "",
+            "v2 printed",
+            "v2 ours",
+            " ",
+        ):
+            table.add_column(name, justify="right")
+        for c in checks:
+            r = c.row
+            table.add_row(
+                r.lower,
+                r.upper,
+                f"{r.mu:g}",
+                f"{r.e2:g}",
+                f"{r.e12:g}",
+                f"{r.icm_v1:g}",
+                f"{c.v1:.3f}",
+                "DIFFERS" if c.v1_differs else "ok",
+                f"{r.icm_v2:g}",
+                f"{c.v2:.3f}",
+                "DIFFERS" if c.v2_differs else "ok",
+            )
+        out.print(table)
+        out.print("Ratios are v/|v0|; 'ok' means equal after rounding to the printed digits.")
+        return 0
+    missing = [
+        f for f, v in (("--mu", args.mu), ("--e2", args.e2), ("--e12", args.e12)) if v is None
+    ]
+    if missing:
+        raise ParameterError(missing[0], "given (or use --table1)")
+    if (args.dx is None) != (args.drop_height is None) and args.dx not in (None, 0.0):
+        raise ParameterError("--drop-height", "given with --dx")
+    result = icm.icm(
+        args.mu,
+        args.e2,
+        args.e12,
+        dx=0.0 if args.dx is None else args.dx,
+        drop_height=1.0 if args.drop_height is None else args.drop_height,
+    )
+    if args.json:
+        print_json(asdict(result))
+        return 0
+    table = Table(title="Independent collision model (§2)")
+    table.add_column("quantity")
+    table.add_column("value", justify="right")
+    for name, value in (
+        ("impact velocity v0 [m/s]", result.v0),
+        ("lower-ball rebound u0 [m/s] (2.1)", result.u0),
+        ("delay to second impact dt [s] (2.2)", result.dt),
+        ("upper ball after v1 [m/s] (2.5)", result.v1),
+        ("lower ball after v2 [m/s] (2.5)", result.v2),
+        ("v1 / |v0|", result.v1_ratio),
+        ("v2 / |v0|", result.v2_ratio),
+    ):
+        table.add_row(name, f"{value:.6g}")
+    out.print(table)
+    return 0
+
+
+def register(parser: argparse.ArgumentParser) -> None:
+    """The options of ``twoball icm``."""
+    parser.add_argument("--mu", type=float, help="mass ratio m1/m2 >= 0")
+    parser.add_argument("--e2", type=float, help="restitution lower ball-floor in [0, 1]")
+    parser.add_argument("--e12", type=float, help="restitution between the balls in [0, 1]")
+    parser.add_argument("--dx", type=float, help="initial separation [m] (default 0)")
+    parser.add_argument("--drop-height", type=float, help="drop height x2 - r2 [m] (default 1)")
+    parser.add_argument(
+        "--table1", action="store_true", help="recompute Table 1 beside the printed values"
+    )
+    parser.add_argument("--json", action="store_true", help="print JSON")
+    parser.set_defaults(run=run)

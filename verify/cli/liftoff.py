@@ -1,0 +1,76 @@
+"""``twoball liftoff``: lift-off time and velocity for one case (SI in and out)."""
+
+from __future__ import annotations
+
+import argparse
+
+from twoball.modal.errors import ParameterError
+from twoball.modal.report import LiftoffReport, legendre_liftoff
+from twoball.verify.cli.case_options import add_case_options, case_from_options
+from twoball.verify.cli.console import console, key_value_table, number, print_json
+from twoball.verify.cli.fem_options import add_mesh_options, add_time_options
+
+
+def liftoff_rows(report: LiftoffReport) -> list[tuple[str, str]]:
+    """The human-readable rows of a lift-off report (SI)."""
+    case = report.case
+    rows = [
+        ("R [m]", f"{case.radius:g}"),
+        ("c [1/s]", f"{case.wave_speed:g}"),
+        ("|v0| [m/s]", f"{case.v0:g}"),
+        ("phi_a [rad]", f"{case.phi_a:.6f}"),
+        ("D", f"{case.damping:g}"),
+        ("N", f"{case.modes}"),
+        ("gamma = g/(R c^2)", f"{case.gamma:.4e}"),
+        ("lifted", "yes" if report.result.lifted else "no"),
+        ("t_l [ms]", number(report.t_liftoff_s, 1e3)),
+        ("v_l [m/s]", number(report.v_liftoff_m_s)),
+        ("v_l / |v0|", number(report.ratio)),
+        ("rejected candidates", str(len(report.result.rejected))),
+    ]
+    for key, value in report.extra.items():
+        if isinstance(value, float):
+            rows.append((key, f"{value:.4g}"))
+        elif isinstance(value, (int, str)):
+            rows.append((key, str(value)))
+    return rows
+
+
+def print_liftoff(report: LiftoffReport) -> None:
+    """Print a lift-off report as a table."""
+    title = f"Lift-off ({report.backend}, sigma={report.sigma}, re-contact={report.recontact})"
+    console().print(key_value_table(title, liftoff_rows(report)))
+
+
+def solve_from_options(args: argparse.Namespace) -> LiftoffReport:
+    """Solve the case described by the options with the chosen backend."""
+    case = case_from_options(args)
+    if args.backend == "fem":
+        from twoball.verify.cli.fem_options import fem_liftoff
+
+        return fem_liftoff(case, args)
+    if args.backend != "legendre":
+        raise ParameterError("--backend", "one of legendre, fem", args.backend)
+    return legendre_liftoff(case, args.sigma, args.recontact, args.t_end)
+
+
+def run(args: argparse.Namespace) -> int:
+    """Run ``twoball liftoff``."""
+    report = solve_from_options(args)
+    if args.json:
+        print_json(report.as_dict())
+    else:
+        print_liftoff(report)
+    return 0
+
+
+def register(parser: argparse.ArgumentParser) -> None:
+    """The options of ``twoball liftoff``."""
+    parser.add_argument(
+        "--backend", default="legendre", help="legendre (closed form, default) or fem"
+    )
+    add_case_options(parser)
+    add_mesh_options(parser)
+    add_time_options(parser)
+    parser.add_argument("--json", action="store_true", help="print one JSON object")
+    parser.set_defaults(run=run)

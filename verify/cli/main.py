@@ -1,0 +1,135 @@
+"""The ``twoball`` command line: SI units in and out, one-line errors, exit status 2.
+
+Each subcommand lives in its own module ``twoball.verify.cli.<name>`` with a
+``register(parser)`` function that adds its options and a ``run(args)`` that
+does the work.  Only the chosen subcommand's module is imported, so
+``twoball --help`` loads no numerical library at all.  This module turns
+:class:`~twoball.modal.errors.ParameterError` into a one-line message with exit
+status 2 and :class:`~twoball.modal.errors.NumericalError` into one with exit
+status 3.
+"""
+
+from __future__ import annotations
+
+import argparse
+import importlib
+import re
+import sys
+from collections.abc import Sequence
+from types import ModuleType
+from typing import NoReturn
+
+from twoball._version import __version__
+
+EXIT_USAGE = 2
+EXIT_NUMERICAL = 3
+
+# name -> one-line help; the module is twoball.verify.cli.<name>.
+COMMANDS: dict[str, str] = {
+    "verify": "check every backend against the closed form; write a report directory",
+    "liftoff": "lift-off time and velocity for one case",
+    "eigen": "finite-element eigenvalues against l (l + 1)",
+    "sweep": "lift-off over a range of one parameter, or a grid of two",
+    "icm": "independent collision model (§2), Table 1",
+    "reproduce": "recompute the paper's figures and numbers beside ours (PNG + reproduction.md)",
+    "export": "write u, u_t, u_tt of both backends on the sphere mesh (XDMF, PVD or VTU)",
+    "render": "picture (PNG) or animation (GIF, MP4) of the deformed ball and the upper body",
+    "plot": "PNG plots: waterfall of u(phi) (Fig. 6), pole motion, FE eigenvalue errors",
+    "converge": "refinement studies: observed orders, Richardson extrapolation, GCI",
+}
+
+
+def command_module(name: str) -> ModuleType:
+    """The module of subcommand ``name`` (imported on demand)."""
+    return importlib.import_module(f"twoball.verify.cli.{name}")
+
+
+class _Parser(argparse.ArgumentParser):
+    """ArgumentParser whose errors are one line (no usage block) and exit status 2."""
+
+    def error(self, message: str) -> NoReturn:
+        bad_type = re.fullmatch(r"argument (--[\w-]+): invalid \w+ value: (.*)", message)
+        if bad_type:
+            flag, got = bad_type.groups()
+            valid = valid_ranges(self.modules).get(
+                flag, "a number" if "float" in message else "an integer"
+            )
+            fail(f"{flag} must be {valid}, got {got}")
+        fail(message)
+
+    modules: tuple[ModuleType, ...] = ()
+
+
+def valid_ranges(modules: Sequence[ModuleType]) -> dict[str, str]:
+    """Valid range of every numeric flag of ``modules`` (with the shared case options)."""
+    from twoball.verify.cli.case_options import VALID_RANGES as CASE_RANGES
+
+    ranges = dict(CASE_RANGES)
+    for module in modules:
+        ranges.update(getattr(module, "VALID_RANGES", {}))
+    return ranges
+
+
+def fail(message: str, status: int = EXIT_USAGE) -> NoReturn:
+    """Print ``twoball: error: message`` on one line and exit with ``status``."""
+    sys.stderr.write(f"twoball: error: {message}\n")
+    raise SystemExit(status)
+
+
+def build_parser(chosen: str | None = None) -> argparse.ArgumentParser:
+    """The ``twoball`` argument parser.
+
+    Every subcommand is listed; only ``chosen`` (all of them if ``chosen`` is
+    ``"*"``) gets its options, which imports its module.
+    """
+    parser = _Parser(
+        prog="twoball",
+        description="Lift-off of a light body from a vibrating spherical membrane "
+        "(two-ball bounce): closed-form Legendre series and finite elements.",
+    )
+    parser.add_argument("--version", action="version", version=f"twoball {__version__}")
+    sub = parser.add_subparsers(dest="command", metavar="COMMAND", parser_class=_Parser)
+    for name, help_text in COMMANDS.items():
+        command = sub.add_parser(name, help=help_text, description=help_text)
+        if chosen in (name, "*"):
+            module = command_module(name)
+            command.modules = (module,)
+            module.register(command)
+    return parser
+
+
+def chosen_command(argv: Sequence[str]) -> str | None:
+    """The subcommand named in ``argv`` (its first word that is not an option), if any."""
+    for word in argv:
+        if not word.startswith("-"):
+            return word if word in COMMANDS else None
+    return None
+
+
+def main(argv: Sequence[str] | None = None) -> int:
+    """Entry point of the ``twoball`` console script."""
+    argv = list(sys.argv[1:] if argv is None else argv)
+    parser = build_parser(chosen_command(argv))
+    if not argv:
+        parser.print_help()
+        return 0
+    args = parser.parse_args(argv)
+    if args.command is None:
+        fail("choose a command: " + ", ".join(COMMANDS))
+    from twoball.modal.errors import NumericalError, ParameterError
+
+    try:
+        return int(args.run(args))
+    except ParameterError as error:
+        fail(str(error))
+    except NumericalError as error:
+        fail(f"numerical trouble: {error}", EXIT_NUMERICAL)
+    except BrokenPipeError:  # output piped into a reader that stopped (e.g. `head`)
+        import os
+
+        os.dup2(os.open(os.devnull, os.O_WRONLY), sys.stdout.fileno())
+        return 0
+
+
+if __name__ == "__main__":
+    raise SystemExit(main())

@@ -1,0 +1,1 @@
+"""twoball.verify.output -- report files, figures and nodal fields."""

@@ -1,0 +1,473 @@
+"""Nodal time series of both backends in SI, for files, pictures and plots.
+
+A :class:`BallModel` holds, for one case and one sphere mesh, the damped and
+filtered modal series of eq. (3.16) of each backend together with its mode
+shapes at the mesh nodes:
+
+``legendre``
+    The closed form: modes ``P_n(cos phi)`` evaluated at the polar angle of
+    every node (:func:`twoball.modal.legendre.legendre_series`).
+``fem``
+    The finite elements: M-orthonormal eigenvectors of eq. (3.9) on the mesh,
+    read at the nodes (:mod:`fem_membrane`).
+
+Both are :class:`twoball.modal.series.ModalSeries`, filtered by the same
+:class:`twoball.modal.filters.SpectralFilter`, and each backend's lift-off comes from the
+shared :func:`twoball.modal.report.report_liftoff`.  Inside, everything is
+dimensionless (length R, time 1/c); every function here that returns numbers
+returns SI (m, m/s, m/s^2, s) unless its docstring says otherwise.
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Sequence
+from dataclasses import dataclass, field
+from typing import Literal
+
+import numpy as np
+from twoball.fem_membrane.export import TimeSeries
+from twoball.fem_membrane.mesh import SphereMesh, sphere_mesh
+from twoball.fem_membrane.render import BallScene
+from twoball.modal.errors import ParameterError
+from twoball.modal.filters import SpectralFilter
+from twoball.modal.legendre import legendre_series, legendre_shapes
+from twoball.modal.parameters import Case
+from twoball.modal.report import LiftoffReport, report_liftoff, t_end_dimensionless
+from twoball.modal.series import ModalSeries
+
+BackendName = Literal["fem", "legendre"]
+BACKENDS: tuple[str, ...] = ("fem", "legendre")
+MESH_KINDS: tuple[str, ...] = ("sphere", "ring")
+DEFAULT_FRAMES = 25
+MAX_FRAMES = 2000
+
+
+@dataclass(frozen=True)
+class Backend:
+    """One solver's modal series with its mode shapes at the mesh nodes (dimensionless).
+
+    Attributes
+    ----------
+    name : str
+        ``fem`` or ``legendre``.
+    series : ModalSeries
+        Damped, filtered modes, eq. (3.16).
+    shapes : ndarray, shape (K, P)
+        Mode shapes at the P mesh nodes (rows follow ``series.omega``).
+    report : LiftoffReport
+        Lift-off of this backend (SI properties), criteria of §3(a).
+    details : dict
+        Backend facts for file metadata (degrees of freedom, modes, ...).
+    """
+
+    name: str
+    series: ModalSeries
+    shapes: np.ndarray
+    report: LiftoffReport
+    details: dict[str, float] = field(default_factory=dict)
+
+    def values(self, t: np.ndarray, derivative: int = 0) -> np.ndarray:
+        """u, u_t or u_tt at the nodes at dimensionless times ``t``, shape (T, P), dimensionless."""
+        return self.series.field(np.atleast_1d(t), self.shapes, derivative)
+
+
+@dataclass(frozen=True)
+class BallModel:
+    """A case solved by one or both backends on one sphere mesh.
+
+    Attributes
+    ----------
+    case : Case
+        The impact (SI).
+    mesh : SphereMesh
+        Unit-sphere mesh (dimensionless) whose nodes carry the fields.
+    backends : dict of str -> Backend
+        ``fem`` and/or ``legendre``.
+    t_end : float
+        Modelled window (dimensionless, unit 1/c).
+    sigma, recontact : str
+        Spectral filter and re-contact horizon used for both backends.
+    """
+
+    case: Case
+    mesh: SphereMesh
+    backends: dict[str, Backend]
+    t_end: float
+    sigma: str = "lanczos"
+    recontact: str = "window"
+
+    @property
+    def polar_angles(self) -> np.ndarray:
+        """Polar angle phi [rad] of every node (0 at the pole on top)."""
+        return node_polar_angles(self.mesh)
+
+    @property
+    def t_end_s(self) -> float:
+        """Modelled window [s]."""
+        return self.t_end * self.case.scalings.time
+
+    def backend(self, name: str) -> Backend:
+        """The backend called ``name`` (ParameterError naming ``--backend`` if absent)."""
+        if name not in self.backends:
+            raise ParameterError("--backend", "one of " + ", ".join(self.backends), name)
+        return self.backends[name]
+
+    def nodal(self, name: str, times_s: np.ndarray, derivative: int = 0) -> np.ndarray:
+        """u [m], u_t [m/s] or u_tt [m/s^2] of backend ``name`` at the nodes, shape (T, P)."""
+        scale = self.case.scalings
+        units = (scale.length, scale.velocity, scale.acceleration)[derivative]
+        t = np.atleast_1d(np.asarray(times_s, dtype=float)) / scale.time
+        return self.backend(name).values(t, derivative) * units
+
+    def body_height(self, name: str, times_s: np.ndarray) -> np.ndarray:
+        """Radial position [m] of the upper body relative to the undeformed pole.
+
+        Resting on the pole, ``u(t, 0)``, until the lift-off time t_l of backend
+        ``name``; then the free flight of criterion (ii) of §3(a),
+        ``s(t) = u_l + v_l (t - t_l) - g (t - t_l)^2 / 2`` (SI).
+        """
+        backend = self.backend(name)
+        scale = self.case.scalings
+        times_s = np.atleast_1d(np.asarray(times_s, dtype=float))
+        pole = backend.series.pole(times_s / scale.time).u * scale.length
+        report = backend.report
+        if not report.result.lifted:
+            return pole
+        t_l, v_l = report.t_liftoff_s, report.v_liftoff_m_s
+        u_l = report.result.displacement * scale.length
+        dt = times_s - t_l
+        flight = u_l + v_l * dt - 0.5 * self.case.g * dt * dt
+        return np.where(dt >= 0.0, flight, pole)
+
+
+# --------------------------------------------------------------------------- building
+def node_polar_angles(mesh: SphereMesh) -> np.ndarray:
+    """Polar angle [rad] of every node of a unit-sphere mesh, from its radial projection."""
+    points = mesh.points
+    cosine = points[:, 2] / np.linalg.norm(points, axis=1)
+    return np.arccos(np.clip(cosine, -1.0, 1.0))
+
+
+def build_mesh(case: Case, level: int, order: int, kind: str = "sphere") -> SphereMesh:
+    """The unit-sphere mesh: icosphere (``sphere``) or ring sphere, ring at phi_a (``ring``)."""
+    if kind not in MESH_KINDS:
+        raise ParameterError("--mesh", "one of " + ", ".join(MESH_KINDS), kind)
+    return sphere_mesh(level, order, case.phi_a if kind == "ring" else None)
+
+
+def legendre_backend(
+    case: Case, mesh: SphereMesh, sigma: str, recontact: str, t_end: float
+) -> Backend:
+    """The closed form of eq. (3.16) with its Legendre modes at the nodes of ``mesh``."""
+    series = legendre_series(case.phi_a, case.damping, SpectralFilter(sigma, case.modes))
+    shapes = legendre_shapes(node_polar_angles(mesh), case.modes)
+    report = report_liftoff(
+        case,
+        series,
+        backend="legendre",
+        sigma=sigma,
+        recontact=recontact,
+        t_end_s=t_end * case.scalings.time,
+    )
+    return Backend("legendre", series, shapes, report, {"modes": float(case.modes)})
+
+
+def fem_nodal_series(
+    case: Case,
+    level: int,
+    order: int,
+    mesh: str = "sphere",
+    sigma: str = "lanczos",
+    initial: str = "projection",
+) -> tuple[SphereMesh, ModalSeries, np.ndarray, dict[str, float]]:
+    """Finite-element modal series (dimensionless), its mesh and its mode shapes at the nodes.
+
+    The finite-element run is :func:`twoball.fem_membrane.solve.modal_model`: the isoparametric
+    P1/P2 space of eq. (3.9) on the icosphere (or ring sphere) of ``level``, the
+    initial displacement (3.10) projected or interpolated, all eigenpairs below the
+    cutoff of the spectral filter, and the damping and filter of the closed form
+    (eqs. (3.14)-(3.16)).  For Lagrange elements on their own geometry every
+    degree of freedom sits at a mesh node, so the mesh returned here has the
+    degrees of freedom as its nodes (``doflocs``) and their numbering in its cells
+    (skfem's local order: vertices, then edges 01, 12, 20 -- meshio's
+    ``triangle6``), and the eigenvectors are the mode shapes at the nodes as they are.
+
+    Returns
+    -------
+    mesh : SphereMesh
+        Unit sphere, P nodes = degrees of freedom.
+    series : ModalSeries
+    shapes : ndarray, shape (K, P)
+        Eigenvectors at the nodes.
+    details : dict
+        ``dofs``, ``eigenpairs`` and ``eigen_seconds``.
+    """
+    from twoball.fem_membrane.solve import modal_model
+
+    if mesh not in MESH_KINDS:
+        raise ParameterError("--mesh", "one of " + ", ".join(MESH_KINDS), mesh)
+    model = modal_model(
+        case.phi_a,
+        case.damping,
+        SpectralFilter(sigma, case.modes),
+        mesh=mesh,
+        level=level,
+        order=order,
+        initial=initial,
+    )
+    basis = model.space.basis
+    kind = "icosphere" if mesh == "sphere" else "ring sphere"
+    nodes = SphereMesh(
+        basis.doflocs.T,
+        basis.element_dofs.T,
+        f"{kind} level {level}, P{order}",
+        case.phi_a if mesh == "ring" else None,
+    )
+    if nodes.pole != model.space.pole:  # pragma: no cover - guards the dof = node premise
+        raise ValueError("the pole node is not the pole degree of freedom")
+    details = {
+        "dofs": float(model.space.dofs),
+        "eigenpairs": float(len(model.pairs)),
+        "eigen_seconds": float(model.seconds.get("eigen", float("nan"))),
+    }
+    return nodes, model.series, model.pairs.vectors.T, details
+
+
+def fem_backend(
+    case: Case,
+    level: int,
+    order: int,
+    mesh: str,
+    sigma: str,
+    recontact: str,
+    t_end: float,
+    initial: str = "projection",
+) -> tuple[SphereMesh, Backend]:
+    """The finite-element backend and its mesh, see :func:`fem_nodal_series`.
+
+    Lift-off by the shared :func:`twoball.modal.report.report_liftoff`.
+    """
+    nodes, series, shapes, details = fem_nodal_series(case, level, order, mesh, sigma, initial)
+    report = report_liftoff(
+        case,
+        series,
+        backend="fem",
+        sigma=sigma,
+        recontact=recontact,
+        t_end_s=t_end * case.scalings.time,
+    )
+    return nodes, Backend("fem", series, shapes, report, details)
+
+
+def ball_model(
+    case: Case,
+    level: int = 3,
+    order: int = 2,
+    *,
+    mesh: str = "sphere",
+    sigma: str = "lanczos",
+    recontact: str = "window",
+    t_end_s: float | None = None,
+    backends: Sequence[str] = BACKENDS,
+    initial: str = "projection",
+) -> BallModel:
+    """Solve ``case`` with the requested backends on a sphere mesh of ``level``/``order``.
+
+    Parameters
+    ----------
+    case : Case
+        The impact (SI).
+    level, order : int
+        Mesh refinement (``--level``) and element order 1 or 2 (``--order``).
+    mesh : {"sphere", "ring"}
+        Icosphere, or ring sphere with mesh edges along phi = phi_a (``--mesh``).
+    sigma, recontact : str
+        Spectral filter (eq. (3.16)) and re-contact horizon (§3(a)(ii)).
+    t_end_s : float, optional
+        Modelled window [s] (default 4 pi / c).
+    backends : sequence of {"fem", "legendre"}
+        Which solvers to run; the closed form is cheap, the FE eigenproblem is not.
+    initial : {"projection", "interpolation"}
+        How the FE backend represents the initial displacement (3.10) (``--initial``).
+
+    Returns
+    -------
+    BallModel
+    """
+    t_end = t_end_dimensionless(case, t_end_s)
+    for name in backends:
+        if name not in BACKENDS:
+            raise ParameterError("--backend", "one of " + ", ".join(BACKENDS), name)
+    solved: dict[str, Backend] = {}
+    if "fem" in backends:
+        unit_mesh, solved["fem"] = fem_backend(
+            case, level, order, mesh, sigma, recontact, t_end, initial
+        )
+    else:
+        unit_mesh = build_mesh(case, level, order, mesh)
+    if "legendre" in backends:
+        solved["legendre"] = legendre_backend(case, unit_mesh, sigma, recontact, t_end)
+    return BallModel(case, unit_mesh, solved, t_end, sigma, recontact)
+
+
+# --------------------------------------------------------------------------- times
+def check_frames(frames: object, flag: str = "--frames") -> int:
+    """Number of frames: an integer in [1, 2000]."""
+    if isinstance(frames, bool) or not isinstance(frames, int | np.integer):
+        raise ParameterError(flag, f"an integer in [1, {MAX_FRAMES}]", frames)
+    if not (1 <= int(frames) <= MAX_FRAMES):
+        raise ParameterError(flag, f"an integer in [1, {MAX_FRAMES}]", frames)
+    return int(frames)
+
+
+def parse_times(text: str, flag: str = "--times") -> tuple[float, ...]:
+    """Times [s] from a comma-separated list such as ``0,0.005,0.01``.
+
+    Each must be a finite number >= 0; they are returned sorted, without duplicates.
+    """
+    valid = "comma-separated times >= 0 in seconds, e.g. 0,0.005,0.01"
+    parts = [p.strip() for p in str(text).split(",")]
+    try:
+        values = [float(p) for p in parts]
+    except ValueError:
+        raise ParameterError(flag, valid, text) from None
+    if not values or any(not math.isfinite(v) or v < 0 for v in values):
+        raise ParameterError(flag, valid, text)
+    return tuple(sorted(set(values)))
+
+
+def window_s(case: Case, t_end_s: float | None = None) -> float:
+    """The modelled window [s]: ``t_end_s``, or 4 pi / c by default."""
+    return t_end_dimensionless(case, t_end_s) * case.scalings.time
+
+
+def check_times(end: float, times_s: Sequence[float], flag: str = "--times") -> np.ndarray:
+    """``times_s`` [s] as a sorted array, each inside the modelled window [0, ``end``]."""
+    times = np.asarray(sorted({float(t) for t in times_s}), dtype=float)
+    if times.size == 0 or np.any(~np.isfinite(times)) or times.min() < 0 or times.max() > end:
+        raise ParameterError(
+            flag, f"times in [0, {end:.6g}] s (the modelled window)", list(times_s)
+        )
+    return times
+
+
+def frame_times(
+    model: BallModel,
+    frames: int | None = None,
+    times_s: Sequence[float] | None = None,
+    backend: str = "fem",
+    include_liftoff: bool = True,
+) -> np.ndarray:
+    """Frame times [s]: given ``times_s``, or ``frames`` evenly spaced over [0, t_end].
+
+    With ``frames`` (default 25) the lift-off time of ``backend`` is added as an
+    extra frame when ``include_liftoff`` is set and the body lifts off.
+    """
+    if times_s is not None:
+        return check_times(model.t_end_s, times_s)
+    count = DEFAULT_FRAMES if frames is None else check_frames(frames)
+    times = np.linspace(0.0, model.t_end_s, count) if count > 1 else np.array([0.0])
+    report = model.backend(backend).report
+    if include_liftoff and report.result.lifted:
+        times = np.union1d(times, [report.t_liftoff_s])
+    return times
+
+
+def liftoff_frame(model: BallModel, backend: str = "fem") -> np.ndarray:
+    """The lift-off time [s] of ``backend`` as a one-frame array (t = 0 if no lift-off)."""
+    report = model.backend(backend).report
+    return np.array([report.t_liftoff_s if report.result.lifted else 0.0])
+
+
+# --------------------------------------------------------------------------- products
+def series_metadata(model: BallModel, backend: str) -> dict[str, float]:
+    """Scalars for file metadata (SI): the case, the mesh and each backend's lift-off."""
+    case = model.case
+    data: dict[str, float] = {
+        "radius_m": case.radius,
+        "wave_speed_1_s": case.wave_speed,
+        "v0_m_s": case.v0,
+        "phi_a_rad": case.phi_a,
+        "damping": case.damping,
+        "modes": float(case.modes),
+        "g_m_s2": case.g,
+        "t_end_s": model.t_end_s,
+        "mesh_order": float(model.mesh.order),
+        "nodes": float(len(model.mesh.points)),
+    }
+    for name, solved in model.backends.items():
+        report = solved.report
+        data[f"lifted_{name}"] = 1.0 if report.result.lifted else 0.0
+        if report.result.lifted:
+            data[f"t_liftoff_{name}_s"] = report.t_liftoff_s
+            data[f"v_liftoff_{name}_m_s"] = report.v_liftoff_m_s
+        for key, value in solved.details.items():
+            data[f"{name}_{key}"] = float(value)
+    main = model.backend(backend).report
+    data["lifted"] = 1.0 if main.result.lifted else 0.0
+    if main.result.lifted:
+        data["t_liftoff_s"] = main.t_liftoff_s
+        data["v_liftoff_m_s"] = main.v_liftoff_m_s
+    return data
+
+
+def field_series(model: BallModel, times_s: np.ndarray, backend: str = "fem") -> TimeSeries:
+    """Point data of every frame in SI, ready for :func:`twoball.fem_membrane.export.write_series`.
+
+    Node coordinates are ``R`` times the unit sphere [m].  Point data (shape (F, P)
+    unless noted), all from eq. (3.16) evaluated in closed form:
+
+    ``u``, ``u_t``, ``u_tt``
+        Radial displacement [m], velocity [m/s], acceleration [m/s^2] of ``backend``.
+    ``displacement``
+        ``u n`` with the outward unit normal n (shape (F, P, 3)) [m], for warping.
+    ``u_fem``, ``u_legendre``, ``u_diff``
+        Both backends' u [m] and ``u_fem - u_legendre`` (when both were solved).
+
+    Field data: :func:`series_metadata` (``t_liftoff_s``, ``v_liftoff_m_s``, ...).
+    """
+    times_s = np.atleast_1d(np.asarray(times_s, dtype=float))
+    scale = model.case.scalings
+    points = model.mesh.points
+    normal = points / np.linalg.norm(points, axis=1, keepdims=True)
+    data: dict[str, np.ndarray] = {}
+    u = model.nodal(backend, times_s, 0)
+    data["u"] = u
+    data["u_t"] = model.nodal(backend, times_s, 1)
+    data["u_tt"] = model.nodal(backend, times_s, 2)
+    data["displacement"] = u[:, :, None] * normal[None, :, :]
+    for name in BACKENDS:
+        if name in model.backends:
+            data[f"u_{name}"] = u if name == backend else model.nodal(name, times_s, 0)
+    if "u_fem" in data and "u_legendre" in data:
+        data["u_diff"] = data["u_fem"] - data["u_legendre"]
+    return TimeSeries(
+        points * scale.length,
+        model.mesh.cells,
+        times_s,
+        data,
+        series_metadata(model, backend),
+    )
+
+
+def ball_scene(model: BallModel, times_s: np.ndarray, backend: str = "fem") -> BallScene:
+    """What :func:`twoball.fem_membrane.render.render_scene` draws, in SI, for ``backend``."""
+    times_s = np.atleast_1d(np.asarray(times_s, dtype=float))
+    scale = model.case.scalings
+    report = model.backend(backend).report
+    case = model.case
+    label = (
+        f"{'finite elements' if backend == 'fem' else 'closed form'}: R = {case.radius:g} m, "
+        f"c = {case.wave_speed:g} 1/s, v0 = {case.v0:g} m/s, D = {case.damping:g}"
+    )
+    return BallScene(
+        model.mesh.points * scale.length,
+        model.mesh.cells,
+        times_s,
+        model.nodal(backend, times_s, 0),
+        model.body_height(backend, times_s),
+        case.radius,
+        report.t_liftoff_s if report.result.lifted else None,
+        label,
+    )

@@ -1,0 +1,471 @@
+"""Report directories written all at once: Markdown, JSON, CSV and PNG files.
+
+A report directory (``twoball verify --out DIR``, ``twoball converge --out DIR``)
+is first written into a fresh hidden directory beside ``DIR``; only when every
+file is complete does it replace ``DIR`` (two renames on the same file system).
+A failed run therefore leaves the previous report untouched and no partial files.
+"""
+
+from __future__ import annotations
+
+import csv
+import io
+import json
+import math
+import os
+import shutil
+import tempfile
+from collections.abc import Callable, Iterable, Mapping, Sequence
+from pathlib import Path
+from typing import Any
+
+import numpy as np
+from twoball.modal.errors import ParameterError
+from twoball.verify.checks.checks import VerifyResult
+from twoball.verify.studies.studies import QuantityResult, StudyResult
+
+Writer = Callable[[Path], None]
+MARKER = ".twoball-report"  # written into every report directory; only such are replaced
+
+
+# --------------------------------------------------------------------------- directories
+def check_output_dir(path: str | os.PathLike[str], flag: str = "--out") -> Path:
+    """Validate an output directory before any work is done.
+
+    ``path`` may exist -- then it must be an empty directory or an earlier twoball
+    report (it holds the marker file ``.twoball-report``), which will be replaced;
+    any other folder is refused, so ``--out ~`` cannot delete a home directory --
+    or not (then its parent must be an existing directory).  A scratch directory
+    is created and removed in the parent to prove that it is writable.
+
+    Raises
+    ------
+    ParameterError
+        Naming ``flag`` and the rule, for the one-line CLI error (exit 2).
+    """
+    out = Path(path).expanduser()
+    valid = "a directory path whose parent exists and is writable"
+    if out.exists() and not out.is_dir():
+        raise ParameterError(flag, valid + " (it is an existing file)", str(path))
+    if out.is_dir() and any(out.iterdir()) and not (out / MARKER).is_file():
+        raise ParameterError(
+            flag, "a new or empty directory, or an earlier twoball report", str(path)
+        )
+    parent = out.absolute().parent
+    if not parent.is_dir():
+        raise ParameterError(flag, valid, str(path))
+    try:
+        probe = tempfile.mkdtemp(prefix=f".{out.name}.probe-", dir=parent)
+    except OSError:
+        raise ParameterError(flag, valid, str(path)) from None
+    os.rmdir(probe)
+    return out
+
+
+def write_report_dir(out: str | os.PathLike[str], writers: Mapping[str, Writer]) -> Path:
+    """Write every file of a report, then put the directory in place of ``out``.
+
+    Parameters
+    ----------
+    out : path
+        The report directory (replaced if it exists).
+    writers : mapping of file name -> callable(path)
+        Each callable writes one file at the path it is given.
+
+    Returns
+    -------
+    Path
+        ``out``.
+    """
+    out = check_output_dir(out)
+    parent = out.absolute().parent
+    scratch = Path(tempfile.mkdtemp(prefix=f".{out.name}.new-", dir=parent))
+    try:
+        (scratch / MARKER).write_text(
+            "written by twoball; this folder is replaced by the next run\n"
+        )
+        for name, write in writers.items():
+            write(scratch / name)
+        os.chmod(scratch, 0o755)
+        _swap(scratch, out.absolute())
+    except BaseException:
+        shutil.rmtree(scratch, ignore_errors=True)
+        raise
+    return out
+
+
+def _swap(new: Path, out: Path) -> None:
+    """Move ``new`` to ``out``; an existing ``out`` is removed only after the move."""
+    if not out.exists():
+        os.rename(new, out)
+        return
+    old = Path(tempfile.mkdtemp(prefix=f".{out.name}.old-", dir=out.parent))
+    os.rmdir(old)
+    os.rename(out, old)
+    try:
+        os.rename(new, out)
+    except BaseException:
+        os.rename(old, out)
+        raise
+    shutil.rmtree(old, ignore_errors=True)
+
+
+# --------------------------------------------------------------------------- file writers
+def clean_json(value: Any) -> Any:
+    """Replace NaN/inf by None and numpy scalars/arrays by Python values (strict JSON)."""
+    if isinstance(value, dict):
+        return {str(k): clean_json(v) for k, v in value.items()}
+    if isinstance(value, (list, tuple)):
+        return [clean_json(v) for v in value]
+    if isinstance(value, np.ndarray):
+        return clean_json(value.tolist())
+    if isinstance(value, np.bool_):
+        return bool(value)
+    if isinstance(value, (np.integer,)):
+        return int(value)
+    if isinstance(value, (float, np.floating)):
+        value = float(value)
+        return value if math.isfinite(value) else None
+    return value
+
+
+def json_text(data: Any) -> str:
+    """Strict JSON (two-space indent, NaN as null) with a trailing newline."""
+    return json.dumps(clean_json(data), indent=2, allow_nan=False) + "\n"
+
+
+def text_writer(text: str) -> Writer:
+    """A writer of a fixed text (UTF-8)."""
+
+    def write(path: Path) -> None:
+        path.write_text(text, encoding="utf-8")
+
+    return write
+
+
+def csv_text(header: Sequence[str], rows: Iterable[Sequence[Any]]) -> str:
+    """CSV with a header row; floats with 17 significant digits, None as empty."""
+    buffer = io.StringIO()
+    writer = csv.writer(buffer, lineterminator="\n")
+    writer.writerow(header)
+    for row in rows:
+        writer.writerow([_csv_cell(v) for v in row])
+    return buffer.getvalue()
+
+
+def _csv_cell(value: Any) -> str:
+    if value is None:
+        return ""
+    if isinstance(value, (float, np.floating)):
+        return "" if not math.isfinite(value) else repr(float(value))
+    return str(value)
+
+
+# --------------------------------------------------------------------------- Markdown
+def md_table(header: Sequence[str], rows: Iterable[Sequence[Any]]) -> str:
+    """A GitHub-flavoured Markdown table (cells converted with ``str``)."""
+    lines = ["| " + " | ".join(header) + " |", "|" + "|".join("---" for _ in header) + "|"]
+    for row in rows:
+        cells = [str(c).replace("|", "\\|") for c in row]
+        lines.append("| " + " | ".join(cells) + " |")
+    return "\n".join(lines) + "\n"
+
+
+def fmt(value: float | None, digits: int = 4, style: str = "e") -> str:
+    """``value`` as text: ``-`` for None/NaN, else ``{:.{digits}{style}}``."""
+    if value is None or (isinstance(value, float) and not math.isfinite(value)):
+        return "-"
+    return f"{value:.{digits}{style}}"
+
+
+def quantity_markdown(q: QuantityResult) -> str:
+    """One quantity of a study: per-grid table and the summary line."""
+    a = q.analysis
+    show_value = not q.spec.error_norm
+    header = ["grid", "h", "DOFs"]
+    if show_value:
+        header.append(q.spec.label)
+    header += ["error (rel.)" if not q.spec.error_norm else "error", "ratio", "order"]
+    rows = []
+    for k, label in enumerate(q.labels):
+        row = [label, fmt(a.steps[k], 3), str(q.dofs[k])]
+        if show_value:
+            row.append(fmt(a.values[k] * q.spec.scale, 10, "g"))
+        row += [
+            fmt(q.relative_errors[k], 3),
+            fmt(a.ratios[k - 1], 3, "f") if k else "",
+            fmt(a.orders[k - 1], 2, "f") if k else "",
+        ]
+        rows.append(row)
+    title = q.spec.label if not q.spec.error_norm else q.spec.label
+    text = f"### {title}\n\n" + md_table(header, rows) + "\n"
+    ref = "0" if q.spec.error_norm else fmt(a.reference * q.spec.scale, 10, "g")
+    summary = [
+        f"reference: {a.reference_kind} ({ref})",
+        f"least-squares order {fmt(a.fit.order, 2, 'f')}",
+        f"checked order (finest three) {fmt(q.checked_order, 2, 'f')}",
+    ]
+    if q.remark:
+        summary.append(q.remark)
+    if q.spec.band is not None:
+        verdict = "PASS" if q.passed else "FAIL"
+        summary.append(f"expected {q.spec.band.describe()}: **{verdict}**")
+    if not q.spec.error_norm and math.isfinite(a.extrapolated):
+        summary.append(f"Richardson {fmt(a.extrapolated * q.spec.scale, 10, 'g')}")
+    if a.gci is not None:
+        g = a.gci
+        flag = " (flagged)" if g.flagged else ""
+        summary.append(
+            f"GCI three finest: p = {fmt(g.order, 2, 'f')}, {g.convergence}{flag}, "
+            f"GCI_fine = {fmt(g.gci_fine * 100 if math.isfinite(g.gci_fine) else None, 3)} %"
+        )
+    return text + "; ".join(summary) + ".\n"
+
+
+def study_markdown(study: StudyResult) -> str:
+    """The whole study as Markdown: title, notes, summary table, one section per quantity."""
+    verdict = "PASS" if study.passed else "FAIL"
+    parts = [
+        f"# Convergence study `{study.study}`: {verdict}\n",
+        f"{study.title.rstrip('.')}.  Step: {study.step_name}.  Wall time {study.seconds:.1f} s.\n",
+    ]
+    if study.notes:
+        parts.append("\n".join(f"* {n}" for n in study.notes) + "\n")
+    parts.append("## Summary\n")
+    parts.append(md_table(*study_summary_rows(study)))
+    parts.append("\n## Quantities\n")
+    parts.extend(quantity_markdown(q) + "\n" for q in study.quantities)
+    return "\n".join(parts)
+
+
+def study_summary_rows(study: StudyResult) -> tuple[list[str], list[list[str]]]:
+    """Header and rows of the one-line-per-quantity summary."""
+    header = ["quantity", "finest rel. error", "LS order", "checked order", "expected", "GCI type"]
+    header.append("result")
+    rows = []
+    for q in study.quantities:
+        finite = q.relative_errors[np.isfinite(q.relative_errors)]
+        rows.append(
+            [
+                q.spec.label,
+                fmt(finite[-1] if finite.size else None, 3),
+                fmt(q.analysis.fit.order, 2, "f"),
+                fmt(q.checked_order, 2, "f"),
+                "-" if q.spec.band is None else q.spec.band.describe(),
+                q.remark or ("-" if q.analysis.gci is None else q.analysis.gci.convergence),
+                "-" if q.passed is None else ("PASS" if q.passed else "FAIL"),
+            ]
+        )
+    return header, rows
+
+
+STUDY_CSV_HEADER = (
+    "quantity",
+    "label",
+    "grid",
+    "dofs",
+    "h",
+    "value",
+    "reference",
+    "reference_kind",
+    "error",
+    "relative_error",
+    "ratio",
+    "order",
+    "expected_order",
+    "passed",
+)
+
+
+def study_csv(study: StudyResult) -> str:
+    """One row per quantity and grid (dimensionless values; see ``scale`` in the JSON)."""
+    rows = []
+    for q in study.quantities:
+        a = q.analysis
+        for k, label in enumerate(q.labels):
+            rows.append(
+                [
+                    q.spec.key,
+                    q.spec.label,
+                    label,
+                    q.dofs[k],
+                    a.steps[k],
+                    a.values[k],
+                    a.reference,
+                    a.reference_kind,
+                    a.errors[k],
+                    q.relative_errors[k],
+                    a.ratios[k - 1] if k else None,
+                    a.orders[k - 1] if k else None,
+                    None if q.spec.band is None else q.spec.band.expected,
+                    "" if q.passed is None else ("PASS" if q.passed else "FAIL"),
+                ]
+            )
+    return csv_text(STUDY_CSV_HEADER, rows)
+
+
+# --------------------------------------------------------------------------- verify report
+def verify_markdown(result: VerifyResult) -> str:
+    """``report.md`` of ``twoball verify``: verdict, case, runs, checks, eigenvalues, plots."""
+    s = result.settings
+    verdict = "PASS" if result.passed else "FAIL"
+    failed = sum(not c.passed for c in result.checks)
+    parts = [
+        f"# twoball verify: {verdict}\n",
+        f"Configuration `{result.config.name}`; {len(result.checks)} checks, {failed} failed; "
+        f"wall time {result.seconds:.1f} s.\n",
+        "## Case\n",
+        md_table(
+            [
+                "R [m]",
+                "c [1/s]",
+                "v0 [m/s]",
+                "phi_a [rad]",
+                "D",
+                "N",
+                "sigma",
+                "re-contact",
+                "t_end [ms]",
+            ],
+            [
+                [
+                    f"{s['radius_m']:g}",
+                    f"{s['wave_speed_1_s']:g}",
+                    f"{s['v0_m_s']:g}",
+                    f"{s['phi_a']:.6f}",
+                    f"{s['damping']:g}",
+                    str(s["modes"]),
+                    s["sigma"],
+                    s["recontact"],
+                    f"{s['t_end_s'] * 1e3:.4f}",
+                ]
+            ],
+        ),  # fmt: skip
+        "## Runs\n",
+        "Relative differences: `dt_l/t_l`, `dv_l/v_l` against the Legendre series with the "
+        f"case's N = {s['modes']} (the reference of every finite-element run, which uses the "
+        "same filter); `(N->inf)` against the converged series.\n",
+        md_table(
+            [
+                "backend",
+                "mesh",
+                "DOFs",
+                "t_l [ms]",
+                "v_l [m/s]",
+                "v_l/\\|v0\\|",
+                "dt_l/t_l",
+                "dv_l/v_l",
+                "dt_l/t_l (N->inf)",
+                "dv_l/v_l (N->inf)",
+                "seconds",
+            ],
+            [
+                [
+                    r.backend,
+                    r.mesh,
+                    r.dofs,
+                    fmt(_scaled(r.t_l_s, 1e3), 9, "f"),
+                    fmt(r.v_l_m_s, 9, "f"),
+                    fmt(r.ratio, 6, "f"),
+                    fmt(r.t_diff, 2),
+                    fmt(r.v_diff, 2),
+                    fmt(r.t_diff_converged, 2),
+                    fmt(r.v_diff_converged, 2),
+                    f"{r.seconds:.2f}",
+                ]
+                for r in result.rows
+            ],
+        ),  # fmt: skip
+        "## Checks\n",
+        md_table(
+            ["check", "what is compared", "value", "tolerance", "result"],
+            [
+                [
+                    c.name,
+                    c.description,
+                    fmt(c.value, 3),
+                    f"[{c.band[0]:g}, {c.band[1]:g}]" if c.band else fmt(c.tolerance, 1),
+                    f"**{c.verdict}**",
+                ]
+                for c in result.checks
+            ],
+        ),  # fmt: skip
+        "## Eigenvalue errors\n",
+        "Largest relative error `|lambda_h - l(l+1)| / l(l+1)` over the 2l + 1 discrete "
+        "eigenvalues of degree l (one on the axisymmetric line).\n",
+        md_table(
+            ["discretisation"]
+            + [f"l = {d}" for d in (result.eigen[0].degrees if result.eigen else [])],
+            [[e.label] + [fmt(x, 2) for x in e.errors] for e in result.eigen],
+        ),  # fmt: skip
+        "## Plots\n",
+        "![Pole displacement, velocity and acceleration of every backend](pole.png)\n",
+        "![Eigenvalue error against the degree l](eigenvalues.png)\n",
+        "![Energy decay of direct time stepping against the modal closed form](energy.png)\n",
+        "## Notes\n",
+        "\n".join(f"* {n}" for n in result.notes) + "\n",
+    ]
+    return "\n".join(parts)
+
+
+def _scaled(value: float | None, factor: float) -> float | None:
+    return None if value is None else value * factor
+
+
+def verify_files(result: VerifyResult) -> dict[str, str | Writer]:
+    """Every file of the ``verify`` report: text contents or writers (PNGs).
+
+    ``results.csv`` holds the runs at full precision (SI); ``summary.csv``,
+    ``checks.csv`` and ``eigenvalues.csv`` are rounded for reading (and for the
+    documentation's tables).
+    """
+    from twoball.verify.checks.checks import RUN_COLUMNS, format_rows
+    from twoball.verify.output.plots_verify import plot_eigen_errors, plot_energy, plot_pole_motion
+
+    case = result.case
+    t_end = result.settings["t_end_s"] / case.scalings.time
+    checks_rows = [
+        [c.name, fmt(c.value, 3), fmt(c.tolerance, 1),
+         fmt(None if c.band is None else c.band[0], 2, "f"),
+         fmt(None if c.band is None else c.band[1], 2, "f"), c.verdict, c.description]
+        for c in result.checks
+    ]  # fmt: skip
+    summary = [
+        [r.backend, r.mesh, r.dofs, fmt(_scaled(r.t_l_s, 1e3), 6, "f"), fmt(r.v_l_m_s, 6, "f"),
+         fmt(r.ratio, 5, "f"), fmt(r.t_diff, 2), fmt(r.v_diff, 2), fmt(r.t_diff_converged, 2),
+         fmt(r.v_diff_converged, 2), f"{r.seconds:.2f}"]
+        for r in result.rows
+    ]  # fmt: skip
+    degrees = result.eigen[0].degrees.tolist() if result.eigen else []
+    eigen_rows = [[e.label] + [fmt(x, 2) for x in e.errors] for e in result.eigen]
+    return {
+        "report.md": verify_markdown(result),
+        "results.json": json_text(result.as_dict()),
+        "results.csv": csv_text(RUN_COLUMNS, format_rows(result.rows)),
+        "summary.csv": csv_text(SUMMARY_HEADER, summary),
+        "checks.csv": csv_text(
+            ["check", "value", "tolerance", "band low", "band high", "result", "description"],
+            checks_rows,
+        ),
+        "eigenvalues.csv": csv_text(["discretisation"] + [f"l = {d}" for d in degrees], eigen_rows),
+        "pole.png": lambda path: plot_pole_motion(path, case, result.traces, t_end),
+        "eigenvalues.png": lambda path: plot_eigen_errors(path, result.eigen),
+        "energy.png": lambda path: plot_energy(
+            path, case, result.energy_curves, result.energy_bound
+        ),
+    }
+
+
+SUMMARY_HEADER = (
+    "backend",
+    "mesh",
+    "DOFs",
+    "t_l [ms]",
+    "v_l [m/s]",
+    "v_l/v0",
+    "dt_l/t_l",
+    "dv_l/v_l",
+    "dt_l/t_l (N->inf)",
+    "dv_l/v_l (N->inf)",
+    "seconds",
+)

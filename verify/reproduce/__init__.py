@@ -1,0 +1,1 @@
+"""twoball.verify.reproduce -- the paper reproduction."""

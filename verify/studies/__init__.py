@@ -1,0 +1,1 @@
+"""twoball.verify.studies -- convergence studies and observed orders."""

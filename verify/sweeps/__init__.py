@@ -1,0 +1,1 @@
+"""twoball.verify.sweeps -- parameter sweeps on a pool or Dask."""

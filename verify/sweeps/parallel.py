@@ -1,0 +1,268 @@
+"""Run many independent, cheap tasks: in process, on a local process pool, or on Dask.
+
+The closed-form lift-off takes a few milliseconds, so the cost of a parallel run is
+dominated by starting workers and shipping tasks, not by the solves.  The choices
+below were measured on two cores (see ``docs/reproduction.rst``):
+
+* ``workers == 1``: a plain loop in the calling process, in order.  Nothing is
+  pickled and no process is started; this is the reference every other mode must
+  reproduce exactly.
+* ``workers > 1``, no scheduler: a :class:`concurrent.futures.ProcessPoolExecutor`.
+  On Linux it uses the ``fork`` start method, so the workers inherit the imported
+  modules and are ready in tens of milliseconds (a ``spawn``-ed worker, and a Dask
+  ``LocalCluster``, first has to import numpy and scipy again: 1-3 s).  The pool is
+  started when the :class:`Runner` is entered, before any progress bar (and its
+  thread) exists.  Elsewhere ``spawn`` is used.
+* ``scheduler`` given: an existing ``dask.distributed`` scheduler (``tcp://host:port``).
+  Dask is an optional dependency (``pip install twoball[dask]``); it is imported
+  only on this path.  The workers must be able to import ``modal`` and ``verify``.
+
+Tasks travel in chunks of consecutive items so that one message carries enough
+work; results are put back in input order whatever order the chunks finish in.
+A task that raises becomes an :class:`Outcome` with ``error`` set (exception type
+and message) instead of aborting the run; so does every task of a chunk whose
+worker died.
+"""
+
+from __future__ import annotations
+
+import math
+import os
+import sys
+from collections.abc import Callable, Sequence
+from concurrent.futures import ProcessPoolExecutor, as_completed
+from dataclasses import dataclass
+from typing import Any
+
+from twoball.modal.errors import ParameterError
+
+#: Maps with fewer items than this run in the calling process even when workers
+#: are available: shipping them costs more than solving them (a solve is ~3-5 ms).
+MIN_PARALLEL_ITEMS = 16
+#: Largest number of items sent to a worker in one message.
+MAX_CHUNK = 32
+#: Chunks aimed at per worker (load balance and progress granularity).
+CHUNKS_PER_WORKER = 8
+
+VALID_RANGES = {"--workers": "an integer >= 1"}
+#: How long to try reaching a Dask scheduler before giving up (``--scheduler``).
+CONNECT_TIMEOUT = "10s"
+
+
+@dataclass(frozen=True)
+class Outcome:
+    """Result of one task: ``value`` on success, else ``error`` (type and message)."""
+
+    value: Any = None
+    error: str | None = None
+
+    @property
+    def ok(self) -> bool:
+        """True if the task returned normally."""
+        return self.error is None
+
+
+def guarded(func: Callable[[Any], Any], item: Any) -> Outcome:
+    """``func(item)`` as an :class:`Outcome`; an exception becomes ``error``."""
+    try:
+        return Outcome(func(item))
+    except Exception as exc:  # noqa: BLE001 - reported with the item, never lost
+        return Outcome(None, f"{type(exc).__name__}: {exc}")
+
+
+def run_chunk(func: Callable[[Any], Any], items: Sequence[Any]) -> list[Outcome]:
+    """Run ``func`` over ``items`` in order (the unit of work sent to a worker)."""
+    return [guarded(func, item) for item in items]
+
+
+def default_workers() -> int:
+    """The number of cores this process may use."""
+    try:
+        return max(1, len(os.sched_getaffinity(0)))
+    except AttributeError:  # not on Linux
+        return max(1, os.cpu_count() or 1)
+
+
+def chunk_size(count: int, workers: int) -> int:
+    """Items per message: about CHUNKS_PER_WORKER chunks per worker, at most MAX_CHUNK."""
+    if count <= 0:
+        return 1
+    return max(1, min(MAX_CHUNK, math.ceil(count / (max(1, workers) * CHUNKS_PER_WORKER))))
+
+
+def check_workers(workers: int | None) -> int:
+    """``workers`` validated (default: all cores); ParameterError names ``--workers``."""
+    if workers is None:
+        return default_workers()
+    if isinstance(workers, bool) or int(workers) != workers or workers < 1:
+        raise ParameterError("--workers", VALID_RANGES["--workers"], workers)
+    return int(workers)
+
+
+def _start_method() -> str:
+    return "fork" if sys.platform.startswith("linux") else "spawn"
+
+
+def _noop() -> int:
+    return 0
+
+
+class Runner:
+    """Where tasks run; use as a context manager so pools and clients are closed.
+
+    Parameters
+    ----------
+    workers : int, optional
+        Local worker processes (default: all cores); 1 means strictly serial.
+        Ignored when ``scheduler`` is given (the cluster decides).
+    scheduler : str, optional
+        Address of a running ``dask.distributed`` scheduler.
+    """
+
+    def __init__(self, workers: int | None = None, scheduler: str | None = None) -> None:
+        self.workers = check_workers(workers)
+        self.scheduler = scheduler
+        self._pool: ProcessPoolExecutor | None = None
+        self._client: Any = None
+
+    # --- life cycle -------------------------------------------------------
+    @property
+    def mode(self) -> str:
+        """``serial``, ``processes`` or ``dask``."""
+        if self.scheduler:
+            return "dask"
+        return "serial" if self.workers == 1 else "processes"
+
+    def describe(self) -> str:
+        """One line for people: where the tasks run."""
+        if self.mode == "dask":
+            return f"dask scheduler {self.scheduler}"
+        if self.mode == "processes":
+            return f"{self.workers} local processes ({_start_method()})"
+        return "serial (in process)"
+
+    def __enter__(self) -> Runner:
+        if self.mode == "dask":
+            self._client = _connect(self.scheduler)
+        elif self.mode == "processes":
+            import multiprocessing
+
+            context = multiprocessing.get_context(_start_method())
+            self._pool = ProcessPoolExecutor(self.workers, mp_context=context)
+            # start every worker now, before a progress bar starts its thread
+            for future in [self._pool.submit(_noop) for _ in range(self.workers)]:
+                future.result()
+        return self
+
+    def __exit__(self, *exc: object) -> None:
+        self.close()
+
+    def close(self) -> None:
+        """Shut the pool down / disconnect from the scheduler (the scheduler keeps running)."""
+        if self._pool is not None:
+            self._pool.shutdown(wait=True, cancel_futures=True)
+            self._pool = None
+        if self._client is not None:
+            self._client.close()
+            self._client = None
+
+    @property
+    def capacity(self) -> int:
+        """Tasks that can run at once (dask: the cluster's threads)."""
+        if self._client is not None:
+            return max(1, sum(self._client.nthreads().values()))
+        return self.workers
+
+    # --- mapping ------------------------------------------------------------
+    def map(
+        self,
+        func: Callable[[Any], Any],
+        items: Sequence[Any],
+        progress: Callable[[int], None] | None = None,
+        min_parallel: int = MIN_PARALLEL_ITEMS,
+        chunk: int | None = None,
+    ) -> list[Outcome]:
+        """``func`` over ``items``; outcomes in input order; ``progress(done)`` as they finish.
+
+        ``func`` and the items must be picklable (a module-level function or a
+        dataclass instance with ``__call__``) unless the runner is serial.  Maps
+        shorter than ``min_parallel`` run in this process; ``chunk`` overrides the
+        items per message (use 1 for tasks that take much longer than a solve).
+        """
+        items = list(items)
+        parallel = self._pool is not None or self._client is not None
+        if not parallel or len(items) < max(1, min_parallel):
+            return self._serial(func, items, progress)
+        size = chunk or chunk_size(len(items), self.capacity)
+        starts = list(range(0, len(items), size))
+        chunks = [items[s : s + size] for s in starts]
+        results: list[Outcome | None] = [None] * len(items)
+        done = 0
+        for start, outcomes in self._chunks(func, starts, chunks):
+            results[start : start + len(outcomes)] = outcomes
+            done += len(outcomes)
+            if progress is not None:
+                progress(done)
+        return [r if r is not None else Outcome(None, "lost: no result returned") for r in results]
+
+    def _serial(self, func, items, progress) -> list[Outcome]:
+        out = []
+        for k, item in enumerate(items):
+            out.append(guarded(func, item))
+            if progress is not None:
+                progress(k + 1)
+        return out
+
+    def _chunks(self, func, starts, chunks):
+        """Yield ``(start, outcomes)`` per chunk as they finish; failures become errors."""
+        if self._client is not None:
+            from distributed import as_completed as dask_completed
+
+            futures = self._client.map(
+                run_chunk, [func] * len(chunks), chunks, pure=False, retries=0
+            )
+            where = {f.key: (s, len(c)) for f, s, c in zip(futures, starts, chunks, strict=True)}
+            for future in dask_completed(futures, loop=self._client.loop):
+                start, length = where[future.key]
+                yield start, _result(future, length)
+            return
+        futures = {
+            self._pool.submit(run_chunk, func, chunk): (start, len(chunk))
+            for start, chunk in zip(starts, chunks, strict=True)
+        }
+        for future in as_completed(futures):
+            start, length = futures[future]
+            yield start, _result(future, length)
+
+
+def _result(future: Any, length: int) -> list[Outcome]:
+    try:
+        return list(future.result())
+    except Exception as exc:  # noqa: BLE001 - a dead worker loses its chunk, not the run
+        return [Outcome(None, f"worker failed: {type(exc).__name__}: {exc}")] * length
+
+
+def _connect(address: str | None) -> Any:
+    try:
+        from distributed import Client
+    except ImportError:
+        raise ParameterError(
+            "--scheduler", "used with dask installed (pip install 'twoball[dask]')", address
+        ) from None
+    try:
+        return Client(address, timeout=CONNECT_TIMEOUT, set_as_default=False)
+    except (OSError, TimeoutError, ValueError) as exc:
+        raise ParameterError(
+            "--scheduler",
+            f"the address of a running dask.distributed scheduler ({type(exc).__name__})",
+            address,
+        ) from None
+
+
+def dask_available() -> bool:
+    """True if ``dask.distributed`` can be imported."""
+    try:
+        import distributed  # noqa: F401
+    except ImportError:
+        return False
+    return True

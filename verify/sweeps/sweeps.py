@@ -1,0 +1,297 @@
+"""Sweeps of the closed-form lift-off over one or two parameters (Fig. 11(b), Fig. 12).
+
+A sweep is a list of cases (the grid, row-major: the first parameter varies
+slowest), solved by :class:`SweepSolver` through a :class:`twoball.verify.sweeps.parallel.Runner`
+so the same code runs serially, on local processes or on a Dask cluster, with
+identical numbers.  A point whose solve raises is kept as a :class:`SweepPoint`
+with ``error`` set, next to its parameters.
+"""
+
+from __future__ import annotations
+
+import math
+import os
+import tempfile
+from collections.abc import Callable, Iterable, Sequence
+from dataclasses import dataclass
+from pathlib import Path
+from typing import Any
+
+import numpy as np
+from twoball.modal.errors import ParameterError
+from twoball.modal.parameters import Case
+from twoball.modal.report import LiftoffReport, legendre_liftoff
+from twoball.verify.sweeps.parallel import Runner
+
+# CLI name -> Case field; v0, c and R re-derive phi_a from eq. (3.7) (Case.derive).
+SWEEP_PARAMETERS: dict[str, str] = {
+    "damping": "damping",
+    "v0": "v0",
+    "wave-speed": "wave_speed",
+    "radius": "radius",
+    "modes": "modes",
+}
+#: Axis labels (SI) of the swept parameters.
+PARAMETER_LABELS: dict[str, str] = {
+    "damping": "damping ratio D",
+    "v0": "impact speed |v0| [m/s]",
+    "wave-speed": "wave speed c [1/s]",
+    "radius": "radius R [m]",
+    "modes": "modes N",
+}
+
+
+def parse_range(text: str, name: str = "--values") -> np.ndarray:
+    """``START:STOP:COUNT`` -> ``COUNT`` evenly spaced values from START to STOP inclusive."""
+    parts = text.split(":")
+    valid = "START:STOP:COUNT (numbers, COUNT an integer >= 1)"
+    if len(parts) != 3:
+        raise ParameterError(name, valid, text)
+    try:
+        start, stop = float(parts[0]), float(parts[1])
+        count = int(parts[2])
+    except ValueError:
+        raise ParameterError(name, valid, text) from None
+    if count < 1 or not (np.isfinite(start) and np.isfinite(stop)):
+        raise ParameterError(name, valid, text)
+    if count == 1 and start != stop:
+        raise ParameterError(name, valid + " (COUNT 1 needs START = STOP)", text)
+    return np.linspace(start, stop, count)
+
+
+def _field_value(field: str, value: float) -> float | int:
+    if field == "modes":
+        if float(value) != round(float(value)):
+            raise ParameterError("--values", "whole numbers for --param modes", value)
+        return int(round(float(value)))
+    return float(value)
+
+
+def _check_parameter(parameter: str) -> str:
+    if parameter not in SWEEP_PARAMETERS:
+        raise ParameterError("--param", "one of " + ", ".join(SWEEP_PARAMETERS), parameter)
+    return SWEEP_PARAMETERS[parameter]
+
+
+def sweep_cases(base: Case, parameter: str, values: Iterable[float]) -> list[Case]:
+    """The cases of a sweep: ``base`` with one parameter varied (phi_a per eq. (3.7))."""
+    field = _check_parameter(parameter)
+    return [base.derive(**{field: _field_value(field, value)}) for value in values]
+
+
+@dataclass(frozen=True)
+class SweepGrid:
+    """The swept parameters (CLI names) and their values; one or two axes."""
+
+    parameters: tuple[str, ...]
+    values: tuple[np.ndarray, ...]
+
+    @property
+    def shape(self) -> tuple[int, ...]:
+        """Number of values per axis."""
+        return tuple(len(v) for v in self.values)
+
+    def indices(self) -> list[tuple[int, ...]]:
+        """Grid indices in row-major order (the first parameter varies slowest)."""
+        return [tuple(int(i) for i in k) for k in np.ndindex(*self.shape)]
+
+    def cases(self, base: Case) -> list[Case]:
+        """One case per grid point, in :meth:`indices` order; v0, c, R re-derive phi_a."""
+        fields = [_check_parameter(p) for p in self.parameters]
+        out = []
+        for index in self.indices():
+            changes = {
+                f: _field_value(f, self.values[axis][i])
+                for axis, (f, i) in enumerate(zip(fields, index, strict=True))
+            }
+            out.append(base.derive(**changes))
+        return out
+
+
+def make_grid(parameters: Sequence[str], values: Sequence[str]) -> SweepGrid:
+    """Check ``--param``/``--values`` as given on the command line and build the grid.
+
+    One ``--param`` gives a 1-D sweep, two give a grid; ``--values`` must be given
+    once per ``--param``, in the same order, and the two parameters must differ.
+    """
+    parameters = list(parameters or [])
+    values = list(values or [])
+    if not 1 <= len(parameters) <= 2:
+        raise ParameterError("--param", "given once (1-D sweep) or twice (grid)", len(parameters))
+    if len(values) != len(parameters):
+        raise ParameterError(
+            "--values",
+            f"given once per --param ({len(parameters)} times here), in the same order",
+            values,
+        )
+    if len(set(parameters)) != len(parameters):
+        raise ParameterError("--param", "two different parameters for a grid", parameters)
+    for p in parameters:
+        _check_parameter(p)
+    arrays = tuple(parse_range(v) for v in values)
+    return SweepGrid(tuple(parameters), arrays)
+
+
+@dataclass(frozen=True)
+class SweepSolver:
+    """Picklable solve of one case: the closed-form lift-off with fixed model options."""
+
+    sigma: str = "lanczos"
+    recontact: str = "window"
+    t_end_s: float | None = None
+
+    def __call__(self, case: Case) -> LiftoffReport:
+        return legendre_liftoff(case, self.sigma, self.recontact, self.t_end_s)
+
+
+@dataclass(frozen=True)
+class SweepPoint:
+    """One grid point: its index, case, and either a report or an error message."""
+
+    index: tuple[int, ...]
+    case: Case
+    report: LiftoffReport | None
+    error: str | None = None
+
+    @property
+    def ratio(self) -> float:
+        """``v_l / |v0|``; NaN without lift-off or on error."""
+        r = None if self.report is None else self.report.ratio
+        return math.nan if r is None else r
+
+    @property
+    def t_liftoff_s(self) -> float:
+        """Lift-off time [s]; NaN without lift-off or on error."""
+        t = None if self.report is None else self.report.t_liftoff_s
+        return math.nan if t is None else t
+
+    @property
+    def v_liftoff_m_s(self) -> float:
+        """Lift-off velocity [m/s]; NaN without lift-off or on error."""
+        v = None if self.report is None else self.report.v_liftoff_m_s
+        return math.nan if v is None else v
+
+    def as_dict(self) -> dict[str, Any]:
+        """JSON-ready: the report's keys (or the case's, on error), ``index`` and ``error``."""
+        if self.report is not None:
+            data = self.report.as_dict()
+        else:
+            c = self.case
+            data = {
+                "lifted": None,
+                "t_liftoff_s": None,
+                "v_liftoff_m_s": None,
+                "ratio": None,
+                "phi_a": c.phi_a,
+                "radius_m": c.radius,
+                "wave_speed_1_s": c.wave_speed,
+                "v0_m_s": c.v0,
+                "damping": c.damping,
+                "modes": c.modes,
+            }
+        data["index"] = list(self.index)
+        data["error"] = self.error
+        return data
+
+
+def run_sweep(
+    cases: list[Case],
+    solve: Callable[[Case], LiftoffReport],
+    progress: Callable[[int], None] | None = None,
+    runner: Runner | None = None,
+    indices: list[tuple[int, ...]] | None = None,
+) -> list[SweepPoint]:
+    """Solve every case; points come back in input order whatever ran them.
+
+    Parameters
+    ----------
+    cases : list of Case
+        The points.
+    solve : callable
+        Case -> LiftoffReport; picklable (e.g. :class:`SweepSolver`) for parallel runs.
+    progress : callable, optional
+        Called with the number of points done.
+    runner : Runner, optional
+        Where to run (default: serially in this process).
+    indices : list of tuple, optional
+        Grid index of each case (default ``(k,)``).
+    """
+    if indices is None:
+        indices = [(k,) for k in range(len(cases))]
+    if runner is None:
+        with Runner(workers=1) as serial:
+            outcomes = serial.map(solve, cases, progress)
+    else:
+        outcomes = runner.map(solve, cases, progress)
+    return [
+        SweepPoint(index, case, o.value if o.ok else None, o.error)
+        for index, case, o in zip(indices, cases, outcomes, strict=True)
+    ]
+
+
+# --- plots -------------------------------------------------------------------
+
+
+def check_plot_path(path: str, flag: str = "--plot") -> Path:
+    """A PNG path whose directory exists and is writable, else ParameterError naming ``flag``."""
+    target = Path(path).expanduser()
+    valid = "a .png file in an existing, writable directory"
+    if target.suffix.lower() != ".png":
+        raise ParameterError(flag, valid, path)
+    parent = target.parent if str(target.parent) else Path(".")
+    if not parent.is_dir() or not os.access(parent, os.W_OK | os.X_OK):
+        raise ParameterError(flag, valid, path)
+    if target.is_dir():
+        raise ParameterError(flag, valid, path)
+    return target
+
+
+def save_figure(figure: Any, target: Path, flag: str = "--plot") -> None:
+    """Write ``figure`` as PNG via a temporary file in the same directory, then rename."""
+    try:
+        handle, temp = tempfile.mkstemp(prefix=f".{target.name}.", suffix=".png", dir=target.parent)
+    except OSError:
+        raise ParameterError(flag, "a .png file in a writable directory", str(target)) from None
+    os.close(handle)
+    try:
+        figure.savefig(temp, dpi=120)
+        os.replace(temp, target)
+    except BaseException:
+        Path(temp).unlink(missing_ok=True)
+        raise
+
+
+def plot_sweep(grid: SweepGrid, points: list[SweepPoint], target: Path) -> None:
+    """``v_l/|v0|`` and t_l against the parameter (1-D) or as heat maps (2-D), one PNG."""
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    ratio = np.array([p.ratio for p in points]).reshape(grid.shape)
+    t_ms = np.array([p.t_liftoff_s for p in points]).reshape(grid.shape) * 1e3
+    if len(grid.shape) == 1:
+        fig, axes = plt.subplots(2, 1, figsize=(6.4, 6.0), sharex=True, layout="constrained")
+        x = grid.values[0]
+        axes[0].plot(x, ratio, ".-")
+        axes[0].set_ylabel("v_l / |v0|")
+        axes[1].plot(x, t_ms, ".-")
+        axes[1].set_ylabel("t_l [ms]")
+        axes[1].set_xlabel(PARAMETER_LABELS[grid.parameters[0]])
+        for ax in axes:
+            ax.grid(True, alpha=0.3)
+    else:
+        fig, axes = plt.subplots(1, 2, figsize=(11.0, 4.4), layout="constrained")
+        y, x = grid.values  # first parameter on the vertical axis (rows)
+        for ax, data, label in ((axes[0], ratio, "v_l / |v0|"), (axes[1], t_ms, "t_l [ms]")):
+            cmap = matplotlib.colormaps["viridis"].with_extremes(bad="0.85")
+            mesh = ax.pcolormesh(x, y, np.ma.masked_invalid(data), cmap=cmap, shading="nearest")
+            fig.colorbar(mesh, ax=ax, label=label)
+            ax.set_xlabel(PARAMETER_LABELS[grid.parameters[1]])
+            ax.set_ylabel(PARAMETER_LABELS[grid.parameters[0]])
+            ax.set_title(f"{label} (grey: no lift-off or error)")
+    errors = sum(p.error is not None for p in points)
+    title = "Closed-form lift-off sweep" + (f" ({errors} points failed)" if errors else "")
+    fig.suptitle(title)
+    save_figure(fig, target)
+    plt.close(fig)
