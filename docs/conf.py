@@ -3,20 +3,19 @@
 from __future__ import annotations
 
 import sys
-import tomllib
 from pathlib import Path
 
 ROOT = Path(__file__).resolve().parent.parent
-# The packages (modal, fem_membrane, verify) sit flat at the repository root.
+# Import twoball from this checkout: twoball/ sits at the repository root and maps
+# the parts (modal/, fem_membrane/, verify/) beside it under its own name.
 sys.path.insert(0, str(ROOT))
 
-with (ROOT / "pyproject.toml").open("rb") as fh:
-    _project = tomllib.load(fh)["project"]
+from twoball._version import __version__  # noqa: E402
 
 project = "twoball"
 author = "twoball developers"
 copyright = "twoball developers"
-release = _project["version"]
+release = __version__
 version = ".".join(release.split(".")[:2])
 
 extensions = [
