@@ -471,29 +471,18 @@ def write_mesh(path: str | Path, mesh: SphereMesh) -> None:
 
 
 def read_mesh(path: str | Path, ring: float | None = None) -> SphereMesh:
-    """Read a sphere mesh with meshio (``triangle`` or ``triangle6`` cells).
+    """Read a sphere mesh with meshio (``triangle`` or ``triangle6`` cells) onto the unit sphere.
 
-    The points are read by meshio, never through ``skfem.MeshTri.load``, which
-    keeps only x and y.  Unused points are dropped and the nodes renumbered so
-    that vertices come first.  The mesh must have a vertex at the north pole.
+    A thin wrapper of :func:`twoball.fem_membrane.mesh_input.load_sphere_mesh`:
+    the surface is checked (closed, one piece, spherical, consistently oriented),
+    scaled from any radius and centre to the unit sphere with the pole on +z,
+    and its nodes numbered vertices first.  ``ring`` marks a latitude made of
+    mesh edges (see :func:`ring_sphere`).  Points are read by meshio, never
+    through ``skfem.MeshTri.load``, which keeps only x and y.
     """
-    data = meshio.read(str(path))
-    blocks = [b for b in data.cells if b.type in ("triangle", "triangle6")]
-    if len(blocks) != 1:
-        raise ValueError(f"{path}: expected exactly one triangle or triangle6 cell block")
-    cells = np.asarray(blocks[0].data, dtype=np.int64)
-    points = np.asarray(data.points, dtype=float)
-    if points.shape[1] != 3:
-        raise ValueError(f"{path}: points must be three-dimensional")
-    # renumber: vertices first (in order of first use), then edge nodes
-    vertices = np.unique(cells[:, :3])
-    extra = np.setdiff1d(np.unique(cells), vertices)
-    order = np.concatenate([vertices, extra])
-    renumber = np.empty(points.shape[0], dtype=np.int64)
-    renumber[order] = np.arange(order.size)
-    mesh = SphereMesh(points[order], renumber[cells], Path(path).name, ring)
-    _ = mesh.pole  # validates the pole vertex
-    return mesh
+    from .mesh_input import load_sphere_mesh
+
+    return replace(load_sphere_mesh(path).mesh, ring=ring)
 
 
 def min_angle(mesh: SphereMesh) -> float:

@@ -43,7 +43,10 @@ in metres); the returned mesh is dimensionless (unit radius).
 
 from __future__ import annotations
 
+import contextlib
+import io
 import math
+import warnings
 from collections.abc import Sequence
 from dataclasses import dataclass, field, replace
 from pathlib import Path
@@ -209,6 +212,30 @@ def _from_skfem(mesh: Any, name: str) -> _Raw:
     return _Raw(points, np.asarray(cells, dtype=np.int64), name, orientation_known=False)
 
 
+def _meshio_read(path: Path) -> Any:
+    """meshio.read, quietly: its prints and warnings become the one-line refusal.
+
+    On a file it cannot parse meshio prints to stdout/stderr and calls
+    ``sys.exit(1)``; both are caught here so the command line prints one line.
+    """
+    import meshio
+
+    chatter = io.StringIO()
+    try:
+        with (
+            contextlib.redirect_stdout(chatter),
+            contextlib.redirect_stderr(chatter),
+            warnings.catch_warnings(),
+        ):
+            warnings.simplefilter("ignore")
+            return meshio.read(str(path))
+    except (Exception, SystemExit) as error:  # meshio raises many kinds, or exits
+        said = "" if isinstance(error, SystemExit) else str(error)
+        reason = " ".join((said or chatter.getvalue()).split()) or type(error).__name__
+        reason = reason.removeprefix("Error: ")
+        raise refuse(path.name, "a mesh file meshio can read", reason) from None
+
+
 def _read(source: MeshSource) -> _Raw:
     import meshio
 
@@ -216,12 +243,7 @@ def _read(source: MeshSource) -> _Raw:
         path = Path(source)
         if not path.is_file():
             raise refuse(str(path), "an existing mesh file", "no such file")
-        try:
-            data = meshio.read(str(path))
-        except Exception as error:  # meshio raises many kinds for unreadable files
-            reason = str(error).splitlines()[0] if str(error) else type(error).__name__
-            raise refuse(path.name, "a mesh file meshio can read", reason) from None
-        return _from_meshio(data, path.name)
+        return _from_meshio(_meshio_read(path), path.name)
     if isinstance(source, meshio.Mesh):
         return _from_meshio(source, "(meshio.Mesh)")
     if isinstance(source, SphereMesh):
