@@ -8,34 +8,14 @@ sphere, and returns it as a :class:`twoball.fem_membrane.mesh.SphereMesh` on the
 unit sphere, rotated so that the requested pole direction is +z -- the
 dimensionless geometry of eq. (3.9), whose pole motion decides lift-off.
 
-What is checked (each failure a :class:`twoball.modal.errors.ParameterError`
-naming ``--mesh-file`` with what is wrong and by how much):
-
-* cells: ``triangle`` (3-node) or ``triangle6`` (6-node) cells, one kind only;
-  other surface cells (quadrilaterals, polygons) are refused, lines, vertices
-  and volume cells are ignored (and reported in :attr:`MeshInput.description`);
-* coincident points (closer than 1e-10 of the bounding-box diagonal) are
-  merged first -- STL stores every triangle's corners separately;
-* no degenerate triangles (a repeated corner or zero area);
-* one connected surface (count of components), closed (count of boundary
-  edges, i.e. holes), manifold (count of edges shared by more than two
-  triangles), of sphere topology (Euler characteristic V - E + F = 2), with
-  six-node triangles that agree on their shared edge nodes;
-* spherical: the nodes' mean distance from the fitted centre deviates from the
-  radius by at most :data:`MAX_RADIAL_DEVIATION` (relative, mean over nodes);
-* consistently oriented: every triangle's normal points away from the centre,
-  or every one towards it (then all are flipped, and this is reported); a mix
-  is refused with the number of triangles facing the minority way.
-
-Centre and radius.  The centre is the algebraic least-squares sphere fit
-through the nodes (``|x|^2 = 2 c.x + r^2 - |c|^2``, linear in ``c`` and
-``r^2 - |c|^2``), which is exact for nodes on a sphere however they are spread;
-the mean of the vertices is not (a mesh refined near one latitude, like
-:func:`twoball.fem_membrane.mesh.ring_sphere`, or a gmsh mesh with a local size
-field, has its vertex mean off the centre).  The radius is the mean node
-distance from that centre.  Only nodes are measured: the vertices of a coarse
-P1 sphere lie on the sphere exactly while its chords sag by ``h^2 / 8``, which
-is discretisation, not a geometric error.
+The checks (one closed, manifold, connected surface of sphere topology,
+spherical to :data:`MAX_RADIAL_DEVIATION`, consistently oriented) and the
+centre and radius fit are in :mod:`twoball.fem_membrane.surface_checks`; each
+failure is a :class:`twoball.modal.errors.ParameterError` naming ``--mesh-file``
+with what is wrong and by how much.  Cells: ``triangle`` (3-node) or
+``triangle6`` (6-node), one kind only; other surface cells (quadrilaterals,
+polygons) are refused; lines, vertices and volume cells are ignored (and
+reported in :attr:`MeshInput.description`).
 
 Units: ``radius`` and ``center`` are in the file's units (metres if the file is
 in metres); the returned mesh is dimensionless (unit radius).
@@ -45,7 +25,6 @@ from __future__ import annotations
 
 import contextlib
 import io
-import math
 import warnings
 from collections.abc import Sequence
 from dataclasses import dataclass, field, replace
@@ -57,19 +36,17 @@ from twoball.modal.errors import ParameterError
 
 from .checks import check_order
 from .mesh import SphereMesh, elevate, flatten
+from .surface_checks import (
+    MAX_RADIAL_DEVIATION,
+    check_sphere,
+    check_topology,
+    clean_nodes,
+    orient_outward,
+    refuse,
+)
 
-MAX_RADIAL_DEVIATION = 1e-4
-"""Largest accepted mean |r_i - R| / R over the nodes (relative to the fitted radius R).
+__all__ = ["MAX_RADIAL_DEVIATION", "MeshInput", "check_pole", "load_sphere_mesh", "rotation_to_z"]
 
-Well above what faithful files carry (float32 STL: 6e-8; gmsh places nodes on
-the CAD sphere to about 1e-12) and well below where the geometry would rival
-the discretisation: a radial perturbation of relative size d shifts eigenvalues
-by about 2 d (lambda ~ 1 / R^2), i.e. lift-off time and velocity by about d.
-"""
-MERGE_TOLERANCE = 1e-10  # points closer than this fraction of the bounding-box diagonal merge
-FLAT_AREA = 1e-14  # a triangle with area below this fraction of R^2 is degenerate
-
-MESH_FLAG = "--mesh-file"
 POLE_FLAG = "--pole"
 TRIANGLE_TYPES = ("triangle", "triangle6")
 REFUSED_SURFACE_TYPES = ("quad", "quad8", "quad9", "polygon", "triangle7", "triangle10")
@@ -150,13 +127,6 @@ class MeshInput:
             "pole_at_node": self.pole_at_node,
             "ignored_cells": dict(self.ignored_cells),
         }
-
-
-def refuse(name: str, valid: str, found: str) -> ParameterError:
-    """ParameterError for ``--mesh-file``: ``--mesh-file <name> must be <valid>; found <found>``."""
-    error = ParameterError(MESH_FLAG, valid, found)
-    error.args = (f"{MESH_FLAG} {name} must be {valid}; found {found}",)
-    return error
 
 
 # --- reading ----------------------------------------------------------------------------
@@ -258,134 +228,6 @@ def _read(source: MeshSource) -> _Raw:
     )
 
 
-# --- checks -------------------------------------------------------------------------------
-
-
-def _vertices_first(points: np.ndarray, cells: np.ndarray) -> tuple[np.ndarray, np.ndarray, int]:
-    """Drop unused points; number vertices (corners) first, then edge nodes."""
-    vertices = np.unique(cells[:, :3])
-    extra = np.setdiff1d(np.unique(cells), vertices)
-    order = np.concatenate([vertices, extra])
-    renumber = np.full(points.shape[0], -1, dtype=np.int64)
-    renumber[order] = np.arange(order.size)
-    return points[order], renumber[cells], points.shape[0] - order.size
-
-
-def _merge_coincident(points: np.ndarray, cells: np.ndarray) -> tuple[np.ndarray, np.ndarray, int]:
-    """Merge points closer than MERGE_TOLERANCE of the bounding-box diagonal."""
-    from scipy.sparse import coo_matrix
-    from scipy.sparse.csgraph import connected_components
-    from scipy.spatial import cKDTree
-
-    diagonal = float(np.linalg.norm(np.ptp(points, axis=0)))
-    pairs = cKDTree(points).query_pairs(MERGE_TOLERANCE * diagonal, output_type="ndarray")
-    if pairs.size == 0:
-        return points, cells, 0
-    n = points.shape[0]
-    graph = coo_matrix((np.ones(len(pairs)), (pairs[:, 0], pairs[:, 1])), shape=(n, n))
-    count, labels = connected_components(graph, directed=False)
-    first = np.full(count, n, dtype=np.int64)
-    np.minimum.at(first, labels, np.arange(n))
-    return points, first[labels][cells], n - count
-
-
-def _edge_table(triangles: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-    """Unique undirected edges, their use counts, and per triangle the edge ids of 01, 12, 20."""
-    local = np.sort(triangles[:, [0, 1, 1, 2, 2, 0]].reshape(-1, 3, 2), axis=2).reshape(-1, 2)
-    edges, inverse, counts = np.unique(local, axis=0, return_inverse=True, return_counts=True)
-    return edges, counts, inverse.reshape(-1, 3)
-
-
-def _check_topology(raw: _Raw, triangles: np.ndarray, vertices: int) -> np.ndarray:
-    """One closed manifold surface of sphere topology; returns the per-triangle edge ids."""
-    from scipy.sparse import coo_matrix
-    from scipy.sparse.csgraph import connected_components
-
-    name = raw.name
-    repeated = (
-        (triangles[:, 0] == triangles[:, 1])
-        | (triangles[:, 1] == triangles[:, 2])
-        | (triangles[:, 2] == triangles[:, 0])
-    )
-    if repeated.any():
-        found = f"{int(repeated.sum())} of {len(triangles)} triangles with a repeated corner"
-        raise refuse(name, "free of degenerate triangles", found)
-    rows = triangles[:, [0, 1, 2]].ravel()
-    cols = triangles[:, [1, 2, 0]].ravel()
-    graph = coo_matrix((np.ones(rows.size), (rows, cols)), shape=(vertices, vertices))
-    components, labels = connected_components(graph, directed=False)
-    if components > 1:
-        sizes = np.sort(np.bincount(labels[triangles[:, 0]], minlength=components))[::-1]
-        shown = ", ".join(str(s) for s in sizes[:5]) + (", ..." if components > 5 else "")
-        found = f"{components} separate surfaces ({shown} triangles)"
-        raise refuse(name, "one connected surface", found)
-    edges, counts, local = _edge_table(triangles)
-    open_edges = int(np.count_nonzero(counts == 1))
-    if open_edges:
-        raise refuse(name, "a closed surface", f"{open_edges} boundary edges (holes)")
-    shared = int(np.count_nonzero(counts > 2))
-    if shared:
-        found = f"{shared} non-manifold edges (shared by more than two triangles)"
-        raise refuse(name, "a manifold surface", found)
-    euler = vertices - len(edges) + len(triangles)
-    if euler != 2:
-        found = f"V - E + F = {euler} (genus {(2 - euler) / 2:g})"
-        raise refuse(name, "of sphere topology (V - E + F = 2)", found)
-    return local
-
-
-def _check_edge_nodes(raw: _Raw, cells: np.ndarray, local: np.ndarray) -> None:
-    """Six-node triangles sharing an edge must share its edge node."""
-    if cells.shape[1] != 6:
-        return
-    edge_ids = local.ravel()
-    nodes = cells[:, 3:].ravel()
-    first = np.full(edge_ids.max() + 1, -1, dtype=np.int64)
-    first[edge_ids] = nodes
-    disagree = int(np.count_nonzero(first[edge_ids] != nodes))
-    if disagree:
-        found = f"{disagree} edge nodes not shared by the two triangles of their edge"
-        raise refuse(raw.name, "a conforming triangle6 mesh", found)
-    reused = len(first) - len(np.unique(first))
-    corners = int(np.count_nonzero(first <= cells[:, :3].max()))
-    if reused or corners:
-        found = f"{reused + corners} edge nodes that are also corners or nodes of other edges"
-        raise refuse(raw.name, "a conforming triangle6 mesh", found)
-
-
-def sphere_fit(points: np.ndarray) -> tuple[np.ndarray, float]:
-    """Algebraic least-squares sphere through ``points`` (N, 3): centre and radius.
-
-    Solves ``|x|^2 = 2 c.x + d`` for c and ``d = r^2 - |c|^2`` in the least-squares
-    sense (about the points' mean, for conditioning); exact when the points lie
-    on a sphere, whatever their distribution.  Units of ``points``.
-    """
-    mean = points.mean(axis=0)
-    x = points - mean
-    matrix = np.column_stack([2.0 * x, np.ones(len(x))])
-    solution, _, rank, _ = np.linalg.lstsq(matrix, np.einsum("ij,ij->i", x, x), rcond=None)
-    if rank < 4:
-        return mean, float("nan")
-    center = solution[:3]
-    squared = solution[3] + center @ center
-    return center + mean, math.sqrt(squared) if squared > 0 else float("nan")
-
-
-def _orientation(points: np.ndarray, triangles: np.ndarray, center: np.ndarray) -> np.ndarray:
-    """Per triangle: +1 if its normal points away from ``center``, -1 towards it, 0 if flat."""
-    p = points[triangles] - center
-    normal = np.cross(p[:, 1] - p[:, 0], p[:, 2] - p[:, 0])
-    return np.sign(np.einsum("ij,ij->i", normal, p.sum(axis=1)))
-
-
-def _reverse(cells: np.ndarray, which: np.ndarray) -> np.ndarray:
-    """Reverse the orientation of the triangles ``which`` (swap corners 1 and 2)."""
-    out = cells.copy()
-    swap = [0, 2, 1] if cells.shape[1] == 3 else [0, 2, 1, 5, 4, 3]  # edges 01<->20, 12 stays
-    out[which] = cells[which][:, swap]
-    return out
-
-
 # --- pole and frame -----------------------------------------------------------------------
 
 
@@ -468,60 +310,12 @@ def load_sphere_mesh(
         order = check_order(order)
     raw = _read(source)
     name = raw.name
-    points, cells = raw.points, raw.cells
-    if points.ndim != 2 or points.shape[1] != 3:
-        found = f"points of shape {points.shape}"
-        raise refuse(name, "three-dimensional (points with x, y, z)", found)
-    if cells.size == 0:
-        raise refuse(name, "a surface of triangle or triangle6 cells", "no triangles")
-    if cells.min() < 0 or cells.max() >= len(points):
-        raise refuse(name, "a mesh whose cells index its points", "out-of-range node indices")
-    used = np.unique(cells)
-    if not np.all(np.isfinite(points[used])):
-        bad = int(np.count_nonzero(~np.isfinite(points[used]).all(axis=1)))
-        raise refuse(name, "made of finite coordinates", f"{bad} points with NaN or inf")
-    points, cells, unused = _vertices_first(points, cells)
-    points, cells, merged = _merge_coincident(points, cells)
-    points, cells, _ = _vertices_first(points, cells)
+    points, cells, unused, merged = clean_nodes(name, raw.points, raw.cells)
+    check_topology(name, cells)
+    fit = check_sphere(name, points)
+    cells, flipped = orient_outward(name, points, cells, fit, raw.orientation_known)
     source_order = 1 if cells.shape[1] == 3 else 2
-    triangles = cells[:, :3]
-    vertices = int(triangles.max()) + 1
-    local = _check_topology(raw, triangles, vertices)
-    _check_edge_nodes(raw, cells, local)
-
-    center, radius = sphere_fit(points)
-    if not (math.isfinite(radius) and radius > 0.0):
-        raise refuse(name, "a sphere", "nodes that fit no sphere (coplanar or degenerate)")
-    distance = np.linalg.norm(points - center, axis=1)
-    radius = float(distance.mean())
-    deviation = np.abs(distance - radius) / radius
-    mean_deviation, max_deviation = float(deviation.mean()), float(deviation.max())
-    if mean_deviation > MAX_RADIAL_DEVIATION:
-        found = (
-            f"mean radial deviation {mean_deviation:.2e} of the fitted radius {radius:.6g} "
-            f"(largest {max_deviation:.2e})"
-        )
-        raise refuse(name, f"a sphere to {MAX_RADIAL_DEVIATION:g} (mean radial deviation)", found)
-
-    corners = points[triangles] - center
-    area = 0.5 * np.linalg.norm(
-        np.cross(corners[:, 1] - corners[:, 0], corners[:, 2] - corners[:, 0]), axis=1
-    )
-    flat = int(np.count_nonzero(area <= FLAT_AREA * radius**2))
-    if flat:
-        raise refuse(name, "free of degenerate triangles", f"{flat} triangles of zero area")
-    sign = _orientation(points, triangles, center)
-    inward = sign < 0
-    flipped = False
-    if not raw.orientation_known:
-        cells = _reverse(cells, inward)  # scikit-fem sorted the corners: orient each one
-    elif inward.all():
-        cells, flipped = _reverse(cells, inward), True
-    elif inward.any():
-        minority = min(int(inward.sum()), int((~inward).sum()))
-        found = f"{minority} of {len(cells)} triangles oriented opposite to the others"
-        raise refuse(name, "consistently oriented", found)
-    _check_consistent(raw, cells[:, :3])
+    center, radius = fit.center, fit.radius
 
     rotation = rotation_to_z(direction)
     unit = (points - center) / radius
@@ -539,10 +333,10 @@ def load_sphere_mesh(
         pole=direction,
         rotation=rotation,
         source_order=source_order,
-        mean_radial_deviation=mean_deviation,
-        max_radial_deviation=max_deviation,
+        mean_radial_deviation=fit.mean_deviation,
+        max_radial_deviation=fit.max_deviation,
         triangles=len(cells),
-        vertices=vertices,
+        vertices=int(cells[:, :3].max()) + 1,
         merged_points=merged,
         unused_points=unused,
         flipped=flipped,
@@ -550,16 +344,6 @@ def load_sphere_mesh(
         ignored_cells={k: v for k, v in raw.ignored.items()},
     )
     return replace(result, description=describe(result, name))
-
-
-def _check_consistent(raw: _Raw, triangles: np.ndarray) -> None:
-    """Each directed edge once: neighbours traverse their shared edge in opposite senses."""
-    directed = triangles[:, [0, 1, 1, 2, 2, 0]].reshape(-1, 2)
-    _, counts = np.unique(directed, axis=0, return_counts=True)
-    twice = int(np.count_nonzero(counts > 1))
-    if twice:
-        found = f"{twice} edges traversed in the same sense by both triangles (folded surface)"
-        raise refuse(raw.name, "consistently oriented", found)
 
 
 def describe(result: MeshInput, name: str) -> str:

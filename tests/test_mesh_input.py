@@ -28,14 +28,10 @@ from twoball.fem_membrane.mesh import (
     ring_sphere,
     shape_functions,
 )
-from twoball.fem_membrane.mesh_input import (
-    MAX_RADIAL_DEVIATION,
-    load_sphere_mesh,
-    rotation_to_z,
-    sphere_fit,
-)
+from twoball.fem_membrane.mesh_input import MAX_RADIAL_DEVIATION, load_sphere_mesh, rotation_to_z
 from twoball.fem_membrane.modal import modal_series
 from twoball.fem_membrane.space import pole_value, sphere_space
+from twoball.fem_membrane.surface_checks import sphere_fit
 from twoball.modal.errors import ParameterError
 from twoball.modal.filters import SpectralFilter
 from twoball.modal.legendre import legendre_series
