@@ -63,9 +63,11 @@ def refuse(name: str, valid: str, found: str) -> ParameterError:
 
 def _vertices_first(points: np.ndarray, cells: np.ndarray) -> tuple[np.ndarray, np.ndarray, int]:
     """Drop unused points; number vertices (corners) first, then edge nodes."""
-    vertices = np.unique(cells[:, :3])
-    extra = np.setdiff1d(np.unique(cells), vertices)
-    order = np.concatenate([vertices, extra])
+    corner = np.zeros(points.shape[0], dtype=bool)
+    corner[cells[:, :3]] = True
+    used = np.zeros(points.shape[0], dtype=bool)
+    used[cells] = True
+    order = np.concatenate([np.flatnonzero(corner), np.flatnonzero(used & ~corner)])
     renumber = np.full(points.shape[0], -1, dtype=np.int64)
     renumber[order] = np.arange(order.size)
     return points[order], renumber[cells], points.shape[0] - order.size
@@ -106,8 +108,7 @@ def clean_nodes(
         raise refuse(name, "a surface of triangle or triangle6 cells", "no triangles")
     if cells.min() < 0 or cells.max() >= len(points):
         raise refuse(name, "a mesh whose cells index its points", "out-of-range node indices")
-    used = np.unique(cells)
-    finite = np.isfinite(points[used]).all(axis=1)
+    finite = np.isfinite(points[np.unique(cells)]).all(axis=1)
     if not finite.all():
         found = f"{int(np.count_nonzero(~finite))} points with NaN or inf"
         raise refuse(name, "made of finite coordinates", found)
@@ -122,8 +123,11 @@ def clean_nodes(
 
 def _edge_table(triangles: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     """Unique undirected edges, their use counts, and per triangle the edge ids of 01, 12, 20."""
-    local = np.sort(triangles[:, [0, 1, 1, 2, 2, 0]].reshape(-1, 3, 2), axis=2).reshape(-1, 2)
-    edges, inverse, counts = np.unique(local, axis=0, return_inverse=True, return_counts=True)
+    size = int(triangles.max()) + 1
+    a, b = triangles.ravel(), triangles[:, [1, 2, 0]].ravel()
+    keys = np.minimum(a, b) * size + np.maximum(a, b)  # one integer per undirected edge
+    unique, inverse, counts = np.unique(keys, return_inverse=True, return_counts=True)
+    edges = np.column_stack([unique // size, unique % size])
     return edges, counts, inverse.reshape(-1, 3)
 
 
@@ -265,8 +269,9 @@ def orient_outward(
         found = f"{minority} of {len(cells)} triangles oriented opposite to the others"
         raise refuse(name, "consistently oriented", found)
     # neighbours must traverse their shared edge in opposite senses: each directed edge once
-    directed = cells[:, [0, 1, 1, 2, 2, 0]].reshape(-1, 2)
-    twice = len(directed) - len(np.unique(directed, axis=0))
+    triangles = cells[:, :3]
+    directed = triangles.ravel() * (int(triangles.max()) + 1) + triangles[:, [1, 2, 0]].ravel()
+    twice = len(directed) - len(np.unique(directed))
     if twice:
         found = f"{twice} edges traversed in the same sense by both triangles (folded surface)"
         raise refuse(name, "consistently oriented", found)
