@@ -9,8 +9,8 @@ import numpy as np
 import pytest
 from twoball.modal.errors import NumericalError
 from twoball.modal.parameters import Case, preset
-from twoball.verify.sweeps import parallel
 from twoball.verify.cli.main import main
+from twoball.verify.sweeps import parallel
 from twoball.verify.sweeps.parallel import MIN_PARALLEL_ITEMS, Outcome, Runner, chunk_size
 from twoball.verify.sweeps.sweeps import SweepGrid, SweepSolver, make_grid, run_sweep, sweep_cases
 
@@ -200,7 +200,7 @@ def test_unreachable_scheduler_is_one_line_exit_2(capsys, monkeypatch):
 
 @pytest.mark.slow
 def test_fig12_sweeps_finish_in_30_s_on_two_workers():
-    from twoball.verify.reproduce.cem import FIG12_AXES, FIG12_DAMPING, fig12_base
+    from twoball.verify.reproduce.cem.fig12 import FIG12_AXES, FIG12_DAMPING, fig12_base
 
     base = fig12_base()
     cs = [
