@@ -6,14 +6,10 @@ import numpy as np
 import pytest
 from twoball.modal.parameters import preset
 from twoball.verify.cli.main import main
-from twoball.verify.studies.studies import (
-    converged_legendre,
-    parse_modes,
-    run_dt_study,
-    run_h_study,
-    run_modes_study,
-    run_order_study,
-)
+from twoball.verify.studies.modes import parse_modes, run_modes_study
+from twoball.verify.studies.reference import converged_legendre
+from twoball.verify.studies.refinement import run_h_study, run_order_study
+from twoball.verify.studies.time_step import run_dt_study
 
 FILES = {"report.md", "results.json", "results.csv", "convergence.png"}
 

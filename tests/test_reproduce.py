@@ -9,13 +9,9 @@ import pytest
 from twoball.modal.parameters import preset
 from twoball.verify.cli.main import main
 from twoball.verify.reproduce import driver as rep
-from twoball.verify.reproduce.cem import (
-    OptimumTask,
-    ThresholdTask,
-    _fit_damping,
-    fig12_base,
-    main_branch,
-)
+from twoball.verify.reproduce.cem.fig11 import _fit_damping
+from twoball.verify.reproduce.cem.fig12 import OptimumTask, fig12_base, main_branch
+from twoball.verify.reproduce.cem.tasks import ThresholdTask
 from twoball.verify.reproduce.common import (
     Comparison,
     Context,

@@ -22,18 +22,11 @@ from twoball.verify.output.report_files import (
     text_writer,
     write_report_dir,
 )
-from twoball.verify.studies.studies import (
-    DEFAULT_LEVELS,
-    DT_LEVEL_LIMITS,
-    LEVEL_LIMITS,
-    STUDIES,
-    StudyResult,
-    parse_modes,
-    run_dt_study,
-    run_h_study,
-    run_modes_study,
-    run_order_study,
-)
+from twoball.verify.studies.fem_runs import DEFAULT_LEVELS, LEVEL_LIMITS
+from twoball.verify.studies.modes import parse_modes, run_modes_study
+from twoball.verify.studies.refinement import run_h_study, run_order_study
+from twoball.verify.studies.result import STUDIES, StudyResult
+from twoball.verify.studies.time_step import DT_LEVEL_LIMITS, run_dt_study
 
 MESHES = ("sphere", "axisym")
 

@@ -15,7 +15,9 @@ from rich.progress import (
     TimeElapsedColumn,
 )
 from rich.table import Table
-from twoball.verify.checks.checks import VerifyResult, config, run_verify
+from twoball.verify.checks.config import config
+from twoball.verify.checks.results import VerifyResult
+from twoball.verify.checks.run import run_verify
 from twoball.verify.cli.case_options import add_case_options, case_from_options
 from twoball.verify.cli.console import console
 from twoball.verify.output.report_files import (

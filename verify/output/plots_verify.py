@@ -14,7 +14,7 @@ from pathlib import Path
 import numpy as np
 from twoball.modal.liftoff import PoleMotion
 from twoball.modal.parameters import Case
-from twoball.verify.studies.studies import StudyResult
+from twoball.verify.studies.result import StudyResult
 
 DPI = 120
 

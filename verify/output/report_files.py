@@ -21,8 +21,9 @@ from typing import Any
 
 import numpy as np
 from twoball.modal.errors import ParameterError
-from twoball.verify.checks.checks import VerifyResult
-from twoball.verify.studies.studies import QuantityResult, StudyResult
+from twoball.verify.checks.results import VerifyResult
+from twoball.verify.studies.quantities import QuantityResult
+from twoball.verify.studies.result import StudyResult
 
 Writer = Callable[[Path], None]
 MARKER = ".twoball-report"  # written into every report directory; only such are replaced
@@ -419,7 +420,7 @@ def verify_files(result: VerifyResult) -> dict[str, str | Writer]:
     ``checks.csv`` and ``eigenvalues.csv`` are rounded for reading (and for the
     documentation's tables).
     """
-    from twoball.verify.checks.checks import RUN_COLUMNS, format_rows
+    from twoball.verify.checks.results import RUN_COLUMNS, format_rows
     from twoball.verify.output.plots_verify import plot_eigen_errors, plot_energy, plot_pole_motion
 
     case = result.case
