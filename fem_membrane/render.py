@@ -27,7 +27,7 @@ from pathlib import Path
 import numpy as np
 from twoball.modal.errors import ParameterError
 
-from .export import staged_files
+from twoball.staging import staged_file
 
 IMAGE_KINDS: tuple[str, ...] = (".png", ".gif", ".mp4")
 DEFAULT_SIZE = (640, 480)
@@ -410,14 +410,15 @@ def render_scene(
         raise ParameterError("--fps", "a finite number > 0", fps)
     if kind == ".mp4":
         size = round_size(size)
-    with staged_files(out) as scratch:
-        target = scratch / out.name
+    with staged_file(out) as target:
         images = render_frames(scene, warp, size)
-        if kind == ".png":
-            _write_png(target, images)
-        elif kind == ".gif":
-            _write_gif(target, images, fps)
-        else:
-            _write_mp4(target, images, fps)
-        images.close()
+        try:
+            if kind == ".png":
+                _write_png(target, images)
+            elif kind == ".gif":
+                _write_gif(target, images, fps)
+            else:
+                _write_mp4(target, images, fps)
+        finally:
+            images.close()
     return out

@@ -27,7 +27,8 @@ from twoball.modal.initial import deformation_work
 from twoball.modal.liftoff import Horizon, find_liftoff
 from twoball.modal.parameters import Case
 from twoball.modal.report import t_end_dimensionless
-from twoball.verify.output.plots_verify import EigenErrors, Trace
+from twoball.verify.output.figures.eigen import EigenErrors
+from twoball.verify.output.figures.pole import Trace
 from twoball.verify.studies.orders import OrderBand, observed_order
 from twoball.verify.studies.studies import (
     EIGEN_DEGREES,
