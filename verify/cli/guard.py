@@ -66,11 +66,14 @@ def guarded(command: Callable[..., int], *args: Any) -> int:
 
 
 def describe(error: OSError) -> str:
-    """``cannot write PATH: REASON`` (or the error's text if it names no path)."""
+    """``cannot write PATH: REASON``; an error naming no path came from standard output.
+
+    Every file twoball writes goes through :mod:`twoball.staging`, which names
+    the user's path in its errors; what is left unnamed is the console.
+    """
     reason = error.strerror or str(error)
-    if error.filename is not None:
-        return f"cannot write {os.fsdecode(error.filename)}: {reason}"
-    return f"cannot write: {reason}"
+    where = "standard output" if error.filename is None else os.fsdecode(error.filename)
+    return f"cannot write {where}: {reason}"
 
 
 def _flush_stdout() -> None:
