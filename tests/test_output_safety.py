@@ -376,3 +376,17 @@ def test_full_stdout_is_one_line(argv):
     assert process.returncode == 2 and lines == [
         "twoball: error: cannot write standard output: No space left on device"
     ]
+
+
+def test_an_unfinished_mp4_is_an_error_not_a_file(tmp_path):
+    from twoball.fem_membrane.render import _check_mp4, _mp4_boxes
+
+    box = (16).to_bytes(4, "big") + b"ftyp" + b"isom" + b"\0" * 4
+    whole = tmp_path / "whole.mp4"
+    whole.write_bytes(box + (8).to_bytes(4, "big") + b"moov")
+    assert _mp4_boxes(whole) == [b"ftyp", b"moov"]
+    _check_mp4(whole)
+    cut = tmp_path / "cut.mp4"  # ffmpeg could not write its trailer (index)
+    cut.write_bytes(box + (4096).to_bytes(4, "big") + b"mdat" + b"\0" * 100)
+    with pytest.raises(OSError, match="cut.mp4"):
+        _check_mp4(cut)

@@ -183,16 +183,16 @@ class Runner:
                 initializer=_worker_init,
                 initargs=(os.getpid(),),
             )
+            from twoball.staging import pause
+
             try:
                 # start every worker now, before a progress bar starts its thread
                 for future in [self._pool.submit(_noop) for _ in range(self.workers)]:
                     future.result()
-            except BaseException:
+                pause("pool")
+            except BaseException:  # __exit__ is not called when __enter__ raises
                 self.close(abort=True)
                 raise
-            from twoball.staging import pause
-
-            pause("pool")
         return self
 
     def __exit__(self, kind: type[BaseException] | None, *exc: object) -> None:
