@@ -390,3 +390,22 @@ def test_an_unfinished_mp4_is_an_error_not_a_file(tmp_path):
     cut.write_bytes(box + (4096).to_bytes(4, "big") + b"mdat" + b"\0" * 100)
     with pytest.raises(OSError, match="cut.mp4"):
         _check_mp4(cut)
+
+
+def test_same_inputs_give_byte_identical_data_files(capsys, tmp_path):
+    runs = {}
+    for name in ("a", "b"):
+        assert main(["reproduce", "--only", "table2", "--out", str(tmp_path / f"r{name}")]) == 0
+        assert main(["verify", "--fast", "--json", "--out", str(tmp_path / f"v{name}")]) == 0
+        runs[name] = {
+            **{f"r/{p.name}": p.read_bytes() for p in (tmp_path / f"r{name}").iterdir()},
+            **{f"v/{p.name}": p.read_bytes() for p in (tmp_path / f"v{name}").iterdir()},
+        }
+    capsys.readouterr()
+    data = [n for n in runs["a"] if n.endswith((".json", ".csv", ".png", MARKER))]
+    data = [n for n in data if not n.endswith("provenance.json")]
+    assert {"r/reproduction.json", "v/results.json", "v/results.csv", "v/pole.png"} <= set(data)
+    for name in data:
+        assert runs["a"][name] == runs["b"][name], name
+    provenance = json.loads(runs["a"]["v/provenance.json"])
+    assert provenance["seconds"]["seconds"] > 0 and "generated" in provenance
