@@ -176,7 +176,12 @@ def test_cli_writes_figures_and_report(tmp_path, capsys):
     assert [p.name for p in tmp_path.iterdir()] == ["rep"]  # no staging left behind
     # a second run replaces the earlier reproduction
     assert main(["reproduce", "--out", str(out), "--only", "table2"]) == 0
-    assert {p.name for p in out.iterdir()} == {"reproduction.md", "reproduction.json"}
+    assert {p.name for p in out.iterdir()} == {
+        "reproduction.md",
+        "reproduction.json",
+        "provenance.json",
+        ".twoball-output",
+    }
 
 
 def test_failure_leaves_no_partial_output(tmp_path, monkeypatch):

@@ -76,7 +76,7 @@ def test_verify_cli_writes_every_file_and_exits_0(capsys, tmp_path):
     code = main(["verify", "--fast", "--out", str(out), "--json"])
     data = json.loads(capsys.readouterr().out)
     assert code == 0 and data["passed"] is True and data["configuration"] == "fast"
-    assert {p.name for p in out.iterdir()} == FILES | {".twoball-report"}
+    assert {p.name for p in out.iterdir()} == FILES | {".twoball-output", "provenance.json"}
     report = (out / "report.md").read_text()
     assert report.startswith("# twoball verify: PASS") and "![" in report
     header = (out / "results.csv").read_text().splitlines()[0]
@@ -134,7 +134,7 @@ def test_old_report_survives_a_failed_write(tmp_path):
     assert (out / "a.txt").read_text() == "old" and not (out / "b.txt").exists()
     assert sorted(p.name for p in tmp_path.iterdir()) == ["report"]
     write_report_dir(out, {"c.txt": lambda p: p.write_text("newer")})
-    assert sorted(p.name for p in out.iterdir()) == [".twoball-report", "c.txt"]
+    assert sorted(p.name for p in out.iterdir()) == [".twoball-output", "c.txt"]
 
 
 @pytest.mark.slow
@@ -143,7 +143,7 @@ def test_default_verify_passes(capsys, tmp_path):
     code = main(["verify", "--out", str(out), "--json"])
     data = json.loads(capsys.readouterr().out)
     assert code == 0 and data["passed"], [c["name"] for c in data["checks"] if not c["passed"]]
-    assert {p.name for p in out.iterdir()} == FILES | {".twoball-report"}
+    assert {p.name for p in out.iterdir()} == FILES | {".twoball-output", "provenance.json"}
     meshes = {r["mesh"] for r in data["runs"]}
     assert {"axisym P2 400 el.", "sphere P1 L4", "sphere P2 L3"} <= meshes
 

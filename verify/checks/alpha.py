@@ -15,7 +15,7 @@ from typing import Any
 import numpy as np
 from twoball.modal.liftoff import Horizon, find_liftoff
 from twoball.modal.parameters import Case
-from twoball.verify.output.plots_verify import Trace
+from twoball.verify.output.figures.pole import Trace
 from twoball.verify.studies.fem_runs import FEMRun
 from twoball.verify.studies.reference import ConvergedReference, LegendreRun
 from twoball.verify.studies.trajectory import TrajectoryNorm, hermite_resample

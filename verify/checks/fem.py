@@ -11,7 +11,7 @@ from twoball.modal.filters import FilterKind
 from twoball.modal.initial import deformation_work
 from twoball.modal.liftoff import Horizon
 from twoball.modal.parameters import Case
-from twoball.verify.output.plots_verify import EigenErrors
+from twoball.verify.output.figures.eigen import EigenErrors
 from twoball.verify.studies.fem_runs import (
     EIGEN_DEGREES,
     FEMRun,

@@ -14,7 +14,8 @@ from typing import Any
 
 import numpy as np
 from twoball.modal.parameters import Case
-from twoball.verify.output.plots_verify import EigenErrors, Trace
+from twoball.verify.output.figures.eigen import EigenErrors
+from twoball.verify.output.figures.pole import Trace
 from twoball.verify.studies.reference import ConvergedReference, LegendreRun
 from twoball.verify.studies.result import si
 

@@ -22,7 +22,8 @@ from twoball.modal.filters import FilterKind
 from twoball.modal.liftoff import Horizon
 from twoball.modal.parameters import Case
 from twoball.modal.report import t_end_dimensionless
-from twoball.verify.output.plots_verify import EigenErrors, Trace
+from twoball.verify.output.figures.eigen import EigenErrors
+from twoball.verify.output.figures.pole import Trace
 from twoball.verify.studies.fem_runs import FEMRun, FEMSpec, fem_run
 from twoball.verify.studies.reference import (
     ConvergedReference,

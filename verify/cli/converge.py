@@ -12,14 +12,11 @@ from rich.table import Table
 from twoball.modal.errors import ParameterError
 from twoball.verify.cli.case_options import add_case_options, case_from_options
 from twoball.verify.cli.console import console
-from twoball.verify.output.plots_verify import plot_study
 from twoball.verify.output.report_files import (
     check_output_dir,
     json_text,
-    study_csv,
-    study_markdown,
+    study_files,
     study_summary_rows,
-    text_writer,
     write_report_dir,
 )
 from twoball.verify.studies.fem_runs import DEFAULT_LEVELS, LEVEL_LIMITS
@@ -116,15 +113,7 @@ def run(args: argparse.Namespace) -> int:
             task = bar.add_task(f"converge --study {args.study}", total=None)
             study = run_study(args, lambda text: bar.update(task, description=text))
     data = study.as_dict()
-    write_report_dir(
-        out,
-        {
-            "report.md": text_writer(study_markdown(study)),
-            "results.json": text_writer(json_text(data)),
-            "results.csv": text_writer(study_csv(study)),
-            "convergence.png": lambda path: plot_study(path, study),
-        },
-    )
+    write_report_dir(out, study_files(study), "twoball converge")
     if args.json:
         data["out"] = str(out)
         sys.stdout.write(json_text(data))

@@ -10,7 +10,7 @@ from collections.abc import Sequence
 
 from twoball.fem_membrane.build import DEFAULT_LEVEL
 from twoball.fem_membrane.checks import INITIAL_METHODS, check_choice, check_level, check_order
-from twoball.fem_membrane.export import FORMATS, check_output_path, series_format, write_series
+from twoball.fem_membrane.export import FORMATS, series_format, write_series
 from twoball.modal.errors import ParameterError
 from twoball.modal.parameters import Case
 from twoball.verify.cli.case_options import add_case_options, case_from_options
@@ -30,6 +30,8 @@ from twoball.verify.output.fields import (
     parse_times,
     window_s,
 )
+
+from twoball.staging import check_file
 
 VALID_RANGES: dict[str, str] = {
     "--level": "an integer >= 0",
@@ -124,7 +126,7 @@ def add_frame_options(parser: argparse.ArgumentParser, default: int) -> None:
 def run(args: argparse.Namespace) -> int:
     """Run ``twoball export``."""
     fmt = series_format(args.out, args.format)
-    out = check_output_path(args.out)
+    out = check_file(args.out)
     check_backend(args.backend)
     check_mesh_options(args)
     case = case_from_options(args)
@@ -172,7 +174,7 @@ def register(parser: argparse.ArgumentParser) -> None:
     add_mesh_options(parser)
     parser.add_argument(
         "--format",
-        help="xdmf (with NAME.h5), pvd (with NAME_0000.vtu ...) or vtu (one frame); "
+        help="xdmf (with NAME.h5), pvd (frames in NAME_frames-ID/) or vtu (one frame); "
         "default: from the suffix of --out (" + ", ".join(FORMATS) + ")",
     )
     add_frame_options(parser, DEFAULT_FRAMES)

@@ -4,21 +4,17 @@ from __future__ import annotations
 
 import argparse
 
-from twoball.fem_membrane.export import check_output_path
 from twoball.modal.errors import ParameterError
 from twoball.verify.cli.case_options import add_case_options
 from twoball.verify.cli.console import console, key_value_table
 from twoball.verify.cli.export import add_mesh_options, model_from_options
 from twoball.verify.output.fields import BACKENDS
-from twoball.verify.output.plots import (
-    PLOT_KINDS,
-    WATERFALL_INSTANTS,
-    eigen_figure,
-    eigen_table,
-    pole_figure,
-    save_figure,
-    waterfall_figure,
-)
+from twoball.verify.output.figures import PLOT_KINDS, save_figure
+from twoball.verify.output.figures.eigen import eigen_figure, eigen_table
+from twoball.verify.output.figures.pole import pole_figure
+from twoball.verify.output.figures.waterfall import WATERFALL_INSTANTS, waterfall_figure
+
+from twoball.staging import check_file
 
 VALID_RANGES: dict[str, str] = {
     "--instants": "an integer >= 2",
@@ -55,7 +51,7 @@ def run(args: argparse.Namespace) -> int:
         raise ParameterError("plot kind", "one of " + ", ".join(PLOT_KINDS), args.kind)
     if not str(args.out).lower().endswith(".png"):
         raise ParameterError("--out", "a file name ending in .png", args.out)
-    out = check_output_path(args.out)
+    out = check_file(args.out)
     rows: list[tuple[str, str]] = [("file", str(out)), ("plot", args.kind)]
     if args.kind == "eigen":
         levels = parse_list(args.levels, "--levels", "comma-separated levels >= 0, e.g. 1,2")

@@ -6,7 +6,6 @@ import argparse
 import math
 
 import numpy as np
-from twoball.fem_membrane.export import check_output_path
 from twoball.fem_membrane.render import DEFAULT_SIZE, check_size, check_warp, image_kind
 from twoball.modal.errors import ParameterError
 from twoball.verify.cli.case_options import add_case_options, case_from_options
@@ -25,6 +24,8 @@ from twoball.verify.output.fields import (
     liftoff_frame,
     window_s,
 )
+
+from twoball.staging import check_file
 
 DEFAULT_ANIMATION_FRAMES = 60
 VALID_RANGES: dict[str, str] = {
@@ -48,7 +49,7 @@ def parse_warp(text: str | None) -> float | None:
 def run(args: argparse.Namespace) -> int:
     """Run ``twoball render``."""
     kind = image_kind(args.out)
-    out = check_output_path(args.out)
+    out = check_file(args.out)
     size = check_size(args.size)
     warp = parse_warp(args.warp)
     check_backend(args.backend)

@@ -23,7 +23,6 @@ from twoball.verify.cli.console import console
 from twoball.verify.output.report_files import (
     check_output_dir,
     json_text,
-    text_writer,
     verify_files,
     write_report_dir,
 )
@@ -103,8 +102,7 @@ def run(args: argparse.Namespace) -> int:
                 case, args.sigma, args.recontact, args.t_end, configuration, advance
             )
     files = verify_files(result)
-    write_report_dir(out, {name: text_writer(text) if isinstance(text, str) else text
-                           for name, text in files.items()})  # fmt: skip
+    write_report_dir(out, files, "twoball verify")
     if args.json:
         data = result.as_dict()
         data["out"] = str(out)
