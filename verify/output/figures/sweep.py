@@ -1,4 +1,4 @@
-"""Lift-off sweeps: v_l/|v0| and t_l against one parameter, or heat maps over two."""
+"""Lift-off sweeps: ``v_l / |v0|`` and ``t_l`` against one parameter, or heat maps over two."""
 
 from __future__ import annotations
 
