@@ -27,7 +27,6 @@ import math
 from dataclasses import dataclass, replace
 from pathlib import Path
 
-import meshio
 import numpy as np
 from skfem import MeshTri1
 from twoball.modal.errors import ParameterError
@@ -341,6 +340,8 @@ def topology(mesh: SphereMesh) -> MeshTri1:
 
 def write_mesh(path: str | Path, mesh: SphereMesh) -> None:
     """Write ``mesh`` with meshio (format from the suffix, e.g. ``.vtu``, ``.msh``, ``.xdmf``)."""
+    import meshio  # file input/output only: the solvers start without it
+
     kind = "triangle" if mesh.order == 1 else "triangle6"
     meshio.write(str(path), meshio.Mesh(mesh.points, [(kind, mesh.cells)]))
 
@@ -352,6 +353,8 @@ def read_mesh(path: str | Path, ring: float | None = None) -> SphereMesh:
     keeps only x and y.  Unused points are dropped and the nodes renumbered so
     that vertices come first.  The mesh must have a vertex at the north pole.
     """
+    import meshio
+
     data = meshio.read(str(path))
     blocks = [b for b in data.cells if b.type in ("triangle", "triangle6")]
     if len(blocks) != 1:

@@ -1,16 +1,23 @@
-"""Terminal output shared by the subcommands: rich tables without markup surprises."""
+"""Terminal output shared by the subcommands: rich tables without markup surprises.
+
+rich is imported by the functions that draw; ``print_json`` and ``number`` need
+none of it, so ``twoball liftoff --json`` starts without it.
+"""
 
 from __future__ import annotations
 
 import json
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
-from rich.console import Console
-from rich.table import Table
+if TYPE_CHECKING:
+    from rich.console import Console
+    from rich.table import Table
 
 
 def console(wide: bool = False) -> Console:
     """A console that prints brackets literally (units like ``[m/s]`` are not markup)."""
+    from rich.console import Console
+
     width = max(Console().width, 120) if wide else None
     return Console(markup=False, highlight=False, width=width)
 
@@ -27,6 +34,8 @@ def print_json(data: Any) -> None:
 
 def key_value_table(title: str, rows: list[tuple[str, str]]) -> Table:
     """A two-column table of quantities and values."""
+    from rich.table import Table
+
     table = Table(title=title)
     table.add_column("quantity")
     table.add_column("value", justify="right")
