@@ -81,7 +81,8 @@ def phi_a_from_v0(v0: float, radius: float, wave_speed: float) -> float:
     speed = abs(float(v0))
     if not (math.isfinite(speed) and speed > 0):
         raise ParameterError("--v0", "a finite nonzero speed (eq. (3.7) has no solution)", v0)
-    target = math.log((speed / (radius * wave_speed)) ** 2)  # log (v0 / R c)^2
+    squared = (speed / (radius * wave_speed)) ** 2
+    target = math.log(squared) if squared > 0 else -math.inf  # log (v0 / R c)^2
 
     # Solve in y = log(pi - phi_a): with s = pi - phi_a the shape of (3.7) rises
     # monotonically from ~s^4/8 (s -> 0) to +inf (s -> pi/2); its logarithm is
