@@ -1,7 +1,8 @@
 """Terminal output shared by the subcommands: rich tables without markup surprises.
 
-rich is imported by the functions that draw; ``print_json`` and ``number`` need
-none of it, so ``twoball liftoff --json`` starts without it.
+rich is imported when something is drawn: ``print_json`` and ``number`` need none
+of it, so the ``--json`` paths start without it.  Subcommands import
+:func:`Table` from here rather than from rich for the same reason.
 """
 
 from __future__ import annotations
@@ -11,7 +12,7 @@ from typing import TYPE_CHECKING, Any
 
 if TYPE_CHECKING:
     from rich.console import Console
-    from rich.table import Table
+    from rich.table import Table as RichTable
 
 
 def console(wide: bool = False) -> Console:
@@ -32,10 +33,15 @@ def print_json(data: Any) -> None:
     print(json.dumps(data, indent=2))
 
 
-def key_value_table(title: str, rows: list[tuple[str, str]]) -> Table:
-    """A two-column table of quantities and values."""
-    from rich.table import Table
+def Table(*columns: Any, **options: Any) -> RichTable:  # named like the class it makes
+    """A :class:`rich.table.Table` (same arguments); rich is imported on the first call."""
+    from rich.table import Table as RichTable
 
+    return RichTable(*columns, **options)
+
+
+def key_value_table(title: str, rows: list[tuple[str, str]]) -> RichTable:
+    """A two-column table of quantities and values."""
     table = Table(title=title)
     table.add_column("quantity")
     table.add_column("value", justify="right")
