@@ -11,8 +11,10 @@ from just before it starts to just after it exits.  The commands take turns
 alike.  The yardstick is ``python -c "import numpy"``, measured in the same run:
 every median is also given as a multiple of it, and the targets are multiples of
 it (``twoball --help`` no slower than importing numpy, ``twoball liftoff --json``
-at most twice that).  Targets are printed as PASS/FAIL; the script always exits
-with status 0: speed is measured here, not asserted by the test suite.
+at most twice that).  The median CPU time (user + system) of each process is
+printed beside: it hardly depends on what else runs on the machine.  Targets
+are printed as PASS/FAIL; the script always exits with status 0: speed is
+measured here, not asserted by the test suite.
 
 ``twoball`` is the venv's console script when that script runs this checkout
 (an editable install of it); otherwise ``python -m twoball`` from the
@@ -24,6 +26,7 @@ from __future__ import annotations
 import argparse
 import os
 import platform
+import resource
 import shutil
 import statistics
 import subprocess
@@ -43,11 +46,16 @@ class Command:
     name: str
     argv: list[str]
     target: float | None = None  # median / yardstick median must be <= this
-    samples: list[float] = field(default_factory=list)
+    samples: list[float] = field(default_factory=list)  # wall seconds
+    cpu: list[float] = field(default_factory=list)  # user + system seconds of the child
 
     @property
     def median(self) -> float:
         return statistics.median(self.samples)
+
+    @property
+    def cpu_median(self) -> float:
+        return statistics.median(self.cpu)
 
 
 def twoball_launcher() -> tuple[list[str], str]:
@@ -97,19 +105,22 @@ def commands(twoball: list[str]) -> list[Command]:
     ]
 
 
-def run_once(command: Command) -> float:
-    """Wall seconds of one fresh process of ``command`` (output discarded)."""
+def run_once(command: Command) -> tuple[float, float]:
+    """Wall and CPU (user + system) seconds of one fresh process of ``command``."""
+    before = resource.getrusage(resource.RUSAGE_CHILDREN)
     start = time.perf_counter()
     done = subprocess.run(
         command.argv, cwd=ROOT, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, check=False
     )
     seconds = time.perf_counter() - start
+    after = resource.getrusage(resource.RUSAGE_CHILDREN)
     if done.returncode != 0:
         message = done.stderr.decode(errors="replace").strip().splitlines()
         raise RuntimeError(
             f"{command.name} exited with {done.returncode}: {message[-1] if message else ''}"
         )
-    return seconds
+    cpu = (after.ru_utime - before.ru_utime) + (after.ru_stime - before.ru_stime)
+    return seconds, cpu
 
 
 def measure(all_commands: list[Command], runs: int) -> None:
@@ -118,18 +129,24 @@ def measure(all_commands: list[Command], runs: int) -> None:
         run_once(command)
     for _ in range(runs):
         for command in all_commands:
-            command.samples.append(run_once(command))
+            wall, cpu = run_once(command)
+            command.samples.append(wall)
+            command.cpu.append(cpu)
 
 
 def report(all_commands: list[Command]) -> str:
-    """The result table as text; ratios are to the first command's median."""
-    yardstick = all_commands[0].median
+    """The result table as text; ratios are to the first command's medians.
+
+    The targets apply to wall time; CPU time (user + system, median) is shown
+    beside it because it is far less sensitive to other processes on the machine.
+    """
+    yardstick, yardstick_cpu = all_commands[0].median, all_commands[0].cpu_median
     width = max(len(c.name) for c in all_commands)
     header = (
         f"{'command':{width}s} {'runs':>4s} {'median':>8s} {'min':>8s} {'max':>8s} "
-        f"{'x numpy':>8s} {'target':>8s}  result"
+        f"{'x numpy':>8s} {'target':>8s}  {'result':6s} {'cpu':>7s} {'x numpy':>8s}"
     )
-    lines = [header, "-" * len(header)]
+    lines = ["wall time (median, min, max) and CPU time (median)", header, "-" * len(header)]
     for c in all_commands:
         ratio = c.median / yardstick
         if c.target is None:
@@ -139,7 +156,8 @@ def report(all_commands: list[Command]) -> str:
             verdict = "PASS" if ratio <= c.target else "FAIL"
         lines.append(
             f"{c.name:{width}s} {len(c.samples):4d} {c.median:7.3f}s {min(c.samples):7.3f}s "
-            f"{max(c.samples):7.3f}s {ratio:8.2f} {target:>8s}  {verdict}"
+            f"{max(c.samples):7.3f}s {ratio:8.2f} {target:>8s}  {verdict:6s} "
+            f"{c.cpu_median:6.3f}s {c.cpu_median / yardstick_cpu:8.2f}"
         )
     return "\n".join(lines)
 
