@@ -27,7 +27,6 @@ import math
 from dataclasses import dataclass, replace
 from pathlib import Path
 
-import meshio
 import numpy as np
 from skfem import MeshTri1
 from twoball.modal.errors import NumericalError, ParameterError
@@ -466,6 +465,8 @@ def topology(mesh: SphereMesh) -> MeshTri1:
 
 def write_mesh(path: str | Path, mesh: SphereMesh) -> None:
     """Write ``mesh`` with meshio (format from the suffix, e.g. ``.vtu``, ``.msh``, ``.xdmf``)."""
+    import meshio  # file input/output only: the solvers start without it
+
     kind = "triangle" if mesh.order == 1 else "triangle6"
     meshio.write(str(path), meshio.Mesh(mesh.points, [(kind, mesh.cells)]))
 

@@ -6,9 +6,12 @@ import math
 
 import numpy as np
 from numpy.typing import ArrayLike
-from scipy.optimize import brentq
 
 from .errors import ParameterError
+from .roots import bracketed_roots
+
+_EPS = float(np.finfo(float).eps)
+_LOG_S_MIN = math.log(1e-6)  # smallest pi - phi_a resolved: (3.7) is ~ s^4 / 8 there
 
 
 def initial_displacement(phi: ArrayLike, phi_a: float) -> np.ndarray:
@@ -68,29 +71,50 @@ def phi_a_from_v0(v0: float, radius: float, wave_speed: float) -> float:
 
     The right-hand side of (3.7) decreases monotonically from +inf (phi_a -> pi/2)
     to 0 (phi_a -> pi), so every speed ``0 < |v0| < inf`` has exactly one solution; a
-    zero or non-finite speed has none and raises :class:`ParameterError`.  The
-    root is found with a bracketing solver to double precision.
+    zero or non-finite speed has none and raises :class:`ParameterError`, and so does
+    a speed so slow that ``pi - phi_a < 1e-6`` (``|v0| < 3.5e-13 R c``), where
+    ``1 + cos(phi_a)`` in (3.7) is mostly round-off.  The root is found to double
+    precision by a bracketing solver (:func:`~twoball.modal.roots.bracketed_roots`,
+    regula falsi with bisection) on the logarithm of (3.7) as a function of
+    ``log(pi - phi_a)``, where it is nearly a straight line.
     """
     speed = abs(float(v0))
     if not (math.isfinite(speed) and speed > 0):
         raise ParameterError("--v0", "a finite nonzero speed (eq. (3.7) has no solution)", v0)
-    target = math.log((speed / (radius * wave_speed)) ** 2)  # log (v0 / R c)^2
+    squared = (speed / (radius * wave_speed)) ** 2
+    target = math.log(squared) if squared > 0 else -math.inf  # log (v0 / R c)^2
 
-    # Solve in s = pi - phi_a: the shape of (3.7) rises monotonically from ~s^4/24
-    # (s -> 0) to +inf (s -> pi/2); work with its logarithm for a uniform accuracy.
-    def residual(s: float) -> float:
-        return math.log(_energy_shape(math.pi - s)) - target
+    # Solve in y = log(pi - phi_a): with s = pi - phi_a the shape of (3.7) rises
+    # monotonically from ~s^4/8 (s -> 0) to +inf (s -> pi/2); its logarithm is
+    # ~ 4 y - log 8 for small s, so a bracket in y is refined quickly and uniformly.
+    def residual(y: float) -> float:
+        return math.log(_energy_shape(math.pi - math.exp(y))) - target
 
-    hi_s = math.pi / 2 * (1 - 1e-15)
-    if residual(hi_s) < 0:
+    upper = math.log(math.pi / 2 * (1 - 1e-15))
+    if residual(upper) < 0:
         raise ParameterError("--v0", "small enough for eq. (3.7) to have a solution", v0)
-    lo_s = 1e-3
-    while residual(lo_s) > 0:
-        lo_s *= 1e-3
-        if lo_s < 1e-60:
-            raise ParameterError("--v0", "large enough for eq. (3.7) to have a solution", v0)
-    s = brentq(residual, lo_s, hi_s, xtol=1e-300, rtol=4 * np.finfo(float).eps, maxiter=500)
-    return math.pi - s
+    if residual(_LOG_S_MIN) > 0:
+        # 1 + cos(phi_a) ~ s^2 / 2 is lost to round-off as s -> 0 (log(0) below s ~ 1e-8)
+        slowest = radius * wave_speed * math.sqrt(_energy_shape(math.pi - math.exp(_LOG_S_MIN)))
+        raise ParameterError(
+            "--v0",
+            f"at least {slowest:.3g} m/s (slower impacts put phi_a within 1e-6 rad of pi, "
+            "where eq. (3.7) loses double precision)",
+            v0,
+        )
+    lower = upper - 1.0
+    while residual(lower) > 0:
+        upper, lower = lower, max(lower - 1.0, _LOG_S_MIN)
+    # A bracketing solver, not Newton: for phi_a near pi the residual is a staircase at
+    # the level of round-off in 1 + cos(phi_a).  Bracket width 4 ulp of y: 4 eps relative
+    # in s, i.e. about one ulp in phi_a.
+    y = bracketed_roots(
+        lambda y, index: np.array([residual(float(value)) for value in y]),
+        np.array([lower]),
+        np.array([upper]),
+        xtol=4.0 * _EPS * max(1.0, -lower),
+    )
+    return math.pi - math.exp(float(y[0]))
 
 
 def deformation_work(phi_a: float) -> float:

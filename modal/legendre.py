@@ -15,7 +15,6 @@ from functools import lru_cache
 import numpy as np
 from numpy.polynomial.legendre import legvander
 from numpy.typing import ArrayLike
-from scipy.linalg import eigvalsh_tridiagonal
 
 from .errors import NumericalError, ParameterError
 from .filters import FilterKind, SpectralFilter, legendre_frequency
@@ -25,15 +24,34 @@ from .series import ModalSeries
 _MAX_QUADRATURE = 20000
 
 
+_DENSE_JACOBI_MAX = 256  # up to this many points numpy's dense eigvalsh is as fast as scipy's
+
+
 @lru_cache(maxsize=64)
-def _gauss_legendre(points: int) -> tuple[np.ndarray, np.ndarray]:
-    """Gauss-Legendre nodes and weights to double precision in O(m^2) work.
+def _gauss_legendre(points: int, eigensolver: str = "auto") -> tuple[np.ndarray, np.ndarray]:
+    """Gauss-Legendre nodes and weights to double precision.
 
     Golub-Welsch nodes from the symmetric tridiagonal Jacobi matrix, one Newton
     step on P_m to polish them, and weights ``2 / ((1 - x^2) P_m'(x)^2)``.
+
+    ``eigensolver`` picks how the Jacobi matrix's eigenvalues are found: ``dense``
+    (numpy's ``eigvalsh`` on the full matrix, O(m^3) but no scipy import: the
+    N = 30 rules of the command line need about 50 points), ``tridiagonal``
+    (``scipy.linalg.eigvalsh_tridiagonal``, O(m^2), for the thousands of points a
+    contact angle near pi/2 needs) or ``auto`` (dense up to 256 points).
     """
     k = np.arange(1, points)
-    x = eigvalsh_tridiagonal(np.zeros(points), k / np.sqrt(4.0 * k * k - 1.0))
+    off_diagonal = k / np.sqrt(4.0 * k * k - 1.0)
+    if eigensolver == "auto":
+        eigensolver = "dense" if points <= _DENSE_JACOBI_MAX else "tridiagonal"
+    if eigensolver == "dense":
+        x = np.linalg.eigvalsh(np.diag(off_diagonal, -1))  # reads the lower triangle only
+    elif eigensolver == "tridiagonal":
+        from scipy.linalg import eigvalsh_tridiagonal
+
+        x = eigvalsh_tridiagonal(np.zeros(points), off_diagonal)
+    else:
+        raise ValueError("eigensolver must be 'auto', 'dense' or 'tridiagonal'")
     p, dp = _legendre_and_derivative(points, x)
     x = x - p / dp
     _, dp = _legendre_and_derivative(points, x)

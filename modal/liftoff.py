@@ -20,7 +20,6 @@ from typing import Literal, Protocol, runtime_checkable
 
 import numpy as np
 from numpy.typing import ArrayLike
-from scipy.interpolate import BPoly, CubicSpline
 
 from .errors import NumericalError, ParameterError
 from .roots import bracketed_roots, newton_bracketed
@@ -89,6 +88,8 @@ class SampledPoleMotion:
             raise NumericalError("pole samples contain NaN or inf")
         self.times = t
         self.interpolation = interpolation
+        from scipy.interpolate import BPoly, CubicSpline  # only sampled motions need scipy
+
         if interpolation == "hermite":
             spline = BPoly.from_derivatives(t, data.tolist(), extrapolate=False)
             self._fields = (spline, spline.derivative(1), spline.derivative(2))

@@ -1,16 +1,24 @@
-"""Terminal output shared by the subcommands: rich tables without markup surprises."""
+"""Terminal output shared by the subcommands: rich tables without markup surprises.
+
+rich is imported when something is drawn: ``print_json`` and ``number`` need none
+of it, so the ``--json`` paths start without it.  Subcommands import
+:func:`Table` from here rather than from rich for the same reason.
+"""
 
 from __future__ import annotations
 
 import json
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
-from rich.console import Console
-from rich.table import Table
+if TYPE_CHECKING:
+    from rich.console import Console
+    from rich.table import Table as RichTable
 
 
 def console(wide: bool = False) -> Console:
     """A console that prints brackets literally (units like ``[m/s]`` are not markup)."""
+    from rich.console import Console
+
     width = max(Console().width, 120) if wide else None
     return Console(markup=False, highlight=False, width=width)
 
@@ -25,7 +33,14 @@ def print_json(data: Any) -> None:
     print(json.dumps(data, indent=2))
 
 
-def key_value_table(title: str, rows: list[tuple[str, str]]) -> Table:
+def Table(*columns: Any, **options: Any) -> RichTable:  # named like the class it makes
+    """A :class:`rich.table.Table` (same arguments); rich is imported on the first call."""
+    from rich.table import Table as RichTable
+
+    return RichTable(*columns, **options)
+
+
+def key_value_table(title: str, rows: list[tuple[str, str]]) -> RichTable:
     """A two-column table of quantities and values."""
     table = Table(title=title)
     table.add_column("quantity")

@@ -4,9 +4,8 @@ from __future__ import annotations
 
 import argparse
 
-from rich.table import Table
 from twoball.fem_membrane.eigen import eigen_table
-from twoball.verify.cli.console import console, print_json
+from twoball.verify.cli.console import Table, console, print_json
 from twoball.verify.cli.fem_options import VALID_RANGES, add_mesh_options
 
 __all__ = ["VALID_RANGES", "register", "run"]

@@ -7,13 +7,11 @@ from __future__ import annotations
 
 import argparse
 import time
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
-from twoball.fem_membrane.checks import check_dt
-from twoball.fem_membrane.solve import fem_pole_motion
-from twoball.modal.filters import SpectralFilter
-from twoball.modal.parameters import Case
-from twoball.modal.report import LiftoffReport, report_liftoff, t_end_dimensionless
+if TYPE_CHECKING:  # the finite-element modules load only when fem_liftoff runs
+    from twoball.modal.parameters import Case
+    from twoball.modal.report import LiftoffReport
 
 VALID_RANGES: dict[str, str] = {
     "--level": "an integer >= 0",
@@ -61,6 +59,11 @@ def add_time_options(parser: argparse.ArgumentParser) -> None:
 
 def fem_liftoff(case: Case, args: argparse.Namespace) -> LiftoffReport:
     """The shared lift-off of the finite-element pole motion for the options' mesh (SI)."""
+    from twoball.fem_membrane.checks import check_dt
+    from twoball.fem_membrane.solve import fem_pole_motion
+    from twoball.modal.filters import SpectralFilter
+    from twoball.modal.report import report_liftoff, t_end_dimensionless
+
     dt_s = check_dt(args.dt)
     started = time.perf_counter()
     motion, info = fem_pole_motion(

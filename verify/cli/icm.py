@@ -5,10 +5,9 @@ from __future__ import annotations
 import argparse
 from dataclasses import asdict
 
-from rich.table import Table
 from twoball.modal import icm
 from twoball.modal.errors import ParameterError
-from twoball.verify.cli.console import console, print_json
+from twoball.verify.cli.console import Table, console, print_json
 
 VALID_RANGES = {
     "--mu": "a number >= 0",

@@ -4,9 +4,8 @@ from __future__ import annotations
 
 import argparse
 
-from rich.table import Table
 from twoball.verify.cli.case_options import add_case_options, case_from_options
-from twoball.verify.cli.console import console, number, print_json
+from twoball.verify.cli.console import Table, console, number, print_json
 from twoball.verify.sweeps.parallel import MIN_PARALLEL_ITEMS, Runner, check_workers
 from twoball.verify.sweeps.parallel import VALID_RANGES as PARALLEL_RANGES
 from twoball.verify.sweeps.sweeps import (
