@@ -42,7 +42,7 @@ def build_space(
     -------
     Discretisation
     """
-    mesh = check_choice("--mesh", mesh, MESH_KINDS)
+    mesh = check_choice("mesh", mesh, MESH_KINDS)
     order = check_order(order)
     phi_a = _check_phi_a(phi_a)
     level = DEFAULT_LEVEL if level is None else check_level(level)

@@ -100,7 +100,7 @@ def modal_model(
     phi_a = _check_phi_a(phi_a)
     damping = check_damping(damping)
     filter = as_filter(filter)
-    initial = check_choice("--initial", initial, INITIAL_METHODS)
+    initial = check_choice("initial", initial, INITIAL_METHODS)
     seconds = {}
     start = clock.perf_counter()
     space = build_space(mesh, level=level, elements=elements, order=order, phi_a=phi_a)
@@ -148,7 +148,7 @@ def alpha_motion(
         Pole samples and ``dt``, ``steps``, ``rho_inf`` (and ``rayleigh``:
         alpha, beta, fitting frequencies and the effective-ratio table).
     """
-    damping_model = check_choice("--damping-model", damping_model, DAMPING_MODELS)
+    damping_model = check_choice("damping_model", damping_model, DAMPING_MODELS)
     dt = check_dt(dt)
     rho_inf = check_rho_inf(rho_inf)
     t_end = check_t_end(t_end)
@@ -259,19 +259,19 @@ def fem_pole_motion(
         ``alpha``, ``beta``, ``omega_low``, ``omega_high`` and ``table`` (rows
         ``mode``, ``omega``, ``zeta``, ``ratio`` = zeta / D).
     """
-    time = check_choice("--time", time, TIME_SCHEMES)
-    damping_model = check_choice("--damping-model", damping_model, DAMPING_MODELS)
+    time = check_choice("time", time, TIME_SCHEMES)
+    damping_model = check_choice("damping_model", damping_model, DAMPING_MODELS)
     dt = check_dt(dt)
     rho_inf = check_rho_inf(rho_inf)
     t_end = check_t_end(t_end)
     if time == "modal" and damping_model != "modal":
         raise ParameterError(
-            "--damping-model", "modal with --time modal (one ratio D for all modes)", damping_model
+            "damping_model", "modal when time is modal (one ratio D for all modes)", damping_model
         )
-    route = check_choice("--route", route, ROUTES)
+    route = check_choice("route", route, ROUTES)
     if time == "alpha":
         if route == "krylov":
-            raise ParameterError("--route", "full or auto with --time alpha", route)
+            raise ParameterError("route", "full or auto when time is alpha", route)
         route = "full"  # time stepping needs the eigenvectors for damping and filtering
     model = modal_model(
         phi_a,

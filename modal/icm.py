@@ -57,9 +57,9 @@ def _as_float(name: str, valid: str, value: object) -> float:
 
 def _check_mu(mu: float) -> float:
     valid = "a finite number >= 0"
-    mu = _as_float("--mu", valid, mu)
+    mu = _as_float("mu", valid, mu)
     if not mu >= 0.0:
-        raise ParameterError("--mu", valid, mu)
+        raise ParameterError("mu", valid, mu)
     return mu
 
 
@@ -73,9 +73,9 @@ def _check_restitution(name: str, value: float) -> float:
 
 def _check_dx(dx: float) -> float:
     valid = "a finite number >= 0 [m]"
-    dx = _as_float("--dx", valid, dx)
+    dx = _as_float("dx", valid, dx)
     if not dx >= 0.0:
-        raise ParameterError("--dx", valid, dx)
+        raise ParameterError("dx", valid, dx)
     return dx
 
 
@@ -88,11 +88,11 @@ def _check_positive(name: str, value: float, unit: str) -> float:
 
 
 def _check_drop_height(drop_height: float) -> float:
-    return _check_positive("--drop-height", drop_height, "m")
+    return _check_positive("drop_height", drop_height, "m")
 
 
 def _check_g(g: float) -> float:
-    return _check_positive("--g", g, "m/s^2")
+    return _check_positive("g", g, "m/s^2")
 
 
 # ---------------------------------------------------------------------------
@@ -159,7 +159,7 @@ def rebound_velocity(drop_height: float, e2: float, g: float = STANDARD_GRAVITY)
     float
         ``u0`` [m/s]; >= 0 (upwards).
     """
-    e2 = _check_restitution("--e2", e2)
+    e2 = _check_restitution("e2", e2)
     return -e2 * impact_velocity(drop_height, g)
 
 
@@ -190,7 +190,7 @@ def max_separation(drop_height: float, e2: float) -> float:
         The bound [m].
     """
     drop_height = _check_drop_height(drop_height)
-    e2 = _check_restitution("--e2", e2)
+    e2 = _check_restitution("e2", e2)
     return 4.0 * e2 * (1.0 + e2) * drop_height
 
 
@@ -223,14 +223,14 @@ def second_impact_delay(
         :func:`max_separation` (the lower ball would have landed again).
     """
     dx = _check_dx(dx)
-    e2 = _check_restitution("--e2", e2)
+    e2 = _check_restitution("e2", e2)
     v0 = impact_velocity(drop_height, g)
     if dx == 0.0:
         return 0.0
     limit = max_separation(drop_height, e2)
     if dx > limit:
         raise ParameterError(
-            "--dx",
+            "dx",
             f"<= 4 e2 (1 + e2) H = {limit:.6g} m (lower ball airborne at 2nd impact)",
             dx,
         )
@@ -258,7 +258,7 @@ def post_impact_velocities(u1: float, u2: float, mu: float, e12: float) -> tuple
         Velocities just after the impact [m/s].
     """
     mu = _check_mu(mu)
-    e12 = _check_restitution("--e12", e12)
+    e12 = _check_restitution("e12", e12)
     u1 = float(u1)
     u2 = float(u2)
     v1 = (mu * u1 + u2 + e12 * (u2 - u1)) / (mu + 1.0)
@@ -352,8 +352,8 @@ def icm(
         (``--mu``, ``--e2``, ``--e12``, ``--dx``, ``--drop-height``, ``--g``).
     """
     mu = _check_mu(mu)
-    e2 = _check_restitution("--e2", e2)
-    e12 = _check_restitution("--e12", e12)
+    e2 = _check_restitution("e2", e2)
+    e12 = _check_restitution("e12", e12)
     dx = _check_dx(dx)
     drop_height = _check_drop_height(drop_height)
     g = _check_g(g)
@@ -413,8 +413,8 @@ def touching_limit(mu: float, e2: float, e12: float) -> tuple[float, float]:
         Dimensionless multipliers of ``v0``.
     """
     mu = _check_mu(mu)
-    e2 = _check_restitution("--e2", e2)
-    e12 = _check_restitution("--e12", e12)
+    e2 = _check_restitution("e2", e2)
+    e12 = _check_restitution("e12", e12)
     k1 = (mu - e2 - e12 * (1.0 + e2)) / (mu + 1.0)
     k2 = (mu - e2 + mu * e12 * (1.0 + e2)) / (mu + 1.0)
     return k1, k2
@@ -456,8 +456,8 @@ def light_touching_limit(e2: float, e12: float) -> tuple[float, float]:
     k1, k2 : float
         Dimensionless multipliers of ``v0`` (both <= 0).
     """
-    e2 = _check_restitution("--e2", e2)
-    e12 = _check_restitution("--e12", e12)
+    e2 = _check_restitution("e2", e2)
+    e12 = _check_restitution("e12", e12)
     return -((1.0 + e2) * e12 + e2), -e2
 
 

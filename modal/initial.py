@@ -41,7 +41,7 @@ def _energy_shape(phi_a: float) -> float:
 def _check_phi_a(phi_a: float) -> float:
     phi_a = float(phi_a)
     if not (math.pi / 2 < phi_a < math.pi):
-        raise ParameterError("--phi-a", "in (pi/2, pi) = (1.5708, 3.1416) rad", phi_a)
+        raise ParameterError("phi_a", "in (pi/2, pi) = (1.5708, 3.1416) rad", phi_a)
     return phi_a
 
 
@@ -73,7 +73,7 @@ def phi_a_from_v0(v0: float, radius: float, wave_speed: float) -> float:
     """
     speed = abs(float(v0))
     if not (math.isfinite(speed) and speed > 0):
-        raise ParameterError("--v0", "a finite nonzero speed (eq. (3.7) has no solution)", v0)
+        raise ParameterError("v0", "a finite nonzero speed (eq. (3.7) has no solution)", v0)
     target = math.log((speed / (radius * wave_speed)) ** 2)  # log (v0 / R c)^2
 
     # Solve in s = pi - phi_a: the shape of (3.7) rises monotonically from ~s^4/24
@@ -83,12 +83,12 @@ def phi_a_from_v0(v0: float, radius: float, wave_speed: float) -> float:
 
     hi_s = math.pi / 2 * (1 - 1e-15)
     if residual(hi_s) < 0:
-        raise ParameterError("--v0", "small enough for eq. (3.7) to have a solution", v0)
+        raise ParameterError("v0", "small enough for eq. (3.7) to have a solution", v0)
     lo_s = 1e-3
     while residual(lo_s) > 0:
         lo_s *= 1e-3
         if lo_s < 1e-60:
-            raise ParameterError("--v0", "large enough for eq. (3.7) to have a solution", v0)
+            raise ParameterError("v0", "large enough for eq. (3.7) to have a solution", v0)
     s = brentq(residual, lo_s, hi_s, xtol=1e-300, rtol=4 * np.finfo(float).eps, maxiter=500)
     return math.pi - s
 

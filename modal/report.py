@@ -32,6 +32,8 @@ class LiftoffReport:
         Filter and re-contact horizon used.
     extra : dict
         Backend details (DOFs, modes used, mesh, ...), passed through to JSON.
+    warnings : tuple of str
+        Backend remarks on the trust of this result (the CLI prints them on stderr).
     """
 
     case: Case
@@ -40,6 +42,14 @@ class LiftoffReport:
     sigma: str
     recontact: str
     extra: dict[str, Any] = field(default_factory=dict)
+    warnings: tuple[str, ...] = ()
+
+    @property
+    def notes(self) -> list[str]:
+        """Remarks the reader must see: how phi_a was chosen (if it departs from a
+        preset's measurement) and any backend warning."""
+        note = self.case.phi_a_note
+        return ([note] if note else []) + list(self.warnings)
 
     @property
     def t_liftoff_s(self) -> float | None:
@@ -79,6 +89,7 @@ class LiftoffReport:
             "v_liftoff_m_s": self.v_liftoff_m_s,
             "ratio": self.ratio,
             "phi_a": self.case.phi_a,
+            "phi_a_source": self.case.phi_a_source,
             "gamma": self.case.gamma,
             "backend": self.backend,
             "rejected": rejected,
@@ -92,6 +103,7 @@ class LiftoffReport:
             "t_end_s": self.result.t_end * scale.time,
         }
         data.update(self.extra)
+        data["notes"] = self.notes
         return data
 
 
@@ -102,7 +114,7 @@ def t_end_dimensionless(case: Case, t_end_s: float | None) -> float:
     from .errors import ParameterError
 
     if not (math.isfinite(t_end_s) and t_end_s > 0):
-        raise ParameterError("--t-end", "a time > 0 [s]", t_end_s)
+        raise ParameterError("t_end", "a time > 0 [s]", t_end_s)
     return float(t_end_s) / case.scalings.time
 
 

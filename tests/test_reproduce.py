@@ -7,8 +7,8 @@ import os
 import numpy as np
 import pytest
 from twoball.modal.parameters import preset
-from twoball.verify.reproduce import driver as rep
 from twoball.verify.cli.main import main
+from twoball.verify.reproduce import driver as rep
 from twoball.verify.reproduce.cem import (
     OptimumTask,
     ThresholdTask,

@@ -6,8 +6,8 @@ import math
 import numpy as np
 import pytest
 from twoball.modal.parameters import preset
-from twoball.verify.cli import verify as cli_verify
 from twoball.verify.checks.checks import Check, bounded, config, decay_band, run_verify
+from twoball.verify.cli import verify as cli_verify
 from twoball.verify.cli.main import main
 from twoball.verify.output.report_files import write_report_dir
 

@@ -581,8 +581,8 @@ def main_branch(points) -> np.ndarray:
 
 
 def fig12_base() -> Case:
-    """The basketball case with phi_a from eq. (3.7) (as in §5)."""
-    return preset("basketball").derive(v0=4.1)
+    """The basketball case with phi_a from eq. (3.7) (as in §5), not the measured 2.6."""
+    return preset("basketball").derive(phi_a="eq. (3.7)")
 
 
 def fig12_sweeps(ctx: Context) -> dict[tuple[str, float], list]:
