@@ -1,4 +1,4 @@
-"""Bad input gives ParameterError naming the parameter and the valid range (the CLI maps it to a flag)."""
+"""Bad input gives ParameterError naming the parameter and its valid range (the CLI shows flags)."""
 
 from __future__ import annotations
 

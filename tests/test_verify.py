@@ -7,7 +7,6 @@ import numpy as np
 import pytest
 from twoball.modal.parameters import preset
 from twoball.verify.checks.checks import Check, bounded, config, decay_band, run_verify
-from twoball.verify.cli import verify as cli_verify
 from twoball.verify.cli.main import main
 from twoball.verify.output.report_files import write_report_dir
 
@@ -91,7 +90,7 @@ def test_verify_table_and_failing_check_exit_1(capsys, tmp_path, monkeypatch):
     strict = type(strict)(
         "strict", (type(target)(target.spec, 1e-15, target.eigen, target.energy),), ()
     )
-    monkeypatch.setattr(cli_verify, "config", lambda name: strict)
+    monkeypatch.setattr("twoball.verify.checks.checks.config", lambda name: strict)
     code = main(["verify", "--out", str(tmp_path / "r")])
     out = capsys.readouterr().out
     assert code == 1
