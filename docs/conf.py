@@ -12,11 +12,14 @@ sys.path.insert(0, str(ROOT))
 
 with (ROOT / "pyproject.toml").open("rb") as fh:
     _project = tomllib.load(fh)["project"]
+# The version is dynamic (pyproject.toml reads twoball/_version.py): read it there.
+_version: dict[str, str] = {}
+exec((ROOT / "twoball" / "_version.py").read_text(), _version)  # noqa: S102
 
 project = "twoball"
 author = "twoball developers"
 copyright = "twoball developers"
-release = _project["version"]
+release = _project.get("version") or _version["__version__"]
 version = ".".join(release.split(".")[:2])
 
 extensions = [

@@ -95,7 +95,7 @@ def _positive(name: str, value: float) -> float:
 
 @dataclass(frozen=True)
 class Measured:
-    """A preset's measured impact: R [m], c [1/s], |v0| [m/s], phi_a [rad], D, N."""
+    """A preset's measured impact: R [m], c [1/s], ``|v0|`` [m/s], phi_a [rad], D, N."""
 
     radius: float
     wave_speed: float
@@ -105,13 +105,13 @@ class Measured:
     modes: int
 
 
-#: Measured cases (Table 2, Fig. 11): R, c, |v0| and phi_a measured; D fitted once.
+#: Measured cases (Table 2, Fig. 11): R, c, ``|v0|`` and phi_a measured; D fitted once.
 MEASURED: dict[str, Measured] = {
     "basketball": Measured(
         radius=0.12, wave_speed=320.0, v0=4.1, phi_a=2.6, damping=0.13, modes=30
     ),
 }
-#: ``phi_a`` request meaning "derive it from |v0|, R and c by eq. (3.7)".
+#: ``phi_a`` request meaning "derive it from ``|v0|``, R and c by eq. (3.7)".
 FROM_V0 = "eq. (3.7)"
 _SAME = 1e-12  # relative: a typed value equal to the measured one to double precision
 
@@ -134,9 +134,9 @@ class Case:
     """One impact of the lower ball, in SI units, with one rule for phi_a.
 
     The contact angle phi_a is (1) the value given; else (2) the preset's
-    measured phi_a when R, c and |v0| are the preset's own measured values (so
+    measured phi_a when R, c and ``|v0|`` are the preset's own measured values (so
     typing a preset's own value never changes the answer); else (3) derived from
-    |v0|, R and c by eq. (3.7).  :attr:`phi_a_source` says which, and
+    ``|v0|``, R and c by eq. (3.7).  :attr:`phi_a_source` says which, and
     :attr:`phi_a_note` explains when (3) departs from a preset's measured angle.
 
     Parameters
@@ -149,7 +149,7 @@ class Case:
         Impact speed [m/s]; the sign is ignored (``|v0|`` is used).
     phi_a : float or None or "eq. (3.7)"
         Contact (truncation) angle [rad] in (pi/2, pi), eq. (3.3); None: by the
-        rule above; ``"eq. (3.7)"``: from |v0|, R, c by eq. (3.7) in any case.
+        rule above; ``"eq. (3.7)"``: from ``|v0|``, R, c by eq. (3.7) in any case.
     damping : float
         Modal damping ratio D in [0, 1), eq. (3.14).
     modes : int
@@ -223,7 +223,7 @@ class Case:
 
     @property
     def at_measured_point(self) -> bool:
-        """True if R, c and |v0| are the preset's own measured values."""
+        """True if R, c and ``|v0|`` are the preset's own measured values."""
         m = _measured(self.preset_name)
         return (
             m is not None
