@@ -35,6 +35,7 @@ from twoball.modal.errors import NumericalError
 
 from .checks import check_dt, check_rho_inf, check_t_end
 from .damping import ModalDamping
+from .space import PoleFunctional, pole_value
 
 
 @dataclass(frozen=True)
@@ -139,10 +140,13 @@ class GeneralizedAlpha:
             self._mass_lu = splu(sp.csc_matrix(self.mass))
         return self._mass_lu.solve(-(self.stiffness @ u0) - self._damp(v0))
 
-    def run(self, u0: np.ndarray, v0: np.ndarray, t_end: float, pole: int) -> PoleHistory:
+    def run(
+        self, u0: np.ndarray, v0: np.ndarray, t_end: float, pole: PoleFunctional
+    ) -> PoleHistory:
         """Integrate from t = 0 to the first step at or after ``t_end``.
 
-        Returns the pole's u, u_t, u_tt at ``t_n = n dt`` (dimensionless).  The
+        Returns the pole's u, u_t, u_tt at ``t_n = n dt`` (dimensionless); ``pole``
+        is the pole's degree of freedom or the pole functional (a sparse row).  The
         scheme's own acceleration a_{n+1} approximates u'' at t_{n+1} to first
         order only when ``alpha_m != alpha_f`` (rho_inf < 1); the recorded u_tt
         is then the consistent ``M^{-1} (-K u_{n+1} - C v_{n+1})`` (second order,
@@ -157,7 +161,11 @@ class GeneralizedAlpha:
         a = self.initial_acceleration(d, v)
         consistent = p.alpha_m != p.alpha_f
         history = np.empty((steps + 1, 3))
-        history[0] = d[pole], v[pole], a[pole]
+
+        def at(x: np.ndarray) -> float:
+            return pole_value(pole, x)
+
+        history[0] = at(d), at(v), at(a)
         for n in range(steps):
             d_pred = d + dt * v + dt * dt * (0.5 - p.beta) * a
             v_pred = v + dt * (1.0 - p.gamma) * a
@@ -169,9 +177,9 @@ class GeneralizedAlpha:
             d = d_pred + p.beta * dt * dt * a
             v = v_pred + p.gamma * dt * a
             if consistent:  # a_{n+1} of the scheme is only first-order accurate
-                history[n + 1] = d[pole], v[pole], self.initial_acceleration(d, v)[pole]
+                history[n + 1] = at(d), at(v), at(self.initial_acceleration(d, v))
             else:
-                history[n + 1] = d[pole], v[pole], a[pole]
+                history[n + 1] = at(d), at(v), at(a)
         if not np.all(np.isfinite(history)):
             raise NumericalError("generalized-alpha: the solution is not finite")
         t = dt * np.arange(steps + 1)

@@ -78,7 +78,7 @@ from twoball.modal.liftoff import DEFAULT_T_END
 from twoball.modal.series import ModalSeries, check_damping
 
 from .eigen import Eigenpairs
-from .space import Discretisation
+from .space import Discretisation, PoleFunctional, pole_value, pole_vector
 
 TOLERANCE = 1e-10  # relative change of the filtered pole trajectory (u and u_tt)
 SHIFT_COUNT = 3  # default number of shifts (factorisations of K - sigma M)
@@ -263,12 +263,12 @@ def _serial_blas() -> threadpool_limits:
 
 
 def _unpack(
-    problem: Discretisation | tuple[sp.spmatrix, sp.spmatrix, int],
-) -> tuple[sp.csc_matrix, sp.csc_matrix, int]:
+    problem: Discretisation | tuple[sp.spmatrix, sp.spmatrix, PoleFunctional],
+) -> tuple[sp.csc_matrix, sp.csc_matrix, PoleFunctional]:
     if isinstance(problem, Discretisation):
-        return sp.csc_matrix(problem.stiffness), sp.csc_matrix(problem.mass), int(problem.pole)
+        return sp.csc_matrix(problem.stiffness), sp.csc_matrix(problem.mass), problem.pole_row
     K, M, pole = problem
-    return sp.csc_matrix(K), sp.csc_matrix(M), int(pole)
+    return sp.csc_matrix(K), sp.csc_matrix(M), pole
 
 
 def krylov_modal_series(
@@ -294,7 +294,8 @@ def krylov_modal_series(
     Parameters
     ----------
     problem : Discretisation or (K, M, pole)
-        The space (its stiffness, mass and pole dof) or the matrices themselves.
+        The space (its stiffness, mass and pole functional) or the matrices themselves
+        (the pole as a degree of freedom or a sparse row).
     moments : ndarray, shape (dofs,)
         ``b = M u0``; for the Galerkin projection the load ``b_i = int F phi_i dS``.
     damping : float
@@ -369,9 +370,7 @@ def _krylov(
     projected = np.zeros((limit, limit))  # V^T K V, grown block by block
     loads = np.empty(limit)  # V^T b
     size = 0
-    pole_vector = np.zeros(n)
-    pole_vector[pole] = 1.0
-    block = factors[0].solve(np.column_stack([b, pole_vector]))
+    block = factors[0].solve(np.column_stack([b, pole_vector(pole, n)]))
     grid = np.linspace(
         0.0, t_end, math.ceil(t_end * filter.omega_cut * SAMPLES_PER_PERIOD / (2 * math.pi)) + 1
     )
@@ -399,7 +398,8 @@ def _krylov(
         size = end
         # Rayleigh-Ritz on the M-orthonormal basis (V^T M V = I to round-off)
         theta, small = np.linalg.eigh(projected[:size, :size])
-        series = _series(theta, small.T @ loads[:size], basis[pole, :size] @ small, damping, filter)
+        at_pole = pole_value(pole, basis[:, :size])
+        series = _series(theta, small.T @ loads[:size], at_pole @ small, damping, filter)
         current = _trajectory(series, grid)
         trajectories.append(current)
         lag = len(factors)  # one full cycle of shifts
@@ -424,7 +424,7 @@ def _krylov(
     start = clock.perf_counter()
     V = basis[:, :size]
     coefficients = small.T @ loads[:size]
-    pole_values = basis[pole, :size] @ small
+    pole_values = pole_value(pole, basis[:, :size]) @ small
     below = theta <= upper
     weights = filter(np.sqrt(np.clip(theta, 0.0, None))) * coefficients * pole_values
     scale = np.abs(weights) * (1.0 + np.abs(theta))

@@ -30,7 +30,7 @@ from pathlib import Path
 import meshio
 import numpy as np
 from skfem import MeshTri1
-from twoball.modal.errors import ParameterError
+from twoball.modal.errors import NumericalError, ParameterError
 
 from .checks import check_level, check_order
 
@@ -90,10 +90,26 @@ class SphereMesh:
 
     @property
     def pole(self) -> int:
-        """Index of the vertex at the north pole (0, 0, 1)."""
+        """Index of the vertex at the north pole (0, 0, 1).
+
+        Raises ValueError when no vertex lies there (a mesh read from a file may
+        have the pole inside an element: see :attr:`pole_node` and
+        :func:`locate_pole`).
+        """
+        index = int(np.argmax(self.points[: self.vertex_count, 2]))
+        if np.linalg.norm(self.points[index] - POLE) > _POLE_TOLERANCE:
+            raise ValueError(
+                f"{self.name}: no vertex at the north pole (0, 0, 1); "
+                "the pole lies inside an element (see locate_pole)"
+            )
+        return index
+
+    @property
+    def pole_node(self) -> int | None:
+        """Index of the node (vertex or P2 edge node) at the north pole, or None."""
         index = int(np.argmax(self.points[:, 2]))
         if np.linalg.norm(self.points[index] - POLE) > _POLE_TOLERANCE:
-            raise ValueError(f"{self.name}: no vertex at the north pole (0, 0, 1)")
+            return None
         return index
 
     def area(self) -> float:
@@ -324,6 +340,115 @@ def sphere_mesh(level: int, order: int = 1, phi_a: float | None = None) -> Spher
     return ring_sphere(level, phi_a, order)
 
 
+def shape_functions(order: int, xi: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """Lagrange shape functions of the geometry at a reference point.
+
+    The reference triangle is scikit-fem's, with vertices (0, 0), (1, 0), (0, 1);
+    local nodes follow :attr:`SphereMesh.cells` (vertices, then edges 01, 12, 20).
+
+    Parameters
+    ----------
+    order : {1, 2}
+        Geometric order.
+    xi : ndarray, shape (2,)
+        Reference coordinates.
+
+    Returns
+    -------
+    values : ndarray, shape (3,) or (6,)
+    gradients : ndarray, shape (3, 2) or (6, 2)
+        Derivatives with respect to the two reference coordinates.
+    """
+    x, y = float(xi[0]), float(xi[1])
+    w = 1.0 - x - y
+    if order == 1:
+        return np.array([w, x, y]), np.array([[-1.0, -1.0], [1.0, 0.0], [0.0, 1.0]])
+    values = np.array(
+        [w * (2 * w - 1), x * (2 * x - 1), y * (2 * y - 1), 4 * w * x, 4 * x * y, 4 * y * w]
+    )
+    gradients = np.array(
+        [
+            [1 - 4 * w, 1 - 4 * w],
+            [4 * x - 1, 0.0],
+            [0.0, 4 * y - 1],
+            [4 * (w - x), -4 * x],
+            [4 * y, 4 * x],
+            [-4 * y, 4 * (w - y)],
+        ]
+    )
+    return values, gradients
+
+
+_LOCATE_MARGIN = 0.25  # candidate triangles: flat barycentric coordinates >= -margin
+_INSIDE = 1e-12  # a reference point this far outside the triangle still counts as inside
+
+
+def _axis_barycentric(corners: np.ndarray) -> np.ndarray:
+    """Barycentric coordinates (T, 3) of the z-axis in the xy-projection of triangles."""
+    a, b, c = corners[:, 0, :2], corners[:, 1, :2], corners[:, 2, :2]
+    e1, e2 = b - a, c - a
+    det = e1[:, 0] * e2[:, 1] - e1[:, 1] * e2[:, 0]
+    with np.errstate(divide="ignore", invalid="ignore"):
+        l1 = (-a[:, 0] * e2[:, 1] + a[:, 1] * e2[:, 0]) / det
+        l2 = (-e1[:, 0] * a[:, 1] + e1[:, 1] * a[:, 0]) / det
+    out = np.column_stack([1.0 - l1 - l2, l1, l2])
+    out[~np.isfinite(out).all(axis=1)] = -np.inf
+    return out
+
+
+def _newton_on_axis(nodes: np.ndarray, order: int, xi: np.ndarray) -> np.ndarray | None:
+    """Reference point where the element's surface meets the z-axis (x = y = 0), by Newton."""
+    for _ in range(50):
+        values, gradients = shape_functions(order, xi)
+        residual = values @ nodes[:, :2]
+        jacobian = nodes[:, :2].T @ gradients  # d(x, y) / d(xi, eta)
+        try:
+            step = np.linalg.solve(jacobian, residual)
+        except np.linalg.LinAlgError:
+            return None
+        xi = xi - step
+        if np.abs(step).max() < 1e-15:
+            return xi
+    return xi if np.abs(residual).max() < 1e-13 else None
+
+
+def locate_pole(mesh: SphereMesh) -> tuple[int, np.ndarray]:
+    """The element holding the north pole of the discrete surface, and the pole's place in it.
+
+    The pole of a discrete sphere is the point of its surface on the positive
+    z-axis (the radial projection of (0, 0, 1)).  On flat triangles (order 1) it
+    is found from the barycentric coordinates of the axis, on curved six-node
+    triangles (order 2) by Newton's method on the element map, started from the
+    flat estimate.  Dimensionless.
+
+    Returns
+    -------
+    element : int
+        Triangle index.
+    xi : ndarray, shape (2,)
+        Reference coordinates of the pole in that triangle (see :func:`shape_functions`).
+    """
+    corners = mesh.points[mesh.triangles]
+    normal = np.cross(corners[:, 1] - corners[:, 0], corners[:, 2] - corners[:, 0])
+    upper = (corners[:, :, 2].sum(axis=1) > 0.0) & (np.abs(normal[:, 2]) > 0.0)
+    bary = _axis_barycentric(corners)
+    bary[~upper] = -np.inf
+    worst = bary.min(axis=1)
+    candidates = np.flatnonzero(worst >= -_LOCATE_MARGIN)
+    candidates = candidates[np.argsort(-worst[candidates])]
+    for element in candidates:
+        if mesh.order == 1:
+            xi = bary[element, 1:]
+        else:
+            start = np.clip(bary[element, 1:], 0.0, 1.0)
+            xi = _newton_on_axis(mesh.points[mesh.cells[element]], 2, start)
+            if xi is None:
+                continue
+        if min(xi[0], xi[1], 1.0 - xi[0] - xi[1]) >= -_INSIDE:
+            return int(element), np.asarray(xi, dtype=float)
+    raise NumericalError(f"{mesh.name}: no element meets the positive z-axis (the pole)")
+
+
 def topology(mesh: SphereMesh) -> MeshTri1:
     """scikit-fem mesh carrying the connectivity (and the 3D vertices) of ``mesh``.
 
@@ -346,29 +471,18 @@ def write_mesh(path: str | Path, mesh: SphereMesh) -> None:
 
 
 def read_mesh(path: str | Path, ring: float | None = None) -> SphereMesh:
-    """Read a sphere mesh with meshio (``triangle`` or ``triangle6`` cells).
+    """Read a sphere mesh with meshio (``triangle`` or ``triangle6`` cells) onto the unit sphere.
 
-    The points are read by meshio, never through ``skfem.MeshTri.load``, which
-    keeps only x and y.  Unused points are dropped and the nodes renumbered so
-    that vertices come first.  The mesh must have a vertex at the north pole.
+    A thin wrapper of :func:`twoball.fem_membrane.mesh_input.load_sphere_mesh`:
+    the surface is checked (closed, one piece, spherical, consistently oriented),
+    scaled from any radius and centre to the unit sphere with the pole on +z,
+    and its nodes numbered vertices first.  ``ring`` marks a latitude made of
+    mesh edges (see :func:`ring_sphere`).  Points are read by meshio, never
+    through ``skfem.MeshTri.load``, which keeps only x and y.
     """
-    data = meshio.read(str(path))
-    blocks = [b for b in data.cells if b.type in ("triangle", "triangle6")]
-    if len(blocks) != 1:
-        raise ValueError(f"{path}: expected exactly one triangle or triangle6 cell block")
-    cells = np.asarray(blocks[0].data, dtype=np.int64)
-    points = np.asarray(data.points, dtype=float)
-    if points.shape[1] != 3:
-        raise ValueError(f"{path}: points must be three-dimensional")
-    # renumber: vertices first (in order of first use), then edge nodes
-    vertices = np.unique(cells[:, :3])
-    extra = np.setdiff1d(np.unique(cells), vertices)
-    order = np.concatenate([vertices, extra])
-    renumber = np.empty(points.shape[0], dtype=np.int64)
-    renumber[order] = np.arange(order.size)
-    mesh = SphereMesh(points[order], renumber[cells], Path(path).name, ring)
-    _ = mesh.pole  # validates the pole vertex
-    return mesh
+    from .mesh_input import load_sphere_mesh
+
+    return replace(load_sphere_mesh(path).mesh, ring=ring)
 
 
 def min_angle(mesh: SphereMesh) -> float:

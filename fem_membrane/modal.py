@@ -16,12 +16,13 @@ from twoball.modal.filters import SpectralFilter
 from twoball.modal.series import ModalSeries
 
 from .eigen import Eigenpairs
+from .space import PoleFunctional, pole_value
 
 
 def modal_series(
     pairs: Eigenpairs,
     moments: np.ndarray,
-    pole: int,
+    pole: PoleFunctional,
     damping: float,
     filter: SpectralFilter,
 ) -> ModalSeries:
@@ -33,8 +34,9 @@ def modal_series(
         M-orthonormal eigenpairs (all of them below the filter's cutoff).
     moments : ndarray, shape (dofs,)
         ``M u0``; for the Galerkin projection the load ``b_i = int F phi_i dS``.
-    pole : int
-        Degree of freedom at the north pole.
+    pole : int or sparse row
+        Degree of freedom at the north pole, or the pole functional
+        (:attr:`twoball.fem_membrane.space.Discretisation.pole_row`).
     damping : float
         Modal damping ratio D in [0, 1).
     filter : SpectralFilter
@@ -44,13 +46,13 @@ def modal_series(
     -------
     ModalSeries
         ``omega = sqrt(lambda)``, ``coefficients = Phi^T M u0``,
-        ``pole_values = Phi[pole]``, ``mode_norms = 1``.
+        ``pole_values = Phi[pole]`` (the modes at the pole), ``mode_norms = 1``.
     """
     vectors = pairs.vectors
     return ModalSeries(
         omega=pairs.omega,
         coefficients=vectors.T @ moments,
-        pole_values=vectors[pole].copy(),
+        pole_values=np.array(pole_value(pole, vectors)),
         damping=damping,
         filter=filter,
         mode_norms=np.ones(len(pairs)),

@@ -110,7 +110,7 @@ def modal_model(
     start = clock.perf_counter()
     if route == "full":
         pairs = eigenpairs(space.stiffness, space.mass, filter.omega_cut**2)
-        series = modal_series(pairs, moments, space.pole, damping, filter)
+        series = modal_series(pairs, moments, space.pole_row, damping, filter)
         krylov = None
     else:
         series, details = krylov_modal_series(space, moments, damping, filter)
@@ -172,7 +172,7 @@ def alpha_motion(
     start = clock.perf_counter()
     stepper = GeneralizedAlpha(space.mass, space.stiffness, dt, damping, rho_inf)
     u0 = filtered_displacement(series, pairs)
-    history = stepper.run(u0, np.zeros_like(u0), t_end, space.pole)
+    history = stepper.run(u0, np.zeros_like(u0), t_end, space.pole_row)
     info["steps"] = history.t.size - 1
     info["seconds_stepping"] = clock.perf_counter() - start
     # an integrator's u, u_t, u_tt are each O(dt^2), not derivatives of one another

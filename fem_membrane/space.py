@@ -2,8 +2,15 @@
 
 :class:`Discretisation` bundles what every later step needs: the scikit-fem
 basis, stiffness K and mass M (dimensionless, measure of the whole unit sphere),
-the degree of freedom at the north pole, and how to read the polar angle from
-global coordinates.
+the pole functional (the finite-element function's value at the north pole),
+and how to read the polar angle from global coordinates.
+
+The pole functional is a sparse row ``pole_row`` with ``pole_row @ u = u(pole)``:
+the values of the basis functions at the pole in the element that holds it.
+With a node at the pole (every generated mesh) it is the unit row of that
+node's degree of freedom, and :func:`pole_value` reads the entry itself, so
+results are bit-identical to indexing ``u[pole]``; a mesh read from a file may
+have the pole anywhere inside an element.
 """
 
 from __future__ import annotations
@@ -18,7 +25,10 @@ from skfem import CellBasis, ElementTriP1, ElementTriP2, asm
 from .checks import check_order
 from .forms import mass, stiffness
 from .mapping import SurfaceMapping
-from .mesh import SphereMesh, elevate, flatten, topology
+from .mesh import SphereMesh, elevate, flatten, locate_pole, topology
+
+PoleFunctional = int | sp.spmatrix
+"""A degree-of-freedom index at the pole, or a sparse row (1, dofs) evaluating u there."""
 
 TRIANGLE_ELEMENTS = {1: ElementTriP1, 2: ElementTriP2}
 # quadrature degree for K and M: exact on flat P1; curved P2 integrands are rational
@@ -45,8 +55,9 @@ class Discretisation:
         The basis (with the surface mapping on the sphere).
     stiffness, mass : scipy.sparse.csr_matrix
         K and M over the whole unit sphere (axisymmetric forms include 2 pi).
-    pole : int
-        Degree of freedom at the north pole (phi = 0).
+    pole_row : scipy.sparse.csr_matrix, shape (1, dofs)
+        Pole functional: ``pole_row @ u`` is u at the north pole (phi = 0).  An
+        integer given here is turned into the unit row of that degree of freedom.
     kind : str
         ``"sphere"``, ``"ring"`` or ``"axisym"``.
     order : int
@@ -65,7 +76,7 @@ class Discretisation:
     basis: CellBasis
     stiffness: sp.csr_matrix
     mass: sp.csr_matrix
-    pole: int
+    pole_row: sp.csr_matrix
     kind: str
     order: int
     name: str
@@ -73,10 +84,88 @@ class Discretisation:
     polar_cosine: Callable[[np.ndarray], np.ndarray]
     kink: float | None = None
 
+    def __post_init__(self) -> None:
+        self.pole_row = pole_functional(self.pole_row, self.dofs)
+
     @property
     def dofs(self) -> int:
         """Number of degrees of freedom."""
         return int(self.basis.N)
+
+    @property
+    def pole(self) -> int:
+        """The degree of freedom at the north pole; ValueError if the pole is not a node.
+
+        Code that must work for any mesh uses :attr:`pole_row` (or
+        :func:`pole_value`) instead.
+        """
+        index, weights = pole_weights(self.pole_row)
+        if index.size != 1 or weights[0] != 1.0:
+            raise ValueError(
+                f"{self.name}: the pole lies inside an element, not at a degree of "
+                "freedom; evaluate it with pole_row"
+            )
+        return int(index[0])
+
+
+def pole_functional(pole: PoleFunctional, dofs: int) -> sp.csr_matrix:
+    """The pole functional as a sparse row (1, dofs); an index becomes a unit row."""
+    if isinstance(pole, int | np.integer):
+        if not 0 <= int(pole) < dofs:
+            raise ValueError(f"pole index {pole} outside 0 .. {dofs - 1}")
+        return sp.csr_matrix(([1.0], ([0], [int(pole)])), shape=(1, dofs))
+    row = sp.csr_matrix(pole)
+    if row.shape != (1, dofs):
+        raise ValueError(f"pole row must have shape (1, {dofs}), got {row.shape}")
+    return row
+
+
+def pole_weights(pole: PoleFunctional) -> tuple[np.ndarray, np.ndarray]:
+    """Degrees of freedom and weights of the pole functional (an index has weight 1)."""
+    if isinstance(pole, int | np.integer):
+        return np.array([int(pole)]), np.array([1.0])
+    row = sp.csr_matrix(pole)
+    return row.indices.astype(np.int64), row.data.astype(float)
+
+
+def pole_value(pole: PoleFunctional, values: np.ndarray) -> np.ndarray:
+    """``values`` (shape (dofs, ...)) evaluated at the pole: shape ``values.shape[1:]``.
+
+    A unit functional (a node at the pole) returns ``values[index]`` itself, so
+    results are bit-identical to indexing by the pole's degree of freedom.
+    """
+    index, weights = pole_weights(pole)
+    if index.size == 1 and weights[0] == 1.0:
+        return values[index[0]]
+    return np.tensordot(weights, values[index], axes=1)
+
+
+def pole_vector(pole: PoleFunctional, dofs: int) -> np.ndarray:
+    """The pole functional as a dense vector e with ``e @ u = u(pole)``."""
+    index, weights = pole_weights(pole)
+    out = np.zeros(dofs)
+    np.add.at(out, index, weights)
+    return out
+
+
+def surface_pole_row(basis: CellBasis, mesh: SphereMesh) -> sp.csr_matrix:
+    """Pole functional of a sphere basis: basis values at the pole (0, 0, 1) of ``mesh``.
+
+    With a node at the pole it is the unit row of that node's degree of freedom
+    (as for every generated mesh); otherwise the pole is located in its element
+    by :func:`twoball.fem_membrane.mesh.locate_pole` and the row holds the values
+    of that element's basis functions there (they sum to 1).  Dimensionless.
+    """
+    node = mesh.pole_node
+    if node is not None:
+        element, local = np.argwhere(mesh.cells == node)[0]
+        if local < basis.Nbfun:  # the node is one of the element's own nodes
+            return pole_functional(int(basis.element_dofs[local, element]), basis.N)
+    element, xi = locate_pole(mesh)
+    point = xi[:, None]
+    values = np.array([basis.elem.lbasis(point, i)[0][0] for i in range(basis.Nbfun)])
+    dofs = basis.element_dofs[:, element]
+    return sp.csr_matrix((values, (np.zeros(dofs.size, dtype=np.int64), dofs)), shape=(1, basis.N))
 
 
 def surface_basis(mesh: SphereMesh, order: int, intorder: int | None = None) -> CellBasis:
@@ -123,7 +212,7 @@ def sphere_space(mesh: SphereMesh, order: int | None = None) -> Discretisation:
     basis = surface_basis(mesh, order)
     K = asm(stiffness, basis).tocsr()
     M = asm(mass, basis).tocsr()
-    pole = int(basis.nodal_dofs[0, mesh.pole])
+    pole = surface_pole_row(basis, mesh)
     kind = "sphere" if mesh.ring is None else "ring"
     kink = None if mesh.ring is None else float(np.cos(mesh.ring))
     return Discretisation(

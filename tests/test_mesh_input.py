@@ -1,0 +1,456 @@
+"""Sphere meshes from files and mesh objects, and the pole evaluated anywhere in an element.
+
+References: the generated icospheres (same geometry written to real files in
+every format meshio offers and read back), the Legendre series (lift-off of a
+mesh whose pole lies inside an element), exact identities of the pole
+functional (it reproduces the isoparametric coordinates), and bit-identity with
+indexing by the pole's degree of freedom.
+"""
+
+from __future__ import annotations
+
+import math
+import warnings
+
+import meshio
+import numpy as np
+import pytest
+from skfem import MeshTri1, MeshTri2
+from twoball.fem_membrane.alpha import GeneralizedAlpha
+from twoball.fem_membrane.eigen import eigenpairs
+from twoball.fem_membrane.initial import initial_moments
+from twoball.fem_membrane.krylov import krylov_modal_series
+from twoball.fem_membrane.mesh import (
+    SphereMesh,
+    icosphere,
+    locate_pole,
+    read_mesh,
+    ring_sphere,
+    shape_functions,
+)
+from twoball.fem_membrane.mesh_input import MAX_RADIAL_DEVIATION, load_sphere_mesh, rotation_to_z
+from twoball.fem_membrane.modal import modal_series
+from twoball.fem_membrane.space import pole_value, sphere_space
+from twoball.fem_membrane.surface_checks import sphere_fit
+from twoball.modal.errors import ParameterError
+from twoball.modal.filters import SpectralFilter
+from twoball.modal.legendre import legendre_series
+from twoball.modal.liftoff import find_liftoff
+from twoball.modal.parameters import Case
+
+PHI_A, DAMPING = 2.6, 0.13
+FILTER = SpectralFilter("lanczos", 30)
+GAMMA = Case().gamma
+RADIUS = 0.12  # m, the lower ball of the paper's case
+CENTER = np.array([0.031, -0.052, 0.2])  # m
+OFF_NODE_POLES = [(0.31, -0.52, 0.79), (0.8, 0.1, -0.2)]  # directions hitting no node
+
+# (suffix, meshio keyword arguments, orders the format stores, coordinate precision)
+FORMATS = [
+    ("msh", {"file_format": "gmsh22"}, (1, 2), 1e-14),
+    ("msh", {"file_format": "gmsh"}, (1, 2), 1e-14),  # gmsh 4.1
+    ("vtu", {}, (1, 2), 1e-14),
+    ("vtk", {}, (1, 2), 1e-14),
+    ("xdmf", {}, (1, 2), 1e-14),
+    ("stl", {}, (1,), 1e-14),  # ASCII, full precision
+    ("stl", {"binary": True}, (1,), 2e-7),  # float32 coordinates
+    ("obj", {}, (1,), 1e-14),
+    ("ply", {}, (1,), 1e-14),
+    ("off", {}, (1,), 1e-14),
+]
+
+
+def on_ball(mesh: SphereMesh) -> np.ndarray:
+    """Node coordinates of ``mesh`` on the ball of radius 0.12 m around CENTER [m]."""
+    return mesh.points * RADIUS + CENTER
+
+
+def write(path, points, cells, **kwargs) -> None:
+    kind = "triangle" if cells.shape[1] == 3 else "triangle6"
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")  # meshio's notes on tags, 32-bit indices
+        meshio.write(str(path), meshio.Mesh(points, [(kind, cells)]), **kwargs)
+
+
+def liftoff(mesh: SphereMesh):
+    """Lift-off (full eigen route) on a unit-sphere mesh, dimensionless."""
+    space = sphere_space(mesh)
+    pairs = eigenpairs(space.stiffness, space.mass, FILTER.omega_cut**2)
+    series = modal_series(pairs, initial_moments(space, PHI_A), space.pole_row, DAMPING, FILTER)
+    result = find_liftoff(series, GAMMA)
+    assert result.lifted
+    return np.array([result.t, result.velocity])
+
+
+_REFERENCE: dict = {}
+
+
+def reference(level: int, order: int) -> np.ndarray:
+    """Lift-off on the generated icosphere (cached)."""
+    if (level, order) not in _REFERENCE:
+        _REFERENCE[level, order] = liftoff(icosphere(level, order))
+    return _REFERENCE[level, order]
+
+
+def triangle_coordinates(mesh: SphereMesh) -> np.ndarray:
+    """Coordinates per triangle (T, nodes, 3): independent of how the points are numbered."""
+    return mesh.points[mesh.cells]
+
+
+def random_rotation(seed: int) -> np.ndarray:
+    q, r = np.linalg.qr(np.random.default_rng(seed).normal(size=(3, 3)))
+    q = q * np.sign(np.diag(r))
+    return q if np.linalg.det(q) > 0 else -q
+
+
+# --- files ------------------------------------------------------------------------------
+
+
+@pytest.mark.parametrize(
+    ("suffix", "kwargs", "order", "precision"),
+    [(s, k, o, p) for s, k, orders, p in FORMATS for o in orders],
+    ids=lambda v: v if isinstance(v, str) else None,
+)
+def test_file_round_trip_gives_the_generated_mesh(tmp_path, suffix, kwargs, order, precision):
+    generated = icosphere(2, order)
+    path = tmp_path / f"ball.{suffix}"
+    write(path, on_ball(generated), generated.cells, **kwargs)
+    loaded = load_sphere_mesh(path)
+    assert loaded.radius == pytest.approx(RADIUS, rel=precision * 10)
+    assert np.allclose(loaded.center, CENTER, rtol=0, atol=precision * 10 * RADIUS)
+    assert loaded.mesh.order == loaded.source_order == order
+    assert loaded.triangles == len(generated.cells) and loaded.vertices == generated.vertex_count
+    assert loaded.mean_radial_deviation < precision
+    assert not loaded.flipped
+    # float32 puts the pole vertex ~1e-8 off the axis: then the pole lies (just) in an element
+    assert loaded.pole_at_node == (precision < 1e-10)
+    # same triangles, same nodes (up to numbering) on the unit sphere
+    difference = triangle_coordinates(loaded.mesh) - triangle_coordinates(generated)
+    assert np.abs(difference).max() < 20 * precision
+    # the same membrane: lift-off time and velocity agree to round-off (float32: its precision)
+    assert np.allclose(liftoff(loaded.mesh), reference(2, order), rtol=max(1e-10, 50 * precision))
+
+
+def test_read_mesh_accepts_a_ball_of_radius_012(tmp_path):
+    # issue 14: was refused with "no vertex at the north pole"
+    generated = icosphere(1)
+    write(tmp_path / "ball.vtu", on_ball(generated), generated.cells)
+    mesh = read_mesh(tmp_path / "ball.vtu")
+    assert np.abs(np.linalg.norm(mesh.points, axis=1) - 1.0).max() < 1e-14
+    assert np.linalg.norm(mesh.points[mesh.pole] - [0, 0, 1]) < 1e-14
+
+
+@pytest.mark.parametrize("order", [1, 2])
+def test_meshio_and_skfem_objects(order):
+    generated = icosphere(2, order)
+    points, cells = on_ball(generated), generated.cells
+    kind = "triangle" if order == 1 else "triangle6"
+    from_meshio = load_sphere_mesh(meshio.Mesh(points, [(kind, cells)]))
+    # scikit-fem takes 3-D points; it sorts each triangle's corners (orientation is lost)
+    if order == 1:
+        skmesh = MeshTri1(points.T.copy(), cells.T.copy())
+    else:
+        skmesh = MeshTri2(points.T.copy(), cells.T.copy())
+    from_skfem = load_sphere_mesh(skmesh)
+    for loaded in (from_meshio, from_skfem):
+        assert loaded.radius == pytest.approx(RADIUS, rel=1e-14)
+        assert loaded.mesh.order == order
+        assert np.allclose(liftoff(loaded.mesh), reference(2, order), rtol=1e-10)
+    # every scikit-fem triangle re-oriented outward
+    p = from_skfem.mesh.points[from_skfem.mesh.triangles]
+    normal = np.cross(p[:, 1] - p[:, 0], p[:, 2] - p[:, 0])
+    assert np.all(np.einsum("ij,ij->i", normal, p.sum(axis=1)) > 0)
+
+
+def test_p1_file_elevated_to_p2_projects_the_edge_nodes():
+    generated = icosphere(2)
+    loaded = load_sphere_mesh(
+        meshio.Mesh(on_ball(generated), [("triangle", generated.cells)]), order=2
+    )
+    assert loaded.source_order == 1 and loaded.mesh.order == 2
+    assert np.abs(np.linalg.norm(loaded.mesh.points, axis=1) - 1.0).max() < 1e-14
+    assert "elevated to P2" in loaded.description
+    assert np.allclose(liftoff(loaded.mesh), reference(2, 2), rtol=1e-10)
+
+
+def test_unmerged_triangle_soup_is_merged():
+    # every triangle with its own three corners, as STL writers store them
+    generated = icosphere(2)
+    soup = on_ball(generated)[generated.triangles].reshape(-1, 3)
+    cells = np.arange(len(soup)).reshape(-1, 3)
+    loaded = load_sphere_mesh(meshio.Mesh(soup, [("triangle", cells)]))
+    assert loaded.merged_points == len(soup) - generated.vertex_count
+    assert loaded.vertices == generated.vertex_count
+    assert np.allclose(liftoff(loaded.mesh), reference(2, 1), rtol=1e-10)
+
+
+def test_inward_mesh_is_flipped_and_reported():
+    generated = icosphere(2, 2)
+    inward = generated.cells[:, [0, 2, 1, 5, 4, 3]]
+    loaded = load_sphere_mesh(meshio.Mesh(on_ball(generated), [("triangle6", inward)]))
+    assert loaded.flipped and "reversed" in loaded.description
+    assert np.array_equal(loaded.mesh.cells, generated.cells)
+
+
+def test_lines_and_vertices_are_ignored_and_reported():
+    generated = icosphere(1)
+    extra = [("line", np.array([[0, 1], [1, 2]])), ("vertex", np.array([[0]]))]
+    data = meshio.Mesh(on_ball(generated), [("triangle", generated.cells), *extra])
+    loaded = load_sphere_mesh(data)
+    assert loaded.ignored_cells == {"line": 2, "vertex": 1}
+    assert "ignored cells: 2 line, 1 vertex" in loaded.description
+
+
+def test_sphere_fit_is_exact_for_unevenly_spread_points():
+    # a ring sphere crowds vertices near phi_a: their mean is off the centre, the fit is not
+    points = on_ball(ring_sphere(2, PHI_A))
+    center, radius = sphere_fit(points)
+    assert np.linalg.norm(points.mean(axis=0) - CENTER) > 1e-3 * RADIUS
+    assert np.allclose(center, CENTER, atol=1e-15) and radius == pytest.approx(RADIUS, rel=1e-14)
+
+
+# --- the pole -----------------------------------------------------------------------------
+
+
+@pytest.mark.parametrize(
+    "mesh", [icosphere(2), icosphere(2, 2), ring_sphere(2, PHI_A, 2)], ids=["P1", "P2", "ring"]
+)
+def test_pole_node_gives_the_unit_row(mesh):
+    space = sphere_space(mesh)
+    row = space.pole_row
+    assert row.shape == (1, space.dofs) and row.nnz == 1 and row.data[0] == 1.0
+    assert space.pole == row.indices[0] == space.basis.nodal_dofs[0, mesh.pole]
+
+
+def test_pole_row_is_bit_identical_to_the_pole_index():
+    """The functional of a pole node reproduces indexing by its dof exactly, on every route."""
+    space = sphere_space(icosphere(2, 2))
+    moments = initial_moments(space, PHI_A)
+    pairs = eigenpairs(space.stiffness, space.mass, FILTER.omega_cut**2)
+    by_index = modal_series(pairs, moments, space.pole, DAMPING, FILTER)
+    by_row = modal_series(pairs, moments, space.pole_row, DAMPING, FILTER)
+    assert np.array_equal(by_index.pole_values, by_row.pole_values)
+    problem = (space.stiffness, space.mass, space.pole)
+    krylov_index, _ = krylov_modal_series(problem, moments, DAMPING, FILTER, residuals=False)
+    krylov_row, _ = krylov_modal_series(space, moments, DAMPING, FILTER, residuals=False)
+    for name in ("omega", "coefficients", "pole_values"):
+        assert np.array_equal(getattr(krylov_index, name), getattr(krylov_row, name))
+    stepper = GeneralizedAlpha(space.mass, space.stiffness, 0.01)
+    u0 = pairs.vectors @ (by_row.weights * by_row.coefficients)
+    a = stepper.run(u0, np.zeros_like(u0), 0.3, space.pole)
+    b = stepper.run(u0, np.zeros_like(u0), 0.3, space.pole_row)
+    assert np.array_equal(np.stack([a.u, a.u_t, a.u_tt]), np.stack([b.u, b.u_t, b.u_tt]))
+
+
+@pytest.mark.parametrize("order", [1, 2])
+@pytest.mark.parametrize("pole", OFF_NODE_POLES)
+def test_pole_inside_an_element_reproduces_the_coordinates(order, pole):
+    loaded = load_sphere_mesh(icosphere(2, order), pole=pole)
+    assert not loaded.pole_at_node and "inside an element" in loaded.description
+    space = sphere_space(loaded.mesh)
+    row = space.pole_row
+    assert row.nnz == 3 * order  # the values of one element's basis functions
+    assert row.sum() == pytest.approx(1.0, abs=1e-14)
+    with pytest.raises(ValueError, match="inside an element"):
+        _ = space.pole
+    # isoparametric: the coordinate functions lie in the space, so the functional
+    # returns the coordinates of the pole point itself -- on the z-axis, on the surface
+    nodes = space.basis.doflocs  # (3, dofs), the node of each degree of freedom
+    x, y, z = pole_value(row, nodes.T)
+    assert abs(x) < 1e-15 and abs(y) < 1e-15
+    sag = 0.05 if order == 1 else 1e-3  # chord and P2 interpolation of the sphere at level 2
+    assert 1.0 - sag < z < 1.0
+    element, xi = locate_pole(loaded.mesh)
+    values, _ = shape_functions(order, xi)
+    point = values @ loaded.mesh.points[loaded.mesh.cells[element]]
+    assert np.allclose(point, [x, y, z], atol=1e-15)
+
+
+def test_pole_direction_on_x_gives_the_reference_result():
+    # built with the pole vertex on +x; --pole 1,0,0 turns it back to +z
+    generated = icosphere(2, 2)
+    turn = rotation_to_z(np.array([1.0, 0.0, 0.0])).T  # takes +z to +x
+    points = on_ball(SphereMesh(generated.points @ turn.T, generated.cells))
+    for pole in [(1, 0, 0), "1,0,0", (2.5, 0.0, 0.0)]:
+        loaded = load_sphere_mesh(meshio.Mesh(points, [("triangle6", generated.cells)]), pole=pole)
+        assert loaded.pole_at_node
+        assert np.allclose(loaded.pole, [1, 0, 0])
+        assert np.allclose(liftoff(loaded.mesh), reference(2, 2), rtol=1e-10)
+
+
+@pytest.mark.parametrize("seed", [1, 2])
+def test_rotated_mesh_turned_back_gives_the_reference_result(seed):
+    generated = icosphere(2, 1)
+    turn = random_rotation(seed)
+    rotated = SphereMesh(generated.points @ turn.T, generated.cells)
+    loaded = load_sphere_mesh(rotated, pole=turn @ [0.0, 0.0, 1.0])
+    assert loaded.pole_at_node
+    assert np.allclose(liftoff(loaded.mesh), reference(2, 1), rtol=1e-10)
+
+
+@pytest.mark.parametrize(("level", "order"), [(2, 2), (3, 1)])
+@pytest.mark.parametrize("pole", OFF_NODE_POLES)
+def test_pole_inside_an_element_agrees_within_the_discretisation_error(level, order, pole):
+    """Same mesh with the pole inside an element instead of at a vertex.
+
+    The two are different discretisations of the same membrane, so they may
+    differ by the discretisation error, but not by more: the tolerance is the
+    vertex-pole mesh's own error against the Legendre series (eq. (3.16)),
+    ``|x_inside - x_vertex| <= |x_vertex - x_legendre|`` for lift-off time and
+    velocity.  Measured: at most 0.6 of that bound (P1 level 3 velocity).
+    """
+    exact = find_liftoff(legendre_series(PHI_A, DAMPING, FILTER), GAMMA)
+    exact = np.array([exact.t, exact.velocity])
+    vertex = reference(level, order)
+    inside = liftoff(load_sphere_mesh(icosphere(level, order), pole=pole).mesh)
+    assert np.all(np.abs(inside - vertex) <= np.abs(vertex - exact))
+
+
+def test_krylov_route_with_the_pole_inside_an_element():
+    # the Krylov start block holds the functional itself: same series as the full route
+    space = sphere_space(load_sphere_mesh(icosphere(2), pole=OFF_NODE_POLES[0]).mesh)
+    moments = initial_moments(space, PHI_A)
+    pairs = eigenpairs(space.stiffness, space.mass, FILTER.omega_cut**2)
+    full = find_liftoff(modal_series(pairs, moments, space.pole_row, DAMPING, FILTER), GAMMA)
+    series, info = krylov_modal_series(space, moments, DAMPING, FILTER, residuals=False)
+    krylov = find_liftoff(series, GAMMA)
+    assert info.converged
+    assert krylov.t == pytest.approx(full.t, rel=1e-9)
+    assert krylov.velocity == pytest.approx(full.velocity, rel=1e-8)
+
+
+def test_time_stepping_evaluates_the_pole_functional():
+    # the stepped pole history is the functional's weighted sum of the nodal histories
+    space = sphere_space(load_sphere_mesh(icosphere(1), pole=OFF_NODE_POLES[1]).mesh)
+    stepper = GeneralizedAlpha(space.mass, space.stiffness, 0.02, rho_inf=0.8)
+    u0 = np.cos(np.arange(space.dofs))
+    row = space.pole_row
+    history = stepper.run(u0, np.zeros_like(u0), 0.4, row)
+    nodal = [stepper.run(u0, np.zeros_like(u0), 0.4, int(i)) for i in row.indices]
+    for name in ("u", "u_t", "u_tt"):
+        combined = sum(w * getattr(h, name) for w, h in zip(row.data, nodal, strict=True))
+        assert np.allclose(getattr(history, name), combined, rtol=0, atol=1e-13)
+
+
+# --- refusals -----------------------------------------------------------------------------
+
+
+def refused(source, match: str, **kwargs) -> str:
+    with pytest.raises(ParameterError, match=match) as info:
+        load_sphere_mesh(source, **kwargs)
+    message = str(info.value)
+    assert "\n" not in message
+    return message
+
+
+def test_refuses_a_mesh_without_triangles():
+    points = on_ball(icosphere(1))
+    message = refused(meshio.Mesh(points, [("line", np.array([[0, 1]]))]), "triangle")
+    assert message.startswith("--mesh-file") and "1 line" in message
+    quads = [("triangle", icosphere(1).cells), ("quad", np.array([[0, 1, 2, 3]]))]
+    refused(meshio.Mesh(points, quads), "1 quad")
+
+
+def test_refuses_mixed_orders():
+    mesh = icosphere(1, 2)
+    cells = [("triangle", mesh.cells[:40, :3]), ("triangle6", mesh.cells[40:])]
+    refused(meshio.Mesh(on_ball(mesh), cells), "40 triangle and 40 triangle6")
+
+
+def test_refuses_holes():
+    mesh = icosphere(2)
+    message = refused(meshio.Mesh(on_ball(mesh), [("triangle", mesh.cells[2:])]), "closed")
+    assert "4 boundary edges (holes)" in message  # two neighbours removed: a 4-gon hole
+
+
+def test_refuses_non_manifold_edges():
+    mesh = icosphere(2)
+    cells = np.vstack([mesh.cells, mesh.cells[:1]])  # one triangle twice
+    refused(meshio.Mesh(on_ball(mesh), [("triangle", cells)]), "3 non-manifold edges")
+
+
+def test_refuses_inconsistent_orientation():
+    mesh = icosphere(2)
+    cells = mesh.cells.copy()
+    cells[[3, 50, 70]] = cells[[3, 50, 70]][:, [0, 2, 1]]
+    message = refused(meshio.Mesh(on_ball(mesh), [("triangle", cells)]), "consistently oriented")
+    assert "3 of 320 triangles oriented opposite" in message
+
+
+def test_refuses_noisy_radii_and_accepts_small_noise():
+    mesh = icosphere(2)
+    rng = np.random.default_rng(0)
+    for amplitude, accepted in [(3e-4, False), (1e-6, True)]:
+        noise = 1.0 + amplitude * rng.uniform(-1.0, 1.0, size=(len(mesh.points), 1))
+        data = meshio.Mesh(
+            on_ball(SphereMesh(mesh.points * noise, mesh.cells)), [("triangle", mesh.cells)]
+        )
+        if accepted:
+            loaded = load_sphere_mesh(data)
+            # mean |uniform(-a, a)| = a / 2
+            assert loaded.mean_radial_deviation == pytest.approx(amplitude / 2, rel=0.2)
+        else:
+            message = refused(data, "mean radial deviation")
+            found = float(message.split("mean radial deviation ")[1].split()[0])
+            assert found == pytest.approx(amplitude / 2, rel=0.2) and found > MAX_RADIAL_DEVIATION
+
+
+def test_refuses_two_spheres():
+    mesh = icosphere(1)
+    points = np.vstack([mesh.points, mesh.points + [3.0, 0.0, 0.0]])
+    cells = np.vstack([mesh.cells, mesh.cells + len(mesh.points)])
+    refused(meshio.Mesh(points, [("triangle", cells)]), "2 separate surfaces")
+
+
+def test_refuses_a_torus():
+    n, m = 24, 12
+    u, v = np.meshgrid(2 * np.pi * np.arange(n) / n, 2 * np.pi * np.arange(m) / m, indexing="ij")
+    points = np.column_stack(
+        [
+            ((2 + np.cos(v)) * np.cos(u)).ravel(),
+            ((2 + np.cos(v)) * np.sin(u)).ravel(),
+            np.sin(v).ravel(),
+        ]
+    )
+    i, j = np.meshgrid(np.arange(n), np.arange(m), indexing="ij")
+    a, b = i * m + j, ((i + 1) % n) * m + j
+    c, d = ((i + 1) % n) * m + (j + 1) % m, i * m + (j + 1) % m
+    cells = np.vstack(
+        [
+            np.column_stack([a.ravel(), b.ravel(), c.ravel()]),
+            np.column_stack([a.ravel(), c.ravel(), d.ravel()]),
+        ]
+    )
+    refused(meshio.Mesh(points, [("triangle", cells)]), r"V - E \+ F = 0")
+
+
+def test_refuses_degenerate_and_non_conforming_cells():
+    mesh = icosphere(1)
+    cells = mesh.cells.copy()
+    cells[0, 1] = cells[0, 0]
+    refused(meshio.Mesh(on_ball(mesh), [("triangle", cells)]), "repeated corner")
+    curved = icosphere(1, 2)
+    points = np.vstack([curved.points, curved.points[curved.cells[0, 3]] * 0.9999])
+    cells = curved.cells.copy()
+    cells[0, 3] = len(curved.points)  # a second node on an edge already holding one
+    refused(meshio.Mesh(points, [("triangle6", cells)]), "edge nodes")
+
+
+def test_refuses_bad_files_and_flat_points(tmp_path):
+    refused(tmp_path / "missing.msh", "no such file")
+    garbage = tmp_path / "garbage.vtu"
+    garbage.write_text("not a mesh")
+    refused(garbage, "meshio can read")
+    mesh = icosphere(1)
+    refused(meshio.Mesh(mesh.points[:, :2], [("triangle", mesh.cells)]), "three-dimensional")
+
+
+@pytest.mark.parametrize("pole", [(0, 0, 0), (math.nan, 0, 1), (1, 2), "a,b,c", (1, 2, math.inf)])
+def test_refuses_bad_pole(pole):
+    with pytest.raises(ParameterError, match="--pole must be three finite numbers"):
+        load_sphere_mesh(icosphere(1), pole=pole)
+
+
+def test_refuses_bad_order():
+    with pytest.raises(ParameterError, match="--order must be 1 or 2"):
+        load_sphere_mesh(icosphere(1), order=3)
