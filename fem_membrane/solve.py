@@ -44,6 +44,7 @@ from .damping import RAYLEIGH_LOW, ModalDamping, RayleighDamping
 from .eigen import Eigenpairs, eigenpairs
 from .initial import initial_moments
 from .krylov import ROUTES, choose_route, krylov_modal_series
+from .mesh import SphereMesh
 from .modal import filtered_displacement, modal_series
 from .space import Discretisation
 
@@ -187,10 +188,10 @@ def fem_pole_motion(
     damping: float,
     filter: SpectralFilter | FilterKind = "lanczos",
     *,
-    mesh: str = "sphere",
+    mesh: str | SphereMesh = "sphere",
     level: int | None = None,
     elements: int | None = None,
-    order: int = 2,
+    order: int | None = 2,
     time: str = "modal",
     damping_model: str = "modal",
     dt: float | None = None,
@@ -215,14 +216,17 @@ def fem_pole_motion(
     filter : SpectralFilter or {"lanczos", "printed", "none"}
         Spectral filter; a kind name uses N = 30.  Its ``omega_cut`` is the
         eigenvalue cutoff, also for ``"none"``.
-    mesh : {"sphere", "ring", "axisym"}
-        Icosphere, sphere with a ring of edges at phi_a, or axisymmetric line.
+    mesh : {"sphere", "ring", "axisym"} or SphereMesh
+        Icosphere, sphere with a ring of edges at phi_a, axisymmetric line, or
+        a unit-sphere mesh such as a loaded file's
+        (:func:`twoball.fem_membrane.mesh_input.load_sphere_mesh`).
     level : int, optional
         Sphere refinement level >= 0 (``--level``, default 3).
     elements : int, optional
         Axisymmetric elements >= 2 (``--elements``, default 400).
-    order : {1, 2}
-        P1 on flat triangles or isoparametric P2 (``--order``).
+    order : {1, 2}, optional
+        P1 on flat triangles or isoparametric P2 (``--order``); None with a
+        SphereMesh: the mesh's own order.
     time : {"modal", "alpha"}
         Modal superposition or generalized-alpha stepping (``--time``).
     route : {"auto", "full", "krylov"}

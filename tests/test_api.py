@@ -117,6 +117,66 @@ def test_eigen_api_equals_cli(capsys):
     assert all(r["relative_error"] < 1e-4 for r in cli[3:])
 
 
+# --------------------------------------------------------------------------- mesh files
+@pytest.fixture(scope="module")
+def ball_file(tmp_path_factory):
+    """An icosphere of level 2 as a 0.12 m ball centred at (1, 2, 3), written by meshio."""
+    import meshio
+    from twoball.fem_membrane.mesh import icosphere
+
+    mesh = icosphere(2, 1)
+    points = mesh.points * 0.12 + np.array([1.0, 2.0, 3.0])
+    path = tmp_path_factory.mktemp("mesh") / "ball.vtu"
+    meshio.write(path, meshio.Mesh(points, [("triangle", mesh.cells)]))
+    return path, points, mesh.cells
+
+
+def test_mesh_file_api_equals_cli(capsys, ball_file):
+    path, points, cells = ball_file
+    argv = ("--backend", "fem", "--mesh-file", str(path), "--order", "2", "--v0", "3")
+    cli, _ = cli_json(capsys, "liftoff", *argv)
+    case = twoball.Case.preset("basketball", v0=3.0)
+    api = twoball.liftoff(case, backend="fem", mesh=str(path), order=2)
+    same_numbers(api.as_dict(), cli)
+    assert cli["mesh_file"]["radius"] == pytest.approx(0.12, rel=1e-12)
+    assert cli["mesh_file"]["center"] == pytest.approx([1.0, 2.0, 3.0], rel=1e-12)
+    # the same mesh as an object (meshio.Mesh, scikit-fem MeshTri): the same numbers up to
+    # round-off (the readers hand over the points in different layouts)
+    import meshio
+    from skfem import MeshTri1
+
+    for source in (meshio.read(path), MeshTri1(points.T, cells.T)):
+        again = twoball.fem.solve(case, mesh=source, order=2)
+        assert again.t_liftoff_s == pytest.approx(api.t_liftoff_s, rel=1e-12)
+        assert again.v_liftoff_m_s == pytest.approx(api.v_liftoff_m_s, rel=1e-12)
+    # second method: the generated icosphere it was written from, up to round-off of the
+    # translation and scaling (a discretisation difference would be ~1e-3)
+    generated = twoball.fem.solve(case, mesh="sphere", level=2, order=2)
+    assert api.t_liftoff_s == pytest.approx(generated.t_liftoff_s, rel=1e-9)
+    assert api.v_liftoff_m_s == pytest.approx(generated.v_liftoff_m_s, rel=1e-9)
+
+
+def test_mesh_file_eigen_and_refusals(capsys, ball_file):
+    path = ball_file[0]
+    cli, _ = cli_json(capsys, "eigen", "--mesh-file", str(path), "--count", "3")
+    assert twoball.fem.eigen(mesh=path, count=3) == cli
+    assert [r["l"] for r in cli] == [0, 1, 1, 1]
+    for argv, line in (
+        (["--level", "2"], "--level must be left out with a mesh file"),
+        (["--pole", "1,0"], "--pole must be"),
+    ):
+        with pytest.raises(SystemExit) as stop:
+            main(["liftoff", "--backend", "fem", "--mesh-file", str(path), *argv])
+        err = capsys.readouterr().err
+        assert stop.value.code == 2 and err.startswith(f"twoball: error: {line}"), err
+    with pytest.raises(SystemExit):
+        main(["liftoff", "--mesh-file", str(path)])
+    assert capsys.readouterr().err.startswith("twoball: error: --mesh-file must be left out")
+    with pytest.raises(twoball.ParameterError) as error:
+        twoball.export("x.vtu", mesh=path)
+    assert error.value.name == "mesh"
+
+
 # --------------------------------------------------------------------------- phi_a rule
 def test_phi_a_rule_given_measured_or_eq_3_7():
     assert twoball.Case().phi_a_source == "measured (basketball)" and twoball.Case().phi_a == 2.6

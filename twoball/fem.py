@@ -21,10 +21,11 @@ __all__ = ["eigen", "solve"]
 def solve(
     case: Case | None = None,
     *,
-    mesh: str | None = None,
+    mesh: Any = None,
     level: int | None = None,
     elements: int | None = None,
     order: int | None = None,
+    pole: Any = None,
     time: str | None = None,
     dt: float | None = None,
     route: str | None = None,
@@ -39,14 +40,19 @@ def solve(
     ----------
     case : Case, optional
         The impact (SI); default the basketball preset.
-    mesh : {"sphere", "ring", "axisym"}, optional
-        Mesh kind (default ``sphere``), see :class:`twoball.mesh_options.MeshOptions`.
+    mesh : {"sphere", "ring", "axisym"}, path, meshio.Mesh or scikit-fem mesh, optional
+        Mesh kind (default ``sphere``), or the user's sphere: a file in any
+        format meshio reads, a ``meshio.Mesh`` or a ``MeshTri`` (any radius and
+        centre; it is scaled to the unit sphere), see
+        :class:`twoball.mesh_options.MeshOptions`.
     level : int, optional
-        Sphere refinement level >= 0 (default 3); not with ``axisym``.
+        Sphere refinement level >= 0 (default 3); not with ``axisym`` or a file.
     elements : int, optional
         Elements >= 2 of ``axisym`` (default 400); not with a sphere.
     order : {1, 2}, optional
-        Element and geometry order (default 2).
+        Element and geometry order (default 2; a file: its own).
+    pole : (x, y, z) or "X,Y,Z", optional
+        Pole direction of a mesh file, in its frame (default +z).
     time : {"modal", "alpha"}, optional
         Modal superposition, eqs. (3.14)-(3.16) (default), or generalized-alpha stepping.
     dt : float, optional
@@ -72,7 +78,7 @@ def solve(
     from twoball.modal.report import report_liftoff, t_end_dimensionless
 
     case = Case.preset("basketball") if case is None else case
-    spec = MeshOptions.resolve(mesh, level=level, elements=elements, order=order)
+    spec = MeshOptions.resolve(mesh, level=level, elements=elements, order=order, pole=pole)
     time = "modal" if time is None else time
     if time == "modal":
         if dt is not None:
@@ -89,14 +95,15 @@ def solve(
 
         dt_scaled = check_dt(dt) / case.scalings.time
     started = clock.perf_counter()
+    loaded = spec.load()  # the user's mesh, checked, on the unit sphere (None for a kind)
     motion, info = fem_pole_motion(
         case.phi_a,
         case.damping,
         SpectralFilter(sigma, case.modes),
-        mesh=spec.kind,
+        mesh=spec.kind if loaded is None else loaded.mesh,
         level=spec.level,
         elements=spec.elements,
-        order=spec.order,
+        order=spec.order if loaded is None else None,
         time=time,
         damping_model="modal" if damping_model is None else damping_model,
         dt=dt_scaled,
@@ -113,6 +120,9 @@ def solve(
         "damping_model": info["damping_model"],
         "seconds": clock.perf_counter() - started,
     }
+    if loaded is not None:
+        extra["mesh_file"] = loaded.as_dict()
+        extra["mesh_description"] = loaded.description
     if "dt" in info:
         extra["dt_s"] = info["dt"] * case.scalings.time
     if "rayleigh" in info:
@@ -124,10 +134,11 @@ def solve(
 
 def eigen(
     *,
-    mesh: str | None = None,
+    mesh: Any = None,
     level: int | None = None,
     elements: int | None = None,
     order: int | None = None,
+    pole: Any = None,
     count: int = 25,
 ) -> list[dict[str, float | int]]:
     """The lowest ``count`` nonzero eigenvalues of -Laplace-Beltrami beside l (l + 1), eq. (3.11).
@@ -138,7 +149,10 @@ def eigen(
     """
     from twoball.fem_membrane.eigen import eigen_table
 
-    spec = MeshOptions.resolve(mesh, level=level, elements=elements, order=order)
+    spec = MeshOptions.resolve(mesh, level=level, elements=elements, order=order, pole=pole)
+    loaded = spec.load()
+    if loaded is not None:
+        return eigen_table(mesh=loaded.mesh, order=None, count=count)
     return eigen_table(
         mesh=spec.kind, level=spec.level, elements=spec.elements, order=spec.order, count=count
     )

@@ -116,7 +116,7 @@ def ball_model_of(
     """Solve ``case`` with ``backends`` on the sphere mesh of the options (see ``BallModel``)."""
     from twoball.verify.output.fields import ball_model
 
-    spec = MeshOptions.resolve(mesh, level=level, order=order, kinds=SPHERE_KINDS)
+    spec = MeshOptions.resolve(mesh, level=level, order=order, kinds=SPHERE_KINDS, files=False)
     if initial not in INITIAL_METHODS:
         raise ParameterError("initial", "one of " + ", ".join(INITIAL_METHODS), initial)
     return ball_model(
@@ -166,6 +166,7 @@ def export(
         Frame times [s] instead of ``frames``.
     mesh, level, order
         Sphere mesh (``sphere`` or ``ring``), level (default 3), order (default 2).
+        Mesh files are not taken here yet (the fields are evaluated on generated meshes).
     initial : {"projection", "interpolation"}
         FE representation of the initial displacement, eq. (3.10).
     sigma, recontact, t_end
@@ -185,7 +186,7 @@ def export(
     fmt = series_format(out, format)
     target = check_output_path(out)
     _check_backend(backend)
-    MeshOptions.resolve(mesh, level=level, order=order, kinds=SPHERE_KINDS)
+    MeshOptions.resolve(mesh, level=level, order=order, kinds=SPHERE_KINDS, files=False)
     if frames is not None and times is not None:
         raise ParameterError("frames", "left out when times are given", frames)
     if times is not None:
@@ -294,7 +295,7 @@ def render(
     if kind != ".png" and time is not None:
         raise ParameterError("time", "used with .png only (use frames for animations)", time)
     frames = None if frames is None else check_frames(frames)
-    MeshOptions.resolve(mesh, level=level, order=order, kinds=SPHERE_KINDS)
+    MeshOptions.resolve(mesh, level=level, order=order, kinds=SPHERE_KINDS, files=False)
     times = None
     if time is not None:
         times = check_times(window(case, t_end), [time], "time")

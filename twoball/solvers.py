@@ -27,10 +27,11 @@ def liftoff(
     sigma: str = "lanczos",
     recontact: str = "window",
     t_end: float | None = None,
-    mesh: str | None = None,
+    mesh: Any = None,
     level: int | None = None,
     elements: int | None = None,
     order: int | None = None,
+    pole: Any = None,
     time: str | None = None,
     dt: float | None = None,
     route: str | None = None,
@@ -51,9 +52,10 @@ def liftoff(
         Re-contact horizon of criterion (ii), §3(a).
     t_end : float, optional
         Modelled window [s] (default 4 pi / c).
-    mesh, level, elements, order, time, dt, route, damping_model
-        Finite-element options (see :func:`twoball.fem.solve`); refused with
-        ``backend="legendre"``.
+    mesh, level, elements, order, pole, time, dt, route, damping_model
+        Finite-element options (see :func:`twoball.fem.solve`; ``mesh`` may be a
+        kind name or the user's mesh: a file path, ``meshio.Mesh`` or ``MeshTri``);
+        refused with ``backend="legendre"``.
 
     Returns
     -------
@@ -69,6 +71,7 @@ def liftoff(
         "level": level,
         "elements": elements,
         "order": order,
+        "pole": pole,
         "time": time,
         "dt": dt,
         "route": route,

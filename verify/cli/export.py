@@ -82,7 +82,7 @@ def register(parser: argparse.ArgumentParser) -> None:
         "displacement vector u n, and u_fem, u_legendre, u_diff; lift-off in field data."
     )
     add_case_options(parser)
-    add_mesh_options(parser, SPHERE_KINDS, initial=True)
+    add_mesh_options(parser, SPHERE_KINDS, initial=True, files=False)
     add_backend_option(parser)
     parser.add_argument(
         "--format",

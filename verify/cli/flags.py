@@ -9,6 +9,8 @@ table (already a flag, or internal) are printed as they are.
 
 from __future__ import annotations
 
+from argparse import Namespace
+
 from twoball.modal.errors import ParameterError
 
 FLAGS: dict[str, str] = {
@@ -74,14 +76,25 @@ FLAGS: dict[str, str] = {
 }
 
 
-def flag_of(name: str) -> str:
-    """The command-line flag of parameter ``name`` (``name`` itself if it has none)."""
+def flag_of(name: str, args: Namespace | None = None) -> str:
+    """The command-line flag of parameter ``name`` (``name`` itself if it has none).
+
+    ``mesh`` is ``--mesh-file`` when the mesh came from ``--mesh-file`` (the API
+    takes a kind name or a file as the same ``mesh`` argument).
+    """
+    if name == "mesh" and getattr(args, "mesh_file", None) is not None:
+        return "--mesh-file"
     return FLAGS.get(name, name)
 
 
-def cli_message(error: ParameterError) -> str:
-    """``error`` as one line naming the flag: ``--damping must be in [0, 1), got 2.0``."""
-    text = f"{flag_of(error.name)} must be {error.valid}"
-    if error.got is not None:
-        text += f", got {error.got!r}"
+def cli_message(error: ParameterError, args: Namespace | None = None) -> str:
+    """``error`` as one line naming the flag: ``--damping must be in [0, 1), got 2.0``.
+
+    The message keeps its own wording; only the parameter name it starts with
+    becomes the flag.
+    """
+    text = " ".join(str(error).split())  # one line
+    name = str(error.name)
+    if text.startswith(name):
+        return flag_of(name, args) + text[len(name) :]
     return text

@@ -124,7 +124,7 @@ def main(argv: Sequence[str] | None = None) -> int:
     except ParameterError as error:
         from twoball.verify.cli.flags import cli_message
 
-        fail(cli_message(error))
+        fail(cli_message(error, args))
     except NumericalError as error:
         fail(f"numerical trouble: {error}", EXIT_NUMERICAL)
     except BrokenPipeError:  # output piped into a reader that stopped (e.g. `head`)

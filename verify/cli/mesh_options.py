@@ -11,6 +11,7 @@ on a sphere, ``--dt`` with ``--time modal``, any of them with ``--backend legend
 from __future__ import annotations
 
 import argparse
+from pathlib import Path
 from typing import Any
 
 from twoball.mesh_options import (
@@ -39,17 +40,32 @@ def add_mesh_options(
     kinds: tuple[str, ...] = MESH_KINDS,
     *,
     initial: bool = False,
+    files: bool = True,
 ) -> None:
-    """``--mesh``, ``--level`` (and ``--elements`` if ``axisym`` is a kind), ``--order``.
+    """``--mesh`` | ``--mesh-file`` (with ``--pole``), ``--level`` | ``--elements``, ``--order``.
 
     Defaults are None here: the public API fills them in (level 3, 400
-    elements, order 2) and refuses options that do not apply.
+    elements, order 2) and refuses options that do not apply.  ``--elements``
+    exists if ``axisym`` is a kind, ``--mesh-file`` and ``--pole`` if ``files``.
     """
     group = parser.add_argument_group("finite-element mesh")
-    group.add_argument(
+    which = group.add_mutually_exclusive_group()
+    which.add_argument(
         "--mesh",
         help=", ".join(_KIND_HELP[k] for k in kinds) + "; default sphere",
     )
+    if files:
+        which.add_argument(
+            "--mesh-file",
+            metavar="PATH",
+            help="your own sphere mesh: any file meshio reads (.msh, .vtu, .stl, ...), "
+            "any radius and centre, 3- or 6-node triangles",
+        )
+        group.add_argument(
+            "--pole",
+            metavar="X,Y,Z",
+            help="with --mesh-file: direction of the pole in the file's frame (default 0,0,1)",
+        )
     sizes = group.add_mutually_exclusive_group()
     sizes.add_argument(
         "--level", type=int, help=f"sphere refinement level >= 0 (default {DEFAULT_LEVEL})"
@@ -93,9 +109,15 @@ def add_time_options(parser: argparse.ArgumentParser) -> None:
 
 
 def mesh_arguments(args: argparse.Namespace) -> dict[str, Any]:
-    """The mesh options given on the command line, as keyword arguments of the API."""
-    names = ("mesh", "level", "elements", "order", "initial")
-    return {n: getattr(args, n) for n in names if hasattr(args, n)}
+    """The mesh options given on the command line, as keyword arguments of the API.
+
+    ``--mesh-file PATH`` becomes ``mesh=Path(PATH)`` (a path, never a kind name).
+    """
+    names = ("mesh", "level", "elements", "order", "pole", "initial")
+    options = {n: getattr(args, n) for n in names if hasattr(args, n)}
+    if getattr(args, "mesh_file", None) is not None:
+        options["mesh"] = Path(args.mesh_file)
+    return options
 
 
 def time_arguments(args: argparse.Namespace) -> dict[str, Any]:

@@ -82,7 +82,7 @@ def register(parser: argparse.ArgumentParser) -> None:
     )
     parser.add_argument("kind", metavar="KIND", help="waterfall, pole or eigen")
     add_case_options(parser)
-    add_mesh_options(parser, SPHERE_KINDS, initial=True)
+    add_mesh_options(parser, SPHERE_KINDS, initial=True, files=False)
     parser.add_argument(
         "--backends", default="fem,legendre", help="solvers drawn (default fem,legendre)"
     )

@@ -75,7 +75,7 @@ def register(parser: argparse.ArgumentParser) -> None:
         "and coloured by u [mm], the upper body on the pole and in free flight after lift-off."
     )
     add_case_options(parser)
-    add_mesh_options(parser, SPHERE_KINDS, initial=True)
+    add_mesh_options(parser, SPHERE_KINDS, initial=True, files=False)
     add_backend_option(parser)
     parser.add_argument("--out", required=True, metavar="FILE", help="FILE.png, .gif or .mp4")
     group = parser.add_mutually_exclusive_group()
