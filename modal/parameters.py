@@ -212,8 +212,11 @@ class Case:
         if not (math.pi / 2 < phi_a < math.pi):
             raise ParameterError("phi_a", PHI_A_RANGE, self.phi_a)
         source = self.phi_a_source or "given"
-        if source == FROM_V0 or source == "given":
+        if source == "given":
             return phi_a, source
+        if source == FROM_V0:  # kept through derive(): still the root of eq. (3.7)?
+            if phi_a == phi_a_from_v0(self.v0, self.radius, self.wave_speed):
+                return phi_a, source
         if measured is not None and source == f"measured ({self.preset_name})":
             if self.at_measured_point and phi_a == measured.phi_a:
                 return phi_a, source

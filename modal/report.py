@@ -32,8 +32,6 @@ class LiftoffReport:
         Filter and re-contact horizon used.
     extra : dict
         Backend details (DOFs, modes used, mesh, ...), passed through to JSON.
-    warnings : tuple of str
-        Backend remarks on the trust of this result (the CLI prints them on stderr).
     """
 
     case: Case
@@ -42,14 +40,13 @@ class LiftoffReport:
     sigma: str
     recontact: str
     extra: dict[str, Any] = field(default_factory=dict)
-    warnings: tuple[str, ...] = ()
 
     @property
     def notes(self) -> list[str]:
-        """Remarks the reader must see: how phi_a was chosen (if it departs from a
-        preset's measurement) and any backend warning."""
+        """Remarks the reader must see (the CLI prints them on standard error): how
+        phi_a was chosen, when eq. (3.7) departs from a preset's measured angle."""
         note = self.case.phi_a_note
-        return ([note] if note else []) + list(self.warnings)
+        return [note] if note else []
 
     @property
     def t_liftoff_s(self) -> float | None:

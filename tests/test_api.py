@@ -223,10 +223,24 @@ def test_results_state_phi_a_source_and_notes(capsys):
     assert captured.err.startswith("twoball: note: phi_a = ")
 
 
-def test_phi_a_source_cannot_be_faked():
+@pytest.mark.parametrize(
+    "changes",
+    [
+        {"phi_a": 2.5, "phi_a_source": "measured (basketball)"},
+        {"phi_a": 2.5, "phi_a_source": "eq. (3.7)"},
+        {"phi_a": 2.6, "phi_a_source": "measured (basketball)", "v0": 3.0},
+    ],
+)
+def test_phi_a_source_cannot_be_faked(changes):
     with pytest.raises(twoball.ParameterError) as error:
-        twoball.Case(phi_a=2.5, phi_a_source="measured (basketball)")
+        twoball.Case(**changes)
     assert error.value.name == "phi_a_source"
+
+
+def test_sweep_refuses_unknown_parameters():
+    with pytest.raises(twoball.ParameterError) as error:
+        twoball.sweep({"mass": [1.0, 2.0]})
+    assert error.value.name == "values" and "wave_speed" in str(error.value)
 
 
 # --------------------------------------------------------------------------- refusals

@@ -157,12 +157,16 @@ def sweep(
     import numpy as np
 
     from twoball.verify.sweeps.parallel import MIN_PARALLEL_ITEMS, Runner, check_workers
-    from twoball.verify.sweeps.sweeps import SweepGrid, SweepSolver, run_sweep
+    from twoball.verify.sweeps.sweeps import SWEEP_PARAMETERS, SweepGrid, SweepSolver, run_sweep
 
     case = Case.preset("basketball") if case is None else case
     if not isinstance(values, Mapping) or not 1 <= len(values) <= 2:
         raise ParameterError("values", "a mapping of one or two parameters to values", values)
     parameters = tuple(_sweep_name(k) for k in values)
+    for key, name in zip(values, parameters, strict=True):
+        if name not in SWEEP_PARAMETERS:
+            valid = "keys among " + ", ".join(f.replace("-", "_") for f in SWEEP_PARAMETERS)
+            raise ParameterError("values", valid, key)
     if len(set(parameters)) != len(parameters):
         raise ParameterError("values", "two different parameters for a grid", list(values))
     arrays = []
