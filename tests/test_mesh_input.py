@@ -454,3 +454,34 @@ def test_refuses_bad_pole(pole):
 def test_refuses_bad_order():
     with pytest.raises(ParameterError, match="order must be 1 or 2"):
         load_sphere_mesh(icosphere(1), order=3)
+
+
+def test_pole_at_an_edge_node_gives_its_unit_row():
+    generated = icosphere(1, 2)
+    node = generated.cells[7, 4]  # the node on edge 12 of triangle 7
+    loaded = load_sphere_mesh(generated, pole=generated.points[node])
+    assert loaded.pole_at_node and loaded.mesh.pole_node >= loaded.mesh.vertex_count
+    space = sphere_space(loaded.mesh)
+    dof = space.pole
+    assert np.allclose(space.basis.doflocs[:, dof], [0.0, 0.0, 1.0], atol=1e-15)
+    assert space.pole_row.nnz == 1 and space.pole_row[0, dof] == 1.0
+    with pytest.raises(ValueError, match="no vertex at the north pole"):
+        _ = loaded.mesh.pole  # the vertex-only accessor says where to look
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize("pole", OFF_NODE_POLES)
+def test_pole_inside_an_element_converges_with_p2(pole):
+    # same bound as the vertex pole at P2 level 3 (test_fem_liftoff: 1e-3), and shrinking
+    exact = find_liftoff(legendre_series(PHI_A, DAMPING, FILTER), GAMMA)
+    exact = np.array([exact.t, exact.velocity])
+    errors = []
+    for level in (2, 3):
+        space = sphere_space(load_sphere_mesh(icosphere(level, 2), pole=pole).mesh)
+        moments = initial_moments(space, PHI_A)
+        series, _ = krylov_modal_series(space, moments, DAMPING, FILTER, residuals=False)
+        result = find_liftoff(series, GAMMA)
+        errors.append(np.abs(np.array([result.t, result.velocity]) / exact - 1.0))
+    coarse, fine = errors
+    assert np.all(fine < 1e-3)
+    assert np.all(fine < coarse / 4)
