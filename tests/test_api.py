@@ -284,6 +284,18 @@ def test_cli_refuses_options_that_do_not_apply(capsys, argv, line):
 
 
 # --------------------------------------------------------------------------- package surface
+def test_verify_is_callable_and_the_subpackage(tmp_path):
+    # twoball.verify is both the verb and the subpackage twoball.verify.* (already imported)
+    import twoball.verify.checks.checks as checks
+
+    assert twoball.verify.checks.checks is checks
+    result = twoball.verify(fast=True, out=tmp_path / "report")
+    assert result.passed and (tmp_path / "report" / "report.md").is_file()
+    settings = result.as_dict()["settings"]
+    assert settings["phi_a_source"] == "measured (basketball)"
+    assert callable(twoball.converge) and callable(twoball.fem.solve)
+
+
 def test_public_names_and_version():
     for name in ("Case", "liftoff", "sweep", "fem", "converge", "verify", "export", "render"):
         assert name in dir(twoball) and getattr(twoball, name) is not None

@@ -41,12 +41,13 @@ _NAMES: dict[str, str] = {
     "sweep": ".solvers",
     "SweepResult": ".solvers",
     "converge": ".reports",
-    "verify": ".reports",
     "export": ".files",
     "render": ".files",
     "plot": ".files",
 }
-_SUBMODULES = ("fem",)
+# ``verify`` is the subpackage twoball.verify, callable as twoball.reports.verify (the
+# import system would replace a function of that name by the subpackage anyway).
+_SUBMODULES = ("fem", "verify")
 _getattr, _dir = _attach(__name__, _NAMES)
 
 

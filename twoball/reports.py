@@ -98,6 +98,10 @@ def converge(
     case = Case.preset("basketball") if case is None else case
     if study not in STUDIES:
         raise ParameterError("study", "one of " + ", ".join(STUDIES), study)
+    if study == "modes":  # the Legendre series: no mesh
+        for name, value in (("mesh", mesh), ("order", order)):
+            if value is not None:
+                raise ParameterError(name, "left out with study modes (no mesh)", value)
     if mesh is None:
         mesh = "axisym" if study == "dt" else "sphere"
     if mesh not in ("sphere", "axisym"):
