@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import json
+import sys
 from typing import Any
 
 from rich.console import Console
@@ -33,3 +34,9 @@ def key_value_table(title: str, rows: list[tuple[str, str]]) -> Table:
     for name, value in rows:
         table.add_row(name, value)
     return table
+
+
+def print_notes(notes: list[str]) -> None:
+    """Print each note on standard error (``twoball: note: ...``), apart from the results."""
+    for note in notes:
+        sys.stderr.write(f"twoball: note: {note}\n")

@@ -12,7 +12,7 @@ from pathlib import Path
 from rich.progress import Progress, SpinnerColumn, TextColumn, TimeElapsedColumn
 from rich.table import Table
 from twoball.verify.cli.case_options import add_case_options, case_from_options
-from twoball.verify.cli.console import console
+from twoball.verify.cli.console import console, print_notes
 from twoball.verify.output.report_files import json_text, study_summary_rows
 from twoball.verify.studies.studies import STUDIES, StudyResult
 
@@ -29,6 +29,8 @@ def print_study(study: StudyResult, out: Path) -> None:
         table.add_row(*row)
     out_console = console(wide=True)
     out_console.print(table)
+    settings = study.settings
+    out_console.print(f"phi_a = {settings['phi_a']:.6f} rad ({settings['phi_a_source']})")
     for note in study.notes:
         out_console.print("* " + note)
     verdict = "PASS" if study.passed else "FAIL"
@@ -52,6 +54,7 @@ def run(args: argparse.Namespace) -> int:
         "out": out,
     }
     case = case_from_options(args)
+    print_notes([case.phi_a_note] if case.phi_a_note else [])
     if args.json:
         study = converge(case, **options)
     else:

@@ -6,11 +6,16 @@ A thin layer over :func:`twoball.liftoff`: the options become its arguments.
 from __future__ import annotations
 
 import argparse
-import sys
 
 from twoball.modal.report import LiftoffReport
 from twoball.verify.cli.case_options import add_case_options, case_from_options
-from twoball.verify.cli.console import console, key_value_table, number, print_json
+from twoball.verify.cli.console import (
+    console,
+    key_value_table,
+    number,
+    print_json,
+    print_notes,
+)
 from twoball.verify.cli.mesh_options import (
     VALID_RANGES,
     add_mesh_options,
@@ -46,12 +51,6 @@ def liftoff_rows(report: LiftoffReport) -> list[tuple[str, str]]:
         elif isinstance(value, (int, str)):
             rows.append((key, str(value)))
     return rows
-
-
-def print_notes(notes: list[str]) -> None:
-    """Print each note on standard error (``twoball: note: ...``), apart from the results."""
-    for note in notes:
-        sys.stderr.write(f"twoball: note: {note}\n")
 
 
 def print_liftoff(report: LiftoffReport) -> None:

@@ -10,7 +10,7 @@ import argparse
 from twoball.fem_membrane.render import DEFAULT_SIZE, check_warp
 from twoball.modal.errors import ParameterError
 from twoball.verify.cli.case_options import add_case_options, case_from_options
-from twoball.verify.cli.console import console, key_value_table
+from twoball.verify.cli.console import console, key_value_table, print_notes
 from twoball.verify.cli.export import add_backend_option
 from twoball.verify.cli.mesh_options import SPHERE_KINDS, add_mesh_options, mesh_arguments
 from twoball.verify.cli.mesh_options import VALID_RANGES as MESH_RANGES
@@ -56,6 +56,7 @@ def run(args: argparse.Namespace) -> int:
         **mesh_arguments(args),
     )
     times = result.times_s
+    print_notes(result.report.notes)
     rows = [
         ("file", str(result.file)),
         ("frames", str(len(times))),
@@ -63,6 +64,7 @@ def run(args: argparse.Namespace) -> int:
         ("size [px]", f"{result.size[0]}x{result.size[1]}"),
         ("warp", f"{result.warp:.4g}"),
         ("backend", result.backend),
+        ("phi_a from", str(result.report.case.phi_a_source)),
     ]
     console().print(key_value_table("Rendered", rows))
     return 0

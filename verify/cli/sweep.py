@@ -6,8 +6,7 @@ import argparse
 
 from rich.table import Table
 from twoball.verify.cli.case_options import add_case_options, case_from_options
-from twoball.verify.cli.console import console, number, print_json
-from twoball.verify.cli.liftoff import print_notes
+from twoball.verify.cli.console import console, number, print_json, print_notes
 from twoball.verify.sweeps.parallel import VALID_RANGES as PARALLEL_RANGES
 from twoball.verify.sweeps.parallel import check_workers
 from twoball.verify.sweeps.sweeps import (

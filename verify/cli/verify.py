@@ -20,7 +20,7 @@ from rich.progress import (
 from rich.table import Table
 from twoball.verify.checks.checks import VerifyResult
 from twoball.verify.cli.case_options import add_case_options, case_from_options
-from twoball.verify.cli.console import console
+from twoball.verify.cli.console import console, print_notes
 from twoball.verify.output.report_files import json_text
 
 DEFAULT_OUT = "twoball-report"
@@ -52,6 +52,8 @@ def print_result(result: VerifyResult, out: Path) -> None:
             f"{row.seconds:.2f}",
         )
     out_console.print(runs)
+    settings = result.settings
+    out_console.print(f"phi_a = {settings['phi_a']:.6f} rad ({settings['phi_a_source']})")
     checks = Table(title="checks")
     for name in ("check", "value", "tolerance", "result"):
         checks.add_column(name, justify="left" if name == "check" else "right")
@@ -78,6 +80,7 @@ def run(args: argparse.Namespace) -> int:
     from twoball.reports import verify
 
     case = case_from_options(args)
+    print_notes([case.phi_a_note] if case.phi_a_note else [])
     options = {
         "thorough": args.thorough,
         "fast": args.fast,
