@@ -251,7 +251,7 @@ class Case:
             if not _same(value, ref)
         ] or [f"|v0| = {self.v0:g} m/s"]
         return (
-            f"phi_a = {self.phi_a:.4g} rad from eq. (3.7) for {', '.join(moved)}; the "
+            f"phi_a = {self.phi_a:.4f} rad from eq. (3.7) for {', '.join(moved)}; the "
             f"{self.preset_name} preset's measured {m.phi_a:g} rad applies only at its own "
             "R, c, |v0|"
         )

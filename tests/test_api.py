@@ -186,7 +186,7 @@ def test_phi_a_rule_given_measured_or_eq_3_7():
     derived = twoball.Case(v0=3.0)  # today's Case(v0=3.0) no longer keeps 2.6 silently
     assert derived.phi_a_source == "eq. (3.7)"
     assert v0_of_phi_a(derived.phi_a) == pytest.approx(3.0, rel=1e-12)
-    assert derived.phi_a_note.startswith(f"phi_a = {derived.phi_a:.4g} rad from eq. (3.7)")
+    assert derived.phi_a_note.startswith(f"phi_a = {derived.phi_a:.4f} rad from eq. (3.7)")
     assert "|v0| = 3 m/s" in derived.phi_a_note and "measured 2.6 rad" in derived.phi_a_note
 
 

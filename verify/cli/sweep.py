@@ -95,10 +95,7 @@ def run(args: argparse.Namespace) -> int:
                 values, base, progress=lambda k: bar.update(task, completed=k), **options
             )
     points = result.points
-    notes = list(dict.fromkeys(n for p in points if p.report for n in p.report.notes))
-    if len(notes) > 3:
-        notes = [*notes[:3], f"... and {len(notes) - 3} more such notes (phi_a_source per point)"]
-    print_notes(notes)
+    print_notes(sweep_notes(points))
     if plot is not None:
         plot_sweep(grid, points, plot)
     if args.json:
@@ -108,6 +105,15 @@ def run(args: argparse.Namespace) -> int:
         if plot is not None:
             console().print(f"plot written to {plot}")
     return 0
+
+
+def sweep_notes(points: list[SweepPoint]) -> list[str]:
+    """One note for the whole sweep: at how many points eq. (3.7) replaced a preset's phi_a."""
+    notes = [p.report.notes[0] for p in points if p.report is not None and p.report.notes]
+    if len(notes) <= 1:
+        return notes
+    why = notes[0].split("; ", 1)[-1]
+    return [f"phi_a from eq. (3.7) at {len(notes)} of {len(points)} points; {why}"]
 
 
 def console_err():
