@@ -294,6 +294,16 @@ class Case:
         """
         if "phi_a_source" in changes:
             raise ParameterError("phi_a_source", "set by the class, not given", None)
+        known = [f for f in self.__dataclass_fields__ if f != "phi_a_source"]
+        for name in changes:
+            if name not in known:
+                hint = (
+                    " (pressure and mass: Case.from_pressure)"
+                    if name in ("pressure", "mass")
+                    else ""
+                )
+                valid = "a field of Case, one of " + ", ".join(known) + hint
+                raise ParameterError(name, valid, None)
         rule = ("v0", "wave_speed", "radius", "preset_name")
         if "phi_a" in changes or any(k in changes for k in rule):
             changes = {"phi_a": None, **changes, "phi_a_source": None}
