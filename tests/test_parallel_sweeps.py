@@ -129,6 +129,7 @@ def test_sweep_cli_reports_failed_points(capsys, monkeypatch):
     assert main(["sweep", "--param", "v0", "--values", "2:4:3", "--json", "--workers", "1"]) == 0
     rows = json.loads(capsys.readouterr().out)
     assert [r["error"] is not None for r in rows] == [False, False, True]
+    assert all(r["phi_a_source"] == "eq. (3.7)" for r in rows)  # failed points too
     assert main(["sweep", "--param", "v0", "--values", "2:4:3", "--workers", "1"]) == 0
     assert "NumericalError" in capsys.readouterr().out
 
