@@ -3,23 +3,19 @@
 from __future__ import annotations
 
 import sys
-import tomllib
 from pathlib import Path
 
 ROOT = Path(__file__).resolve().parent.parent
-# The packages (modal, fem_membrane, verify) sit flat at the repository root.
+# Import twoball from this checkout: twoball/ sits at the repository root and maps
+# the parts (modal/, fem_membrane/, verify/) beside it under its own name.
 sys.path.insert(0, str(ROOT))
 
-with (ROOT / "pyproject.toml").open("rb") as fh:
-    _project = tomllib.load(fh)["project"]
-# The version is dynamic (pyproject.toml reads twoball/_version.py): read it there.
-_version: dict[str, str] = {}
-exec((ROOT / "twoball" / "_version.py").read_text(), _version)  # noqa: S102
+from twoball._version import __version__  # noqa: E402
 
 project = "twoball"
 author = "twoball developers"
 copyright = "twoball developers"
-release = _project.get("version") or _version["__version__"]
+release = __version__
 version = ".".join(release.split(".")[:2])
 
 extensions = [

@@ -14,34 +14,41 @@ Three layouts, chosen by :func:`series_format` from ``--format`` or the suffix:
     ``<Information Name=... Value=...>`` elements of the XDMF domain and as HDF5
     attributes of the root group.
 ``pvd``
-    ``NAME.pvd`` (a ParaView collection, written here) listing one
-    ``NAME_0000.vtu``, ``NAME_0001.vtu``, ... per frame beside it.
+    ``NAME.pvd`` (a ParaView collection, written here) listing one VTU per frame
+    in the folder ``NAME_frames-ID/`` beside it (``NAME_0000.vtu``, ...), where
+    ID is the first 12 hex digits of the SHA-256 of the frames: the same
+    frames get the same folder, and a new run never changes an earlier run's
+    frames, so replacing ``NAME.pvd`` switches between complete collections.
 ``vtu``
     A single frame in one ``.vtu`` file.
 
 Every VTU carries the series-wide scalars as VTK field data plus ``TimeValue``
-(the frame's time, which ParaView shows).  All files are written into a hidden
-scratch folder beside the target and moved into place only when complete, so a
-failed run leaves no partial files (see :func:`check_output_path`).
+(the frame's time, which ParaView shows).  All files go through
+:mod:`twoball.staging`: written into a scratch folder beside the target and
+moved into place only when complete, so an interrupted or failed run leaves the
+earlier output intact and no partial files.  The same series gives
+byte-identical files.
 """
 
 from __future__ import annotations
 
 import contextlib
+import hashlib
 import math
 import os
 import re
-import shutil
-import tempfile
 import xml.etree.ElementTree as ET
-from collections.abc import Iterator, Mapping, Sequence
+from collections.abc import Mapping, Sequence
 from dataclasses import dataclass, field
 from pathlib import Path
 
 import meshio
 import numpy as np
+from meshio._common import write_xml
 from meshio.xdmf import TimeSeriesReader, TimeSeriesWriter
 from twoball.modal.errors import ParameterError
+
+from twoball.staging import staged_collection, staged_file, write_marker
 
 FORMATS: tuple[str, ...] = ("xdmf", "vtu", "pvd")
 SUFFIXES: dict[str, str] = {"xdmf": ".xdmf", "vtu": ".vtu", "pvd": ".pvd"}
@@ -147,60 +154,6 @@ def series_format(path: str | os.PathLike[str], fmt: str | None = None) -> str:
     )
 
 
-def check_output_path(path: str | os.PathLike[str], flag: str = "--out") -> Path:
-    """Check, before any work, that a file can be written at ``path``.
-
-    The parent folder must exist and be writable (proved by creating and
-    removing a scratch folder in it); ``path`` itself may exist (it is replaced)
-    but must not be a folder.
-
-    Raises
-    ------
-    ParameterError
-        Naming ``flag``, for the one-line command-line error (exit status 2).
-    """
-    out = Path(path).expanduser()
-    valid = "a file path in an existing, writable folder"
-    if out.name in ("", ".", ".."):
-        raise ParameterError(flag, valid, str(path))
-    if out.is_dir():
-        raise ParameterError(flag, valid + " (it is a folder)", str(path))
-    parent = out.absolute().parent
-    if not parent.is_dir():
-        raise ParameterError(flag, valid + " (the folder does not exist)", str(path))
-    try:
-        probe = tempfile.mkdtemp(prefix=f".{out.name}.probe-", dir=parent)
-    except OSError:
-        raise ParameterError(flag, valid + " (the folder is not writable)", str(path)) from None
-    os.rmdir(probe)
-    return out
-
-
-@contextlib.contextmanager
-def staged_files(path: str | os.PathLike[str], flag: str = "--out") -> Iterator[Path]:
-    """Yield a scratch folder beside ``path``; move its files next to ``path`` on success.
-
-    The main file (named like ``path``) is moved last, so a reader never sees it
-    before the files it refers to.  On any error the scratch folder is removed
-    and nothing is moved; an :class:`OSError` becomes a :class:`ParameterError`
-    naming ``flag``.
-    """
-    out = check_output_path(path, flag).absolute()
-    scratch = Path(tempfile.mkdtemp(prefix=f".{out.name}.new-", dir=out.parent))
-    try:
-        yield scratch
-        names = sorted(p.name for p in scratch.iterdir())
-        names.sort(key=lambda name: name == out.name)  # main file last
-        for name in names:
-            os.replace(scratch / name, out.parent / name)
-    except OSError as error:
-        raise ParameterError(
-            flag, "a file path in an existing, writable folder", f"{path} ({error.strerror})"
-        ) from error
-    finally:
-        shutil.rmtree(scratch, ignore_errors=True)
-
-
 # --------------------------------------------------------------------------- VTU
 def _field_element(field_data: Mapping[str, float]) -> ET.Element:
     element = ET.Element("FieldData")
@@ -243,17 +196,20 @@ def write_vtu(path: str | os.PathLike[str], series: TimeSeries, frame: int = 0) 
     list of Path
         The file written.
     """
-    out = Path(path).expanduser()
-    with staged_files(out) as scratch:
+    with staged_file(path) as target:
         field_data = {**series.field_data, TIME_VALUE: float(series.times[frame])}
-        _write_vtu_file(scratch / out.name, series, frame, field_data)
-    return [out]
+        _write_vtu_file(target, series, frame, field_data)
+    return [Path(path).expanduser()]
 
 
 # --------------------------------------------------------------------------- PVD
 def frame_name(path: str | os.PathLike[str], k: int) -> str:
-    """File name of frame ``k`` of a PVD collection: ``NAME_0000.vtu`` beside ``NAME.pvd``."""
+    """File name of frame ``k`` of a PVD collection: ``NAME_0000.vtu`` (in ``NAME_frames-ID/``)."""
     return f"{Path(path).stem}_{k:04d}.vtu"
+
+
+def _frames_pattern(out: Path) -> re.Pattern[str]:
+    return re.compile(rf"{re.escape(out.stem)}_frames-[0-9a-f]{{12}}")
 
 
 def _pvd_files(path: Path) -> list[str]:
@@ -265,11 +221,25 @@ def _pvd_files(path: Path) -> list[str]:
     return [d.get("file", "") for d in root.iter("DataSet") if d.get("file")]
 
 
-def write_pvd(path: str | os.PathLike[str], series: TimeSeries) -> list[Path]:
-    """Write a ParaView collection: ``NAME.pvd`` and one VTU per frame beside it.
+def _earlier_frames(out: Path, new: Sequence[str]) -> list[Path]:
+    """Frame folders of earlier collections at ``out`` (removed after the commit if ours)."""
+    pattern = _frames_pattern(out)
+    with contextlib.suppress(OSError):
+        return [
+            entry
+            for entry in out.parent.iterdir()
+            if pattern.fullmatch(entry.name) and entry.name not in new and entry.is_dir()
+        ]
+    return []
 
-    Frames of a previous collection at the same path that the new one does not
-    rewrite are removed.
+
+def write_pvd(path: str | os.PathLike[str], series: TimeSeries) -> list[Path]:
+    """Write a ParaView collection: ``NAME.pvd`` and its frames in ``NAME_frames-ID/``.
+
+    The collection is replaced as a whole: the new frames go into a new folder
+    (named by their hash), then ``NAME.pvd`` is replaced in one rename, then the
+    frame folders of earlier collections are removed.  An interrupt at any
+    point leaves the earlier or the new collection, complete.
 
     Returns
     -------
@@ -277,28 +247,32 @@ def write_pvd(path: str | os.PathLike[str], series: TimeSeries) -> list[Path]:
         The PVD file, then the VTU files.
     """
     out = Path(path).expanduser()
-    stale = [
-        out.parent / name
-        for name in _pvd_files(out)
-        if "/" not in name
-        and "\\" not in name
-        and re.fullmatch(rf"{re.escape(out.stem)}_\d+\.vtu", name)
-    ]
     names = [frame_name(out, k) for k in range(len(series))]
-    with staged_files(out) as scratch:
+    with staged_collection(out, retire=_earlier_frames) as scratch:
+        frames = scratch / "frames"
+        frames.mkdir()
+        digest = hashlib.sha256()
+        for k, name in enumerate(names):
+            time = float(series.times[k])
+            _write_vtu_file(frames / name, series, k, {**series.field_data, TIME_VALUE: time})
+            digest.update(name.encode() + b"\0" + (frames / name).read_bytes())
+        folder = f"{out.stem}_frames-{digest.hexdigest()[:12]}"
+        write_marker(frames, "twoball export (PVD frames)")
+        frames.rename(scratch / folder)
         root = ET.Element("VTKFile", type="Collection", version="0.1", byte_order="LittleEndian")
         collection = ET.SubElement(root, "Collection")
         for k, name in enumerate(names):
-            time = float(series.times[k])
-            _write_vtu_file(scratch / name, series, k, {**series.field_data, TIME_VALUE: time})
-            ET.SubElement(collection, "DataSet", timestep=repr(time), group="", part="0", file=name)
+            ET.SubElement(
+                collection,
+                "DataSet",
+                timestep=repr(float(series.times[k])),
+                group="",
+                part="0",
+                file=f"{folder}/{name}",
+            )
         ET.indent(root)
         ET.ElementTree(root).write(scratch / out.name, xml_declaration=True, encoding="utf-8")
-    for old in stale:
-        if old.name not in names:
-            with contextlib.suppress(OSError):
-                old.unlink()
-    return [out] + [out.parent / name for name in names]
+    return [out] + [out.parent / folder / name for name in names]
 
 
 # --------------------------------------------------------------------------- XDMF
@@ -314,8 +288,22 @@ class _XdmfWriter(TimeSeriesWriter):
         import h5py
 
         self.h5_filename = str(self.filename.with_suffix(".h5"))
-        self.h5_file = h5py.File(self.h5_filename, "w")
+        # Built in memory and written by Python at the end: a full disk is then an
+        # OSError, not a cascade of HDF5 errors ending in a crash.
+        self.h5_file = h5py.File(self.h5_filename, "w", driver="core", backing_store=False)
         return self
+
+    def __exit__(self, kind: object, *exc: object) -> None:
+        try:
+            if kind is None:
+                write_xml(self.filename, self.xdmf_file)
+                self.h5_file.flush()
+                image = self.h5_file.id.get_file_image()
+        finally:
+            self.h5_file.close()
+        if kind is None:
+            with open(self.h5_filename, "wb") as handle:
+                handle.write(image)
 
 
 def write_xdmf(path: str | os.PathLike[str], series: TimeSeries) -> list[Path]:
@@ -332,7 +320,7 @@ def write_xdmf(path: str | os.PathLike[str], series: TimeSeries) -> list[Path]:
     """
     out = Path(path).expanduser()
     h5_name = out.with_suffix(".h5").name
-    with staged_files(out) as scratch:
+    with staged_collection(out) as scratch:
         target = scratch / out.name
         with _XdmfWriter(target) as writer:
             writer.write_points_cells(series.points, [(series.cell_type, series.cells)])

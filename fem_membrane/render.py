@@ -18,6 +18,7 @@ to multiples of 16 so that no encoder has to resize).
 from __future__ import annotations
 
 import contextlib
+import errno
 import math
 import os
 from collections.abc import Iterator
@@ -27,7 +28,7 @@ from pathlib import Path
 import numpy as np
 from twoball.modal.errors import ParameterError
 
-from .export import staged_files
+from twoball.staging import staged_file
 
 IMAGE_KINDS: tuple[str, ...] = (".png", ".gif", ".mp4")
 DEFAULT_SIZE = (640, 480)
@@ -338,7 +339,7 @@ def _write_png(target: Path, images: Iterator[np.ndarray]) -> int:
     import imageio.v3 as iio
 
     image = next(images)
-    iio.imwrite(target, image, extension=".png")
+    target.write_bytes(iio.imwrite("<bytes>", image, extension=".png"))
     return 1
 
 
@@ -346,7 +347,10 @@ def _write_gif(target: Path, images: Iterator[np.ndarray], fps: float) -> int:
     import imageio.v3 as iio
 
     frames = list(images)
-    iio.imwrite(target, np.stack(frames), extension=".gif", duration=1000.0 / fps, loop=0)
+    # encoded in memory, then written by Python: a full disk is one OSError (imageio's
+    # writer would retry the failed flush when it is garbage-collected)
+    data = iio.imwrite("<bytes>", np.stack(frames), extension=".gif", duration=1000.0 / fps, loop=0)
+    target.write_bytes(data)
     return len(frames)
 
 
@@ -362,7 +366,7 @@ def _write_mp4(target: Path, images: Iterator[np.ndarray], fps: float) -> int:
         codec="libx264",
         pixelformat="yuv420p",
         macro_block_size=MACRO_BLOCK,
-        ffmpeg_log_level="error",
+        ffmpeg_log_level="quiet",  # its failures are reported below, in one line
     )
     try:
         for image in images:
@@ -370,7 +374,48 @@ def _write_mp4(target: Path, images: Iterator[np.ndarray], fps: float) -> int:
             count += 1
     finally:
         writer.close()
+    _check_mp4(target)
     return count
+
+
+def _mp4_boxes(path: Path) -> list[bytes]:
+    """Types of the top-level boxes of an MP4 file; empty if they do not tile the file."""
+    import struct
+
+    kinds, end = [], path.stat().st_size
+    with open(path, "rb") as handle:
+        start = 0
+        while start < end:
+            header = handle.read(8)
+            if len(header) < 8:
+                return []
+            size, kind = struct.unpack(">I4s", header)
+            if size == 1:  # 64-bit size follows the type
+                size = struct.unpack(">Q", handle.read(8))[0]
+            elif size == 0:  # the box runs to the end of the file
+                size = end - start
+            if size < 8 or start + size > end:
+                return []
+            kinds.append(kind)
+            start += size
+            handle.seek(start)
+    return kinds
+
+
+def _check_mp4(target: Path) -> None:
+    """Raise OSError unless ffmpeg finished ``target`` (it ends with the ``moov`` index).
+
+    ffmpeg reports a failed write (a full disk) only in its log; imageio does not
+    raise, so the file is checked before it is put in place.
+    """
+    if target.is_file() and b"moov" in _mp4_boxes(target):
+        return
+    stat = os.statvfs(target.parent)
+    full = stat.f_bavail * stat.f_frsize < (1 << 20)
+    code = errno.ENOSPC if full else errno.EIO
+    raise OSError(
+        code, os.strerror(code) if full else "ffmpeg did not finish the video", str(target)
+    )
 
 
 def render_scene(
@@ -410,14 +455,15 @@ def render_scene(
         raise ParameterError("--fps", "a finite number > 0", fps)
     if kind == ".mp4":
         size = round_size(size)
-    with staged_files(out) as scratch:
-        target = scratch / out.name
+    with staged_file(out) as target:
         images = render_frames(scene, warp, size)
-        if kind == ".png":
-            _write_png(target, images)
-        elif kind == ".gif":
-            _write_gif(target, images, fps)
-        else:
-            _write_mp4(target, images, fps)
-        images.close()
+        try:
+            if kind == ".png":
+                _write_png(target, images)
+            elif kind == ".gif":
+                _write_gif(target, images, fps)
+            else:
+                _write_mp4(target, images, fps)
+        finally:
+            images.close()
     return out

@@ -287,9 +287,9 @@ def test_cli_refuses_options_that_do_not_apply(capsys, argv, line):
 # --------------------------------------------------------------------------- package surface
 def test_verify_is_callable_and_the_subpackage(tmp_path):
     # twoball.verify is both the verb and the subpackage twoball.verify.* (already imported)
-    import twoball.verify.checks.checks as checks
+    import twoball.verify.checks.run as checks
 
-    assert twoball.verify.checks.checks is checks
+    assert twoball.verify.checks.run is checks
     result = twoball.verify(fast=True, out=tmp_path / "report")
     assert result.passed and (tmp_path / "report" / "report.md").is_file()
     settings = result.as_dict()["settings"]

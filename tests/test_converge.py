@@ -6,14 +6,10 @@ import numpy as np
 import pytest
 from twoball.modal.parameters import preset
 from twoball.verify.cli.main import main
-from twoball.verify.studies.studies import (
-    converged_legendre,
-    parse_modes,
-    run_dt_study,
-    run_h_study,
-    run_modes_study,
-    run_order_study,
-)
+from twoball.verify.studies.modes import parse_modes, run_modes_study
+from twoball.verify.studies.reference import converged_legendre
+from twoball.verify.studies.refinement import run_h_study, run_order_study
+from twoball.verify.studies.time_step import run_dt_study
 
 FILES = {"report.md", "results.json", "results.csv", "convergence.png"}
 
@@ -55,7 +51,7 @@ def test_converge_modes_cli_writes_every_file(capsys, tmp_path):
     assert code == 0
     data = json.loads(stdout)
     assert data["study"] == "modes" and data["passed"] is True
-    assert {p.name for p in out.iterdir()} == FILES | {".twoball-report"}
+    assert {p.name for p in out.iterdir()} == FILES | {".twoball-output", "provenance.json"}
     report = (out / "report.md").read_text()
     assert "Truncation error of N = 30" in report and "PASS" in report
     csv_lines = (out / "results.csv").read_text().splitlines()
@@ -66,12 +62,24 @@ def test_converge_modes_cli_writes_every_file(capsys, tmp_path):
 def test_converge_replaces_an_old_report_and_leaves_no_scratch(capsys, tmp_path):
     out = tmp_path / "report"
     out.mkdir()
-    (out / ".twoball-report").write_text("")  # an earlier report
-    (out / "stale.txt").write_text("old")
+    (out / ".twoball-report").write_text("")  # a report of an earlier twoball version
+    (out / "report.md").write_text("old")
     code, _, _ = run(capsys, "converge", "--study", "modes", "--modes-list", "30,60,120",
                      "--out", str(out))  # fmt: skip
-    assert code == 0 and not (out / "stale.txt").exists()
+    assert code == 0 and (out / "report.md").read_text() != "old"
+    assert not (out / ".twoball-report").exists()
     assert sorted(p.name for p in tmp_path.iterdir()) == ["report"]
+
+
+def test_converge_refuses_an_old_report_holding_a_user_file(capsys, tmp_path):
+    out = tmp_path / "report"
+    out.mkdir()
+    (out / ".twoball-report").write_text("")
+    (out / "stale.txt").write_text("mine")
+    with pytest.raises(SystemExit) as stop:
+        main(["converge", "--study", "modes", "--modes-list", "30,60,120", "--out", str(out)])
+    assert stop.value.code == 2 and "stale.txt" in capsys.readouterr().err
+    assert (out / "stale.txt").read_text() == "mine"
 
 
 @pytest.mark.parametrize(
@@ -155,7 +163,7 @@ def test_converge_h_cli_axisym(capsys, tmp_path):
     )  # fmt: skip
     data = json.loads(stdout)
     assert code == 0 and data["study"] == "h" and data["passed"]
-    assert {p.name for p in out.iterdir()} == FILES | {".twoball-report"}
+    assert {p.name for p in out.iterdir()} == FILES | {".twoball-output", "provenance.json"}
     assert "lambda_6" in (out / "report.md").read_text()
 
 

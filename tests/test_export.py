@@ -172,7 +172,7 @@ def test_pvd_opens_in_pyvista_with_the_same_content(model, series, tmp_path):
     out = tmp_path / "series.pvd"
     files = write_series(out, series)
     assert len(files) == 1 + len(series)
-    assert all(f.parent == tmp_path for f in files)
+    assert files[0].parent == tmp_path and all(f.parent.parent == tmp_path for f in files[1:])
     reader = pv.get_reader(str(out))
     assert reader.time_values == pytest.approx(list(series.times), rel=1e-12)
     for k in (0, 2, len(series) - 1):
@@ -203,7 +203,7 @@ def test_single_vtu(model, series, tmp_path):
 def test_no_partial_files_on_failure(series, tmp_path, monkeypatch):
     out = tmp_path / "series.pvd"
     write_series(out, series)
-    before = {p.name: p.read_bytes() for p in tmp_path.iterdir()}
+    before = {p: p.read_bytes() for p in tmp_path.rglob("*") if p.is_file()}
     calls = []
 
     def broken(target, series_, k, field_data):
@@ -214,20 +214,41 @@ def test_no_partial_files_on_failure(series, tmp_path, monkeypatch):
 
     original = export._write_vtu_file
     monkeypatch.setattr(export, "_write_vtu_file", broken)
-    with pytest.raises(ParameterError, match="--out"):
+    with pytest.raises(OSError, match="series.pvd") as error:
         write_series(out, series.select([0, 1, 2, 3]))
+    assert error.value.errno == 28 and error.value.filename == str(out)
     assert calls == [0, 1, 2]
-    after = {p.name: p.read_bytes() for p in tmp_path.iterdir()}
+    after = {p: p.read_bytes() for p in tmp_path.rglob("*") if p.is_file()}
     assert after == before  # the old collection untouched, no scratch folder left
 
 
-def test_rewriting_a_pvd_removes_its_stale_frames(series, tmp_path):
+def test_rewriting_a_pvd_replaces_its_frames_folder_as_a_whole(series, tmp_path):
     out = tmp_path / "series.pvd"
-    write_series(out, series)
+    first = write_series(out, series)
     (tmp_path / "notes.txt").write_text("keep")
-    write_series(out, series.select([0, 1]))
+    files = write_series(out, series.select([0, 1]))
+    folder = files[1].parent
+    assert folder.name.startswith("series_frames-") and folder != first[1].parent
     names = sorted(p.name for p in tmp_path.iterdir())
-    assert names == ["notes.txt", "series.pvd", "series_0000.vtu", "series_0001.vtu"]
+    assert names == ["notes.txt", "series.pvd", folder.name]  # the earlier frames are gone
+    assert sorted(p.name for p in folder.iterdir()) == [
+        ".twoball-output",
+        "series_0000.vtu",
+        "series_0001.vtu",
+    ]
+    assert read_series(out).times.tolist() == series.times[:2].tolist()
+
+
+@pytest.mark.parametrize("fmt", ["pvd", "xdmf", "vtu"])
+def test_same_series_gives_byte_identical_files(series, tmp_path, fmt):
+    chosen = series.select([0]) if fmt == "vtu" else series
+    (tmp_path / "a").mkdir()
+    (tmp_path / "b").mkdir()
+    first = write_series(tmp_path / "a" / f"s.{fmt}", chosen)
+    again = write_series(tmp_path / "b" / f"s.{fmt}", chosen)
+    assert len(first) == len(again) > 0
+    for one, two in zip(first, again, strict=True):
+        assert one.read_bytes() == two.read_bytes(), one.name
 
 
 def read_only_folder(tmp_path):

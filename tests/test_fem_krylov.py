@@ -147,7 +147,7 @@ def test_fem_pole_motion_routes_agree_and_auto_picks_krylov_on_large_meshes():
 
 
 def test_thorough_verify_uses_the_fast_route_at_level_5_p2():
-    from twoball.verify.checks.checks import config
+    from twoball.verify.checks.config import config
 
     specs = [(t.spec.mesh, t.spec.order, t.spec.size) for t in config("thorough").krylov]
     assert ("sphere", 2, 5) in specs

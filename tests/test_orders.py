@@ -4,17 +4,14 @@ import math
 
 import numpy as np
 import pytest
+from twoball.verify.studies.gci import classify, gci, richardson, three_grid_order
 from twoball.verify.studies.orders import (
     OrderBand,
     analyse,
-    classify,
     error_ratios,
-    gci,
     least_squares_order,
     observed_order,
-    richardson,
     step_orders,
-    three_grid_order,
 )
 
 H = 0.5 ** np.arange(1, 7)  # 1/2 .. 1/64, coarse to fine

@@ -201,7 +201,7 @@ def test_unreachable_scheduler_is_one_line_exit_2(capsys, monkeypatch):
 
 @pytest.mark.slow
 def test_fig12_sweeps_finish_in_30_s_on_two_workers():
-    from twoball.verify.reproduce.cem import FIG12_AXES, FIG12_DAMPING, fig12_base
+    from twoball.verify.reproduce.cem.fig12 import FIG12_AXES, FIG12_DAMPING, fig12_base
 
     base = fig12_base()
     cs = [

@@ -9,14 +9,10 @@ from twoball.modal.errors import ParameterError
 from twoball.modal.parameters import preset
 from twoball.verify.cli.main import main
 from twoball.verify.output.fields import ball_model
-from twoball.verify.output.plots import (
-    eigen_figure,
-    eigen_table,
-    pole_figure,
-    save_figure,
-    waterfall_figure,
-    waterfall_times,
-)
+from twoball.verify.output.figures import save_figure
+from twoball.verify.output.figures.eigen import eigen_figure, eigen_table
+from twoball.verify.output.figures.pole import pole_figure
+from twoball.verify.output.figures.waterfall import waterfall_figure, waterfall_times
 
 
 @pytest.fixture(scope="module")

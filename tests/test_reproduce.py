@@ -9,13 +9,9 @@ import pytest
 from twoball.modal.parameters import preset
 from twoball.verify.cli.main import main
 from twoball.verify.reproduce import driver as rep
-from twoball.verify.reproduce.cem import (
-    OptimumTask,
-    ThresholdTask,
-    _fit_damping,
-    fig12_base,
-    main_branch,
-)
+from twoball.verify.reproduce.cem.fig11 import _fit_damping
+from twoball.verify.reproduce.cem.fig12 import OptimumTask, fig12_base, main_branch
+from twoball.verify.reproduce.cem.tasks import ThresholdTask
 from twoball.verify.reproduce.common import (
     Comparison,
     Context,
@@ -180,7 +176,12 @@ def test_cli_writes_figures_and_report(tmp_path, capsys):
     assert [p.name for p in tmp_path.iterdir()] == ["rep"]  # no staging left behind
     # a second run replaces the earlier reproduction
     assert main(["reproduce", "--out", str(out), "--only", "table2"]) == 0
-    assert {p.name for p in out.iterdir()} == {"reproduction.md", "reproduction.json"}
+    assert {p.name for p in out.iterdir()} == {
+        "reproduction.md",
+        "reproduction.json",
+        "provenance.json",
+        ".twoball-output",
+    }
 
 
 def test_failure_leaves_no_partial_output(tmp_path, monkeypatch):

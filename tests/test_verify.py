@@ -6,7 +6,10 @@ import math
 import numpy as np
 import pytest
 from twoball.modal.parameters import preset
-from twoball.verify.checks.checks import Check, bounded, config, decay_band, run_verify
+from twoball.verify.checks.alpha import decay_band
+from twoball.verify.checks.config import config
+from twoball.verify.checks.results import Check, bounded
+from twoball.verify.checks.run import run_verify
 from twoball.verify.cli.main import main
 from twoball.verify.output.report_files import write_report_dir
 
@@ -72,7 +75,7 @@ def test_verify_cli_writes_every_file_and_exits_0(capsys, tmp_path):
     code = main(["verify", "--fast", "--out", str(out), "--json"])
     data = json.loads(capsys.readouterr().out)
     assert code == 0 and data["passed"] is True and data["configuration"] == "fast"
-    assert {p.name for p in out.iterdir()} == FILES | {".twoball-report"}
+    assert {p.name for p in out.iterdir()} == FILES | {".twoball-output", "provenance.json"}
     report = (out / "report.md").read_text()
     assert report.startswith("# twoball verify: PASS") and "![" in report
     header = (out / "results.csv").read_text().splitlines()[0]
@@ -90,7 +93,7 @@ def test_verify_table_and_failing_check_exit_1(capsys, tmp_path, monkeypatch):
     strict = type(strict)(
         "strict", (type(target)(target.spec, 1e-15, target.eigen, target.energy),), ()
     )
-    monkeypatch.setattr("twoball.verify.checks.checks.config", lambda name: strict)
+    monkeypatch.setattr("twoball.verify.checks.config.config", lambda name: strict)
     code = main(["verify", "--out", str(tmp_path / "r")])
     out = capsys.readouterr().out
     assert code == 1
@@ -130,7 +133,7 @@ def test_old_report_survives_a_failed_write(tmp_path):
     assert (out / "a.txt").read_text() == "old" and not (out / "b.txt").exists()
     assert sorted(p.name for p in tmp_path.iterdir()) == ["report"]
     write_report_dir(out, {"c.txt": lambda p: p.write_text("newer")})
-    assert sorted(p.name for p in out.iterdir()) == [".twoball-report", "c.txt"]
+    assert sorted(p.name for p in out.iterdir()) == [".twoball-output", "c.txt"]
 
 
 @pytest.mark.slow
@@ -139,7 +142,7 @@ def test_default_verify_passes(capsys, tmp_path):
     code = main(["verify", "--out", str(out), "--json"])
     data = json.loads(capsys.readouterr().out)
     assert code == 0 and data["passed"], [c["name"] for c in data["checks"] if not c["passed"]]
-    assert {p.name for p in out.iterdir()} == FILES | {".twoball-report"}
+    assert {p.name for p in out.iterdir()} == FILES | {".twoball-output", "provenance.json"}
     meshes = {r["mesh"] for r in data["runs"]}
     assert {"axisym P2 400 el.", "sphere P1 L4", "sphere P2 L3"} <= meshes
 

@@ -172,7 +172,8 @@ def export(
     sigma, recontact, t_end
         As in :func:`twoball.liftoff`.
     """
-    from twoball.fem_membrane.export import check_output_path, series_format, write_series
+    from twoball.fem_membrane.export import series_format, write_series
+    from twoball.staging import check_file
     from twoball.verify.output.fields import (
         check_frames,
         check_times,
@@ -184,7 +185,7 @@ def export(
 
     case = Case.preset("basketball") if case is None else case
     fmt = series_format(out, format)
-    target = check_output_path(out)
+    target = check_file(out)
     _check_backend(backend)
     MeshOptions.resolve(mesh, level=level, order=order, kinds=SPHERE_KINDS, files=False)
     if frames is not None and times is not None:
@@ -270,7 +271,6 @@ def render(
     """
     import numpy as np
 
-    from twoball.fem_membrane.export import check_output_path
     from twoball.fem_membrane.render import (
         DEFAULT_SIZE,
         check_size,
@@ -279,12 +279,13 @@ def render(
         render_scene,
         round_size,
     )
+    from twoball.staging import check_file
     from twoball.verify.output.fields import ball_scene, check_frames, check_times, liftoff_frame
     from twoball.verify.output.fields import window_s as window
 
     case = Case.preset("basketball") if case is None else case
     kind = image_kind(out)
-    target = check_output_path(out)
+    target = check_file(out)
     size = check_size(DEFAULT_SIZE if size is None else size)
     warp = check_warp(warp)
     _check_backend(backend)
@@ -365,22 +366,17 @@ def plot(
     mesh, level, order, initial, sigma, recontact, t_end
         As in :func:`export` (``waterfall`` and ``pole``).
     """
-    from twoball.fem_membrane.export import check_output_path
-    from twoball.verify.output.plots import (
-        PLOT_KINDS,
-        WATERFALL_INSTANTS,
-        eigen_figure,
-        eigen_table,
-        pole_figure,
-        save_figure,
-        waterfall_figure,
-    )
+    from twoball.staging import check_file
+    from twoball.verify.output.figures import PLOT_KINDS, save_figure
+    from twoball.verify.output.figures.eigen import eigen_figure, eigen_table
+    from twoball.verify.output.figures.pole import pole_figure
+    from twoball.verify.output.figures.waterfall import WATERFALL_INSTANTS, waterfall_figure
 
     if kind not in PLOT_KINDS:
         raise ParameterError("kind", "one of " + ", ".join(PLOT_KINDS), kind)
     if not str(out).lower().endswith(".png"):
         raise ParameterError("out", "a file name ending in .png", str(out))
-    target = check_output_path(out)
+    target = check_file(out)
     rows: list[tuple[str, str]] = []
     reports: dict[str, LiftoffReport] = {}
     if kind == "eigen":

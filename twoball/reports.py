@@ -29,7 +29,8 @@ def parse_levels(text: str, mesh: str, study: str = "h") -> tuple[int, ...]:
     Mesh levels are bounded per mesh; time-step levels (``study="dt"``: dt =
     0.01 / 2^level) have their own bounds.
     """
-    from twoball.verify.studies.studies import DT_LEVEL_LIMITS, LEVEL_LIMITS
+    from twoball.verify.studies.fem_runs import LEVEL_LIMITS
+    from twoball.verify.studies.time_step import DT_LEVEL_LIMITS
 
     low_limit, high_limit = DT_LEVEL_LIMITS if study == "dt" else LEVEL_LIMITS[mesh]
     what = "study dt" if study == "dt" else f"mesh {mesh}"
@@ -85,15 +86,11 @@ def converge(
     StudyResult
         ``passed`` is False if an observed order leaves its expected band.
     """
-    from twoball.verify.studies.studies import (
-        DEFAULT_LEVELS,
-        STUDIES,
-        parse_modes,
-        run_dt_study,
-        run_h_study,
-        run_modes_study,
-        run_order_study,
-    )
+    from twoball.verify.studies.fem_runs import DEFAULT_LEVELS
+    from twoball.verify.studies.modes import parse_modes, run_modes_study
+    from twoball.verify.studies.refinement import run_h_study, run_order_study
+    from twoball.verify.studies.result import STUDIES
+    from twoball.verify.studies.time_step import run_dt_study
 
     case = Case.preset("basketball") if case is None else case
     if study not in STUDIES:
@@ -134,24 +131,9 @@ def converge(
     else:
         result = run_dt_study(case, mesh=mesh, order=order, levels=level_list, **common)
     if target is not None:
-        from twoball.verify.output.plots_verify import plot_study
-        from twoball.verify.output.report_files import (
-            json_text,
-            study_csv,
-            study_markdown,
-            text_writer,
-            write_report_dir,
-        )
+        from twoball.verify.output.report_files import study_files, write_report_dir
 
-        write_report_dir(
-            target,
-            {
-                "report.md": text_writer(study_markdown(result)),
-                "results.json": text_writer(json_text(result.as_dict())),
-                "results.csv": text_writer(study_csv(result)),
-                "convergence.png": lambda path: plot_study(path, result),
-            },
-        )
+        write_report_dir(target, study_files(result), "twoball converge")
     return result
 
 
@@ -188,7 +170,8 @@ def verify(
     VerifyResult
         ``passed`` only if every check passes.
     """
-    from twoball.verify.checks.checks import config, run_verify
+    from twoball.verify.checks.config import config
+    from twoball.verify.checks.run import run_verify
 
     case = Case.preset("basketball") if case is None else case
     if thorough and fast:
@@ -201,11 +184,7 @@ def verify(
     configuration = config("fast" if fast else ("thorough" if thorough else "default"))
     result = run_verify(case, sigma, recontact, t_end, configuration, progress)
     if target is not None:
-        from twoball.verify.output.report_files import text_writer, verify_files, write_report_dir
+        from twoball.verify.output.report_files import verify_files, write_report_dir
 
-        files = verify_files(result)
-        write_report_dir(
-            target,
-            {n: text_writer(t) if isinstance(t, str) else t for n, t in files.items()},
-        )
+        write_report_dir(target, verify_files(result), "twoball verify")
     return result

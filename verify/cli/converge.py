@@ -14,7 +14,7 @@ from rich.table import Table
 from twoball.verify.cli.case_options import add_case_options, case_from_options
 from twoball.verify.cli.console import console, print_notes
 from twoball.verify.output.report_files import json_text, study_summary_rows
-from twoball.verify.studies.studies import STUDIES, StudyResult
+from twoball.verify.studies.result import STUDIES, StudyResult
 
 MESHES = ("sphere", "axisym")
 

@@ -87,7 +87,7 @@ def register(parser: argparse.ArgumentParser) -> None:
     add_backend_option(parser)
     parser.add_argument(
         "--format",
-        help="xdmf (with NAME.h5), pvd (with NAME_0000.vtu ...) or vtu (one frame); "
+        help="xdmf (with NAME.h5), pvd (frames in NAME_frames-ID/) or vtu (one frame); "
         "default: from the suffix of --out (" + ", ".join(FORMATS) + ")",
     )
     add_frame_options(parser, DEFAULT_FRAMES)

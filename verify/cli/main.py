@@ -108,7 +108,20 @@ def chosen_command(argv: Sequence[str]) -> str | None:
 
 
 def main(argv: Sequence[str] | None = None) -> int:
-    """Entry point of the ``twoball`` console script."""
+    """Entry point of the ``twoball`` console script.
+
+    SIGINT/SIGTERM end it with exit status 130/143 and the line ``twoball:
+    interrupted``; an OSError while writing gives one line naming the path and
+    exit status 2 (3 if the cause is not the user's path); see
+    :mod:`twoball.verify.cli.guard`.
+    """
+    from twoball.verify.cli.guard import guarded
+
+    return guarded(_main, argv)
+
+
+def _main(argv: Sequence[str] | None = None) -> int:
+    """Parse ``argv`` and run the chosen subcommand (errors mapped to one line)."""
     argv = list(sys.argv[1:] if argv is None else argv)
     parser = build_parser(chosen_command(argv))
     if not argv:
@@ -127,11 +140,6 @@ def main(argv: Sequence[str] | None = None) -> int:
         fail(cli_message(error, args))
     except NumericalError as error:
         fail(f"numerical trouble: {error}", EXIT_NUMERICAL)
-    except BrokenPipeError:  # output piped into a reader that stopped (e.g. `head`)
-        import os
-
-        os.dup2(os.open(os.devnull, os.O_WRONLY), sys.stdout.fileno())
-        return 0
 
 
 if __name__ == "__main__":

@@ -13,7 +13,7 @@ from twoball.verify.cli.console import console, key_value_table, print_notes
 from twoball.verify.cli.mesh_options import SPHERE_KINDS, add_mesh_options, mesh_arguments
 from twoball.verify.cli.mesh_options import VALID_RANGES as MESH_RANGES
 from twoball.verify.output.fields import BACKENDS
-from twoball.verify.output.plots import WATERFALL_INSTANTS
+from twoball.verify.output.figures.waterfall import WATERFALL_INSTANTS
 
 VALID_RANGES: dict[str, str] = {
     **MESH_RANGES,

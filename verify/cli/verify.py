@@ -18,7 +18,7 @@ from rich.progress import (
     TimeElapsedColumn,
 )
 from rich.table import Table
-from twoball.verify.checks.checks import VerifyResult
+from twoball.verify.checks.results import VerifyResult
 from twoball.verify.cli.case_options import add_case_options, case_from_options
 from twoball.verify.cli.console import console, print_notes
 from twoball.verify.output.report_files import json_text
@@ -75,7 +75,7 @@ def print_result(result: VerifyResult, out: Path) -> None:
 
 def run(args: argparse.Namespace) -> int:
     """Run ``twoball verify``: :func:`twoball.verify` with the options, report in ``--out``."""
-    from twoball.verify.checks.checks import config
+    from twoball.verify.checks.config import config
 
     from twoball.reports import verify
 

@@ -1,9 +1,10 @@
 """Report directories written all at once: Markdown, JSON, CSV and PNG files.
 
 A report directory (``twoball verify --out DIR``, ``twoball converge --out DIR``)
-is first written into a fresh hidden directory beside ``DIR``; only when every
-file is complete does it replace ``DIR`` (two renames on the same file system).
-A failed run therefore leaves the previous report untouched and no partial files.
+is written through :func:`twoball.staging.staged_folder`: into a scratch folder
+beside ``DIR``, then exchanged with ``DIR`` in one step.  A failed or
+interrupted run leaves the previous report untouched and no scratch; a folder
+that holds anything twoball did not write is refused, never emptied.
 """
 
 from __future__ import annotations
@@ -13,101 +14,110 @@ import io
 import json
 import math
 import os
-import shutil
-import tempfile
 from collections.abc import Callable, Iterable, Mapping, Sequence
 from pathlib import Path
 from typing import Any
 
 import numpy as np
-from twoball.modal.errors import ParameterError
-from twoball.verify.checks.checks import VerifyResult
-from twoball.verify.studies.studies import QuantityResult, StudyResult
+from twoball.verify.checks.results import VerifyResult
+from twoball.verify.studies.quantities import QuantityResult
+from twoball.verify.studies.result import StudyResult
+
+from twoball.staging import MARKER as MARKER  # re-exported: the marker of report folders
 
 Writer = Callable[[Path], None]
-MARKER = ".twoball-report"  # written into every report directory; only such are replaced
+PROVENANCE = "provenance.json"  # run times and dates: the one file that differs between runs
 
 
 # --------------------------------------------------------------------------- directories
 def check_output_dir(path: str | os.PathLike[str], flag: str = "--out") -> Path:
-    """Validate an output directory before any work is done.
+    """Validate a report directory before any work is done (:func:`twoball.staging.check_folder`).
 
-    ``path`` may exist -- then it must be an empty directory or an earlier twoball
-    report (it holds the marker file ``.twoball-report``), which will be replaced;
-    any other folder is refused, so ``--out ~`` cannot delete a home directory --
-    or not (then its parent must be an existing directory).  A scratch directory
-    is created and removed in the parent to prove that it is writable.
-
-    Raises
-    ------
-    ParameterError
-        Naming ``flag`` and the rule, for the one-line CLI error (exit 2).
+    ``path`` may be missing, empty or an earlier twoball output (only the files
+    its marker lists); anything else raises ParameterError naming ``flag``.
     """
-    out = Path(path).expanduser()
-    valid = "a directory path whose parent exists and is writable"
-    if out.exists() and not out.is_dir():
-        raise ParameterError(flag, valid + " (it is an existing file)", str(path))
-    if out.is_dir() and any(out.iterdir()) and not (out / MARKER).is_file():
-        raise ParameterError(
-            flag, "a new or empty directory, or an earlier twoball report", str(path)
-        )
-    parent = out.absolute().parent
-    if not parent.is_dir():
-        raise ParameterError(flag, valid, str(path))
-    try:
-        probe = tempfile.mkdtemp(prefix=f".{out.name}.probe-", dir=parent)
-    except OSError:
-        raise ParameterError(flag, valid, str(path)) from None
-    os.rmdir(probe)
-    return out
+    from twoball.staging import check_folder
+
+    return check_folder(path, flag)
 
 
-def write_report_dir(out: str | os.PathLike[str], writers: Mapping[str, Writer]) -> Path:
+def write_report_dir(
+    out: str | os.PathLike[str],
+    writers: Mapping[str, str | Writer],
+    writer: str = "twoball report",
+) -> Path:
     """Write every file of a report, then put the directory in place of ``out``.
 
     Parameters
     ----------
     out : path
-        The report directory (replaced if it exists).
-    writers : mapping of file name -> callable(path)
-        Each callable writes one file at the path it is given.
+        The report directory (replaced if it exists and twoball wrote it).
+    writers : mapping of file name -> str or callable(path)
+        A text (written as UTF-8) or a callable that writes the file at the
+        path it is given.
+    writer : str
+        Who wrote the folder, recorded in its marker file.
 
     Returns
     -------
     Path
         ``out``.
     """
-    out = check_output_dir(out)
-    parent = out.absolute().parent
-    scratch = Path(tempfile.mkdtemp(prefix=f".{out.name}.new-", dir=parent))
-    try:
-        (scratch / MARKER).write_text(
-            "written by twoball; this folder is replaced by the next run\n"
-        )
+    from twoball.staging import staged_folder
+
+    with staged_folder(out, writer=writer) as scratch:
         for name, write in writers.items():
-            write(scratch / name)
-        os.chmod(scratch, 0o755)
-        _swap(scratch, out.absolute())
-    except BaseException:
-        shutil.rmtree(scratch, ignore_errors=True)
-        raise
-    return out
+            if isinstance(write, str):
+                (scratch / name).write_text(write, encoding="utf-8")
+            else:
+                write(scratch / name)
+    return Path(out)
 
 
-def _swap(new: Path, out: Path) -> None:
-    """Move ``new`` to ``out``; an existing ``out`` is removed only after the move."""
-    if not out.exists():
-        os.rename(new, out)
-        return
-    old = Path(tempfile.mkdtemp(prefix=f".{out.name}.old-", dir=out.parent))
-    os.rmdir(old)
-    os.rename(out, old)
-    try:
-        os.rename(new, out)
-    except BaseException:
-        os.rename(old, out)
-        raise
-    shutil.rmtree(old, ignore_errors=True)
+def split_provenance(data: Any, keys: Sequence[str] = ("seconds", "generated")) -> tuple[Any, Any]:
+    """``data`` without run times and dates, and those entries on their own (same nesting).
+
+    Results must be byte-identical for the same inputs; how long a run took and
+    when goes into :data:`PROVENANCE` instead.
+    """
+    if isinstance(data, dict):
+        kept, moved = {}, {}
+        for key, value in data.items():
+            if key in keys:
+                moved[key] = value
+                continue
+            kept[key], sub = split_provenance(value, keys)
+            if sub not in (None, {}, []):
+                moved[key] = sub
+        return kept, moved
+    if isinstance(data, list):
+        pairs = [split_provenance(v, keys) for v in data]
+        moved = [m for _, m in pairs]
+        return [k for k, _ in pairs], (moved if any(m not in (None, {}) for m in moved) else None)
+    return data, None
+
+
+def result_files(
+    data: Mapping[str, Any], keys: Sequence[str] = ("seconds", "generated")
+) -> dict[str, str]:
+    """``results.json`` (byte-identical for the same inputs) and ``provenance.json``.
+
+    The provenance holds what differs from run to run: run times (every
+    ``seconds`` entry, at its place in the results), the date, the versions.
+    """
+    import platform
+    from datetime import UTC, datetime
+
+    from twoball._version import __version__
+
+    results, timings = split_provenance(dict(data), keys)
+    provenance = {
+        "generated": datetime.now(UTC).isoformat(timespec="seconds"),
+        "twoball": __version__,
+        "python": platform.python_version(),
+        "seconds": timings or {},
+    }
+    return {"results.json": json_text(results), PROVENANCE: json_text(provenance)}
 
 
 # --------------------------------------------------------------------------- file writers
@@ -277,6 +287,19 @@ STUDY_CSV_HEADER = (
 )
 
 
+def study_files(study: StudyResult) -> dict[str, str | Writer]:
+    """Every file of the ``converge`` report: texts, and a writer for the PNG."""
+    from twoball.verify.output.figures import REPORT_DPI, save_figure
+    from twoball.verify.output.figures.study import study_figure
+
+    return {
+        "report.md": study_markdown(study),
+        **result_files(study.as_dict()),
+        "results.csv": study_csv(study),
+        "convergence.png": lambda path: save_figure(study_figure(study), path, dpi=REPORT_DPI),
+    }
+
+
 def study_csv(study: StudyResult) -> str:
     """One row per quantity and grid (dimensionless values; see ``scale`` in the JSON)."""
     rows = []
@@ -419,8 +442,11 @@ def verify_files(result: VerifyResult) -> dict[str, str | Writer]:
     ``checks.csv`` and ``eigenvalues.csv`` are rounded for reading (and for the
     documentation's tables).
     """
-    from twoball.verify.checks.checks import RUN_COLUMNS, format_rows
-    from twoball.verify.output.plots_verify import plot_eigen_errors, plot_energy, plot_pole_motion
+    from twoball.verify.checks.results import RUN_COLUMNS, format_rows
+    from twoball.verify.output.figures import REPORT_DPI, save_figure
+    from twoball.verify.output.figures.eigen import eigen_errors_figure
+    from twoball.verify.output.figures.energy import energy_figure
+    from twoball.verify.output.figures.pole import pole_motion_figure
 
     case = result.case
     t_end = result.settings["t_end_s"] / case.scalings.time
@@ -433,25 +459,31 @@ def verify_files(result: VerifyResult) -> dict[str, str | Writer]:
     summary = [
         [r.backend, r.mesh, r.dofs, fmt(_scaled(r.t_l_s, 1e3), 6, "f"), fmt(r.v_l_m_s, 6, "f"),
          fmt(r.ratio, 5, "f"), fmt(r.t_diff, 2), fmt(r.v_diff, 2), fmt(r.t_diff_converged, 2),
-         fmt(r.v_diff_converged, 2), f"{r.seconds:.2f}"]
+         fmt(r.v_diff_converged, 2)]
         for r in result.rows
     ]  # fmt: skip
     degrees = result.eigen[0].degrees.tolist() if result.eigen else []
     eigen_rows = [[e.label] + [fmt(x, 2) for x in e.errors] for e in result.eigen]
+    keep = [k for k, name in enumerate(RUN_COLUMNS) if name != "seconds"]
+    runs = [[row[k] for k in keep] for row in format_rows(result.rows)]
     return {
         "report.md": verify_markdown(result),
-        "results.json": json_text(result.as_dict()),
-        "results.csv": csv_text(RUN_COLUMNS, format_rows(result.rows)),
+        **result_files(result.as_dict()),
+        "results.csv": csv_text([RUN_COLUMNS[k] for k in keep], runs),
         "summary.csv": csv_text(SUMMARY_HEADER, summary),
         "checks.csv": csv_text(
             ["check", "value", "tolerance", "band low", "band high", "result", "description"],
             checks_rows,
         ),
         "eigenvalues.csv": csv_text(["discretisation"] + [f"l = {d}" for d in degrees], eigen_rows),
-        "pole.png": lambda path: plot_pole_motion(path, case, result.traces, t_end),
-        "eigenvalues.png": lambda path: plot_eigen_errors(path, result.eigen),
-        "energy.png": lambda path: plot_energy(
-            path, case, result.energy_curves, result.energy_bound
+        "pole.png": lambda path: save_figure(
+            pole_motion_figure(case, result.traces, t_end), path, dpi=REPORT_DPI
+        ),
+        "eigenvalues.png": lambda path: save_figure(
+            eigen_errors_figure(result.eigen), path, dpi=REPORT_DPI
+        ),
+        "energy.png": lambda path: save_figure(
+            energy_figure(case, result.energy_curves, result.energy_bound), path, dpi=REPORT_DPI
         ),
     }
 
@@ -467,5 +499,4 @@ SUMMARY_HEADER = (
     "dv_l/v_l",
     "dt_l/t_l (N->inf)",
     "dv_l/v_l (N->inf)",
-    "seconds",
 )

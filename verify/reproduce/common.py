@@ -345,9 +345,16 @@ def new_figure(*args: Any, **kwargs: Any) -> tuple[Any, Any]:
 
 
 def save(ctx: Context, figure: Any, name: str) -> str:
-    """Write ``figure`` as ``name`` (PNG) into the output directory and close it."""
-    import matplotlib.pyplot as plt
+    """Write ``figure`` as ``name`` (PNG) into the output directory and close it.
 
-    figure.savefig(ctx.path(name), dpi=110)
-    plt.close(figure)
+    Through :func:`twoball.verify.output.figures.save_figure`, the one way
+    twoball saves a figure.
+    """
+    import matplotlib.pyplot as plt
+    from twoball.verify.output.figures import save_figure
+
+    try:
+        save_figure(figure, ctx.path(name), dpi=110)
+    finally:
+        plt.close(figure)
     return name

@@ -1,9 +1,13 @@
 """``twoball reproduce``: recompute the paper's figures and numbers, side by side with ours.
 
 The parts (see :data:`PARTS`) each write their PNG figures and return a section of
-the report; :func:`reproduce` runs the selected parts into a temporary directory
-next to the output directory and renames it into place only when everything has
-been written, so a failed or interrupted run leaves no partial output.
+the report; :func:`reproduce` runs the selected parts into a scratch folder and
+puts it in place of the output folder only when everything has been written
+(:func:`twoball.staging.staged_folder`), so a failed or interrupted run leaves no
+partial output.  The output folder is recognised by twoball's marker file and
+its list of files, never by a file name: a folder holding anything else is
+refused.  ``reproduction.json`` is byte-identical for the same inputs; the
+date and run times go to ``provenance.json``.
 """
 
 from __future__ import annotations
@@ -11,8 +15,6 @@ from __future__ import annotations
 import json
 import os
 import platform
-import shutil
-import tempfile
 import time
 from collections.abc import Callable, Sequence
 from datetime import UTC, datetime
@@ -39,6 +41,7 @@ PARTS: dict[str, Callable[[Context], Section]] = {
 DEFAULT_OUT = "twoball-reproduction"
 REPORT = "reproduction.md"
 DATA = "reproduction.json"
+PROVENANCE = "provenance.json"
 
 
 def parse_only(text: str | None) -> list[str]:
@@ -53,53 +56,14 @@ def parse_only(text: str | None) -> list[str]:
 
 
 def check_output(out: str | os.PathLike) -> Path:
-    """The output directory, checked before any work: its parent must exist and be writable.
+    """The output folder, checked before any work (:func:`twoball.staging.check_folder`).
 
-    An existing directory is replaced only if it is empty or holds an earlier
-    reproduction (it has a ``reproduction.md``), so other files are never deleted.
+    It may be missing, empty, or an earlier twoball output holding only the
+    files its marker lists; anything else raises ParameterError naming ``--out``.
     """
-    target = Path(out).expanduser().absolute()
-    valid = "a directory whose parent exists and is writable"
-    parent = target.parent
-    if not parent.is_dir() or not os.access(parent, os.W_OK | os.X_OK):
-        raise ParameterError("--out", valid, str(out))
-    if target.exists():
-        if not target.is_dir():
-            raise ParameterError("--out", valid + " (a file of that name exists)", str(out))
-        if any(target.iterdir()) and not (target / REPORT).is_file():
-            raise ParameterError(
-                "--out", "a new or empty directory, or an earlier reproduction", str(out)
-            )
-    return target
+    from twoball.staging import check_folder
 
-
-def _staging(target: Path) -> Path:
-    try:
-        staging = Path(tempfile.mkdtemp(prefix=f".{target.name}.partial-", dir=target.parent))
-    except OSError:
-        raise ParameterError(
-            "--out", "a directory whose parent exists and is writable", str(target)
-        ) from None
-    mask = os.umask(0)
-    os.umask(mask)
-    os.chmod(staging, 0o777 & ~mask)  # mkdtemp makes it private; the result should not be
-    return staging
-
-
-def _swap_in(staging: Path, target: Path) -> None:
-    """Rename the finished staging directory to ``target`` (replacing an earlier run)."""
-    if target.exists():
-        old = Path(tempfile.mkdtemp(prefix=f".{target.name}.old-", dir=target.parent))
-        os.rename(target, old / target.name)
-        try:
-            os.rename(staging, target)
-        except BaseException:
-            os.rename(old / target.name, target)  # put the earlier run back
-            shutil.rmtree(old, ignore_errors=True)
-            raise
-        shutil.rmtree(old, ignore_errors=True)
-    else:
-        os.rename(staging, target)
+    return check_folder(out, "--out")
 
 
 def reproduce(
@@ -114,37 +78,39 @@ def reproduce(
     Returns the output directory and the sections.  Nothing is written to ``out``
     unless every part succeeded.
     """
+    from twoball.verify.output.report_files import result_files
+
+    from twoball.staging import staged_folder
+
     target = check_output(out)
     names = list(PARTS) if only is None else list(only)
-    staging = _staging(target)
     own_runner = runner is None
     try:
         if own_runner:
             runner = Runner(workers=1).__enter__()
-        ctx = Context(staging, runner)
-        if progress is not None:
-            ctx.progress = progress
-        sections = []
-        started = time.perf_counter()
-        for name in names:
-            update = ctx.progress(f"part {name}", 1)
-            t0 = time.perf_counter()
-            section = PARTS[name](ctx)
-            section.seconds = time.perf_counter() - t0
-            sections.append(section)
-            update(1)
-        total = time.perf_counter() - started
-        (staging / REPORT).write_text(
-            render_markdown(sections, runner.describe(), total, command), encoding="utf-8"
-        )
-        (staging / DATA).write_text(
-            json.dumps(report_data(sections, runner.describe(), total), indent=2, default=_json),
-            encoding="utf-8",
-        )
-        _swap_in(staging, target)
-    except BaseException:
-        shutil.rmtree(staging, ignore_errors=True)
-        raise
+        with staged_folder(target, "--out", "twoball reproduce") as staging:
+            ctx = Context(staging, runner)
+            if progress is not None:
+                ctx.progress = progress
+            sections = []
+            started = time.perf_counter()
+            for name in names:
+                update = ctx.progress(f"part {name}", 1)
+                t0 = time.perf_counter()
+                section = PARTS[name](ctx)
+                section.seconds = time.perf_counter() - t0
+                sections.append(section)
+                update(1)
+            total = time.perf_counter() - started
+            (staging / REPORT).write_text(
+                render_markdown(sections, runner.describe(), total, command), encoding="utf-8"
+            )
+            data = json.loads(
+                json.dumps(report_data(sections, runner.describe(), total), default=_json)
+            )
+            files = result_files(data, ("seconds", "generated", "runner"))
+            (staging / DATA).write_text(files["results.json"], encoding="utf-8")
+            (staging / PROVENANCE).write_text(files[PROVENANCE], encoding="utf-8")
     finally:
         if own_runner and runner is not None:
             runner.close()

@@ -26,8 +26,10 @@ worker died.
 
 from __future__ import annotations
 
+import contextlib
 import math
 import os
+import signal
 import sys
 from collections.abc import Callable, Sequence
 from concurrent.futures import ProcessPoolExecutor, as_completed
@@ -107,6 +109,33 @@ def _noop() -> int:
     return 0
 
 
+_PR_SET_PDEATHSIG = 1
+
+
+def _worker_init(parent: int) -> None:
+    """Set up a pool worker: it ends with its parent and leaves signals to the parent.
+
+    * Linux: ``prctl(PR_SET_PDEATHSIG, SIGKILL)`` -- the kernel kills the worker
+      when the parent dies, however it dies (SIGKILL included).  Elsewhere the
+      parent's ``finally`` (:meth:`Runner.close`) is the only guard.
+    * SIGINT is ignored (Ctrl-C reaches the whole process group; the parent
+      handles it and terminates the workers), SIGTERM is the default (the
+      parent's ``terminate`` ends the worker at once, without a traceback).
+    """
+    signal.signal(signal.SIGINT, signal.SIG_IGN)
+    signal.signal(signal.SIGTERM, signal.SIG_DFL)
+    if sys.platform.startswith("linux"):
+        import ctypes
+
+        try:
+            libc = ctypes.CDLL(None, use_errno=True)
+            libc.prctl(_PR_SET_PDEATHSIG, signal.SIGKILL, 0, 0, 0)
+        except (OSError, AttributeError):  # pragma: no cover - no prctl: parent's finally only
+            pass
+    if os.getppid() != parent:  # the parent died before prctl took effect
+        os._exit(1)
+
+
 class Runner:
     """Where tasks run; use as a context manager so pools and clients are closed.
 
@@ -148,20 +177,39 @@ class Runner:
             import multiprocessing
 
             context = multiprocessing.get_context(_start_method())
-            self._pool = ProcessPoolExecutor(self.workers, mp_context=context)
-            # start every worker now, before a progress bar starts its thread
-            for future in [self._pool.submit(_noop) for _ in range(self.workers)]:
-                future.result()
+            self._pool = ProcessPoolExecutor(
+                self.workers,
+                mp_context=context,
+                initializer=_worker_init,
+                initargs=(os.getpid(),),
+            )
+            from twoball.staging import pause
+
+            try:
+                # start every worker now, before a progress bar starts its thread
+                for future in [self._pool.submit(_noop) for _ in range(self.workers)]:
+                    future.result()
+                pause("pool")
+            except BaseException:  # __exit__ is not called when __enter__ raises
+                self.close(abort=True)
+                raise
         return self
 
-    def __exit__(self, *exc: object) -> None:
-        self.close()
+    def __exit__(self, kind: type[BaseException] | None, *exc: object) -> None:
+        self.close(abort=kind is not None)
 
-    def close(self) -> None:
-        """Shut the pool down / disconnect from the scheduler (the scheduler keeps running)."""
+    def close(self, abort: bool = False) -> None:
+        """Shut the pool down / disconnect from the scheduler (the scheduler keeps running).
+
+        ``abort`` (an exception or a signal is on its way): the workers are
+        terminated and reaped at once instead of finishing their tasks.
+        """
         if self._pool is not None:
-            self._pool.shutdown(wait=True, cancel_futures=True)
-            self._pool = None
+            pool, self._pool = self._pool, None
+            if abort:
+                _terminate(pool)
+            else:
+                pool.shutdown(wait=True, cancel_futures=True)
         if self._client is not None:
             self._client.close()
             self._client = None
@@ -233,6 +281,24 @@ class Runner:
         for future in as_completed(futures):
             start, length = futures[future]
             yield start, _result(future, length)
+
+
+def _terminate(pool: ProcessPoolExecutor) -> None:
+    """End the pool's workers now (SIGTERM, then SIGKILL after 2 s) and reap them."""
+    from twoball.staging import deferred_signals
+
+    with deferred_signals():
+        processes = list((getattr(pool, "_processes", None) or {}).values())
+        for process in processes:
+            with contextlib.suppress(Exception):
+                process.terminate()
+        for process in processes:
+            with contextlib.suppress(Exception):
+                process.join(2.0)
+                if process.is_alive():
+                    process.kill()
+                    process.join(1.0)
+        pool.shutdown(wait=True, cancel_futures=True)
 
 
 def _result(future: Any, length: int) -> list[Outcome]:

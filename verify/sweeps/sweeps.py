@@ -11,7 +11,6 @@ from __future__ import annotations
 
 import math
 import os
-import tempfile
 from collections.abc import Callable, Iterable, Sequence
 from dataclasses import dataclass
 from pathlib import Path
@@ -233,66 +232,22 @@ def run_sweep(
 # --- plots -------------------------------------------------------------------
 
 
+def plot_sweep(grid: SweepGrid, points: list[SweepPoint], target: str | os.PathLike[str]) -> Path:
+    """Write :func:`~twoball.verify.output.figures.sweep.sweep_figure` as PNG to ``target``.
+
+    The path was checked before the sweep by :func:`check_plot_path`; the file
+    is replaced whole or not at all (:func:`twoball.staging.staged_file`).
+    """
+    from twoball.verify.output.figures import save_figure
+    from twoball.verify.output.figures.sweep import sweep_figure
+
+    return save_figure(sweep_figure(grid, points), target, "--plot", dpi=120)
+
+
 def check_plot_path(path: str, flag: str = "--plot") -> Path:
-    """A PNG path whose directory exists and is writable, else ParameterError naming ``flag``."""
-    target = Path(path).expanduser()
-    valid = "a .png file in an existing, writable directory"
-    if target.suffix.lower() != ".png":
-        raise ParameterError(flag, valid, path)
-    parent = target.parent if str(target.parent) else Path(".")
-    if not parent.is_dir() or not os.access(parent, os.W_OK | os.X_OK):
-        raise ParameterError(flag, valid, path)
-    if target.is_dir():
-        raise ParameterError(flag, valid, path)
-    return target
+    """A PNG path (not a folder or link) in an existing writable folder, else ParameterError."""
+    from twoball.staging import check_file
 
-
-def save_figure(figure: Any, target: Path, flag: str = "--plot") -> None:
-    """Write ``figure`` as PNG via a temporary file in the same directory, then rename."""
-    try:
-        handle, temp = tempfile.mkstemp(prefix=f".{target.name}.", suffix=".png", dir=target.parent)
-    except OSError:
-        raise ParameterError(flag, "a .png file in a writable directory", str(target)) from None
-    os.close(handle)
-    try:
-        figure.savefig(temp, dpi=120)
-        os.replace(temp, target)
-    except BaseException:
-        Path(temp).unlink(missing_ok=True)
-        raise
-
-
-def plot_sweep(grid: SweepGrid, points: list[SweepPoint], target: Path) -> None:
-    """``v_l/|v0|`` and t_l against the parameter (1-D) or as heat maps (2-D), one PNG."""
-    import matplotlib
-
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
-
-    ratio = np.array([p.ratio for p in points]).reshape(grid.shape)
-    t_ms = np.array([p.t_liftoff_s for p in points]).reshape(grid.shape) * 1e3
-    if len(grid.shape) == 1:
-        fig, axes = plt.subplots(2, 1, figsize=(6.4, 6.0), sharex=True, layout="constrained")
-        x = grid.values[0]
-        axes[0].plot(x, ratio, ".-")
-        axes[0].set_ylabel("v_l / |v0|")
-        axes[1].plot(x, t_ms, ".-")
-        axes[1].set_ylabel("t_l [ms]")
-        axes[1].set_xlabel(PARAMETER_LABELS[grid.parameters[0]])
-        for ax in axes:
-            ax.grid(True, alpha=0.3)
-    else:
-        fig, axes = plt.subplots(1, 2, figsize=(11.0, 4.4), layout="constrained")
-        y, x = grid.values  # first parameter on the vertical axis (rows)
-        for ax, data, label in ((axes[0], ratio, "v_l / |v0|"), (axes[1], t_ms, "t_l [ms]")):
-            cmap = matplotlib.colormaps["viridis"].with_extremes(bad="0.85")
-            mesh = ax.pcolormesh(x, y, np.ma.masked_invalid(data), cmap=cmap, shading="nearest")
-            fig.colorbar(mesh, ax=ax, label=label)
-            ax.set_xlabel(PARAMETER_LABELS[grid.parameters[1]])
-            ax.set_ylabel(PARAMETER_LABELS[grid.parameters[0]])
-            ax.set_title(f"{label} (grey: no lift-off or error)")
-    errors = sum(p.error is not None for p in points)
-    title = "Closed-form lift-off sweep" + (f" ({errors} points failed)" if errors else "")
-    fig.suptitle(title)
-    save_figure(fig, target)
-    plt.close(fig)
+    if Path(path).suffix.lower() != ".png":
+        raise ParameterError(flag, "a .png file in an existing, writable directory", path)
+    return check_file(path, flag)

@@ -1,0 +1,49 @@
+"""twoball owns exactly one top-level import name, and the parts map under it."""
+
+from __future__ import annotations
+
+import importlib.metadata
+import pathlib
+import sysconfig
+import tomllib
+
+ROOT = pathlib.Path(__file__).resolve().parents[1]
+PARTS = {"twoball": "twoball", "modal": "twoball.modal", "fem_membrane": "twoball.fem_membrane"}
+PARTS["verify"] = "twoball.verify"
+
+
+def _pyproject() -> dict:
+    return tomllib.loads((ROOT / "pyproject.toml").read_text())
+
+
+def test_every_source_package_is_installed_under_twoball():
+    """Each folder with an __init__.py under a part is listed, under its dotted name."""
+    config = _pyproject()["tool"]["setuptools"]
+    assert config["package-dir"] == {dotted: folder for folder, dotted in PARTS.items()}
+    expected = set()
+    for folder, dotted in PARTS.items():
+        for init in (ROOT / folder).rglob("__init__.py"):
+            relative = init.parent.relative_to(ROOT / folder).parts
+            expected.add(".".join((dotted, *relative)))
+    assert set(config["packages"]) == expected
+
+
+def test_installed_distribution_has_one_top_level_name():
+    """The installed files (RECORD) put nothing at the top of site-packages but twoball."""
+    site = [sysconfig.get_paths()["purelib"]]  # not the checkout's twoball.egg-info
+    (dist,) = [d for d in importlib.metadata.distributions(path=site) if d.name == "twoball"]
+    files = [pathlib.PurePosixPath(str(f)) for f in dist.files or []]
+    editable = any("__editable__" in f.name for f in files)
+    files = [f for f in files if "__editable__" not in f.name]  # an editable install's finder
+    top = {f.parts[0] for f in files if not f.parts[0].endswith((".dist-info", ".pth"))}
+    top = {name.removesuffix(".py") for name in top if name != ".."}
+    assert top <= {"twoball"}, f"unexpected top-level names {sorted(top)}"
+    if not editable:  # a regular install holds the package itself
+        assert "twoball" in top
+        names = {f.parts[1] for f in files if f.parts[0] == "twoball" and len(f.parts) > 2}
+        assert {"modal", "fem_membrane", "verify"} <= names
+
+
+def test_console_script_points_into_twoball():
+    scripts = _pyproject()["project"]["scripts"]
+    assert scripts == {"twoball": "twoball.verify.cli.main:main"}

@@ -1,0 +1,561 @@
+"""Atomic output: the one way twoball puts a file, a collection or a folder in place.
+
+Every writer (report folders, reproduction, exports, renders, plots) works in a
+*scratch* entry beside its target and commits it with renames on the same file
+system, so a reader sees the earlier complete output or the new complete
+output, never a mix and never a partial file:
+
+* :func:`staged_file` -- one file: written as ``scratch/NAME``, then
+  ``os.replace`` onto the target (atomic).
+* :func:`staged_collection` -- a main file with side entries (XDMF + HDF5, PVD
+  + its frames folder): the side entries are moved in first, the main file
+  last.  A side entry named by the hash of its content (the PVD frames folder)
+  never changes an earlier one, so the main file's replacement is the single
+  commit point; a fixed side name (``NAME.h5``) is replaced just before its
+  main file, with SIGINT/SIGTERM held back meanwhile (only SIGKILL or a power
+  cut in that microsecond window can pair an old main file with a new side file).
+* :func:`staged_folder` -- a whole folder (``verify``, ``converge``, ``reproduce``):
+  written into a scratch folder with the marker :data:`MARKER`, then exchanged
+  with the target in one ``renameat2(RENAME_EXCHANGE)`` (two renames where the
+  file system cannot exchange).
+
+Folders twoball writes carry one marker file, :data:`MARKER`: JSON naming the
+writer and listing every file it wrote.  An existing target folder is replaced
+only if it is empty or holds the marker and nothing but the files it lists; any
+other entry (a user's file, a symbolic link) makes :func:`check_folder` raise
+:class:`~twoball.modal.errors.ParameterError` naming ``--out`` and the entry.
+A target that is a symbolic link is refused, never followed.
+
+Scratch entries are named ``.NAME.twoball-scratch-PID-TOKEN`` and removed on
+every exit path: exceptions and, through :func:`raise_on_signals` (which turns
+SIGINT and SIGTERM into :class:`Interrupted`), signals; commits and clean-ups
+run with signals held back (:func:`deferred_signals`).  Scratch left by a killed
+(SIGKILL) process is swept by the next run that writes the same target, once
+its process id is gone.
+
+Testing hook: with ``TWOBALL_TEST_PAUSE=STAGE`` in the environment, :func:`pause`
+prints ``twoball-test-pause: STAGE`` on standard error at that stage and sleeps
+(up to 60 s) so a test can signal the process at a known point.  Stages:
+``begin`` (scratch made, nothing written), ``staged`` (all written, nothing
+moved), ``commit`` (halfway through the moves, signals held back) and ``pool``
+(worker processes started).
+
+Only the standard library is imported: the command line loads this module
+before any numerical one.
+"""
+
+from __future__ import annotations
+
+import contextlib
+import ctypes
+import errno
+import json
+import os
+import re
+import secrets
+import shutil
+import signal
+import sys
+import threading
+import time
+from collections.abc import Callable, Iterator, Sequence
+from pathlib import Path
+
+MARKER = ".twoball-output"
+#: Marker of report folders written by twoball before 0.x; such a folder is
+#: replaced only if everything else in it is a file of :data:`LEGACY_FILES`.
+LEGACY_MARKER = ".twoball-report"
+LEGACY_FILES = frozenset(
+    {
+        "report.md",
+        "results.json",
+        "results.csv",
+        "summary.csv",
+        "checks.csv",
+        "eigenvalues.csv",
+        "pole.png",
+        "eigenvalues.png",
+        "energy.png",
+        "convergence.png",
+    }
+)
+SCRATCH_TAG = "twoball-scratch"
+PAUSE_ENV = "TWOBALL_TEST_PAUSE"
+PAUSE_SECONDS = 60.0
+_NAME_KEEP = 180  # characters of the target's name kept in a scratch name (NAME_MAX 255)
+
+
+# --------------------------------------------------------------------------- signals
+class Interrupted(KeyboardInterrupt):
+    """SIGINT or SIGTERM arrived; ``exit_status`` is 128 + the signal number (130, 143)."""
+
+    def __init__(self, signum: int) -> None:
+        self.signum = int(signum)
+        super().__init__(signal.Signals(self.signum).name)
+
+    @property
+    def exit_status(self) -> int:
+        """Conventional exit status of a process ended by this signal."""
+        return 128 + self.signum
+
+
+_HANDLED = (signal.SIGINT, signal.SIGTERM)
+_state = threading.local()
+_deferral = {"depth": 0, "pending": None}
+
+
+def _raise_interrupted(signum: int, frame: object) -> None:
+    if _deferral["depth"] > 0:  # inside a commit or clean-up: raise when it is over
+        _deferral["pending"] = signum
+        return
+    raise Interrupted(signum)
+
+
+@contextlib.contextmanager
+def raise_on_signals() -> Iterator[None]:
+    """While active, SIGINT and SIGTERM raise :class:`Interrupted` in the main thread.
+
+    Outside the main thread this does nothing (Python runs signal handlers
+    only there).  The previous handlers come back on exit.
+    """
+    if threading.current_thread() is not threading.main_thread():
+        yield
+        return
+    previous = {s: signal.getsignal(s) for s in _HANDLED}
+    for s in _HANDLED:
+        signal.signal(s, _raise_interrupted)
+    try:
+        yield
+    finally:
+        for s, handler in previous.items():
+            signal.signal(s, handler)
+
+
+@contextlib.contextmanager
+def _sigterm_raises() -> Iterator[None]:
+    """Make SIGTERM raise (for API callers) unless someone already handles it."""
+    if (
+        threading.current_thread() is threading.main_thread()
+        and signal.getsignal(signal.SIGTERM) == signal.SIG_DFL
+    ):
+        with raise_on_signals():
+            yield
+    else:
+        yield
+
+
+@contextlib.contextmanager
+def deferred_signals() -> Iterator[None]:
+    """Hold SIGINT/SIGTERM back until the block ends, then raise :class:`Interrupted`.
+
+    Used around commits (a sequence of renames) and scratch clean-up so that a
+    signal can neither split a commit nor leave scratch behind.  Only signals
+    that reach :func:`raise_on_signals`' handler are held back.
+    """
+    _deferral["depth"] += 1
+    try:
+        yield
+    finally:
+        _deferral["depth"] -= 1
+        pending = _deferral["pending"]
+        if _deferral["depth"] == 0 and pending is not None:
+            _deferral["pending"] = None
+            raise Interrupted(pending)
+
+
+def pause(stage: str) -> None:
+    """Test hook: stop at ``stage`` if ``TWOBALL_TEST_PAUSE`` names it (see the module doc)."""
+    if os.environ.get(PAUSE_ENV) != stage:
+        return
+    sys.stderr.write(f"twoball-test-pause: {stage}\n")
+    sys.stderr.flush()
+    end = time.monotonic() + PAUSE_SECONDS
+    while time.monotonic() < end and _deferral["pending"] is None:
+        time.sleep(0.02)  # a signal's handler raises here (or is held back: then stop)
+
+
+# --------------------------------------------------------------------------- errors
+def _parameter_error(flag: str, valid: str, got: object) -> Exception:
+    from twoball.modal.errors import ParameterError
+
+    return ParameterError(flag, valid, got)
+
+
+def _named(error: OSError, target: Path) -> OSError:
+    """``error`` re-addressed to the user's target (not the hidden scratch name)."""
+    if error.errno is None:
+        return error
+    return OSError(error.errno, error.strerror or os.strerror(error.errno), str(target))
+
+
+# --------------------------------------------------------------------------- targets
+def _plain_target(path: str | os.PathLike[str], flag: str, valid: str) -> Path:
+    """``path`` made absolute; refused if it is a symbolic link or its folder is unusable."""
+    out = Path(path).expanduser()
+    if out.name in ("", ".", ".."):
+        raise _parameter_error(flag, valid, str(path))
+    if out.is_symlink():
+        raise _parameter_error(flag, valid + " (not a symbolic link)", str(path))
+    out = out.absolute()
+    parent = out.parent
+    if not parent.is_dir():
+        raise _parameter_error(flag, valid + " (the folder does not exist)", str(path))
+    probe = parent / f".{out.name[:_NAME_KEEP]}.{SCRATCH_TAG}-{os.getpid()}-{secrets.token_hex(4)}"
+    try:  # proves the folder writable (permissions, read-only mounts, /proc, name length)
+        probe.mkdir(mode=0o700)
+        probe.rmdir()
+    except OSError as error:
+        reason = error.strerror or "not writable"
+        raise _parameter_error(
+            flag, valid + f" (the folder is not writable: {reason})", str(path)
+        ) from None
+    sweep_stale(out)
+    return out
+
+
+def check_file(path: str | os.PathLike[str], flag: str = "--out") -> Path:
+    """Check, before any work, that a file (or a collection's main file) can be written.
+
+    The folder must exist and be writable; ``path`` may exist (it is replaced)
+    but must be neither a folder nor a symbolic link.
+
+    Returns
+    -------
+    Path
+        ``path``, absolute.
+
+    Raises
+    ------
+    ParameterError
+        Naming ``flag``, for the one-line command-line error (exit status 2).
+    """
+    valid = "a file path in an existing, writable folder"
+    out = _plain_target(path, flag, valid)
+    if out.is_dir():
+        raise _parameter_error(flag, valid + " (it is a folder)", str(path))
+    return out
+
+
+def check_folder(path: str | os.PathLike[str], flag: str = "--out") -> Path:
+    """Check, before any work, that a folder can be written (and replaced) at ``path``.
+
+    ``path`` may be missing, an empty folder, or a folder twoball wrote (it holds
+    :data:`MARKER` and only the files listed there); anything else is refused.
+
+    Raises
+    ------
+    ParameterError
+        Naming ``flag``; for a folder with foreign content, the first foreign entry.
+    """
+    valid = "a new or empty folder, or one that twoball wrote, in an existing writable folder"
+    out = _plain_target(path, flag, valid)
+    if out.exists() and not out.is_dir():
+        raise _parameter_error(flag, valid + " (it is a file)", str(path))
+    if out.is_dir():
+        foreign = foreign_entry(out)
+        if foreign is not None:
+            raise _parameter_error(
+                flag,
+                "a new or empty folder, or one that twoball wrote",
+                f"{path} (it holds {foreign!r}, which twoball did not write)",
+            )
+    return out
+
+
+def _listed_files(folder: Path) -> set[str] | None:
+    """The files the folder's marker lists (relative POSIX paths), or None without one."""
+    marker = folder / MARKER
+    if marker.is_file() and not marker.is_symlink():
+        try:
+            files = json.loads(marker.read_text(encoding="utf-8"))["files"]
+        except (OSError, ValueError, KeyError, TypeError):
+            return None
+        if isinstance(files, list) and all(isinstance(f, str) for f in files):
+            return set(files) | {MARKER}
+        return None
+    legacy = folder / LEGACY_MARKER
+    if legacy.is_file() and not legacy.is_symlink():
+        return set(LEGACY_FILES) | {LEGACY_MARKER}
+    return None
+
+
+def _entries(folder: Path) -> Iterator[tuple[str, bool]]:
+    """``(relative path, is a real folder)`` of everything below ``folder`` (links not followed)."""
+    for root, dirs, files in os.walk(folder, followlinks=False):
+        base = Path(root).relative_to(folder)
+        for name in sorted(dirs):
+            path = Path(root) / name
+            yield (base / name).as_posix(), not path.is_symlink()
+        for name in sorted(files):
+            yield (base / name).as_posix(), False
+
+
+def foreign_entry(folder: Path) -> str | None:
+    """The first entry of ``folder`` twoball did not write, or None if it may be replaced."""
+    listed = _listed_files(folder)
+    prefixes = {p for f in listed or () for p in _parents(f)}
+    for name, is_dir in _entries(folder):
+        if listed is None:
+            return name
+        if is_dir and name in prefixes:
+            continue
+        if not is_dir and name in listed and not (folder / name).is_symlink():
+            continue
+        return name
+    return None
+
+
+def _parents(relative: str) -> list[str]:
+    parts = relative.split("/")[:-1]
+    return ["/".join(parts[: k + 1]) for k in range(len(parts))]
+
+
+def write_marker(folder: Path, writer: str) -> None:
+    """Write :data:`MARKER` into ``folder``: who wrote it and every file below it (sorted)."""
+    files = sorted(name for name, is_dir in _entries(folder) if not is_dir and name != MARKER)
+    text = json.dumps({"written_by": writer, "files": files}, indent=1) + "\n"
+    (folder / MARKER).write_text(text, encoding="utf-8")
+
+
+# --------------------------------------------------------------------------- scratch
+def _scratch_pattern(out: Path) -> re.Pattern[str]:
+    return re.compile(rf"\.{re.escape(out.name[:_NAME_KEEP])}\.{SCRATCH_TAG}-(\d+)-[0-9a-f]+")
+
+
+def _alive(pid: int) -> bool:
+    if pid == os.getpid():
+        return True
+    try:
+        os.kill(pid, 0)
+    except ProcessLookupError:
+        return False
+    except PermissionError:
+        return True
+    return True
+
+
+def sweep_stale(out: Path) -> list[Path]:
+    """Remove scratch of ``out`` left by processes that no longer exist (killed runs)."""
+    pattern = _scratch_pattern(out)
+    removed = []
+    with contextlib.suppress(OSError):
+        for entry in out.parent.iterdir():
+            match = pattern.fullmatch(entry.name)
+            if match and not _alive(int(match.group(1))):
+                _remove(entry)
+                removed.append(entry)
+    return removed
+
+
+def _remove(path: Path) -> None:
+    if path.is_dir() and not path.is_symlink():
+        shutil.rmtree(path, ignore_errors=True)
+    else:
+        with contextlib.suppress(FileNotFoundError):
+            path.unlink()
+
+
+@contextlib.contextmanager
+def _scratch_dir(out: Path) -> Iterator[Path]:
+    """A fresh scratch folder beside ``out``, removed on every exit path."""
+    name = f".{out.name[:_NAME_KEEP]}.{SCRATCH_TAG}-{os.getpid()}-{secrets.token_hex(4)}"
+    scratch = out.parent / name
+    with _sigterm_raises():
+        try:
+            scratch.mkdir(mode=0o700)
+        except OSError as error:
+            raise _named(error, out) from None
+        try:
+            pause("begin")
+            yield scratch
+        except OSError as error:
+            raise _named(error, out) from error
+        finally:
+            with deferred_signals():
+                _remove(scratch)
+
+
+def _public_mode(path: Path, folder: bool) -> None:
+    """Permissions a plain ``open``/``mkdir`` would have given (umask applied)."""
+    mask = os.umask(0)
+    os.umask(mask)
+    os.chmod(path, (0o777 if folder else 0o666) & ~mask)
+
+
+# --------------------------------------------------------------------------- writers
+@contextlib.contextmanager
+def staged_file(path: str | os.PathLike[str], flag: str = "--out") -> Iterator[Path]:
+    """Yield a scratch path; once the block ends without error, replace ``path`` by it.
+
+    Examples
+    --------
+    >>> with staged_file("plot.png") as scratch:  # doctest: +SKIP
+    ...     figure.savefig(scratch)
+    """
+    out = check_file(path, flag)
+    with _scratch_dir(out) as scratch:
+        target = scratch / out.name
+        yield target
+        if not target.is_file():
+            raise FileNotFoundError(errno.ENOENT, "the writer wrote no file", str(out))
+        pause("staged")
+        with deferred_signals():
+            pause("commit")
+            os.replace(target, out)
+
+
+@contextlib.contextmanager
+def staged_collection(
+    path: str | os.PathLike[str],
+    flag: str = "--out",
+    retire: Callable[[Path, Sequence[str]], Sequence[Path]] | None = None,
+) -> Iterator[Path]:
+    """Yield a scratch folder for a main file (named like ``path``) and its side entries.
+
+    Everything the block writes into the scratch folder is moved beside
+    ``path``: side entries first, the main file last (the commit point).  A
+    side *folder* must carry :data:`MARKER`; if a folder of its name is already
+    there with the same content it is kept (content-addressed names), otherwise
+    it is refused unless twoball wrote it.  ``retire(out, new_names)`` lists
+    earlier entries the new main file no longer refers to; they are removed
+    after the commit (only folders twoball wrote, files as given).
+    """
+    out = check_file(path, flag)
+    with _scratch_dir(out) as scratch:
+        yield scratch
+        if not (scratch / out.name).is_file():
+            raise FileNotFoundError(errno.ENOENT, "the writer wrote no main file", str(out))
+        sides = sorted(p.name for p in scratch.iterdir() if p.name != out.name)
+        for name in sides:  # refuse before anything moves
+            _check_side(scratch / name, out.parent / name, flag)
+        old = list(retire(out, sides)) if retire is not None else []
+        pause("staged")
+        with deferred_signals():
+            for k, name in enumerate(sides):
+                _move_side(scratch / name, out.parent / name)
+                if k == len(sides) // 2:
+                    pause("commit")
+            if not sides:
+                pause("commit")
+            os.replace(scratch / out.name, out)
+            for entry in old:
+                if entry.name not in sides and (not entry.is_dir() or foreign_entry(entry) is None):
+                    _remove(entry)
+
+
+def _check_side(new: Path, existing: Path, flag: str) -> None:
+    if existing.is_symlink():
+        raise _parameter_error(
+            flag, "a path whose side files are not symbolic links", f"{existing}"
+        )
+    if new.is_dir():
+        if not (new / MARKER).is_file():  # pragma: no cover - a writer's mistake
+            raise RuntimeError(f"side folder {new.name} has no {MARKER}")
+        if existing.exists() and (not existing.is_dir() or foreign_entry(existing) is not None):
+            raise _parameter_error(
+                flag,
+                "a path whose side folder is new or one that twoball wrote",
+                f"{existing}",
+            )
+    elif existing.is_dir():
+        raise _parameter_error(flag, "a path whose side files are not folders", f"{existing}")
+
+
+def _same_tree(a: Path, b: Path) -> bool:
+    names_a = [n for n in _entries(a)]
+    if names_a != [n for n in _entries(b)]:
+        return False
+    for name, is_dir in names_a:
+        if not is_dir and (a / name).read_bytes() != (b / name).read_bytes():
+            return False
+    return True
+
+
+def _move_side(new: Path, existing: Path) -> None:
+    if new.is_dir():
+        if existing.is_dir():
+            if _same_tree(new, existing):
+                return  # content-addressed: the earlier copy is this one
+            _exchange(new, existing)
+            return
+        _public_mode(new, folder=True)
+        os.rename(new, existing)
+    else:
+        os.replace(new, existing)
+
+
+@contextlib.contextmanager
+def staged_folder(
+    path: str | os.PathLike[str], flag: str = "--out", writer: str = "twoball"
+) -> Iterator[Path]:
+    """Yield a scratch folder; once the block ends without error, it replaces ``path``.
+
+    :data:`MARKER` (with ``writer`` and the list of files) is added before the
+    commit.  ``path`` is checked first with :func:`check_folder` and again just
+    before the exchange, so a user's file added meanwhile is not lost either.
+    """
+    out = check_folder(path, flag)
+    with _scratch_dir(out) as scratch:
+        yield scratch
+        write_marker(scratch, writer)
+        _public_mode(scratch, folder=True)
+        pause("staged")
+        check_folder(out, flag)
+        with deferred_signals():
+            pause("commit")
+            if out.is_dir():
+                _exchange(scratch, out)  # scratch now holds the old folder: removed on exit
+            else:
+                os.rename(scratch, out)
+
+
+_RENAME_EXCHANGE = 2
+_AT_FDCWD = -100
+
+
+def _exchange(new: Path, out: Path) -> None:
+    """Swap the folders ``new`` and ``out`` atomically (Linux ``renameat2``), else two renames.
+
+    Afterwards ``new`` holds the previous content of ``out``.
+    """
+    if sys.platform.startswith("linux"):
+        try:
+            libc = ctypes.CDLL(None, use_errno=True)
+            renameat2 = libc.renameat2
+        except (OSError, AttributeError):
+            renameat2 = None
+        if renameat2 is not None:
+            result = renameat2(
+                _AT_FDCWD, os.fsencode(new), _AT_FDCWD, os.fsencode(out), _RENAME_EXCHANGE
+            )
+            if result == 0:
+                return
+            code = ctypes.get_errno()
+            if code not in (errno.EINVAL, errno.ENOSYS, errno.EOPNOTSUPP):
+                raise OSError(code, os.strerror(code), str(out))
+    hold = new.with_name(new.name + "0")  # still a scratch name (hex tail): swept if stranded
+    os.rename(out, hold)
+    try:
+        os.rename(new, out)
+    except BaseException:
+        os.rename(hold, out)
+        raise
+    os.rename(hold, new)
+
+
+__all__ = [
+    "LEGACY_MARKER",
+    "MARKER",
+    "Interrupted",
+    "check_file",
+    "check_folder",
+    "deferred_signals",
+    "foreign_entry",
+    "pause",
+    "raise_on_signals",
+    "staged_collection",
+    "staged_file",
+    "staged_folder",
+    "sweep_stale",
+    "write_marker",
+]

@@ -1,0 +1,96 @@
+"""How a command ends when it is interrupted or cannot write: one line, a fixed exit status.
+
+* SIGINT -> ``twoball: interrupted``, exit 130; SIGTERM -> the same line, exit 143
+  (:func:`twoball.staging.raise_on_signals` turns both into an exception, so the
+  writers' clean-up runs and no traceback is printed).
+* An :class:`OSError` (full disk, read-only file system, no permission, name too
+  long, ...) -> ``twoball: error: cannot write PATH: REASON``, exit 2 when the
+  cause lies with the user's path or disk, else 3.
+* Standard output that is closed or full (``--json > /dev/full``) -> one line,
+  exit 2; a reader that stopped early (``| head``) -> exit 0, silently.
+
+Only the standard library is imported here.
+"""
+
+from __future__ import annotations
+
+import errno
+import os
+import sys
+from collections.abc import Callable
+from typing import Any
+
+from twoball.staging import raise_on_signals
+
+EXIT_USAGE = 2
+EXIT_NUMERICAL = 3
+#: errno values that describe the user's path or disk (exit 2); others exit 3.
+USER_ERRNOS = frozenset(
+    {
+        errno.ENOSPC,
+        errno.EDQUOT,
+        errno.EFBIG,
+        errno.EROFS,
+        errno.EACCES,
+        errno.EPERM,
+        errno.ENAMETOOLONG,
+        errno.ENOENT,
+        errno.ENOTDIR,
+        errno.EISDIR,
+        errno.EEXIST,
+        errno.ENOTEMPTY,
+        errno.EXDEV,
+        errno.ELOOP,
+    }
+)
+
+
+def guarded(command: Callable[..., int], *args: Any) -> int:
+    """Run ``command(*args)`` and map interrupts and I/O failures to one line and a status."""
+    with raise_on_signals():
+        try:
+            status = command(*args)
+            _flush_stdout()
+            return status
+        except KeyboardInterrupt as interrupt:
+            _quiet_stdout()
+            sys.stderr.write("twoball: interrupted\n")
+            return int(getattr(interrupt, "exit_status", 130))
+        except BrokenPipeError:  # output piped into a reader that stopped (e.g. `head`)
+            _quiet_stdout()
+            return 0
+        except OSError as error:
+            _quiet_stdout()
+            sys.stderr.write(f"twoball: error: {describe(error)}\n")
+            return EXIT_USAGE if error.errno in USER_ERRNOS else EXIT_NUMERICAL
+
+
+def describe(error: OSError) -> str:
+    """``cannot write PATH: REASON``; an error naming no path came from standard output.
+
+    Every file twoball writes goes through :mod:`twoball.staging`, which names
+    the user's path in its errors; what is left unnamed is the console.
+    """
+    reason = error.strerror or str(error)
+    where = "standard output" if error.filename is None else os.fsdecode(error.filename)
+    return f"cannot write {where}: {reason}"
+
+
+def _flush_stdout() -> None:
+    """Flush standard output now, so a full or closed one fails here, not at exit."""
+    try:
+        sys.stdout.flush()
+    except BrokenPipeError:
+        raise
+    except OSError as error:
+        raise OSError(error.errno, error.strerror, "standard output") from None
+
+
+def _quiet_stdout() -> None:
+    """Point standard output at /dev/null so the interpreter's last flush cannot fail."""
+    try:
+        null = os.open(os.devnull, os.O_WRONLY)
+        os.dup2(null, sys.stdout.fileno())
+        os.close(null)
+    except (OSError, ValueError, AttributeError):
+        pass

@@ -1,0 +1,120 @@
+"""Finite-element eigenvalues of the unit sphere against l (l + 1), eq. (3.11)."""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Sequence
+from dataclasses import dataclass
+from typing import TYPE_CHECKING
+
+import numpy as np
+from twoball.modal.errors import ParameterError
+from twoball.verify.output.figures import new_figure
+
+if TYPE_CHECKING:
+    from matplotlib.figure import Figure
+
+
+@dataclass(frozen=True)
+class EigenTable:
+    """Finite-element eigenvalues grouped by spherical-harmonic degree l (dimensionless).
+
+    Attributes
+    ----------
+    label : str
+        Discretisation, e.g. ``"P1, level 3 (642 dofs)"``.
+    degrees : ndarray, shape (L + 1,)
+        l = 0 .. L.
+    errors : ndarray, shape (L + 1,)
+        Largest relative error ``|lambda_h - l (l + 1)| / (l (l + 1))`` over the
+        2 l + 1 discrete eigenvalues of degree l (absolute error for l = 0).
+    """
+
+    label: str
+    degrees: np.ndarray
+    errors: np.ndarray
+
+
+def eigen_table(level: int, order: int, max_degree: int | None = None) -> EigenTable:
+    """Eigenvalues of the icosphere discretisation against ``l (l + 1)``, eq. (3.11).
+
+    The ``(L + 1)^2`` smallest eigenvalues of ``K phi = lambda M phi`` on the unit
+    sphere are grouped in clusters of ``2 l + 1`` (the multiplicity of degree l).
+    ``max_degree`` defaults to the degree at which ``(L + 1)^2`` reaches half the
+    number of unknowns, capped at 30.
+    """
+    from twoball.fem_membrane.build import build_space
+    from twoball.fem_membrane.eigen import lowest_eigenpairs
+
+    space = build_space("sphere", level=level, order=order)
+    n = space.dofs
+    if max_degree is None:
+        max_degree = min(30, int(math.isqrt(n // 2)) - 1)
+    if isinstance(max_degree, bool) or int(max_degree) != max_degree or max_degree < 1:
+        raise ParameterError("--max-degree", "an integer >= 1", max_degree)
+    if (max_degree + 1) ** 2 > n:
+        raise ParameterError(
+            "--max-degree", f"at most {math.isqrt(n) - 1} on this mesh ({n} unknowns)", max_degree
+        )
+    values = lowest_eigenpairs(space.stiffness, space.mass, (max_degree + 1) ** 2).values
+    degrees = np.arange(max_degree + 1)
+    errors = np.empty(degrees.size)
+    for degree in degrees:
+        cluster = values[degree * degree : (degree + 1) * (degree + 1)]
+        exact = degree * (degree + 1.0)
+        errors[degree] = np.abs(cluster - exact).max() / (exact if exact > 0 else 1.0)
+    return EigenTable(f"P{order}, level {level} ({n} unknowns)", degrees, errors)
+
+
+def eigen_figure(tables: Sequence[EigenTable]) -> Figure:
+    """Relative eigenvalue error against the degree l, one line per discretisation (log scale)."""
+    figure = new_figure(7.0, 4.6)
+    axis = figure.subplots()
+    markers = "osd^v<>ph"
+    for k, table in enumerate(tables):
+        errors = np.where(table.errors > 0, table.errors, np.nan)
+        axis.semilogy(
+            table.degrees[1:],
+            errors[1:],
+            marker=markers[k % len(markers)],
+            markersize=3,
+            linewidth=1.0,
+            label=table.label,
+        )
+    axis.set_xlabel("degree l (eigenvalue l(l+1), multiplicity 2l+1)")
+    axis.set_ylabel("max |λ_h − l(l+1)| / (l(l+1))")
+    axis.grid(True, which="both", alpha=0.3)
+    axis.legend(fontsize=8)
+    axis.set_title(
+        "Finite-element eigenvalues of the unit sphere against l(l+1), eq. (3.11)", fontsize=10
+    )
+    return figure
+
+
+@dataclass(frozen=True)
+class EigenErrors:
+    """Relative eigenvalue errors of one discretisation against ``l (l + 1)``.
+
+    ``degrees`` are the l of each entry, ``errors`` the largest relative error
+    over the 2l + 1 discrete eigenvalues of that degree (one on the axisymmetric line).
+    """
+
+    label: str
+    degrees: np.ndarray
+    errors: np.ndarray
+
+
+def eigen_errors_figure(tables: Sequence[EigenErrors]) -> Figure:
+    """Relative eigenvalue error against the degree l for each discretisation (log scale)."""
+    fig = new_figure(7.0, 4.5)
+    axis = fig.subplots()
+    for table in tables:
+        errors = np.where(table.errors > 0, table.errors, np.nan)
+        axis.semilogy(table.degrees, errors, marker="o", markersize=3, label=table.label)
+    axis.set_xlabel("degree l")
+    axis.set_ylabel("max |lambda_h - l(l+1)| / (l(l+1))")
+    axis.grid(True, which="both", alpha=0.3)
+    if tables:
+        axis.legend(fontsize=8)
+    axis.set_title("Eigenvalue error of the finite elements against l(l+1)")
+    return fig

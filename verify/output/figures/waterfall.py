@@ -1,0 +1,135 @@
+"""Waterfall of the radial displacement u(phi) at many instants (cf. Fig. 6), in SI."""
+
+from __future__ import annotations
+
+import math
+from typing import TYPE_CHECKING
+
+import numpy as np
+from twoball.modal.errors import ParameterError
+from twoball.verify.output.fields import BallModel, node_polar_angles
+from twoball.verify.output.figures import LABELS, new_figure
+
+if TYPE_CHECKING:
+    from matplotlib.figure import Figure
+
+WATERFALL_INSTANTS = 24  # as in Fig. 6
+
+
+def waterfall_times(model: BallModel, instants: int = WATERFALL_INSTANTS) -> np.ndarray:
+    """``instants`` evenly spaced times [s] over the modelled window [0, t_end]."""
+    if isinstance(instants, bool) or not isinstance(instants, int | np.integer) or instants < 2:
+        raise ParameterError("--instants", "an integer >= 2", instants)
+    return np.linspace(0.0, model.t_end_s, int(instants))
+
+
+def waterfall_figure(
+    model: BallModel,
+    instants: int = WATERFALL_INSTANTS,
+    offset_mm: float | None = None,
+    curve_points: int = 721,
+) -> Figure:
+    """Waterfall of the radial displacement u(phi) [mm] at ``instants`` times (cf. Fig. 6).
+
+    Each instant is one curve, shifted up by ``offset_mm`` per step, labelled by
+    its time [ms].  Lines: the closed form, eq. (3.16), on a fine grid of polar
+    angles.  Dots: the finite-element nodal values against the polar angle of
+    each node (all azimuths; their spread shows the departure from axial
+    symmetry).  SI: u in mm, phi in rad, t in ms.
+
+    Parameters
+    ----------
+    model : BallModel
+        Case and backends (any of ``legendre``, ``fem``).
+    instants : int
+        Number of curves (24 as in Fig. 6), evenly spaced over [0, t_end].
+    offset_mm : float, optional
+        Vertical shift between curves [mm]; default: from the largest wave after t = 0.
+    curve_points : int
+        Polar angles of each closed-form curve.
+    """
+    times = waterfall_times(model, instants)
+    scale = model.case.scalings
+    figure = new_figure(7.5, 9.0)
+    axis = figure.subplots()
+    curves: dict[str, tuple[np.ndarray, np.ndarray]] = {}
+    if "legendre" in model.backends:
+        from twoball.modal.legendre import displacement
+
+        phi = np.linspace(0.0, math.pi, curve_points)
+        series = model.backends["legendre"].series
+        curves["legendre"] = (phi, displacement(series, times / scale.time, phi) * scale.length)
+    if "fem" in model.backends:
+        curves["fem"] = (node_polar_angles(model.mesh), model.nodal("fem", times, 0))
+    if not curves:
+        raise ParameterError("--backend", "at least one of fem, legendre")
+    values = np.concatenate([u[1:].ravel() for _, u in curves.values()]) * 1e3
+    if offset_mm is None:
+        spread = float(np.percentile(np.abs(values), 99.5)) if values.size else 1.0
+        offset_mm = 1.5 * spread if spread > 0 else 1.0
+    if not (math.isfinite(offset_mm) and offset_mm > 0):
+        raise ParameterError("--offset", "a number > 0 [mm]", offset_mm)
+    colours = _colours(len(times))
+    for k, t in enumerate(times):
+        shift = k * offset_mm
+        if "fem" in curves:
+            phi, u = curves["fem"]
+            axis.plot(
+                phi,
+                u[k] * 1e3 + shift,
+                ".",
+                markersize=1.6,
+                color=colours[k],
+                alpha=0.55,
+                label=LABELS["fem"] + " (nodes)" if k == 0 else None,
+            )
+        if "legendre" in curves:
+            phi, u = curves["legendre"]
+            axis.plot(
+                phi,
+                u[k] * 1e3 + shift,
+                "-",
+                linewidth=0.9,
+                color=colours[k],
+                label=LABELS["legendre"] if k == 0 else None,
+            )
+        axis.annotate(
+            f"{t * 1e3:.1f} ms",
+            xy=(1.0, shift),
+            xycoords=("axes fraction", "data"),
+            xytext=(4, 0),
+            textcoords="offset points",
+            va="center",
+            fontsize=7,
+        )
+    axis.axvline(model.case.phi_a, color="grey", linewidth=0.7, linestyle=":")
+    axis.set_xlim(0.0, math.pi)
+    axis.set_xticks(np.linspace(0.0, math.pi, 5), ["0", "π/4", "π/2", "3π/4", "π"])
+    axis.set_xlabel("polar angle φ [rad] (0: top, where the upper body rests)")
+    axis.set_ylabel(f"u(t, φ) [mm], curves shifted by {offset_mm:.3g} mm per instant")
+    axis.set_ylim(_waterfall_limits(curves, offset_mm, len(times)))
+    axis.legend(loc="upper left", fontsize=8, markerscale=5)
+    case = model.case
+    axis.set_title(
+        f"Radial displacement at {len(times)} instants (cf. Fig. 6): φa = {case.phi_a:.3g}, "
+        f"R = {case.radius:g} m, c = {case.wave_speed:g} 1/s, D = {case.damping:g}",
+        fontsize=9,
+    )
+    axis.grid(True, axis="x", alpha=0.3)
+    return figure
+
+
+def _colours(count: int) -> np.ndarray:
+    from matplotlib import colormaps
+
+    return colormaps["viridis"](np.linspace(0.0, 0.9, count))
+
+
+def _waterfall_limits(
+    curves: dict[str, tuple[np.ndarray, np.ndarray]], offset: float, count: int
+) -> tuple[float, float]:
+    low = min(float(u[0].min()) for _, u in curves.values()) * 1e3
+    high = max(
+        float((u * 1e3 + offset * np.arange(count)[:, None]).max()) for _, u in curves.values()
+    )
+    return min(low, -offset) - 0.3 * offset, high + 0.6 * offset
