@@ -1,12 +1,13 @@
-"""Build a finite-element space from command-line style options (validated)."""
+"""Build a finite-element space from a mesh kind and its options, or from a sphere mesh."""
 
 from __future__ import annotations
 
+from twoball.modal.errors import ParameterError
 from twoball.modal.initial import _check_phi_a
 
 from .axisym import axisym_space
 from .checks import MESH_KINDS, check_choice, check_elements, check_level, check_order
-from .mesh import icosphere, ring_sphere
+from .mesh import SphereMesh, icosphere, ring_sphere
 from .space import Discretisation, sphere_space
 
 DEFAULT_LEVEL = 3
@@ -14,27 +15,29 @@ DEFAULT_ELEMENTS = 400
 
 
 def build_space(
-    mesh: str = "sphere",
+    mesh: str | SphereMesh = "sphere",
     *,
     level: int | None = None,
     elements: int | None = None,
-    order: int = 2,
+    order: int | None = 2,
     phi_a: float = 2.6,
 ) -> Discretisation:
-    """The finite-element space of eq. (3.9) for a mesh kind (dimensionless).
+    """The finite-element space of eq. (3.9) for a mesh kind or a sphere mesh (dimensionless).
 
     Parameters
     ----------
-    mesh : {"sphere", "ring", "axisym"}
+    mesh : {"sphere", "ring", "axisym"} or SphereMesh
         ``sphere``: icosphere of ``level``; ``ring``: sphere with a ring of
         edges on the latitude ``phi_a``; ``axisym``: line x = cos(phi) with
-        ``elements`` elements and a node at cos(phi_a).
+        ``elements`` elements and a node at cos(phi_a); a
+        :class:`~twoball.fem_membrane.mesh.SphereMesh` (e.g. the ``mesh`` of
+        :func:`twoball.fem_membrane.mesh_input.load_sphere_mesh`) is used as it is.
     level : int, optional
-        Refinement level >= 0 of the sphere meshes (``--level``; default 3).
+        Refinement level >= 0 of the generated sphere meshes (default 3).
     elements : int, optional
-        Elements >= 2 of the axisymmetric mesh (``--elements``; default 400).
-    order : {1, 2}
-        Element (and geometry) order (``--order``).
+        Elements >= 2 of the axisymmetric mesh (default 400).
+    order : {1, 2}, optional
+        Element (and geometry) order; None for a SphereMesh: its own.
     phi_a : float
         Contact angle [rad] in (pi/2, pi).
 
@@ -42,9 +45,14 @@ def build_space(
     -------
     Discretisation
     """
-    mesh = check_choice("--mesh", mesh, MESH_KINDS)
-    order = check_order(order)
     phi_a = _check_phi_a(phi_a)
+    if isinstance(mesh, SphereMesh):
+        for name, value in (("level", level), ("elements", elements)):
+            if value is not None:
+                raise ParameterError(name, "left out with a given sphere mesh", value)
+        return sphere_space(mesh, None if order is None else check_order(order))
+    mesh = check_choice("mesh", mesh, MESH_KINDS)
+    order = check_order(2 if order is None else order)
     level = DEFAULT_LEVEL if level is None else check_level(level)
     elements = DEFAULT_ELEMENTS if elements is None else check_elements(elements)
     if mesh == "axisym":

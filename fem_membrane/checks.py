@@ -25,21 +25,21 @@ def _is_int(value: object) -> bool:
 def check_level(level: object) -> int:
     """Refinement level of a sphere mesh: an integer >= 0 (``--level``)."""
     if not _is_int(level) or int(level) < 0:
-        raise ParameterError("--level", "an integer >= 0", level)
+        raise ParameterError("level", "an integer >= 0", level)
     return int(level)
 
 
 def check_order(order: object) -> int:
     """Polynomial order of elements and geometry: 1 or 2 (``--order``)."""
     if not _is_int(order) or int(order) not in ORDERS:
-        raise ParameterError("--order", "1 or 2", order)
+        raise ParameterError("order", "1 or 2", order)
     return int(order)
 
 
 def check_elements(elements: object) -> int:
     """Number of elements of the axisymmetric mesh: an integer >= 2 (``--elements``)."""
     if not _is_int(elements) or int(elements) < 2:
-        raise ParameterError("--elements", "an integer >= 2", elements)
+        raise ParameterError("elements", "an integer >= 2", elements)
     return int(elements)
 
 
@@ -48,21 +48,21 @@ def check_dt(dt: object) -> float | None:
     if dt is None:
         return None
     if not isinstance(dt, Real) or not math.isfinite(float(dt)) or float(dt) <= 0.0:
-        raise ParameterError("--dt", "a finite number > 0", dt)
+        raise ParameterError("dt", "a finite number > 0", dt)
     return float(dt)
 
 
 def check_rho_inf(rho_inf: object) -> float:
     """Spectral radius at infinite frequency of generalized-alpha: in [0, 1] (``--rho-inf``)."""
     if not isinstance(rho_inf, Real) or not (0.0 <= float(rho_inf) <= 1.0):
-        raise ParameterError("--rho-inf", "in [0, 1]", rho_inf)
+        raise ParameterError("rho_inf", "in [0, 1]", rho_inf)
     return float(rho_inf)
 
 
 def check_t_end(t_end: object) -> float:
     """End of the integration window (dimensionless): a finite number > 0 (``--t-end``)."""
     if not isinstance(t_end, Real) or not math.isfinite(float(t_end)) or float(t_end) <= 0.0:
-        raise ParameterError("--t-end", "a finite time > 0", t_end)
+        raise ParameterError("t_end", "a finite time > 0", t_end)
     return float(t_end)
 
 

@@ -72,7 +72,7 @@ class RayleighDamping:
         low, high = float(omega_low), float(omega_high)
         if not (math.isfinite(low) and math.isfinite(high) and 0.0 < low < high):
             raise ParameterError(
-                "--rayleigh-frequencies", "two finite frequencies 0 < w1 < w2", (low, high)
+                "rayleigh_frequencies", "two finite frequencies 0 < w1 < w2", (low, high)
             )
         alpha = 2.0 * ratio * low * high / (low + high)
         beta = 2.0 * ratio / (low + high)

@@ -265,9 +265,9 @@ def lowest_eigenpairs(K: sp.spmatrix, M: sp.spmatrix, count: int) -> Eigenpairs:
     """
     n = K.shape[0]
     if isinstance(count, bool) or int(count) != count or count < 1:
-        raise ParameterError("--count", "an integer >= 1", count)
+        raise ParameterError("count", "an integer >= 1", count)
     if count > n:
-        raise ParameterError("--count", f"at most the number of unknowns ({n})", count)
+        raise ParameterError("count", f"at most the number of unknowns ({n})", count)
     if n <= DENSE_LIMIT or count >= n - 1:
         values, vectors = _dense(K, M)
         return Eigenpairs(values[:count], m_orthonormalise(vectors[:, :count], M))
@@ -334,7 +334,7 @@ def eigen_table(
     from .build import build_space  # local: build imports the spaces, which import nothing here
 
     if isinstance(count, bool) or int(count) != count or count < 1:
-        raise ParameterError("--count", "an integer >= 1", count)
+        raise ParameterError("count", "an integer >= 1", count)
     space = build_space(mesh, level=level, elements=elements, order=order, phi_a=phi_a)
     axisymmetric = space.kind == "axisym"
     if axisymmetric:

@@ -129,7 +129,7 @@ def initial_moments(space: Discretisation, phi_a: float, method: str = "projecti
 
     The modal coefficients are ``Phi^T M u0`` for M-orthonormal modes Phi.
     """
-    method = check_choice("--initial", method, INITIAL_METHODS)
+    method = check_choice("initial", method, INITIAL_METHODS)
     if method == "projection":
         return initial_load(space, phi_a)
     return space.mass @ interpolate_initial(space, phi_a)

@@ -166,7 +166,7 @@ def choose_route(route: str, dofs: int, threshold: int = AUTO_THRESHOLD) -> str:
     eigen route below, where it costs under a second and also yields every pair.
     """
     if route not in ROUTES:
-        raise ParameterError("--route", "one of full, krylov, auto", route)
+        raise ParameterError("route", "one of full, krylov, auto", route)
     if route != "auto":
         return route
     return "krylov" if dofs >= threshold else "full"

@@ -256,7 +256,7 @@ def ring_sphere(level: int, phi_a: float, order: int = 1) -> SphereMesh:
     level = check_level(level)
     order = check_order(order)
     if not (0.0 < float(phi_a) < math.pi):
-        raise ParameterError("--phi-a", "in (0, pi)", phi_a)
+        raise ParameterError("phi_a", "in (0, pi)", phi_a)
     rows = ring_rows(level)
     angles = _row_angles(rows, float(phi_a))
     segments = [min(i, 2 * rows - i) for i in range(2 * rows + 1)]  # per octant face

@@ -11,7 +11,7 @@ dimensionless geometry of eq. (3.9), whose pole motion decides lift-off.
 The checks (one closed, manifold, connected surface of sphere topology,
 spherical to :data:`MAX_RADIAL_DEVIATION`, consistently oriented) and the
 centre and radius fit are in :mod:`twoball.fem_membrane.surface_checks`; each
-failure is a :class:`twoball.modal.errors.ParameterError` naming ``--mesh-file``
+failure is a :class:`twoball.modal.errors.ParameterError` naming ``mesh``
 with what is wrong and by how much.  Cells: ``triangle`` (3-node) or
 ``triangle6`` (6-node), one kind only; other surface cells (quadrilaterals,
 polygons) are refused; lines, vertices and volume cells are ignored (and
@@ -47,7 +47,7 @@ from .surface_checks import (
 
 __all__ = ["MAX_RADIAL_DEVIATION", "MeshInput", "check_pole", "load_sphere_mesh", "rotation_to_z"]
 
-POLE_FLAG = "--pole"
+POLE_FLAG = "pole"  # the parameter; the command line shows --pole
 TRIANGLE_TYPES = ("triangle", "triangle6")
 REFUSED_SURFACE_TYPES = ("quad", "quad8", "quad9", "polygon", "triangle7", "triangle10")
 
@@ -302,7 +302,7 @@ def load_sphere_mesh(
     Raises
     ------
     ParameterError
-        Naming ``--mesh-file`` (what is wrong, and by how much), ``--pole`` or
+        Naming ``mesh`` (``--mesh-file``) (what is wrong, and by how much), ``--pole`` or
         ``--order``.
     """
     direction = check_pole(pole)

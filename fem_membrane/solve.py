@@ -44,6 +44,7 @@ from .damping import RAYLEIGH_LOW, ModalDamping, RayleighDamping
 from .eigen import Eigenpairs, eigenpairs
 from .initial import initial_moments
 from .krylov import ROUTES, choose_route, krylov_modal_series
+from .mesh import SphereMesh
 from .modal import filtered_displacement, modal_series
 from .space import Discretisation
 
@@ -100,7 +101,7 @@ def modal_model(
     phi_a = _check_phi_a(phi_a)
     damping = check_damping(damping)
     filter = as_filter(filter)
-    initial = check_choice("--initial", initial, INITIAL_METHODS)
+    initial = check_choice("initial", initial, INITIAL_METHODS)
     seconds = {}
     start = clock.perf_counter()
     space = build_space(mesh, level=level, elements=elements, order=order, phi_a=phi_a)
@@ -148,7 +149,7 @@ def alpha_motion(
         Pole samples and ``dt``, ``steps``, ``rho_inf`` (and ``rayleigh``:
         alpha, beta, fitting frequencies and the effective-ratio table).
     """
-    damping_model = check_choice("--damping-model", damping_model, DAMPING_MODELS)
+    damping_model = check_choice("damping_model", damping_model, DAMPING_MODELS)
     dt = check_dt(dt)
     rho_inf = check_rho_inf(rho_inf)
     t_end = check_t_end(t_end)
@@ -187,10 +188,10 @@ def fem_pole_motion(
     damping: float,
     filter: SpectralFilter | FilterKind = "lanczos",
     *,
-    mesh: str = "sphere",
+    mesh: str | SphereMesh = "sphere",
     level: int | None = None,
     elements: int | None = None,
-    order: int = 2,
+    order: int | None = 2,
     time: str = "modal",
     damping_model: str = "modal",
     dt: float | None = None,
@@ -215,14 +216,17 @@ def fem_pole_motion(
     filter : SpectralFilter or {"lanczos", "printed", "none"}
         Spectral filter; a kind name uses N = 30.  Its ``omega_cut`` is the
         eigenvalue cutoff, also for ``"none"``.
-    mesh : {"sphere", "ring", "axisym"}
-        Icosphere, sphere with a ring of edges at phi_a, or axisymmetric line.
+    mesh : {"sphere", "ring", "axisym"} or SphereMesh
+        Icosphere, sphere with a ring of edges at phi_a, axisymmetric line, or
+        a unit-sphere mesh such as a loaded file's
+        (:func:`twoball.fem_membrane.mesh_input.load_sphere_mesh`).
     level : int, optional
         Sphere refinement level >= 0 (``--level``, default 3).
     elements : int, optional
         Axisymmetric elements >= 2 (``--elements``, default 400).
-    order : {1, 2}
-        P1 on flat triangles or isoparametric P2 (``--order``).
+    order : {1, 2}, optional
+        P1 on flat triangles or isoparametric P2 (``--order``); None with a
+        SphereMesh: the mesh's own order.
     time : {"modal", "alpha"}
         Modal superposition or generalized-alpha stepping (``--time``).
     route : {"auto", "full", "krylov"}
@@ -259,19 +263,19 @@ def fem_pole_motion(
         ``alpha``, ``beta``, ``omega_low``, ``omega_high`` and ``table`` (rows
         ``mode``, ``omega``, ``zeta``, ``ratio`` = zeta / D).
     """
-    time = check_choice("--time", time, TIME_SCHEMES)
-    damping_model = check_choice("--damping-model", damping_model, DAMPING_MODELS)
+    time = check_choice("time", time, TIME_SCHEMES)
+    damping_model = check_choice("damping_model", damping_model, DAMPING_MODELS)
     dt = check_dt(dt)
     rho_inf = check_rho_inf(rho_inf)
     t_end = check_t_end(t_end)
     if time == "modal" and damping_model != "modal":
         raise ParameterError(
-            "--damping-model", "modal with --time modal (one ratio D for all modes)", damping_model
+            "damping_model", "modal when time is modal (one ratio D for all modes)", damping_model
         )
-    route = check_choice("--route", route, ROUTES)
+    route = check_choice("route", route, ROUTES)
     if time == "alpha":
         if route == "krylov":
-            raise ParameterError("--route", "full or auto with --time alpha", route)
+            raise ParameterError("route", "full or auto when time is alpha", route)
         route = "full"  # time stepping needs the eigenvectors for damping and filtering
     model = modal_model(
         phi_a,

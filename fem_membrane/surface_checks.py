@@ -1,7 +1,7 @@
 """Checks that a triangulated surface is one closed sphere, and its centre and radius.
 
 The checks behind :func:`twoball.fem_membrane.mesh_input.load_sphere_mesh`; each
-failure is a :class:`twoball.modal.errors.ParameterError` naming ``--mesh-file``
+failure is a :class:`twoball.modal.errors.ParameterError` naming ``mesh``
 that says what is wrong and by how much (:func:`refuse`):
 
 * nodes (:func:`clean_nodes`): three finite coordinates; coincident points
@@ -48,11 +48,11 @@ against 1e-4 to 1e-3 for P2 on icosphere levels 3-4.
 """
 MERGE_TOLERANCE = 1e-10  # points closer than this fraction of the bounding-box diagonal merge
 FLAT_AREA = 1e-14  # a triangle with area below this fraction of R^2 is degenerate
-MESH_FLAG = "--mesh-file"
+MESH_FLAG = "mesh"  # the parameter; the command line shows --mesh-file
 
 
 def refuse(name: str, valid: str, found: str) -> ParameterError:
-    """ParameterError for ``--mesh-file``: ``--mesh-file <name> must be <valid>; found <found>``."""
+    """ParameterError naming ``mesh``: ``mesh <name> must be <valid>; found <found>``."""
     error = ParameterError(MESH_FLAG, valid, found)
     error.args = (f"{MESH_FLAG} {name} must be {valid}; found {found}",)
     return error

@@ -12,7 +12,8 @@ class ParameterError(ValueError):
     Parameters
     ----------
     name : str
-        Parameter name as the user knows it (for example ``"--damping"`` or ``"D"``).
+        The parameter's name in the Python API (for example ``"damping"``); the
+        command line prints its flag instead (``--damping``).
     valid : str
         The valid range or set, in words (for example ``"[0, 1)"``).
     got : object, optional

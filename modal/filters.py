@@ -57,9 +57,9 @@ class SpectralFilter:
 
     def __post_init__(self) -> None:
         if self.kind not in FILTER_KINDS:
-            raise ParameterError("--sigma", "one of lanczos, printed, none", self.kind)
+            raise ParameterError("sigma", "one of lanczos, printed, none", self.kind)
         if int(self.modes) != self.modes or self.modes < 1:
-            raise ParameterError("--modes", "an integer >= 1", self.modes)
+            raise ParameterError("modes", "an integer >= 1", self.modes)
 
     @property
     def omega_n(self) -> float:

@@ -44,7 +44,7 @@ def _energy_shape(phi_a: float) -> float:
 def _check_phi_a(phi_a: float) -> float:
     phi_a = float(phi_a)
     if not (math.pi / 2 < phi_a < math.pi):
-        raise ParameterError("--phi-a", "in (pi/2, pi) = (1.5708, 3.1416) rad", phi_a)
+        raise ParameterError("phi_a", "in (pi/2, pi) = (1.5708, 3.1416) rad", phi_a)
     return phi_a
 
 
@@ -80,7 +80,7 @@ def phi_a_from_v0(v0: float, radius: float, wave_speed: float) -> float:
     """
     speed = abs(float(v0))
     if not (math.isfinite(speed) and speed > 0):
-        raise ParameterError("--v0", "a finite nonzero speed (eq. (3.7) has no solution)", v0)
+        raise ParameterError("v0", "a finite nonzero speed (eq. (3.7) has no solution)", v0)
     squared = (speed / (radius * wave_speed)) ** 2
     target = math.log(squared) if squared > 0 else -math.inf  # log (v0 / R c)^2
 
@@ -92,12 +92,12 @@ def phi_a_from_v0(v0: float, radius: float, wave_speed: float) -> float:
 
     upper = math.log(math.pi / 2 * (1 - 1e-15))
     if residual(upper) < 0:
-        raise ParameterError("--v0", "small enough for eq. (3.7) to have a solution", v0)
+        raise ParameterError("v0", "small enough for eq. (3.7) to have a solution", v0)
     if residual(_LOG_S_MIN) > 0:
         # 1 + cos(phi_a) ~ s^2 / 2 is lost to round-off as s -> 0 (log(0) below s ~ 1e-8)
         slowest = radius * wave_speed * math.sqrt(_energy_shape(math.pi - math.exp(_LOG_S_MIN)))
         raise ParameterError(
-            "--v0",
+            "v0",
             f"at least {slowest:.3g} m/s (slower impacts put phi_a within 1e-6 rad of pi, "
             "where eq. (3.7) loses double precision)",
             v0,

@@ -72,7 +72,7 @@ def _legendre_and_derivative(n: int, x: np.ndarray) -> tuple[np.ndarray, np.ndar
 
 def _check_modes(modes: int) -> int:
     if isinstance(modes, bool) or int(modes) != modes or modes < 0:
-        raise ParameterError("--modes", "an integer >= 1", modes)
+        raise ParameterError("modes", "an integer >= 1", modes)
     return int(modes)
 
 

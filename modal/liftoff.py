@@ -181,9 +181,9 @@ def _check_options(gamma: float, t_end: float, horizon: str, samples_per_period:
     if not (math.isfinite(gamma) and gamma > 0):
         raise ParameterError("gamma", "a finite number > 0", gamma)
     if not (math.isfinite(t_end) and t_end > 0):
-        raise ParameterError("--t-end", "a finite time > 0", t_end)
+        raise ParameterError("t_end", "a finite time > 0", t_end)
     if horizon not in HORIZONS:
-        raise ParameterError("--recontact", "one of window, paper", horizon)
+        raise ParameterError("recontact", "one of window, paper", horizon)
     if samples_per_period < 16:
         raise ParameterError("samples_per_period", "an integer >= 16", samples_per_period)
 

@@ -9,6 +9,8 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass, replace
+from numbers import Real
+from typing import Any
 
 from .errors import ParameterError
 from .initial import phi_a_from_v0
@@ -67,24 +69,75 @@ def wave_speed_from_pressure(pressure: float, mass: float, radius: float) -> flo
     then ``c = sqrt(T / rho) / R``, eq. (3.8).  Table 2: P = 77200, m = 0.567,
     R = 0.12 gives c = 320.4 1/s.
     """
-    _positive("--pressure", pressure)
-    _positive("--mass", mass)
-    _positive("--radius", radius)
+    _positive("pressure", pressure)
+    _positive("mass", mass)
+    _positive("radius", radius)
     tension = pressure * radius / 2.0
     density = mass / (4.0 * math.pi * radius**2)
     return math.sqrt(tension / density) / radius
 
 
+PHI_A_RANGE = "in (pi/2, pi) = (1.5708, 3.1416) rad"
+
+
+def _number(name: str, value: object, valid: str) -> float:
+    if isinstance(value, bool) or not isinstance(value, Real):
+        raise ParameterError(name, valid, value)
+    return float(value)
+
+
 def _positive(name: str, value: float) -> float:
-    value = float(value)
+    value = _number(name, value, "a finite number > 0")
     if not (math.isfinite(value) and value > 0):
         raise ParameterError(name, "a finite number > 0", value)
     return value
 
 
 @dataclass(frozen=True)
+class Measured:
+    """A preset's measured impact: R [m], c [1/s], ``|v0|`` [m/s], phi_a [rad], D, N."""
+
+    radius: float
+    wave_speed: float
+    v0: float
+    phi_a: float
+    damping: float
+    modes: int
+
+
+#: Measured cases (Table 2, Fig. 11): R, c, ``|v0|`` and phi_a measured; D fitted once.
+MEASURED: dict[str, Measured] = {
+    "basketball": Measured(
+        radius=0.12, wave_speed=320.0, v0=4.1, phi_a=2.6, damping=0.13, modes=30
+    ),
+}
+#: ``phi_a`` request meaning "derive it from ``|v0|``, R and c by eq. (3.7)".
+FROM_V0 = "eq. (3.7)"
+_SAME = 1e-12  # relative: a typed value equal to the measured one to double precision
+
+
+def _measured(name: str | None) -> Measured | None:
+    if name is None:
+        return None
+    try:
+        return MEASURED[name]
+    except KeyError:
+        raise ParameterError("preset", "one of " + ", ".join(sorted(MEASURED)), name) from None
+
+
+def _same(a: float, b: float) -> bool:
+    return math.isclose(a, b, rel_tol=_SAME, abs_tol=0.0)
+
+
+@dataclass(frozen=True)
 class Case:
-    """One impact of the lower ball, in SI units.
+    """One impact of the lower ball, in SI units, with one rule for phi_a.
+
+    The contact angle phi_a is (1) the value given; else (2) the preset's
+    measured phi_a when R, c and ``|v0|`` are the preset's own measured values (so
+    typing a preset's own value never changes the answer); else (3) derived from
+    ``|v0|``, R and c by eq. (3.7).  :attr:`phi_a_source` says which, and
+    :attr:`phi_a_note` explains when (3) departs from a preset's measured angle.
 
     Parameters
     ----------
@@ -94,41 +147,114 @@ class Case:
         Angular wave speed c [1/s], > 0, eq. (3.8).
     v0 : float
         Impact speed [m/s]; the sign is ignored (``|v0|`` is used).
-    phi_a : float
-        Contact (truncation) angle [rad] in (pi/2, pi), eq. (3.3).
+    phi_a : float or None or "eq. (3.7)"
+        Contact (truncation) angle [rad] in (pi/2, pi), eq. (3.3); None: by the
+        rule above; ``"eq. (3.7)"``: from ``|v0|``, R, c by eq. (3.7) in any case.
     damping : float
         Modal damping ratio D in [0, 1), eq. (3.14).
     modes : int
         Legendre truncation N >= 1, eq. (3.16).
     g : float
         Gravitational acceleration [m/s^2].
+    preset_name : str or None
+        The preset whose measurements the case starts from (default
+        ``basketball``, whose values are the defaults above); None for a case of
+        the user's own measurements (phi_a then given or from eq. (3.7)).
+    phi_a_source : str, optional
+        Set by the class: ``"given"``, ``"measured (<preset>)"`` or ``"eq. (3.7)"``.
     """
 
     radius: float = 0.12
     wave_speed: float = 320.0
     v0: float = 4.1
-    phi_a: float = 2.6
+    phi_a: float | None = None
     damping: float = 0.13
     modes: int = 30
     g: float = STANDARD_GRAVITY
+    preset_name: str | None = "basketball"
+    phi_a_source: str | None = None
 
     def __post_init__(self) -> None:
-        _positive("--radius", self.radius)
-        _positive("--wave-speed", self.wave_speed)
-        _positive("--g", self.g)
-        v0 = float(self.v0)
+        _positive("radius", self.radius)
+        _positive("wave_speed", self.wave_speed)
+        _positive("g", self.g)
+        object.__setattr__(self, "radius", float(self.radius))
+        object.__setattr__(self, "wave_speed", float(self.wave_speed))
+        object.__setattr__(self, "g", float(self.g))
+        v0 = _number("v0", self.v0, "a finite nonzero speed [m/s]")
         if not (math.isfinite(v0) and v0 != 0):
-            raise ParameterError("--v0", "a finite nonzero speed [m/s]", self.v0)
+            raise ParameterError("v0", "a finite nonzero speed [m/s]", self.v0)
         object.__setattr__(self, "v0", abs(v0))
-        phi_a = float(self.phi_a)
-        if not (math.pi / 2 < phi_a < math.pi):
-            raise ParameterError("--phi-a", "in (pi/2, pi) = (1.5708, 3.1416) rad", self.phi_a)
-        damping = float(self.damping)
+        damping = _number("damping", self.damping, "in [0, 1)")
         if not (0.0 <= damping < 1.0):
-            raise ParameterError("--damping", "in [0, 1)", self.damping)
-        if isinstance(self.modes, bool) or int(self.modes) != self.modes or self.modes < 1:
-            raise ParameterError("--modes", "an integer >= 1", self.modes)
+            raise ParameterError("damping", "in [0, 1)", self.damping)
+        object.__setattr__(self, "damping", damping)
+        if (
+            isinstance(self.modes, bool)
+            or not isinstance(self.modes, Real)
+            or int(self.modes) != self.modes
+            or self.modes < 1
+        ):
+            raise ParameterError("modes", "an integer >= 1", self.modes)
         object.__setattr__(self, "modes", int(self.modes))
+        phi_a, source = self._resolve_phi_a()
+        object.__setattr__(self, "phi_a", phi_a)
+        object.__setattr__(self, "phi_a_source", source)
+
+    def _resolve_phi_a(self) -> tuple[float, str]:
+        """The rule for phi_a: given, else the preset's measurement, else eq. (3.7)."""
+        measured = _measured(self.preset_name)
+        if self.phi_a is None or self.phi_a == FROM_V0:
+            if self.phi_a is None and measured is not None and self.at_measured_point:
+                return measured.phi_a, f"measured ({self.preset_name})"
+            return phi_a_from_v0(self.v0, self.radius, self.wave_speed), FROM_V0
+        phi_a = _number("phi_a", self.phi_a, PHI_A_RANGE)
+        if not (math.pi / 2 < phi_a < math.pi):
+            raise ParameterError("phi_a", PHI_A_RANGE, self.phi_a)
+        source = self.phi_a_source or "given"
+        if source == "given":
+            return phi_a, source
+        if source == FROM_V0:  # kept through derive(): still the root of eq. (3.7)?
+            if phi_a == phi_a_from_v0(self.v0, self.radius, self.wave_speed):
+                return phi_a, source
+        if measured is not None and source == f"measured ({self.preset_name})":
+            if self.at_measured_point and phi_a == measured.phi_a:
+                return phi_a, source
+        raise ParameterError(
+            "phi_a_source", "None, 'given' or consistent with the preset", self.phi_a_source
+        )
+
+    @property
+    def at_measured_point(self) -> bool:
+        """True if R, c and ``|v0|`` are the preset's own measured values."""
+        m = _measured(self.preset_name)
+        return (
+            m is not None
+            and _same(self.radius, m.radius)
+            and _same(self.wave_speed, m.wave_speed)
+            and _same(self.v0, m.v0)
+        )
+
+    @property
+    def phi_a_note(self) -> str | None:
+        """Why phi_a differs from the preset's measured angle (eq. (3.7) applied), or None."""
+        m = _measured(self.preset_name)
+        if m is None or self.phi_a_source != FROM_V0 or self.phi_a == m.phi_a:
+            return None
+        moved = [
+            f"{label} = {value:g} {unit}"
+            for label, value, ref, unit in (
+                ("R", self.radius, m.radius, "m"),
+                ("c", self.wave_speed, m.wave_speed, "1/s"),
+                ("|v0|", self.v0, m.v0, "m/s"),
+            )
+            if not _same(value, ref)
+        ] or [f"|v0| = {self.v0:g} m/s"]
+        return (
+            f"phi_a = {self.phi_a:.4f} rad from eq. (3.7) for {', '.join(moved)}; the "
+            f"{self.preset_name} preset's measured {m.phi_a:g} rad applies only at its own "
+            "R, c, |v0|"
+        )
 
     @property
     def scalings(self) -> Scalings:
@@ -140,22 +266,80 @@ class Case:
         """Dimensionless gravity ``g / (R c^2)``."""
         return self.scalings.gamma
 
+    def as_dict(self) -> dict[str, Any]:
+        """The case in SI, JSON-ready, with ``phi_a_source``."""
+        return {
+            "radius_m": self.radius,
+            "wave_speed_1_s": self.wave_speed,
+            "v0_m_s": self.v0,
+            "phi_a": self.phi_a,
+            "phi_a_source": self.phi_a_source,
+            "damping": self.damping,
+            "modes": self.modes,
+            "g_m_s2": self.g,
+            "preset": self.preset_name,
+        }
+
     def with_v0(self, v0: float) -> Case:
-        """This case with a new impact speed and phi_a re-derived from eq. (3.7)."""
+        """This case with a new impact speed; phi_a by the rule (see :class:`Case`)."""
         return self.derive(v0=v0)
 
-    def derive(self, **changes: float) -> Case:
-        """A copy with ``changes``; phi_a follows eq. (3.7) if v0, c or R changes.
+    def derive(self, **changes: Any) -> Case:
+        """A copy with ``changes``; phi_a follows the rule again if v0, c or R changes.
 
+        Without ``phi_a`` in ``changes``, a new v0, c or R (or ``preset_name``)
+        re-applies the rule: the preset's measured phi_a at its own values, eq.
+        (3.7) elsewhere.  ``phi_a="eq. (3.7)"`` asks for eq. (3.7) explicitly.
         This is how Fig. 12 varies one parameter at a time.
         """
-        rederive = any(k in changes for k in ("v0", "wave_speed", "radius")) and (
-            "phi_a" not in changes
-        )
-        case = replace(self, **changes)
-        if rederive:
-            return replace(case, phi_a=phi_a_from_v0(case.v0, case.radius, case.wave_speed))
-        return case
+        if "phi_a_source" in changes:
+            raise ParameterError("phi_a_source", "set by the class, not given", None)
+        known = [f for f in self.__dataclass_fields__ if f != "phi_a_source"]
+        for name in changes:
+            if name not in known:
+                hint = (
+                    " (pressure and mass: Case.from_pressure)"
+                    if name in ("pressure", "mass")
+                    else ""
+                )
+                valid = "a field of Case, one of " + ", ".join(known) + hint
+                raise ParameterError(name, valid, None)
+        rule = ("v0", "wave_speed", "radius", "preset_name")
+        if "phi_a" in changes or any(k in changes for k in rule):
+            changes = {"phi_a": None, **changes, "phi_a_source": None}
+        return replace(self, **changes)
+
+    @classmethod
+    def preset(cls, name: str = "basketball", **changes: Any) -> Case:
+        """The named preset (``basketball``: Table 2, Fig. 11), optionally with changes.
+
+        ``Case.preset("basketball", v0=3.0)`` is the preset with a new impact speed
+        and phi_a from eq. (3.7) (see :class:`Case`).
+        """
+        base = preset(name)
+        return base.derive(**changes) if changes else base
+
+    @classmethod
+    def from_pressure(
+        cls,
+        pressure: float,
+        mass: float,
+        *,
+        preset: str | None = "basketball",
+        **changes: Any,
+    ) -> Case:
+        """A case whose wave speed comes from excess pressure P [Pa] and mass m [kg].
+
+        ``c`` by eq. (3.8) with ``T = P R / 2`` and ``rho = m / (4 pi R^2)`` (§4(b));
+        R and the other values from ``changes``, else from the preset (None: the
+        class defaults without a preset).  phi_a by the rule of :class:`Case`.
+        """
+        if "wave_speed" in changes:
+            raise ParameterError("wave_speed", "given alone, not with pressure and mass")
+        base = cls(preset_name=None) if preset is None else cls.preset(preset)
+        radius = changes.get("radius", base.radius)
+        wave_speed = wave_speed_from_pressure(pressure, mass, radius)
+        return base.derive(**changes, wave_speed=wave_speed)
 
     @classmethod
     def from_measurements(
@@ -171,29 +355,24 @@ class Case:
         modes: int = 30,
         g: float = STANDARD_GRAVITY,
     ) -> Case:
-        """Build a case from c, or from P and m; phi_a from eq. (3.7) if not given."""
+        """A case of one's own measurements (no preset): c, or P and m; phi_a given or eq. (3.7)."""
         if wave_speed is None:
             if pressure is None or mass is None:
-                raise ParameterError("--wave-speed", "given, or both --pressure and --mass")
+                raise ParameterError("wave_speed", "given, or both pressure and mass")
             wave_speed = wave_speed_from_pressure(pressure, mass, radius)
         elif pressure is not None or mass is not None:
-            raise ParameterError("--wave-speed", "given alone, not with --pressure/--mass")
-        _positive("--radius", radius)
-        _positive("--wave-speed", wave_speed)
-        if phi_a is None:
-            phi_a = phi_a_from_v0(v0, radius, wave_speed)
-        return cls(radius, wave_speed, v0, phi_a, damping, modes, g)
+            raise ParameterError("wave_speed", "given alone, not with pressure and mass")
+        return cls(radius, wave_speed, v0, phi_a, damping, modes, g, preset_name=None)
 
 
-PRESETS: dict[str, Case] = {
-    # Table 2 and Fig. 11: R, c measured; v0 and phi_a both measured; D fitted once.
-    "basketball": Case(radius=0.12, wave_speed=320.0, v0=4.1, phi_a=2.6, damping=0.13, modes=30),
-}
+PRESETS: dict[str, Case] = {name: Case(preset_name=name, radius=m.radius, wave_speed=m.wave_speed,
+                                       v0=m.v0, damping=m.damping, modes=m.modes)
+                            for name, m in MEASURED.items()}  # fmt: skip
 
 
 def preset(name: str) -> Case:
-    """The named preset case (currently ``basketball``)."""
+    """The named preset case (currently ``basketball``), phi_a measured."""
     try:
         return PRESETS[name]
     except KeyError:
-        raise ParameterError("--preset", "one of " + ", ".join(sorted(PRESETS)), name) from None
+        raise ParameterError("preset", "one of " + ", ".join(sorted(PRESETS)), name) from None

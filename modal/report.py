@@ -42,6 +42,13 @@ class LiftoffReport:
     extra: dict[str, Any] = field(default_factory=dict)
 
     @property
+    def notes(self) -> list[str]:
+        """Remarks the reader must see (the CLI prints them on standard error): how
+        phi_a was chosen, when eq. (3.7) departs from a preset's measured angle."""
+        note = self.case.phi_a_note
+        return [note] if note else []
+
+    @property
     def t_liftoff_s(self) -> float | None:
         """Lift-off time t_l [s] after maximal compression, or None."""
         return None if self.result.t is None else self.result.t * self.case.scalings.time
@@ -79,6 +86,7 @@ class LiftoffReport:
             "v_liftoff_m_s": self.v_liftoff_m_s,
             "ratio": self.ratio,
             "phi_a": self.case.phi_a,
+            "phi_a_source": self.case.phi_a_source,
             "gamma": self.case.gamma,
             "backend": self.backend,
             "rejected": rejected,
@@ -92,6 +100,7 @@ class LiftoffReport:
             "t_end_s": self.result.t_end * scale.time,
         }
         data.update(self.extra)
+        data["notes"] = self.notes
         return data
 
 
@@ -102,7 +111,7 @@ def t_end_dimensionless(case: Case, t_end_s: float | None) -> float:
     from .errors import ParameterError
 
     if not (math.isfinite(t_end_s) and t_end_s > 0):
-        raise ParameterError("--t-end", "a time > 0 [s]", t_end_s)
+        raise ParameterError("t_end", "a time > 0 [s]", t_end_s)
     return float(t_end_s) / case.scalings.time
 
 

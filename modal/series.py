@@ -35,7 +35,7 @@ def check_damping(damping: float) -> float:
     """Return ``damping`` as float if it lies in [0, 1), else raise ParameterError."""
     damping = float(damping)
     if not (0.0 <= damping < 1.0):
-        raise ParameterError("--damping", "in [0, 1)", damping)
+        raise ParameterError("damping", "in [0, 1)", damping)
     return damping
 
 

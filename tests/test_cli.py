@@ -34,8 +34,23 @@ def test_liftoff_table_for_people(capsys):
 
 
 def test_v0_without_phi_a_uses_eq_3_7(capsys):
-    _, out, _ = run(capsys, "liftoff", "--v0", "-4.1", "--json")
-    assert json.loads(out)["phi_a"] == pytest.approx(2.5928, abs=1e-4)
+    # a speed other than the preset's own: phi_a from eq. (3.7), checked by the forward formula
+    _, out, err = run(capsys, "liftoff", "--v0", "-3", "--json")
+    data = json.loads(out)
+    c = math.cos(data["phi_a"])
+    v0 = 0.12 * 320 * math.sqrt((-1 + 2 * c**3 + 3 * c**2) / (6 * c))  # eq. (3.7)
+    assert v0 == pytest.approx(3.0, rel=1e-12)
+    assert data["phi_a_source"] == "eq. (3.7)"
+    assert "note:" in err and "eq. (3.7)" in err and "measured 2.6 rad" in err
+
+
+def test_preset_own_v0_keeps_the_measured_phi_a(capsys):
+    # typing the preset's own value (sign ignored) never changes the answer
+    _, default, err_default = run(capsys, "liftoff", "--json")
+    _, typed, err = run(capsys, "liftoff", "--v0", "-4.1", "--json")
+    assert json.loads(typed) == json.loads(default)
+    assert json.loads(typed)["phi_a_source"] == "measured (basketball)"
+    assert err == err_default == ""
 
 
 def test_pressure_and_mass_give_the_wave_speed(capsys):

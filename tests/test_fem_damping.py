@@ -23,7 +23,7 @@ def test_fit_matches_the_ratio_at_both_frequencies():
     inside = fit.effective_ratio(np.array([3.0, 10.0, 20.0]))
     assert np.all(inside < DAMPING)  # below D between the fitting frequencies
     assert fit.effective_ratio(np.array([60.0]))[0] > DAMPING
-    with pytest.raises(ParameterError, match="--rayleigh-frequencies"):
+    with pytest.raises(ParameterError, match="rayleigh_frequencies"):
         RayleighDamping.fit(DAMPING, 5.0, 2.0)
 
 
@@ -81,5 +81,5 @@ def test_rayleigh_stepping_equals_the_sum_of_modes_with_their_own_ratios():
 
 
 def test_rayleigh_needs_time_stepping():
-    with pytest.raises(ParameterError, match="--damping-model"):
+    with pytest.raises(ParameterError, match="damping_model"):
         fem_pole_motion(PHI_A, DAMPING, mesh="axisym", elements=20, damping_model="rayleigh")

@@ -58,13 +58,13 @@ def test_v0_is_monotone_decreasing_in_phi_a():
 
 @pytest.mark.parametrize("v0", [0.0, math.inf, math.nan])
 def test_speed_without_solution(v0):
-    with pytest.raises(ParameterError, match="--v0"):
+    with pytest.raises(ParameterError, match="v0"):
         phi_a_from_v0(v0, 0.12, 320.0)
 
 
 @pytest.mark.parametrize("phi_a", [1.0, math.pi / 2, math.pi, 4.0])
 def test_phi_a_out_of_range(phi_a):
-    with pytest.raises(ParameterError, match=r"--phi-a must be in \(pi/2, pi\)"):
+    with pytest.raises(ParameterError, match=r"phi_a must be in \(pi/2, pi\)"):
         v0_dimensionless(phi_a)
 
 

@@ -133,8 +133,8 @@ def test_printed_filter_with_paper_horizon_runs_and_lifts_early():
     ("kwargs", "flag"),
     [
         ({"gamma": 0.0}, "gamma"),
-        ({"gamma": 1e-3, "t_end": 0.0}, "--t-end"),
-        ({"gamma": 1e-3, "horizon": "forever"}, "--recontact"),
+        ({"gamma": 1e-3, "t_end": 0.0}, "t_end"),
+        ({"gamma": 1e-3, "horizon": "forever"}, "recontact"),
         ({"gamma": 1e-3, "samples_per_period": 8}, "samples_per_period"),
     ],
 )

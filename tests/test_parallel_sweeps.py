@@ -125,10 +125,11 @@ def test_a_failed_point_is_a_row_with_its_parameters():
 
 
 def test_sweep_cli_reports_failed_points(capsys, monkeypatch):
-    monkeypatch.setattr("twoball.verify.cli.sweep.SweepSolver", lambda *a: FailAbove(3.0))
+    monkeypatch.setattr("twoball.verify.sweeps.sweeps.SweepSolver", lambda *a: FailAbove(3.0))
     assert main(["sweep", "--param", "v0", "--values", "2:4:3", "--json", "--workers", "1"]) == 0
     rows = json.loads(capsys.readouterr().out)
     assert [r["error"] is not None for r in rows] == [False, False, True]
+    assert all(r["phi_a_source"] == "eq. (3.7)" for r in rows)  # failed points too
     assert main(["sweep", "--param", "v0", "--values", "2:4:3", "--workers", "1"]) == 0
     assert "NumericalError" in capsys.readouterr().out
 

@@ -37,8 +37,10 @@ def test_negative_speed_is_a_speed():
 def test_derive_rederives_phi_a_only_for_v0_c_r():
     case = preset("basketball")
     assert case.derive(damping=0.2).phi_a == 2.6
-    moved = case.derive(v0=4.1)
+    assert case.derive(v0=4.1).phi_a == 2.6  # the preset's own value: measured phi_a
+    moved = case.derive(v0=4.5)
     assert moved.phi_a != 2.6 and 2.5 < moved.phi_a < 2.7
+    assert case.derive(phi_a="eq. (3.7)").phi_a == pytest.approx(2.5928, abs=1e-4)
     assert case.derive(v0=5.0, phi_a=2.4).phi_a == 2.4
 
 
@@ -48,30 +50,30 @@ def test_from_measurements_pressure():
 
 
 @pytest.mark.parametrize(
-    ("changes", "flag"),
+    ("changes", "name"),
     [
-        ({"radius": 0.0}, "--radius"),
-        ({"radius": -1.0}, "--radius"),
-        ({"wave_speed": 0.0}, "--wave-speed"),
-        ({"damping": 1.0}, "--damping"),
-        ({"damping": -0.1}, "--damping"),
-        ({"phi_a": math.pi / 2}, "--phi-a"),
-        ({"phi_a": math.pi}, "--phi-a"),
-        ({"modes": 0}, "--modes"),
-        ({"modes": 2.5}, "--modes"),
-        ({"v0": 0.0}, "--v0"),
-        ({"v0": math.nan}, "--v0"),
+        ({"radius": 0.0}, "radius"),
+        ({"radius": -1.0}, "radius"),
+        ({"wave_speed": 0.0}, "wave_speed"),
+        ({"damping": 1.0}, "damping"),
+        ({"damping": -0.1}, "damping"),
+        ({"phi_a": math.pi / 2}, "phi_a"),
+        ({"phi_a": math.pi}, "phi_a"),
+        ({"modes": 0}, "modes"),
+        ({"modes": 2.5}, "modes"),
+        ({"v0": 0.0}, "v0"),
+        ({"v0": math.nan}, "v0"),
     ],
 )
-def test_invalid_case_names_parameter_and_range(changes, flag):
+def test_invalid_case_names_parameter_and_range(changes, name):
     with pytest.raises(ParameterError) as error:
         Case(**changes)
-    assert error.value.name == flag
-    assert flag in str(error.value) and "must be" in str(error.value)
+    assert error.value.name == name
+    assert str(error.value).startswith(name + " must be ")
 
 
 def test_unknown_preset():
-    with pytest.raises(ParameterError, match="--preset must be one of basketball"):
+    with pytest.raises(ParameterError, match="preset must be one of basketball"):
         preset("volleyball")
 
 

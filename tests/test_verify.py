@@ -10,7 +10,6 @@ from twoball.verify.checks.alpha import decay_band
 from twoball.verify.checks.config import config
 from twoball.verify.checks.results import Check, bounded
 from twoball.verify.checks.run import run_verify
-from twoball.verify.cli import verify as cli_verify
 from twoball.verify.cli.main import main
 from twoball.verify.output.report_files import write_report_dir
 
@@ -94,7 +93,7 @@ def test_verify_table_and_failing_check_exit_1(capsys, tmp_path, monkeypatch):
     strict = type(strict)(
         "strict", (type(target)(target.spec, 1e-15, target.eigen, target.energy),), ()
     )
-    monkeypatch.setattr(cli_verify, "config", lambda name: strict)
+    monkeypatch.setattr("twoball.verify.checks.config.config", lambda name: strict)
     code = main(["verify", "--out", str(tmp_path / "r")])
     out = capsys.readouterr().out
     assert code == 1

@@ -73,7 +73,7 @@ def rebound_velocity(drop_height: float, e2: float, g: float = STANDARD_GRAVITY)
     float
         ``u0`` [m/s]; >= 0 (upwards).
     """
-    e2 = check_restitution("--e2", e2)
+    e2 = check_restitution("e2", e2)
     return -e2 * impact_velocity(drop_height, g)
 
 
@@ -99,7 +99,7 @@ def max_separation(drop_height: float, e2: float) -> float:
         The bound [m].
     """
     drop_height = check_drop_height(drop_height)
-    e2 = check_restitution("--e2", e2)
+    e2 = check_restitution("e2", e2)
     return 4.0 * e2 * (1.0 + e2) * drop_height
 
 
@@ -132,14 +132,14 @@ def second_impact_delay(
         :func:`max_separation` (the lower ball would have landed again).
     """
     dx = check_dx(dx)
-    e2 = check_restitution("--e2", e2)
+    e2 = check_restitution("e2", e2)
     v0 = impact_velocity(drop_height, g)
     if dx == 0.0:
         return 0.0
     limit = max_separation(drop_height, e2)
     if dx > limit:
         raise ParameterError(
-            "--dx",
+            "dx",
             f"<= 4 e2 (1 + e2) H = {limit:.6g} m (lower ball airborne at 2nd impact)",
             dx,
         )
@@ -167,7 +167,7 @@ def post_impact_velocities(u1: float, u2: float, mu: float, e12: float) -> tuple
         Velocities just after the impact [m/s].
     """
     mu = check_mu(mu)
-    e12 = check_restitution("--e12", e12)
+    e12 = check_restitution("e12", e12)
     u1 = float(u1)
     u2 = float(u2)
     v1 = (mu * u1 + u2 + e12 * (u2 - u1)) / (mu + 1.0)

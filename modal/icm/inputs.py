@@ -33,7 +33,7 @@ def _bounded_below(name: str, value: object, unit: str, strict: bool) -> float:
 
 def check_mu(mu: float) -> float:
     """Mass ratio ``m1 / m2``: a finite number >= 0."""
-    return _bounded_below("--mu", mu, "", strict=False)
+    return _bounded_below("mu", mu, "", strict=False)
 
 
 def check_restitution(name: str, value: float) -> float:
@@ -47,14 +47,14 @@ def check_restitution(name: str, value: float) -> float:
 
 def check_dx(dx: float) -> float:
     """Initial gap between the balls [m]: a finite number >= 0."""
-    return _bounded_below("--dx", dx, "m", strict=False)
+    return _bounded_below("dx", dx, "m", strict=False)
 
 
 def check_drop_height(drop_height: float) -> float:
     """Fall height H [m]: a finite number > 0."""
-    return _bounded_below("--drop-height", drop_height, "m", strict=True)
+    return _bounded_below("drop_height", drop_height, "m", strict=True)
 
 
 def check_g(g: float) -> float:
     """Gravitational acceleration [m/s^2]: a finite number > 0."""
-    return _bounded_below("--g", g, "m/s^2", strict=True)
+    return _bounded_below("g", g, "m/s^2", strict=True)

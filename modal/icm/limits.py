@@ -31,8 +31,8 @@ def touching_limit(mu: float, e2: float, e12: float) -> tuple[float, float]:
         Dimensionless multipliers of ``v0``.
     """
     mu = check_mu(mu)
-    e2 = check_restitution("--e2", e2)
-    e12 = check_restitution("--e12", e12)
+    e2 = check_restitution("e2", e2)
+    e12 = check_restitution("e12", e12)
     k1 = (mu - e2 - e12 * (1.0 + e2)) / (mu + 1.0)
     k2 = (mu - e2 + mu * e12 * (1.0 + e2)) / (mu + 1.0)
     return k1, k2
@@ -74,6 +74,6 @@ def light_touching_limit(e2: float, e12: float) -> tuple[float, float]:
     k1, k2 : float
         Dimensionless multipliers of ``v0`` (both <= 0).
     """
-    e2 = check_restitution("--e2", e2)
-    e12 = check_restitution("--e12", e12)
+    e2 = check_restitution("e2", e2)
+    e12 = check_restitution("e12", e12)
     return -((1.0 + e2) * e12 + e2), -e2

@@ -104,8 +104,8 @@ def icm(
         (``--mu``, ``--e2``, ``--e12``, ``--dx``, ``--drop-height``, ``--g``).
     """
     mu = check_mu(mu)
-    e2 = check_restitution("--e2", e2)
-    e12 = check_restitution("--e12", e12)
+    e2 = check_restitution("e2", e2)
+    e12 = check_restitution("e12", e12)
     dx = check_dx(dx)
     drop_height = check_drop_height(drop_height)
     g = check_g(g)

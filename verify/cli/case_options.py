@@ -8,7 +8,7 @@ import math
 from twoball.modal.errors import ParameterError
 from twoball.modal.filters import FILTER_KINDS
 from twoball.modal.liftoff import HORIZONS
-from twoball.modal.parameters import PRESETS, STANDARD_GRAVITY, Case, preset
+from twoball.modal.parameters import STANDARD_GRAVITY, Case
 
 VALID_RANGES: dict[str, str] = {
     "--radius": "a number > 0 [m]",
@@ -33,7 +33,11 @@ def add_case_options(parser: argparse.ArgumentParser) -> None:
     group.add_argument("--mass", type=float, metavar="M", help="ball mass m [kg] (with --pressure)")
     group.add_argument("--v0", type=float, metavar="V", help="impact speed |v0| [m/s]")
     group.add_argument(
-        "--phi-a", type=float, metavar="A", help="contact angle [rad]; default from eq. (3.7)"
+        "--phi-a",
+        type=float,
+        metavar="A",
+        help="contact angle [rad]; default: the preset's measured angle at its own R, c, "
+        "|v0|, else eq. (3.7)",
     )
     group.add_argument("--damping", type=float, metavar="D", help="modal damping ratio in [0, 1)")
     group.add_argument("--modes", type=int, metavar="N", help="Legendre modes N (default 30)")
@@ -54,33 +58,30 @@ def add_case_options(parser: argparse.ArgumentParser) -> None:
 
 
 def case_from_options(args: argparse.Namespace) -> Case:
-    """Build the case: preset values, overridden by any option given.
+    """Build the case exactly as the Python API does: ``Case.preset(name, **changes)``.
 
-    Rules: ``--pressure``/``--mass`` replace ``--wave-speed`` (eq. (3.8), §4(b));
-    when v0, c or R is given without ``--phi-a``, phi_a follows from eq. (3.7).
+    ``--pressure``/``--mass`` give c by eq. (3.8) (``Case.from_pressure``).  phi_a
+    follows the rule of :class:`~twoball.modal.parameters.Case`: ``--phi-a`` if
+    given, else the preset's measured angle at its own R, c, |v0|, else eq. (3.7).
     """
-    base = preset(args.preset)
     if (args.pressure is None) != (args.mass is None):
         raise ParameterError("--pressure/--mass", "given together")
     if args.pressure is not None and args.wave_speed is not None:
-        raise ParameterError("--wave-speed", "given alone, not with --pressure and --mass")
-    changes: dict[str, float] = {}
-    for name in ("radius", "wave_speed", "v0", "damping", "modes", "g"):
-        value = getattr(args, name)
-        if value is not None:
-            changes[name] = value
+        raise ParameterError("wave_speed", "given alone, not with --pressure and --mass")
     for name in ("radius", "v0", "damping", "pressure", "mass", "wave_speed", "phi_a", "t_end"):
         value = getattr(args, name, None)
         if value is not None and not math.isfinite(value):
-            raise ParameterError("--" + name.replace("_", "-"), "a finite number", value)
+            raise ParameterError(name, "a finite number", value)
+    changes: dict[str, float] = {}
+    for name in ("radius", "wave_speed", "v0", "phi_a", "damping", "modes"):
+        value = getattr(args, name)
+        if value is not None:
+            changes[name] = value
+    if args.g != STANDARD_GRAVITY:
+        changes["g"] = args.g
     if args.pressure is not None:
-        from twoball.modal.parameters import wave_speed_from_pressure
-
-        radius = changes.get("radius", base.radius)
-        changes["wave_speed"] = wave_speed_from_pressure(args.pressure, args.mass, radius)
-    if args.phi_a is not None:
-        changes["phi_a"] = args.phi_a
-    return base.derive(**changes)
+        return Case.from_pressure(args.pressure, args.mass, preset=args.preset, **changes)
+    return Case.preset(args.preset, **changes)
 
 
-__all__ = ["PRESETS", "VALID_RANGES", "add_case_options", "case_from_options"]
+__all__ = ["VALID_RANGES", "add_case_options", "case_from_options"]

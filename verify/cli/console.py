@@ -8,6 +8,7 @@ of it, so the ``--json`` paths start without it.  Subcommands import
 from __future__ import annotations
 
 import json
+import sys
 from typing import TYPE_CHECKING, Any
 
 if TYPE_CHECKING:
@@ -48,3 +49,9 @@ def key_value_table(title: str, rows: list[tuple[str, str]]) -> RichTable:
     for name, value in rows:
         table.add_row(name, value)
     return table
+
+
+def print_notes(notes: list[str]) -> None:
+    """Print each note on standard error (``twoball: note: ...``), apart from the results."""
+    for note in notes:
+        sys.stderr.write(f"twoball: note: {note}\n")

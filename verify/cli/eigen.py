@@ -1,29 +1,32 @@
-"""``twoball eigen``: finite-element eigenvalues beside the exact l (l + 1)."""
+"""``twoball eigen``: FE eigenvalues beside the exact l (l + 1), by :func:`twoball.fem.eigen`."""
 
 from __future__ import annotations
 
 import argparse
 
-from twoball.fem_membrane.eigen import eigen_table
-from twoball.verify.cli.console import Table, console, print_json
-from twoball.verify.cli.fem_options import VALID_RANGES, add_mesh_options
+from twoball.verify.cli.console import console, print_json
+from twoball.verify.cli.mesh_options import VALID_RANGES as MESH_RANGES
+from twoball.verify.cli.mesh_options import add_mesh_options, mesh_arguments
+
+VALID_RANGES = {**MESH_RANGES, "--count": "an integer >= 1"}
 
 __all__ = ["VALID_RANGES", "register", "run"]
 
 
 def run(args: argparse.Namespace) -> int:
     """Run ``twoball eigen``."""
-    rows = eigen_table(
-        mesh=args.mesh, level=args.level, elements=args.elements, order=args.order, count=args.count
-    )
+    from rich.table import Table
+
+    from twoball.fem import eigen
+    from twoball.mesh_options import MeshOptions
+
+    options = mesh_arguments(args)
+    rows = eigen(**options, count=args.count)
     if args.json:
         print_json(rows)
         return 0
-    if args.mesh == "axisym":
-        size = f"{400 if args.elements is None else args.elements} elements"
-    else:
-        size = f"level {3 if args.level is None else args.level}"
-    table = Table(title=f"Eigenvalues of -Laplace-Beltrami: {args.mesh}, P{args.order}, {size}")
+    spec = MeshOptions.resolve(**options)
+    table = Table(title=f"Eigenvalues of -Laplace-Beltrami: {spec.label}")
     for name in ("#", "l", "lambda (FE)", "l(l+1)", "rel. error", "cluster", "expected"):
         table.add_column(name, justify="right")
     for r in rows:

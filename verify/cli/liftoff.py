@@ -1,14 +1,30 @@
-"""``twoball liftoff``: lift-off time and velocity for one case (SI in and out)."""
+"""``twoball liftoff``: lift-off time and velocity for one case (SI in and out).
+
+A thin layer over :func:`twoball.liftoff`: the options become its arguments.
+"""
 
 from __future__ import annotations
 
 import argparse
 
-from twoball.modal.errors import ParameterError
-from twoball.modal.report import LiftoffReport, legendre_liftoff
+from twoball.modal.report import LiftoffReport
 from twoball.verify.cli.case_options import add_case_options, case_from_options
-from twoball.verify.cli.console import console, key_value_table, number, print_json
-from twoball.verify.cli.fem_options import add_mesh_options, add_time_options
+from twoball.verify.cli.console import (
+    console,
+    key_value_table,
+    number,
+    print_json,
+    print_notes,
+)
+from twoball.verify.cli.mesh_options import (
+    VALID_RANGES,
+    add_mesh_options,
+    add_time_options,
+    mesh_arguments,
+    time_arguments,
+)
+
+__all__ = ["VALID_RANGES", "register", "run"]
 
 
 def liftoff_rows(report: LiftoffReport) -> list[tuple[str, str]]:
@@ -19,6 +35,7 @@ def liftoff_rows(report: LiftoffReport) -> list[tuple[str, str]]:
         ("c [1/s]", f"{case.wave_speed:g}"),
         ("|v0| [m/s]", f"{case.v0:g}"),
         ("phi_a [rad]", f"{case.phi_a:.6f}"),
+        ("phi_a from", str(case.phi_a_source)),
         ("D", f"{case.damping:g}"),
         ("N", f"{case.modes}"),
         ("gamma = g/(R c^2)", f"{case.gamma:.4e}"),
@@ -43,20 +60,24 @@ def print_liftoff(report: LiftoffReport) -> None:
 
 
 def solve_from_options(args: argparse.Namespace) -> LiftoffReport:
-    """Solve the case described by the options with the chosen backend."""
-    case = case_from_options(args)
-    if args.backend == "fem":
-        from twoball.verify.cli.fem_options import fem_liftoff
+    """Call :func:`twoball.liftoff` with the case, model, mesh and time options."""
+    from twoball.solvers import liftoff
 
-        return fem_liftoff(case, args)
-    if args.backend != "legendre":
-        raise ParameterError("--backend", "one of legendre, fem", args.backend)
-    return legendre_liftoff(case, args.sigma, args.recontact, args.t_end)
+    return liftoff(
+        case_from_options(args),
+        backend=args.backend,
+        sigma=args.sigma,
+        recontact=args.recontact,
+        t_end=args.t_end,
+        **mesh_arguments(args),
+        **time_arguments(args),
+    )
 
 
 def run(args: argparse.Namespace) -> int:
     """Run ``twoball liftoff``."""
     report = solve_from_options(args)
+    print_notes(report.notes)
     if args.json:
         print_json(report.as_dict())
     else:

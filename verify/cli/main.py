@@ -5,8 +5,9 @@ Each subcommand lives in its own module ``twoball.verify.cli.<name>`` with a
 does the work.  Only the chosen subcommand's module is imported, so
 ``twoball --help`` loads no numerical library at all.  This module turns
 :class:`~twoball.modal.errors.ParameterError` into a one-line message with exit
-status 2 and :class:`~twoball.modal.errors.NumericalError` into one with exit
-status 3.
+status 2 (naming the flag through the one table of
+:mod:`twoball.verify.cli.flags`) and :class:`~twoball.modal.errors.NumericalError`
+into one with exit status 3.
 """
 
 from __future__ import annotations
@@ -134,7 +135,9 @@ def _main(argv: Sequence[str] | None = None) -> int:
     try:
         return int(args.run(args))
     except ParameterError as error:
-        fail(str(error))
+        from twoball.verify.cli.flags import cli_message
+
+        fail(cli_message(error, args))
     except NumericalError as error:
         fail(f"numerical trouble: {error}", EXIT_NUMERICAL)
 

@@ -1,22 +1,22 @@
-"""``twoball plot waterfall|pole|eigen``: PNG figures of the solution and of the FE spectrum."""
+"""``twoball plot waterfall|pole|eigen``: PNG figures of the solution and of the FE spectrum.
+
+A thin layer over :func:`twoball.plot`.
+"""
 
 from __future__ import annotations
 
 import argparse
 
 from twoball.modal.errors import ParameterError
-from twoball.verify.cli.case_options import add_case_options
-from twoball.verify.cli.console import console, key_value_table
-from twoball.verify.cli.export import add_mesh_options, model_from_options
+from twoball.verify.cli.case_options import add_case_options, case_from_options
+from twoball.verify.cli.console import console, key_value_table, print_notes
+from twoball.verify.cli.mesh_options import SPHERE_KINDS, add_mesh_options, mesh_arguments
+from twoball.verify.cli.mesh_options import VALID_RANGES as MESH_RANGES
 from twoball.verify.output.fields import BACKENDS
-from twoball.verify.output.figures import PLOT_KINDS, save_figure
-from twoball.verify.output.figures.eigen import eigen_figure, eigen_table
-from twoball.verify.output.figures.pole import pole_figure
-from twoball.verify.output.figures.waterfall import WATERFALL_INSTANTS, waterfall_figure
-
-from twoball.staging import check_file
+from twoball.verify.output.figures.waterfall import WATERFALL_INSTANTS
 
 VALID_RANGES: dict[str, str] = {
+    **MESH_RANGES,
     "--instants": "an integer >= 2",
     "--max-degree": "an integer >= 1",
 }
@@ -46,37 +46,33 @@ def parse_backends(text: str) -> tuple[str, ...]:
 
 
 def run(args: argparse.Namespace) -> int:
-    """Run ``twoball plot``."""
-    if args.kind not in PLOT_KINDS:
-        raise ParameterError("plot kind", "one of " + ", ".join(PLOT_KINDS), args.kind)
-    if not str(args.out).lower().endswith(".png"):
-        raise ParameterError("--out", "a file name ending in .png", args.out)
-    out = check_file(args.out)
-    rows: list[tuple[str, str]] = [("file", str(out)), ("plot", args.kind)]
+    """Run ``twoball plot``: :func:`twoball.plot` with the options."""
+    from twoball.files import plot
+
+    options = mesh_arguments(args)
     if args.kind == "eigen":
         levels = parse_list(args.levels, "--levels", "comma-separated levels >= 0, e.g. 1,2")
         orders = parse_list(args.orders, "--orders", "comma-separated orders 1 or 2", {1, 2})
-        tables = [
-            eigen_table(level, order, args.max_degree) for order in orders for level in levels
-        ]
-        figure = eigen_figure(tables)
-        rows += [(t.label, f"l <= {t.degrees[-1]}, worst {t.errors[1:].max():.2e}") for t in tables]
+        result = plot(
+            "eigen", args.out, levels=levels, orders=orders, max_degree=args.max_degree, **options
+        )
     else:
-        if isinstance(args.instants, int) and args.instants < 2:
-            raise ParameterError("--instants", VALID_RANGES["--instants"], args.instants)
-        model = model_from_options(args, parse_backends(args.backends))
-        if args.kind == "waterfall":
-            figure = waterfall_figure(model, args.instants)
-        else:
-            figure = pole_figure(model)
-        for name, backend in model.backends.items():
-            report = backend.report
-            if report.result.lifted:
-                text = f"{report.t_liftoff_s * 1e3:.3f} ms, {report.v_liftoff_m_s:.4f} m/s"
-            else:
-                text = "no lift-off"
-            rows.append((f"lift-off ({name})", text))
-    save_figure(figure, out)
+        result = plot(
+            args.kind,
+            args.out,
+            case_from_options(args),
+            backends=parse_backends(args.backends),
+            instants=args.instants,
+            sigma=args.sigma,
+            recontact=args.recontact,
+            t_end=args.t_end,
+            **options,
+        )
+    rows = [("file", str(result.file)), ("plot", result.kind), *result.rows]
+    if result.reports:
+        case = next(iter(result.reports.values())).case
+        print_notes(next(iter(result.reports.values())).notes)
+        rows.append(("phi_a from", str(case.phi_a_source)))
     console().print(key_value_table("Plot", rows))
     return 0
 
@@ -90,14 +86,13 @@ def register(parser: argparse.ArgumentParser) -> None:
     )
     parser.add_argument("kind", metavar="KIND", help="waterfall, pole or eigen")
     add_case_options(parser)
-    add_mesh_options(parser, backend_choice=False)
+    add_mesh_options(parser, SPHERE_KINDS, initial=True, files=False)
     parser.add_argument(
         "--backends", default="fem,legendre", help="solvers drawn (default fem,legendre)"
     )
     parser.add_argument(
         "--instants",
         type=int,
-        default=WATERFALL_INSTANTS,
         help=f"curves of the waterfall (default {WATERFALL_INSTANTS})",
     )
     parser.add_argument("--levels", default="1,2,3", help="eigen: mesh levels (default 1,2,3)")

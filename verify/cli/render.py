@@ -1,34 +1,25 @@
-"""``twoball render``: a picture (PNG) or an animation (GIF, MP4) of the bouncing ball."""
+"""``twoball render``: a picture (PNG) or an animation (GIF, MP4) of the bouncing ball.
+
+A thin layer over :func:`twoball.render`.
+"""
 
 from __future__ import annotations
 
 import argparse
-import math
 
-import numpy as np
-from twoball.fem_membrane.render import DEFAULT_SIZE, check_size, check_warp, image_kind
+from twoball.fem_membrane.render import DEFAULT_SIZE, check_warp
 from twoball.modal.errors import ParameterError
 from twoball.verify.cli.case_options import add_case_options, case_from_options
-from twoball.verify.cli.console import console, key_value_table
-from twoball.verify.cli.export import (
-    add_mesh_options,
-    check_backend,
-    check_mesh_options,
-    model_from_options,
-)
-from twoball.verify.output.fields import (
-    MAX_FRAMES,
-    ball_scene,
-    check_frames,
-    check_times,
-    liftoff_frame,
-    window_s,
-)
+from twoball.verify.cli.console import console, key_value_table, print_notes
+from twoball.verify.cli.export import add_backend_option
+from twoball.verify.cli.mesh_options import SPHERE_KINDS, add_mesh_options, mesh_arguments
+from twoball.verify.cli.mesh_options import VALID_RANGES as MESH_RANGES
+from twoball.verify.output.fields import MAX_FRAMES
 
-from twoball.staging import check_file
+from twoball.files import DEFAULT_ANIMATION_FRAMES
 
-DEFAULT_ANIMATION_FRAMES = 60
 VALID_RANGES: dict[str, str] = {
+    **MESH_RANGES,
     "--time": "a time >= 0 in seconds within the modelled window",
     "--frames": f"an integer in [1, {MAX_FRAMES}]",
     "--fps": "a number > 0",
@@ -47,42 +38,33 @@ def parse_warp(text: str | None) -> float | None:
 
 
 def run(args: argparse.Namespace) -> int:
-    """Run ``twoball render``."""
-    kind = image_kind(args.out)
-    out = check_file(args.out)
-    size = check_size(args.size)
-    warp = parse_warp(args.warp)
-    check_backend(args.backend)
-    if not (math.isfinite(args.fps) and args.fps > 0):
-        raise ParameterError("--fps", "a number > 0", args.fps)
-    if kind == ".png" and args.frames is not None:
-        raise ParameterError("--frames", "used with .gif or .mp4 only (use --time for .png)")
-    if kind != ".png" and args.time is not None:
-        raise ParameterError("--time", "used with .png only (use --frames for animations)")
-    frames = None if args.frames is None else check_frames(args.frames)
-    check_mesh_options(args)
-    case = case_from_options(args)
-    times = None
-    if args.time is not None:
-        times = check_times(window_s(case, args.t_end), [args.time], "--time")
-    model = model_from_options(args, (args.backend,), case)
-    if kind == ".png":
-        times = liftoff_frame(model, args.backend) if times is None else times
-    else:
-        count = DEFAULT_ANIMATION_FRAMES if frames is None else frames
-        times = np.linspace(0.0, model.t_end_s, count)
-    scene = ball_scene(model, times, args.backend)
-    from twoball.fem_membrane.render import render_scene, round_size
+    """Run ``twoball render``: :func:`twoball.render` with the options."""
+    from twoball.files import render
 
-    render_scene(out, scene, warp=warp, size=size, fps=args.fps)
-    shown = round_size(size) if kind == ".mp4" else size
+    result = render(
+        args.out,
+        case_from_options(args),
+        backend=args.backend,
+        time=args.time,
+        frames=args.frames,
+        warp=parse_warp(args.warp),
+        size=args.size,
+        fps=args.fps,
+        sigma=args.sigma,
+        recontact=args.recontact,
+        t_end=args.t_end,
+        **mesh_arguments(args),
+    )
+    times = result.times_s
+    print_notes(result.report.notes)
     rows = [
-        ("file", str(out)),
-        ("frames", str(times.size)),
+        ("file", str(result.file)),
+        ("frames", str(len(times))),
         ("times [ms]", f"{times[0] * 1e3:.3f} .. {times[-1] * 1e3:.3f}"),
-        ("size [px]", f"{shown[0]}x{shown[1]}"),
-        ("warp", f"{scene.auto_warp() if warp is None else warp:.4g}"),
-        ("backend", args.backend),
+        ("size [px]", f"{result.size[0]}x{result.size[1]}"),
+        ("warp", f"{result.warp:.4g}"),
+        ("backend", result.backend),
+        ("phi_a from", str(result.report.case.phi_a_source)),
     ]
     console().print(key_value_table("Rendered", rows))
     return 0
@@ -95,7 +77,8 @@ def register(parser: argparse.ArgumentParser) -> None:
         "and coloured by u [mm], the upper body on the pole and in free flight after lift-off."
     )
     add_case_options(parser)
-    add_mesh_options(parser)
+    add_mesh_options(parser, SPHERE_KINDS, initial=True, files=False)
+    add_backend_option(parser)
     parser.add_argument("--out", required=True, metavar="FILE", help="FILE.png, .gif or .mp4")
     group = parser.add_mutually_exclusive_group()
     group.add_argument(

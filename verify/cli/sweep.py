@@ -5,18 +5,16 @@ from __future__ import annotations
 import argparse
 
 from twoball.verify.cli.case_options import add_case_options, case_from_options
-from twoball.verify.cli.console import Table, console, number, print_json
-from twoball.verify.sweeps.parallel import MIN_PARALLEL_ITEMS, Runner, check_workers
+from twoball.verify.cli.console import Table, console, number, print_json, print_notes
 from twoball.verify.sweeps.parallel import VALID_RANGES as PARALLEL_RANGES
+from twoball.verify.sweeps.parallel import check_workers
 from twoball.verify.sweeps.sweeps import (
     SWEEP_PARAMETERS,
     SweepGrid,
     SweepPoint,
-    SweepSolver,
     check_plot_path,
     make_grid,
     plot_sweep,
-    run_sweep,
 )
 
 VALID_RANGES = dict(PARALLEL_RANGES)
@@ -30,7 +28,15 @@ def print_sweep(grid: SweepGrid, points: list[SweepPoint]) -> None:
     shape = " x ".join(str(n) for n in grid.shape)
     title = f"Sweep of {' x '.join(grid.parameters)} ({shape} values)"
     table = Table(title=title)
-    columns = [*grid.parameters, "phi_a [rad]", "lifted", "t_l [ms]", "v_l [m/s]", "v_l/|v0|"]
+    columns = [
+        *grid.parameters,
+        "phi_a [rad]",
+        "phi_a from",
+        "lifted",
+        "t_l [ms]",
+        "v_l [m/s]",
+        "v_l/|v0|",
+    ]
     failed = any(p.error for p in points)
     if failed:
         columns.append("error")
@@ -40,6 +46,7 @@ def print_sweep(grid: SweepGrid, points: list[SweepPoint]) -> None:
         r = p.report
         cells = [f"{getattr(p.case, f):g}" for f in fields]
         cells.append(f"{p.case.phi_a:.5f}")
+        cells.append(str(p.case.phi_a_source))
         if r is None:
             cells += ["error", "-", "-", "-"]
         else:
@@ -56,32 +63,38 @@ def print_sweep(grid: SweepGrid, points: list[SweepPoint]) -> None:
 
 
 def run(args: argparse.Namespace) -> int:
-    """Run ``twoball sweep``."""
+    """Run ``twoball sweep``: :func:`twoball.sweep` with the options' grid and case."""
+    from twoball.solvers import sweep
+
     grid = make_grid(args.param, args.values)
     workers = check_workers(args.workers)
     plot = None if args.plot is None else check_plot_path(args.plot)
     base = case_from_options(args)
-    cases = grid.cases(base)
-    solver = SweepSolver(args.sigma, args.recontact, args.t_end)
-    if len(cases) < MIN_PARALLEL_ITEMS:
-        workers = 1  # would run in process anyway; do not start a pool
-    with Runner(workers, args.scheduler) as runner:
-        if args.json or len(cases) < PROGRESS_FROM:
-            points = run_sweep(cases, solver, runner=runner, indices=grid.indices())
-        else:
-            from rich.progress import Progress
+    values = dict(zip(grid.parameters, grid.values, strict=True))
+    options = {
+        "sigma": args.sigma,
+        "recontact": args.recontact,
+        "t_end": args.t_end,
+        "workers": workers,
+        "scheduler": args.scheduler,
+    }
+    total = 1
+    for n in grid.shape:
+        total *= n
+    if args.json or total < PROGRESS_FROM:
+        result = sweep(values, base, **options)
+    else:
+        from rich.progress import Progress
 
-            label = f"sweep {' x '.join(grid.parameters)} [{runner.describe()}]"
-            err = console_err()
-            with Progress(console=err, transient=True, disable=not err.is_terminal) as bar:
-                task = bar.add_task(label, total=len(cases))
-                points = run_sweep(
-                    cases,
-                    solver,
-                    lambda k: bar.update(task, completed=k),
-                    runner=runner,
-                    indices=grid.indices(),
-                )
+        label = f"sweep {' x '.join(grid.parameters)}"
+        err = console_err()
+        with Progress(console=err, transient=True, disable=not err.is_terminal) as bar:
+            task = bar.add_task(label, total=total)
+            result = sweep(
+                values, base, progress=lambda k: bar.update(task, completed=k), **options
+            )
+    points = result.points
+    print_notes(sweep_notes(points))
     if plot is not None:
         plot_sweep(grid, points, plot)
     if args.json:
@@ -91,6 +104,15 @@ def run(args: argparse.Namespace) -> int:
         if plot is not None:
             console().print(f"plot written to {plot}")
     return 0
+
+
+def sweep_notes(points: list[SweepPoint]) -> list[str]:
+    """One note for the whole sweep: at how many points eq. (3.7) replaced a preset's phi_a."""
+    notes = [p.report.notes[0] for p in points if p.report is not None and p.report.notes]
+    if len(notes) <= 1:
+        return notes
+    why = notes[0].split("; ", 1)[-1]
+    return [f"phi_a from eq. (3.7) at {len(notes)} of {len(points)} points; {why}"]
 
 
 def console_err():
@@ -105,7 +127,8 @@ def register(parser: argparse.ArgumentParser) -> None:
     parser.description = (
         "Closed-form lift-off over a range of one parameter, or over a grid of "
         "two (give --param and --values twice, in the same order; the first parameter "
-        "varies slowest).  v0, wave-speed and radius re-derive phi_a from eq. (3.7).  "
+        "varies slowest).  v0, wave-speed and radius re-apply the phi_a rule: the "
+        "preset's measured angle at its own R, c, |v0|, eq. (3.7) elsewhere.  "
         "A point whose solve fails is reported with its parameters and an error."
     )
     parser.add_argument(

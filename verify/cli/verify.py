@@ -1,4 +1,7 @@
-"""``twoball verify``: every backend against the closed form, PASS/FAIL, and a report directory."""
+"""``twoball verify``: every backend against the closed form, PASS/FAIL, and a report directory.
+
+A thin layer over :func:`twoball.verify`, which runs the checks and writes the report.
+"""
 
 from __future__ import annotations
 
@@ -15,17 +18,10 @@ from rich.progress import (
     TimeElapsedColumn,
 )
 from rich.table import Table
-from twoball.verify.checks.config import config
 from twoball.verify.checks.results import VerifyResult
-from twoball.verify.checks.run import run_verify
 from twoball.verify.cli.case_options import add_case_options, case_from_options
-from twoball.verify.cli.console import console
-from twoball.verify.output.report_files import (
-    check_output_dir,
-    json_text,
-    verify_files,
-    write_report_dir,
-)
+from twoball.verify.cli.console import console, print_notes
+from twoball.verify.output.report_files import json_text
 
 DEFAULT_OUT = "twoball-report"
 
@@ -56,6 +52,8 @@ def print_result(result: VerifyResult, out: Path) -> None:
             f"{row.seconds:.2f}",
         )
     out_console.print(runs)
+    settings = result.settings
+    out_console.print(f"phi_a = {settings['phi_a']:.6f} rad ({settings['phi_a_source']})")
     checks = Table(title="checks")
     for name in ("check", "value", "tolerance", "result"):
         checks.add_column(name, justify="left" if name == "check" else "right")
@@ -76,13 +74,23 @@ def print_result(result: VerifyResult, out: Path) -> None:
 
 
 def run(args: argparse.Namespace) -> int:
-    """Run ``twoball verify``."""
+    """Run ``twoball verify``: :func:`twoball.verify` with the options, report in ``--out``."""
+    from twoball.verify.checks.config import config
+
+    from twoball.reports import verify
+
     case = case_from_options(args)
-    out = check_output_dir(args.out)
-    name = "fast" if args.fast else ("thorough" if args.thorough else "default")
-    configuration = config(name)
+    print_notes([case.phi_a_note] if case.phi_a_note else [])
+    options = {
+        "thorough": args.thorough,
+        "fast": args.fast,
+        "sigma": args.sigma,
+        "recontact": args.recontact,
+        "t_end": args.t_end,
+        "out": args.out,
+    }
     if args.json:
-        result = run_verify(case, args.sigma, args.recontact, args.t_end, configuration)
+        result = verify(case, **options)
     else:
         columns = (
             SpinnerColumn(),
@@ -91,6 +99,9 @@ def run(args: argparse.Namespace) -> int:
             MofNCompleteColumn(),
             TimeElapsedColumn(),
         )
+        configuration = config(
+            "fast" if args.fast else ("thorough" if args.thorough else "default")
+        )
         steps = 3 + len(configuration.fem) + len(configuration.alpha)
         with Progress(*columns, transient=True, console=console()) as bar:
             task = bar.add_task("verify", total=steps)
@@ -98,11 +109,8 @@ def run(args: argparse.Namespace) -> int:
             def advance(text: str) -> None:
                 bar.update(task, description=text, advance=1)
 
-            result = run_verify(
-                case, args.sigma, args.recontact, args.t_end, configuration, advance
-            )
-    files = verify_files(result)
-    write_report_dir(out, files, "twoball verify")
+            result = verify(case, progress=advance, **options)
+    out = Path(args.out).expanduser()
     if args.json:
         data = result.as_dict()
         data["out"] = str(out)

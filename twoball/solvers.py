@@ -1,0 +1,186 @@
+"""``twoball.liftoff`` and ``twoball.sweep``: one case, or a grid of cases, in SI.
+
+The command line (``twoball liftoff``, ``twoball sweep``) calls exactly these
+functions, so the same inputs give bit-identical numbers in Python and in a shell.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable, Mapping, Sequence
+from dataclasses import dataclass
+from typing import Any
+
+from twoball.mesh_options import refuse_mesh_options
+from twoball.modal.errors import ParameterError
+from twoball.modal.parameters import Case
+from twoball.modal.report import LiftoffReport
+
+BACKENDS: tuple[str, ...] = ("legendre", "fem")
+
+__all__ = ["BACKENDS", "SweepResult", "liftoff", "sweep"]
+
+
+def liftoff(
+    case: Case | None = None,
+    *,
+    backend: str = "legendre",
+    sigma: str = "lanczos",
+    recontact: str = "window",
+    t_end: float | None = None,
+    mesh: Any = None,
+    level: int | None = None,
+    elements: int | None = None,
+    order: int | None = None,
+    pole: Any = None,
+    time: str | None = None,
+    dt: float | None = None,
+    route: str | None = None,
+    damping_model: str | None = None,
+) -> LiftoffReport:
+    """Lift-off time and velocity of the body on the ball, in SI.
+
+    Parameters
+    ----------
+    case : Case, optional
+        The impact; default ``Case.preset("basketball")``.
+    backend : {"legendre", "fem"}
+        Closed-form Legendre series, eqs. (3.12)-(3.16), or finite elements
+        (:func:`twoball.fem.solve`, which takes the mesh and time options).
+    sigma : {"lanczos", "printed", "none"}
+        Spectral filter, eq. (3.16).
+    recontact : {"window", "paper"}
+        Re-contact horizon of criterion (ii), §3(a).
+    t_end : float, optional
+        Modelled window [s] (default 4 pi / c).
+    mesh, level, elements, order, pole, time, dt, route, damping_model
+        Finite-element options (see :func:`twoball.fem.solve`; ``mesh`` may be a
+        kind name or the user's mesh: a file path, ``meshio.Mesh`` or ``MeshTri``);
+        refused with ``backend="legendre"``.
+
+    Returns
+    -------
+    LiftoffReport
+        ``t_liftoff_s``, ``v_liftoff_m_s``, ``ratio``, ``case`` (with
+        ``phi_a_source``), ``notes``; ``as_dict()`` for JSON.
+    """
+    case = Case.preset("basketball") if case is None else case
+    if not isinstance(case, Case):
+        raise ParameterError("case", "a twoball.Case", type(case).__name__)
+    fem_options = {
+        "mesh": mesh,
+        "level": level,
+        "elements": elements,
+        "order": order,
+        "pole": pole,
+        "time": time,
+        "dt": dt,
+        "route": route,
+        "damping_model": damping_model,
+    }
+    if backend == "fem":
+        from twoball.fem import solve
+
+        return solve(case, sigma=sigma, recontact=recontact, t_end=t_end, **fem_options)
+    if backend != "legendre":
+        raise ParameterError("backend", "one of " + ", ".join(BACKENDS), backend)
+    refuse_mesh_options("with backend legendre (no mesh, no time steps)", **fem_options)
+    from twoball.modal.report import legendre_liftoff
+
+    return legendre_liftoff(case, sigma, recontact, t_end)
+
+
+@dataclass(frozen=True)
+class SweepResult:
+    """Lift-off over a grid of cases (row-major: the first parameter varies slowest).
+
+    Attributes
+    ----------
+    parameters : tuple of str
+        Swept parameters (``v0``, ``damping``, ``wave-speed``, ``radius``, ``modes``).
+    shape : tuple of int
+        Values per parameter.
+    points : list of SweepPoint
+        One per grid point: ``index``, ``case``, ``report`` (or ``error``).
+    """
+
+    parameters: tuple[str, ...]
+    shape: tuple[int, ...]
+    points: list[Any]
+
+    def as_dict(self) -> dict[str, Any]:
+        """JSON-ready: parameters, shape and the points (SI)."""
+        return {
+            "parameters": list(self.parameters),
+            "shape": list(self.shape),
+            "points": [p.as_dict() for p in self.points],
+        }
+
+
+def _sweep_name(name: str) -> str:
+    return name.replace("_", "-")
+
+
+def sweep(
+    values: Mapping[str, Sequence[float]],
+    case: Case | None = None,
+    *,
+    sigma: str = "lanczos",
+    recontact: str = "window",
+    t_end: float | None = None,
+    workers: int = 1,
+    scheduler: str | None = None,
+    progress: Callable[[int], None] | None = None,
+) -> SweepResult:
+    """Closed-form lift-off over one parameter or a grid of two (Fig. 11(b), Fig. 12).
+
+    Parameters
+    ----------
+    values : mapping
+        ``{"v0": [2.0, 4.0, 8.0]}`` or two entries for a grid; keys among
+        ``damping``, ``v0``, ``wave_speed``, ``radius``, ``modes``.  v0, c and R
+        re-apply the phi_a rule of :class:`~twoball.modal.parameters.Case`.
+    case : Case, optional
+        The base case (default the basketball preset).
+    sigma, recontact, t_end
+        As in :func:`liftoff` (``t_end`` in seconds).
+    workers : int
+        Local processes (1: serial; the numbers do not depend on it).
+    scheduler : str, optional
+        Address of a dask.distributed scheduler.
+    progress : callable, optional
+        Called with the number of points done.
+
+    Returns
+    -------
+    SweepResult
+    """
+    import numpy as np
+
+    from twoball.verify.sweeps.parallel import MIN_PARALLEL_ITEMS, Runner, check_workers
+    from twoball.verify.sweeps.sweeps import SWEEP_PARAMETERS, SweepGrid, SweepSolver, run_sweep
+
+    case = Case.preset("basketball") if case is None else case
+    if not isinstance(values, Mapping) or not 1 <= len(values) <= 2:
+        raise ParameterError("values", "a mapping of one or two parameters to values", values)
+    parameters = tuple(_sweep_name(k) for k in values)
+    for key, name in zip(values, parameters, strict=True):
+        if name not in SWEEP_PARAMETERS:
+            valid = "keys among " + ", ".join(f.replace("-", "_") for f in SWEEP_PARAMETERS)
+            raise ParameterError("values", valid, key)
+    if len(set(parameters)) != len(parameters):
+        raise ParameterError("values", "two different parameters for a grid", list(values))
+    arrays = []
+    for name, items in values.items():
+        array = np.atleast_1d(np.asarray(items, dtype=float))
+        if array.ndim != 1 or array.size < 1 or not np.all(np.isfinite(array)):
+            raise ParameterError(f"values[{name!r}]", "a non-empty list of finite numbers", items)
+        arrays.append(array)
+    grid = SweepGrid(parameters, tuple(arrays))
+    cases = grid.cases(case)
+    workers = check_workers(workers)
+    if len(cases) < MIN_PARALLEL_ITEMS:
+        workers = 1  # would run in process anyway; do not start a pool
+    solver = SweepSolver(sigma, recontact, t_end)
+    with Runner(workers, scheduler) as runner:
+        points = run_sweep(cases, solver, progress, runner=runner, indices=grid.indices())
+    return SweepResult(parameters, grid.shape, points)

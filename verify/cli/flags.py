@@ -1,0 +1,100 @@
+"""The one table from parameter names (Python API, model layer) to command-line flags.
+
+The model layer and :mod:`twoball`'s public functions raise
+:class:`~twoball.modal.errors.ParameterError` naming their parameters
+(``damping``, ``phi_a``, ``level``); the command line prints the flag the user
+typed instead (``--damping``, ``--phi-a``, ``--level``).  Names not in the
+table (already a flag, or internal) are printed as they are.
+"""
+
+from __future__ import annotations
+
+from argparse import Namespace
+
+from twoball.modal.errors import ParameterError
+
+FLAGS: dict[str, str] = {
+    # case (SI)
+    "preset": "--preset",
+    "radius": "--radius",
+    "wave_speed": "--wave-speed",
+    "pressure": "--pressure",
+    "mass": "--mass",
+    "v0": "--v0",
+    "phi_a": "--phi-a",
+    "damping": "--damping",
+    "modes": "--modes",
+    "g": "--g",
+    # model
+    "sigma": "--sigma",
+    "recontact": "--recontact",
+    "t_end": "--t-end",
+    "backend": "--backend",
+    "backends": "--backends",
+    # finite elements
+    "mesh": "--mesh",
+    "level": "--level",
+    "elements": "--elements",
+    "order": "--order",
+    "time": "--time",
+    "dt": "--dt",
+    "route": "--route",
+    "damping_model": "--damping-model",
+    "rho_inf": "--rho-inf",
+    "initial": "--initial",
+    "count": "--count",
+    "mesh_file": "--mesh-file",
+    "pole": "--pole",
+    # sweeps, studies, reports
+    "values": "--values",
+    "param": "--param",
+    "workers": "--workers",
+    "scheduler": "--scheduler",
+    "study": "--study",
+    "levels": "--levels",
+    "orders": "--orders",
+    "modes_list": "--modes-list",
+    "thorough": "--thorough",
+    "fast": "--fast",
+    # files and pictures
+    "out": "--out",
+    "format": "--format",
+    "frames": "--frames",
+    "times": "--times",
+    "fps": "--fps",
+    "size": "--size",
+    "warp": "--warp",
+    "instants": "--instants",
+    "max_degree": "--max-degree",
+    "kind": "plot kind",
+    # independent collision model
+    "mu": "--mu",
+    "e2": "--e2",
+    "e12": "--e12",
+    "dx": "--dx",
+    "drop_height": "--drop-height",
+}
+
+
+def flag_of(name: str, args: Namespace | None = None) -> str:
+    """The command-line flag of parameter ``name`` (``name`` itself if it has none).
+
+    ``mesh`` is ``--mesh-file`` when the mesh came from ``--mesh-file`` (the API
+    takes a kind name or a file as the same ``mesh`` argument).
+    """
+    if name == "mesh" and getattr(args, "mesh_file", None) is not None:
+        return "--mesh-file"
+    return FLAGS.get(name, name)
+
+
+def cli_message(error: ParameterError, args: Namespace | None = None) -> str:
+    """``error`` as one line naming the flag: ``--damping must be in [0, 1), got 2.0``.
+
+    The message keeps its own wording; only the parameter name it starts with
+    becomes the flag.
+    """
+    text = " ".join(str(error).split())  # one line
+    name = str(error.name)
+    if text.startswith(name):
+        return flag_of(name, args) + text[len(name) :]
+    return text
