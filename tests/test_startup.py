@@ -184,7 +184,7 @@ def test_phi_a_from_v0_against_eq_3_7_in_high_precision():
 
 @pytest.mark.parametrize("v0", [1e-12, 1e-30, 1e-300])
 def test_phi_a_from_v0_refuses_speeds_it_cannot_resolve(v0):
-    with pytest.raises(ParameterError, match=r"--v0 must be at least .* m/s"):
+    with pytest.raises(ParameterError, match=r"^v0 must be at least .* m/s"):
         phi_a_from_v0(v0, 0.12, 320.0)
 
 
