@@ -27,8 +27,8 @@ other entry (a user's file, a symbolic link) makes :func:`check_folder` raise
 A target that is a symbolic link is refused, never followed.
 
 Scratch entries are named ``.NAME.twoball-scratch-PID-TOKEN`` and removed on
-every exit path: exceptions and, through :func:`raise_on_signals` (which turns
-SIGINT and SIGTERM into :class:`Interrupted`), signals; commits and clean-ups
+every exit path: exceptions and, through :func:`twoball.signals.raise_on_signals` (which turns
+SIGINT and SIGTERM into :class:`~twoball.signals.Interrupted`), signals; commits and clean-ups
 run with signals held back (:func:`deferred_signals`).  Scratch left by a killed
 (SIGKILL) process is swept by the next run that writes the same target, once
 its process id is gone.
@@ -54,12 +54,11 @@ import os
 import re
 import secrets
 import shutil
-import signal
 import sys
-import threading
-import time
 from collections.abc import Callable, Iterator, Sequence
 from pathlib import Path
+
+from twoball.signals import deferred_signals, pause, sigterm_raises
 
 MARKER = ".twoball-output"
 #: Marker of report folders written by twoball before 0.x; such a folder is
@@ -80,98 +79,7 @@ LEGACY_FILES = frozenset(
     }
 )
 SCRATCH_TAG = "twoball-scratch"
-PAUSE_ENV = "TWOBALL_TEST_PAUSE"
-PAUSE_SECONDS = 60.0
 _NAME_KEEP = 180  # characters of the target's name kept in a scratch name (NAME_MAX 255)
-
-
-# --------------------------------------------------------------------------- signals
-class Interrupted(KeyboardInterrupt):
-    """SIGINT or SIGTERM arrived; ``exit_status`` is 128 + the signal number (130, 143)."""
-
-    def __init__(self, signum: int) -> None:
-        self.signum = int(signum)
-        super().__init__(signal.Signals(self.signum).name)
-
-    @property
-    def exit_status(self) -> int:
-        """Conventional exit status of a process ended by this signal."""
-        return 128 + self.signum
-
-
-_HANDLED = (signal.SIGINT, signal.SIGTERM)
-_state = threading.local()
-_deferral = {"depth": 0, "pending": None}
-
-
-def _raise_interrupted(signum: int, frame: object) -> None:
-    if _deferral["depth"] > 0:  # inside a commit or clean-up: raise when it is over
-        _deferral["pending"] = signum
-        return
-    raise Interrupted(signum)
-
-
-@contextlib.contextmanager
-def raise_on_signals() -> Iterator[None]:
-    """While active, SIGINT and SIGTERM raise :class:`Interrupted` in the main thread.
-
-    Outside the main thread this does nothing (Python runs signal handlers
-    only there).  The previous handlers come back on exit.
-    """
-    if threading.current_thread() is not threading.main_thread():
-        yield
-        return
-    previous = {s: signal.getsignal(s) for s in _HANDLED}
-    for s in _HANDLED:
-        signal.signal(s, _raise_interrupted)
-    try:
-        yield
-    finally:
-        for s, handler in previous.items():
-            signal.signal(s, handler)
-
-
-@contextlib.contextmanager
-def _sigterm_raises() -> Iterator[None]:
-    """Make SIGTERM raise (for API callers) unless someone already handles it."""
-    if (
-        threading.current_thread() is threading.main_thread()
-        and signal.getsignal(signal.SIGTERM) == signal.SIG_DFL
-    ):
-        with raise_on_signals():
-            yield
-    else:
-        yield
-
-
-@contextlib.contextmanager
-def deferred_signals() -> Iterator[None]:
-    """Hold SIGINT/SIGTERM back until the block ends, then raise :class:`Interrupted`.
-
-    Used around commits (a sequence of renames) and scratch clean-up so that a
-    signal can neither split a commit nor leave scratch behind.  Only signals
-    that reach :func:`raise_on_signals`' handler are held back.
-    """
-    _deferral["depth"] += 1
-    try:
-        yield
-    finally:
-        _deferral["depth"] -= 1
-        pending = _deferral["pending"]
-        if _deferral["depth"] == 0 and pending is not None:
-            _deferral["pending"] = None
-            raise Interrupted(pending)
-
-
-def pause(stage: str) -> None:
-    """Test hook: stop at ``stage`` if ``TWOBALL_TEST_PAUSE`` names it (see the module doc)."""
-    if os.environ.get(PAUSE_ENV) != stage:
-        return
-    sys.stderr.write(f"twoball-test-pause: {stage}\n")
-    sys.stderr.flush()
-    end = time.monotonic() + PAUSE_SECONDS
-    while time.monotonic() < end and _deferral["pending"] is None:
-        time.sleep(0.02)  # a signal's handler raises here (or is held back: then stop)
 
 
 # --------------------------------------------------------------------------- errors
@@ -360,7 +268,7 @@ def _scratch_dir(out: Path) -> Iterator[Path]:
     """A fresh scratch folder beside ``out``, removed on every exit path."""
     name = f".{out.name[:_NAME_KEEP]}.{SCRATCH_TAG}-{os.getpid()}-{secrets.token_hex(4)}"
     scratch = out.parent / name
-    with _sigterm_raises():
+    with sigterm_raises():
         try:
             scratch.mkdir(mode=0o700)
         except OSError as error:
@@ -546,13 +454,10 @@ def _exchange(new: Path, out: Path) -> None:
 __all__ = [
     "LEGACY_MARKER",
     "MARKER",
-    "Interrupted",
     "check_file",
     "check_folder",
     "deferred_signals",
     "foreign_entry",
-    "pause",
-    "raise_on_signals",
     "staged_collection",
     "staged_file",
     "staged_folder",

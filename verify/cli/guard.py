@@ -20,7 +20,7 @@ import sys
 from collections.abc import Callable
 from typing import Any
 
-from twoball.staging import raise_on_signals
+from twoball.signals import raise_on_signals
 
 EXIT_USAGE = 2
 EXIT_NUMERICAL = 3

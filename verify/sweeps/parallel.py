@@ -183,7 +183,7 @@ class Runner:
                 initializer=_worker_init,
                 initargs=(os.getpid(),),
             )
-            from twoball.staging import pause
+            from twoball.signals import pause
 
             try:
                 # start every worker now, before a progress bar starts its thread
@@ -285,7 +285,7 @@ class Runner:
 
 def _terminate(pool: ProcessPoolExecutor) -> None:
     """End the pool's workers now (SIGTERM, then SIGKILL after 2 s) and reap them."""
-    from twoball.staging import deferred_signals
+    from twoball.signals import deferred_signals
 
     with deferred_signals():
         processes = list((getattr(pool, "_processes", None) or {}).values())

@@ -1,0 +1,113 @@
+"""Signals: SIGINT and SIGTERM become an exception, held back while output is committed.
+
+:func:`raise_on_signals` turns both signals into :class:`Interrupted` (exit
+status 128 + signal number: 130, 143), so every ``finally`` runs and scratch is
+removed; :func:`deferred_signals` holds them back while a sequence of renames
+commits output (see :mod:`twoball.staging`) and raises afterwards.
+
+Testing hook: with ``TWOBALL_TEST_PAUSE=STAGE`` in the environment,
+:func:`pause` prints ``twoball-test-pause: STAGE`` on standard error at that
+stage and sleeps (up to 60 s) so a test can signal the process at a known
+point.  Only the standard library is imported.
+"""
+
+from __future__ import annotations
+
+import contextlib
+import os
+import signal
+import sys
+import threading
+import time
+from collections.abc import Iterator
+
+PAUSE_ENV = "TWOBALL_TEST_PAUSE"
+PAUSE_SECONDS = 60.0
+
+
+class Interrupted(KeyboardInterrupt):
+    """SIGINT or SIGTERM arrived; ``exit_status`` is 128 + the signal number (130, 143)."""
+
+    def __init__(self, signum: int) -> None:
+        self.signum = int(signum)
+        super().__init__(signal.Signals(self.signum).name)
+
+    @property
+    def exit_status(self) -> int:
+        """Conventional exit status of a process ended by this signal."""
+        return 128 + self.signum
+
+
+_HANDLED = (signal.SIGINT, signal.SIGTERM)
+_state = threading.local()
+_deferral = {"depth": 0, "pending": None}
+
+
+def _raise_interrupted(signum: int, frame: object) -> None:
+    if _deferral["depth"] > 0:  # inside a commit or clean-up: raise when it is over
+        _deferral["pending"] = signum
+        return
+    raise Interrupted(signum)
+
+
+@contextlib.contextmanager
+def raise_on_signals() -> Iterator[None]:
+    """While active, SIGINT and SIGTERM raise :class:`Interrupted` in the main thread.
+
+    Outside the main thread this does nothing (Python runs signal handlers
+    only there).  The previous handlers come back on exit.
+    """
+    if threading.current_thread() is not threading.main_thread():
+        yield
+        return
+    previous = {s: signal.getsignal(s) for s in _HANDLED}
+    for s in _HANDLED:
+        signal.signal(s, _raise_interrupted)
+    try:
+        yield
+    finally:
+        for s, handler in previous.items():
+            signal.signal(s, handler)
+
+
+@contextlib.contextmanager
+def sigterm_raises() -> Iterator[None]:
+    """Make SIGTERM raise (for API callers) unless someone already handles it."""
+    if (
+        threading.current_thread() is threading.main_thread()
+        and signal.getsignal(signal.SIGTERM) == signal.SIG_DFL
+    ):
+        with raise_on_signals():
+            yield
+    else:
+        yield
+
+
+@contextlib.contextmanager
+def deferred_signals() -> Iterator[None]:
+    """Hold SIGINT/SIGTERM back until the block ends, then raise :class:`Interrupted`.
+
+    Used around commits (a sequence of renames) and scratch clean-up so that a
+    signal can neither split a commit nor leave scratch behind.  Only signals
+    that reach :func:`raise_on_signals`' handler are held back.
+    """
+    _deferral["depth"] += 1
+    try:
+        yield
+    finally:
+        _deferral["depth"] -= 1
+        pending = _deferral["pending"]
+        if _deferral["depth"] == 0 and pending is not None:
+            _deferral["pending"] = None
+            raise Interrupted(pending)
+
+
+def pause(stage: str) -> None:
+    """Test hook: stop at ``stage`` if ``TWOBALL_TEST_PAUSE`` names it (see the module doc)."""
+    if os.environ.get(PAUSE_ENV) != stage:
+        return
+    sys.stderr.write(f"twoball-test-pause: {stage}\n")
+    sys.stderr.flush()
+    end = time.monotonic() + PAUSE_SECONDS
+    while time.monotonic() < end and _deferral["pending"] is None:
+        time.sleep(0.02)  # a signal's handler raises here (or is held back: then stop)
