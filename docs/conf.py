@@ -21,10 +21,15 @@ version = ".".join(release.split(".")[:2])
 extensions = [
     "sphinx.ext.autodoc",
     "sphinx.ext.mathjax",
+    # MathJax 3 copied into _static/mathjax: formulas render without a network
+    # (the default mathjax_path is a CDN).  It sets mathjax_path itself.
+    "sphinx-mathjax-offline",
+    "sphinxarg.ext",
+    "sphinx_gallery.gen_gallery",
     "numpydoc",
 ]
 
-exclude_patterns = ["_build", "Thumbs.db", ".DS_Store"]
+exclude_patterns = ["_build", "Thumbs.db", ".DS_Store", "auto_examples/*.ipynb"]
 root_doc = "index"
 
 # autodoc: document in source order; members come from ``:members:`` in api.rst.
@@ -40,4 +45,24 @@ html_theme = "pydata_sphinx_theme"
 html_title = f"twoball {release}"
 html_theme_options = {
     "navigation_with_keys": False,
+    # The navbar holds the sections of index.rst's toctree; the left sidebar
+    # ("Section Navigation") lists the pages of the current section.
+    "header_links_before_dropdown": 6,
+    "show_nav_level": 1,
+    "navigation_depth": 3,
+}
+
+# Examples gallery: every script in examples/ runs at build time and its
+# figures are regenerated; the output folder docs/auto_examples/ is generated
+# (git-ignored).
+sphinx_gallery_conf = {
+    "examples_dirs": str(ROOT / "examples"),
+    "gallery_dirs": "auto_examples",
+    "filename_pattern": r"/plot_",
+    "download_all_examples": False,
+    "abort_on_example_error": True,
+    "remove_config_comments": True,
+    "within_subsection_order": "FileNameSortKey",
+    "min_reported_time": 10**9,  # no wall-clock times on the pages
+    "write_computation_times": False,
 }
