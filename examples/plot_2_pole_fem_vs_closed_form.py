@@ -10,6 +10,7 @@ below differ only by the discretisation error of the finite elements.
 """
 
 # %%
+import matplotlib.pyplot as plt
 from twoball.modal.parameters import preset
 from twoball.verify.output.fields import ball_model
 from twoball.verify.output.figures.pole import pole_figure
@@ -28,5 +29,9 @@ print(f"relative difference of t_l: {abs(fem.t_liftoff_s / legendre.t_liftoff_s 
 # %%
 # Pole displacement, velocity and acceleration of both backends; the dots and
 # dashed lines mark each backend's lift-off, the dotted line in the velocity
-# panel is the body's free flight after it.
-pole_figure(model)
+# panel is the body's free flight after it.  The figure functions of
+# :mod:`twoball.verify.output.figures` return a pyplot-free
+# :class:`matplotlib.figure.Figure` (``save_figure`` writes it as PNG);
+# ``plt.figure`` adopts it so that ``plt.show`` displays it.
+plt.figure(pole_figure(model))
+plt.show()

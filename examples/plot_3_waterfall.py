@@ -11,9 +11,11 @@ angle.
 """
 
 # %%
+import matplotlib.pyplot as plt
 from twoball.modal.parameters import preset
 from twoball.verify.output.fields import ball_model
 from twoball.verify.output.figures.waterfall import waterfall_figure
 
 model = ball_model(preset("basketball"), level=3, order=2)
-waterfall_figure(model)
+plt.figure(waterfall_figure(model))  # adopt the pyplot-free Figure for plt.show
+plt.show()

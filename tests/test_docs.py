@@ -159,3 +159,14 @@ def test_cli_reference_lists_every_subcommand_and_option(html: Path) -> None:
         listed = set(re.findall(r"<kbd>(.*?)</kbd>", section))
         assert names <= listed, f"twoball {name}: not in the reference: {sorted(names - listed)}"
         assert listed <= names, f"twoball {name}: unknown options listed: {sorted(listed - names)}"
+
+
+def test_every_example_shows_a_figure_made_by_the_build(html: Path) -> None:
+    if not os.environ.get("TWOBALL_DOCS_HTML"):
+        pytest.skip("examples not executed in this build (plot_gallery=0)")
+    scripts = sorted((ROOT / "examples").glob("plot_*.py"))
+    assert len(scripts) >= 4
+    for script in scripts:
+        page = (html / "auto_examples" / f"{script.stem}.html").read_text(encoding="utf-8")
+        assert f"sphx_glr_{script.stem}_001.png" in page, f"{script.name} shows no figure"
+        assert (html / "_images" / f"sphx_glr_{script.stem}_001.png").is_file()
