@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import importlib.util
 import sys
 from pathlib import Path
 
@@ -21,9 +22,6 @@ version = ".".join(release.split(".")[:2])
 extensions = [
     "sphinx.ext.autodoc",
     "sphinx.ext.mathjax",
-    # MathJax 3 copied into _static/mathjax: formulas render without a network
-    # (the default mathjax_path is a CDN).  It sets mathjax_path itself.
-    "sphinx-mathjax-offline",
     "sphinxarg.ext",
     "sphinx_gallery.gen_gallery",
     "numpydoc",
@@ -40,6 +38,23 @@ autodoc_typehints = "signature"
 # would otherwise duplicate dataclass fields and properties.
 numpydoc_show_class_members = False
 numpydoc_class_members_toctree = False
+
+
+def _bundled_mathjax() -> Path:
+    """The folder holding ``mathjax/`` (MathJax 3) in the sphinx-mathjax-offline package."""
+    spec = importlib.util.find_spec("sphinx-mathjax-offline")  # its folder name has hyphens
+    if spec is None or spec.origin is None:
+        raise RuntimeError("the docs need the docs extra: pip install '.[docs]'")
+    return Path(spec.origin).parent / "static"
+
+
+# Formulas render without a network: MathJax is copied into _static/mathjax/
+# and loaded from there (Sphinx's default mathjax_path is a CDN).  The package
+# sphinx-mathjax-offline only supplies the files; its extension is not loaded
+# (it copies them after the build and declares no parallel safety, which
+# fails ``-W -j N``).
+html_static_path = [str(_bundled_mathjax())]
+mathjax_path = "mathjax/tex-chtml.js"
 
 html_theme = "pydata_sphinx_theme"
 html_title = f"twoball {release}"
