@@ -27,7 +27,7 @@ extensions = [
     "numpydoc",
 ]
 
-exclude_patterns = ["_build", "Thumbs.db", ".DS_Store", "auto_examples/*.ipynb"]
+exclude_patterns = ["_build", "Thumbs.db", ".DS_Store"]
 root_doc = "index"
 
 # autodoc: document in source order; members come from ``:members:`` in api.rst.
