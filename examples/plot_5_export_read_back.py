@@ -10,6 +10,7 @@ not from memory.
 """
 
 # %%
+import shutil
 import tempfile
 from pathlib import Path
 
@@ -53,3 +54,4 @@ bottom.plot(phi, 1e6 * back.point_data["u_diff"][frame], ".", markersize=3)
 bottom.set_ylabel("u_fem - u_legendre [µm]")
 bottom.set_xlabel("polar angle φ [rad] (0 at the upper body)")
 plt.show()
+shutil.rmtree(folder)  # the files were only needed for the round trip

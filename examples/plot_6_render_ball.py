@@ -9,6 +9,7 @@ is magnified for visibility; the factor is printed in each picture.
 """
 
 # %%
+import shutil
 import tempfile
 from pathlib import Path
 
@@ -37,3 +38,4 @@ for ax, (title, path) in zip(axes, pictures.items(), strict=True):
     ax.set_title(title)
     ax.set_axis_off()
 plt.show()
+shutil.rmtree(folder)  # the pictures are in the figure now
