@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import importlib.util
 import sys
 from pathlib import Path
 
@@ -21,6 +22,8 @@ version = ".".join(release.split(".")[:2])
 extensions = [
     "sphinx.ext.autodoc",
     "sphinx.ext.mathjax",
+    "sphinxarg.ext",
+    "sphinx_gallery.gen_gallery",
     "numpydoc",
 ]
 
@@ -36,8 +39,45 @@ autodoc_typehints = "signature"
 numpydoc_show_class_members = False
 numpydoc_class_members_toctree = False
 
+
+def _bundled_mathjax() -> Path:
+    """The folder holding ``mathjax/`` (MathJax 3) in the sphinx-mathjax-offline package."""
+    spec = importlib.util.find_spec("sphinx-mathjax-offline")  # its folder name has hyphens
+    if spec is None or spec.origin is None:
+        raise RuntimeError("the docs need the docs extra: pip install '.[docs]'")
+    return Path(spec.origin).parent / "static"
+
+
+# Formulas render without a network: MathJax is copied into _static/mathjax/
+# and loaded from there (Sphinx's default mathjax_path is a CDN).  The package
+# sphinx-mathjax-offline only supplies the files; its extension is not loaded
+# (it copies them after the build and declares no parallel safety, which
+# fails ``-W -j N``).
+html_static_path = [str(_bundled_mathjax())]
+mathjax_path = "mathjax/tex-chtml.js"
+
 html_theme = "pydata_sphinx_theme"
 html_title = f"twoball {release}"
 html_theme_options = {
     "navigation_with_keys": False,
+    # The navbar holds the sections of index.rst's toctree; the left sidebar
+    # ("Section Navigation") lists the pages of the current section.
+    "header_links_before_dropdown": 6,
+    "show_nav_level": 1,
+    "navigation_depth": 3,
+}
+
+# Examples gallery: every script in examples/ runs at build time and its
+# figures are regenerated; the output folder docs/auto_examples/ is generated
+# (git-ignored).
+sphinx_gallery_conf = {
+    "examples_dirs": str(ROOT / "examples"),
+    "gallery_dirs": "auto_examples",
+    "filename_pattern": r"/plot_",
+    "download_all_examples": False,
+    "abort_on_example_error": True,
+    "remove_config_comments": True,
+    "within_subsection_order": "FileNameSortKey",
+    "min_reported_time": 10**9,  # no wall-clock times on the pages
+    "write_computation_times": False,
 }

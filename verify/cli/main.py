@@ -99,6 +99,11 @@ def build_parser(chosen: str | None = None) -> argparse.ArgumentParser:
     return parser
 
 
+def full_parser() -> argparse.ArgumentParser:
+    """The parser with every subcommand's options (for the generated CLI reference)."""
+    return build_parser("*")
+
+
 def chosen_command(argv: Sequence[str]) -> str | None:
     """The subcommand named in ``argv`` (its first word that is not an option), if any."""
     for word in argv:
