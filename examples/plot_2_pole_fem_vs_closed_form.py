@@ -11,11 +11,12 @@ below differ only by the discretisation error of the finite elements.
 
 # %%
 import matplotlib.pyplot as plt
-from twoball.modal.parameters import preset
 from twoball.verify.output.fields import ball_model
 from twoball.verify.output.figures.pole import pole_figure
 
-case = preset("basketball")
+import twoball
+
+case = twoball.Case.preset("basketball")
 model = ball_model(case, level=3, order=2)
 
 for name, backend in model.backends.items():

@@ -12,10 +12,11 @@ angle.
 
 # %%
 import matplotlib.pyplot as plt
-from twoball.modal.parameters import preset
 from twoball.verify.output.fields import ball_model
 from twoball.verify.output.figures.waterfall import waterfall_figure
 
-model = ball_model(preset("basketball"), level=3, order=2)
+import twoball
+
+model = ball_model(twoball.Case.preset("basketball"), level=3, order=2)
 plt.figure(waterfall_figure(model))  # adopt the pyplot-free Figure for plt.show
 plt.show()

@@ -17,10 +17,11 @@ from pathlib import Path
 import matplotlib.pyplot as plt
 import numpy as np
 from twoball.fem_membrane.export import read_series, write_series
-from twoball.modal.parameters import preset
 from twoball.verify.output.fields import ball_model, field_series, frame_times
 
-case = preset("basketball")
+import twoball
+
+case = twoball.Case.preset("basketball")
 model = ball_model(case, level=2, order=2)
 series = field_series(model, frame_times(model, frames=6))
 

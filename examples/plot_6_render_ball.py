@@ -16,10 +16,11 @@ from pathlib import Path
 import matplotlib.image as mpimg
 import matplotlib.pyplot as plt
 from twoball.fem_membrane.render import render_scene
-from twoball.modal.parameters import preset
 from twoball.verify.output.fields import ball_model, ball_scene, liftoff_frame
 
-model = ball_model(preset("basketball"), level=3, order=2, backends=("fem",))
+import twoball
+
+model = ball_model(twoball.Case.preset("basketball"), level=3, order=2, backends=("fem",))
 folder = Path(tempfile.mkdtemp())
 
 # %%
