@@ -33,7 +33,7 @@ def build_space(
         Refinement level >= 0 of the sphere meshes (``--level``; default 3).
     elements : int, optional
         Elements >= 2 of the axisymmetric mesh (``--elements``; default 400).
-    order : {1, 2}
+    order : {1, 2, 3, 4}
         Element (and geometry) order (``--order``).
     phi_a : float
         Contact angle [rad] in (pi/2, pi).

@@ -221,8 +221,8 @@ def fem_pole_motion(
         Sphere refinement level >= 0 (``--level``, default 3).
     elements : int, optional
         Axisymmetric elements >= 2 (``--elements``, default 400).
-    order : {1, 2}
-        P1 on flat triangles or isoparametric P2 (``--order``).
+    order : {1, 2, 3, 4}
+        P1 on flat triangles or isoparametric P2, P3, P4 (``--order``).
     time : {"modal", "alpha"}
         Modal superposition or generalized-alpha stepping (``--time``).
     route : {"auto", "full", "krylov"}

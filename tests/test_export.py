@@ -315,7 +315,7 @@ def test_cli_export_times_and_vtu(tmp_path, capsys):
         (["--times", "-0.001"], "--times"),
         (["--times", "1.5"], "--times"),
         (["--level", "-1"], "--level"),
-        (["--order", "3"], "--order"),
+        (["--order", "5"], "--order"),
         (["--mesh", "cube"], "--mesh"),
         (["--backend", "abaqus"], "--backend"),
         (["--initial", "guess"], "--initial"),
