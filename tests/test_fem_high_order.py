@@ -20,7 +20,7 @@ from skfem import ElementTriP3, ElementTriP4
 from twoball.fem_membrane.axisym import axisym_space
 from twoball.fem_membrane.eigen import eigenpairs, lowest_eigenpairs
 from twoball.fem_membrane.initial import initial_load
-from twoball.fem_membrane.mesh import _edges, icosphere, ring_sphere
+from twoball.fem_membrane.mesh import _edges, icosphere, locate_pole, ring_sphere, shape_functions
 from twoball.fem_membrane.solve import modal_model
 from twoball.fem_membrane.space import dof_nodes, sphere_space
 from twoball.modal.filters import SpectralFilter
@@ -249,3 +249,43 @@ def test_sphere_liftoff_at_level_3_is_closer_to_legendre_at_higher_order():
         )
     assert diffs[3][0] < diffs[2][0] / 10 and np.all(diffs[3] < 1e-4)
     assert np.all(diffs[4] < diffs[2] / 50) and np.all(diffs[4] < 1e-6)
+
+
+@pytest.mark.parametrize("order", [3, 4])
+def test_generalized_alpha_matches_the_modal_series_at_order_2_in_dt(order):
+    """The time-stepping route on P3/P4 (axisymmetric, 30 elements) against modal superposition."""
+    from twoball.fem_membrane.solve import alpha_motion
+
+    model = modal_model(PHI_A, DAMPING, FILTER, mesh="axisym", order=order, elements=30)
+    differences = []
+    for steps in (500, 1000, 2000):
+        motion, _ = alpha_motion(model, dt=2 * np.pi / steps, t_end=2 * np.pi)
+        exact = model.series.pole(motion.times)
+        sampled = motion.pole(motion.times)
+        differences.append([np.abs(a - b).max() for a, b in zip(sampled, exact, strict=True)])
+    observed = rates(np.array(differences))
+    assert np.all(np.abs(observed - 2.0) < 0.2), observed
+
+
+@pytest.mark.parametrize("order", [3, 4])
+def test_file_mesh_raised_to_order_p_and_the_pole_inside_an_element(order):
+    """A P1 mesh given as data, raised to P3/P4: the generated mesh's space; then a tilted pole."""
+    import meshio
+    from twoball.fem_membrane.mesh_input import load_sphere_mesh
+
+    generated = icosphere(2)
+    data = meshio.Mesh(2.5 * generated.points + 1.0, [("triangle", generated.cells)])
+    loaded = load_sphere_mesh(data, order=order)
+    assert loaded.source_order == 1 and loaded.mesh.order == order
+    area = sphere_space(loaded.mesh).mass.sum()
+    assert area == pytest.approx(sphere_space(icosphere(2, order)).mass.sum(), rel=1e-13)
+    tilted = load_sphere_mesh(data, order=order, pole=(0.3, -0.2, 1.0))
+    assert not tilted.pole_at_node
+    space = sphere_space(tilted.mesh)
+    row = space.pole_row
+    assert row.nnz == (order + 1) * (order + 2) // 2 and row.sum() == pytest.approx(1.0, abs=1e-13)
+    element, xi = locate_pole(tilted.mesh)
+    values, _ = shape_functions(order, xi)
+    point = values @ tilted.mesh.points[tilted.mesh.cells[element]]
+    assert np.abs(point[:2]).max() < 1e-13 and point[2] > 0.99  # on the +z axis
+    assert row @ space.basis.doflocs[2] == pytest.approx(point[2], abs=1e-13)
