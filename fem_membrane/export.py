@@ -81,6 +81,9 @@ class TimeSeries:
         times = np.atleast_1d(np.asarray(self.times, dtype=float))
         if points.ndim != 2 or points.shape[1] != 3:
             raise ValueError("points must have shape (P, 3)")
+        if cells.ndim == 2 and cells.shape[1] in (10, 15):  # P3/P4: no shared node order
+            order = 3 if cells.shape[1] == 10 else 4
+            raise ParameterError("--order", "1 or 2 for field files and pictures", order)
         if cells.ndim != 2 or cells.shape[1] not in CELL_TYPES:
             raise ValueError("cells must have shape (T, 3) or (T, 6)")
         if times.ndim != 1 or times.size < 1 or np.any(np.diff(times) <= 0):

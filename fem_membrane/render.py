@@ -184,6 +184,9 @@ def surface_triangles(cells: np.ndarray) -> np.ndarray:
     cells = np.asarray(cells, dtype=np.int64)
     if cells.shape[1] == 3:
         return cells
+    if cells.shape[1] != 6:  # P3/P4 cells: not drawn (refused, not mis-split)
+        order = {10: 3, 15: 4}.get(cells.shape[1], cells.shape[1])
+        raise ParameterError("--order", "1 or 2 for field files and pictures", order)
     a, b, c, ab, bc, ca = cells.T
     return np.vstack(
         [

@@ -289,3 +289,21 @@ def test_file_mesh_raised_to_order_p_and_the_pole_inside_an_element(order):
     point = values @ tilted.mesh.points[tilted.mesh.cells[element]]
     assert np.abs(point[:2]).max() < 1e-13 and point[2] > 0.99  # on the +z axis
     assert row @ space.basis.doflocs[2] == pytest.approx(point[2], abs=1e-13)
+
+
+@pytest.mark.parametrize(
+    "argv",
+    [
+        ["export", "--level", "1", "--order", "3", "--out", "{tmp}/series.xdmf"],
+        ["render", "--level", "1", "--order", "4", "--out", "{tmp}/ball.png"],
+    ],
+)
+def test_field_files_and_pictures_refuse_p3_p4_in_one_line(tmp_path, capsys, argv):
+    """No node order for 10/15-node triangles is shared by the writers: refused, exit 2."""
+    from twoball.verify.cli.main import main
+
+    with pytest.raises(SystemExit) as stop:
+        main([part.format(tmp=tmp_path) for part in argv])
+    err = capsys.readouterr().err
+    assert stop.value.code == 2
+    assert len(err.strip().splitlines()) == 1 and "--order" in err and "Traceback" not in err
