@@ -20,13 +20,59 @@ import math
 
 import numpy as np
 from skfem import CellBasis, ElementLineP1, ElementLineP2, MeshLine1, asm
+from skfem.element import ElementH1
+from skfem.refdom import RefLine
 from twoball.modal.initial import _check_phi_a
 
 from .checks import check_elements, check_order
 from .forms import AZIMUTH, axisym_mass, axisym_stiffness
 from .space import Discretisation, line_polar_cosine
 
-LINE_ELEMENTS = {1: ElementLineP1, 2: ElementLineP2}
+
+class ElementLineLagrange(ElementH1):
+    """Lagrange line element of order p with equispaced nodes (scikit-fem style).
+
+    Local nodes: the two vertices 0 and 1 of the reference line, then the
+    interior nodes ``k / p`` (k = 1 .. p - 1) in increasing order.  scikit-fem's
+    own ``ElementLinePp`` is hierarchical (integrated Legendre polynomials)
+    and has no node locations, so nodal interpolation and ``doflocs`` need
+    this one for p = 3, 4.  On a line each element owns its interior nodes,
+    so no orientation question arises.
+    """
+
+    nodal_dofs = 1
+    refdom = RefLine
+
+    def __init__(self, p: int) -> None:
+        self.p = int(p)
+        self.interior_dofs = self.p - 1
+        self.maxdeg = self.p
+        self.dofnames = ["u"] * self.p
+        nodes = np.concatenate([[0.0, 1.0], np.arange(1, self.p) / self.p])
+        self.doflocs = nodes[:, None]
+        self._nodes = nodes
+
+    def lbasis(self, X: np.ndarray, i: int) -> tuple[np.ndarray, np.ndarray]:
+        """Value and derivative of the i-th Lagrange polynomial at reference points X (1, Q)."""
+        if not 0 <= i < self.p + 1:
+            self._index_error()
+        x = X[0]
+        others = np.delete(self._nodes, i)
+        scale = np.prod(self._nodes[i] - others)
+        factors = x[None, :] - others[:, None]  # (p, Q)
+        phi = np.prod(factors, axis=0) / scale
+        dphi = np.zeros_like(x)
+        for k in range(others.size):
+            dphi = dphi + np.prod(np.delete(factors, k, axis=0), axis=0)
+        return phi, np.array([dphi / scale])
+
+
+LINE_ELEMENTS = {
+    1: ElementLineP1,
+    2: ElementLineP2,
+    3: lambda: ElementLineLagrange(3),
+    4: lambda: ElementLineLagrange(4),
+}
 
 
 def axisym_nodes(elements: int, phi_a: float) -> np.ndarray:
@@ -52,7 +98,11 @@ def axisym_mesh(elements: int, phi_a: float) -> MeshLine1:
 
 
 def axisym_space(elements: int, phi_a: float, order: int = 2) -> Discretisation:
-    """Axisymmetric P1/P2 space of eq. (3.9) with whole-sphere K and M (dimensionless).
+    """Axisymmetric P1 to P4 space of eq. (3.9) with whole-sphere K and M (dimensionless).
+
+    The line is straight (no geometric error); the forms' weight ``1 - x^2``
+    is a polynomial, so Gauss quadrature of degree ``2 p + 2`` integrates K and
+    M exactly.
 
     Parameters
     ----------
@@ -60,8 +110,8 @@ def axisym_space(elements: int, phi_a: float, order: int = 2) -> Discretisation:
         Number of line elements E >= 2 (``--elements``).
     phi_a : float
         Contact angle [rad] in (pi/2, pi); a vertex is put at x = cos(phi_a).
-    order : {1, 2}
-        Polynomial order (``--order``).
+    order : {1, 2, 3, 4}
+        Polynomial order (``--order``); P3, P4: :class:`ElementLineLagrange`.
 
     Returns
     -------

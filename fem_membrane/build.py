@@ -36,7 +36,7 @@ def build_space(
         Refinement level >= 0 of the generated sphere meshes (default 3).
     elements : int, optional
         Elements >= 2 of the axisymmetric mesh (default 400).
-    order : {1, 2}, optional
+    order : {1, 2, 3, 4}, optional
         Element (and geometry) order; None for a SphereMesh: its own.
     phi_a : float
         Contact angle [rad] in (pi/2, pi).

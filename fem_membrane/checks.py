@@ -11,7 +11,8 @@ from numbers import Integral, Real
 
 from twoball.modal.errors import ParameterError
 
-ORDERS: tuple[int, ...] = (1, 2)
+ORDERS: tuple[int, ...] = (1, 2, 3, 4)
+ORDER_RANGE = "1, 2, 3 or 4"
 MESH_KINDS: tuple[str, ...] = ("sphere", "ring", "axisym")
 TIME_SCHEMES: tuple[str, ...] = ("modal", "alpha")
 DAMPING_MODELS: tuple[str, ...] = ("modal", "rayleigh")
@@ -30,9 +31,9 @@ def check_level(level: object) -> int:
 
 
 def check_order(order: object) -> int:
-    """Polynomial order of elements and geometry: 1 or 2 (``--order``)."""
+    """Polynomial order of elements and geometry: 1, 2, 3 or 4 (``--order``)."""
     if not _is_int(order) or int(order) not in ORDERS:
-        raise ParameterError("order", "1 or 2", order)
+        raise ParameterError("order", ORDER_RANGE, order)
     return int(order)
 
 

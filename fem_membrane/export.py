@@ -88,6 +88,9 @@ class TimeSeries:
         times = np.atleast_1d(np.asarray(self.times, dtype=float))
         if points.ndim != 2 or points.shape[1] != 3:
             raise ValueError("points must have shape (P, 3)")
+        if cells.ndim == 2 and cells.shape[1] in (10, 15):  # P3/P4: no shared node order
+            order = 3 if cells.shape[1] == 10 else 4
+            raise ParameterError("order", "1 or 2 for field files and pictures", order)
         if cells.ndim != 2 or cells.shape[1] not in CELL_TYPES:
             raise ValueError("cells must have shape (T, 3) or (T, 6)")
         if times.ndim != 1 or times.size < 1 or np.any(np.diff(times) <= 0):
@@ -142,16 +145,14 @@ def series_format(path: str | os.PathLike[str], fmt: str | None = None) -> str:
     suffix = Path(path).suffix.lower()
     if fmt is not None:
         if fmt not in FORMATS:
-            raise ParameterError("--format", "one of " + ", ".join(FORMATS), fmt)
+            raise ParameterError("format", "one of " + ", ".join(FORMATS), fmt)
         if suffix != SUFFIXES[fmt]:
-            raise ParameterError("--out", f"a file name ending in {SUFFIXES[fmt]}", str(path))
+            raise ParameterError("out", f"a file name ending in {SUFFIXES[fmt]}", str(path))
         return fmt
     for name, ending in SUFFIXES.items():
         if suffix == ending:
             return name
-    raise ParameterError(
-        "--out", "a file name ending in " + ", ".join(SUFFIXES.values()), str(path)
-    )
+    raise ParameterError("out", "a file name ending in " + ", ".join(SUFFIXES.values()), str(path))
 
 
 # --------------------------------------------------------------------------- VTU
@@ -353,7 +354,7 @@ def write_series(
     fmt = series_format(path, fmt)
     if fmt == "vtu":
         if len(series) != 1:
-            raise ParameterError("--times", "exactly one time for a single .vtu file", len(series))
+            raise ParameterError("times", "exactly one time for a single .vtu file", len(series))
         return write_vtu(path, series, 0)
     return WRITERS[fmt](path, series)
 

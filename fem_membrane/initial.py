@@ -9,6 +9,12 @@ lines) on every element the kink may touch, and with an ordinary Gauss rule
 elsewhere.  On the sphere F is evaluated at the radial projection of each
 quadrature point onto the unit sphere (``cos(phi) = z / |x|``).  Nodal interpolation
 is offered as an alternative.  Dimensionless.
+
+Orders 3 and 4: the smooth rule has degree ``2 p + 4`` (10, 12), the
+composite rule on cut elements the same degree on each of the ``4**s``
+sub-triangles; the partial bases share the space's degree-of-freedom
+numbering (``dofs=basis.dofs``: P3/P4 edge numbering is orientation-corrected,
+see :func:`twoball.fem_membrane.space.oriented_dofs`).
 """
 
 from __future__ import annotations
@@ -106,7 +112,9 @@ def initial_load(
     for elements, rule in rules:
         if elements.size == 0:
             continue
-        part = CellBasis(mesh, elem, mapping=mapping, quadrature=rule, elements=elements)
+        part = CellBasis(
+            mesh, elem, mapping=mapping, quadrature=rule, elements=elements, dofs=basis.dofs
+        )
         x = np.asarray(part.global_coordinates())
         f = space.measure * initial_displacement_x(space.polar_cosine(x), phi_a)
         load += _load.assemble(part, f=f)

@@ -9,8 +9,12 @@ surface the Jacobian ``J = dx/dxi`` is 3 x 2; with the metric ``G = J^T J``
 
 so skfem's ``grad`` becomes the surface gradient and ``dot(grad(u), grad(v))``
 the Laplace-Beltrami form (the weak form of eq. (3.9) on the sphere).  The
-geometry is Lagrange-interpolated from nodes: P1 (flat triangles) or P2 (curved,
-isoparametric when the P2 element is used).  Dimensionless.
+geometry is Lagrange-interpolated from nodes: P1 (flat triangles) or P2, P3, P4
+(curved, isoparametric when the element of the same order is used): the map of
+order p is ``x(xi) = sum_k x_k phi_k(xi)`` over the element's geometry nodes
+``x_k`` and the reference Lagrange basis ``phi_k`` of scikit-fem's
+``ElementTriP{p}``, and ``J`` is the same sum over the basis gradients.
+Dimensionless.
 """
 
 from __future__ import annotations
@@ -30,7 +34,7 @@ class SurfaceMapping(Mapping):
     element_nodes : ndarray, shape (n_local, T)
         Geometry node indices per element, in the local order of ``elem``.
     elem : skfem Element
-        Lagrange element of the geometry (``ElementTriP1`` or ``ElementTriP2``).
+        Lagrange element of the geometry (``ElementTriP1`` to ``ElementTriP4``).
 
     Notes
     -----

@@ -1,10 +1,11 @@
-"""Triangulations of the unit sphere: icosphere and a latitude-ring sphere, P1 or curved P2.
+"""Triangulations of the unit sphere: icosphere and a latitude-ring sphere, order 1 to 4.
 
 All meshes have a vertex exactly at the north pole (0, 0, 1) -- the point whose
 motion decides lift-off -- and outward-oriented triangles (counter-clockwise seen
-from outside).  Every vertex and every P2 edge node lies on the unit sphere, so a
-P1 mesh is an inscribed polyhedron and a P2 mesh an isoparametric curved surface.
-Lengths are dimensionless (unit R).
+from outside).  Every vertex and every higher-order node lies on the unit sphere,
+so a P1 mesh is an inscribed polyhedron and a P2, P3 or P4 mesh an isoparametric
+curved surface (nodes: the equispaced points of the flat triangle, projected
+radially; see :func:`elevate`).  Lengths are dimensionless (unit R).
 
 Two families:
 
@@ -35,6 +36,8 @@ from .checks import check_level, check_order
 
 POLE = np.array([0.0, 0.0, 1.0])
 _POLE_TOLERANCE = 1e-12
+NODES_PER_TRIANGLE = {p: (p + 1) * (p + 2) // 2 for p in (1, 2, 3, 4)}
+ORDER_OF_NODES = {n: p for p, n in NODES_PER_TRIANGLE.items()}
 
 
 @dataclass(frozen=True)
@@ -45,12 +48,15 @@ class SphereMesh:
     ----------
     points : ndarray, shape (P, 3)
         Node coordinates; the first ``vertex_count`` rows are the triangle
-        vertices, the rest (order 2 only) the edge nodes.
-    cells : ndarray, shape (T, 3) or (T, 6)
-        Node indices per triangle, counter-clockwise seen from outside.  Six
-        columns (order 2) follow the meshio/VTK ``triangle6`` order: vertices
-        0, 1, 2, then the nodes on edges 01, 12, 20 (the local order of
-        scikit-fem's ``ElementTriP2``).
+        vertices, then the edge nodes (``p - 1`` per edge, numbered from the
+        edge's lower vertex index), then the interior nodes (orders 3, 4).
+    cells : ndarray, shape (T, (p + 1)(p + 2) / 2): 3, 6, 10 or 15 columns
+        Node indices per triangle, counter-clockwise seen from outside, in the
+        local order of scikit-fem's ``ElementTriP{p}``: vertices 0, 1, 2, then
+        the ``p - 1`` nodes of edge 01 (from vertex 0), of edge 12 (from vertex
+        1), of edge 02 (from vertex 0), then the interior nodes.  Six columns
+        (order 2) are also the meshio/VTK ``triangle6`` order (edges 01, 12, 20:
+        a single midpoint per edge has no direction).
     name : str
         Human-readable description, e.g. ``"icosphere level 3"``.
     ring : float or None
@@ -67,15 +73,15 @@ class SphereMesh:
         cells = np.ascontiguousarray(self.cells, dtype=np.int64)
         if points.ndim != 2 or points.shape[1] != 3:
             raise ValueError("points must have shape (P, 3)")
-        if cells.ndim != 2 or cells.shape[1] not in (3, 6):
-            raise ValueError("cells must have shape (T, 3) or (T, 6)")
+        if cells.ndim != 2 or cells.shape[1] not in NODES_PER_TRIANGLE.values():
+            raise ValueError("cells must have shape (T, 3), (T, 6), (T, 10) or (T, 15)")
         object.__setattr__(self, "points", points)
         object.__setattr__(self, "cells", cells)
 
     @property
     def order(self) -> int:
-        """Geometric order: 1 (flat triangles) or 2 (curved six-node triangles)."""
-        return 1 if self.cells.shape[1] == 3 else 2
+        """Geometric order p: 1 (flat triangles) to 4 (curved 15-node triangles)."""
+        return ORDER_OF_NODES[self.cells.shape[1]]
 
     @property
     def triangles(self) -> np.ndarray:
@@ -105,7 +111,7 @@ class SphereMesh:
 
     @property
     def pole_node(self) -> int | None:
-        """Index of the node (vertex or P2 edge node) at the north pole, or None."""
+        """Index of the node (vertex, edge or interior node) at the north pole, or None."""
         index = int(np.argmax(self.points[:, 2]))
         if np.linalg.norm(self.points[index] - POLE) > _POLE_TOLERANCE:
             return None
@@ -195,8 +201,9 @@ def icosphere(level: int, order: int = 1) -> SphereMesh:
     ----------
     level : int
         Number of four-fold refinements, >= 0 (``--level``).
-    order : {1, 2}
-        1: flat triangles; 2: six-node triangles with edge nodes on the sphere.
+    order : {1, 2, 3, 4}
+        1: flat triangles; 2, 3, 4: curved isoparametric triangles of that
+        order with every node on the sphere (:func:`elevate`).
 
     Returns
     -------
@@ -209,7 +216,7 @@ def icosphere(level: int, order: int = 1) -> SphereMesh:
     for _ in range(level):
         points, triangles = refine(points, triangles)
     mesh = SphereMesh(points, triangles, f"icosphere level {level}")
-    return elevate(mesh) if order == 2 else mesh
+    return elevate(mesh, order) if order > 1 else mesh
 
 
 def ring_rows(level: int) -> int:
@@ -235,9 +242,9 @@ def ring_sphere(level: int, phi_a: float, order: int = 1) -> SphereMesh:
     the mesh is an octahedron refined row by row (shape-regular up to the poles,
     unlike a latitude-longitude grid).  The rows are equally spaced in polar
     angle on each side of ``phi_a``, which is itself a row: the kink of
-    eq. (3.10) lies on element edges.  For ``order=2`` the nodes of edges on the
-    ring are placed on the ring (not projected radially), so the curved edges
-    stay in the plane ``z = cos(phi_a)``.
+    eq. (3.10) lies on element edges.  For ``order >= 2`` the nodes of edges on
+    the ring are placed on the ring (not projected radially), so the curved
+    edges stay in the plane ``z = cos(phi_a)``.
 
     Parameters
     ----------
@@ -245,7 +252,7 @@ def ring_sphere(level: int, phi_a: float, order: int = 1) -> SphereMesh:
         Size parameter >= 0 (``--level``); n = ``ring_rows(level)`` rows per hemisphere.
     phi_a : float
         Polar angle of the ring [rad], in (0, pi).
-    order : {1, 2}
+    order : {1, 2, 3, 4}
         Geometric order.
 
     Returns
@@ -299,29 +306,98 @@ def ring_sphere(level: int, phi_a: float, order: int = 1) -> SphereMesh:
             )
     triangles = orient_outward(points, np.vstack(triangles))
     mesh = SphereMesh(points, triangles, f"ring sphere level {level} (n={rows})", float(phi_a))
-    return elevate(mesh) if order == 2 else mesh
+    return elevate(mesh, order) if order > 1 else mesh
 
 
-def elevate(mesh: SphereMesh) -> SphereMesh:
-    """The curved (order 2) version of a flat mesh: one node per edge, on the sphere.
+def interior_weights(order: int) -> np.ndarray:
+    """Barycentric weights (times ``order``) of the interior nodes, shape (n, 3).
 
-    Edge nodes are the radial projections of the edge midpoints, except on the
-    ring (``mesh.ring``), where they are put on the circle of latitude.
+    In the local order of scikit-fem's ``ElementTriP3`` (the centroid) and
+    ``ElementTriP4`` (reference points (1/4, 1/4), (1/2, 1/4), (1/4, 1/2)); the
+    columns weigh vertices 0, 1, 2.
     """
-    if mesh.order == 2:
-        return mesh
-    points, triangles = mesh.points, mesh.triangles
-    edges, local = _edges(triangles)
+    return {
+        1: np.zeros((0, 3)),
+        2: np.zeros((0, 3)),
+        3: np.array([[1.0, 1.0, 1.0]]),
+        4: np.array([[2.0, 1.0, 1.0], [1.0, 2.0, 1.0], [1.0, 1.0, 2.0]]),
+    }[order]
+
+
+def _edge_nodes(mesh: SphereMesh, edges: np.ndarray, order: int) -> np.ndarray:
+    """The ``order - 1`` nodes of each edge, from its lower vertex, shape (E, order - 1, 3).
+
+    Node k (1 .. order - 1) is the point ``((order - k) a + k b) / order`` of the
+    chord from a to b, projected radially onto the sphere; on the ring
+    (``mesh.ring``) it is instead projected onto the circle of latitude within
+    its plane, so that ring edges stay in the plane ``z = cos(ring)``.
+    """
+    points = mesh.points
     a, b = points[edges[:, 0]], points[edges[:, 1]]
-    middle = _normalise(a + b)
+    on_ring = np.zeros(len(edges), dtype=bool)
     if mesh.ring is not None:
         height = math.cos(mesh.ring)
         on_ring = (np.abs(a[:, 2] - height) < 1e-12) & (np.abs(b[:, 2] - height) < 1e-12)
-        planar = a[on_ring, :2] + b[on_ring, :2]
-        planar *= math.sin(mesh.ring) / np.linalg.norm(planar, axis=1, keepdims=True)
-        middle[on_ring] = np.column_stack([planar, np.full(len(planar), height)])
-    cells = np.hstack([triangles, local + len(points)])
-    return replace(mesh, points=np.vstack([points, middle]), cells=cells)
+    out = np.empty((len(edges), order - 1, 3))
+    for k in range(1, order):
+        chord = (order - k) * a + k * b  # order 2: a + b, as before (bit-identical)
+        node = _normalise(chord)
+        if on_ring.any():
+            planar = chord[on_ring, :2]
+            planar *= math.sin(mesh.ring) / np.linalg.norm(planar, axis=1, keepdims=True)
+            node[on_ring] = np.column_stack([planar, np.full(len(planar), height)])
+        out[:, k - 1] = node
+    return out
+
+
+def elevate(mesh: SphereMesh, order: int = 2) -> SphereMesh:
+    """The curved mesh of geometric ``order`` (2, 3 or 4) on the vertices of ``mesh``.
+
+    Only the vertices and triangles of ``mesh`` are used (nodes of a curved
+    mesh are rebuilt).  The new nodes are the equispaced points of each flat
+    triangle (barycentric coordinates ``i / order``), projected radially onto
+    the unit sphere; edge nodes of the ring (``mesh.ring``) are put on the
+    circle of latitude instead (see :func:`_edge_nodes`).  Each edge's nodes are
+    stored once, from its lower vertex index, and every triangle lists them in
+    its own direction (the local order of scikit-fem's ``ElementTriP{order}``),
+    so neighbours traversing a shared edge in opposite directions see the same
+    nodes.  Dimensionless.
+
+    Parameters
+    ----------
+    mesh : SphereMesh
+        Any order.
+    order : {1, 2, 3, 4}
+        Target order; 1 returns the flat mesh (:func:`flatten`).
+    """
+    order = check_order(order)
+    if mesh.order == order:
+        return mesh
+    if order == 1:
+        return flatten(mesh)
+    flat = flatten(mesh)
+    points, triangles = flat.points, flat.triangles
+    count = len(points)
+    edges, local = _edges(triangles)  # local columns: edges 01, 12, 20
+    per_edge = order - 1
+    edge_points = _edge_nodes(flat, edges, order).reshape(-1, 3)
+    # per triangle and local edge (a, b): its nodes from a to b
+    columns = [triangles]
+    for j, (a, b) in enumerate(((0, 1), (1, 2), (0, 2))):
+        first = count + local[:, j] * per_edge
+        ks = np.arange(per_edge)
+        forward = triangles[:, a] < triangles[:, b]
+        index = np.where(forward[:, None], ks[None, :], per_edge - 1 - ks[None, :])
+        columns.append(first[:, None] + index)
+    weights = interior_weights(order)
+    inner = np.zeros((0, 3))
+    if len(weights):
+        corners = points[triangles]  # (T, 3, 3)
+        inner = _normalise(np.einsum("nv,tvk->tnk", weights, corners).reshape(-1, 3))
+        start = count + len(edge_points)
+        columns.append(start + np.arange(len(triangles) * len(weights)).reshape(len(triangles), -1))
+    cells = np.hstack(columns)
+    return replace(mesh, points=np.vstack([points, edge_points, inner]), cells=cells)
 
 
 def flatten(mesh: SphereMesh) -> SphereMesh:
@@ -343,25 +419,37 @@ def shape_functions(order: int, xi: np.ndarray) -> tuple[np.ndarray, np.ndarray]
     """Lagrange shape functions of the geometry at a reference point.
 
     The reference triangle is scikit-fem's, with vertices (0, 0), (1, 0), (0, 1);
-    local nodes follow :attr:`SphereMesh.cells` (vertices, then edges 01, 12, 20).
+    local nodes follow :attr:`SphereMesh.cells` (scikit-fem's ``ElementTriP{p}``
+    order).  Orders 1 and 2 are written out; 3 and 4 are scikit-fem's
+    ``ElementTriP3``/``ElementTriP4`` basis.
 
     Parameters
     ----------
-    order : {1, 2}
+    order : {1, 2, 3, 4}
         Geometric order.
     xi : ndarray, shape (2,)
         Reference coordinates.
 
     Returns
     -------
-    values : ndarray, shape (3,) or (6,)
-    gradients : ndarray, shape (3, 2) or (6, 2)
-        Derivatives with respect to the two reference coordinates.
+    values : ndarray, shape (n,)
+    gradients : ndarray, shape (n, 2)
+        Derivatives with respect to the two reference coordinates; n = 3, 6,
+        10 or 15 nodes.
     """
     x, y = float(xi[0]), float(xi[1])
     w = 1.0 - x - y
     if order == 1:
         return np.array([w, x, y]), np.array([[-1.0, -1.0], [1.0, 0.0], [0.0, 1.0]])
+    if order > 2:
+        from skfem import ElementTriP3, ElementTriP4
+
+        element = ElementTriP3() if order == 3 else ElementTriP4()
+        point = np.array([[x], [y]])
+        pairs = [element.lbasis(point, i) for i in range(NODES_PER_TRIANGLE[order])]
+        values = np.array([float(np.ravel(phi)[0]) for phi, _ in pairs])
+        gradients = np.array([[float(np.ravel(d)[0]) for d in dphi] for _, dphi in pairs])
+        return values, gradients
     values = np.array(
         [w * (2 * w - 1), x * (2 * x - 1), y * (2 * y - 1), 4 * w * x, 4 * x * y, 4 * y * w]
     )
@@ -416,8 +504,8 @@ def locate_pole(mesh: SphereMesh) -> tuple[int, np.ndarray]:
 
     The pole of a discrete sphere is the point of its surface on the positive
     z-axis (the radial projection of (0, 0, 1)).  On flat triangles (order 1) it
-    is found from the barycentric coordinates of the axis, on curved six-node
-    triangles (order 2) by Newton's method on the element map, started from the
+    is found from the barycentric coordinates of the axis, on curved triangles
+    (orders 2 to 4) by Newton's method on the element map, started from the
     flat estimate.  Dimensionless.
 
     Returns
@@ -440,7 +528,7 @@ def locate_pole(mesh: SphereMesh) -> tuple[int, np.ndarray]:
             xi = bary[element, 1:]
         else:
             start = np.clip(bary[element, 1:], 0.0, 1.0)
-            xi = _newton_on_axis(mesh.points[mesh.cells[element]], 2, start)
+            xi = _newton_on_axis(mesh.points[mesh.cells[element]], mesh.order, start)
             if xi is None:
                 continue
         if min(xi[0], xi[1], 1.0 - xi[0] - xi[1]) >= -_INSIDE:
@@ -464,7 +552,14 @@ def topology(mesh: SphereMesh) -> MeshTri1:
 
 
 def write_mesh(path: str | Path, mesh: SphereMesh) -> None:
-    """Write ``mesh`` with meshio (format from the suffix, e.g. ``.vtu``, ``.msh``, ``.xdmf``)."""
+    """Write ``mesh`` with meshio (format from the suffix, e.g. ``.vtu``, ``.msh``, ``.xdmf``).
+
+    Orders 1 and 2 only (``triangle``, ``triangle6``); the node orders of
+    10- and 15-node triangles differ between formats, so orders 3 and 4 are
+    refused (write :func:`flatten` of the mesh and raise it again on reading).
+    """
+    if mesh.order > 2:
+        raise ParameterError("order", "1 or 2 for writing a mesh file", mesh.order)
     import meshio  # file input/output only: the solvers start without it
 
     kind = "triangle" if mesh.order == 1 else "triangle6"

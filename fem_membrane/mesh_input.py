@@ -62,7 +62,7 @@ class MeshInput:
     ----------
     mesh : SphereMesh
         Unit sphere (dimensionless), pole direction on +z; P1 or P2 as given, or
-        elevated to the requested order (new edge nodes projected onto the sphere).
+        raised to the requested order 2 to 4 (new nodes projected onto the sphere).
     radius : float
         Fitted radius, in the file's units.
     center : ndarray, shape (3,)
@@ -141,6 +141,7 @@ class _Raw:
     name: str
     ignored: dict[str, int] = field(default_factory=dict)
     orientation_known: bool = True  # False for scikit-fem meshes built with sort_t=True
+    order: int | None = None  # a SphereMesh of order 3 or 4 (read through its vertices)
 
 
 def _from_meshio(data: Any, name: str) -> _Raw:
@@ -217,6 +218,9 @@ def _read(source: MeshSource) -> _Raw:
     if isinstance(source, meshio.Mesh):
         return _from_meshio(source, "(meshio.Mesh)")
     if isinstance(source, SphereMesh):
+        if source.order > 2:  # the checks read 3- and 6-node triangles: its vertices,
+            flat = flatten(source)  # raised again to its order (its nodes are rebuilt)
+            return _Raw(flat.points, flat.cells, source.name, order=source.order)
         return _Raw(source.points, source.cells, source.name)
     module = type(source).__module__
     if module.startswith("skfem"):
@@ -288,10 +292,13 @@ def load_sphere_mesh(
     pole : sequence of 3 floats or "X,Y,Z", optional
         Direction from the centre to the pole (``--pole``), in the file's frame;
         default +z.  The mesh is rotated so that it points to +z.
-    order : {1, 2}, optional
+    order : {1, 2, 3, 4}, optional
         Geometric (and element) order of the result (``--order``); default the
-        source's.  A 3-node mesh raised to 2 gets edge nodes on the sphere; a
-        6-node mesh lowered to 1 keeps its vertices.
+        source's.  A mesh raised to 2, 3 or 4 gets its new nodes from its
+        vertices (equispaced points of each flat triangle projected radially
+        onto the sphere, :func:`twoball.fem_membrane.mesh.elevate`; a 6-node
+        source's own edge nodes are not used above order 2); a 6-node mesh
+        lowered to 1 keeps its vertices.
 
     Returns
     -------
@@ -315,6 +322,8 @@ def load_sphere_mesh(
     fit = check_sphere(name, points)
     cells, flipped = orient_outward(name, points, cells, fit, raw.orientation_known)
     source_order = 1 if cells.shape[1] == 3 else 2
+    if raw.order is not None:
+        source_order = raw.order
     center, radius = fit.center, fit.radius
 
     rotation = rotation_to_z(direction)
@@ -324,8 +333,8 @@ def load_sphere_mesh(
     mesh_name = f"{name} ({len(cells)} triangles)"
     mesh = SphereMesh(unit, cells, mesh_name)
     target = source_order if order is None else order
-    if target != source_order:
-        mesh = elevate(mesh) if target == 2 else flatten(mesh)
+    if target != mesh.order:
+        mesh = elevate(mesh, target) if target > 1 else flatten(mesh)
     result = MeshInput(
         mesh=mesh,
         radius=radius,

@@ -134,7 +134,7 @@ def check_warp(warp: float | None, flag: str = "--warp") -> float | None:
     return float(warp)
 
 
-def image_kind(path: str | os.PathLike[str], flag: str = "--out") -> str:
+def image_kind(path: str | os.PathLike[str], flag: str = "out") -> str:
     """``.png``, ``.gif`` or ``.mp4`` from the suffix of ``path``."""
     suffix = Path(path).suffix.lower()
     if suffix not in IMAGE_KINDS:
@@ -185,6 +185,9 @@ def surface_triangles(cells: np.ndarray) -> np.ndarray:
     cells = np.asarray(cells, dtype=np.int64)
     if cells.shape[1] == 3:
         return cells
+    if cells.shape[1] != 6:  # P3/P4 cells: not drawn (refused, not mis-split)
+        order = {10: 3, 15: 4}.get(cells.shape[1], cells.shape[1])
+        raise ParameterError("order", "1 or 2 for field files and pictures", order)
     a, b, c, ab, bc, ca = cells.T
     return np.vstack(
         [
@@ -452,7 +455,7 @@ def render_scene(
     size = check_size(size)
     warp = check_warp(warp)
     if not (math.isfinite(fps) and fps > 0):
-        raise ParameterError("--fps", "a finite number > 0", fps)
+        raise ParameterError("fps", "a finite number > 0", fps)
     if kind == ".mp4":
         size = round_size(size)
     with staged_file(out) as target:

@@ -224,8 +224,8 @@ def fem_pole_motion(
         Sphere refinement level >= 0 (``--level``, default 3).
     elements : int, optional
         Axisymmetric elements >= 2 (``--elements``, default 400).
-    order : {1, 2}, optional
-        P1 on flat triangles or isoparametric P2 (``--order``); None with a
+    order : {1, 2, 3, 4}, optional
+        P1 on flat triangles or isoparametric P2, P3, P4 (``--order``); None with a
         SphereMesh: the mesh's own order.
     time : {"modal", "alpha"}
         Modal superposition or generalized-alpha stepping (``--time``).

@@ -20,7 +20,9 @@ from dataclasses import dataclass
 
 import numpy as np
 import scipy.sparse as sp
-from skfem import CellBasis, ElementTriP1, ElementTriP2, asm
+from skfem import CellBasis, ElementTriP1, ElementTriP2, ElementTriP3, ElementTriP4, MeshTri1, asm
+from skfem.assembly import Dofs
+from skfem.element import Element
 
 from .checks import check_order
 from .forms import mass, stiffness
@@ -30,9 +32,11 @@ from .mesh import SphereMesh, elevate, flatten, locate_pole, topology
 PoleFunctional = int | sp.spmatrix
 """A degree-of-freedom index at the pole, or a sparse row (1, dofs) evaluating u there."""
 
-TRIANGLE_ELEMENTS = {1: ElementTriP1, 2: ElementTriP2}
-# quadrature degree for K and M: exact on flat P1; curved P2 integrands are rational
-SURFACE_INTORDER = {1: 2, 2: 6}
+TRIANGLE_ELEMENTS = {1: ElementTriP1, 2: ElementTriP2, 3: ElementTriP3, 4: ElementTriP4}
+# quadrature degree for K and M: exact on flat P1 (degree 2); on curved order-p
+# triangles the integrands are rational (sqrt det G, G^-1), integrated with
+# degree 2p + 2: the polynomial part u v is of degree 2p, the metric adds two
+SURFACE_INTORDER = {1: 2, 2: 6, 3: 8, 4: 10}
 
 
 def sphere_polar_cosine(x: np.ndarray) -> np.ndarray:
@@ -168,18 +172,53 @@ def surface_pole_row(basis: CellBasis, mesh: SphereMesh) -> sp.csr_matrix:
     return sp.csr_matrix((values, (np.zeros(dofs.size, dtype=np.int64), dofs)), shape=(1, basis.N))
 
 
+def oriented_dofs(topo: MeshTri1, elem: Element) -> Dofs:
+    """scikit-fem's degree-of-freedom numbering, made conforming on unsorted triangles.
+
+    scikit-fem numbers the ``k``-th degree of freedom of an edge the same in
+    both triangles sharing it, which is right only if both traverse the edge
+    in the same direction (its meshes sort each triangle's vertices for this).
+    Our triangles keep their outward orientation (``sort_t=False``), so
+    neighbours traverse a shared edge in opposite directions; with two or more
+    nodes per edge (P3, P4) the local rows of every edge running from the
+    higher to the lower vertex index are reversed here.  Global edge degree of
+    freedom ``k`` is then the ``k``-th node from the edge's lower vertex, as in
+    :func:`twoball.fem_membrane.mesh.elevate`.  P1 and P2 are returned unchanged.
+    """
+    dofs = Dofs(topo, elem)
+    per_edge = int(elem.facet_dofs)
+    if per_edge < 2:
+        return dofs
+    t = topo.t
+    element_dofs = dofs.element_dofs.copy()
+    first = 3 * int(elem.nodal_dofs)
+    for j, (a, b) in enumerate(topo.refdom.facets):
+        rows = first + j * per_edge + np.arange(per_edge)
+        backward = t[a] > t[b]
+        element_dofs[np.ix_(rows, np.flatnonzero(backward))] = element_dofs[
+            np.ix_(rows[::-1], np.flatnonzero(backward))
+        ]
+    dofs.element_dofs = element_dofs
+    return dofs
+
+
 def surface_basis(mesh: SphereMesh, order: int, intorder: int | None = None) -> CellBasis:
     """scikit-fem basis of Lagrange order ``order`` on ``mesh`` with its own geometry.
 
-    The geometry is the mesh's: flat for an order-1 mesh, curved for order 2; a
-    P2 element on a P2 mesh is isoparametric.
+    The geometry is the mesh's: flat for an order-1 mesh, curved for orders 2
+    to 4; an order-p element on an order-p mesh is isoparametric.  Degrees of
+    freedom are numbered by :func:`oriented_dofs`.  Quadrature degree
+    :data:`SURFACE_INTORDER` of the higher of the two orders unless given.
     """
     order = check_order(order)
     geometry = TRIANGLE_ELEMENTS[mesh.order]()
     mapping = SurfaceMapping(mesh.points.T, mesh.cells.T, geometry)
     if intorder is None:
         intorder = max(SURFACE_INTORDER[order], SURFACE_INTORDER[mesh.order])
-    return CellBasis(topology(mesh), TRIANGLE_ELEMENTS[order](), mapping=mapping, intorder=intorder)
+    topo = topology(mesh)
+    elem = TRIANGLE_ELEMENTS[order]()
+    dofs = oriented_dofs(topo, elem)
+    return CellBasis(topo, elem, mapping=mapping, intorder=intorder, dofs=dofs)
 
 
 def dof_nodes(basis: CellBasis, mesh: SphereMesh) -> np.ndarray:
@@ -193,13 +232,13 @@ def dof_nodes(basis: CellBasis, mesh: SphereMesh) -> np.ndarray:
 
 
 def sphere_space(mesh: SphereMesh, order: int | None = None) -> Discretisation:
-    """Isoparametric space on a sphere mesh: order 1 flat, order 2 curved.
+    """Isoparametric space on a sphere mesh: order 1 flat, orders 2 to 4 curved.
 
     Parameters
     ----------
     mesh : SphereMesh
         Any order; it is flattened or elevated to ``order``.
-    order : {1, 2}, optional
+    order : {1, 2, 3, 4}, optional
         Element and geometry order (default: the mesh's).
 
     Returns
@@ -208,7 +247,7 @@ def sphere_space(mesh: SphereMesh, order: int | None = None) -> Discretisation:
         K, M of eq. (3.9) on the discrete sphere (dimensionless).
     """
     order = mesh.order if order is None else check_order(order)
-    mesh = elevate(mesh) if order == 2 else flatten(mesh)
+    mesh = elevate(mesh, order) if order > 1 else flatten(mesh)
     basis = surface_basis(mesh, order)
     K = asm(stiffness, basis).tocsr()
     M = asm(mass, basis).tocsr()

@@ -213,7 +213,7 @@ def test_eigen_json_lists_clusters(capsys):
     ("argv", "flag"),
     [
         (["liftoff", "--backend", "fem", "--level", "-1"], "--level"),
-        (["liftoff", "--backend", "fem", "--order", "3"], "--order"),
+        (["liftoff", "--backend", "fem", "--order", "5"], "--order"),
         (["liftoff", "--backend", "fem", "--dt", "0"], "--dt"),
         (["liftoff", "--backend", "fem", "--dt", "-1e-5"], "--dt"),
         (["liftoff", "--backend", "fem", "--mesh", "axisym", "--elements", "1"], "--elements"),

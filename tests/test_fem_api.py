@@ -16,8 +16,8 @@ PHI_A, DAMPING = 2.6, 0.13
     [
         ({"mesh": "sphere", "level": -1}, "level", "an integer >= 0"),
         ({"mesh": "sphere", "level": 1.5}, "level", "an integer >= 0"),
-        ({"mesh": "axisym", "order": 3}, "order", "1 or 2"),
-        ({"mesh": "axisym", "order": 0}, "order", "1 or 2"),
+        ({"mesh": "axisym", "order": 5}, "order", "1, 2, 3 or 4"),
+        ({"mesh": "axisym", "order": 0}, "order", "1, 2, 3 or 4"),
         ({"mesh": "axisym", "elements": 1}, "elements", "an integer >= 2"),
         ({"mesh": "axisym", "time": "alpha", "dt": 0.0}, "dt", "a finite number > 0"),
         ({"mesh": "axisym", "time": "alpha", "dt": -1e-3}, "dt", "a finite number > 0"),
@@ -49,8 +49,8 @@ def test_physical_parameters_are_checked():
 def test_mesh_builders_reject():
     with pytest.raises(ParameterError, match="level must be an integer >= 0, got -1"):
         icosphere(-1)
-    with pytest.raises(ParameterError, match="order must be 1 or 2"):
-        icosphere(1, order=3)
+    with pytest.raises(ParameterError, match="order must be 1, 2, 3 or 4"):
+        icosphere(1, order=5)
     with pytest.raises(ParameterError, match="phi_a"):
         ring_sphere(1, 4.0)
     with pytest.raises(ParameterError, match="elements must be an integer >= 2"):
@@ -61,6 +61,6 @@ def test_eigen_table_rejects():
     with pytest.raises(ParameterError, match="level"):
         eigen_table("sphere", level=-2)
     with pytest.raises(ParameterError, match="order"):
-        eigen_table("axisym", order=3)
+        eigen_table("axisym", order=5)
     with pytest.raises(ParameterError, match="count"):
         eigen_table("axisym", elements=10, count=0)

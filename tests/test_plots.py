@@ -85,7 +85,7 @@ def test_eigen_degree_limits():
 def test_save_figure_checks_the_path(model, tmp_path):
     figure = eigen_figure([eigen_table(0, 1, 1)])
     for bad in (tmp_path / "missing" / "a.png", tmp_path / "a.svg"):
-        with pytest.raises(ParameterError, match="--out"):
+        with pytest.raises(ParameterError, match="out"):
             save_figure(figure, bad)
     assert list(tmp_path.iterdir()) == []
 

@@ -126,9 +126,9 @@ def test_sizes_and_warps():
 
 def test_unwritable_output_leaves_nothing(model, tmp_path):
     scene = ball_scene(model, liftoff_frame(model), "fem")
-    with pytest.raises(ParameterError, match="--out"):
+    with pytest.raises(ParameterError, match="out"):
         render_scene(tmp_path / "missing" / "ball.png", scene)
-    with pytest.raises(ParameterError, match="--out"):
+    with pytest.raises(ParameterError, match="out"):
         render_scene(tmp_path / "ball.jpg", scene)
     assert list(tmp_path.iterdir()) == []
 

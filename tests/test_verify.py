@@ -154,7 +154,7 @@ def test_out_refuses_a_folder_that_is_not_a_report(tmp_path):
     foreign = tmp_path / "home"
     foreign.mkdir()
     (foreign / "thesis.tex").write_text("precious")
-    with pytest.raises(ParameterError, match="--out"):
+    with pytest.raises(ParameterError, match="out"):
         check_output_dir(foreign)
     assert (foreign / "thesis.tex").read_text() == "precious"
     report = tmp_path / "report"

@@ -83,10 +83,10 @@ _NAME_KEEP = 180  # characters of the target's name kept in a scratch name (NAME
 
 
 # --------------------------------------------------------------------------- errors
-def _parameter_error(flag: str, valid: str, got: object) -> Exception:
+def _parameter_error(param: str, valid: str, got: object) -> Exception:
     from twoball.modal.errors import ParameterError
 
-    return ParameterError(flag, valid, got)
+    return ParameterError(param, valid, got)
 
 
 def _named(error: OSError, target: Path) -> OSError:
@@ -97,17 +97,17 @@ def _named(error: OSError, target: Path) -> OSError:
 
 
 # --------------------------------------------------------------------------- targets
-def _plain_target(path: str | os.PathLike[str], flag: str, valid: str) -> Path:
+def _plain_target(path: str | os.PathLike[str], param: str, valid: str) -> Path:
     """``path`` made absolute; refused if it is a symbolic link or its folder is unusable."""
     out = Path(path).expanduser()
     if out.name in ("", ".", ".."):
-        raise _parameter_error(flag, valid, str(path))
+        raise _parameter_error(param, valid, str(path))
     if out.is_symlink():
-        raise _parameter_error(flag, valid + " (not a symbolic link)", str(path))
+        raise _parameter_error(param, valid + " (not a symbolic link)", str(path))
     out = out.absolute()
     parent = out.parent
     if not parent.is_dir():
-        raise _parameter_error(flag, valid + " (the folder does not exist)", str(path))
+        raise _parameter_error(param, valid + " (the folder does not exist)", str(path))
     probe = parent / f".{out.name[:_NAME_KEEP]}.{SCRATCH_TAG}-{os.getpid()}-{secrets.token_hex(4)}"
     try:  # proves the folder writable (permissions, read-only mounts, /proc, name length)
         probe.mkdir(mode=0o700)
@@ -115,13 +115,13 @@ def _plain_target(path: str | os.PathLike[str], flag: str, valid: str) -> Path:
     except OSError as error:
         reason = error.strerror or "not writable"
         raise _parameter_error(
-            flag, valid + f" (the folder is not writable: {reason})", str(path)
+            param, valid + f" (the folder is not writable: {reason})", str(path)
         ) from None
     sweep_stale(out)
     return out
 
 
-def check_file(path: str | os.PathLike[str], flag: str = "--out") -> Path:
+def check_file(path: str | os.PathLike[str], param: str = "out") -> Path:
     """Check, before any work, that a file (or a collection's main file) can be written.
 
     The folder must exist and be writable; ``path`` may exist (it is replaced)
@@ -135,16 +135,16 @@ def check_file(path: str | os.PathLike[str], flag: str = "--out") -> Path:
     Raises
     ------
     ParameterError
-        Naming ``flag``, for the one-line command-line error (exit status 2).
+        Naming ``param``, for the one-line command-line error (exit status 2).
     """
     valid = "a file path in an existing, writable folder"
-    out = _plain_target(path, flag, valid)
+    out = _plain_target(path, param, valid)
     if out.is_dir():
-        raise _parameter_error(flag, valid + " (it is a folder)", str(path))
+        raise _parameter_error(param, valid + " (it is a folder)", str(path))
     return out
 
 
-def check_folder(path: str | os.PathLike[str], flag: str = "--out") -> Path:
+def check_folder(path: str | os.PathLike[str], param: str = "out") -> Path:
     """Check, before any work, that a folder can be written (and replaced) at ``path``.
 
     ``path`` may be missing, an empty folder, or a folder twoball wrote (it holds
@@ -153,17 +153,17 @@ def check_folder(path: str | os.PathLike[str], flag: str = "--out") -> Path:
     Raises
     ------
     ParameterError
-        Naming ``flag``; for a folder with foreign content, the first foreign entry.
+        Naming ``param``; for a folder with foreign content, the first foreign entry.
     """
     valid = "a new or empty folder, or one that twoball wrote, in an existing writable folder"
-    out = _plain_target(path, flag, valid)
+    out = _plain_target(path, param, valid)
     if out.exists() and not out.is_dir():
-        raise _parameter_error(flag, valid + " (it is a file)", str(path))
+        raise _parameter_error(param, valid + " (it is a file)", str(path))
     if out.is_dir():
         foreign = foreign_entry(out)
         if foreign is not None:
             raise _parameter_error(
-                flag,
+                param,
                 "a new or empty folder, or one that twoball wrote",
                 f"{path} (it holds {foreign!r}, which twoball did not write)",
             )
@@ -292,7 +292,7 @@ def _public_mode(path: Path, folder: bool) -> None:
 
 # --------------------------------------------------------------------------- writers
 @contextlib.contextmanager
-def staged_file(path: str | os.PathLike[str], flag: str = "--out") -> Iterator[Path]:
+def staged_file(path: str | os.PathLike[str], param: str = "out") -> Iterator[Path]:
     """Yield a scratch path; once the block ends without error, replace ``path`` by it.
 
     Examples
@@ -300,7 +300,7 @@ def staged_file(path: str | os.PathLike[str], flag: str = "--out") -> Iterator[P
     >>> with staged_file("plot.png") as scratch:  # doctest: +SKIP
     ...     figure.savefig(scratch)
     """
-    out = check_file(path, flag)
+    out = check_file(path, param)
     with _scratch_dir(out) as scratch:
         target = scratch / out.name
         yield target
@@ -315,7 +315,7 @@ def staged_file(path: str | os.PathLike[str], flag: str = "--out") -> Iterator[P
 @contextlib.contextmanager
 def staged_collection(
     path: str | os.PathLike[str],
-    flag: str = "--out",
+    param: str = "out",
     retire: Callable[[Path, Sequence[str]], Sequence[Path]] | None = None,
 ) -> Iterator[Path]:
     """Yield a scratch folder for a main file (named like ``path``) and its side entries.
@@ -328,14 +328,14 @@ def staged_collection(
     earlier entries the new main file no longer refers to; they are removed
     after the commit (only folders twoball wrote, files as given).
     """
-    out = check_file(path, flag)
+    out = check_file(path, param)
     with _scratch_dir(out) as scratch:
         yield scratch
         if not (scratch / out.name).is_file():
             raise FileNotFoundError(errno.ENOENT, "the writer wrote no main file", str(out))
         sides = sorted(p.name for p in scratch.iterdir() if p.name != out.name)
         for name in sides:  # refuse before anything moves
-            _check_side(scratch / name, out.parent / name, flag)
+            _check_side(scratch / name, out.parent / name, param)
         old = list(retire(out, sides)) if retire is not None else []
         pause("staged")
         with deferred_signals():
@@ -351,22 +351,22 @@ def staged_collection(
                     _remove(entry)
 
 
-def _check_side(new: Path, existing: Path, flag: str) -> None:
+def _check_side(new: Path, existing: Path, param: str) -> None:
     if existing.is_symlink():
         raise _parameter_error(
-            flag, "a path whose side files are not symbolic links", f"{existing}"
+            param, "a path whose side files are not symbolic links", f"{existing}"
         )
     if new.is_dir():
         if not (new / MARKER).is_file():  # pragma: no cover - a writer's mistake
             raise RuntimeError(f"side folder {new.name} has no {MARKER}")
         if existing.exists() and (not existing.is_dir() or foreign_entry(existing) is not None):
             raise _parameter_error(
-                flag,
+                param,
                 "a path whose side folder is new or one that twoball wrote",
                 f"{existing}",
             )
     elif existing.is_dir():
-        raise _parameter_error(flag, "a path whose side files are not folders", f"{existing}")
+        raise _parameter_error(param, "a path whose side files are not folders", f"{existing}")
 
 
 def _same_tree(a: Path, b: Path) -> bool:
@@ -394,7 +394,7 @@ def _move_side(new: Path, existing: Path) -> None:
 
 @contextlib.contextmanager
 def staged_folder(
-    path: str | os.PathLike[str], flag: str = "--out", writer: str = "twoball"
+    path: str | os.PathLike[str], param: str = "out", writer: str = "twoball"
 ) -> Iterator[Path]:
     """Yield a scratch folder; once the block ends without error, it replaces ``path``.
 
@@ -402,13 +402,13 @@ def staged_folder(
     commit.  ``path`` is checked first with :func:`check_folder` and again just
     before the exchange, so a user's file added meanwhile is not lost either.
     """
-    out = check_folder(path, flag)
+    out = check_folder(path, param)
     with _scratch_dir(out) as scratch:
         yield scratch
         write_marker(scratch, writer)
         _public_mode(scratch, folder=True)
         pause("staged")
-        check_folder(out, flag)
+        check_folder(out, param)
         with deferred_signals():
             pause("commit")
             if out.is_dir():

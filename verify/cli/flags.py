@@ -66,6 +66,8 @@ FLAGS: dict[str, str] = {
     "warp": "--warp",
     "instants": "--instants",
     "max_degree": "--max-degree",
+    "offset": "--offset",
+    "only": "--only",
     "kind": "plot kind",
     # independent collision model
     "mu": "--mu",

@@ -63,7 +63,7 @@ def check_output(out: str | os.PathLike) -> Path:
     """
     from twoball.staging import check_folder
 
-    return check_folder(out, "--out")
+    return check_folder(out, "out")
 
 
 def reproduce(
@@ -88,7 +88,7 @@ def reproduce(
     try:
         if own_runner:
             runner = Runner(workers=1).__enter__()
-        with staged_folder(target, "--out", "twoball reproduce") as staging:
+        with staged_folder(target, "out", "twoball reproduce") as staging:
             ctx = Context(staging, runner)
             if progress is not None:
                 ctx.progress = progress
