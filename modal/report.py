@@ -7,6 +7,7 @@ Legendre series and the finite elements are judged by one lift-off check.
 from __future__ import annotations
 
 import math
+from collections.abc import Sequence
 from dataclasses import dataclass, field
 from typing import Any
 
@@ -32,6 +33,9 @@ class LiftoffReport:
         Filter and re-contact horizon used.
     extra : dict
         Backend details (DOFs, modes used, mesh, ...), passed through to JSON.
+    warnings : tuple of str
+        Accuracy warnings (:mod:`twoball.modal.guards`, :mod:`twoball.fem_membrane.guards`):
+        empty when the result is inside its trustworthy regime.
     """
 
     case: Case
@@ -40,6 +44,7 @@ class LiftoffReport:
     sigma: str
     recontact: str
     extra: dict[str, Any] = field(default_factory=dict)
+    warnings: tuple[str, ...] = ()
 
     @property
     def t_liftoff_s(self) -> float | None:
@@ -92,6 +97,7 @@ class LiftoffReport:
             "t_end_s": self.result.t_end * scale.time,
         }
         data.update(self.extra)
+        data["warnings"] = list(self.warnings)
         return data
 
 
@@ -115,12 +121,26 @@ def report_liftoff(
     recontact: Horizon = "window",
     t_end_s: float | None = None,
     extra: dict[str, Any] | None = None,
+    warnings: Sequence[str] = (),
+    guards: bool = True,
 ) -> LiftoffReport:
-    """Apply the shared lift-off criteria to any backend's pole motion; report in SI."""
+    """Apply the shared lift-off criteria to any backend's pole motion; report in SI.
+
+    ``warnings`` come from the backend (time step, mesh); with ``guards`` the
+    closed-form guards add theirs and the ``truncation`` block (the converged
+    series beside the N-result, :mod:`twoball.modal.guards`).
+    """
     result = find_liftoff(
         motion, case.gamma, t_end=t_end_dimensionless(case, t_end_s), horizon=recontact
     )
-    return LiftoffReport(case, result, backend, sigma, recontact, dict(extra or {}))
+    extra, notes = dict(extra or {}), list(warnings)
+    if guards:
+        from .guards import liftoff_guards
+
+        found, block = liftoff_guards(case, result, backend)
+        notes += found
+        extra["truncation"] = block.as_dict()
+    return LiftoffReport(case, result, backend, sigma, recontact, extra, tuple(notes))
 
 
 def legendre_liftoff(
@@ -130,6 +150,9 @@ def legendre_liftoff(
     t_end_s: float | None = None,
 ) -> LiftoffReport:
     """Lift-off of the closed-form CEM, eqs. (3.12)-(3.16) with criteria (i)-(ii) of §3(a)."""
+    from twoball.budget import check_series
+
+    check_series(case.modes, t_end_dimensionless(case, t_end_s), t_end_s)
     series = legendre_series(case.phi_a, case.damping, SpectralFilter(sigma, case.modes))
     return report_liftoff(
         case, series, backend="legendre", sigma=sigma, recontact=recontact, t_end_s=t_end_s

@@ -20,6 +20,8 @@ VALID_RANGES: dict[str, str] = {
     "--damping": "a number in [0, 1)",
     "--modes": "an integer >= 1",
     "--t-end": "a number > 0 [s]",
+    "--max-memory": "a size > 0 such as 12GiB, 500MB or 2e9 (bytes)",
+    "--max-time": "a duration > 0 such as 3600, 90min or 2h",
 }
 
 
@@ -51,6 +53,9 @@ def add_case_options(parser: argparse.ArgumentParser) -> None:
     model.add_argument(
         "--t-end", type=float, metavar="SECONDS", help="modelled window [s] (default 4 pi / c)"
     )
+    limits = parser.add_argument_group("resource limits (refused before the work starts)")
+    limits.add_argument("--max-memory", metavar="SIZE", help="e.g. 8GiB (default: half the RAM)")
+    limits.add_argument("--max-time", metavar="DURATION", help="e.g. 90min (default: 5min)")
 
 
 def case_from_options(args: argparse.Namespace) -> Case:
@@ -59,6 +64,9 @@ def case_from_options(args: argparse.Namespace) -> Case:
     Rules: ``--pressure``/``--mass`` replace ``--wave-speed`` (eq. (3.8), §4(b));
     when v0, c or R is given without ``--phi-a``, phi_a follows from eq. (3.7).
     """
+    from twoball.budget import Budget, set_budget
+
+    set_budget(Budget.from_options(args.max_memory, args.max_time))
     base = preset(args.preset)
     if (args.pressure is None) != (args.mass is None):
         raise ParameterError("--pressure/--mass", "given together")

@@ -131,6 +131,8 @@ def run(args: argparse.Namespace) -> int:
     times = None
     if args.times is not None:
         times = check_times(window_s(case, args.t_end), parse_times(args.times))
+        if len(times) > MAX_FRAMES:  # the same cap as --frames
+            raise ParameterError("--times", f"at most {MAX_FRAMES} times", f"{len(times)} times")
     frames = None if args.frames is None else check_frames(args.frames)
     if fmt == "vtu" and frames is not None and frames != 1:
         raise ParameterError("--frames", "1 for a single .vtu file (or use --times T)", frames)

@@ -15,6 +15,8 @@ from twoball.modal.filters import SpectralFilter
 from twoball.modal.parameters import Case
 from twoball.modal.report import LiftoffReport, report_liftoff, t_end_dimensionless
 
+from twoball.budget import check_fem
+
 VALID_RANGES: dict[str, str] = {
     "--level": "an integer >= 0",
     "--elements": "an integer >= 2",
@@ -62,6 +64,18 @@ def add_time_options(parser: argparse.ArgumentParser) -> None:
 def fem_liftoff(case: Case, args: argparse.Namespace) -> LiftoffReport:
     """The shared lift-off of the finite-element pole motion for the options' mesh (SI)."""
     dt_s = check_dt(args.dt)
+    check_fem(
+        args.mesh,
+        args.level,
+        args.elements,
+        args.order,
+        case.modes,
+        args.route,
+        time=args.time,
+        dt=None if dt_s is None else dt_s / case.scalings.time,
+        t_end=t_end_dimensionless(case, args.t_end),
+        time_unit_s=case.scalings.time,
+    )
     started = time.perf_counter()
     motion, info = fem_pole_motion(
         case.phi_a,
@@ -91,6 +105,15 @@ def fem_liftoff(case: Case, args: argparse.Namespace) -> LiftoffReport:
         extra["dt_s"] = info["dt"] * case.scalings.time
     if "rayleigh" in info:
         extra["rayleigh"] = info["rayleigh"]
+    from twoball.fem_membrane.guards import fem_warnings
+
+    notes = fem_warnings(
+        info,
+        SpectralFilter(args.sigma, case.modes),
+        level=args.level,
+        elements=args.elements,
+        time_unit_s=case.scalings.time,
+    )
     return report_liftoff(
         case,
         motion,
@@ -99,4 +122,5 @@ def fem_liftoff(case: Case, args: argparse.Namespace) -> LiftoffReport:
         recontact=args.recontact,
         t_end_s=args.t_end,
         extra=extra,
+        warnings=notes,
     )

@@ -28,8 +28,16 @@ def liftoff_rows(report: LiftoffReport) -> list[tuple[str, str]]:
         ("v_l / |v0|", number(report.ratio)),
         ("rejected candidates", str(len(report.result.rejected))),
     ]
+    block = report.extra.get("truncation") or {}
+    if block.get("t_liftoff_s") is not None:
+        name = f"converged series (N = {block['converged_modes']})"
+        rows.append((f"t_l [ms], {name}", number(block["t_liftoff_s"], 1e3)))
+        rows.append((f"v_l [m/s], {name}", number(block["v_liftoff_m_s"])))
+    rows += [("warning", text) for text in report.warnings]
     for key, value in report.extra.items():
-        if isinstance(value, float):
+        if isinstance(value, bool):
+            rows.append((key, str(value)))
+        elif isinstance(value, float):
             rows.append((key, f"{value:.4g}"))
         elif isinstance(value, (int, str)):
             rows.append((key, str(value)))
@@ -57,6 +65,10 @@ def solve_from_options(args: argparse.Namespace) -> LiftoffReport:
 def run(args: argparse.Namespace) -> int:
     """Run ``twoball liftoff``."""
     report = solve_from_options(args)
+    from twoball.verify.cli.main import warn
+
+    for text in report.warnings:
+        warn(text)
     if args.json:
         print_json(report.as_dict())
     else:

@@ -76,6 +76,11 @@ def fail(message: str, status: int = EXIT_USAGE) -> NoReturn:
     raise SystemExit(status)
 
 
+def warn(message: str) -> None:
+    """Print ``twoball: warning: message`` on standard error (the run goes on)."""
+    sys.stderr.write(f"twoball: warning: {message}\n")
+
+
 def build_parser(chosen: str | None = None) -> argparse.ArgumentParser:
     """The ``twoball`` argument parser.
 

@@ -9,7 +9,7 @@ from twoball.modal.errors import ParameterError
 from twoball.verify.cli.case_options import add_case_options
 from twoball.verify.cli.console import console, key_value_table
 from twoball.verify.cli.export import add_mesh_options, model_from_options
-from twoball.verify.output.fields import BACKENDS
+from twoball.verify.output.fields import BACKENDS, MAX_FRAMES
 from twoball.verify.output.plots import (
     PLOT_KINDS,
     WATERFALL_INSTANTS,
@@ -21,7 +21,7 @@ from twoball.verify.output.plots import (
 )
 
 VALID_RANGES: dict[str, str] = {
-    "--instants": "an integer >= 2",
+    "--instants": f"an integer in [2, {MAX_FRAMES}]",
     "--max-degree": "an integer >= 1",
 }
 
@@ -66,7 +66,7 @@ def run(args: argparse.Namespace) -> int:
         figure = eigen_figure(tables)
         rows += [(t.label, f"l <= {t.degrees[-1]}, worst {t.errors[1:].max():.2e}") for t in tables]
     else:
-        if isinstance(args.instants, int) and args.instants < 2:
+        if isinstance(args.instants, int) and not 2 <= args.instants <= MAX_FRAMES:
             raise ParameterError("--instants", VALID_RANGES["--instants"], args.instants)
         model = model_from_options(args, parse_backends(args.backends))
         if args.kind == "waterfall":

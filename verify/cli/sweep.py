@@ -3,8 +3,10 @@
 from __future__ import annotations
 
 import argparse
+import math
 
 from rich.table import Table
+from twoball.modal.report import t_end_dimensionless
 from twoball.verify.cli.case_options import add_case_options, case_from_options
 from twoball.verify.cli.console import console, number, print_json
 from twoball.verify.sweeps.parallel import MIN_PARALLEL_ITEMS, Runner, check_workers
@@ -19,6 +21,8 @@ from twoball.verify.sweeps.sweeps import (
     plot_sweep,
     run_sweep,
 )
+
+from twoball.budget import check_sweep
 
 VALID_RANGES = dict(PARALLEL_RANGES)
 #: Sweeps at least this long show a progress bar (on stderr, never with --json).
@@ -58,10 +62,16 @@ def print_sweep(grid: SweepGrid, points: list[SweepPoint]) -> None:
 
 def run(args: argparse.Namespace) -> int:
     """Run ``twoball sweep``."""
+    base = case_from_options(args)  # first: it sets the resource budget
     grid = make_grid(args.param, args.values)
     workers = check_workers(args.workers)
     plot = None if args.plot is None else check_plot_path(args.plot)
-    base = case_from_options(args)
+    modes = (
+        int(max(grid.values[grid.parameters.index("modes")]))
+        if "modes" in grid.parameters
+        else base.modes
+    )
+    check_sweep(math.prod(grid.shape), modes, t_end_dimensionless(base, args.t_end), args.workers)
     cases = grid.cases(base)
     solver = SweepSolver(args.sigma, args.recontact, args.t_end)
     if len(cases) < MIN_PARALLEL_ITEMS:

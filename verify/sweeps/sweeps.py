@@ -56,6 +56,9 @@ def parse_range(text: str, name: str = "--values") -> np.ndarray:
         raise ParameterError(name, valid, text)
     if count == 1 and start != stop:
         raise ParameterError(name, valid + " (COUNT 1 needs START = STOP)", text)
+    from twoball.budget import check_count
+
+    check_count(f"{name} {text}", count)  # before numpy allocates COUNT values
     return np.linspace(start, stop, count)
 
 
