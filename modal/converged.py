@@ -15,7 +15,7 @@ import numpy as np
 
 from .filters import SpectralFilter, legendre_frequency
 from .legendre import legendre_coefficients_recurrence, legendre_series
-from .liftoff import DEFAULT_T_END, Horizon, find_liftoff, flight_clearance
+from .liftoff import DEFAULT_T_END, Horizon, LiftoffResult, find_liftoff, flight_clearance
 from .parameters import Case
 from .roots import bracketed_roots
 from .series import ModalSeries
@@ -88,19 +88,30 @@ def unfiltered_series(case: Case, modes: int) -> ModalSeries:
 
 
 def _track_root(
-    series: ModalSeries, gamma: float, guess: float, width: float
+    series: ModalSeries, gamma: float, guess: float, width: float, min_samples: int = 2001
 ) -> tuple[float, float] | None:
-    """The downward zero of ``u_tt + gamma`` nearest ``guess`` within ``guess +- width``."""
-    samples = max(2001, int(40 * width * max(series.max_frequency, 1.0)))
+    """The downward zero of ``u_tt + gamma`` nearest ``guess`` within ``guess +- width``.
+
+    Sampled at ``min_samples`` points or 40 per unit time and frequency, whichever
+    is more (>= 6 per period of the highest mode), then refined to 1e-12.
+    """
+    samples = max(min_samples, int(40 * width * max(series.max_frequency, 1.0)))
     grid = np.linspace(max(guess - width, 1e-9), guess + width, samples)
     force = series.pole(grid).u_tt + gamma
     down = np.flatnonzero((force[:-1] > 0.0) & (force[1:] <= 0.0))
     if down.size == 0:
         return None
     k = down[np.argmin(np.abs(grid[down] - guess))]
-    root = bracketed_roots(
-        lambda t, i: series.pole(t).u_tt + gamma, grid[k : k + 1], grid[k + 1 : k + 2]
-    )[0]
+
+    def force_at(t: np.ndarray, i: np.ndarray | None = None) -> np.ndarray:
+        return series.pole(t).u_tt + gamma
+
+    ends = grid[k : k + 2]
+    at_ends = force_at(ends)
+    if at_ends[0] * at_ends[1] > 0:  # a grid point sits on the root (round-off decides)
+        root = float(ends[np.argmin(np.abs(at_ends))])
+    else:
+        root = bracketed_roots(force_at, ends[:1], ends[1:])[0]
     return float(root), float(series.pole(np.array([root])).u_t[0])
 
 
@@ -112,6 +123,10 @@ def converged_legendre(
     tolerance: float = REFERENCE_TOLERANCE,
     start_modes: int = PAPER_MODES,
     max_modes: int = REFERENCE_MAX_MODES,
+    *,
+    base: LiftoffResult | None = None,
+    flight: bool = True,
+    min_samples: int = 2001,
 ) -> ConvergedReference:
     """The converged Legendre lift-off: N doubled from ``2 start_modes`` until it settles.
 
@@ -120,11 +135,19 @@ def converged_legendre(
     follow, whatever ``sigma`` is: the limit is the same for every filter, and
     without a filter the truncated series lifts off spuriously on its Gibbs
     oscillations.  ``t_end`` is dimensionless (unit 1/c).
+
+    ``base`` is that starting lift-off when the caller has it already (same case,
+    window, horizon, Lanczos filter and ``start_modes``).  ``flight=False`` skips
+    the clearance check and the end energy of the limit (``clear`` False,
+    ``energy_end`` NaN): the accuracy guards need t_l and v_l only.  ``min_samples``
+    is the least number of samples that bracket the followed root.
     """
     del sigma  # every filter has the same limit
     clock = time.perf_counter()
-    base_series = legendre_series(case.phi_a, case.damping, SpectralFilter("lanczos", start_modes))
-    base = find_liftoff(base_series, case.gamma, t_end=t_end, horizon=recontact)
+    if base is None:
+        lanczos = SpectralFilter("lanczos", start_modes)
+        base_series = legendre_series(case.phi_a, case.damping, lanczos)
+        base = find_liftoff(base_series, case.gamma, t_end=t_end, horizon=recontact)
     if base.t is None:
         return ConvergedReference(
             None, None, math.nan, start_modes, False, tolerance, (), False, 0.0, None
@@ -136,7 +159,7 @@ def converged_legendre(
     while modes < max_modes:
         modes *= 2
         series = unfiltered_series(case, modes)
-        found = _track_root(series, case.gamma, guess, width)
+        found = _track_root(series, case.gamma, guess, width, min_samples)
         if found is None:
             break
         history.append((modes, *found))
@@ -157,9 +180,11 @@ def converged_legendre(
             None, None, math.nan, modes, False, tolerance, tuple(history), False, 0.0, None
         )
     _, t_l, v_l = history[-1]
-    end = t_end if recontact == "window" else min(2 * t_l, t_end)
-    clear = v_l > 0 and flight_clearance(series, case.gamma, t_l, end) > 0.0
-    energy = float(series.energy(np.array([t_end]))[0])
+    clear, energy = False, math.nan
+    if flight:
+        end = t_end if recontact == "window" else min(2 * t_l, t_end)
+        clear = v_l > 0 and flight_clearance(series, case.gamma, t_l, end) > 0.0
+        energy = float(series.energy(np.array([t_end]))[0])
     return ConvergedReference(
         t_l,
         v_l,

@@ -87,7 +87,7 @@ def _relative(value: float | None, reference: float | None) -> float | None:
     return value / reference - 1.0
 
 
-def truncation(case: Case, result: LiftoffResult) -> Truncation:
+def truncation(case: Case, result: LiftoffResult, base: LiftoffResult | None = None) -> Truncation:
     """The converged-series lift-off beside ``result`` (same case, window and horizon).
 
     Parameters
@@ -97,11 +97,16 @@ def truncation(case: Case, result: LiftoffResult) -> Truncation:
     result : LiftoffResult
         Any backend's lift-off (dimensionless), from
         :func:`twoball.modal.liftoff.find_liftoff`.
+    base : LiftoffResult, optional
+        ``result`` itself when it is the N = 30 Lanczos closed form, the root the
+        reference follows (saves recomputing it).
     """
     from .converged import converged_legendre
 
     horizon = "paper" if result.horizon == "paper" else "window"
-    reference = converged_legendre(case, recontact=horizon, t_end=result.t_end)
+    reference = converged_legendre(
+        case, recontact=horizon, t_end=result.t_end, base=base, flight=False, min_samples=201
+    )
     scale = case.scalings
     t_ref = None if reference.t is None else reference.t * scale.time
     v_ref = None if reference.velocity is None else reference.velocity * scale.velocity
@@ -180,8 +185,11 @@ def window_warnings(case: Case, result: LiftoffResult) -> list[str]:
 
 
 def liftoff_guards(
-    case: Case, result: LiftoffResult, backend: str = "legendre"
+    case: Case, result: LiftoffResult, backend: str = "legendre", sigma: str = "lanczos"
 ) -> tuple[list[str], Truncation]:
     """All closed-form guards of one lift-off: (warnings, truncation block)."""
-    block = truncation(case, result)
+    from .converged import PAPER_MODES
+
+    same = backend == "legendre" and sigma == "lanczos" and case.modes == PAPER_MODES
+    block = truncation(case, result, result if same else None)
     return window_warnings(case, result) + truncation_warnings(block, backend), block

@@ -169,14 +169,22 @@ def test_each_absurd_size_is_refused_before_any_allocation(tmp_path: Path) -> No
 
 
 def _peak_child(code: str) -> tuple[float, float]:
-    """Peak RSS [bytes] and wall time [s] of ``code`` run in a fresh interpreter."""
+    """Peak RSS [bytes] and CPU time [s] of ``code`` run in a fresh interpreter.
+
+    CPU time (user + system), not wall time: on a shared machine the wall time
+    of a single-threaded run grows with the others' load, its CPU time does not.
+    """
     wrapper = textwrap.dedent(
         """
-        import resource, sys, time
-        start = time.perf_counter()
+        import resource, sys
+        import numpy, scipy.sparse.linalg, skfem  # imports are not the work measured
+        def cpu():
+            usage = resource.getrusage(resource.RUSAGE_SELF)
+            return usage.ru_utime + usage.ru_stime
+        start = cpu()
         exec(sys.argv[1])
-        wall = time.perf_counter() - start
-        print(resource.getrusage(resource.RUSAGE_SELF).ru_maxrss * 1024, wall)
+        used = cpu() - start
+        print(resource.getrusage(resource.RUSAGE_SELF).ru_maxrss * 1024, used)
         """
     )
     env = dict(os.environ, OPENBLAS_NUM_THREADS="1")

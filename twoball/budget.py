@@ -452,15 +452,20 @@ def check_fem(
     return check(option, estimate + alpha_estimate(dofs, pairs, t_end, step))
 
 
-def check_sweep(points: int, modes: int, t_end: float, workers: int | None = None) -> Estimate:
+def check_sweep(
+    points: int, modes: int, t_end: float, workers: int | None = None, reference: bool = False
+) -> Estimate:
     """Refuse a sweep of ``points`` closed-form solves (N ``modes``, window ``t_end``).
 
-    Workers: at most four per core, each ~150 MiB.  Per point: the series and the
-    truncation reference (:func:`check_series`) plus ~3 ms of bookkeeping.
+    Workers: at most four per core, each ~150 MiB.  Per point: the series (and,
+    with ``reference``, the truncation guard's converged series) plus ~3 ms of
+    bookkeeping.
     """
     check_workers(workers)
     cores = os.cpu_count() or 1
-    per_point = series_estimate(modes, t_end) + reference_estimate(t_end)
+    per_point = series_estimate(modes, t_end)
+    if reference:
+        per_point = per_point + reference_estimate(t_end)
     estimate = sweep_estimate(points, per_point, cores if workers is None else workers)
     return check(f"--values ({points} points)", estimate)
 

@@ -93,6 +93,14 @@ def run(args: argparse.Namespace) -> int:
                     runner=runner,
                     indices=grid.indices(),
                 )
+    flagged = [p for p in points if p.report is not None and p.report.warnings]
+    if flagged:
+        from twoball.verify.cli.main import warn
+
+        warn(
+            f"{len(flagged)} of {len(points)} points carry warnings (see --json), the first "
+            f"at {flagged[0].index}: {flagged[0].report.warnings[0]}"
+        )
     if plot is not None:
         plot_sweep(grid, points, plot)
     if args.json:

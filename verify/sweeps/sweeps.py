@@ -142,9 +142,13 @@ class SweepSolver:
     sigma: str = "lanczos"
     recontact: str = "window"
     t_end_s: float | None = None
+    #: the converged-series reference of the truncation guard (10 ms-1 s a point: off)
+    reference: bool = False
 
     def __call__(self, case: Case) -> LiftoffReport:
-        return legendre_liftoff(case, self.sigma, self.recontact, self.t_end_s)
+        return legendre_liftoff(
+            case, self.sigma, self.recontact, self.t_end_s, reference=self.reference
+        )
 
 
 @dataclass(frozen=True)
