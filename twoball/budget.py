@@ -473,3 +473,22 @@ def check_sweep(
 def check_count(option: str, count: float, bytes_each: float = 8.0) -> Estimate:
     """Refuse an array of ``count`` items (e.g. the values of ``--values``) that cannot fit."""
     return check(option, Estimate(BASE_MEMORY + bytes_each * count, 0.0))
+
+
+def check_frames(
+    option: str,
+    frames: int,
+    mesh: str = "sphere",
+    level: int | None = None,
+    order: int = 2,
+    modes: int = 30,
+    seconds_per_frame: float = 0.0,
+) -> Estimate:
+    """Refuse ``frames`` field frames on the mesh (export, render, plot) that cannot fit.
+
+    The mode count is the FE one, ``(N + 1)^2`` on the sphere (the Legendre
+    backend has fewer); ``seconds_per_frame`` is the drawing or writing of a frame.
+    """
+    nodes = fem_dofs(mesh, level, None, order)
+    pairs = (modes + 1) ** 2
+    return check(option, frames_estimate(frames, nodes, pairs, seconds_per_frame))

@@ -15,6 +15,7 @@ from twoball.modal.errors import ParameterError
 from twoball.modal.parameters import Case
 from twoball.verify.cli.case_options import add_case_options, case_from_options
 from twoball.verify.cli.console import console, key_value_table, number
+from twoball.verify.cli.main import warn
 from twoball.verify.output.fields import (
     BACKENDS,
     DEFAULT_FRAMES,
@@ -30,6 +31,8 @@ from twoball.verify.output.fields import (
     parse_times,
     window_s,
 )
+
+from twoball.budget import check_frames as check_frames_budget
 
 VALID_RANGES: dict[str, str] = {
     "--level": "an integer >= 0",
@@ -70,6 +73,18 @@ def add_mesh_options(parser: argparse.ArgumentParser, backend_choice: bool = Tru
             default="fem",
             help="which solver gives u, u_t, u_tt and the lift-off: fem (default) or legendre",
         )
+
+
+def mesh_notes(args: argparse.Namespace, case: Case, backend: str) -> list[str]:
+    """The mesh-resolution warning of the options' mesh (finite-element backend only)."""
+    if backend != "fem":
+        return []
+    from twoball.fem_membrane.guards import mesh_warnings
+    from twoball.modal.filters import SpectralFilter
+
+    kind = "ring" if args.mesh == "ring" else "sphere"
+    filter = SpectralFilter(args.sigma, case.modes)
+    return mesh_warnings(kind, args.level, None, args.order, filter)
 
 
 def check_backend(name: str) -> str:
@@ -138,6 +153,11 @@ def run(args: argparse.Namespace) -> int:
         raise ParameterError("--frames", "1 for a single .vtu file (or use --times T)", frames)
     if fmt == "vtu" and times is not None and len(times) != 1:
         raise ParameterError("--times", "exactly one time for a single .vtu file", args.times)
+    count = len(times) if times is not None else (frames or DEFAULT_FRAMES)
+    flag = "--times" if times is not None else "--frames"
+    check_frames_budget(
+        f"{flag} ({count} frames)", count, args.mesh, args.level, args.order, case.modes
+    )
     model = model_from_options(args, case=case)
     if fmt == "vtu" and times is None and frames is None:
         selected = liftoff_frame(model, args.backend)
@@ -148,6 +168,8 @@ def run(args: argparse.Namespace) -> int:
     series = field_series(model, selected, args.backend)
     files = write_series(out, series, fmt)
     report = model.backend(args.backend).report
+    for text in report.warnings + tuple(mesh_notes(args, case, args.backend)):
+        warn(text)
     rows = [
         ("file", str(files[0])),
         ("beside it", f"{len(files) - 1} file(s)" if len(files) > 1 else "-"),

@@ -8,7 +8,8 @@ from twoball.fem_membrane.export import check_output_path
 from twoball.modal.errors import ParameterError
 from twoball.verify.cli.case_options import add_case_options
 from twoball.verify.cli.console import console, key_value_table
-from twoball.verify.cli.export import add_mesh_options, model_from_options
+from twoball.verify.cli.export import add_mesh_options, mesh_notes, model_from_options
+from twoball.verify.cli.main import warn
 from twoball.verify.output.fields import BACKENDS, MAX_FRAMES
 from twoball.verify.output.plots import (
     PLOT_KINDS,
@@ -69,6 +70,10 @@ def run(args: argparse.Namespace) -> int:
         if isinstance(args.instants, int) and not 2 <= args.instants <= MAX_FRAMES:
             raise ParameterError("--instants", VALID_RANGES["--instants"], args.instants)
         model = model_from_options(args, parse_backends(args.backends))
+        for backend in model.backends.values():
+            notes = mesh_notes(args, model.case, backend.report.backend)
+            for text in backend.report.warnings + tuple(notes):
+                warn(f"{backend.report.backend}: {text}")
         if args.kind == "waterfall":
             figure = waterfall_figure(model, args.instants)
         else:
