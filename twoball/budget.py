@@ -22,7 +22,7 @@ Limits
     ``--max-time``.
 
 Calibration (peak RSS from ``resource.getrusage`` of a child process, wall time
-on the 2-core build machine; see ``benchmarks/bench_budget.py``; the
+on the 2-core build machine; ``benchmarks/bench_budget.py`` prints them; the
 estimates are meant to be right within a factor of 2-3, which is all a refusal
 needs):
 

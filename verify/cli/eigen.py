@@ -14,6 +14,11 @@ __all__ = ["VALID_RANGES", "register", "run"]
 
 def run(args: argparse.Namespace) -> int:
     """Run ``twoball eigen``."""
+    from twoball.budget import check, fem_dofs, fem_estimate, options
+
+    dofs = fem_dofs(args.mesh, args.level, args.elements, args.order)  # refuse absurd meshes
+    size = options(level=args.level, elements=args.elements, order=args.order)
+    check(size, fem_estimate(dofs, 30, "krylov"))
     rows = eigen_table(
         mesh=args.mesh, level=args.level, elements=args.elements, order=args.order, count=args.count
     )
