@@ -21,6 +21,11 @@ import os
 import subprocess
 import sys
 import textwrap
+from pathlib import Path
+
+ROOT = Path(__file__).resolve().parent.parent
+if str(ROOT) not in sys.path:
+    sys.path.insert(0, str(ROOT))
 
 WRAPPER = textwrap.dedent(
     """
@@ -40,7 +45,12 @@ def measure(code: str) -> tuple[float, float]:
     """Peak RSS [bytes] and CPU seconds of ``code`` in a fresh interpreter."""
     env = dict(os.environ, OPENBLAS_NUM_THREADS="1")
     done = subprocess.run(
-        [sys.executable, "-c", WRAPPER, code], env=env, capture_output=True, text=True, check=True
+        [sys.executable, "-c", WRAPPER, code],
+        cwd=ROOT,
+        env=env,
+        capture_output=True,
+        text=True,
+        check=True,
     )
     peak, seconds = done.stdout.split()[-2:]
     return float(peak), float(seconds)
