@@ -29,6 +29,8 @@ from twoball.modal.initial import _check_phi_a
 from twoball.modal.liftoff import DEFAULT_T_END, PoleMotion, SampledPoleMotion
 from twoball.modal.series import ModalSeries, check_damping
 
+from twoball.budget import check_fem
+
 from .alpha import GeneralizedAlpha, automatic_step
 from .build import build_space
 from .checks import (
@@ -103,6 +105,7 @@ def modal_model(
     filter = as_filter(filter)
     initial = check_choice("initial", initial, INITIAL_METHODS)
     seconds = {}
+    check_fem(mesh, level, elements, order, filter.modes, route)  # before any allocation
     start = clock.perf_counter()
     space = build_space(mesh, level=level, elements=elements, order=order, phi_a=phi_a)
     moments = initial_moments(space, phi_a, initial)
@@ -277,6 +280,8 @@ def fem_pole_motion(
         if route == "krylov":
             raise ParameterError("route", "full or auto when time is alpha", route)
         route = "full"  # time stepping needs the eigenvectors for damping and filtering
+    modes = as_filter(filter).modes
+    check_fem(mesh, level, elements, order, modes, route, time=time, dt=dt, t_end=t_end)
     model = modal_model(
         phi_a,
         damping,
@@ -296,6 +301,8 @@ def fem_pole_motion(
         "modes_used": int(np.count_nonzero(series.retained)),
         "modes_computed": len(series.omega),
         "mesh": space.name,
+        "mesh_kind": space.kind,
+        "omega_max": series.max_frequency,
         "order": space.order,
         "time_scheme": time,
         "damping_model": damping_model,

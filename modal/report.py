@@ -7,6 +7,7 @@ Legendre series and the finite elements are judged by one lift-off check.
 from __future__ import annotations
 
 import math
+from collections.abc import Sequence
 from dataclasses import dataclass, field
 from typing import Any
 
@@ -32,6 +33,9 @@ class LiftoffReport:
         Filter and re-contact horizon used.
     extra : dict
         Backend details (DOFs, modes used, mesh, ...), passed through to JSON.
+    warnings : tuple of str
+        Accuracy warnings (:mod:`twoball.modal.guards`, :mod:`twoball.fem_membrane.guards`):
+        empty when the result is inside its trustworthy regime.
     """
 
     case: Case
@@ -40,6 +44,7 @@ class LiftoffReport:
     sigma: str
     recontact: str
     extra: dict[str, Any] = field(default_factory=dict)
+    warnings: tuple[str, ...] = ()
 
     @property
     def notes(self) -> list[str]:
@@ -101,6 +106,7 @@ class LiftoffReport:
         }
         data.update(self.extra)
         data["notes"] = self.notes
+        data["warnings"] = list(self.warnings)
         return data
 
 
@@ -124,12 +130,30 @@ def report_liftoff(
     recontact: Horizon = "window",
     t_end_s: float | None = None,
     extra: dict[str, Any] | None = None,
+    warnings: Sequence[str] = (),
+    reference: bool = True,
 ) -> LiftoffReport:
-    """Apply the shared lift-off criteria to any backend's pole motion; report in SI."""
+    """Apply the shared lift-off criteria to any backend's pole motion; report in SI.
+
+    ``warnings`` come from the backend (time step, mesh); the closed-form guards
+    (:mod:`twoball.modal.guards`) add the re-contact window's and, with
+    ``reference``, the ``truncation`` block: the converged series beside the
+    N-result (~10 ms for the basketball, up to ~1 s for D -> 0, where the series
+    converges slowly).
+    """
     result = find_liftoff(
         motion, case.gamma, t_end=t_end_dimensionless(case, t_end_s), horizon=recontact
     )
-    return LiftoffReport(case, result, backend, sigma, recontact, dict(extra or {}))
+    extra, notes = dict(extra or {}), list(warnings)
+    from .guards import liftoff_guards, window_warnings
+
+    if reference:
+        found, block = liftoff_guards(case, result, backend, sigma)
+        notes += found
+        extra["truncation"] = block.as_dict()
+    else:
+        notes += window_warnings(case, result)
+    return LiftoffReport(case, result, backend, sigma, recontact, extra, tuple(notes))
 
 
 def legendre_liftoff(
@@ -137,9 +161,20 @@ def legendre_liftoff(
     sigma: FilterKind = "lanczos",
     recontact: Horizon = "window",
     t_end_s: float | None = None,
+    *,
+    reference: bool = True,
 ) -> LiftoffReport:
     """Lift-off of the closed-form CEM, eqs. (3.12)-(3.16) with criteria (i)-(ii) of §3(a)."""
+    from twoball.budget import check_series
+
+    check_series(case.modes, t_end_dimensionless(case, t_end_s), t_end_s)
     series = legendre_series(case.phi_a, case.damping, SpectralFilter(sigma, case.modes))
     return report_liftoff(
-        case, series, backend="legendre", sigma=sigma, recontact=recontact, t_end_s=t_end_s
+        case,
+        series,
+        backend="legendre",
+        sigma=sigma,
+        recontact=recontact,
+        t_end_s=t_end_s,
+        reference=reference,
     )

@@ -127,8 +127,25 @@ def solve(
         extra["dt_s"] = info["dt"] * case.scalings.time
     if "rayleigh" in info:
         extra["rayleigh"] = info["rayleigh"]
+    from twoball.fem_membrane.guards import fem_warnings
+
+    # a user's mesh has no level: its resolution is not estimated (time step still is)
+    warnings = fem_warnings(
+        info if loaded is None else {**info, "mesh_kind": None},
+        SpectralFilter(sigma, case.modes),
+        level=spec.level,
+        elements=spec.elements,
+        time_unit_s=case.scalings.time,
+    )
     return report_liftoff(
-        case, motion, backend="fem", sigma=sigma, recontact=recontact, t_end_s=t_end, extra=extra
+        case,
+        motion,
+        backend="fem",
+        sigma=sigma,
+        recontact=recontact,
+        t_end_s=t_end,
+        extra=extra,
+        warnings=warnings,
     )
 
 
@@ -147,9 +164,14 @@ def eigen(
     ``value``, ``exact``, ``relative_error``, ``multiplicity``,
     ``expected_multiplicity``), dimensionless.
     """
+    from twoball.budget import check, fem_dofs, fem_estimate, options
     from twoball.fem_membrane.eigen import eigen_table
 
     spec = MeshOptions.resolve(mesh, level=level, elements=elements, order=order, pole=pole)
+    if spec.kind != "file":  # refuse absurd meshes before building them
+        dofs = fem_dofs(spec.kind, spec.level, spec.elements, spec.order)
+        size = options(level=spec.level, elements=spec.elements, order=spec.order)
+        check(size, fem_estimate(dofs, 30, "krylov"))
     loaded = spec.load()
     if loaded is not None:
         return eigen_table(mesh=loaded.mesh, order=None, count=count)

@@ -38,10 +38,12 @@ class ExportResult:
     cell_type: str
     point_data: list[str]
     report: LiftoffReport
+    warnings: list[str] = field(default_factory=list)
 
     def as_dict(self) -> dict[str, Any]:
         """JSON-ready summary with the lift-off of the exported backend."""
         return {
+            "warnings": self.warnings,
             "files": [str(f) for f in self.files],
             "format": self.format,
             "times_s": self.times_s,
@@ -63,10 +65,12 @@ class RenderResult:
     warp: float
     backend: str
     report: LiftoffReport
+    warnings: list[str] = field(default_factory=list)
 
     def as_dict(self) -> dict[str, Any]:
         """JSON-ready summary."""
         return {
+            "warnings": self.warnings,
             "file": str(self.file),
             "times_s": self.times_s,
             "size": list(self.size),
@@ -84,10 +88,12 @@ class PlotResult:
     kind: str
     rows: list[tuple[str, str]] = field(default_factory=list)
     reports: dict[str, LiftoffReport] = field(default_factory=dict)
+    warnings: list[str] = field(default_factory=list)
 
     def as_dict(self) -> dict[str, Any]:
         """JSON-ready summary."""
         return {
+            "warnings": self.warnings,
             "file": str(self.file),
             "kind": self.kind,
             "rows": [list(r) for r in self.rows],
@@ -99,6 +105,31 @@ def _check_backend(backend: str) -> str:
     if backend not in FIELD_BACKENDS:
         raise ParameterError("backend", "one of " + ", ".join(FIELD_BACKENDS), backend)
     return backend
+
+
+def field_warnings(model: Any, backend: str, order: int | None, level: int | None) -> list[str]:
+    """Accuracy warnings of ``backend``'s fields: its lift-off's, and the FE mesh resolution."""
+    warnings = list(model.backend(backend).report.warnings)
+    if backend == "fem":
+        from twoball.fem_membrane.guards import mesh_warnings
+
+        kind = "ring" if model.mesh.ring is not None else "sphere"
+        order = MeshOptions.resolve(None, level=level, order=order).order
+        warnings += mesh_warnings(kind, level, None, order, model.backend(backend).series.filter)
+    return warnings
+
+
+def check_frame_budget(
+    case: Case, count: int, name: str, level: int | None, order: int | None
+) -> None:
+    """Refuse ``count`` frames on the mesh when their memory or time cannot fit (budget)."""
+    from twoball.budget import check_frames
+    from twoball.verify.output.fields import MAX_FRAMES
+
+    if count > MAX_FRAMES:  # the same cap for frames, times and instants
+        raise ParameterError(name, f"at most {MAX_FRAMES} instants", f"{count} instants")
+    spec = MeshOptions.resolve(None, level=level, order=order)
+    check_frames(f"{name} ({count} frames)", count, "sphere", spec.level, spec.order, case.modes)
 
 
 def ball_model_of(
@@ -175,6 +206,7 @@ def export(
     from twoball.fem_membrane.export import series_format, write_series
     from twoball.staging import check_file
     from twoball.verify.output.fields import (
+        DEFAULT_FRAMES,
         check_frames,
         check_times,
         field_series,
@@ -197,6 +229,10 @@ def export(
         raise ParameterError("frames", "1 for a single .vtu file (or give one time)", frames)
     if fmt == "vtu" and times is not None and len(times) != 1:
         raise ParameterError("times", "exactly one time for a single .vtu file", list(times))
+    if times is not None:
+        check_frame_budget(case, len(times), "times", level, order)
+    else:
+        check_frame_budget(case, frames or DEFAULT_FRAMES, "frames", level, order)
     model = ball_model_of(
         case,
         FIELD_BACKENDS,
@@ -225,6 +261,7 @@ def export(
         cell_type=series.cell_type,
         point_data=list(series.point_data),
         report=model.backend(backend).report,
+        warnings=field_warnings(model, backend, order, level),
     )
 
 
@@ -300,6 +337,9 @@ def render(
     times = None
     if time is not None:
         times = check_times(window(case, t_end), [time], "time")
+    if kind != ".png":
+        count = DEFAULT_ANIMATION_FRAMES if frames is None else frames
+        check_frame_budget(case, count, "frames", level, order)
     model = ball_model_of(
         case,
         (backend,),
@@ -326,6 +366,7 @@ def render(
         warp=float(scene.auto_warp() if warp is None else warp),
         backend=backend,
         report=model.backend(backend).report,
+        warnings=field_warnings(model, backend, order, level),
     )
 
 
@@ -379,6 +420,7 @@ def plot(
     target = check_file(out)
     rows: list[tuple[str, str]] = []
     reports: dict[str, LiftoffReport] = {}
+    warnings: list[str] = []
     if kind == "eigen":
         for name, value in (
             ("mesh", mesh),
@@ -395,6 +437,9 @@ def plot(
         instants = WATERFALL_INSTANTS if instants is None else instants
         if isinstance(instants, bool) or not isinstance(instants, int) or instants < 2:
             raise ParameterError("instants", "an integer >= 2", instants)
+        check_frame_budget(
+            Case.preset("basketball") if case is None else case, instants, "instants", level, order
+        )
         chosen = tuple(dict.fromkeys(backends))
         if not chosen or any(b not in FIELD_BACKENDS for b in chosen):
             raise ParameterError("backends", "a list of fem, legendre", list(backends))
@@ -413,10 +458,11 @@ def plot(
         for name, solved in model.backends.items():
             report = solved.report
             reports[name] = report
+            warnings += [f"{name}: {text}" for text in field_warnings(model, name, order, level)]
             if report.result.lifted:
                 text = f"{report.t_liftoff_s * 1e3:.3f} ms, {report.v_liftoff_m_s:.4f} m/s"
             else:
                 text = "no lift-off"
             rows.append((f"lift-off ({name})", text))
     save_figure(figure, target)
-    return PlotResult(target, kind, rows, reports)
+    return PlotResult(target, kind, rows, reports, warnings)

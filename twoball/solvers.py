@@ -6,6 +6,7 @@ functions, so the same inputs give bit-identical numbers in Python and in a shel
 
 from __future__ import annotations
 
+import math
 from collections.abc import Callable, Mapping, Sequence
 from dataclasses import dataclass
 from typing import Any
@@ -156,6 +157,8 @@ def sweep(
     """
     import numpy as np
 
+    from twoball.budget import check_sweep
+    from twoball.modal.report import t_end_dimensionless
     from twoball.verify.sweeps.parallel import MIN_PARALLEL_ITEMS, Runner, check_workers
     from twoball.verify.sweeps.sweeps import SWEEP_PARAMETERS, SweepGrid, SweepSolver, run_sweep
 
@@ -176,6 +179,8 @@ def sweep(
             raise ParameterError(f"values[{name!r}]", "a non-empty list of finite numbers", items)
         arrays.append(array)
     grid = SweepGrid(parameters, tuple(arrays))
+    modes = int(max(arrays[parameters.index("modes")])) if "modes" in parameters else case.modes
+    check_sweep(math.prod(grid.shape), modes, t_end_dimensionless(case, t_end), workers)
     cases = grid.cases(case)
     workers = check_workers(workers)
     if len(cases) < MIN_PARALLEL_ITEMS:

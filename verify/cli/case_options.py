@@ -20,6 +20,8 @@ VALID_RANGES: dict[str, str] = {
     "--damping": "a number in [0, 1)",
     "--modes": "an integer >= 1",
     "--t-end": "a number > 0 [s]",
+    "--max-memory": "a size > 0 such as 12GiB, 500MB or 2e9 (bytes)",
+    "--max-time": "a duration > 0 such as 3600, 90min or 2h",
 }
 
 
@@ -55,6 +57,9 @@ def add_case_options(parser: argparse.ArgumentParser) -> None:
     model.add_argument(
         "--t-end", type=float, metavar="SECONDS", help="modelled window [s] (default 4 pi / c)"
     )
+    limits = parser.add_argument_group("resource limits (refused before the work starts)")
+    limits.add_argument("--max-memory", metavar="SIZE", help="e.g. 8GiB (default: half the RAM)")
+    limits.add_argument("--max-time", metavar="DURATION", help="e.g. 90min (default: 5min)")
 
 
 def case_from_options(args: argparse.Namespace) -> Case:
@@ -64,6 +69,9 @@ def case_from_options(args: argparse.Namespace) -> Case:
     follows the rule of :class:`~twoball.modal.parameters.Case`: ``--phi-a`` if
     given, else the preset's measured angle at its own R, c, |v0|, else eq. (3.7).
     """
+    from twoball.budget import Budget, set_budget
+
+    set_budget(Budget.from_options(args.max_memory, args.max_time))
     if (args.pressure is None) != (args.mass is None):
         raise ParameterError("--pressure/--mass", "given together")
     if args.pressure is not None and args.wave_speed is not None:

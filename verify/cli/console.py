@@ -9,6 +9,7 @@ from __future__ import annotations
 
 import json
 import sys
+from collections.abc import Sequence
 from typing import TYPE_CHECKING, Any
 
 if TYPE_CHECKING:
@@ -55,3 +56,12 @@ def print_notes(notes: list[str]) -> None:
     """Print each note on standard error (``twoball: note: ...``), apart from the results."""
     for note in notes:
         sys.stderr.write(f"twoball: note: {note}\n")
+
+
+def print_warnings(warnings: Sequence[str]) -> None:
+    """Print each accuracy warning on standard error (``twoball: warning: ...``).
+
+    The same texts are in the result's JSON ``warnings`` list; the run goes on.
+    """
+    for text in warnings:
+        sys.stderr.write(f"twoball: warning: {text}\n")

@@ -9,7 +9,7 @@ import argparse
 
 from twoball.fem_membrane.export import FORMATS
 from twoball.verify.cli.case_options import add_case_options, case_from_options
-from twoball.verify.cli.console import console, key_value_table, number, print_notes
+from twoball.verify.cli.console import console, key_value_table, number, print_notes, print_warnings
 from twoball.verify.cli.mesh_options import SPHERE_KINDS, add_mesh_options, mesh_arguments
 from twoball.verify.cli.mesh_options import VALID_RANGES as MESH_RANGES
 from twoball.verify.output.fields import DEFAULT_FRAMES, MAX_FRAMES, parse_times
@@ -59,6 +59,7 @@ def run(args: argparse.Namespace) -> int:
     )
     files, report, selected = result.files, result.report, result.times_s
     print_notes(report.notes)
+    print_warnings(result.warnings)
     rows = [
         ("file", str(files[0])),
         ("beside it", f"{len(files) - 1} file(s)" if len(files) > 1 else "-"),

@@ -15,6 +15,7 @@ from twoball.verify.cli.console import (
     number,
     print_json,
     print_notes,
+    print_warnings,
 )
 from twoball.verify.cli.mesh_options import (
     VALID_RANGES,
@@ -45,6 +46,12 @@ def liftoff_rows(report: LiftoffReport) -> list[tuple[str, str]]:
         ("v_l / |v0|", number(report.ratio)),
         ("rejected candidates", str(len(report.result.rejected))),
     ]
+    block = report.extra.get("truncation") or {}
+    if block.get("t_liftoff_s") is not None:
+        name = f"converged series (N = {block['converged_modes']})"
+        rows.append((f"t_l [ms], {name}", number(block["t_liftoff_s"], 1e3)))
+        rows.append((f"v_l [m/s], {name}", number(block["v_liftoff_m_s"])))
+    rows += [("warning", text) for text in report.warnings]
     for key, value in report.extra.items():
         if isinstance(value, float):
             rows.append((key, f"{value:.4g}"))
@@ -78,6 +85,7 @@ def run(args: argparse.Namespace) -> int:
     """Run ``twoball liftoff``."""
     report = solve_from_options(args)
     print_notes(report.notes)
+    print_warnings(report.warnings)
     if args.json:
         print_json(report.as_dict())
     else:

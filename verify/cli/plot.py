@@ -9,7 +9,7 @@ import argparse
 
 from twoball.modal.errors import ParameterError
 from twoball.verify.cli.case_options import add_case_options, case_from_options
-from twoball.verify.cli.console import console, key_value_table, print_notes
+from twoball.verify.cli.console import console, key_value_table, print_notes, print_warnings
 from twoball.verify.cli.mesh_options import SPHERE_KINDS, add_mesh_options, mesh_arguments
 from twoball.verify.cli.mesh_options import VALID_RANGES as MESH_RANGES
 from twoball.verify.output.fields import BACKENDS
@@ -73,6 +73,7 @@ def run(args: argparse.Namespace) -> int:
         case = next(iter(result.reports.values())).case
         print_notes(next(iter(result.reports.values())).notes)
         rows.append(("phi_a from", str(case.phi_a_source)))
+    print_warnings(result.warnings)
     console().print(key_value_table("Plot", rows))
     return 0
 

@@ -10,7 +10,7 @@ import argparse
 from twoball.fem_membrane.render import DEFAULT_SIZE, check_warp
 from twoball.modal.errors import ParameterError
 from twoball.verify.cli.case_options import add_case_options, case_from_options
-from twoball.verify.cli.console import console, key_value_table, print_notes
+from twoball.verify.cli.console import console, key_value_table, print_notes, print_warnings
 from twoball.verify.cli.export import add_backend_option
 from twoball.verify.cli.mesh_options import SPHERE_KINDS, add_mesh_options, mesh_arguments
 from twoball.verify.cli.mesh_options import VALID_RANGES as MESH_RANGES
@@ -57,6 +57,7 @@ def run(args: argparse.Namespace) -> int:
     )
     times = result.times_s
     print_notes(result.report.notes)
+    print_warnings(result.warnings)
     rows = [
         ("file", str(result.file)),
         ("frames", str(len(times))),

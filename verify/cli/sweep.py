@@ -5,7 +5,14 @@ from __future__ import annotations
 import argparse
 
 from twoball.verify.cli.case_options import add_case_options, case_from_options
-from twoball.verify.cli.console import Table, console, number, print_json, print_notes
+from twoball.verify.cli.console import (
+    Table,
+    console,
+    number,
+    print_json,
+    print_notes,
+    print_warnings,
+)
 from twoball.verify.sweeps.parallel import VALID_RANGES as PARALLEL_RANGES
 from twoball.verify.sweeps.parallel import check_workers
 from twoball.verify.sweeps.sweeps import (
@@ -95,6 +102,7 @@ def run(args: argparse.Namespace) -> int:
             )
     points = result.points
     print_notes(sweep_notes(points))
+    print_warnings(sweep_warnings(points))
     if plot is not None:
         plot_sweep(grid, points, plot)
     if args.json:
@@ -113,6 +121,17 @@ def sweep_notes(points: list[SweepPoint]) -> list[str]:
         return notes
     why = notes[0].split("; ", 1)[-1]
     return [f"phi_a from eq. (3.7) at {len(notes)} of {len(points)} points; {why}"]
+
+
+def sweep_warnings(points: list[SweepPoint]) -> list[str]:
+    """One warning for the whole sweep: how many points carry accuracy warnings, the first."""
+    flagged = [p for p in points if p.report is not None and p.report.warnings]
+    if not flagged:
+        return []
+    return [
+        f"{len(flagged)} of {len(points)} points carry warnings (see --json), the first "
+        f"at {flagged[0].index}: {flagged[0].report.warnings[0]}"
+    ]
 
 
 def console_err():

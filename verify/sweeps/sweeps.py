@@ -55,6 +55,9 @@ def parse_range(text: str, name: str = "--values") -> np.ndarray:
         raise ParameterError(name, valid, text)
     if count == 1 and start != stop:
         raise ParameterError(name, valid + " (COUNT 1 needs START = STOP)", text)
+    from twoball.budget import check_count
+
+    check_count(f"{name} {text}", count)  # before numpy allocates COUNT values
     return np.linspace(start, stop, count)
 
 
@@ -138,9 +141,13 @@ class SweepSolver:
     sigma: str = "lanczos"
     recontact: str = "window"
     t_end_s: float | None = None
+    #: the converged-series reference of the truncation guard (10 ms-1 s a point: off)
+    reference: bool = False
 
     def __call__(self, case: Case) -> LiftoffReport:
-        return legendre_liftoff(case, self.sigma, self.recontact, self.t_end_s)
+        return legendre_liftoff(
+            case, self.sigma, self.recontact, self.t_end_s, reference=self.reference
+        )
 
 
 @dataclass(frozen=True)
