@@ -135,7 +135,10 @@ def test_unwritable_output_leaves_nothing(model, tmp_path):
 
 # --------------------------------------------------------------------------- command line
 def test_cli_render_png_without_display_is_quiet(tmp_path):
-    """A fresh interpreter with no DISPLAY: no X attempt, nothing on stderr."""
+    """A fresh interpreter with no DISPLAY: no X attempt; stderr holds only twoball's warnings.
+
+    Level 1 is far too coarse for the N = 30 modes, so the accuracy warnings must be there.
+    """
     out = tmp_path / "ball.png"
     env = {k: v for k, v in os.environ.items() if k not in ("DISPLAY", "VTK_DEFAULT_OPENGL_WINDOW")}
     root = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
@@ -150,7 +153,9 @@ def test_cli_render_png_without_display_is_quiet(tmp_path):
         cwd=tmp_path,
     )
     assert proc.returncode == 0, proc.stderr
-    assert proc.stderr == ""
+    lines = proc.stderr.splitlines()
+    assert lines and all(line.startswith("twoball: warning: ") for line in lines), proc.stderr
+    assert any("under-resolves" in line for line in lines)
     assert iio.imread(out).shape[:2] == (150, 200)
 
 

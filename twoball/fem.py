@@ -94,6 +94,21 @@ def solve(
         from twoball.fem_membrane.checks import check_dt
 
         dt_scaled = check_dt(dt) / case.scalings.time
+    if spec.kind != "file":  # the budget in the user's units (the model layer checks again)
+        from twoball.budget import check_fem
+
+        check_fem(
+            spec.kind,
+            spec.level,
+            spec.elements,
+            spec.order,
+            case.modes,
+            "auto" if route is None else route,
+            time=time,
+            dt=dt_scaled,
+            t_end=t_end_dimensionless(case, t_end),
+            time_unit_s=case.scalings.time,
+        )
     started = clock.perf_counter()
     loaded = spec.load()  # the user's mesh, checked, on the unit sphere (None for a kind)
     motion, info = fem_pole_motion(

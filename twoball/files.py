@@ -127,7 +127,10 @@ def check_frame_budget(
     from twoball.verify.output.fields import MAX_FRAMES
 
     if count > MAX_FRAMES:  # the same cap for frames, times and instants
-        raise ParameterError(name, f"at most {MAX_FRAMES} instants", f"{count} instants")
+        if name in ("instants", "frames"):  # a count
+            low = 2 if name == "instants" else 1
+            raise ParameterError(name, f"an integer in [{low}, {MAX_FRAMES}]", count)
+        raise ParameterError(name, f"at most {MAX_FRAMES} {name}", f"{count} {name}")
     spec = MeshOptions.resolve(None, level=level, order=order)
     check_frames(f"{name} ({count} frames)", count, "sphere", spec.level, spec.order, case.modes)
 
