@@ -135,7 +135,8 @@ def test_icm_table1_rows_1_to_3_match(capsys):
         assert row["ours_v1_rounded"] == row["icm_v1"]
     assert any(r["v1_differs"] or r["v2_differs"] for r in rows[3:])
     code, out, _ = run(capsys, "icm", "--table1")
-    assert code == 0 and "DIFFERS" in out
+    assert code == 0 and "DIFFERS" in out and "Table 1 recomputed" in out
+    assert "0.488 *" in out and "1.516 *" not in out
 
 
 def test_icm_single_case(capsys):
