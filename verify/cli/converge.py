@@ -101,14 +101,14 @@ def register(parser: argparse.ArgumentParser) -> None:
     )
     parser.add_argument(
         "--levels",
-        metavar="A:B",
-        help="refinement levels A..B (sphere: icosphere level; axisym: 25 * 2^level "
-        "elements; dt: dt = dt0 / 2^level)",
+        metavar="LIST",
+        help="consecutive refinement levels, e.g. 2:5 or 2,3,4,5 (sphere: icosphere "
+        "level; axisym: 25 * 2^level elements; dt: dt = dt0 / 2^level)",
     )
     parser.add_argument(
         "--modes-list",
-        metavar="N1,N2,..|NMIN:NMAX",
-        help="mode counts of --study modes (default 30:480, doubling)",
+        metavar="LIST",
+        help="mode counts of --study modes, 3 to 16 increasing (default 30,60,120,240,480)",
     )
     add_case_options(parser)
     parser.add_argument(

@@ -23,18 +23,13 @@ VALID_RANGES: dict[str, str] = {
 
 
 def parse_list(text: str, flag: str, valid: str, allowed: set[int] | None = None) -> list[int]:
-    """Comma-separated integers (e.g. ``--levels 2,3``)."""
-    try:
-        values = [int(p) for p in str(text).split(",")]
-    except ValueError:
-        raise ParameterError(flag, valid, text) from None
-    if (
-        not values
-        or any(v < 0 for v in values)
-        or (allowed and any(v not in allowed for v in values))
-    ):
+    """Integers in the one list syntax (e.g. ``--levels 2,3`` or ``--levels 1:3``)."""
+    from twoball.ranges import parse_values
+
+    values = parse_values(text, flag, integer=True, valid=valid)
+    if any(v < 0 for v in values) or (allowed and any(v not in allowed for v in values)):
         raise ParameterError(flag, valid, text)
-    return sorted(set(values))
+    return sorted(set(int(v) for v in values))
 
 
 def parse_backends(text: str) -> tuple[str, ...]:

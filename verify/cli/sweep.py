@@ -161,8 +161,8 @@ def register(parser: argparse.ArgumentParser) -> None:
         "--values",
         required=True,
         action="append",
-        metavar="START:STOP:COUNT",
-        help="values of the matching --param (same order)",
+        metavar="LIST",
+        help="values of the matching --param (same order): START:STOP:COUNT or v1,v2,...",
     )
     parser.add_argument(
         "--plot",
