@@ -271,7 +271,7 @@ def test_api_errors_name_parameters(call, name):
         (["liftoff", "--level", "2"], "--level must be left out with backend legendre"),
         (["liftoff", "--backend", "fem", "--mesh", "axisym", "--level", "2"], "--level must be"),
         (["liftoff", "--backend", "fem", "--elements", "50"], "--elements must be left out"),
-        (["liftoff", "--backend", "fem", "--dt", "1e-5"], "--dt must be left out with time modal"),
+        (["liftoff", "--backend", "fem", "--dt", "1e-5"], "--dt must be left out with scheme"),
         (["eigen", "--mesh", "sphere", "--elements", "9"], "--elements must be left out"),
         (["liftoff", "--phi-a", "3.5"], "--phi-a must be in (pi/2, pi)"),
     ],

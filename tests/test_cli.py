@@ -194,7 +194,7 @@ def test_fem_liftoff_json_adds_backend_details(capsys):
 
 def test_fem_alpha_liftoff_with_step_in_seconds(capsys):
     argv = ["liftoff", "--backend", "fem", "--mesh", "axisym", "--elements", "100"]
-    code, out, _ = run(capsys, *argv, "--time", "alpha", "--dt", "2e-6", "--json")
+    code, out, _ = run(capsys, *argv, "--scheme", "alpha", "--dt", "2e-6", "--json")
     data = json.loads(out)
     assert code == 0 and data["time_scheme"] == "alpha"
     assert data["dt_s"] == pytest.approx(2e-6)
@@ -219,7 +219,7 @@ def test_eigen_json_lists_clusters(capsys):
         (["liftoff", "--backend", "fem", "--dt", "-1e-5"], "--dt"),
         (["liftoff", "--backend", "fem", "--mesh", "axisym", "--elements", "1"], "--elements"),
         (["liftoff", "--backend", "fem", "--mesh", "cube"], "--mesh"),
-        (["liftoff", "--backend", "fem", "--time", "euler"], "--time"),
+        (["liftoff", "--backend", "fem", "--scheme", "euler"], "--scheme"),
         (["liftoff", "--backend", "fem", "--damping-model", "viscous"], "--damping-model"),
         (["liftoff", "--backend", "spectral"], "--backend"),
         (["eigen", "--level", "-2"], "--level"),

@@ -3,8 +3,9 @@
 import numpy as np
 import pytest
 from twoball.modal.errors import ParameterError
-from twoball.ranges import join_negative_values, parse_values
 from twoball.verify.cli.main import main
+
+from twoball.ranges import join_negative_values, parse_values
 
 
 @pytest.mark.parametrize(

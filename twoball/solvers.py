@@ -33,7 +33,7 @@ def liftoff(
     elements: int | None = None,
     order: int | None = None,
     pole: Any = None,
-    time: str | None = None,
+    scheme: str | None = None,
     dt: float | None = None,
     route: str | None = None,
     damping_model: str | None = None,
@@ -53,7 +53,7 @@ def liftoff(
         Re-contact horizon of criterion (ii), §3(a).
     t_end : float, optional
         Modelled window [s] (default 4 pi / c).
-    mesh, level, elements, order, pole, time, dt, route, damping_model
+    mesh, level, elements, order, pole, scheme, dt, route, damping_model
         Finite-element options (see :func:`twoball.fem.solve`; ``mesh`` may be a
         kind name or the user's mesh: a file path, ``meshio.Mesh`` or ``MeshTri``);
         refused with ``backend="legendre"``.
@@ -73,7 +73,7 @@ def liftoff(
         "elements": elements,
         "order": order,
         "pole": pole,
-        "time": time,
+        "scheme": scheme,
         "dt": dt,
         "route": route,
         "damping_model": damping_model,

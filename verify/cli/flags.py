@@ -37,6 +37,7 @@ FLAGS: dict[str, str] = {
     "elements": "--elements",
     "order": "--order",
     "time": "--time",
+    "scheme": "--scheme",
     "dt": "--dt",
     "route": "--route",
     "damping_model": "--damping-model",
