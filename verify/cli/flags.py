@@ -30,7 +30,7 @@ FLAGS: dict[str, str] = {
     "recontact": "--recontact",
     "t_end": "--t-end",
     "backend": "--backend",
-    "backends": "--backends",
+    "backends": "--backend",
     # finite elements
     "mesh": "--mesh",
     "level": "--level",

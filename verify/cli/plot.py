@@ -33,10 +33,10 @@ def parse_list(text: str, flag: str, valid: str, allowed: set[int] | None = None
 
 
 def parse_backends(text: str) -> tuple[str, ...]:
-    """``--backends``: comma-separated names among fem, legendre."""
+    """``--backend``: one of fem, legendre, or both comma-separated."""
     names = tuple(dict.fromkeys(p.strip() for p in str(text).split(",")))
     if not names or any(n not in BACKENDS for n in names):
-        raise ParameterError("--backends", "a comma-separated list of fem, legendre", text)
+        raise ParameterError("--backend", "fem, legendre or fem,legendre", text)
     return names
 
 
@@ -56,7 +56,7 @@ def run(args: argparse.Namespace) -> int:
             args.kind,
             args.out,
             case_from_options(args),
-            backends=parse_backends(args.backends),
+            backends=parse_backends(args.backend),
             instants=args.instants,
             sigma=args.sigma,
             recontact=args.recontact,
@@ -84,7 +84,9 @@ def register(parser: argparse.ArgumentParser) -> None:
     add_case_options(parser)
     add_mesh_options(parser, SPHERE_KINDS, initial=True, files=False)
     parser.add_argument(
-        "--backends", default="fem,legendre", help="solvers drawn (default fem,legendre)"
+        "--backend",
+        default="fem,legendre",
+        help="solvers drawn: fem, legendre or both (default fem,legendre)",
     )
     parser.add_argument(
         "--instants",
