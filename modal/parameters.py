@@ -272,7 +272,7 @@ class Case:
             "radius_m": self.radius,
             "wave_speed_1_s": self.wave_speed,
             "v0_m_s": self.v0,
-            "phi_a": self.phi_a,
+            "phi_a_rad": self.phi_a,
             "phi_a_source": self.phi_a_source,
             "damping": self.damping,
             "modes": self.modes,

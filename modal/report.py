@@ -90,7 +90,7 @@ class LiftoffReport:
             "t_liftoff_s": self.t_liftoff_s,
             "v_liftoff_m_s": self.v_liftoff_m_s,
             "ratio": self.ratio,
-            "phi_a": self.case.phi_a,
+            "phi_a_rad": self.case.phi_a,
             "phi_a_source": self.case.phi_a_source,
             "gamma": self.case.gamma,
             "backend": self.backend,

@@ -76,7 +76,7 @@ def test_default_is_the_basketball_preset_with_its_pinned_numbers(capsys):
     assert result.v_liftoff_m_s == pytest.approx(3.8322, abs=5e-5)
     assert twoball.liftoff().as_dict() == result.as_dict()
     cli, err = cli_json(capsys, "liftoff", "--v0", "4.1")
-    assert cli["phi_a_source"] == "measured (basketball)" and cli["phi_a"] == 2.6
+    assert cli["phi_a_source"] == "measured (basketball)" and cli["phi_a_rad"] == 2.6
     assert err == ""  # the preset's own value: nothing to note
 
 

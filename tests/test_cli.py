@@ -20,7 +20,7 @@ def test_liftoff_json_contract(capsys):
     code, out, _ = run(capsys, "liftoff", "--json")
     data = json.loads(out)
     assert code == 0
-    for key in ("lifted", "t_liftoff_s", "v_liftoff_m_s", "ratio", "phi_a", "gamma", "backend"):
+    for key in ("lifted", "t_liftoff_s", "v_liftoff_m_s", "ratio", "phi_a_rad", "gamma", "backend"):
         assert key in data
     assert data["backend"] == "legendre" and data["lifted"] is True
     assert data["t_liftoff_s"] == pytest.approx(0.0099, rel=0.01)
@@ -37,7 +37,7 @@ def test_v0_without_phi_a_uses_eq_3_7(capsys):
     # a speed other than the preset's own: phi_a from eq. (3.7), checked by the forward formula
     _, out, err = run(capsys, "liftoff", "--v0", "-3", "--json")
     data = json.loads(out)
-    c = math.cos(data["phi_a"])
+    c = math.cos(data["phi_a_rad"])
     v0 = 0.12 * 320 * math.sqrt((-1 + 2 * c**3 + 3 * c**2) / (6 * c))  # eq. (3.7)
     assert v0 == pytest.approx(3.0, rel=1e-12)
     assert data["phi_a_source"] == "eq. (3.7)"
@@ -62,7 +62,7 @@ def test_sweep_json_in_order(capsys):
     code, out, _ = run(capsys, "sweep", "--param", "v0", "--values", "2:8:4", "--json")
     data = json.loads(out)
     assert code == 0 and [d["v0_m_s"] for d in data] == pytest.approx([2, 4, 6, 8])
-    assert len({d["phi_a"] for d in data}) == 4  # phi_a re-derived per value
+    assert len({d["phi_a_rad"] for d in data}) == 4  # phi_a re-derived per value
 
 
 def test_sweep_modes(capsys):

@@ -30,7 +30,7 @@ def print_study(study: StudyResult, out: Path) -> None:
     out_console = console(wide=True)
     out_console.print(table)
     settings = study.settings
-    out_console.print(f"phi_a = {settings['phi_a']:.6f} rad ({settings['phi_a_source']})")
+    out_console.print(f"phi_a = {settings['phi_a_rad']:.6f} rad ({settings['phi_a_source']})")
     for note in study.notes:
         out_console.print("* " + note)
     verdict = "PASS" if study.passed else "FAIL"

@@ -186,7 +186,7 @@ class SweepPoint:
                 "t_liftoff_s": None,
                 "v_liftoff_m_s": None,
                 "ratio": None,
-                "phi_a": c.phi_a,
+                "phi_a_rad": c.phi_a,
                 "phi_a_source": c.phi_a_source,
                 "radius_m": c.radius,
                 "wave_speed_1_s": c.wave_speed,
