@@ -91,9 +91,9 @@ def solve(
         raise ParameterError("route", "full or auto with time alpha", route)
     dt_scaled = None
     if dt is not None:
-        from twoball.fem_membrane.checks import check_dt
+        from twoball.fem_membrane.checks import check_dt_in_window
 
-        dt_scaled = check_dt(dt) / case.scalings.time
+        dt_scaled = check_dt_in_window(dt, case.scalings.time, t_end_dimensionless(case, t_end))
     if spec.kind != "file":  # the budget in the user's units (the model layer checks again)
         from twoball.budget import check_fem
 

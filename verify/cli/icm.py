@@ -22,6 +22,11 @@ def run(args: argparse.Namespace) -> int:
     """Run ``twoball icm``."""
     out = console(wide=True)
     if args.table1:
+        for flag in ("mu", "e2", "e12", "dx", "drop_height"):
+            if getattr(args, flag) is not None:
+                raise ParameterError(
+                    flag, "left out with --table1 (its rows fix them)", getattr(args, flag)
+                )
         checks = icm.table1_check()
         if args.json:
             rows = [

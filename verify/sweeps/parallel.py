@@ -143,12 +143,16 @@ class Runner:
     ----------
     workers : int, optional
         Local worker processes (default: all cores); 1 means strictly serial.
-        Ignored when ``scheduler`` is given (the cluster decides).
+        Refused together with ``scheduler`` (the cluster decides).
     scheduler : str, optional
         Address of a running ``dask.distributed`` scheduler.
     """
 
     def __init__(self, workers: int | None = None, scheduler: str | None = None) -> None:
+        if scheduler and workers is not None:
+            raise ParameterError(
+                "--workers", "left out with --scheduler (the cluster decides)", workers
+            )
         self.workers = check_workers(workers)
         self.scheduler = scheduler
         self._pool: ProcessPoolExecutor | None = None
