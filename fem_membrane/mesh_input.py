@@ -25,8 +25,8 @@ from __future__ import annotations
 
 import contextlib
 import io
-import warnings
 import os
+import warnings
 from collections.abc import Sequence
 from dataclasses import dataclass, field, replace
 from pathlib import Path

@@ -6,7 +6,6 @@ Legendre series and the finite elements are judged by one lift-off check.
 
 from __future__ import annotations
 
-import math
 from collections.abc import Sequence
 from dataclasses import dataclass, field
 from typing import Any

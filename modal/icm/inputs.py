@@ -7,7 +7,6 @@ Every check returns the value as a float or raises
 
 from __future__ import annotations
 
-
 from ..errors import ParameterError, real_number
 
 
