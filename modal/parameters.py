@@ -128,7 +128,7 @@ def wave_speed_from_pressure(pressure: float, mass: float, radius: float) -> flo
     if not (low <= wave_speed <= high):
         raise ParameterError(
             "pressure",
-            f"such that c = sqrt(2 pi P R / m) / R is in [{low:g}, {high:g}] 1/s "
+            f"such that c = sqrt(2 pi P R / m) is in [{low:g}, {high:g}] 1/s "
             f"(m = {mass:g} kg, R = {radius:g} m)",
             pressure,
         )

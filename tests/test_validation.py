@@ -18,7 +18,6 @@ import sys
 from pathlib import Path
 
 import pytest
-
 import validation_table as table
 from twoball.verify.cli.main import COMMANDS, full_parser
 

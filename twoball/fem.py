@@ -8,6 +8,7 @@ inside, the shared lift-off criteria of §3(a) out, as the same
 from __future__ import annotations
 
 import time as clock
+from numbers import Integral
 from typing import Any
 
 from twoball.mesh_options import MeshOptions
@@ -183,6 +184,8 @@ def eigen(
     from twoball.fem_membrane.eigen import eigen_table
 
     spec = MeshOptions.resolve(mesh, level=level, elements=elements, order=order, pole=pole)
+    if isinstance(count, bool) or not isinstance(count, Integral) or count < 1:
+        raise ParameterError("count", "an integer >= 1", count)
     if spec.kind != "file":  # refuse absurd meshes before building them
         dofs = fem_dofs(spec.kind, spec.level, spec.elements, spec.order)
         size = options(level=spec.level, elements=spec.elements, order=spec.order)

@@ -390,7 +390,10 @@ def render(
     MeshOptions.resolve(mesh, level=level, order=order, kinds=SPHERE_KINDS, files=False)
     times = None
     if time is not None:
-        times = check_times(window(case, t_end), [time], "time")
+        from twoball.modal.errors import real_number
+
+        valid = "a time >= 0 in seconds within the modelled window"
+        times = check_times(window(case, t_end), [real_number("time", time, valid)], "time")
     if kind != ".png":
         count = DEFAULT_ANIMATION_FRAMES if frames is None else frames
         check_frame_budget(case, count, "frames", level, order)

@@ -169,6 +169,8 @@ def sweep(
     if scheduler and workers is not None:
         raise ParameterError("workers", "left out with scheduler (the cluster decides)", workers)
     workers = 1 if workers is None and not scheduler else workers
+    if workers is not None:
+        check_workers(workers)  # its type and range, before the budget compares it
     if not isinstance(values, Mapping) or not 1 <= len(values) <= 2:
         raise ParameterError("values", "a mapping of one or two parameters to values", values)
     parameters = tuple(_sweep_name(k) for k in values)
