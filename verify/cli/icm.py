@@ -10,11 +10,11 @@ from twoball.modal.errors import ParameterError
 from twoball.verify.cli.console import Table, console, print_json
 
 VALID_RANGES = {
-    "--mu": "a number >= 0",
+    "--mu": "a number in [0, 1e+06]",
     "--e2": "a number in [0, 1]",
     "--e12": "a number in [0, 1]",
-    "--dx": "a number >= 0 [m]",
-    "--drop-height": "a number > 0 [m]",
+    "--dx": "a number in [0, 1e+06] [m]",
+    "--drop-height": "a number in (0, 1e+06] [m]",
 }
 
 
