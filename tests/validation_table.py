@@ -284,6 +284,12 @@ NOT_APPLICABLE: list[tuple[str, list[str]]] = [
         ["sweep", "--param", "damping", "--values", "0:0.5:3", "--workers", "2"]
         + ["--scheduler", "tcp://127.0.0.1:1"],
     ),
+    # swept values outside the parameter's range: refused before the first point
+    ("--damping", ["sweep", "--param", "damping", "--values", "0:2:3"]),
+    ("--v0", ["sweep", "--param", "v0", "--values", "0:5:3"]),
+    ("--radius", ["sweep", "--param", "radius", "--values", "1e-308:1:3"]),
+    ("--modes", ["sweep", "--param", "modes", "--values", "0:30:3"]),
+    ("--t-end", ["sweep", "--param", "damping", "--values", "0:0.5:3", "--t-end", "0"]),
     # the collision model
     *[
         (flag, ["icm", "--table1", flag, "0.5"])
