@@ -167,8 +167,8 @@ def test_icm_bad_input(capsys, argv, flag):
     ("argv", "expected"),
     [
         (["liftoff", "--damping", "abc"], "--damping must be a number in [0, 1), got 'abc'"),
-        (["liftoff", "--modes", "2.5"], "--modes must be an integer >= 1, got '2.5'"),
-        (["icm", "--mu", "x"], "--mu must be a number >= 0, got 'x'"),
+        (["liftoff", "--modes", "2.5"], "--modes must be an integer in [1, 1000000], got '2.5'"),
+        (["icm", "--mu", "x"], "--mu must be a number in [0, 1e+06], got 'x'"),
     ],
 )
 def test_unparsable_numbers_state_the_valid_range(capsys, argv, expected):

@@ -8,6 +8,7 @@ inside, the shared lift-off criteria of §3(a) out, as the same
 from __future__ import annotations
 
 import time as clock
+from numbers import Integral
 from typing import Any
 
 from twoball.mesh_options import MeshOptions
@@ -91,9 +92,9 @@ def solve(
         raise ParameterError("route", "full or auto with scheme alpha", route)
     dt_scaled = None
     if dt is not None:
-        from twoball.fem_membrane.checks import check_dt
+        from twoball.fem_membrane.checks import check_dt_in_window
 
-        dt_scaled = check_dt(dt) / case.scalings.time
+        dt_scaled = check_dt_in_window(dt, case.scalings.time, t_end_dimensionless(case, t_end))
     if spec.kind != "file":  # the budget in the user's units (the model layer checks again)
         from twoball.budget import check_fem
 
@@ -183,6 +184,8 @@ def eigen(
     from twoball.fem_membrane.eigen import eigen_table
 
     spec = MeshOptions.resolve(mesh, level=level, elements=elements, order=order, pole=pole)
+    if isinstance(count, bool) or not isinstance(count, Integral) or count < 1:
+        raise ParameterError("count", "an integer >= 1", count)
     if spec.kind != "file":  # refuse absurd meshes before building them
         dofs = fem_dofs(spec.kind, spec.level, spec.elements, spec.order)
         size = options(level=spec.level, elements=spec.elements, order=spec.order)

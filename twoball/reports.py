@@ -92,12 +92,16 @@ def converge(
     from twoball.verify.studies.time_step import run_dt_study
 
     case = Case.preset("basketball") if case is None else case
+    if not isinstance(case, Case):
+        raise ParameterError("case", "a twoball.Case", type(case).__name__)
     if study not in STUDIES:
         raise ParameterError("study", "one of " + ", ".join(STUDIES), study)
     if study == "modes":  # the Legendre series: no mesh
         for name, value in (("mesh", mesh), ("order", order)):
             if value is not None:
                 raise ParameterError(name, "left out with study modes (no mesh)", value)
+    if study == "order" and order is not None:
+        raise ParameterError("order", "left out with study order (it compares P1 and P2)", order)
     if mesh is None:
         mesh = "axisym" if study == "dt" else "sphere"
     if mesh not in ("sphere", "axisym"):
@@ -173,6 +177,8 @@ def verify(
     from twoball.verify.checks.run import run_verify
 
     case = Case.preset("basketball") if case is None else case
+    if not isinstance(case, Case):
+        raise ParameterError("case", "a twoball.Case", type(case).__name__)
     if thorough and fast:
         raise ParameterError("fast", "left out with thorough", fast)
     target = None

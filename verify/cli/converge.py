@@ -11,6 +11,7 @@ from pathlib import Path
 
 from rich.progress import Progress, SpinnerColumn, TextColumn, TimeElapsedColumn
 from rich.table import Table
+from twoball.modal.errors import ParameterError
 from twoball.verify.cli.case_options import add_case_options, case_from_options
 from twoball.verify.cli.console import console, print_notes
 from twoball.verify.output.report_files import json_text, study_summary_rows
@@ -41,7 +42,7 @@ def run(args: argparse.Namespace) -> int:
     """Run ``twoball converge``: :func:`twoball.converge` with the options, report in ``--out``."""
     from twoball.reports import converge
 
-    out = args.out or f"twoball-converge-{args.study}"
+    out = args.out if args.out is not None else f"twoball-converge-{args.study}"
     options = {
         "study": args.study,
         "mesh": args.mesh,
@@ -53,6 +54,8 @@ def run(args: argparse.Namespace) -> int:
         "t_end": args.t_end,
         "out": out,
     }
+    if args.study == "modes" and args.modes is not None:
+        raise ParameterError("modes", "left out with --study modes (use --modes-list)", args.modes)
     case = case_from_options(args)
     print_notes([case.phi_a_note] if case.phi_a_note else [])
     if args.json:

@@ -85,6 +85,7 @@ def register(parser: argparse.ArgumentParser) -> None:
     )
     add_case_options(parser)
     add_mesh_options(parser, SPHERE_KINDS, initial=True, files=False)
+    parser.set_defaults(initial=None)  # the API's default (projection)
     add_backend_option(parser)
     parser.add_argument(
         "--format",

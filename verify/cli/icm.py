@@ -10,11 +10,11 @@ from twoball.modal.errors import ParameterError
 from twoball.verify.cli.console import Table, console, print_json
 
 VALID_RANGES = {
-    "--mu": "a number >= 0",
+    "--mu": "a number in [0, 1e+06]",
     "--e2": "a number in [0, 1]",
     "--e12": "a number in [0, 1]",
-    "--dx": "a number >= 0 [m]",
-    "--drop-height": "a number > 0 [m]",
+    "--dx": "a number in [0, 1e+06] [m]",
+    "--drop-height": "a number in (0, 1e+06] [m]",
 }
 
 
@@ -22,6 +22,11 @@ def run(args: argparse.Namespace) -> int:
     """Run ``twoball icm``."""
     out = console()
     if args.table1:
+        for flag in ("mu", "e2", "e12", "dx", "drop_height"):
+            if getattr(args, flag) is not None:
+                raise ParameterError(
+                    flag, "left out with --table1 (its rows fix them)", getattr(args, flag)
+                )
         checks = icm.table1_check()
         if args.json:
             rows = [
