@@ -262,4 +262,3 @@ def report(additional: Sequence[str] = ()) -> Report:
         versions(tuple(additional)),
         datetime.now(UTC).isoformat(timespec="seconds"),
     )
-
