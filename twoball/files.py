@@ -7,10 +7,11 @@ to ``out`` and returns a small result object with ``as_dict()``.
 
 from __future__ import annotations
 
+import json
 import math
 import os
 from collections.abc import Sequence
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from pathlib import Path
 from typing import Any
 
@@ -18,6 +19,8 @@ from twoball.mesh_options import SPHERE_KINDS, MeshOptions
 from twoball.modal.errors import ParameterError
 from twoball.modal.parameters import Case
 from twoball.modal.report import LiftoffReport
+from twoball.progress import Step, silent
+from twoball.provenance import block
 
 __all__ = ["ExportResult", "PlotResult", "RenderResult", "export", "plot", "render"]
 
@@ -39,10 +42,12 @@ class ExportResult:
     point_data: list[str]
     report: LiftoffReport
     warnings: list[str] = field(default_factory=list)
+    provenance: dict[str, Any] | None = None
 
     def as_dict(self) -> dict[str, Any]:
         """JSON-ready summary with the lift-off of the exported backend."""
         return {
+            "provenance": self.provenance,
             "warnings": self.warnings,
             "files": [str(f) for f in self.files],
             "format": self.format,
@@ -66,10 +71,12 @@ class RenderResult:
     backend: str
     report: LiftoffReport
     warnings: list[str] = field(default_factory=list)
+    provenance: dict[str, Any] | None = None
 
     def as_dict(self) -> dict[str, Any]:
         """JSON-ready summary."""
         return {
+            "provenance": self.provenance,
             "warnings": self.warnings,
             "file": str(self.file),
             "times_s": self.times_s,
@@ -89,10 +96,12 @@ class PlotResult:
     rows: list[tuple[str, str]] = field(default_factory=list)
     reports: dict[str, LiftoffReport] = field(default_factory=dict)
     warnings: list[str] = field(default_factory=list)
+    provenance: dict[str, Any] | None = None
 
     def as_dict(self) -> dict[str, Any]:
         """JSON-ready summary."""
         return {
+            "provenance": self.provenance,
             "warnings": self.warnings,
             "file": str(self.file),
             "kind": self.kind,
@@ -133,6 +142,11 @@ def check_frame_budget(
         raise ParameterError(name, f"at most {MAX_FRAMES} {name}", f"{count} {name}")
     spec = MeshOptions.resolve(None, level=level, order=order)
     check_frames(f"{name} ({count} frames)", count, "sphere", spec.level, spec.order, case.modes)
+
+
+def spec_label(mesh: str | None, level: int | None, order: int | None) -> str:
+    """``sphere L3 P2``: the sphere mesh the options give (for progress texts)."""
+    return MeshOptions.resolve(mesh, level=level, order=order, kinds=SPHERE_KINDS).label
 
 
 def ball_model_of(
@@ -181,6 +195,7 @@ def export(
     sigma: str = "lanczos",
     recontact: str = "window",
     t_end: float | None = None,
+    progress: Step | None = None,
 ) -> ExportResult:
     """Write u, u_t, u_tt (SI) of both backends on the sphere mesh over time.
 
@@ -205,7 +220,14 @@ def export(
         FE representation of the initial displacement, eq. (3.10).
     sigma, recontact, t_end
         As in :func:`twoball.liftoff`.
+    progress : callable, optional
+        Called with a short text as each stage starts (:class:`twoball.progress.Reporter`).
+
+    Every file carries the case and :mod:`twoball.provenance` (VTU string field
+    data ``provenance`` and ``case``, XDMF grid attributes); field names end in
+    their unit (``u_m``, ``u_t_m_s``, ``u_tt_m_s2``, ...).
     """
+    arguments = dict(locals())  # the call, for the provenance
     from twoball.fem_membrane.export import series_format, write_series
     from twoball.staging import check_file
     from twoball.verify.output.fields import (
@@ -236,6 +258,8 @@ def export(
         check_frame_budget(case, len(times), "times", level, order)
     else:
         check_frame_budget(case, frames or DEFAULT_FRAMES, "frames", level, order)
+    say = progress or silent
+    say(f"solving fem and legendre on {spec_label(mesh, level, order)}")
     model = ball_model_of(
         case,
         FIELD_BACKENDS,
@@ -253,7 +277,11 @@ def export(
         selected = frame_times(model, 1, None, backend, include_liftoff=False)
     else:
         selected = frame_times(model, frames, times, backend)
+    say(f"fields at {len(selected)} frames")
     series = field_series(model, selected, backend)
+    provenance = block(case, "twoball.export", arguments)
+    series = replace(series, text={**series.text, "provenance": json.dumps(provenance)})
+    say(f"writing {target}")
     files = write_series(target, series, fmt)
     return ExportResult(
         files=list(files),
@@ -265,6 +293,7 @@ def export(
         point_data=list(series.point_data),
         report=model.backend(backend).report,
         warnings=field_warnings(model, backend, order, level),
+        provenance=provenance,
     )
 
 
@@ -285,6 +314,7 @@ def render(
     sigma: str = "lanczos",
     recontact: str = "window",
     t_end: float | None = None,
+    progress: Step | None = None,
 ) -> RenderResult:
     """Off-screen picture (``.png``) or animation (``.gif``, ``.mp4``) of the bouncing ball.
 
@@ -306,9 +336,10 @@ def render(
         Image size in pixels (MP4: rounded up to multiples of 16).
     fps : float
         Frames per second of an animation.
-    mesh, level, order, initial, sigma, recontact, t_end
+    mesh, level, order, initial, sigma, recontact, t_end, progress
         As in :func:`export`.
     """
+    arguments = dict(locals())  # the call, for the provenance
     import numpy as np
 
     from twoball.fem_membrane.render import (
@@ -343,6 +374,8 @@ def render(
     if kind != ".png":
         count = DEFAULT_ANIMATION_FRAMES if frames is None else frames
         check_frame_budget(case, count, "frames", level, order)
+    say = progress or silent
+    say(f"solving {backend} on {spec_label(mesh, level, order)}")
     model = ball_model_of(
         case,
         (backend,),
@@ -360,6 +393,7 @@ def render(
         count = DEFAULT_ANIMATION_FRAMES if frames is None else frames
         times = np.linspace(0.0, model.t_end_s, count)
     scene = ball_scene(model, times, backend)
+    say(f"drawing {len(times)} frame(s) into {target}")
     render_scene(target, scene, warp=warp, size=size, fps=fps)
     shown = round_size(size) if kind == ".mp4" else size
     return RenderResult(
@@ -370,6 +404,7 @@ def render(
         backend=backend,
         report=model.backend(backend).report,
         warnings=field_warnings(model, backend, order, level),
+        provenance=block(case, "twoball.render", arguments),
     )
 
 
@@ -390,6 +425,7 @@ def plot(
     sigma: str = "lanczos",
     recontact: str = "window",
     t_end: float | None = None,
+    progress: Step | None = None,
 ) -> PlotResult:
     """PNG figures: ``waterfall`` of u(phi) (Fig. 6), ``pole`` motion, FE ``eigen`` errors.
 
@@ -409,7 +445,10 @@ def plot(
         ``eigen``: mesh levels, element orders and the largest degree l.
     mesh, level, order, initial, sigma, recontact, t_end
         As in :func:`export` (``waterfall`` and ``pole``).
+    progress : callable, optional
+        As in :func:`export`.
     """
+    arguments = dict(locals())  # the call, for the provenance
     from twoball.staging import check_file
     from twoball.verify.output.figures import PLOT_KINDS, save_figure
     from twoball.verify.output.figures.eigen import eigen_figure, eigen_table
@@ -433,7 +472,12 @@ def plot(
         ):
             if value is not None:
                 raise ParameterError(name, "left out with kind eigen (use levels, orders)", value)
-        tables = [eigen_table(lv, od, max_degree) for od in orders for lv in levels]
+        say = progress or silent
+        tables = []
+        for od in orders:
+            for lv in levels:
+                say(f"eigenvalues of sphere L{lv} P{od}")
+                tables.append(eigen_table(lv, od, max_degree))
         figure = eigen_figure(tables)
         rows += [(t.label, f"l <= {t.degrees[-1]}, worst {t.errors[1:].max():.2e}") for t in tables]
     else:
@@ -446,6 +490,7 @@ def plot(
         chosen = tuple(dict.fromkeys(backends))
         if not chosen or any(b not in FIELD_BACKENDS for b in chosen):
             raise ParameterError("backends", "a list of fem, legendre", list(backends))
+        (progress or silent)(f"solving {', '.join(chosen)} on {spec_label(mesh, level, order)}")
         model = ball_model_of(
             Case.preset("basketball") if case is None else case,
             chosen,
@@ -467,5 +512,7 @@ def plot(
             else:
                 text = "no lift-off"
             rows.append((f"lift-off ({name})", text))
+    (progress or silent)(f"writing {target}")
     save_figure(figure, target)
-    return PlotResult(target, kind, rows, reports, warnings)
+    used = None if kind == "eigen" else Case.preset("basketball") if case is None else case
+    return PlotResult(target, kind, rows, reports, warnings, block(used, "twoball.plot", arguments))

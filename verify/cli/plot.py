@@ -48,26 +48,37 @@ def parse_backends(text: str) -> tuple[str, ...]:
 def run(args: argparse.Namespace) -> int:
     """Run ``twoball plot``: :func:`twoball.plot` with the options."""
     from twoball.files import plot
+    from twoball.progress import Reporter
 
     options = mesh_arguments(args)
     if args.kind == "eigen":
         levels = parse_list(args.levels, "--levels", "comma-separated levels >= 0, e.g. 1,2")
         orders = parse_list(args.orders, "--orders", "comma-separated orders 1 or 2", {1, 2})
-        result = plot(
-            "eigen", args.out, levels=levels, orders=orders, max_degree=args.max_degree, **options
-        )
+        steps = len(levels) * len(orders) + 1
+        with Reporter("plot eigen", total=steps) as progress:
+            result = plot(
+                "eigen",
+                args.out,
+                levels=levels,
+                orders=orders,
+                max_degree=args.max_degree,
+                progress=progress,
+                **options,
+            )
     else:
-        result = plot(
-            args.kind,
-            args.out,
-            case_from_options(args),
-            backends=parse_backends(args.backends),
-            instants=args.instants,
-            sigma=args.sigma,
-            recontact=args.recontact,
-            t_end=args.t_end,
-            **options,
-        )
+        with Reporter(f"plot {args.kind}", total=2) as progress:
+            result = plot(
+                args.kind,
+                args.out,
+                case_from_options(args),
+                backends=parse_backends(args.backends),
+                instants=args.instants,
+                sigma=args.sigma,
+                recontact=args.recontact,
+                t_end=args.t_end,
+                progress=progress,
+                **options,
+            )
     rows = [("file", str(result.file)), ("plot", result.kind), *result.rows]
     if result.reports:
         case = next(iter(result.reports.values())).case
