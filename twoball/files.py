@@ -144,11 +144,6 @@ def check_frame_budget(
     check_frames(f"{name} ({count} frames)", count, "sphere", spec.level, spec.order, case.modes)
 
 
-def spec_label(mesh: str | None, level: int | None, order: int | None) -> str:
-    """``sphere L3 P2``: the sphere mesh the options give (for progress texts)."""
-    return MeshOptions.resolve(mesh, level=level, order=order, kinds=SPHERE_KINDS).label
-
-
 def ball_model_of(
     case: Case,
     backends: Sequence[str],
@@ -160,6 +155,7 @@ def ball_model_of(
     sigma: str,
     recontact: str,
     t_end: float | None,
+    progress: Step | None = None,
 ) -> Any:
     """Solve ``case`` with ``backends`` on the sphere mesh of the options (see ``BallModel``)."""
     from twoball.verify.output.fields import ball_model
@@ -167,6 +163,7 @@ def ball_model_of(
     spec = MeshOptions.resolve(mesh, level=level, order=order, kinds=SPHERE_KINDS, files=False)
     if initial not in INITIAL_METHODS:
         raise ParameterError("initial", "one of " + ", ".join(INITIAL_METHODS), initial)
+    (progress or silent)(f"solving {' and '.join(backends)} on {spec.label}")
     return ball_model(
         case,
         spec.level,
@@ -259,7 +256,6 @@ def export(
     else:
         check_frame_budget(case, frames or DEFAULT_FRAMES, "frames", level, order)
     say = progress or silent
-    say(f"solving fem and legendre on {spec_label(mesh, level, order)}")
     model = ball_model_of(
         case,
         FIELD_BACKENDS,
@@ -270,6 +266,7 @@ def export(
         sigma=sigma,
         recontact=recontact,
         t_end=t_end,
+        progress=progress,
     )
     if fmt == "vtu" and times is None and frames is None:
         selected = liftoff_frame(model, backend)
@@ -375,7 +372,6 @@ def render(
         count = DEFAULT_ANIMATION_FRAMES if frames is None else frames
         check_frame_budget(case, count, "frames", level, order)
     say = progress or silent
-    say(f"solving {backend} on {spec_label(mesh, level, order)}")
     model = ball_model_of(
         case,
         (backend,),
@@ -386,6 +382,7 @@ def render(
         sigma=sigma,
         recontact=recontact,
         t_end=t_end,
+        progress=progress,
     )
     if kind == ".png":
         times = liftoff_frame(model, backend) if times is None else times
@@ -472,6 +469,10 @@ def plot(
         ):
             if value is not None:
                 raise ParameterError(name, "left out with kind eigen (use levels, orders)", value)
+        if max_degree is not None and (
+            isinstance(max_degree, bool) or int(max_degree) != max_degree or max_degree < 1
+        ):  # before any progress line (the upper bound needs the mesh: eigen_table)
+            raise ParameterError("max_degree", "an integer >= 1", max_degree)
         say = progress or silent
         tables = []
         for od in orders:
@@ -490,7 +491,6 @@ def plot(
         chosen = tuple(dict.fromkeys(backends))
         if not chosen or any(b not in FIELD_BACKENDS for b in chosen):
             raise ParameterError("backends", "a list of fem, legendre", list(backends))
-        (progress or silent)(f"solving {', '.join(chosen)} on {spec_label(mesh, level, order)}")
         model = ball_model_of(
             Case.preset("basketball") if case is None else case,
             chosen,
@@ -501,6 +501,7 @@ def plot(
             sigma=sigma,
             recontact=recontact,
             t_end=t_end,
+            progress=progress,
         )
         figure = waterfall_figure(model, instants) if kind == "waterfall" else pole_figure(model)
         for name, solved in model.backends.items():
