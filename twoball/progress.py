@@ -16,7 +16,9 @@ at most one every :data:`INTERVAL` seconds (a background thread also prints one
 while a single step runs long), and a last ``done`` line.  With ``delay`` the
 reporter stays silent unless the work outlasts it, so quick runs print nothing.
 ``twoball --quiet`` (:func:`set_quiet`) silences every reporter; warnings and
-errors are printed elsewhere and are not affected.  Nothing goes to standard
+errors are printed elsewhere and are not affected.  The background thread (and
+rich's) starts with the first report, not on entering: a process pool started
+in between forks without it (see :mod:`twoball.verify.sweeps.parallel`).  Nothing goes to standard
 output, so ``--json`` output stays clean.
 
 rich is imported only when a bar is drawn.
@@ -137,9 +139,7 @@ class Reporter:
         if self._terminal is None:
             isatty = getattr(self._stream, "isatty", None)
             self._terminal = bool(isatty and isatty())
-        self._thread = threading.Thread(target=self._beat, name="twoball-progress", daemon=True)
-        self._thread.start()
-        return self
+        return self  # no thread yet: a process pool may still fork (see _show)
 
     def __exit__(self, kind: type[BaseException] | None, *exc: object) -> None:
         self._stop.set()
@@ -215,6 +215,9 @@ class Reporter:
         if not self.enabled or self._stream is None:
             return
         self._begun = True
+        if self._thread is None:  # started with the work, after any pool has forked
+            self._thread = threading.Thread(target=self._beat, name="twoball-progress", daemon=True)
+            self._thread.start()
         if self._elapsed() < self.delay:
             return
         if self._terminal:
