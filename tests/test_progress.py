@@ -170,3 +170,14 @@ def test_progress_lines_in_a_log_and_none_when_quiet(tmp_path, name):
         drop = ("seconds", "provenance", "out")
         a, b = (split_provenance(json.loads(text), drop)[0] for text in (loud_out, quiet_out))
         assert a == b and a["passed"] is True
+
+
+def test_verify_steps_counts_the_progress_calls(tmp_path):
+    import twoball
+    from twoball.reports import verify_steps
+
+    said: list[str] = []
+    twoball.verify(fast=True, progress=said.append, out=tmp_path / "report")
+    assert len(said) == verify_steps(fast=True) and said[-1].startswith("writing ")
+    assert verify_steps(fast=True, out=False) == len(said) - 1
+    assert said[0].startswith("Legendre series N = 30")
