@@ -11,10 +11,10 @@ import json
 import math
 import os
 from collections.abc import Sequence
-from dataclasses import dataclass, field, replace
-from pathlib import Path
+from dataclasses import replace
 from typing import Any
 
+from twoball.file_results import ExportResult, PlotResult, RenderResult
 from twoball.mesh_options import SPHERE_KINDS, MeshOptions
 from twoball.modal.errors import ParameterError
 from twoball.modal.parameters import Case
@@ -27,87 +27,6 @@ __all__ = ["ExportResult", "PlotResult", "RenderResult", "export", "plot", "rend
 FIELD_BACKENDS: tuple[str, ...] = ("fem", "legendre")
 INITIAL_METHODS: tuple[str, ...] = ("projection", "interpolation")
 DEFAULT_ANIMATION_FRAMES = 60
-
-
-@dataclass(frozen=True)
-class ExportResult:
-    """Files written by :func:`export` and what they hold (SI)."""
-
-    files: list[Path]
-    format: str
-    times_s: list[float]
-    nodes: int
-    cells: int
-    cell_type: str
-    point_data: list[str]
-    report: LiftoffReport
-    warnings: list[str] = field(default_factory=list)
-    provenance: dict[str, Any] | None = None
-
-    def as_dict(self) -> dict[str, Any]:
-        """JSON-ready summary with the lift-off of the exported backend."""
-        return {
-            "provenance": self.provenance,
-            "warnings": self.warnings,
-            "files": [str(f) for f in self.files],
-            "format": self.format,
-            "times_s": self.times_s,
-            "nodes": self.nodes,
-            "cells": self.cells,
-            "cell_type": self.cell_type,
-            "point_data": self.point_data,
-            "liftoff": self.report.as_dict(),
-        }
-
-
-@dataclass(frozen=True)
-class RenderResult:
-    """The picture or animation written by :func:`render`."""
-
-    file: Path
-    times_s: list[float]
-    size: tuple[int, int]
-    warp: float
-    backend: str
-    report: LiftoffReport
-    warnings: list[str] = field(default_factory=list)
-    provenance: dict[str, Any] | None = None
-
-    def as_dict(self) -> dict[str, Any]:
-        """JSON-ready summary."""
-        return {
-            "provenance": self.provenance,
-            "warnings": self.warnings,
-            "file": str(self.file),
-            "times_s": self.times_s,
-            "size": list(self.size),
-            "warp": self.warp,
-            "backend": self.backend,
-            "liftoff": self.report.as_dict(),
-        }
-
-
-@dataclass(frozen=True)
-class PlotResult:
-    """The PNG written by :func:`plot`, with one line per curve family."""
-
-    file: Path
-    kind: str
-    rows: list[tuple[str, str]] = field(default_factory=list)
-    reports: dict[str, LiftoffReport] = field(default_factory=dict)
-    warnings: list[str] = field(default_factory=list)
-    provenance: dict[str, Any] | None = None
-
-    def as_dict(self) -> dict[str, Any]:
-        """JSON-ready summary."""
-        return {
-            "provenance": self.provenance,
-            "warnings": self.warnings,
-            "file": str(self.file),
-            "kind": self.kind,
-            "rows": [list(r) for r in self.rows],
-            "liftoff": {name: r.as_dict() for name, r in self.reports.items()},
-        }
 
 
 def _check_backend(backend: str) -> str:
