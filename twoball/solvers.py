@@ -166,7 +166,7 @@ def sweep(
     scheduler : str, optional
         Address of a dask.distributed scheduler.
     progress : callable, optional
-        Called with the number of points done.
+        Called with the number of points done (e.g. :meth:`twoball.progress.Reporter.update`).
 
     Returns
     -------
