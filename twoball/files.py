@@ -310,7 +310,8 @@ def render(
         times = np.linspace(0.0, model.t_end_s, count)
     scene = ball_scene(model, times, backend)
     say(f"drawing {len(times)} frame(s) into {target}")
-    render_scene(target, scene, warp=warp, size=size, fps=fps)
+    drawn = None if len(times) < 2 else lambda k: say(f"frame {k}/{len(times)} into {target}")
+    render_scene(target, scene, warp=warp, size=size, fps=fps, progress=drawn)
     shown = round_size(size) if kind == ".mp4" else size
     return RenderResult(
         file=target,
