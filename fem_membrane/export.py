@@ -10,9 +10,13 @@ Three layouts, chosen by :func:`series_format` from ``--format`` or the suffix:
     ``NAME.xdmf`` (XML) with its arrays in ``NAME.h5`` beside it, written with
     :class:`meshio.xdmf.TimeSeriesWriter`.  meshio puts the HDF5 file into the
     *current directory* (meshio issue #1442); :class:`_XdmfWriter` puts it next to
-    the XML file instead.  Series-wide scalars (lift-off time, ...) are stored as
-    ``<Information Name=... Value=...>`` elements of the XDMF domain and as HDF5
-    attributes of the root group.
+    the XML file instead.  Every time step is one uniform grid whose geometry and
+    topology point at the same two HDF5 datasets (no separate mesh grid, so readers
+    see one block, not a duplicate).  Series-wide scalars (lift-off time, case, ...)
+    and texts (provenance JSON, case) are grid-centred attributes of every step,
+    which VTK's ``vtkXdmfReader`` (ParaView, ``pyvista.read``) shows as field data
+    (texts as character arrays), and also ``<Information>`` elements of the domain
+    and attributes of the HDF5 root group.
 ``pvd``
     ``NAME.pvd`` (a ParaView collection, written here) listing one VTU per frame
     in the folder ``NAME_frames-ID/`` beside it (``NAME_0000.vtu``, ...), where
@@ -23,7 +27,9 @@ Three layouts, chosen by :func:`series_format` from ``--format`` or the suffix:
     A single frame in one ``.vtu`` file.
 
 Every VTU carries the series-wide scalars as VTK field data plus ``TimeValue``
-(the frame's time, which ParaView shows).  All files go through
+(the frame's time, which ParaView shows), and the texts as VTK string arrays
+(``<Array type="String">``, which meshio's VTU reader refuses: :func:`read_series`
+reads them itself).  All files go through
 :mod:`twoball.staging`: written into a scratch folder beside the target and
 moved into place only when complete, so an interrupted or failed run leaves the
 earlier output intact and no partial files.  The same series gives
@@ -33,6 +39,7 @@ byte-identical files.
 from __future__ import annotations
 
 import contextlib
+import copy
 import hashlib
 import math
 import os
@@ -45,7 +52,7 @@ from pathlib import Path
 import meshio
 import numpy as np
 from meshio._common import write_xml
-from meshio.xdmf import TimeSeriesReader, TimeSeriesWriter
+from meshio.xdmf import TimeSeriesWriter
 from twoball.modal.errors import ParameterError
 
 from twoball.staging import staged_collection, staged_file, write_marker
@@ -74,6 +81,8 @@ class TimeSeries:
     field_data : dict of str -> float
         Scalars describing the whole series (e.g. ``t_liftoff_s``).  VTU files
         leave out non-finite entries (VTK cannot parse ``nan`` in field data).
+    text : dict of str -> str
+        Texts describing the whole series (``provenance`` JSON, ``case``).
     """
 
     points: np.ndarray
@@ -81,6 +90,7 @@ class TimeSeries:
     times: np.ndarray
     point_data: dict[str, np.ndarray]
     field_data: dict[str, float] = field(default_factory=dict)
+    text: dict[str, str] = field(default_factory=dict)
 
     def __post_init__(self) -> None:
         points = np.ascontiguousarray(self.points, dtype=float)
@@ -108,6 +118,7 @@ class TimeSeries:
         object.__setattr__(
             self, "field_data", {k: float(v) for k, v in dict(self.field_data).items()}
         )
+        object.__setattr__(self, "text", {str(k): str(v) for k, v in dict(self.text).items()})
 
     @property
     def cell_type(self) -> str:
@@ -130,6 +141,7 @@ class TimeSeries:
             self.times[index],
             {name: values[index] for name, values in self.point_data.items()},
             self.field_data,
+            self.text,
         )
 
 
@@ -156,8 +168,18 @@ def series_format(path: str | os.PathLike[str], fmt: str | None = None) -> str:
 
 
 # --------------------------------------------------------------------------- VTU
-def _field_element(field_data: Mapping[str, float]) -> ET.Element:
+def _string_codes(text: str) -> str:
+    """A VTK ASCII string array's content: the UTF-8 bytes as numbers, 0-terminated."""
+    return " ".join(str(b) for b in text.encode("utf-8")) + " 0"
+
+
+def _field_element(field_data: Mapping[str, float], text: Mapping[str, str] = {}) -> ET.Element:  # noqa: B006
     element = ET.Element("FieldData")
+    for name, value in text.items():  # as vtkXMLWriter writes a vtkStringArray
+        array = ET.SubElement(
+            element, "Array", type="String", Name=name, NumberOfTuples="1", format="ascii"
+        )
+        array.text = _string_codes(value)
     for name, value in field_data.items():
         if not math.isfinite(value):  # VTK's ASCII parser rejects nan: leave the entry out
             continue
@@ -183,7 +205,7 @@ def _write_vtu_file(
     grid = tree.getroot().find("UnstructuredGrid")
     if grid is None:  # pragma: no cover - meshio always writes one
         raise ValueError(f"{target}: no UnstructuredGrid element")
-    grid.insert(0, _field_element(field_data))
+    grid.insert(0, _field_element(field_data, series.text))
     tree.write(target, xml_declaration=True, encoding="utf-8")
 
 
@@ -278,11 +300,14 @@ def write_pvd(path: str | os.PathLike[str], series: TimeSeries) -> list[Path]:
 
 # --------------------------------------------------------------------------- XDMF
 class _XdmfWriter(TimeSeriesWriter):
-    """meshio's XDMF time-series writer with the HDF5 file beside the XML file.
+    """meshio's XDMF time-series writer, the HDF5 file beside the XML file, one mesh block.
 
     meshio opens ``stem + ".h5"`` relative to the current directory (meshio
     issue #1442); here it is opened next to ``filename``.  The XML refers to the
-    HDF5 file by its base name, as meshio's reader and ParaView expect.
+    HDF5 file by its base name, as meshio's reader and ParaView expect.  meshio
+    also writes the mesh as a grid of its own beside the time steps, which
+    readers show as a second block; here every step carries the geometry and
+    topology (references to the same two datasets) instead.
     """
 
     def __enter__(self) -> _XdmfWriter:
@@ -292,6 +317,7 @@ class _XdmfWriter(TimeSeriesWriter):
         # Built in memory and written by Python at the end: a full disk is then an
         # OSError, not a cascade of HDF5 errors ending in a crash.
         self.h5_file = h5py.File(self.h5_filename, "w", driver="core", backing_store=False)
+        self.step_metadata: list[ET.Element] = []
         return self
 
     def __exit__(self, kind: object, *exc: object) -> None:
@@ -306,13 +332,62 @@ class _XdmfWriter(TimeSeriesWriter):
             with open(self.h5_filename, "wb") as handle:
                 handle.write(image)
 
+    def write_points_cells(self, points: np.ndarray, cells: list) -> None:
+        super().write_points_cells(points, cells)
+        mesh = self.domain[-1]  # meshio's separate mesh grid: keep its parts for every step
+        self.domain.remove(mesh)
+        self.mesh_parts = list(mesh)
+
+    def write_metadata(self, field_data: Mapping[str, float], text: Mapping[str, str]) -> None:
+        """Series-wide scalars and texts: grid attributes of every step, domain Information,
+        HDF5 root attributes.  Call before the first :meth:`write_data`."""
+        h5_name = os.path.basename(self.h5_filename)
+        for name, value in text.items():
+            codes = np.frombuffer(value.encode("utf-8"), dtype=np.int8)
+            self.h5_file.create_dataset(f"text/{name}", data=codes)
+            self.h5_file.attrs[name] = value
+            ET.SubElement(self.domain, "Information", Name=name, Value=value)
+            self.step_metadata.append(
+                _grid_attribute(name, "Char", "1", str(codes.size), f"{h5_name}:/text/{name}")
+            )
+        for name, value in field_data.items():
+            ET.SubElement(self.domain, "Information", Name=name, Value=repr(value))
+            self.h5_file.attrs[name] = value
+            if math.isfinite(value):
+                self.step_metadata.append(_grid_attribute(name, "Float", "8", "1", repr(value)))
+
+    def write_data(self, t: float, point_data: dict | None = None, cell_data: None = None) -> None:
+        super().write_data(t, point_data, cell_data)
+        grid = self.collection[-1]
+        grid.set("GridType", "Uniform")
+        grid.remove(grid[0])  # meshio's xi:include of the separate mesh grid
+        for k, part in enumerate(self.mesh_parts):
+            grid.insert(k, copy.deepcopy(part))
+        grid.extend(copy.deepcopy(element) for element in self.step_metadata)
+
+
+def _grid_attribute(name: str, kind: str, precision: str, size: str, data: str) -> ET.Element:
+    """A grid-centred XDMF attribute (VTK field data); ``data`` inline or ``file.h5:/path``."""
+    attribute = ET.Element("Attribute", Name=name, AttributeType="Scalar", Center="Grid")
+    item = ET.SubElement(
+        attribute,
+        "DataItem",
+        DataType=kind,
+        Dimensions=size,
+        Format="HDF" if ":/" in data else "XML",
+        Precision=precision,
+    )
+    item.text = data
+    return attribute
+
 
 def write_xdmf(path: str | os.PathLike[str], series: TimeSeries) -> list[Path]:
     """Write an XDMF 3 time series, ``NAME.xdmf`` with ``NAME.h5`` beside it.
 
-    Readable with :class:`meshio.xdmf.TimeSeriesReader` (also :func:`read_series`)
-    and ParaView's XDMF readers.  Series-wide scalars are ``Information``
-    elements of the domain and attributes of the HDF5 root group.
+    Readable with VTK's ``vtkXdmfReader`` (ParaView, ``pyvista.read``: one
+    unstructured grid per time, the series-wide scalars and texts as field
+    data) and with :func:`read_series`.  meshio's ``TimeSeriesReader`` refuses the
+    grid-centred attributes that carry the field data.
 
     Returns
     -------
@@ -325,11 +400,9 @@ def write_xdmf(path: str | os.PathLike[str], series: TimeSeries) -> list[Path]:
         target = scratch / out.name
         with _XdmfWriter(target) as writer:
             writer.write_points_cells(series.points, [(series.cell_type, series.cells)])
+            writer.write_metadata(series.field_data, series.text)
             for k, time in enumerate(series.times):
                 writer.write_data(float(time), point_data=series.frame(k))
-            for name, value in series.field_data.items():
-                ET.SubElement(writer.domain, "Information", Name=name, Value=repr(value))
-                writer.h5_file.attrs[name] = value
         if not (scratch / h5_name).is_file():  # pragma: no cover - guards the workaround
             raise OSError(f"the HDF5 file {h5_name} was not written beside {out.name}")
     return [out, out.with_name(h5_name)]
@@ -360,46 +433,26 @@ def write_series(
 
 
 # --------------------------------------------------------------------------- reading back
-def _field_from_xdmf(path: Path) -> dict[str, float]:
-    root = ET.parse(path).getroot()
-    return {
-        info.get("Name", ""): float(info.get("Value", "nan")) for info in root.iter("Information")
-    }
-
-
-def _read_vtu(path: Path) -> tuple[meshio.Mesh, dict[str, float]]:
-    mesh = meshio.read(str(path), file_format="vtu")
-    fields = {name: float(np.asarray(v).ravel()[0]) for name, v in mesh.field_data.items()}
-    return mesh, fields
-
-
-def _stack(frames: list[dict[str, np.ndarray]]) -> dict[str, np.ndarray]:
-    return {name: np.stack([f[name] for f in frames]) for name in frames[0]}
-
-
 def read_series(path: str | os.PathLike[str]) -> TimeSeries:
     """Read a series written by :func:`write_series` (any of the three formats).
 
-    XDMF goes through :class:`meshio.xdmf.TimeSeriesReader` (``meshio.read`` of a
-    time series exits the interpreter), PVD and VTU through meshio's VTU reader.
+    XDMF is read here (XML and h5py): meshio's ``TimeSeriesReader`` refuses the
+    grid-centred attributes of the field data (and ``meshio.read`` of a time
+    series exits the interpreter).  PVD and VTU go through meshio's VTU reader
+    after the string arrays (``provenance``, ``case``), which it refuses, are
+    taken out and read here.
     """
+    from .series_read import read_vtu, read_xdmf, stack
+
     path = Path(path)
     fmt = series_format(path)
     if fmt == "xdmf":
-        with TimeSeriesReader(path) as reader:
-            points, cells = reader.read_points_cells()
-            times, frames = [], []
-            for k in range(reader.num_steps):
-                t, point_data, _ = reader.read_data(k)
-                times.append(t)
-                frames.append(point_data)
-        return TimeSeries(points, cells[0].data, times, _stack(frames), _field_from_xdmf(path))
+        return read_xdmf(path)
     files = [path.name] if fmt == "vtu" else _pvd_files(path)
-    meshes = [_read_vtu(path.parent / name) for name in files]
+    meshes = [read_vtu(path.parent / name) for name in files]
     fields = dict(meshes[0][1])
-    times = [f.pop(TIME_VALUE) for _, f in meshes]
+    times = [f.pop(TIME_VALUE) for _, f, _ in meshes]
     fields.pop(TIME_VALUE, None)
     mesh = meshes[0][0]
-    return TimeSeries(
-        mesh.points, mesh.cells[0].data, times, _stack([m.point_data for m, _ in meshes]), fields
-    )
+    point_data = stack([m.point_data for m, _, _ in meshes])
+    return TimeSeries(mesh.points, mesh.cells[0].data, times, point_data, fields, meshes[0][2])

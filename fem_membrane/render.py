@@ -21,7 +21,7 @@ import contextlib
 import errno
 import math
 import os
-from collections.abc import Iterator
+from collections.abc import Callable, Iterator
 from dataclasses import dataclass
 from pathlib import Path
 
@@ -428,6 +428,7 @@ def render_scene(
     warp: float | None = None,
     size: tuple[int, int] | str = DEFAULT_SIZE,
     fps: float = 20.0,
+    progress: Callable[[int], None] | None = None,
 ) -> Path:
     """Render ``scene`` to a PNG (its first frame), an animated GIF or an MP4.
 
@@ -444,6 +445,8 @@ def render_scene(
         Image size [px] (``--size``); rounded up to multiples of 16 for MP4.
     fps : float
         Frames per second of an animation.
+    progress : callable, optional
+        Called with the number of frames drawn so far, after each frame.
 
     Returns
     -------
@@ -460,6 +463,8 @@ def render_scene(
         size = round_size(size)
     with staged_file(out) as target:
         images = render_frames(scene, warp, size)
+        if progress is not None:
+            images = _counted(images, progress)
         try:
             if kind == ".png":
                 _write_png(target, images)
@@ -470,3 +475,13 @@ def render_scene(
         finally:
             images.close()
     return out
+
+
+def _counted(images: Iterator[np.ndarray], progress: Callable[[int], None]) -> Iterator[np.ndarray]:
+    """``images``, calling ``progress(k)`` after the k-th; closing it closes ``images``."""
+    try:
+        for k, image in enumerate(images, start=1):
+            yield image
+            progress(k)
+    finally:
+        images.close()  # type: ignore[attr-defined]

@@ -35,6 +35,9 @@ class LiftoffReport:
     warnings : tuple of str
         Accuracy warnings (:mod:`twoball.modal.guards`, :mod:`twoball.fem_membrane.guards`):
         empty when the result is inside its trustworthy regime.
+    provenance : dict, optional
+        Versions, command line or API call, UTC time and case
+        (:func:`twoball.provenance.block`); set by the public API.
     """
 
     case: Case
@@ -44,6 +47,7 @@ class LiftoffReport:
     recontact: str
     extra: dict[str, Any] = field(default_factory=dict)
     warnings: tuple[str, ...] = ()
+    provenance: dict[str, Any] | None = field(default=None, compare=False, repr=False)
 
     @property
     def notes(self) -> list[str]:
@@ -106,6 +110,8 @@ class LiftoffReport:
         data.update(self.extra)
         data["notes"] = self.notes
         data["warnings"] = list(self.warnings)
+        if self.provenance is not None:
+            data["provenance"] = self.provenance
         return data
 
 

@@ -30,14 +30,22 @@ def cli_json(capsys, *argv: str) -> tuple[object, str]:
     code = main([*argv, "--json"])
     captured = capsys.readouterr()
     assert code == 0, captured.err
-    return json.loads(captured.out), captured.err
+    data = json.loads(captured.out)
+    # every JSON output names its command line; a list comes as {"results", "provenance"}
+    assert data["provenance"]["command"] == "twoball " + " ".join([*argv, "--json"])
+    if set(data) == {"results", "provenance"}:
+        return data["results"], captured.err
+    return data, captured.err
 
 
 def same_numbers(api: dict, cli: dict) -> None:
-    """API and CLI results identical, bit for bit (wall-clock timings aside)."""
+    """API and CLI results identical, bit for bit (wall-clock timings, provenance aside)."""
     api = json.loads(json.dumps(api))  # the CLI's own serialisation: repr round-trips floats
+    assert api["provenance"]["call"]["function"].startswith("twoball.")
+    assert api["provenance"]["case"] == cli["provenance"]["case"]
     for data in (api, cli):
         data.pop("seconds", None)
+        data.pop("provenance")
     assert api == cli
     assert api["t_liftoff_s"] == cli["t_liftoff_s"] and api["v_liftoff_m_s"] == cli["v_liftoff_m_s"]
 
@@ -74,7 +82,9 @@ def test_default_is_the_basketball_preset_with_its_pinned_numbers(capsys):
     result = twoball.liftoff(twoball.Case.preset("basketball"))
     assert result.t_liftoff_s * 1e3 == pytest.approx(9.8825, abs=5e-5)
     assert result.v_liftoff_m_s == pytest.approx(3.8322, abs=5e-5)
-    assert twoball.liftoff().as_dict() == result.as_dict()
+    again, first = twoball.liftoff().as_dict(), result.as_dict()
+    assert again.pop("provenance")["case"] == first.pop("provenance")["case"]
+    assert again == first
     cli, err = cli_json(capsys, "liftoff", "--v0", "4.1")
     assert cli["phi_a_source"] == "measured (basketball)" and cli["phi_a_rad"] == 2.6
     assert err == ""  # the preset's own value: nothing to note

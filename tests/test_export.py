@@ -2,13 +2,14 @@
 
 from __future__ import annotations
 
+import json
 import os
 import xml.etree.ElementTree as ET
 
+import meshio
 import numpy as np
 import pytest
 import pyvista as pv
-from meshio.xdmf import TimeSeriesReader
 from twoball.fem_membrane import export
 from twoball.fem_membrane.export import TimeSeries, read_series, write_series
 from twoball.fem_membrane.initial import initial_load
@@ -20,7 +21,7 @@ from twoball.modal.parameters import preset
 from twoball.verify.cli.main import main
 from twoball.verify.output.fields import ball_model, field_series, frame_times
 
-FIELDS = ("u", "u_t", "u_tt", "displacement", "u_fem", "u_legendre", "u_diff")
+FIELDS = ("u_m", "u_t_m_s", "u_tt_m_s2", "displacement_m", "u_fem_m", "u_legendre_m", "u_diff_m")
 
 
 @pytest.fixture(scope="module", params=[(2, 1), (1, 2)], ids=["P1-level2", "P2-level1"])
@@ -86,21 +87,21 @@ def check_content(model, got: TimeSeries, expected: TimeSeries, frames=None):
         u_leg = closed_form(model, t)[0]
         u_fem = fem_values(model, t)[0]
         scale = max(np.abs(u_fem).max(), 1e-6)
-        assert got.point_data["u_legendre"][j] == pytest.approx(u_leg, abs=1e-12 * scale)
-        assert got.point_data["u_fem"][j] == pytest.approx(u_fem, rel=1e-9, abs=1e-10 * scale)
-        assert got.point_data["u"][j] == pytest.approx(u_fem, rel=1e-9, abs=1e-10 * scale)
-        assert got.point_data["u_diff"][j] == pytest.approx(u_fem - u_leg, abs=1e-9 * scale)
-        for name, derivative in (("u_t", 1), ("u_tt", 2)):
+        assert got.point_data["u_legendre_m"][j] == pytest.approx(u_leg, abs=1e-12 * scale)
+        assert got.point_data["u_fem_m"][j] == pytest.approx(u_fem, rel=1e-9, abs=1e-10 * scale)
+        assert got.point_data["u_m"][j] == pytest.approx(u_fem, rel=1e-9, abs=1e-10 * scale)
+        assert got.point_data["u_diff_m"][j] == pytest.approx(u_fem - u_leg, abs=1e-9 * scale)
+        for name, derivative in (("u_t_m_s", 1), ("u_tt_m_s2", 2)):
             want = fem_values(model, t, derivative)[0]
             assert got.point_data[name][j] == pytest.approx(
                 want, rel=1e-9, abs=1e-10 * np.abs(want).max()
             )
-        vector = got.point_data["displacement"][j]
+        vector = got.point_data["displacement_m"][j]
         normal = got.points / np.linalg.norm(got.points, axis=1, keepdims=True)
         assert vector == pytest.approx(u_fem[:, None] * normal, rel=1e-9, abs=1e-10 * scale)
     fem = model.backends["fem"]
     pole = fem.series.pole(got.times / case.scalings.time)
-    assert got.point_data["u_fem"][:, model.mesh.pole] == pytest.approx(
+    assert got.point_data["u_fem_m"][:, model.mesh.pole] == pytest.approx(
         pole.u * case.radius, rel=1e-9, abs=1e-12
     )
     report = fem.report
@@ -117,13 +118,13 @@ def test_frames_are_even_plus_liftoff(model, series):
     k = int(np.flatnonzero(series.times == report.t_liftoff_s)[0])
     # the pole at the lift-off frame: u and u_t are the lift-off report's values
     scale = model.case.scalings
-    assert series.point_data["u"][k, pole] == pytest.approx(
+    assert series.point_data["u_m"][k, pole] == pytest.approx(
         report.result.displacement * scale.length, rel=1e-9
     )
-    assert series.point_data["u_t"][k, pole] == pytest.approx(report.v_liftoff_m_s, rel=1e-9)
+    assert series.point_data["u_t_m_s"][k, pole] == pytest.approx(report.v_liftoff_m_s, rel=1e-9)
 
 
-def test_xdmf_reads_back_with_meshio(model, series, tmp_path, monkeypatch):
+def test_xdmf_reads_back_with_its_h5_beside_it(model, series, tmp_path, monkeypatch):
     elsewhere = tmp_path / "cwd"
     elsewhere.mkdir()
     monkeypatch.chdir(elsewhere)  # meshio would put the .h5 here (issue #1442)
@@ -133,23 +134,14 @@ def test_xdmf_reads_back_with_meshio(model, series, tmp_path, monkeypatch):
     assert files == [out, out.with_suffix(".h5")]
     assert sorted(p.name for p in out.parent.iterdir()) == ["series.h5", "series.xdmf"]
     assert list(elsewhere.iterdir()) == []
-    with TimeSeriesReader(out) as reader:
-        points, cells = reader.read_points_cells()
-        assert cells[0].type == series.cell_type
-        times, frames = [], []
-        for k in range(reader.num_steps):
-            t, point_data, _ = reader.read_data(k)
-            times.append(t)
-            frames.append(point_data)
-    got = TimeSeries(
-        points,
-        cells[0].data,
-        times,
-        {n: np.stack([f[n] for f in frames]) for n in frames[0]},
-        export._field_from_xdmf(out),
-    )
+    got = read_series(out)
     check_content(model, got, series)
-    assert read_series(out).field_data == got.field_data
+    assert got.field_data == series.field_data and got.text == series.text
+
+
+def text_of(array) -> str:
+    """A VTK character array (XDMF texts through vtkXdmfReader) as text."""
+    return bytes(np.asarray(array, dtype=np.int8).view(np.uint8)).decode("utf-8")
 
 
 def test_xdmf_reads_with_pyvista(model, series, tmp_path):
@@ -159,13 +151,19 @@ def test_xdmf_reads_with_pyvista(model, series, tmp_path):
     assert reader.time_values == pytest.approx(list(series.times), rel=1e-12)
     k = 3
     reader.set_active_time_value(series.times[k])
-    grid = reader.read()["TimeSeries_meshio"]
+    grid = reader.read()
+    assert isinstance(grid, pv.UnstructuredGrid)  # one block: no separate mesh grid
     assert set(FIELDS) <= set(grid.point_data.keys())
     assert np.asarray(grid.points) == pytest.approx(series.points)
     for name in FIELDS:
         assert np.asarray(grid.point_data[name]) == pytest.approx(series.point_data[name][k])
-    first = pv.read(str(out))["TimeSeries_meshio"]  # pv.read: the first frame
-    assert np.asarray(first.point_data["u"]) == pytest.approx(series.point_data["u"][0])
+    # VTK's XDMF reader shows the case (with units in the names) and the texts as field data
+    for name in ("radius_m", "wave_speed_1_s", "v0_m_s", "phi_a_rad", "t_liftoff_s"):
+        assert grid.field_data[name][0] == series.field_data[name]
+    assert text_of(grid.field_data["case"]) == series.text["case"]
+    assert "R = 0.12 m" in series.text["case"] and "u_t_m_s [m/s]" in series.text["case"]
+    first = pv.read(str(out))  # pv.read: the first frame
+    assert np.asarray(first.point_data["u_m"]) == pytest.approx(series.point_data["u_m"][0])
 
 
 def test_pvd_opens_in_pyvista_with_the_same_content(model, series, tmp_path):
@@ -183,6 +181,7 @@ def test_pvd_opens_in_pyvista_with_the_same_content(model, series, tmp_path):
             assert np.asarray(grid.point_data[name]) == pytest.approx(series.point_data[name][k])
         assert grid.field_data["t_liftoff_s"][0] == series.field_data["t_liftoff_s"]
         assert grid.field_data["TimeValue"][0] == pytest.approx(series.times[k])
+        assert grid.field_data["case"][0] == series.text["case"]  # a VTK string array
     block = pv.read(str(out))
     assert block[0].n_points == len(series.points)
     check_content(model, read_series(out), series)
@@ -307,6 +306,13 @@ def test_cli_export_xdmf(tmp_path, capsys, monkeypatch):
     assert set(FIELDS) <= set(got.point_data)
     root = ET.parse(out).getroot()
     assert root.find("Domain/Information[@Name='t_liftoff_s']") is not None
+    # the provenance: the command line, versions, the case with units; also through VTK
+    provenance = json.loads(got.text["provenance"])
+    assert provenance["command"] == f"twoball export --level 1 --order 2 --out {out}"
+    assert provenance["call"]["function"] == "twoball.export"
+    assert provenance["versions"]["meshio"] == meshio.__version__
+    assert provenance["case"]["radius_m"] == 0.12 and provenance["case"]["phi_a_rad"] == 2.6
+    assert json.loads(text_of(pv.read(str(out)).field_data["provenance"])) == provenance
 
 
 def test_cli_export_times_and_vtu(tmp_path, capsys):
@@ -320,9 +326,12 @@ def test_cli_export_times_and_vtu(tmp_path, capsys):
     code, _ = run_cli(capsys, "export", "--level", "1", "--backend", "legendre", "--out", str(one))
     got = read_series(one)
     assert code == 0 and len(got) == 1
+    shown = pv.read(str(one)).field_data  # VTK's reader: the texts as strings
+    assert json.loads(shown["provenance"][0]) == json.loads(got.text["provenance"])
+    assert json.loads(got.text["provenance"])["case"]["v0_m_s"] == 4.1
     # legendre as the main backend: u is the closed form, the lift-off frame is its own
     assert got.times[0] == pytest.approx(got.field_data["t_liftoff_legendre_s"])
-    assert got.point_data["u"] == pytest.approx(got.point_data["u_legendre"])
+    assert got.point_data["u_m"] == pytest.approx(got.point_data["u_legendre_m"])
 
 
 @pytest.mark.parametrize(

@@ -127,7 +127,7 @@ def test_a_failed_point_is_a_row_with_its_parameters():
 def test_sweep_cli_reports_failed_points(capsys, monkeypatch):
     monkeypatch.setattr("twoball.verify.sweeps.sweeps.SweepSolver", lambda *a: FailAbove(3.0))
     assert main(["sweep", "--param", "v0", "--values", "2:4:3", "--json", "--workers", "1"]) == 0
-    rows = json.loads(capsys.readouterr().out)
+    rows = json.loads(capsys.readouterr().out)["results"]
     assert [r["error"] is not None for r in rows] == [False, False, True]
     assert all(r["phi_a_source"] == "eq. (3.7)" for r in rows)  # failed points too
     assert main(["sweep", "--param", "v0", "--values", "2:4:3", "--workers", "1"]) == 0
@@ -137,9 +137,11 @@ def test_sweep_cli_reports_failed_points(capsys, monkeypatch):
 def test_sweep_cli_workers_give_the_same_json(capsys):
     argv = ["sweep", "--param", "damping", "--values", "0:0.4:24", "--json"]
     main([*argv, "--workers", "1"])
-    serial = capsys.readouterr().out
+    serial = json.loads(capsys.readouterr().out)
     main([*argv, "--workers", "2"])
-    assert capsys.readouterr().out == serial
+    parallel = json.loads(capsys.readouterr().out)
+    assert parallel["results"] == serial["results"]  # the provenance names the workers
+    assert parallel["provenance"]["call"]["arguments"]["workers"] == 2
 
 
 # --- 2-D grids ----------------------------------------------------------------------
@@ -160,7 +162,7 @@ def test_grid_cli_json_and_heat_map(capsys, tmp_path):
     argv = ["sweep", "--param", "damping", "--values", "0.05:0.3:3"]
     argv += ["--param", "v0", "--values", "2:6:2", "--json", "--plot", str(png)]
     assert main(argv) == 0
-    rows = json.loads(capsys.readouterr().out)
+    rows = json.loads(capsys.readouterr().out)["results"]
     assert [r["index"] for r in rows] == [[i, j] for i in range(3) for j in range(2)]
     assert png.stat().st_size > 10_000 and png.read_bytes()[:4] == b"\x89PNG"
     assert not [p for p in tmp_path.iterdir() if p.name.startswith(".")]

@@ -144,8 +144,8 @@ def test_cli_render_png_without_display_is_quiet(tmp_path):
     root = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
     env["PYTHONPATH"] = root + os.pathsep + env.get("PYTHONPATH", "")
     proc = subprocess.run(
-        [sys.executable, "-m", "twoball", "render", "--level", "1", "--size", "200x150"]
-        + ["--out", str(out)],
+        [sys.executable, "-m", "twoball", "--quiet", "render", "--level", "1"]
+        + ["--size", "200x150", "--out", str(out)],  # --quiet: no progress, warnings stay
         capture_output=True,
         text=True,
         check=False,

@@ -16,6 +16,7 @@ from pathlib import Path
 import mpmath
 import numpy as np
 import pytest
+import scipy
 from scipy.linalg import eigvalsh_tridiagonal
 from scipy.optimize import brentq
 from twoball.modal.errors import ParameterError
@@ -90,6 +91,10 @@ def test_closed_form_liftoff_json_loads_numpy_only():
     assert data["t_liftoff_s"] == api.t_liftoff_s
     assert data["v_liftoff_m_s"] == api.v_liftoff_m_s
     assert data["t_liftoff_s"] == pytest.approx(9.8825e-3, abs=5e-8)  # §4(b), 9.8825 ms
+    # the provenance names libraries it did not import (importlib.metadata)
+    versions = data["provenance"]["versions"]
+    assert versions["numpy"] == np.__version__ and versions["scipy"] == scipy.__version__
+    assert data["provenance"]["command"] == "twoball liftoff --json"
 
 
 def test_liftoff_json_with_derived_phi_a_loads_no_scipy():

@@ -14,6 +14,7 @@ Public names: :class:`Case`, :func:`liftoff`, :func:`sweep`, :mod:`fem`
 (``fem.solve``, ``fem.eigen``), :func:`converge`, :func:`verify`,
 :func:`export`, :func:`render`, :func:`plot`, :class:`LiftoffReport`,
 :class:`MeshOptions`, :class:`ParameterError`, :class:`NumericalError`,
+:func:`report` (versions and platform), :mod:`provenance`, :mod:`progress`,
 ``__version__``.  The command line ``twoball`` is a thin layer over these.
 """
 
@@ -44,10 +45,12 @@ _NAMES: dict[str, str] = {
     "export": ".files",
     "render": ".files",
     "plot": ".files",
+    "report": ".provenance",
+    "Report": ".provenance",
 }
 # ``verify`` is the subpackage twoball.verify, callable as twoball.reports.verify (the
 # import system would replace a function of that name by the subpackage anyway).
-_SUBMODULES = ("fem", "verify")
+_SUBMODULES = ("fem", "verify", "provenance", "progress")
 _getattr, _dir = _attach(__name__, _NAMES)
 
 

@@ -15,6 +15,7 @@ from twoball.mesh_options import MeshOptions
 from twoball.modal.errors import ParameterError
 from twoball.modal.parameters import Case
 from twoball.modal.report import LiftoffReport
+from twoball.progress import Step, silent
 
 __all__ = ["eigen", "solve"]
 
@@ -34,6 +35,7 @@ def solve(
     sigma: str = "lanczos",
     recontact: str = "window",
     t_end: float | None = None,
+    progress: Step | None = None,
 ) -> LiftoffReport:
     """Lift-off from the finite-element membrane, eq. (3.9), with criteria (i)-(ii) of §3(a).
 
@@ -68,6 +70,8 @@ def solve(
         Re-contact horizon of criterion (ii), §3(a).
     t_end : float, optional
         Modelled window [s] (default 4 pi / c).
+    progress : callable, optional
+        Called with a short text as each stage starts (:class:`twoball.progress.Reporter`).
 
     Returns
     -------
@@ -110,6 +114,8 @@ def solve(
             t_end=t_end_dimensionless(case, t_end),
             time_unit_s=case.scalings.time,
         )
+    say = progress or silent
+    say(f"finite elements on {spec.label}: mesh, assembly, eigenpairs")
     started = clock.perf_counter()
     loaded = spec.load()  # the user's mesh, checked, on the unit sphere (None for a kind)
     motion, info = fem_pole_motion(
@@ -153,7 +159,8 @@ def solve(
         elements=spec.elements,
         time_unit_s=case.scalings.time,
     )
-    return report_liftoff(
+    say("lift-off criteria and the converged closed form beside it")
+    report = report_liftoff(
         case,
         motion,
         backend="fem",
@@ -163,6 +170,25 @@ def solve(
         extra=extra,
         warnings=warnings,
     )
+    from dataclasses import replace
+
+    from twoball.provenance import block
+
+    arguments = {
+        "mesh": mesh,
+        "level": level,
+        "elements": elements,
+        "order": order,
+        "pole": pole,
+        "scheme": scheme,
+        "dt": dt,
+        "route": route,
+        "damping_model": damping_model,
+        "sigma": sigma,
+        "recontact": recontact,
+        "t_end": t_end,
+    }
+    return replace(report, provenance=block(case, "twoball.fem.solve", arguments))
 
 
 def eigen(
@@ -173,12 +199,14 @@ def eigen(
     order: int | None = None,
     pole: Any = None,
     count: int = 25,
+    progress: Step | None = None,
 ) -> list[dict[str, float | int]]:
     """The lowest ``count`` nonzero eigenvalues of -Laplace-Beltrami beside l (l + 1), eq. (3.11).
 
     Mesh arguments as in :func:`solve`; one row per eigenvalue (``index``, ``l``,
     ``value``, ``exact``, ``relative_error``, ``multiplicity``,
-    ``expected_multiplicity``), dimensionless.
+    ``expected_multiplicity``), dimensionless.  ``progress`` is called with a short
+    text as the solve starts (:class:`twoball.progress.Reporter`).
     """
     from twoball.budget import check, fem_dofs, fem_estimate, options
     from twoball.fem_membrane.eigen import eigen_table
@@ -190,6 +218,7 @@ def eigen(
         dofs = fem_dofs(spec.kind, spec.level, spec.elements, spec.order)
         size = options(level=spec.level, elements=spec.elements, order=spec.order)
         check(size, fem_estimate(dofs, 30, "krylov"))
+    (progress or silent)(f"{count} eigenvalues on {spec.label}")
     loaded = spec.load()
     if loaded is not None:
         return eigen_table(mesh=loaded.mesh, order=None, count=count)

@@ -7,16 +7,19 @@ to ``out`` and returns a small result object with ``as_dict()``.
 
 from __future__ import annotations
 
+import json
 import os
 from collections.abc import Sequence
-from dataclasses import dataclass, field
-from pathlib import Path
+from dataclasses import replace
 from typing import Any
 
+from twoball.file_results import ExportResult, PlotResult, RenderResult
 from twoball.mesh_options import SPHERE_KINDS, MeshOptions
 from twoball.modal.errors import ParameterError
 from twoball.modal.parameters import Case
 from twoball.modal.report import LiftoffReport
+from twoball.progress import Step, silent
+from twoball.provenance import block
 
 __all__ = ["ExportResult", "PlotResult", "RenderResult", "export", "plot", "render"]
 
@@ -25,81 +28,6 @@ INITIAL_METHODS: tuple[str, ...] = ("projection", "interpolation")
 DEFAULT_ANIMATION_FRAMES = 60
 DEFAULT_FPS = 20.0
 FPS_RANGE = (1e-3, 1e3)  # frames per second of an animation
-
-
-@dataclass(frozen=True)
-class ExportResult:
-    """Files written by :func:`export` and what they hold (SI)."""
-
-    files: list[Path]
-    format: str
-    times_s: list[float]
-    nodes: int
-    cells: int
-    cell_type: str
-    point_data: list[str]
-    report: LiftoffReport
-    warnings: list[str] = field(default_factory=list)
-
-    def as_dict(self) -> dict[str, Any]:
-        """JSON-ready summary with the lift-off of the exported backend."""
-        return {
-            "warnings": self.warnings,
-            "files": [str(f) for f in self.files],
-            "format": self.format,
-            "times_s": self.times_s,
-            "nodes": self.nodes,
-            "cells": self.cells,
-            "cell_type": self.cell_type,
-            "point_data": self.point_data,
-            "liftoff": self.report.as_dict(),
-        }
-
-
-@dataclass(frozen=True)
-class RenderResult:
-    """The picture or animation written by :func:`render`."""
-
-    file: Path
-    times_s: list[float]
-    size: tuple[int, int]
-    warp: float
-    backend: str
-    report: LiftoffReport
-    warnings: list[str] = field(default_factory=list)
-
-    def as_dict(self) -> dict[str, Any]:
-        """JSON-ready summary."""
-        return {
-            "warnings": self.warnings,
-            "file": str(self.file),
-            "times_s": self.times_s,
-            "size": list(self.size),
-            "warp": self.warp,
-            "backend": self.backend,
-            "liftoff": self.report.as_dict(),
-        }
-
-
-@dataclass(frozen=True)
-class PlotResult:
-    """The PNG written by :func:`plot`, with one line per curve family."""
-
-    file: Path
-    kind: str
-    rows: list[tuple[str, str]] = field(default_factory=list)
-    reports: dict[str, LiftoffReport] = field(default_factory=dict)
-    warnings: list[str] = field(default_factory=list)
-
-    def as_dict(self) -> dict[str, Any]:
-        """JSON-ready summary."""
-        return {
-            "warnings": self.warnings,
-            "file": str(self.file),
-            "kind": self.kind,
-            "rows": [list(r) for r in self.rows],
-            "liftoff": {name: r.as_dict() for name, r in self.reports.items()},
-        }
 
 
 def _check_backend(backend: str) -> str:
@@ -194,6 +122,7 @@ def ball_model_of(
     sigma: str,
     recontact: str,
     t_end: float | None,
+    progress: Step | None = None,
 ) -> Any:
     """Solve ``case`` with ``backends`` on the sphere mesh of the options (see ``BallModel``)."""
     from twoball.verify.output.fields import ball_model
@@ -202,6 +131,10 @@ def ball_model_of(
     initial = check_initial(initial, backends)
     if initial not in INITIAL_METHODS:
         raise ParameterError("initial", "one of " + ", ".join(INITIAL_METHODS), initial)
+    from twoball.modal.report import t_end_dimensionless
+
+    t_end_dimensionless(case, t_end)  # the window is checked before any progress line
+    (progress or silent)(f"solving {' and '.join(backends)} on {spec.label}")
     return ball_model(
         case,
         spec.level,
@@ -230,6 +163,7 @@ def export(
     sigma: str = "lanczos",
     recontact: str = "window",
     t_end: float | None = None,
+    progress: Step | None = None,
 ) -> ExportResult:
     """Write u, u_t, u_tt (SI) of both backends on the sphere mesh over time.
 
@@ -254,7 +188,14 @@ def export(
         FE representation of the initial displacement, eq. (3.10) (default projection).
     sigma, recontact, t_end
         As in :func:`twoball.liftoff`.
+    progress : callable, optional
+        Called with a short text as each stage starts (:class:`twoball.progress.Reporter`).
+
+    Every file carries the case and :mod:`twoball.provenance` (VTU string field
+    data ``provenance`` and ``case``, XDMF grid attributes); field names end in
+    their unit (``u_m``, ``u_t_m_s``, ``u_tt_m_s2``, ...).
     """
+    arguments = dict(locals())  # the call, for the provenance
     from twoball.fem_membrane.export import series_format, write_series
     from twoball.staging import check_file
     from twoball.verify.output.fields import (
@@ -285,6 +226,7 @@ def export(
         check_frame_budget(case, len(times), "times", level, order)
     else:
         check_frame_budget(case, frames or DEFAULT_FRAMES, "frames", level, order)
+    say = progress or silent
     model = ball_model_of(
         case,
         FIELD_BACKENDS,
@@ -295,6 +237,7 @@ def export(
         sigma=sigma,
         recontact=recontact,
         t_end=t_end,
+        progress=progress,
     )
     if fmt == "vtu" and times is None and frames is None:
         selected = liftoff_frame(model, backend)
@@ -302,7 +245,11 @@ def export(
         selected = frame_times(model, 1, None, backend, include_liftoff=False)
     else:
         selected = frame_times(model, frames, times, backend)
+    say(f"fields at {len(selected)} frames")
     series = field_series(model, selected, backend)
+    provenance = block(case, "twoball.export", arguments)
+    series = replace(series, text={**series.text, "provenance": json.dumps(provenance)})
+    say(f"writing {target}")
     files = write_series(target, series, fmt)
     return ExportResult(
         files=list(files),
@@ -314,6 +261,7 @@ def export(
         point_data=list(series.point_data),
         report=model.backend(backend).report,
         warnings=field_warnings(model, backend, order, level),
+        provenance=provenance,
     )
 
 
@@ -334,6 +282,7 @@ def render(
     sigma: str = "lanczos",
     recontact: str = "window",
     t_end: float | None = None,
+    progress: Step | None = None,
 ) -> RenderResult:
     """Off-screen picture (``.png``) or animation (``.gif``, ``.mp4``) of the bouncing ball.
 
@@ -355,9 +304,10 @@ def render(
         Image size in pixels (MP4: rounded up to multiples of 16).
     fps : float, optional
         Frames per second of an animation, in [0.001, 1000] (default 20); not with ``.png``.
-    mesh, level, order, initial, sigma, recontact, t_end
+    mesh, level, order, initial, sigma, recontact, t_end, progress
         As in :func:`export` (``initial`` needs ``backend="fem"``).
     """
+    arguments = dict(locals())  # the call, for the provenance
     import numpy as np
 
     from twoball.fem_membrane.render import (
@@ -397,6 +347,7 @@ def render(
     if kind != ".png":
         count = DEFAULT_ANIMATION_FRAMES if frames is None else frames
         check_frame_budget(case, count, "frames", level, order)
+    say = progress or silent
     model = ball_model_of(
         case,
         (backend,),
@@ -407,6 +358,7 @@ def render(
         sigma=sigma,
         recontact=recontact,
         t_end=t_end,
+        progress=progress,
     )
     if kind == ".png":
         times = liftoff_frame(model, backend) if times is None else times
@@ -414,7 +366,9 @@ def render(
         count = DEFAULT_ANIMATION_FRAMES if frames is None else frames
         times = np.linspace(0.0, model.t_end_s, count)
     scene = ball_scene(model, times, backend)
-    render_scene(target, scene, warp=warp, size=size, fps=fps)
+    say(f"drawing {len(times)} frame(s) into {target}")
+    drawn = None if len(times) < 2 else lambda k: say(f"frame {k}/{len(times)} into {target}")
+    render_scene(target, scene, warp=warp, size=size, fps=fps, progress=drawn)
     shown = round_size(size) if kind == ".mp4" else size
     return RenderResult(
         file=target,
@@ -424,6 +378,7 @@ def render(
         backend=backend,
         report=model.backend(backend).report,
         warnings=field_warnings(model, backend, order, level),
+        provenance=block(case, "twoball.render", arguments),
     )
 
 
@@ -444,6 +399,7 @@ def plot(
     sigma: str | None = None,
     recontact: str | None = None,
     t_end: float | None = None,
+    progress: Step | None = None,
 ) -> PlotResult:
     """PNG figures: ``waterfall`` of u(phi) (Fig. 6), ``pole`` motion, FE ``eigen`` errors.
 
@@ -464,9 +420,13 @@ def plot(
         2) and the largest degree l.
     mesh, level, order, initial, sigma, recontact, t_end
         As in :func:`export` (``waterfall`` and ``pole`` only; defaults as there).
+    progress : callable, optional
+        As in :func:`export`.
+
     Every argument that the chosen ``kind`` does not use is refused
     (:class:`ParameterError`), never ignored.
     """
+    arguments = dict(locals())  # the call, for the provenance
     from twoball.staging import check_file
     from twoball.verify.output.figures import PLOT_KINDS, save_figure
     from twoball.verify.output.figures.eigen import eigen_figure, eigen_table
@@ -498,7 +458,12 @@ def plot(
                 shown = type(value).__name__ if name == "case" else value
                 raise ParameterError(name, "left out with kind eigen (use levels, orders)", shown)
         levels, orders = _eigen_sizes(levels, orders, max_degree)
-        tables = [eigen_table(lv, od, max_degree) for od in orders for lv in levels]
+        say = progress or silent
+        tables = []
+        for od in orders:
+            for lv in levels:
+                say(f"eigenvalues of sphere L{lv} P{od}")
+                tables.append(eigen_table(lv, od, max_degree))
         figure = eigen_figure(tables)
         rows += [(t.label, f"l <= {t.degrees[-1]}, worst {t.errors[1:].max():.2e}") for t in tables]
     else:
@@ -529,6 +494,7 @@ def plot(
             sigma=sigma,
             recontact=recontact,
             t_end=t_end,
+            progress=progress,
         )
         figure = waterfall_figure(model, instants) if kind == "waterfall" else pole_figure(model)
         for name, solved in model.backends.items():
@@ -540,5 +506,7 @@ def plot(
             else:
                 text = "no lift-off"
             rows.append((f"lift-off ({name})", text))
+    (progress or silent)(f"writing {target}")
     save_figure(figure, target)
-    return PlotResult(target, kind, rows, reports, warnings)
+    used = None if kind == "eigen" else Case.preset("basketball") if case is None else case
+    return PlotResult(target, kind, rows, reports, warnings, block(used, "twoball.plot", arguments))

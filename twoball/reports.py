@@ -7,19 +7,13 @@ write a report directory (report.md, results.json, CSV tables, PNG plots).
 from __future__ import annotations
 
 import os
-from collections.abc import Callable
 from typing import Any
 
 from twoball.modal.errors import ParameterError
 from twoball.modal.parameters import Case
+from twoball.progress import Step, silent
 
-__all__ = ["converge", "parse_levels", "verify"]
-
-Progress = Callable[[str], None]
-
-
-def _quiet(_: str) -> None:
-    return None
+__all__ = ["converge", "parse_levels", "verify", "verify_steps"]
 
 
 def parse_levels(text: str, mesh: str, study: str = "h") -> tuple[int, ...]:
@@ -55,7 +49,7 @@ def converge(
     recontact: str = "window",
     t_end: float | None = None,
     out: str | os.PathLike[str] | None = None,
-    progress: Progress = _quiet,
+    progress: Step = silent,
 ) -> Any:
     """A refinement study: observed orders, Richardson extrapolation and GCI.
 
@@ -78,7 +72,7 @@ def converge(
     out : path, optional
         Report directory to write (an earlier report there is replaced).
     progress : callable
-        Called with a short text per step.
+        Called with a short text as each step starts (:class:`twoball.progress.Reporter`).
 
     Returns
     -------
@@ -133,9 +127,15 @@ def converge(
         result = run_order_study(case, mesh=mesh, levels=level_list, **common)
     else:
         result = run_dt_study(case, mesh=mesh, order=order, levels=level_list, **common)
+    from twoball.provenance import block
+
+    arguments = {"study": study, "mesh": mesh, "order": order, "levels": levels}
+    arguments |= {"modes_list": modes_list, "sigma": sigma, "recontact": recontact}
+    result.provenance = block(case, "twoball.converge", {**arguments, "t_end": t_end, "out": out})
     if target is not None:
         from twoball.verify.output.report_files import study_files, write_report_dir
 
+        progress(f"writing {target}")
         write_report_dir(target, study_files(result), "twoball converge")
     return result
 
@@ -149,7 +149,7 @@ def verify(
     recontact: str = "window",
     t_end: float | None = None,
     out: str | os.PathLike[str] | None = None,
-    progress: Progress | None = None,
+    progress: Step | None = None,
 ) -> Any:
     """Every backend against the closed form, with PASS/FAIL per check.
 
@@ -166,7 +166,8 @@ def verify(
     out : path, optional
         Report directory to write (report.md, results.json, CSV, PNG).
     progress : callable, optional
-        Called with a short text per step.
+        Called with a short text as each step starts (:class:`twoball.progress.Reporter`;
+        :func:`verify_steps` counts the calls).
 
     Returns
     -------
@@ -187,9 +188,26 @@ def verify(
 
         target = check_output_dir(out)
     configuration = config("fast" if fast else ("thorough" if thorough else "default"))
-    result = run_verify(case, sigma, recontact, t_end, configuration, progress)
+    say = progress or silent
+    result = run_verify(case, sigma, recontact, t_end, configuration, say)
+    from twoball.provenance import block
+
+    arguments = {"thorough": thorough, "fast": fast, "sigma": sigma, "recontact": recontact}
+    result.provenance = block(case, "twoball.verify", {**arguments, "t_end": t_end, "out": out})
     if target is not None:
         from twoball.verify.output.report_files import verify_files, write_report_dir
 
+        say(f"writing {target}")
         write_report_dir(target, verify_files(result), "twoball verify")
     return result
+
+
+def verify_steps(thorough: bool = False, fast: bool = False, out: bool = True) -> int:
+    """How many times :func:`verify` calls ``progress`` with these options."""
+    from twoball.verify.checks.config import config
+
+    c = config("fast" if fast else ("thorough" if thorough else "default"))
+    solved = {t.spec for t in c.fem} | {t.spec for t in c.alpha}
+    pair = c.energy_pair if c.energy_band is not None else None
+    energy = [spec for spec in (pair or ()) if spec not in solved]
+    return 2 + len(c.fem) + len(c.krylov) + len(c.alpha) + len(energy) + int(out)

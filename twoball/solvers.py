@@ -8,13 +8,14 @@ from __future__ import annotations
 
 import math
 from collections.abc import Callable, Mapping, Sequence
-from dataclasses import dataclass
+from dataclasses import dataclass, field, replace
 from typing import Any
 
 from twoball.mesh_options import refuse_mesh_options
 from twoball.modal.errors import ParameterError
 from twoball.modal.parameters import Case
 from twoball.modal.report import LiftoffReport
+from twoball.progress import Step
 
 BACKENDS: tuple[str, ...] = ("legendre", "fem")
 
@@ -37,6 +38,7 @@ def liftoff(
     dt: float | None = None,
     route: str | None = None,
     damping_model: str | None = None,
+    progress: Step | None = None,
 ) -> LiftoffReport:
     """Lift-off time and velocity of the body on the ball, in SI.
 
@@ -57,6 +59,9 @@ def liftoff(
         Finite-element options (see :func:`twoball.fem.solve`; ``mesh`` may be a
         kind name or the user's mesh: a file path, ``meshio.Mesh`` or ``MeshTri``);
         refused with ``backend="legendre"``.
+    progress : callable, optional
+        Called with a short text as each stage of a finite-element solve starts
+        (a :class:`twoball.progress.Reporter`, for instance).
 
     Returns
     -------
@@ -78,16 +83,24 @@ def liftoff(
         "route": route,
         "damping_model": damping_model,
     }
+    options = {"backend": backend, "sigma": sigma, "recontact": recontact, "t_end": t_end}
     if backend == "fem":
         from twoball.fem import solve
 
-        return solve(case, sigma=sigma, recontact=recontact, t_end=t_end, **fem_options)
-    if backend != "legendre":
+        report = solve(
+            case, sigma=sigma, recontact=recontact, t_end=t_end, progress=progress, **fem_options
+        )
+    elif backend != "legendre":
         raise ParameterError("backend", "one of " + ", ".join(BACKENDS), backend)
-    refuse_mesh_options("with backend legendre (no mesh, no time steps)", **fem_options)
-    from twoball.modal.report import legendre_liftoff
+    else:
+        refuse_mesh_options("with backend legendre (no mesh, no time steps)", **fem_options)
+        from twoball.modal.report import legendre_liftoff
 
-    return legendre_liftoff(case, sigma, recontact, t_end)
+        report = legendre_liftoff(case, sigma, recontact, t_end)
+    from twoball.provenance import block
+
+    arguments = {**options, **{k: v for k, v in fem_options.items() if v is not None}}
+    return replace(report, provenance=block(case, "twoball.liftoff", arguments))
 
 
 @dataclass(frozen=True)
@@ -102,18 +115,22 @@ class SweepResult:
         Values per parameter.
     points : list of SweepPoint
         One per grid point: ``index``, ``case``, ``report`` (or ``error``).
+    provenance : dict
+        Versions, command line or call, UTC time, base case (:mod:`twoball.provenance`).
     """
 
     parameters: tuple[str, ...]
     shape: tuple[int, ...]
     points: list[Any]
+    provenance: dict[str, Any] | None = field(default=None, compare=False, repr=False)
 
     def as_dict(self) -> dict[str, Any]:
-        """JSON-ready: parameters, shape and the points (SI)."""
+        """JSON-ready: parameters, shape, the points (SI) and the provenance."""
         return {
             "parameters": list(self.parameters),
             "shape": list(self.shape),
             "points": [p.as_dict() for p in self.points],
+            "provenance": self.provenance,
         }
 
 
@@ -150,7 +167,7 @@ def sweep(
     scheduler : str, optional
         Address of a dask.distributed scheduler.
     progress : callable, optional
-        Called with the number of points done.
+        Called with the number of points done (e.g. :meth:`twoball.progress.Reporter.update`).
 
     Returns
     -------
@@ -171,6 +188,13 @@ def sweep(
     workers = 1 if workers is None and not scheduler else workers
     if workers is not None:
         check_workers(workers)  # its type and range, before the budget compares it
+    call = {
+        "sigma": sigma,
+        "recontact": recontact,
+        "t_end": t_end,
+        "workers": workers,
+        "scheduler": scheduler,
+    }
     if not isinstance(values, Mapping) or not 1 <= len(values) <= 2:
         raise ParameterError("values", "a mapping of one or two parameters to values", values)
     parameters = tuple(_sweep_name(k) for k in values)
@@ -196,4 +220,7 @@ def sweep(
     solver = SweepSolver(sigma, recontact, t_end)
     with Runner(workers, scheduler) as runner:
         points = run_sweep(cases, solver, progress, runner=runner, indices=grid.indices())
-    return SweepResult(parameters, grid.shape, points)
+    from twoball.provenance import block
+
+    arguments = {"values": {k: arrays[i] for i, k in enumerate(values)}, **call}
+    return SweepResult(parameters, grid.shape, points, block(case, "twoball.sweep", arguments))

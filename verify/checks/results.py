@@ -125,6 +125,7 @@ class VerifyResult:
     reference: ConvergedReference
     seconds: float = 0.0
     notes: list[str] = field(default_factory=list)
+    provenance: dict[str, Any] | None = None  # set by twoball.verify (twoball.provenance)
 
     @property
     def passed(self) -> bool:
@@ -145,6 +146,7 @@ class VerifyResult:
                 for e in self.eigen
             ],
             "notes": self.notes,
+            "provenance": self.provenance,
         }
 
 

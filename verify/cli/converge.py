@@ -9,7 +9,6 @@ import argparse
 import sys
 from pathlib import Path
 
-from rich.progress import Progress, SpinnerColumn, TextColumn, TimeElapsedColumn
 from rich.table import Table
 from twoball.modal.errors import ParameterError
 from twoball.verify.cli.case_options import add_case_options, case_from_options
@@ -58,15 +57,10 @@ def run(args: argparse.Namespace) -> int:
         raise ParameterError("modes", "left out with --study modes (use --modes-list)", args.modes)
     case = case_from_options(args)
     print_notes([case.phi_a_note] if case.phi_a_note else [])
-    if args.json:
-        study = converge(case, **options)
-    else:
-        columns = (SpinnerColumn(), TextColumn("{task.description}"), TimeElapsedColumn())
-        with Progress(*columns, transient=True, console=console()) as bar:
-            task = bar.add_task(f"converge --study {args.study}", total=None)
-            study = converge(
-                case, progress=lambda text: bar.update(task, description=text), **options
-            )
+    from twoball.progress import Reporter
+
+    with Reporter(f"converge --study {args.study}") as progress:
+        study = converge(case, progress=progress, **options)
     target = Path(out).expanduser()
     if args.json:
         data = study.as_dict()

@@ -19,11 +19,14 @@ def run(args: argparse.Namespace) -> int:
 
     from twoball.fem import eigen
     from twoball.mesh_options import MeshOptions
+    from twoball.progress import QUICK, Reporter
+    from twoball.provenance import attach, block
 
     options = mesh_arguments(args)
-    rows = eigen(**options, count=args.count)
+    with Reporter("eigen", delay=QUICK) as progress:
+        rows = eigen(**options, count=args.count, progress=progress)
     if args.json:
-        print_json(rows)
+        print_json(attach(rows, block(None, "twoball.fem.eigen", {**options, "count": args.count})))
         return 0
     spec = MeshOptions.resolve(**options)
     table = Table(title=f"Eigenvalues of -Laplace-Beltrami: {spec.label}")
@@ -49,5 +52,9 @@ def register(parser: argparse.ArgumentParser) -> None:
     parser.add_argument(
         "--count", type=int, default=25, help="nonzero eigenvalues listed (default 25)"
     )
-    parser.add_argument("--json", action="store_true", help="print a JSON list")
+    parser.add_argument(
+        "--json",
+        action="store_true",
+        help='print JSON: {"results": [one object per eigenvalue], "provenance": {...}}',
+    )
     parser.set_defaults(run=run)

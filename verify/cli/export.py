@@ -45,18 +45,22 @@ def run(args: argparse.Namespace) -> int:
     from twoball.files import export
 
     times = None if args.times is None else parse_times(args.times)
-    result = export(
-        args.out,
-        case_from_options(args),
-        backend=args.backend,
-        format=args.format,
-        frames=args.frames,
-        times=times,
-        sigma=args.sigma,
-        recontact=args.recontact,
-        t_end=args.t_end,
-        **mesh_arguments(args),
-    )
+    from twoball.progress import Reporter
+
+    with Reporter("export") as progress:
+        result = export(
+            args.out,
+            case_from_options(args),
+            backend=args.backend,
+            format=args.format,
+            frames=args.frames,
+            times=times,
+            sigma=args.sigma,
+            recontact=args.recontact,
+            t_end=args.t_end,
+            **mesh_arguments(args),
+            progress=progress,
+        )
     files, report, selected = result.files, result.report, result.times_s
     print_notes(report.notes)
     print_warnings(result.warnings)

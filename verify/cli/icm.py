@@ -9,6 +9,8 @@ from twoball.modal import icm
 from twoball.modal.errors import ParameterError
 from twoball.verify.cli.console import Table, console, print_json
 
+from twoball.provenance import attach, block
+
 VALID_RANGES = {
     "--mu": "a number in [0, 1e+06]",
     "--e2": "a number in [0, 1]",
@@ -41,7 +43,7 @@ def run(args: argparse.Namespace) -> int:
                 }
                 for c in checks
             ]
-            print_json(rows)
+            print_json(attach(rows, block(None, "twoball.modal.icm.table1_check")))
             return 0
         from rich import box
 
@@ -93,7 +95,9 @@ def run(args: argparse.Namespace) -> int:
         drop_height=1.0 if args.drop_height is None else args.drop_height,
     )
     if args.json:
-        print_json(asdict(result))
+        arguments = {"mu": args.mu, "e2": args.e2, "e12": args.e12}
+        arguments |= {"dx": args.dx, "drop_height": args.drop_height}
+        print_json(attach(asdict(result), block(None, "twoball.modal.icm.icm", arguments)))
         return 0
     table = Table(title="Independent collision model (§2)")
     table.add_column("quantity")
@@ -122,5 +126,9 @@ def register(parser: argparse.ArgumentParser) -> None:
     parser.add_argument(
         "--table1", action="store_true", help="recompute Table 1 beside the printed values"
     )
-    parser.add_argument("--json", action="store_true", help="print JSON")
+    parser.add_argument(
+        "--json",
+        action="store_true",
+        help='print JSON (an object; --table1: {"results": [rows], "provenance": {...}})',
+    )
     parser.set_defaults(run=run)

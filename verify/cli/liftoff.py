@@ -68,17 +68,22 @@ def print_liftoff(report: LiftoffReport) -> None:
 
 def solve_from_options(args: argparse.Namespace) -> LiftoffReport:
     """Call :func:`twoball.liftoff` with the case, model, mesh and time options."""
+    from twoball.progress import QUICK, Reporter
     from twoball.solvers import liftoff
 
-    return liftoff(
-        case_from_options(args),
-        backend=args.backend,
-        sigma=args.sigma,
-        recontact=args.recontact,
-        t_end=args.t_end,
+    options = {
+        "backend": args.backend,
+        "sigma": args.sigma,
+        "recontact": args.recontact,
+        "t_end": args.t_end,
         **mesh_arguments(args),
         **time_arguments(args),
-    )
+    }
+    case = case_from_options(args)
+    if args.backend != "fem":  # the closed form takes milliseconds
+        return liftoff(case, **options)
+    with Reporter("liftoff", delay=QUICK) as progress:
+        return liftoff(case, progress=progress, **options)
 
 
 def run(args: argparse.Namespace) -> int:

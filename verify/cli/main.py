@@ -40,6 +40,9 @@ COMMANDS: dict[str, str] = {
 }
 
 
+QUIET_HELP = "no progress lines or bars on standard error (warnings and errors still print)"
+
+
 def command_module(name: str) -> ModuleType:
     """The module of subcommand ``name`` (imported on demand)."""
     return importlib.import_module(f"twoball.verify.cli.{name}")
@@ -89,9 +92,14 @@ def build_parser(chosen: str | None = None) -> argparse.ArgumentParser:
         "(two-ball bounce): closed-form Legendre series and finite elements.",
     )
     parser.add_argument("--version", action="version", version=f"twoball {__version__}")
+    parser.add_argument("-q", "--quiet", action="store_true", help=QUIET_HELP)
     sub = parser.add_subparsers(dest="command", metavar="COMMAND", parser_class=_Parser)
     for name, help_text in COMMANDS.items():
         command = sub.add_parser(name, help=help_text, description=help_text)
+        # also after the subcommand; SUPPRESS keeps a --quiet given before it
+        command.add_argument(
+            "-q", "--quiet", action="store_true", default=argparse.SUPPRESS, help=QUIET_HELP
+        )
         if chosen in (name, "*"):
             module = command_module(name)
             command.modules = (module,)
@@ -150,6 +158,10 @@ def _main(argv: Sequence[str] | None = None) -> int:
     args = parser.parse_args(argv)
     if args.command is None:
         fail("choose a command: " + ", ".join(COMMANDS))
+    from twoball import progress, provenance
+
+    progress.set_quiet(args.quiet)
+    provenance.set_command(argv)  # every JSON and file this run writes names it
     from twoball.modal.errors import NumericalError, ParameterError
 
     try:
@@ -160,6 +172,9 @@ def _main(argv: Sequence[str] | None = None) -> int:
         fail(cli_message(error, args))
     except NumericalError as error:
         fail(f"numerical trouble: {error}", EXIT_NUMERICAL)
+    finally:  # main() called again in one process (tests, scripts) starts afresh
+        progress.set_quiet(False)
+        provenance.set_command(None)
 
 
 if __name__ == "__main__":

@@ -48,6 +48,7 @@ def parse_backends(text: str) -> tuple[str, ...]:
 def run(args: argparse.Namespace) -> int:
     """Run ``twoball plot``: :func:`twoball.plot` with the options."""
     from twoball.files import plot
+    from twoball.progress import Reporter
 
     options = mesh_arguments(args)
     levels = None
@@ -59,22 +60,26 @@ def run(args: argparse.Namespace) -> int:
     if args.kind == "eigen":  # no case: every case option given is passed on and refused
         apply_limits(args)
         case = case_from_options(args) if case_options_given(args) else None
+        steps = len(levels or (1, 2, 3)) * len(orders or (1, 2)) + 1
     else:
         case = case_from_options(args)
-    result = plot(
-        args.kind,
-        args.out,
-        case,
-        backends=None if args.backend is None else parse_backends(args.backend),
-        instants=args.instants,
-        levels=levels,
-        orders=orders,
-        max_degree=args.max_degree,
-        sigma=args.sigma,
-        recontact=args.recontact,
-        t_end=args.t_end,
-        **options,
-    )
+        steps = 2
+    with Reporter(f"plot {args.kind}", total=steps) as progress:
+        result = plot(
+            args.kind,
+            args.out,
+            case,
+            backends=None if args.backend is None else parse_backends(args.backend),
+            instants=args.instants,
+            levels=levels,
+            orders=orders,
+            max_degree=args.max_degree,
+            sigma=args.sigma,
+            recontact=args.recontact,
+            t_end=args.t_end,
+            progress=progress,
+            **options,
+        )
     rows = [("file", str(result.file)), ("plot", result.kind), *result.rows]
     if result.reports:
         case = next(iter(result.reports.values())).case

@@ -40,21 +40,24 @@ def parse_warp(text: str | None) -> float | None:
 def run(args: argparse.Namespace) -> int:
     """Run ``twoball render``: :func:`twoball.render` with the options."""
     from twoball.files import render
+    from twoball.progress import Reporter
 
-    result = render(
-        args.out,
-        case_from_options(args),
-        backend=args.backend,
-        time=args.time,
-        frames=args.frames,
-        warp=parse_warp(args.warp),
-        size=args.size,
-        fps=args.fps,
-        sigma=args.sigma,
-        recontact=args.recontact,
-        t_end=args.t_end,
-        **mesh_arguments(args),
-    )
+    with Reporter("render") as progress:
+        result = render(
+            args.out,
+            case_from_options(args),
+            backend=args.backend,
+            time=args.time,
+            frames=args.frames,
+            warp=parse_warp(args.warp),
+            size=args.size,
+            fps=args.fps,
+            sigma=args.sigma,
+            recontact=args.recontact,
+            t_end=args.t_end,
+            **mesh_arguments(args),
+            progress=progress,
+        )
     times = result.times_s
     print_notes(result.report.notes)
     print_warnings(result.warnings)

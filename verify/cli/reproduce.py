@@ -11,7 +11,6 @@ from twoball.verify.reproduce.driver import (
     PARTS,
     REPORT,
     check_output,
-    main_progress,
     parse_only,
 )
 from twoball.verify.reproduce.driver import reproduce as run_reproduction
@@ -26,11 +25,13 @@ def run(args: argparse.Namespace) -> int:
     names = parse_only(args.only)
     workers = check_workers(args.workers) if not args.scheduler else args.workers
     check_output(args.out)  # fail before any work
-    err = console_err()
-    with Runner(workers, args.scheduler) as runner:
-        bar, hook = main_progress(err)
-        with bar:
-            target, sections = run_reproduction(args.out, names, runner, hook, command_line(args))
+    from twoball.progress import Reporter
+
+    with Runner(workers, args.scheduler) as runner:  # the pool starts before the bar's thread
+        with Reporter("reproduce") as bar:
+            target, sections = run_reproduction(
+                args.out, names, runner, bar.task, command_line(args)
+            )
     out = console()
     out.print(f"wrote {target / REPORT} and {sum(len(s.figures) for s in sections)} figures")
     for s in sections:
@@ -47,13 +48,6 @@ def command_line(args: argparse.Namespace) -> str:
     if args.scheduler:
         words += ["--scheduler", args.scheduler]
     return " ".join(shlex.quote(w) for w in words)
-
-
-def console_err():
-    """Progress bars go to standard error."""
-    from rich.console import Console
-
-    return Console(stderr=True)
 
 
 def register(parser: argparse.ArgumentParser) -> None:

@@ -25,9 +25,9 @@ from twoball.verify.sweeps.sweeps import (
     plot_sweep,
 )
 
+from twoball.provenance import attach
+
 VALID_RANGES = dict(PARALLEL_RANGES)
-#: Sweeps at least this long show a progress bar (on stderr, never with --json).
-PROGRESS_FROM = 50
 
 
 def print_sweep(grid: SweepGrid, points: list[SweepPoint]) -> None:
@@ -92,28 +92,20 @@ def run(args: argparse.Namespace) -> int:
         "workers": workers,
         "scheduler": args.scheduler,
     }
+    from twoball.progress import QUICK, Reporter
+
     total = 1
     for n in grid.shape:
         total *= n
-    if args.json or total < PROGRESS_FROM:
-        result = sweep(values, base, **options)
-    else:
-        from rich.progress import Progress
-
-        label = f"sweep {' x '.join(grid.parameters)}"
-        err = console_err()
-        with Progress(console=err, transient=True, disable=not err.is_terminal) as bar:
-            task = bar.add_task(label, total=total)
-            result = sweep(
-                values, base, progress=lambda k: bar.update(task, completed=k), **options
-            )
+    with Reporter(f"sweep {' x '.join(grid.parameters)}", total=total, delay=QUICK) as bar:
+        result = sweep(values, base, progress=bar.update, **options)
     points = result.points
     print_notes(sweep_notes(points))
     print_warnings(sweep_warnings(points))
     if plot is not None:
         plot_sweep(grid, points, plot)
     if args.json:
-        print_json([p.as_dict() for p in points])
+        print_json(attach([p.as_dict() for p in points], result.provenance))
     else:
         print_sweep(grid, points)
         if plot is not None:
@@ -139,13 +131,6 @@ def sweep_warnings(points: list[SweepPoint]) -> list[str]:
         f"{len(flagged)} of {len(points)} points carry warnings (see --json), the first "
         f"at {flagged[0].index}: {flagged[0].report.warnings[0]}"
     ]
-
-
-def console_err():
-    """A console on standard error, for progress bars."""
-    from rich.console import Console
-
-    return Console(stderr=True)
 
 
 def register(parser: argparse.ArgumentParser) -> None:
@@ -190,5 +175,9 @@ def register(parser: argparse.ArgumentParser) -> None:
         help="run on an existing dask.distributed scheduler (needs the 'dask' extra)",
     )
     add_case_options(parser)
-    parser.add_argument("--json", action="store_true", help="print a JSON list")
+    parser.add_argument(
+        "--json",
+        action="store_true",
+        help='print JSON: {"results": [one object per point], "provenance": {...}}',
+    )
     parser.set_defaults(run=run)

@@ -9,14 +9,6 @@ import argparse
 import sys
 from pathlib import Path
 
-from rich.progress import (
-    BarColumn,
-    MofNCompleteColumn,
-    Progress,
-    SpinnerColumn,
-    TextColumn,
-    TimeElapsedColumn,
-)
 from rich.table import Table
 from twoball.verify.checks.results import VerifyResult
 from twoball.verify.cli.case_options import add_case_options, case_from_options
@@ -75,8 +67,6 @@ def print_result(result: VerifyResult, out: Path) -> None:
 
 def run(args: argparse.Namespace) -> int:
     """Run ``twoball verify``: :func:`twoball.verify` with the options, report in ``--out``."""
-    from twoball.verify.checks.config import config
-
     from twoball.reports import verify
 
     case = case_from_options(args)
@@ -89,27 +79,12 @@ def run(args: argparse.Namespace) -> int:
         "t_end": args.t_end,
         "out": args.out,
     }
-    if args.json:
-        result = verify(case, **options)
-    else:
-        columns = (
-            SpinnerColumn(),
-            TextColumn("{task.description}"),
-            BarColumn(),
-            MofNCompleteColumn(),
-            TimeElapsedColumn(),
-        )
-        configuration = config(
-            "fast" if args.fast else ("thorough" if args.thorough else "default")
-        )
-        steps = 3 + len(configuration.fem) + len(configuration.alpha)
-        with Progress(*columns, transient=True, console=console()) as bar:
-            task = bar.add_task("verify", total=steps)
+    from twoball.progress import Reporter
+    from twoball.reports import verify_steps
 
-            def advance(text: str) -> None:
-                bar.update(task, description=text, advance=1)
-
-            result = verify(case, progress=advance, **options)
+    steps = verify_steps(args.thorough, args.fast)
+    with Reporter("verify", total=steps) as progress:
+        result = verify(case, progress=progress, **options)
     out = Path(args.out).expanduser()
     if args.json:
         data = result.as_dict()

@@ -416,14 +416,15 @@ def field_series(model: BallModel, times_s: np.ndarray, backend: str = "fem") ->
     Node coordinates are ``R`` times the unit sphere [m].  Point data (shape (F, P)
     unless noted), all from eq. (3.16) evaluated in closed form:
 
-    ``u``, ``u_t``, ``u_tt``
+    ``u_m``, ``u_t_m_s``, ``u_tt_m_s2``
         Radial displacement [m], velocity [m/s], acceleration [m/s^2] of ``backend``.
-    ``displacement``
+    ``displacement_m``
         ``u n`` with the outward unit normal n (shape (F, P, 3)) [m], for warping.
-    ``u_fem``, ``u_legendre``, ``u_diff``
+    ``u_fem_m``, ``u_legendre_m``, ``u_diff_m``
         Both backends' u [m] and ``u_fem - u_legendre`` (when both were solved).
 
-    Field data: :func:`series_metadata` (``t_liftoff_s``, ``v_liftoff_m_s``, ...).
+    Field data: :func:`series_metadata` (``t_liftoff_s``, ``v_liftoff_m_s``, ...);
+    text ``case`` (:func:`case_text`).  Every name ends in its SI unit.
     """
     times_s = np.atleast_1d(np.asarray(times_s, dtype=float))
     scale = model.case.scalings
@@ -431,21 +432,33 @@ def field_series(model: BallModel, times_s: np.ndarray, backend: str = "fem") ->
     normal = points / np.linalg.norm(points, axis=1, keepdims=True)
     data: dict[str, np.ndarray] = {}
     u = model.nodal(backend, times_s, 0)
-    data["u"] = u
-    data["u_t"] = model.nodal(backend, times_s, 1)
-    data["u_tt"] = model.nodal(backend, times_s, 2)
-    data["displacement"] = u[:, :, None] * normal[None, :, :]
+    data["u_m"] = u
+    data["u_t_m_s"] = model.nodal(backend, times_s, 1)
+    data["u_tt_m_s2"] = model.nodal(backend, times_s, 2)
+    data["displacement_m"] = u[:, :, None] * normal[None, :, :]
     for name in BACKENDS:
         if name in model.backends:
-            data[f"u_{name}"] = u if name == backend else model.nodal(name, times_s, 0)
-    if "u_fem" in data and "u_legendre" in data:
-        data["u_diff"] = data["u_fem"] - data["u_legendre"]
+            data[f"u_{name}_m"] = u if name == backend else model.nodal(name, times_s, 0)
+    if "u_fem_m" in data and "u_legendre_m" in data:
+        data["u_diff_m"] = data["u_fem_m"] - data["u_legendre_m"]
     return TimeSeries(
         points * scale.length,
         model.mesh.cells,
         times_s,
         data,
         series_metadata(model, backend),
+        {"case": case_text(model, backend)},
+    )
+
+
+def case_text(model: BallModel, backend: str) -> str:
+    """The case and the fields' units in one line (a text of every exported file)."""
+    c = model.case
+    return (
+        f"twoball {backend}: R = {c.radius:g} m, c = {c.wave_speed:g} 1/s, v0 = {c.v0:g} m/s, "
+        f"phi_a = {c.phi_a:.6g} rad ({c.phi_a_source}), D = {c.damping:g}, N = {c.modes}, "
+        f"g = {c.g:g} m/s^2; fields u_m [m], u_t_m_s [m/s], u_tt_m_s2 [m/s^2], "
+        "displacement_m [m]; time [s]"
     )
 
 

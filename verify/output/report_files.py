@@ -102,21 +102,20 @@ def result_files(
 ) -> dict[str, str]:
     """``results.json`` (byte-identical for the same inputs) and ``provenance.json``.
 
-    The provenance holds what differs from run to run: run times (every
-    ``seconds`` entry, at its place in the results), the date, the versions.
+    ``data["provenance"]`` (:func:`twoball.provenance.block`, made here if
+    missing) is split: ``results.json`` keeps what is the same for the same
+    inputs (versions, platform, case); ``provenance.json`` holds the whole
+    block (with the UTC time, the command line and the call) and what else
+    differs from run to run: run times (every ``seconds`` entry, at its place in
+    the results).
     """
-    import platform
-    from datetime import UTC, datetime
+    from twoball.provenance import block, stable
 
-    from twoball._version import __version__
-
-    results, timings = split_provenance(dict(data), keys)
-    provenance = {
-        "generated": datetime.now(UTC).isoformat(timespec="seconds"),
-        "twoball": __version__,
-        "python": platform.python_version(),
-        "seconds": timings or {},
-    }
+    data = dict(data)
+    full = data.pop("provenance", None) or block()
+    results, timings = split_provenance(data, keys)
+    results["provenance"] = stable(full)
+    provenance = {**full, "seconds": timings or {}}
     return {"results.json": json_text(results), PROVENANCE: json_text(provenance)}
 
 

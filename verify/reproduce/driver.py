@@ -27,6 +27,8 @@ from twoball.verify.reproduce import icm as reproduce_icm
 from twoball.verify.reproduce.common import Context, Section, comparison_table
 from twoball.verify.sweeps.parallel import Runner
 
+from twoball.progress import TaskHook
+
 #: Part name -> function(Context) -> Section, in report order.
 PARTS: dict[str, Callable[[Context], Section]] = {
     "table2": reproduce_icm.part_table2,
@@ -70,16 +72,18 @@ def reproduce(
     out: str | os.PathLike,
     only: Sequence[str] | None = None,
     runner: Runner | None = None,
-    progress: Callable[[str, int], Callable[[int], None]] | None = None,
+    progress: TaskHook | None = None,
     command: str = "twoball reproduce",
 ) -> tuple[Path, list[Section]]:
     """Run the selected parts and write figures, ``reproduction.md`` and ``.json`` to ``out``.
 
     Returns the output directory and the sections.  Nothing is written to ``out``
-    unless every part succeeded.
+    unless every part succeeded.  ``progress(label, total)`` starts a counted task
+    and returns its ``update(done)``: :meth:`twoball.progress.Reporter.task`.
     """
     from twoball.verify.output.report_files import result_files
 
+    from twoball.provenance import block
     from twoball.staging import staged_folder
 
     target = check_output(out)
@@ -108,6 +112,8 @@ def reproduce(
             data = json.loads(
                 json.dumps(report_data(sections, runner.describe(), total), default=_json)
             )
+            arguments = {"out": out, "only": names, "runner": runner.describe()}
+            data["provenance"] = block(None, "twoball.verify.reproduce.driver.reproduce", arguments)
             files = result_files(data, ("seconds", "generated", "runner"))
             (staging / DATA).write_text(files["results.json"], encoding="utf-8")
             (staging / PROVENANCE).write_text(files[PROVENANCE], encoding="utf-8")
@@ -186,26 +192,6 @@ def render_markdown(sections: list[Section], where: str, seconds: float, command
 def _anchor(title: str) -> str:
     keep = [ch.lower() if ch.isalnum() else "-" if ch == " " else "" for ch in title]
     return "".join(keep)
-
-
-def main_progress(console: Any) -> tuple[Any, Callable[[str, int], Callable[[int], None]]]:
-    """A rich Progress on ``console`` and the hook that adds one bar per long task."""
-    from rich.progress import BarColumn, MofNCompleteColumn, Progress, TextColumn, TimeElapsedColumn
-
-    bar = Progress(
-        TextColumn("{task.description}"),
-        BarColumn(),
-        MofNCompleteColumn(),
-        TimeElapsedColumn(),
-        console=console,
-        disable=not console.is_terminal,
-    )
-
-    def hook(label: str, total: int) -> Callable[[int], None]:
-        task = bar.add_task(label, total=total)
-        return lambda done: bar.update(task, completed=done)
-
-    return bar, hook
 
 
 __all__ = ["DEFAULT_OUT", "PARTS", "check_output", "parse_only", "reproduce"]

@@ -7,21 +7,18 @@ the values are dimensionless (length R, time 1/c) and the run rows SI.
 
 from __future__ import annotations
 
-from collections.abc import Callable
 from dataclasses import dataclass, field
 from typing import Any
 
 from twoball.modal.parameters import Case
 
+from twoball.progress import Step as Progress  # the one progress mechanism (twoball.progress)
+from twoball.progress import silent as quiet
+
 from .quantities import QuantityResult
 
 STUDIES: tuple[str, ...] = ("h", "order", "modes", "dt")
-Progress = Callable[[str], None]
-
-
-def quiet(_: str) -> None:
-    """A :data:`Progress` that says nothing."""
-    return None
+__all__ = ["STUDIES", "Progress", "StudyResult", "case_settings", "quiet", "si"]
 
 
 def si(value: float | None, scale: float) -> float | None:
@@ -48,6 +45,8 @@ class StudyResult:
         One row per discretisation: label, DOFs, t_l, v_l, seconds (SI).
     settings : dict
         The case and options used.
+    provenance : dict, optional
+        Versions, command line or call, UTC time, case (:mod:`twoball.provenance`).
     """
 
     study: str
@@ -58,6 +57,7 @@ class StudyResult:
     runs: list[dict[str, Any]] = field(default_factory=list)
     settings: dict[str, Any] = field(default_factory=dict)
     seconds: float = 0.0
+    provenance: dict[str, Any] | None = None
 
     @property
     def passed(self) -> bool:
@@ -76,6 +76,7 @@ class StudyResult:
             "notes": self.notes,
             "runs": self.runs,
             "quantities": [q.as_dict() for q in self.quantities],
+            "provenance": self.provenance,
         }
 
 

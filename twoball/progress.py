@@ -1,0 +1,277 @@
+"""Progress of long work on standard error: the one mechanism of every command.
+
+A :class:`Reporter` is what the library's ``progress`` callbacks are given:
+
+* called with a short text, ``reporter("fem P2 level 3")``, it starts the next
+  step (a :data:`Step` callback, as :func:`twoball.verify` and
+  :func:`twoball.converge` take);
+* ``reporter.task(label, total)`` starts a counted task and returns its
+  ``update(done)`` (a :data:`TaskHook`, as ``twoball reproduce`` takes);
+* ``reporter.update(done)`` sets the count of its own total (sweeps).
+
+On a terminal it draws a rich bar (transient: gone when the work ends).  Anywhere
+else (a CI log, a pipe, a file) it prints plain lines such as
+``twoball: verify: 3/12 fem P2 level 3 (14 s)``: one when the work begins, then
+at most one every :data:`INTERVAL` seconds (a background thread also prints one
+while a single step runs long), and a last ``done`` line.  With ``delay`` the
+reporter stays silent unless the work outlasts it, so quick runs print nothing.
+``twoball --quiet`` (:func:`set_quiet`) silences every reporter; warnings and
+errors are printed elsewhere and are not affected.  The background thread (and
+rich's) starts with the first report, not on entering: a process pool started
+in between forks without it (see :mod:`twoball.verify.sweeps.parallel`).  Nothing goes to standard
+output, so ``--json`` output stays clean.
+
+rich is imported only when a bar is drawn.
+"""
+
+from __future__ import annotations
+
+import sys
+import threading
+import time
+from collections.abc import Callable
+from typing import Any, TextIO
+
+__all__ = [
+    "INTERVAL",
+    "Reporter",
+    "Step",
+    "TaskHook",
+    "is_quiet",
+    "set_quiet",
+    "silent",
+]
+
+#: Seconds between two progress lines (plain-text mode).
+INTERVAL = 3.0
+#: Seconds a reporter with a delay waits before its first output (quick runs: none).
+QUICK = 2.0
+
+Step = Callable[[str], None]
+"""A progress callback: called with a short text as each step starts."""
+TaskHook = Callable[[str, int], Callable[[int], None]]
+"""``hook(label, total)`` starts a counted task and returns its ``update(done)``."""
+
+_QUIET = False
+
+
+def set_quiet(quiet: bool) -> None:
+    """Silence (True) or allow (False) every progress report of this process."""
+    global _QUIET
+    _QUIET = bool(quiet)
+
+
+def is_quiet() -> bool:
+    """True after ``set_quiet(True)`` (``twoball --quiet``)."""
+    return _QUIET
+
+
+def silent(_: str) -> None:
+    """A :data:`Step` that says nothing."""
+    return None
+
+
+def _ignore(_: int) -> None:
+    return None
+
+
+class Reporter:
+    """Progress of one command on standard error (a context manager).
+
+    Parameters
+    ----------
+    name : str
+        What runs, first word of every line (``verify``, ``export``, ...).
+    total : int, optional
+        Number of steps, if known (shown as ``k/total``).
+    stream : file, optional
+        Where to write (default: standard error at the time of entering).
+    terminal : bool, optional
+        Draw a rich bar (True) or print lines (False); default: whether
+        ``stream`` is a terminal.
+    interval : float
+        Seconds between two lines.
+    delay : float
+        Print nothing unless the work lasts longer than this [s].
+    enabled : bool, optional
+        Default: not :func:`is_quiet`.
+    """
+
+    def __init__(
+        self,
+        name: str,
+        total: int | None = None,
+        *,
+        stream: TextIO | None = None,
+        terminal: bool | None = None,
+        interval: float = INTERVAL,
+        delay: float = 0.0,
+        enabled: bool | None = None,
+    ) -> None:
+        self.name = name
+        self.total = total
+        self.interval = interval
+        self.delay = delay
+        self.enabled = (not _QUIET) if enabled is None else bool(enabled)
+        self._stream = stream
+        self._terminal = terminal
+        self._lock = threading.RLock()
+        self._stop = threading.Event()
+        self._thread: threading.Thread | None = None
+        self._count = 0  # steps begun (shown in lines)
+        self._completed = 0  # steps finished (shown by the bar)
+        self._text = ""
+        self._task: list[Any] | None = None  # [label, done, total] of the latest task
+        self._begun = False
+        self._lines = 0
+        self._last = -float("inf")
+        self._start = time.monotonic()
+        self._bar: Any = None
+        self._bar_tasks: dict[str, Any] = {}
+
+    # ------------------------------------------------------------------ context
+    def __enter__(self) -> Reporter:
+        self._start = time.monotonic()
+        if not self.enabled:
+            return self
+        if self._stream is None:
+            self._stream = sys.stderr
+        if self._terminal is None:
+            isatty = getattr(self._stream, "isatty", None)
+            self._terminal = bool(isatty and isatty())
+        return self  # no thread yet: a process pool may still fork (see _show)
+
+    def __exit__(self, kind: type[BaseException] | None, *exc: object) -> None:
+        self._stop.set()
+        if self._thread is not None:
+            self._thread.join()
+        with self._lock:
+            if self._bar is not None:
+                self._bar.stop()
+                self._bar = None
+            elif kind is None and self._lines:
+                counted = f" {self.total}/{self.total}" if self.total else ""
+                self._write(f"done{counted} ({self._elapsed():.0f} s)")
+
+    # ------------------------------------------------------------------ callbacks
+    def __call__(self, text: str) -> None:
+        """Start the next step, described by ``text``."""
+        with self._lock:
+            self._count += 1
+            self._completed = self._count - 1
+            self._text = text
+            self._task = None
+            self._show()
+
+    def update(self, completed: int, text: str | None = None) -> None:
+        """Set the number of steps done (and optionally the text)."""
+        with self._lock:
+            self._count = self._completed = int(completed)
+            if text is not None:
+                self._text = text
+            self._show()
+
+    def task(self, label: str, total: int) -> Callable[[int], None]:
+        """Start a counted task; returns ``update(done)`` (a :data:`TaskHook`)."""
+        if not self.enabled:
+            return _ignore
+        with self._lock:
+            entry = [label, 0, int(total)]
+            self._task = entry
+            self._show(label=label)
+
+        def update(done: int) -> None:
+            with self._lock:
+                entry[1] = int(done)
+                self._task = entry
+                self._show(label=label)
+
+        return update
+
+    # ------------------------------------------------------------------ output
+    def _elapsed(self) -> float:
+        return time.monotonic() - self._start
+
+    def _message(self) -> str:
+        if self._task is not None:
+            label, done, total = self._task
+            return f"{label} {done}/{total}"
+        if self.total:
+            return f"{min(self._count, self.total)}/{self.total} {self._text}".rstrip()
+        return self._text or "working"
+
+    def _write(self, message: str) -> None:
+        assert self._stream is not None
+        try:
+            self._stream.write(f"twoball: {self.name}: {message}\n")
+            self._stream.flush()
+        except (OSError, ValueError):  # a closed or full stderr never stops the work
+            self.enabled = False
+        self._lines += 1
+        self._last = time.monotonic()
+
+    def _show(self, label: str | None = None) -> None:
+        """Show the current state: the bar now, a line when one is due (lock held)."""
+        if not self.enabled or self._stream is None:
+            return
+        self._begun = True
+        if self._thread is None:  # started with the work, after any pool has forked
+            self._thread = threading.Thread(target=self._beat, name="twoball-progress", daemon=True)
+            self._thread.start()
+        if self._elapsed() < self.delay:
+            return
+        if self._terminal:
+            self._draw(label)
+            return
+        if self._lines == 0 or time.monotonic() - self._last >= self.interval:
+            self._write(f"{self._message()} ({self._elapsed():.0f} s)")
+
+    def _draw(self, label: str | None) -> None:
+        """Update the rich bar (started on first use)."""
+        if self._bar is None:
+            from rich.console import Console
+            from rich.progress import (
+                BarColumn,
+                MofNCompleteColumn,
+                Progress,
+                SpinnerColumn,
+                TextColumn,
+                TimeElapsedColumn,
+            )
+
+            self._bar = Progress(
+                SpinnerColumn(),
+                TextColumn("{task.description}"),
+                BarColumn(),
+                MofNCompleteColumn(),
+                TimeElapsedColumn(),
+                console=Console(file=self._stream, markup=False, highlight=False),
+                transient=True,
+            )
+            self._bar.start()
+            self._bar_tasks[""] = self._bar.add_task(self.name, total=self.total)
+        main = self._bar_tasks[""]
+        self._bar.update(
+            main,
+            description=f"{self.name}: {self._text}" if self._text else self.name,
+            completed=self._completed,
+        )
+        if self._task is not None:
+            name, done, total = self._task
+            key = label or name
+            if key not in self._bar_tasks:
+                self._bar_tasks[key] = self._bar.add_task(key, total=total)
+            self._bar.update(self._bar_tasks[key], completed=done, total=total)
+
+    def _beat(self) -> None:
+        """Background: a line while one step runs long; the bar after a delay."""
+        while not self._stop.wait(0.25):
+            with self._lock:
+                if not self.enabled or self._elapsed() < self.delay:
+                    continue
+                if self._terminal:
+                    if self._bar is None:
+                        self._draw(None)
+                elif self._begun or self.delay > 0:
+                    if time.monotonic() - self._last >= self.interval:
+                        self._write(f"{self._message()} ({self._elapsed():.0f} s)")
