@@ -84,7 +84,7 @@ def test_eigen_degree_limits():
 
 def test_save_figure_checks_the_path(model, tmp_path):
     figure = eigen_figure([eigen_table(0, 1, 1)])
-    for bad in (tmp_path / "missing" / "a.png", tmp_path / "a.svg"):
+    for bad in (tmp_path / "missing" / "a.png", tmp_path / "a.xyz"):
         with pytest.raises(ParameterError, match="out"):
             save_figure(figure, bad)
     assert list(tmp_path.iterdir()) == []
@@ -127,7 +127,7 @@ def test_cli_plot_bad_input(tmp_path, capsys, argv, flag):
     assert list(tmp_path.iterdir()) == []
 
 
-@pytest.mark.parametrize("name", ["missing/plot.png", "plot.jpg"])
+@pytest.mark.parametrize("name", ["missing/plot.png", "plot.xyz", "plot.pgf"])
 def test_cli_plot_bad_out(tmp_path, capsys, name):
     with pytest.raises(SystemExit) as stop:
         main(["plot", "pole", "--level", "1", "--out", str(tmp_path / name)])

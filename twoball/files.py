@@ -390,15 +390,17 @@ def plot(
     sigma: str = "lanczos",
     recontact: str = "window",
     t_end: float | None = None,
+    dpi: float | None = None,
 ) -> PlotResult:
-    """PNG figures: ``waterfall`` of u(phi) (Fig. 6), ``pole`` motion, FE ``eigen`` errors.
+    """Figures: ``waterfall`` of u(phi) (Fig. 6), ``pole`` motion, FE ``eigen`` errors.
 
     Parameters
     ----------
     kind : {"waterfall", "pole", "eigen"}
         The figure.
     out : path
-        Output PNG.
+        Output file; its suffix chooses the format: any format matplotlib
+        writes (``.pdf``, ``.svg``, ``.eps``, ``.png``, ...).
     case : Case, optional
         The impact (default the basketball preset); not used by ``eigen``.
     backends : sequence of {"fem", "legendre"}
@@ -409,17 +411,25 @@ def plot(
         ``eigen``: mesh levels, element orders and the largest degree l.
     mesh, level, order, initial, sigma, recontact, t_end
         As in :func:`export` (``waterfall`` and ``pole``).
+    dpi : float, optional
+        Resolution of raster formats (PNG, ...) [dots per inch], 50 to 1200;
+        default 300.
+
+    Notes
+    -----
+    ``pole`` with both backends puts a panel of the difference finite elements
+    minus closed form under each quantity.
     """
     from twoball.staging import check_file
-    from twoball.verify.output.figures import PLOT_KINDS, save_figure
+    from twoball.verify.output.figures import PLOT_KINDS, check_dpi, figure_format, save_figure
     from twoball.verify.output.figures.eigen import eigen_figure, eigen_table
     from twoball.verify.output.figures.pole import pole_figure
     from twoball.verify.output.figures.waterfall import WATERFALL_INSTANTS, waterfall_figure
 
     if kind not in PLOT_KINDS:
         raise ParameterError("kind", "one of " + ", ".join(PLOT_KINDS), kind)
-    if not str(out).lower().endswith(".png"):
-        raise ParameterError("out", "a file name ending in .png", str(out))
+    figure_format(out, "out")
+    dpi = check_dpi(dpi, "dpi")
     target = check_file(out)
     rows: list[tuple[str, str]] = []
     reports: dict[str, LiftoffReport] = {}
@@ -467,5 +477,5 @@ def plot(
             else:
                 text = "no lift-off"
             rows.append((f"lift-off ({name})", text))
-    save_figure(figure, target)
+    save_figure(figure, target, "out", dpi, "dpi")
     return PlotResult(target, kind, rows, reports, warnings)
