@@ -12,6 +12,7 @@ from twoball.verify.output.fields import ball_model
 from twoball.verify.output.figures import save_figure
 from twoball.verify.output.figures.eigen import eigen_figure, eigen_table
 from twoball.verify.output.figures.pole import pole_figure
+from twoball.verify.output.figures.style import curves
 from twoball.verify.output.figures.waterfall import waterfall_figure, waterfall_times
 
 
@@ -53,7 +54,8 @@ def test_waterfall_times():
 
 def test_pole_plot_marks_liftoff(model, tmp_path):
     figure = pole_figure(model)
-    top, middle, bottom = figure.axes[:3]
+    assert len(figure.axes) == 6  # u, u_t, u_tt, each with its difference panel below
+    top, middle, bottom = figure.axes[0:6:2]
     for name in ("fem", "legendre"):
         t_ms = model.backends[name].report.t_liftoff_s * 1e3
         marked = [
@@ -63,8 +65,62 @@ def test_pole_plot_marks_liftoff(model, tmp_path):
         ]
         assert marked, name
     assert any(np.allclose(line.get_ydata(), -9.81) for line in bottom.get_lines())
+    assert "lift-off" in [t.get_text() for t in bottom.get_legend().get_texts()]
     out = save_figure(figure, tmp_path / "pole.png")
     assert drawn(out) > 0.03
+
+
+def test_pole_difference_panel_is_fem_minus_closed_form(model):
+    figure = pole_figure(model, samples=400)
+    below_u = figure.axes[1]
+    (line,) = curves(below_u)
+    t_ms, shown = line.get_data()
+    # the same difference evaluated here from the two series, in m
+    t = np.asarray(t_ms) * 1e-3 / model.case.scalings.time
+    fem = model.backends["fem"].series.pole(t).u
+    closed = model.backends["legendre"].series.pole(t).u
+    expected_m = (fem - closed) * model.case.radius
+    unit = below_u.get_ylabel().split("[")[1].rstrip("]")
+    factor = {"m": 1.0, "mm": 1e3, r"$\mu$m": 1e6, "nm": 1e9}[unit]
+    np.testing.assert_allclose(shown, expected_m * factor, rtol=1e-12, atol=1e-12)
+    # level 1 P1 against the closed form differs by about a millimetre somewhere
+    assert 1e-4 < np.abs(expected_m).max() < 1e-2
+    single = pole_figure(ball_model(preset("basketball"), 1, 1, backends=("legendre",)), 200)
+    assert len(single.axes) == 3  # nothing to compare: no difference panels
+
+
+@pytest.mark.parametrize(("suffix", "head"), [(".pdf", b"%PDF"), (".svg", b"<svg")])
+def test_cli_plot_pole_vector_formats(tmp_path, capsys, suffix, head):
+    out = tmp_path / f"pole{suffix}"
+    assert main(["plot", "pole", "--level", "1", "--out", str(out)]) == 0
+    data = out.read_bytes()
+    assert data.startswith(head) if suffix == ".pdf" else head in data[:2000]
+    assert out.stat().st_size > 20_000
+    assert sorted(p.name for p in tmp_path.iterdir()) == [out.name]
+
+
+def test_plot_api_dpi_sets_raster_size(tmp_path):
+    from twoball import plot
+
+    figure_inches = eigen_figure([eigen_table(0, 1, 1)]).get_size_inches()
+    for dpi in (100, 200):
+        out = plot("eigen", tmp_path / f"e{dpi}.png", levels=[0], orders=[1], max_degree=1, dpi=dpi)
+        height, width = mpimg.imread(out.file).shape[:2]
+        assert (width, height) == tuple(round(x * dpi) for x in figure_inches)
+    for bad in (10, 5000, float("nan"), "300", True):
+        with pytest.raises(ParameterError, match="dpi"):
+            plot("eigen", tmp_path / "bad.png", levels=[0], orders=[1], dpi=bad)
+    assert not (tmp_path / "bad.png").exists()
+
+
+@pytest.mark.parametrize("dpi", ["10", "1e4", "nan"])
+def test_cli_plot_bad_dpi(tmp_path, capsys, dpi):
+    with pytest.raises(SystemExit) as stop:
+        main(["plot", "eigen", "--levels", "0", "--dpi", dpi, "--out", str(tmp_path / "e.png")])
+    err = capsys.readouterr().err
+    assert stop.value.code == 2 and len(err.strip().splitlines()) == 1
+    assert err.startswith("twoball: error: --dpi must be") and "[50, 1200]" in err
+    assert list(tmp_path.iterdir()) == []
 
 
 def test_eigen_errors_decrease_with_refinement(tmp_path):

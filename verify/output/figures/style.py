@@ -32,6 +32,9 @@ COLOURS = ("#0072B2", "#D55E00", "#009E73", "#CC79A7", "#E69F00", "#56B4E9", "#0
 LINE_STYLES = ("-", "--", "-.", ":", (0, (5, 1)), (0, (3, 1, 1, 1)))
 #: Marker of a lift-off instant, used the same way on every figure.
 LIFTOFF_MARKER = "o"
+#: ``gid`` of an axis holding a stack of shifted, non-overlapping curves (a waterfall):
+#: the one kind of axis exempt from :data:`MAX_CURVES`.
+STACKED = "twoball-stacked-curves"
 #: Colour of reference lines (-g, expected slopes, zero).
 REFERENCE_COLOUR = "0.25"
 

@@ -9,6 +9,7 @@ import numpy as np
 from twoball.modal.errors import ParameterError
 from twoball.verify.output.fields import BallModel, node_polar_angles
 from twoball.verify.output.figures import LABELS, new_figure
+from twoball.verify.output.figures.style import STACKED, label, styled
 
 if TYPE_CHECKING:
     from matplotlib.figure import Figure
@@ -23,6 +24,7 @@ def waterfall_times(model: BallModel, instants: int = WATERFALL_INSTANTS) -> np.
     return np.linspace(0.0, model.t_end_s, int(instants))
 
 
+@styled
 def waterfall_figure(
     model: BallModel,
     instants: int = WATERFALL_INSTANTS,
@@ -35,7 +37,9 @@ def waterfall_figure(
     its time [ms].  Lines: the closed form, eq. (3.16), on a fine grid of polar
     angles.  Dots: the finite-element nodal values against the polar angle of
     each node (all azimuths; their spread shows the departure from axial
-    symmetry).  SI: u in mm, phi in rad, t in ms.
+    symmetry).  SI: u in mm, phi in rad, t in ms.  The axis is a stack of
+    shifted curves that never overlap, tagged :data:`~.style.STACKED` (the one
+    kind of axis allowed more than six curves).
 
     Parameters
     ----------
@@ -102,20 +106,31 @@ def waterfall_figure(
             va="center",
             fontsize=7,
         )
-    axis.axvline(model.case.phi_a, color="grey", linewidth=0.7, linestyle=":")
+    axis.axvline(
+        model.case.phi_a,
+        color="grey",
+        linewidth=0.7,
+        linestyle=":",
+        label=r"edge of the contact at $t = 0$, $\varphi_a$",
+    )
     axis.set_xlim(0.0, math.pi)
-    axis.set_xticks(np.linspace(0.0, math.pi, 5), ["0", "π/4", "π/2", "3π/4", "π"])
-    axis.set_xlabel("polar angle φ [rad] (0: top, where the upper body rests)")
-    axis.set_ylabel(f"u(t, φ) [mm], curves shifted by {offset_mm:.3g} mm per instant")
+    axis.set_xticks(
+        np.linspace(0.0, math.pi, 5), ["0", r"$\pi/4$", r"$\pi/2$", r"$3\pi/4$", r"$\pi$"]
+    )
+    axis.set_xlabel(label(r"polar angle $\varphi$ (0: top, where the upper body rests)", "rad"))
+    axis.set_ylabel(
+        label(rf"$u(t, \varphi)$ + {offset_mm:.3g} mm per instant (time at the right)", "mm")
+    )
+    axis.set_gid(STACKED)
     axis.set_ylim(_waterfall_limits(curves, offset_mm, len(times)))
-    axis.legend(loc="upper left", fontsize=8, markerscale=5)
+    axis.legend(loc="upper left", markerscale=5)
     case = model.case
     axis.set_title(
-        f"Radial displacement at {len(times)} instants (cf. Fig. 6): φa = {case.phi_a:.3g}, "
-        f"R = {case.radius:g} m, c = {case.wave_speed:g} 1/s, D = {case.damping:g}",
-        fontsize=9,
+        f"Radial displacement at {len(times)} instants (cf. Fig. 6): "
+        rf"$\varphi_a$ = {case.phi_a:.3g} rad, $R$ = {case.radius:g} m, "
+        f"$c$ = {case.wave_speed:g} 1/s, $D$ = {case.damping:g}"
     )
-    axis.grid(True, axis="x", alpha=0.3)
+    axis.grid(False, axis="y")
     return figure
 
 
