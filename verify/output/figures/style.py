@@ -131,5 +131,13 @@ def time_label(after: str = "") -> str:
 
 
 def curves(axis: Any) -> list[Any]:
-    """The data curves of ``axis``: lines of more than two points (no markers, no rules)."""
-    return [line for line in axis.get_lines() if len(np.atleast_1d(line.get_xdata())) > 2]
+    """The data curves of ``axis``: drawn lines through more than two points.
+
+    Not counted: reference rules and slopes (two points), single markers and
+    marker-only series (scattered dots).
+    """
+    return [
+        line
+        for line in axis.get_lines()
+        if len(np.atleast_1d(line.get_xdata())) > 2 and line.get_linestyle() not in ("None", "")
+    ]
