@@ -36,6 +36,9 @@ MACRO_BLOCK = 16  # MP4 (H.264, yuv420p) frame sizes must be multiples of this
 AUTO_WARP_SHARE = 0.15  # auto warp: the largest displacement drawn at 15 % of R
 BODY_SHARE = 0.2  # radius of the drawn upper body, as a share of R
 MAX_SIZE = 4096  # largest accepted image side [px]
+COLOUR_MAP = "coolwarm"  # of the displacement, drawn on the ball and in the colour bar
+BAR_COLOURS = 96  # GIF palette entries kept for the colour map (the rest: median cut)
+FOOTER_CHARS = 30  # longest footer line at the default size [characters]
 
 
 @dataclass(frozen=True)
@@ -232,25 +235,27 @@ class _Renderer:
         self.surface.point_data["u [mm]"] = scene.u[0] * 1e3
         self.plotter = pv.Plotter(off_screen=True, window_size=list(size))
         scale = min(size[0] / DEFAULT_SIZE[0], size[1] / DEFAULT_SIZE[1])  # text follows size
-        small, large = max(6, round(8 * scale)), max(8, round(11 * scale))
+        small, large = max(9, round(10 * scale)), max(10, round(12 * scale))
         self.plotter.set_background("white")
         clim = color_limits(scene.u * 1e3)
         self.actor = self.plotter.add_mesh(
             self.surface,
             scalars="u [mm]",
-            cmap="coolwarm",
+            cmap=COLOUR_MAP,
+            n_colors=256,
             clim=clim,
             smooth_shading=True,
             copy_mesh=False,
             scalar_bar_args={
-                "title": "u [mm]",
+                "title": "u [mm]\n",  # the newline lifts the title clear of the top label
                 "color": "black",
                 "vertical": True,
-                "position_x": 0.86,
-                "position_y": 0.2,
-                "height": 0.6,
+                "position_x": 0.84,
+                "position_y": 0.22,
+                "height": 0.56,
                 "width": 0.08,
                 "fmt": "%.1f",
+                "n_labels": 3,
                 "title_font_size": max(10, round(16 * scale)),
                 "label_font_size": max(9, round(14 * scale)),
                 "unconstrained_font_size": True,
@@ -259,7 +264,9 @@ class _Renderer:
         self.drawn = self.actor.mapper.dataset  # what the mapper draws (normals added)
         body = pv.Sphere(radius=self.body_radius, theta_resolution=32, phi_resolution=32)
         self.body = self.plotter.add_mesh(body, color="gold", smooth_shading=True)
-        self.plotter.add_text(scene.label, position="lower_left", font_size=small, color="black")
+        # short lines: a corner annotation shrinks its font until its longest line fits
+        footer = wrap_footer(scene.label, max(FOOTER_CHARS, round(FOOTER_CHARS * scale)))
+        self.plotter.add_text(footer, position="lower_left", font_size=small, color="black")
         self.clock = self.plotter.add_text(
             "", position="upper_left", font_size=large, color="black"
         )
@@ -338,6 +345,55 @@ def render_frames(
             renderer.close()
 
 
+def wrap_footer(text: str, width: int = FOOTER_CHARS) -> str:
+    """``text`` broken after ``:`` and ``,`` into lines of at most ``width`` characters.
+
+    >>> wrap_footer("finite elements: R = 0.12 m, c = 320 1/s, D = 0.13", 24)
+    'finite elements:\nR = 0.12 m, c = 320 1/s,\nD = 0.13'
+    """
+    import re
+
+    pieces = re.findall(r"[^,:]+[,:]?", text)
+    lines: list[str] = []
+    for piece in (p.strip() for p in pieces):
+        if lines and not lines[-1].endswith(":") and len(lines[-1]) + 1 + len(piece) <= width:
+            lines[-1] += " " + piece
+        else:
+            lines.append(piece)
+    return "\n".join(lines)
+
+
+def gif_palette(frames: np.ndarray, reserved: np.ndarray) -> np.ndarray:
+    """A 256-colour palette (256, 3) for every frame of a GIF: ``reserved`` plus a median cut.
+
+    The reserved colours (the colour map of the bar) are kept exactly, so the
+    colour bar stays smooth; the rest is the median cut of all frames' pixels.
+    One palette for all frames: colours do not flicker from frame to frame.
+    """
+    from PIL import Image
+
+    reserved = np.asarray(reserved, dtype=np.uint8).reshape(-1, 3)
+    free = 256 - len(reserved)
+    pixels = frames.reshape(-1, 3)
+    step = max(1, pixels.shape[0] // 400_000)  # a sample is enough for the median cut
+    sample = pixels[::step]
+    side = int(np.ceil(np.sqrt(sample.shape[0])))
+    padded = np.concatenate([sample, np.repeat(sample[-1:], side * side - len(sample), axis=0)])
+    image = Image.fromarray(padded.reshape(side, side, 3))
+    cut = image.quantize(colors=free, method=Image.Quantize.MEDIANCUT)
+    palette = np.asarray(cut.getpalette()[: 3 * free], dtype=np.uint8).reshape(-1, 3)
+    palette = np.concatenate([reserved, palette])
+    return np.concatenate([palette, np.zeros((256 - len(palette), 3), np.uint8)])
+
+
+def colour_map_samples(count: int = BAR_COLOURS) -> np.ndarray:
+    """``count`` evenly spaced colours (count, 3), uint8, of :data:`COLOUR_MAP`."""
+    from matplotlib import colormaps
+
+    rgb = colormaps[COLOUR_MAP](np.linspace(0.0, 1.0, count))[:, :3]
+    return np.round(rgb * 255).astype(np.uint8)
+
+
 def _write_png(target: Path, images: Iterator[np.ndarray]) -> int:
     import imageio.v3 as iio
 
@@ -347,13 +403,29 @@ def _write_png(target: Path, images: Iterator[np.ndarray]) -> int:
 
 
 def _write_gif(target: Path, images: Iterator[np.ndarray], fps: float) -> int:
-    import imageio.v3 as iio
+    import io
 
-    frames = list(images)
-    # encoded in memory, then written by Python: a full disk is one OSError (imageio's
-    # writer would retry the failed flush when it is garbage-collected)
-    data = iio.imwrite("<bytes>", np.stack(frames), extension=".gif", duration=1000.0 / fps, loop=0)
-    target.write_bytes(data)
+    from PIL import Image
+
+    frames = np.stack(list(images))
+    # one palette for all frames, holding the colour map: a smooth colour bar, no flicker
+    palette = Image.new("P", (1, 1))
+    palette.putpalette(gif_palette(frames, colour_map_samples()).ravel().tolist())
+    indexed = [
+        Image.fromarray(f).quantize(palette=palette, dither=Image.Dither.NONE) for f in frames
+    ]
+    # encoded in memory, then written by Python: a full disk is one OSError
+    buffer = io.BytesIO()
+    indexed[0].save(
+        buffer,
+        format="GIF",
+        save_all=True,
+        append_images=indexed[1:],
+        duration=round(1000.0 / fps),
+        loop=0,
+        optimize=False,
+    )
+    target.write_bytes(buffer.getvalue())
     return len(frames)
 
 

@@ -58,7 +58,7 @@ def _plot_fig6(ctx: Context, phi: np.ndarray, t_ms: np.ndarray, u_mm: np.ndarray
     fig, ax = new_figure(figsize=(7.5, 5.5), subplot_kw={"projection": "3d"})
     colours = colormaps["viridis"](np.linspace(0.0, 0.9, len(t_ms)))
     for k in range(len(t_ms)):
-        ax.plot(phi, np.full_like(phi, t_ms[k]), u_mm[k], lw=0.9, color=colours[k])
+        ax.plot(phi, np.full_like(phi, t_ms[k]), u_mm[k], "-", lw=0.9, color=colours[k])
     ax.set_xlabel(label(r"polar angle $\varphi$", "rad"))
     ax.set_ylabel(label("$t$", "ms"))
     ax.set_zlabel(label("$u$", "mm"))
