@@ -6,6 +6,8 @@ available.  Velocities are ratios ``v / |v0|`` (see :mod:`twoball.modal.icm` for
 
 from __future__ import annotations
 
+from typing import TYPE_CHECKING
+
 import numpy as np
 from twoball.modal import icm
 from twoball.modal.parameters import STANDARD_GRAVITY, preset, wave_speed_from_pressure
@@ -21,6 +23,10 @@ from twoball.verify.reproduce.common import (
 )
 
 #: Radius of the lower ball (the basketball, Table 2) [m]: fall height H = x2 - r2.
+if TYPE_CHECKING:
+    from matplotlib.figure import Figure
+
+
 BASKETBALL_RADIUS = 0.12
 
 
@@ -149,7 +155,8 @@ RATIO = label(r"$v\,/\,|v_0|$", None)
 
 
 @styled
-def _plot_fig3(ctx: Context, dx: np.ndarray, v1: np.ndarray, v2: np.ndarray) -> str:
+def fig3_figure(dx: np.ndarray, v1: np.ndarray, v2: np.ndarray) -> Figure:
+    """ICM ratios against the gap for the basketball and the tennis ball (Fig. 3)."""
     fig, ax = new_figure(figsize=(6.4, 4.4))
     ax.plot(dx * 1e3, v1, label=r"$v_1/|v_0|$ (tennis ball, upper)")
     ax.plot(dx * 1e3, v2, label=r"$v_2/|v_0|$ (basketball, lower)")
@@ -158,11 +165,12 @@ def _plot_fig3(ctx: Context, dx: np.ndarray, v1: np.ndarray, v2: np.ndarray) -> 
     ax.set_ylabel(RATIO)
     ax.set_title(r"Fig. 3 theory: $\mu$ = 0.1007, $e_2$ = 0.80, $e_{12}$ = 0.89, $x_2$ = 1 m")
     ax.legend()
-    return save(ctx, fig, "fig03_icm_basketball_tennis.png")
+    return fig
 
 
 @styled
-def _plot_fig8(ctx: Context, dx: np.ndarray, curves: dict) -> str:
+def fig8_figure(dx: np.ndarray, curves: dict) -> Figure:
+    """ICM ratios against the gap for the light upper balls of Table 1 rows 5, 6 (Fig. 8)."""
     fig, axes = new_figure(1, 2, figsize=(11.0, 4.2), sharey=True)
     for ax, (index, (a, b)) in zip(axes, curves.items(), strict=True):
         row = icm.TABLE1[index - 1]
@@ -172,7 +180,7 @@ def _plot_fig8(ctx: Context, dx: np.ndarray, curves: dict) -> str:
         ax.set_xlabel(GAP)
     axes[0].set_ylabel(RATIO)
     axes[0].legend()
-    return save(ctx, fig, "fig08_icm_basketball_light.png")
+    return fig
 
 
 def part_icm(ctx: Context) -> Section:
@@ -180,14 +188,14 @@ def part_icm(ctx: Context) -> Section:
     sec = Section("icm", "Figs. 3 and 8: ICM rebound ratios against the gap")
     dx3 = np.linspace(0.0, 0.150, 151)
     v1, v2 = _curves(0.1007, 0.80, 0.89, 1.0, dx3)
-    name3 = _plot_fig3(ctx, dx3, v1, v2)
+    name3 = save(ctx, fig3_figure(dx3, v1, v2), "fig03_icm_basketball_tennis.png")
     dx8 = np.linspace(0.0, 0.250, 251)
     rows = {4: None, 5: None, 6: None}
     curves8 = {}
     for index in (5, 6):
         row = icm.TABLE1[index - 1]
         curves8[index] = _curves(row.mu, row.e2, row.e12, 0.92, dx8)
-    name8 = _plot_fig8(ctx, dx8, curves8)
+    name8 = save(ctx, fig8_figure(dx8, curves8), "fig08_icm_basketball_light.png")
     sec.figures += [
         (name3, "Fig. 3: ICM (eqs. (2.1), (2.2), (2.5)) for the basketball and tennis ball."),
         (name8, "Fig. 8: ICM for the basketball with the tissue ball and the table-tennis ball."),

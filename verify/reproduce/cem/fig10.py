@@ -3,18 +3,22 @@
 from __future__ import annotations
 
 import math
+from typing import TYPE_CHECKING
 
 import numpy as np
 from twoball.modal.initial import phi_a_from_v0, v0_dimensionless
 from twoball.verify.output.figures.style import label, styled
 from twoball.verify.reproduce.common import Comparison, Context, Section, new_figure, save
 
+if TYPE_CHECKING:
+    from matplotlib.figure import Figure
+
 
 def part_fig10(ctx: Context) -> Section:
     """phi_a against v0 from eq. (3.7) for c = 220, 320, 350 1/s, R = 0.12 m."""
     radius = 0.12
     v0 = np.linspace(0.05, 8.0, 400)
-    name = _plot_fig10(ctx, v0, radius)
+    name = save(ctx, fig10_figure(v0, radius), "fig10_phi_a_vs_v0.png")
 
     phi_320 = phi_a_from_v0(4.1, radius, 320.0)
     c_implied = 4.1 / (radius * v0_dimensionless(2.6))
@@ -68,7 +72,8 @@ def part_fig10(ctx: Context) -> Section:
 
 
 @styled
-def _plot_fig10(ctx: Context, v0: np.ndarray, radius: float) -> str:
+def fig10_figure(v0: np.ndarray, radius: float) -> Figure:
+    """phi_a against |v0| from eq. (3.7) for c = 220, 320, 350 1/s, with the basketball."""
     fig, ax = new_figure(figsize=(6.4, 4.6))
     for c, style in ((220.0, "--"), (320.0, "-"), (350.0, ":")):
         phi = [phi_a_from_v0(v, radius, c) for v in v0]
@@ -84,4 +89,4 @@ def _plot_fig10(ctx: Context, v0: np.ndarray, radius: float) -> str:
     ax.set_ylabel(label(r"contact angle $\varphi_a$", "rad"))
     ax.set_title(f"Eq. (3.7), $R$ = {radius:g} m")
     ax.legend()
-    return save(ctx, fig, "fig10_phi_a_vs_v0.png")
+    return fig

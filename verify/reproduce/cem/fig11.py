@@ -7,7 +7,7 @@ threshold; (b) v_l and t_l against D at N = 30 under both horizons.
 
 from __future__ import annotations
 
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 import numpy as np
 from scipy.optimize import brentq
@@ -36,6 +36,10 @@ from .tasks import (
     run_tasks,
     threshold_text,
 )
+
+if TYPE_CHECKING:
+    from matplotlib.figure import Figure
+
 
 N_LIST = (10, 20, 30, 40, 60)
 D_CAPTION = np.round(np.linspace(0.600, 0.609, 10), 3)
@@ -95,7 +99,10 @@ def part_fig11(ctx: Context) -> Section:
     at_013 = liftoff(base)
     undamped = liftoff(base.derive(damping=0.0))
 
-    names = [_plot_fig11a(ctx, table), _plot_fig11b(ctx, window, paper, at_013)]
+    names = [
+        save(ctx, fig11a_figure(table), "fig11a_min_acceleration.png"),
+        save(ctx, fig11b_figure(window, paper, at_013), "fig11b_liftoff_vs_damping.png"),
+    ]
     sec = Section("fig11", "Fig. 11: damping, lift-off and the no-lift-off threshold")
     sec.figures += [
         (
@@ -279,7 +286,7 @@ def _fig11_text(table, thresholds, window, paper) -> list[str]:
 
 
 @styled
-def _plot_fig11a(ctx: Context, table: dict) -> str:
+def fig11a_figure(table: dict) -> Figure:
     """2 x 2 panels: whole window / moving up (rows) over the caption's and the wide D range."""
     fig, axes = new_figure(2, 2, figsize=(11.0, 7.0), sharex="col")
     ranges = (D_CAPTION, D_WIDE)
@@ -304,13 +311,14 @@ def _plot_fig11a(ctx: Context, table: dict) -> str:
         axes[1, column].set_xlabel(label("damping ratio $D$", None))
     axes[0, 1].legend(ncol=2)
     fig.suptitle("Fig. 11(a): smallest pole acceleration against the damping ratio")
-    return save(ctx, fig, "fig11a_min_acceleration.png")
+    return fig
 
 
 @styled
-def _plot_fig11b(ctx: Context, window, paper, at_013) -> str:
+def fig11b_figure(window, paper, at_013) -> Figure:
+    """v_l and t_l against D under both horizons; the red dot is D = 0.13."""
     fig, axes = new_figure(2, 1, figsize=(6.4, 6.4), sharex=True)
-    d = D_LIFTOFF
+    d = [p.case.damping for p in window]
     axes[0].plot(d, [p.v_liftoff_m_s for p in window], "-", label="`window` horizon")
     axes[0].plot(d, [p.v_liftoff_m_s for p in paper], ":", label="`paper` horizon")
     axes[1].plot(d, [1e3 * p.t_liftoff_s for p in window], "-", label="`window` horizon")
@@ -325,4 +333,4 @@ def _plot_fig11b(ctx: Context, window, paper, at_013) -> str:
     axes[0].set_title(
         r"$|v_0|$ = 4.1 m/s, $\varphi_a$ = 2.6 rad, $R$ = 0.12 m, $c$ = 320 1/s, $N$ = 30"
     )
-    return save(ctx, fig, "fig11b_liftoff_vs_damping.png")
+    return fig

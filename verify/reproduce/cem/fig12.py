@@ -7,6 +7,7 @@ bounded scalar search between the grid neighbours of its best point.
 from __future__ import annotations
 
 from dataclasses import dataclass
+from typing import TYPE_CHECKING
 
 import numpy as np
 from scipy.optimize import minimize_scalar
@@ -25,6 +26,10 @@ from twoball.verify.reproduce.common import (
 from twoball.verify.sweeps.sweeps import SweepSolver, run_sweep
 
 from .tasks import call, run_tasks
+
+if TYPE_CHECKING:
+    from matplotlib.figure import Figure
+
 
 FIG12_DAMPING = (0.0, 0.05, 0.13, 0.3)
 FIG12_AXES: dict[str, tuple[str, np.ndarray, str]] = {
@@ -139,7 +144,7 @@ def part_fig12(ctx: Context) -> Section:
             x, r = x_grid, r_grid
         optima[(panel, d)] = (x, r)
     dot = liftoff(base)
-    name = _plot_fig12(ctx, sweeps, optima, dot)
+    name = save(ctx, fig12_figure(sweeps, optima, dot), "fig12_parameter_dependence.png")
 
     sec = Section("fig12", "Fig. 12: parameter dependence and the optimum")
     sec.figures.append(
@@ -331,7 +336,8 @@ def part_fig12(ctx: Context) -> Section:
 
 
 @styled
-def _plot_fig12(ctx, sweeps, optima, dot) -> str:
+def fig12_figure(sweeps, optima, dot) -> Figure:
+    """v_l/|v0| against |v0|, c and R per damping ratio; maxima, early lift-offs, basketball."""
     fig, axes = new_figure(1, 3, figsize=(14.0, 4.6), sharey=True)
     greens = ["#00441b", "#1b7837", "#5aae61", "#a6dba0"]
     base = fig12_base()
@@ -357,4 +363,4 @@ def _plot_fig12(ctx, sweeps, optima, dot) -> str:
     axes[0].legend(title="damping ratio")
     axes[1].legend(title="markers")
     fig.suptitle(r"Fig. 12: $\varphi_a$ from eq. (3.7); other parameters those of the basketball")
-    return save(ctx, fig, "fig12_parameter_dependence.png")
+    return fig

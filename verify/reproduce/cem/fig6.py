@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import math
+from typing import TYPE_CHECKING
 
 import numpy as np
 from twoball.modal.filters import SpectralFilter
@@ -10,6 +11,9 @@ from twoball.modal.legendre import displacement, legendre_series
 from twoball.modal.parameters import preset
 from twoball.verify.output.figures.style import STACKED, label, styled
 from twoball.verify.reproduce.common import Context, Section, liftoff, new_figure, save
+
+if TYPE_CHECKING:
+    from matplotlib.figure import Figure
 
 
 def part_fig6(ctx: Context) -> Section:
@@ -20,7 +24,7 @@ def part_fig6(ctx: Context) -> Section:
     t_ms = np.linspace(0.0, 11.5, 24)
     t = t_ms * 1e-3 / case.scalings.time
     u_mm = displacement(series, t, phi) * case.radius * 1e3
-    name = _plot_fig6(ctx, phi, t_ms, u_mm)
+    name = save(ctx, fig6_figure(phi, t_ms, u_mm), "fig06_waterfall.png")
     report = liftoff(case)
     pole = u_mm[:, 0]
     sec = Section("fig6", "Fig. 6: waterfall of the radial displacement")
@@ -51,7 +55,7 @@ def part_fig6(ctx: Context) -> Section:
 
 
 @styled
-def _plot_fig6(ctx: Context, phi: np.ndarray, t_ms: np.ndarray, u_mm: np.ndarray) -> str:
+def fig6_figure(phi: np.ndarray, t_ms: np.ndarray, u_mm: np.ndarray) -> Figure:
     """3-D waterfall: one curve per instant along the time axis (never overlapping)."""
     from matplotlib import colormaps
 
@@ -68,4 +72,4 @@ def _plot_fig6(ctx: Context, phi: np.ndarray, t_ms: np.ndarray, u_mm: np.ndarray
         r"Radial displacement $u(t, \varphi)$: $\varphi_a$ = 2.6 rad, $R$ = 0.12 m, "
         "$c$ = 320 1/s, $D$ = 0.1"
     )
-    return save(ctx, fig, "fig06_waterfall.png")
+    return fig
