@@ -17,8 +17,12 @@ from twoball.modal.filters import SpectralFilter
 from twoball.modal.legendre import displacement, legendre_series
 from twoball.modal.parameters import preset
 from twoball.verify.output.fields import ball_model
-from twoball.verify.output.figures.eigen import EigenErrors, eigen_errors_figure, eigen_figure
-from twoball.verify.output.figures.eigen import eigen_table
+from twoball.verify.output.figures.eigen import (
+    EigenErrors,
+    eigen_errors_figure,
+    eigen_figure,
+    eigen_table,
+)
 from twoball.verify.output.figures.energy import energy_figure
 from twoball.verify.output.figures.pole import Trace, pole_figure, pole_motion_figure
 from twoball.verify.output.figures.study import legend_name, study_figure
