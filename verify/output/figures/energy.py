@@ -55,7 +55,5 @@ def energy_figure(
         if group or bound is not None:
             axis.legend()
     axes[0].set_ylabel(label("$E/m$", "J/kg"))
-    fig.suptitle(
-        "Energy decay per kilogram of membrane: direct time stepping against the modal closed form"
-    )
+    fig.suptitle("Energy per kilogram of membrane: time stepping against the modal closed form")
     return fig

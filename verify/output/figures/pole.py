@@ -97,7 +97,8 @@ def _draw_differences(
         for name, style, values in diffs:
             axis.plot(t_ms, values[row] * scale, label=name, **style)
         axis.axhline(0.0, color=REFERENCE_COLOUR, linewidth=0.6)
-        limits = difference_limits(si * scale)
+        # the whole difference of u and u_t; u_tt past the first samples of a filter
+        limits = difference_limits(si * scale, 99.5 if row == 2 else 100.0)
         if limits is not None:
             axis.set_ylim(*limits)
         axis.set_ylabel(label(r"$\Delta " + symbol[1:].split("(")[0] + "$", shown), fontsize=8)

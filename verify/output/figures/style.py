@@ -122,7 +122,7 @@ def difference_limits(values: np.ndarray, share: float = 99.0) -> tuple[float, f
     spread = float(np.percentile(finite, share))
     if spread <= 0:
         return None
-    return -1.2 * spread, 1.2 * spread
+    return -1.1 * spread, 1.1 * spread
 
 
 def time_label(after: str = "") -> str:

@@ -357,10 +357,14 @@ def fig12_figure(sweeps, optima, dot) -> Figure:
         ax.set_yscale("log")
     axes[0].set_ylabel(label(r"$v_l\,/\,|v_0|$", None))
     # what the markers mean, once: proxies without data
-    axes[1].plot([], [], "x", color="0.3", mew=1.5, label="maximum of the curve")
-    axes[1].plot([], [], ".", color="0.3", label="early lift-off (ringing; not in the curve)")
-    axes[1].plot([], [], "o", color="red", label="basketball case (Table 2)")
+    proxies = [
+        axes[1].plot([], [], "x", color="0.3", mew=1.5, label="maximum of the curve")[0],
+        axes[1].plot([], [], ".", color="0.3", label="early lift-off (ringing; not in the curve)")[
+            0
+        ],
+        axes[1].plot([], [], "o", color="red", label="basketball case (Table 2)")[0],
+    ]
     axes[0].legend(title="damping ratio")
-    axes[1].legend(title="markers")
+    axes[1].legend(handles=proxies, title="markers")
     fig.suptitle(r"Fig. 12: $\varphi_a$ from eq. (3.7); other parameters those of the basketball")
     return fig
