@@ -25,6 +25,7 @@ from twoball.verify.output.figures.style import (
     REFERENCE_COLOUR,
     chunks,
     difference_limits,
+    difference_unit,
     label,
     styled,
     time_label,
@@ -39,23 +40,6 @@ QUANTITIES = (
     (r"$u_t(t, 0)$", "m/s", 1.0),
     (r"$u_{tt}(t, 0)$", "m/s$^2$", 1.0),
 )
-#: SI prefixes tried for a difference panel: factor, prefix (mathtext).
-PREFIXES = ((1.0, ""), (1e3, "m"), (1e6, r"$\mu$"), (1e9, "n"))
-
-
-def difference_unit(values_si: np.ndarray, unit: str) -> tuple[float, str]:
-    """Factor and unit that put the typical size of ``values_si`` between 0.1 and 100.
-
-    ``unit`` is the SI unit (``"m"``, ``"m/s"``, ``"m/s$^2$"``); the prefix goes
-    on its first symbol (``"mm/s"``, ``"$\\mu$m"``).
-    """
-    finite = np.abs(values_si[np.isfinite(values_si)])
-    size = float(np.percentile(finite, 99.0)) if finite.size else 0.0
-    for factor, prefix in PREFIXES:
-        if size * factor >= 0.1:
-            return factor, prefix + unit
-    factor, prefix = PREFIXES[-1]
-    return factor, prefix + unit
 
 
 def _si_units(case: Case) -> tuple[float, float, float]:

@@ -125,6 +125,25 @@ def difference_limits(values: np.ndarray, share: float = 99.0) -> tuple[float, f
     return -1.1 * spread, 1.1 * spread
 
 
+#: SI prefixes tried for a difference panel: factor, prefix (mathtext).
+PREFIXES = ((1.0, ""), (1e3, "m"), (1e6, r"$\mu$"), (1e9, "n"))
+
+
+def difference_unit(values_si: np.ndarray, unit: str) -> tuple[float, str]:
+    """Factor and unit that put the typical size of ``values_si`` between 0.1 and 100.
+
+    ``unit`` is the SI unit (``"m"``, ``"m/s"``, ``"m/s$^2$"``); the prefix goes
+    on its first symbol (``"mm/s"``, ``"$\\mu$m"``).
+    """
+    finite = np.abs(values_si[np.isfinite(values_si)])
+    size = float(np.percentile(finite, 99.0)) if finite.size else 0.0
+    for factor, prefix in PREFIXES:
+        if size * factor >= 0.1:
+            return factor, prefix + unit
+    factor, prefix = PREFIXES[-1]
+    return factor, prefix + unit
+
+
 def time_label(after: str = "") -> str:
     """The time axis label, in ms (``after`` appended, e.g. "after maximal compression")."""
     return label("$t$", "ms") + (f" {after}" if after else "")
