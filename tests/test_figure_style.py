@@ -217,6 +217,17 @@ def test_energy_per_kilogram_starts_at_the_impact_energy():
     assert 3.5 < gaps[0] / gaps[1] < 4.5  # first order in 1/N
 
 
+def test_energy_pairs_get_a_relative_difference_panel(case):
+    t = np.linspace(0.0, 10.0, 50)
+    e30, e60 = _series(case, 30).energy(t), _series(case, 60).energy(t)
+    figure = energy_figure(case, [("N = 30", t, e30), ("N = 60", t, e60)])
+    top, below = figure.axes
+    assert len(curves(top)) == 2
+    (line,) = curves(below)
+    np.testing.assert_allclose(line.get_ydata(), e30 / e60 - 1.0, rtol=1e-12)
+    assert below.get_ylabel() == f"relative difference {DIMENSIONLESS}"
+
+
 def test_label_helpers():
     assert label("$t$", "ms") == "$t$ [ms]"
     assert label("$N$", None) == f"$N$ {DIMENSIONLESS}"

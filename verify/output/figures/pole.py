@@ -228,7 +228,7 @@ def pole_motion_figure(
             for axis, values, unit, (_, _, factor), field in zip(
                 axes, state, si, QUANTITIES, ("u", "u_t", "u_tt"), strict=True
             ):
-                axis.plot(ms, values * unit * factor, label=trace.label, linewidth=1.0, **style)
+                axis.plot(ms, values * unit * factor, label=_pretty(trace.label), **style)
                 if mark is not None:
                     axis.plot(
                         trace.t_l * scale.time * 1e3,
@@ -239,7 +239,7 @@ def pole_motion_figure(
             if k > 0 and ref_state is not None:
                 diffs.append(
                     (
-                        trace.label,
+                        _pretty(trace.label),
                         {**style, "linewidth": 0.9},
                         [(np.asarray(a) - np.asarray(b)) * unit
                          for a, b, unit in zip(state, ref_state, si, strict=True)],
@@ -263,6 +263,11 @@ def pole_motion_figure(
         rows[-1].set_xlabel(time_label("after maximal compression"))
     title = "Pole motion of every backend; dots and dashed line: lift-off"
     if compare and reference is not None:
-        title += f"; below each: difference to {reference.label}"
+        title += f"; below each: difference to {_pretty(reference.label)}"
     fig.suptitle(title)
     return fig
+
+
+def _pretty(text: str) -> str:
+    """A backend label for a legend: arrows as arrows."""
+    return text.replace("->", "→")
