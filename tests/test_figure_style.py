@@ -175,6 +175,16 @@ def test_every_figure_labels_units_and_counts_curves(case, model, monkeypatch):
                 assert count <= MAX_CURVES, f"{name}: {count} curves on one axis"
         title = figure.get_suptitle() if hasattr(figure, "get_suptitle") else ""
         assert not ASCII_MATH.search(outside_math(title)), f"{name}: {title!r}"
+        # every title fits the figure (none cut off at the edges)
+        from matplotlib.backends.backend_agg import FigureCanvasAgg
+
+        renderer = FigureCanvasAgg(figure).get_renderer()
+        figure.draw(renderer)
+        width = figure.bbox.width
+        texts = [a.title for a in visible] + ([figure._suptitle] if figure._suptitle else [])
+        for text in texts:
+            box = text.get_window_extent(renderer)
+            assert box.x0 >= -1 and box.x1 <= width + 1, f"{name}: {text.get_text()!r} cut off"
     assert len(seen) == 17
 
 

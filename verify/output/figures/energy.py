@@ -81,13 +81,13 @@ def energy_figure(
                 label="per-mode decay bound",
             )
         if group or bound is not None:
-            axis.legend()
+            axis.legend(title="below: solid minus dashed, relative" if compare else None)
         if compare:
             below = grid[1, column]
             below.axhline(0.0, color=REFERENCE_COLOUR, linewidth=0.6)
             below.set_ylabel(label("relative difference", None), fontsize=8)
+            below.ticklabel_format(axis="y", style="sci", scilimits=(-2, 3))
         grid[-1, column].set_xlabel(time_label())
     grid[0, 0].set_ylabel(label("$E/m$", "J/kg"))
-    title = "Energy per kilogram of membrane: time stepping against the modal closed form"
-    fig.suptitle(title + ("; below: relative difference of each pair" if compare else ""))
+    fig.suptitle("Energy per kilogram of membrane: time stepping against the modal closed form")
     return fig
