@@ -1,4 +1,4 @@
-"""twoball plot: waterfall (Fig. 6), pole motion and eigenvalue errors as PNG files."""
+"""twoball plot: waterfall (Fig. 6), pole motion and eigenvalue errors as PDF, SVG or PNG files."""
 
 from __future__ import annotations
 

@@ -82,7 +82,7 @@ class RenderResult:
 
 @dataclass(frozen=True)
 class PlotResult:
-    """The PNG written by :func:`plot`, with one line per curve family."""
+    """The figure written by :func:`plot` (PDF, SVG, PNG, ...), one line per curve family."""
 
     file: Path
     kind: str
