@@ -37,7 +37,6 @@ AUTO_WARP_SHARE = 0.15  # auto warp: the largest displacement drawn at 15 % of R
 BODY_SHARE = 0.2  # radius of the drawn upper body, as a share of R
 MAX_SIZE = 4096  # largest accepted image side [px]
 COLOUR_MAP = "coolwarm"  # of the displacement, drawn on the ball and in the colour bar
-BAR_COLOURS = 96  # GIF palette entries kept for the colour map (the rest: median cut)
 FOOTER_CHARS = 30  # longest footer line at the default size [characters]
 
 
@@ -363,37 +362,6 @@ def wrap_footer(text: str, width: int = FOOTER_CHARS) -> str:
     return "\n".join(lines)
 
 
-def gif_palette(frames: np.ndarray, reserved: np.ndarray) -> np.ndarray:
-    """A 256-colour palette (256, 3) for every frame of a GIF: ``reserved`` plus a median cut.
-
-    The reserved colours (the colour map of the bar) are kept exactly, so the
-    colour bar stays smooth; the rest is the median cut of all frames' pixels.
-    One palette for all frames: colours do not flicker from frame to frame.
-    """
-    from PIL import Image
-
-    reserved = np.asarray(reserved, dtype=np.uint8).reshape(-1, 3)
-    free = 256 - len(reserved)
-    pixels = frames.reshape(-1, 3)
-    step = max(1, pixels.shape[0] // 400_000)  # a sample is enough for the median cut
-    sample = pixels[::step]
-    side = int(np.ceil(np.sqrt(sample.shape[0])))
-    padded = np.concatenate([sample, np.repeat(sample[-1:], side * side - len(sample), axis=0)])
-    image = Image.fromarray(padded.reshape(side, side, 3))
-    cut = image.quantize(colors=free, method=Image.Quantize.MEDIANCUT)
-    palette = np.asarray(cut.getpalette()[: 3 * free], dtype=np.uint8).reshape(-1, 3)
-    palette = np.concatenate([reserved, palette])
-    return np.concatenate([palette, np.zeros((256 - len(palette), 3), np.uint8)])
-
-
-def colour_map_samples(count: int = BAR_COLOURS) -> np.ndarray:
-    """``count`` evenly spaced colours (count, 3), uint8, of :data:`COLOUR_MAP`."""
-    from matplotlib import colormaps
-
-    rgb = colormaps[COLOUR_MAP](np.linspace(0.0, 1.0, count))[:, :3]
-    return np.round(rgb * 255).astype(np.uint8)
-
-
 def _write_png(target: Path, images: Iterator[np.ndarray]) -> int:
     import imageio.v3 as iio
 
@@ -403,29 +371,11 @@ def _write_png(target: Path, images: Iterator[np.ndarray]) -> int:
 
 
 def _write_gif(target: Path, images: Iterator[np.ndarray], fps: float) -> int:
-    import io
-
-    from PIL import Image
+    from .palette import gif_bytes
 
     frames = np.stack(list(images))
-    # one palette for all frames, holding the colour map: a smooth colour bar, no flicker
-    palette = Image.new("P", (1, 1))
-    palette.putpalette(gif_palette(frames, colour_map_samples()).ravel().tolist())
-    indexed = [
-        Image.fromarray(f).quantize(palette=palette, dither=Image.Dither.NONE) for f in frames
-    ]
     # encoded in memory, then written by Python: a full disk is one OSError
-    buffer = io.BytesIO()
-    indexed[0].save(
-        buffer,
-        format="GIF",
-        save_all=True,
-        append_images=indexed[1:],
-        duration=round(1000.0 / fps),
-        loop=0,
-        optimize=False,
-    )
-    target.write_bytes(buffer.getvalue())
+    target.write_bytes(gif_bytes(frames, fps, COLOUR_MAP))
     return len(frames)
 
 

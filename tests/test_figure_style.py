@@ -250,7 +250,8 @@ def test_label_helpers():
 
 
 def test_gif_colour_bar_is_smooth_and_footer_short(model, tmp_path):
-    from twoball.fem_membrane.render import colour_map_samples, render_scene, wrap_footer
+    from twoball.fem_membrane.palette import colour_map_samples
+    from twoball.fem_membrane.render import COLOUR_MAP, render_scene, wrap_footer
     from twoball.verify.output.fields import ball_scene
 
     scene = ball_scene(model, np.linspace(0.0, model.t_end_s, 3), "fem")
@@ -258,7 +259,7 @@ def test_gif_colour_bar_is_smooth_and_footer_short(model, tmp_path):
     frames = iio.imread(out, index=None)[..., :3]
     # the colour bar is the only place the pure colour map is drawn, unlit: count its
     # palette colours that the GIF kept exactly (a median cut alone leaves ~12 bands)
-    bar = colour_map_samples()
+    bar = colour_map_samples(COLOUR_MAP)
     drawn = {tuple(c) for c in frames[0].reshape(-1, 3)}
     kept = sum(tuple(c) in drawn for c in bar)
     assert kept >= 60, kept

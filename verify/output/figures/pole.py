@@ -64,7 +64,8 @@ def _liftoff_legend(axis: Any) -> None:
 
 def _clip_acceleration(axis: Any, values: np.ndarray, g: float) -> None:
     """Zoom past the first samples of a filtered series, keeping -g in view."""
-    spread = float(np.percentile(np.abs(values[np.isfinite(values)]), 99.0)) if values.size else 0
+    finite = np.abs(values[np.isfinite(values)])
+    spread = float(np.percentile(finite, 99.0)) if finite.size else 0.0
     if spread > 0:
         axis.set_ylim(-1.3 * max(spread, g), 1.3 * max(spread, g))
 
