@@ -73,7 +73,7 @@ def part_fig10(ctx: Context) -> Section:
 
 @styled
 def fig10_figure(v0: np.ndarray, radius: float) -> Figure:
-    """phi_a against |v0| from eq. (3.7) for c = 220, 320, 350 1/s, with the basketball."""
+    """``phi_a`` against ``|v0|`` from eq. (3.7) for c = 220, 320, 350 1/s, with the basketball."""
     fig, ax = new_figure(figsize=(6.4, 4.6))
     for c, style in ((220.0, "--"), (320.0, "-"), (350.0, ":")):
         phi = [phi_a_from_v0(v, radius, c) for v in v0]

@@ -337,7 +337,7 @@ def part_fig12(ctx: Context) -> Section:
 
 @styled
 def fig12_figure(sweeps, optima, dot) -> Figure:
-    """v_l/|v0| against |v0|, c and R per damping ratio; maxima, early lift-offs, basketball."""
+    """``v_l/|v0|`` against ``|v0|``, c and R per damping ratio; maxima, early lift-offs."""
     fig, axes = new_figure(1, 3, figsize=(14.0, 4.6), sharey=True)
     greens = ["#00441b", "#1b7837", "#5aae61", "#a6dba0"]
     base = fig12_base()
