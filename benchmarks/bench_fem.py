@@ -125,13 +125,13 @@ def alpha_study(kind: str, size: int, order: int, steps: list[int], rho_inf: flo
 
 
 TIMING_RUNS = (
-    {"mesh": "axisym", "elements": 400, "order": 2, "time": "modal"},
-    {"mesh": "axisym", "elements": 400, "order": 2, "time": "alpha"},
-    {"mesh": "sphere", "level": 3, "order": 2, "time": "modal"},
-    {"mesh": "sphere", "level": 4, "order": 1, "time": "modal"},
-    {"mesh": "sphere", "level": 3, "order": 2, "time": "alpha"},
-    {"mesh": "sphere", "level": 4, "order": 2, "time": "modal"},
-    {"mesh": "sphere", "level": 4, "order": 2, "time": "alpha"},
+    {"mesh": "axisym", "elements": 400, "order": 2, "scheme": "modal"},
+    {"mesh": "axisym", "elements": 400, "order": 2, "scheme": "alpha"},
+    {"mesh": "sphere", "level": 3, "order": 2, "scheme": "modal"},
+    {"mesh": "sphere", "level": 4, "order": 1, "scheme": "modal"},
+    {"mesh": "sphere", "level": 3, "order": 2, "scheme": "alpha"},
+    {"mesh": "sphere", "level": 4, "order": 2, "scheme": "modal"},
+    {"mesh": "sphere", "level": 4, "order": 2, "scheme": "alpha"},
 )
 
 
@@ -150,7 +150,7 @@ def timing_study() -> None:
         dt = abs(result.t / ref.t - 1.0)
         dv = abs(result.velocity / ref.velocity - 1.0)
         print(
-            f"{info['mesh']:38s} {options['time']:5s} dofs {info['dofs']:6d} "
+            f"{info['mesh']:38s} {options['scheme']:5s} dofs {info['dofs']:6d} "
             f"modes {info['modes_computed']:4d}  dt_l {dt:8.2e} dv_l {dv:8.2e}  "
             f"{parts}  total {total:6.2f}s",
             flush=True,

@@ -48,21 +48,41 @@ def check_dt(dt: object) -> float | None:
     """Time step of the direct integrator: None (automatic) or a finite number > 0 (``--dt``)."""
     if dt is None:
         return None
-    if not isinstance(dt, Real) or not math.isfinite(float(dt)) or float(dt) <= 0.0:
+    if not _is_real(dt) or not math.isfinite(float(dt)) or float(dt) <= 0.0:
         raise ParameterError("dt", "a finite number > 0", dt)
     return float(dt)
 
 
+DT_MIN = 1e-9  # dimensionless (time unit 1/c): below it the step count overflows any budget
+
+
+def check_dt_in_window(dt: object, time_unit_s: float, t_end: float) -> float:
+    """A time step ``dt`` [s] as a dimensionless step in [1e-9, ``t_end``] (``--dt``).
+
+    ``time_unit_s`` is 1/c [s]; ``t_end`` the dimensionless window.  A step
+    longer than the window takes no step at all.
+    """
+    low, high = DT_MIN * time_unit_s, t_end * time_unit_s
+    valid = f"a time step in [{low:.3g}, {high:.3g}] s (at most the modelled window)"
+    if not _is_real(dt) or not (low <= float(dt) <= high):
+        raise ParameterError("dt", valid, dt)
+    return float(dt) / time_unit_s
+
+
+def _is_real(value: object) -> bool:
+    return isinstance(value, Real) and not isinstance(value, bool)
+
+
 def check_rho_inf(rho_inf: object) -> float:
     """Spectral radius at infinite frequency of generalized-alpha: in [0, 1] (``--rho-inf``)."""
-    if not isinstance(rho_inf, Real) or not (0.0 <= float(rho_inf) <= 1.0):
+    if not _is_real(rho_inf) or not (0.0 <= float(rho_inf) <= 1.0):
         raise ParameterError("rho_inf", "in [0, 1]", rho_inf)
     return float(rho_inf)
 
 
 def check_t_end(t_end: object) -> float:
     """End of the integration window (dimensionless): a finite number > 0 (``--t-end``)."""
-    if not isinstance(t_end, Real) or not math.isfinite(float(t_end)) or float(t_end) <= 0.0:
+    if not _is_real(t_end) or not math.isfinite(float(t_end)) or float(t_end) <= 0.0:
         raise ParameterError("t_end", "a finite time > 0", t_end)
     return float(t_end)
 

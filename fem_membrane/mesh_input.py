@@ -25,6 +25,7 @@ from __future__ import annotations
 
 import contextlib
 import io
+import os
 import warnings
 from collections.abc import Sequence
 from dataclasses import dataclass, field, replace
@@ -212,7 +213,11 @@ def _read(source: MeshSource) -> _Raw:
 
     if isinstance(source, str | Path):
         path = Path(source)
-        if not path.is_file():
+        try:
+            readable = path.is_file() and os.access(path, os.R_OK)
+        except OSError as error:  # a name too long, a loop of links, ...
+            raise refuse(str(path)[:200], "an existing mesh file", error.strerror) from None
+        if not readable:
             raise refuse(str(path), "an existing mesh file", "no such file")
         return _from_meshio(_meshio_read(path), path.name)
     if isinstance(source, meshio.Mesh):

@@ -195,7 +195,7 @@ def fem_pole_motion(
     level: int | None = None,
     elements: int | None = None,
     order: int | None = 2,
-    time: str = "modal",
+    scheme: str = "modal",
     damping_model: str = "modal",
     dt: float | None = None,
     rho_inf: float = 1.0,
@@ -230,8 +230,8 @@ def fem_pole_motion(
     order : {1, 2, 3, 4}, optional
         P1 on flat triangles or isoparametric P2, P3, P4 (``--order``); None with a
         SphereMesh: the mesh's own order.
-    time : {"modal", "alpha"}
-        Modal superposition or generalized-alpha stepping (``--time``).
+    scheme : {"modal", "alpha"}
+        Modal superposition or generalized-alpha stepping (``--scheme``).
     route : {"auto", "full", "krylov"}
         ``modal`` only: every eigenpair below the cutoff (``full``, the reference),
         the rational Krylov route of :mod:`twoball.fem_membrane.krylov` (``krylov``), or
@@ -266,22 +266,22 @@ def fem_pole_motion(
         ``alpha``, ``beta``, ``omega_low``, ``omega_high`` and ``table`` (rows
         ``mode``, ``omega``, ``zeta``, ``ratio`` = zeta / D).
     """
-    time = check_choice("time", time, TIME_SCHEMES)
+    scheme = check_choice("scheme", scheme, TIME_SCHEMES)
     damping_model = check_choice("damping_model", damping_model, DAMPING_MODELS)
     dt = check_dt(dt)
     rho_inf = check_rho_inf(rho_inf)
     t_end = check_t_end(t_end)
-    if time == "modal" and damping_model != "modal":
+    if scheme == "modal" and damping_model != "modal":
         raise ParameterError(
-            "damping_model", "modal when time is modal (one ratio D for all modes)", damping_model
+            "damping_model", "modal when scheme is modal (one ratio D for all modes)", damping_model
         )
     route = check_choice("route", route, ROUTES)
-    if time == "alpha":
+    if scheme == "alpha":
         if route == "krylov":
-            raise ParameterError("route", "full or auto when time is alpha", route)
+            raise ParameterError("route", "full or auto when scheme is alpha", route)
         route = "full"  # time stepping needs the eigenvectors for damping and filtering
     modes = as_filter(filter).modes
-    check_fem(mesh, level, elements, order, modes, route, time=time, dt=dt, t_end=t_end)
+    check_fem(mesh, level, elements, order, modes, route, scheme=scheme, dt=dt, t_end=t_end)
     model = modal_model(
         phi_a,
         damping,
@@ -304,7 +304,7 @@ def fem_pole_motion(
         "mesh_kind": space.kind,
         "omega_max": series.max_frequency,
         "order": space.order,
-        "time_scheme": time,
+        "time_scheme": scheme,
         "damping_model": damping_model,
         "initial": initial,
         "omega_cut": series.filter.omega_cut,
@@ -313,7 +313,7 @@ def fem_pole_motion(
     }
     if model.krylov is not None:
         info["krylov"] = model.krylov
-    if time == "modal":
+    if scheme == "modal":
         return series, info
     motion, extra = alpha_motion(
         model,

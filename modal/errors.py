@@ -32,3 +32,42 @@ class ParameterError(ValueError):
 
 class NumericalError(RuntimeError):
     """A computation produced NaN/inf or did not converge; never passed on silently."""
+
+
+def real_number(name: str, value: object, valid: str) -> float:
+    """``value`` as a finite float, or :class:`ParameterError` (``valid`` in words).
+
+    Refuses booleans, strings and other non-real types as well as NaN and +-inf.
+    """
+    from numbers import Real
+
+    if isinstance(value, bool) or not isinstance(value, Real):
+        raise ParameterError(name, valid, value)
+    out = float(value)
+    if out != out or out in (float("inf"), float("-inf")):
+        raise ParameterError(name, valid, value)
+    return out
+
+
+def bounded(
+    name: str,
+    value: object,
+    low: float,
+    high: float,
+    unit: str = "",
+    *,
+    low_open: bool = False,
+) -> float:
+    """A finite float in ``[low, high]`` (``(low, high]`` if ``low_open``), else ParameterError.
+
+    The bounds keep every derived dimensionless number (``gamma = g / (R c^2)``,
+    ``|v0| / (R c)``, ``t_end c``) far from overflow and underflow; ``unit`` is
+    named in the message.
+    """
+    valid = f"a number in {'(' if low_open else '['}{low:g}, {high:g}]" + (
+        f" [{unit}]" if unit else ""
+    )
+    out = real_number(name, value, valid)
+    if not ((out > low if low_open else out >= low) and out <= high):
+        raise ParameterError(name, valid, value)
+    return out

@@ -7,11 +7,14 @@ import math
 import numpy as np
 from numpy.typing import ArrayLike
 
-from .errors import ParameterError
+from .errors import ParameterError, real_number
 from .roots import bracketed_roots
 
 _EPS = float(np.finfo(float).eps)
-_LOG_S_MIN = math.log(1e-6)  # smallest pi - phi_a resolved: (3.7) is ~ s^4 / 8 there
+_S_MIN = 1e-6  # smallest pi - phi_a resolved: (3.7) is ~ s^4 / 8 there
+_LOG_S_MIN = math.log(_S_MIN)
+#: Valid contact angles: 1 + cos(phi_a) must keep digits (pi - phi_a >= 1e-6), eq. (3.7).
+PHI_A_RANGE = "in (pi/2, pi - 1e-6] = (1.5708, 3.1415917) rad"
 
 
 def initial_displacement(phi: ArrayLike, phi_a: float) -> np.ndarray:
@@ -20,6 +23,7 @@ def initial_displacement(phi: ArrayLike, phi_a: float) -> np.ndarray:
     ``F = cos(phi_a)/cos(phi) - 1`` for phi > phi_a (the flattened cap) and 0 elsewhere:
     the sphere truncated by the floor plane at polar angle phi_a.
     """
+    phi_a = check_phi_a(phi_a)
     phi = np.asarray(phi, dtype=float)
     inside = phi > phi_a
     cos_phi = np.where(inside, np.cos(phi), 1.0)
@@ -29,7 +33,7 @@ def initial_displacement(phi: ArrayLike, phi_a: float) -> np.ndarray:
 def initial_displacement_x(x: ArrayLike, phi_a: float) -> np.ndarray:
     """F as a function of ``x = cos(phi)``: ``cos(phi_a)/x - 1`` for x < cos(phi_a), eq. (3.10)."""
     x = np.asarray(x, dtype=float)
-    xa = math.cos(phi_a)
+    xa = math.cos(check_phi_a(phi_a))
     inside = x < xa
     return np.where(inside, xa / np.where(inside, x, 1.0) - 1.0, 0.0)
 
@@ -41,11 +45,27 @@ def _energy_shape(phi_a: float) -> float:
     return (1.0 + c) ** 2 * (2.0 * c - 1.0) / (6.0 * c)
 
 
-def _check_phi_a(phi_a: float) -> float:
-    phi_a = float(phi_a)
-    if not (math.pi / 2 < phi_a < math.pi):
-        raise ParameterError("phi_a", "in (pi/2, pi) = (1.5708, 3.1416) rad", phi_a)
-    return phi_a
+def check_phi_a(phi_a: object) -> float:
+    """Contact angle phi_a [rad] in :data:`PHI_A_RANGE`, as a float, eq. (3.3).
+
+    Closer to pi than 1e-6 rad, ``1 + cos(phi_a)`` in eq. (3.7) and the pole
+    position of the quadrature of eq. (3.12) are mostly round-off (at pi - 1e-9
+    it is exactly 0 in double precision).
+    """
+    value = real_number("phi_a", phi_a, PHI_A_RANGE)
+    if not (math.pi / 2 < value and math.pi - value >= _S_MIN * (1.0 - 1e-9)):
+        raise ParameterError("phi_a", PHI_A_RANGE, phi_a)
+    return value
+
+
+_check_phi_a = check_phi_a  # the name the finite-element modules import
+
+
+def _scale(radius: float, wave_speed: float) -> tuple[float, float]:
+    """R and c checked (as :class:`~twoball.modal.parameters.Case` does)."""
+    from .parameters import check_radius, check_wave_speed
+
+    return check_radius(radius), check_wave_speed(wave_speed)
 
 
 def v0_dimensionless(phi_a: float) -> float:
@@ -55,6 +75,7 @@ def v0_dimensionless(phi_a: float) -> float:
 
 def v0_from_phi_a(phi_a: float, radius: float, wave_speed: float) -> float:
     """Impact speed ``|v0|`` [m/s] for contact angle ``phi_a`` [rad], eq. (3.7)."""
+    radius, wave_speed = _scale(radius, wave_speed)
     return radius * wave_speed * v0_dimensionless(phi_a)
 
 
@@ -78,9 +99,11 @@ def phi_a_from_v0(v0: float, radius: float, wave_speed: float) -> float:
     regula falsi with bisection) on the logarithm of (3.7) as a function of
     ``log(pi - phi_a)``, where it is nearly a straight line.
     """
-    speed = abs(float(v0))
-    if not (math.isfinite(speed) and speed > 0):
-        raise ParameterError("v0", "a finite nonzero speed (eq. (3.7) has no solution)", v0)
+    from .parameters import check_v0
+
+    speed = check_v0(v0)
+    radius, wave_speed = _scale(radius, wave_speed)
+    # |v0| <= 1e6 m/s and R c >= 1e-12 m/s (checked): the square stays below 1e36
     squared = (speed / (radius * wave_speed)) ** 2
     target = math.log(squared) if squared > 0 else -math.inf  # log (v0 / R c)^2
 
@@ -92,14 +115,19 @@ def phi_a_from_v0(v0: float, radius: float, wave_speed: float) -> float:
 
     upper = math.log(math.pi / 2 * (1 - 1e-15))
     if residual(upper) < 0:
-        raise ParameterError("v0", "small enough for eq. (3.7) to have a solution", v0)
+        raise ParameterError(
+            "v0",
+            f"small enough for eq. (3.7) to have a solution at R = {radius:g} m, "
+            f"c = {wave_speed:g} 1/s",
+            v0,
+        )
     if residual(_LOG_S_MIN) > 0:
         # 1 + cos(phi_a) ~ s^2 / 2 is lost to round-off as s -> 0 (log(0) below s ~ 1e-8)
         slowest = radius * wave_speed * math.sqrt(_energy_shape(math.pi - math.exp(_LOG_S_MIN)))
         raise ParameterError(
             "v0",
-            f"at least {slowest:.3g} m/s (slower impacts put phi_a within 1e-6 rad of pi, "
-            "where eq. (3.7) loses double precision)",
+            f"at least {slowest:.3g} m/s at R = {radius:g} m, c = {wave_speed:g} 1/s (slower "
+            "impacts put phi_a within 1e-6 rad of pi, where eq. (3.7) loses double precision)",
             v0,
         )
     lower = upper - 1.0

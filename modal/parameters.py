@@ -12,10 +12,53 @@ from dataclasses import dataclass, replace
 from numbers import Real
 from typing import Any
 
-from .errors import ParameterError
-from .initial import phi_a_from_v0
+from .errors import ParameterError, bounded, real_number
+from .initial import PHI_A_RANGE, check_phi_a, phi_a_from_v0  # noqa: F401 -- re-exported
 
 STANDARD_GRAVITY = 9.81  # m/s^2, the value used in the paper (§2)
+# Physically meaningful magnitudes (SI).  They also keep the dimensionless numbers
+# of the model (gamma = g / (R c^2), |v0| / (R c), t_end c) far from overflow.
+RADIUS_RANGE = (1e-6, 1e6)  # m: a micrometre bubble to a 1000 km balloon
+WAVE_SPEED_RANGE = (1e-6, 1e9)  # 1/s
+G_RANGE = (1e-6, 1e6)  # m/s^2
+V0_MAX = 1e6  # m/s
+PRESSURE_RANGE = (1e-6, 1e12)  # Pa
+MASS_RANGE = (1e-12, 1e12)  # kg
+MODES_MAX = 10**6  # far above what the resource guards let run
+
+
+def check_radius(radius: object) -> float:
+    """Ball radius R [m] in :data:`RADIUS_RANGE`."""
+    return bounded("radius", radius, *RADIUS_RANGE, "m")
+
+
+def check_wave_speed(wave_speed: object) -> float:
+    """Angular wave speed c [1/s] in :data:`WAVE_SPEED_RANGE`, eq. (3.8)."""
+    return bounded("wave_speed", wave_speed, *WAVE_SPEED_RANGE, "1/s")
+
+
+def check_g(g: object) -> float:
+    """Gravitational acceleration [m/s^2] in :data:`G_RANGE`."""
+    return bounded("g", g, *G_RANGE, "m/s^2")
+
+
+def check_v0(v0: object) -> float:
+    """``|v0|`` [m/s] of an impact speed: nonzero, ``|v0| <= V0_MAX`` (the sign is ignored)."""
+    valid = f"a nonzero speed with |v0| <= {V0_MAX:g} [m/s]"
+    speed = abs(real_number("v0", v0, valid))
+    if not (0.0 < speed <= V0_MAX):
+        raise ParameterError("v0", valid, v0)
+    return speed
+
+
+def check_modes(modes: object) -> int:
+    """Legendre truncation N: an integer in [1, :data:`MODES_MAX`], eq. (3.16)."""
+    valid = f"an integer in [1, {MODES_MAX}]"
+    if isinstance(modes, bool) or not isinstance(modes, Real):
+        raise ParameterError("modes", valid, modes)
+    if not (math.isfinite(modes) and int(modes) == modes and 1 <= modes <= MODES_MAX):
+        raise ParameterError("modes", valid, modes)
+    return int(modes)
 
 
 @dataclass(frozen=True)
@@ -35,6 +78,11 @@ class Scalings:
     radius: float
     wave_speed: float
     g: float = STANDARD_GRAVITY
+
+    def __post_init__(self) -> None:
+        object.__setattr__(self, "radius", check_radius(self.radius))
+        object.__setattr__(self, "wave_speed", check_wave_speed(self.wave_speed))
+        object.__setattr__(self, "g", check_g(self.g))
 
     @property
     def length(self) -> float:
@@ -69,28 +117,26 @@ def wave_speed_from_pressure(pressure: float, mass: float, radius: float) -> flo
     then ``c = sqrt(T / rho) / R``, eq. (3.8).  Table 2: P = 77200, m = 0.567,
     R = 0.12 gives c = 320.4 1/s.
     """
-    _positive("pressure", pressure)
-    _positive("mass", mass)
-    _positive("radius", radius)
+    pressure = bounded("pressure", pressure, *PRESSURE_RANGE, "Pa")
+    mass = bounded("mass", mass, *MASS_RANGE, "kg")
+    radius = check_radius(radius)
+    # within the bounds above, T / rho <= 5e42: no overflow or underflow
     tension = pressure * radius / 2.0
     density = mass / (4.0 * math.pi * radius**2)
-    return math.sqrt(tension / density) / radius
-
-
-PHI_A_RANGE = "in (pi/2, pi) = (1.5708, 3.1416) rad"
+    wave_speed = math.sqrt(tension / density) / radius
+    low, high = WAVE_SPEED_RANGE
+    if not (low <= wave_speed <= high):
+        raise ParameterError(
+            "pressure",
+            f"such that c = sqrt(2 pi P R / m) is in [{low:g}, {high:g}] 1/s "
+            f"(m = {mass:g} kg, R = {radius:g} m)",
+            pressure,
+        )
+    return wave_speed
 
 
 def _number(name: str, value: object, valid: str) -> float:
-    if isinstance(value, bool) or not isinstance(value, Real):
-        raise ParameterError(name, valid, value)
-    return float(value)
-
-
-def _positive(name: str, value: float) -> float:
-    value = _number(name, value, "a finite number > 0")
-    if not (math.isfinite(value) and value > 0):
-        raise ParameterError(name, "a finite number > 0", value)
-    return value
+    return real_number(name, value, valid)
 
 
 @dataclass(frozen=True)
@@ -148,7 +194,7 @@ class Case:
     v0 : float
         Impact speed [m/s]; the sign is ignored (``|v0|`` is used).
     phi_a : float or None or "eq. (3.7)"
-        Contact (truncation) angle [rad] in (pi/2, pi), eq. (3.3); None: by the
+        Contact (truncation) angle [rad] in (pi/2, pi - 1e-6], eq. (3.3); None: by the
         rule above; ``"eq. (3.7)"``: from ``|v0|``, R, c by eq. (3.7) in any case.
     damping : float
         Modal damping ratio D in [0, 1), eq. (3.14).
@@ -175,28 +221,17 @@ class Case:
     phi_a_source: str | None = None
 
     def __post_init__(self) -> None:
-        _positive("radius", self.radius)
-        _positive("wave_speed", self.wave_speed)
-        _positive("g", self.g)
-        object.__setattr__(self, "radius", float(self.radius))
-        object.__setattr__(self, "wave_speed", float(self.wave_speed))
-        object.__setattr__(self, "g", float(self.g))
-        v0 = _number("v0", self.v0, "a finite nonzero speed [m/s]")
-        if not (math.isfinite(v0) and v0 != 0):
-            raise ParameterError("v0", "a finite nonzero speed [m/s]", self.v0)
-        object.__setattr__(self, "v0", abs(v0))
+        object.__setattr__(self, "radius", check_radius(self.radius))
+        object.__setattr__(self, "wave_speed", check_wave_speed(self.wave_speed))
+        object.__setattr__(self, "g", check_g(self.g))
+        object.__setattr__(self, "v0", check_v0(self.v0))
         damping = _number("damping", self.damping, "in [0, 1)")
         if not (0.0 <= damping < 1.0):
             raise ParameterError("damping", "in [0, 1)", self.damping)
         object.__setattr__(self, "damping", damping)
-        if (
-            isinstance(self.modes, bool)
-            or not isinstance(self.modes, Real)
-            or int(self.modes) != self.modes
-            or self.modes < 1
-        ):
-            raise ParameterError("modes", "an integer >= 1", self.modes)
-        object.__setattr__(self, "modes", int(self.modes))
+        object.__setattr__(self, "modes", check_modes(self.modes))
+        if self.preset_name is not None and not isinstance(self.preset_name, str):
+            raise ParameterError("preset", "a preset name or None", self.preset_name)
         phi_a, source = self._resolve_phi_a()
         object.__setattr__(self, "phi_a", phi_a)
         object.__setattr__(self, "phi_a_source", source)
@@ -208,9 +243,7 @@ class Case:
             if self.phi_a is None and measured is not None and self.at_measured_point:
                 return measured.phi_a, f"measured ({self.preset_name})"
             return phi_a_from_v0(self.v0, self.radius, self.wave_speed), FROM_V0
-        phi_a = _number("phi_a", self.phi_a, PHI_A_RANGE)
-        if not (math.pi / 2 < phi_a < math.pi):
-            raise ParameterError("phi_a", PHI_A_RANGE, self.phi_a)
+        phi_a = check_phi_a(self.phi_a)
         source = self.phi_a_source or "given"
         if source == "given":
             return phi_a, source
@@ -272,7 +305,7 @@ class Case:
             "radius_m": self.radius,
             "wave_speed_1_s": self.wave_speed,
             "v0_m_s": self.v0,
-            "phi_a": self.phi_a,
+            "phi_a_rad": self.phi_a,
             "phi_a_source": self.phi_a_source,
             "damping": self.damping,
             "modes": self.modes,

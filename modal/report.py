@@ -6,7 +6,6 @@ Legendre series and the finite elements are judged by one lift-off check.
 
 from __future__ import annotations
 
-import math
 from collections.abc import Sequence
 from dataclasses import dataclass, field
 from typing import Any
@@ -90,7 +89,7 @@ class LiftoffReport:
             "t_liftoff_s": self.t_liftoff_s,
             "v_liftoff_m_s": self.v_liftoff_m_s,
             "ratio": self.ratio,
-            "phi_a": self.case.phi_a,
+            "phi_a_rad": self.case.phi_a,
             "phi_a_source": self.case.phi_a_source,
             "gamma": self.case.gamma,
             "backend": self.backend,
@@ -110,15 +109,23 @@ class LiftoffReport:
         return data
 
 
+T_END_RANGE = (1e-3, 1e9)  # dimensionless window t_end c
+
+
 def t_end_dimensionless(case: Case, t_end_s: float | None) -> float:
     """The modelled window in units of 1/c; default 4 pi (i.e. 4 pi / c seconds)."""
     if t_end_s is None:
         return DEFAULT_T_END
-    from .errors import ParameterError
+    from .errors import ParameterError, real_number
 
-    if not (math.isfinite(t_end_s) and t_end_s > 0):
-        raise ParameterError("t_end", "a time > 0 [s]", t_end_s)
-    return float(t_end_s) / case.scalings.time
+    # [1e-3, 1e9] time units 1/c: shorter windows hold no sample of the series,
+    # longer ones overflow the sample counts (and the resource guards refuse far less)
+    low, high = T_END_RANGE[0] / case.wave_speed, T_END_RANGE[1] / case.wave_speed
+    valid = f"a window in [{low:.3g}, {high:.3g}] s (1e-3 to 1e9 times 1/c)"
+    value = real_number("t_end", t_end_s, valid)
+    if not (low <= value <= high):
+        raise ParameterError("t_end", valid, t_end_s)
+    return value / case.scalings.time
 
 
 def report_liftoff(

@@ -76,7 +76,7 @@ def test_default_is_the_basketball_preset_with_its_pinned_numbers(capsys):
     assert result.v_liftoff_m_s == pytest.approx(3.8322, abs=5e-5)
     assert twoball.liftoff().as_dict() == result.as_dict()
     cli, err = cli_json(capsys, "liftoff", "--v0", "4.1")
-    assert cli["phi_a_source"] == "measured (basketball)" and cli["phi_a"] == 2.6
+    assert cli["phi_a_source"] == "measured (basketball)" and cli["phi_a_rad"] == 2.6
     assert err == ""  # the preset's own value: nothing to note
 
 
@@ -271,9 +271,9 @@ def test_api_errors_name_parameters(call, name):
         (["liftoff", "--level", "2"], "--level must be left out with backend legendre"),
         (["liftoff", "--backend", "fem", "--mesh", "axisym", "--level", "2"], "--level must be"),
         (["liftoff", "--backend", "fem", "--elements", "50"], "--elements must be left out"),
-        (["liftoff", "--backend", "fem", "--dt", "1e-5"], "--dt must be left out with time modal"),
+        (["liftoff", "--backend", "fem", "--dt", "1e-5"], "--dt must be left out with scheme"),
         (["eigen", "--mesh", "sphere", "--elements", "9"], "--elements must be left out"),
-        (["liftoff", "--phi-a", "3.5"], "--phi-a must be in (pi/2, pi)"),
+        (["liftoff", "--phi-a", "3.5"], "--phi-a must be in (pi/2, pi - 1e-6]"),
     ],
 )
 def test_cli_refuses_options_that_do_not_apply(capsys, argv, line):

@@ -103,7 +103,7 @@ ABSURD = [
     ["liftoff", "--t-end", "1e6"],
     ["liftoff", "--backend", "fem", "--level", "9"],
     ["liftoff", "--backend", "fem", "--level", "50"],
-    ["liftoff", "--backend", "fem", "--time", "alpha", "--dt", "1e-9"],
+    ["liftoff", "--backend", "fem", "--scheme", "alpha", "--dt", "1e-9"],
     ["sweep", "--param", "damping", "--values", "0:0.5:1000000"],
     ["sweep", "--param", "damping", "--values", "0:0.5:10000"]
     + ["--param", "v0", "--values", "1:5:10000"],

@@ -4,6 +4,7 @@ import json
 
 import numpy as np
 import pytest
+from twoball.modal.errors import ParameterError
 from twoball.modal.parameters import preset
 from twoball.verify.cli.main import main
 from twoball.verify.studies.modes import parse_modes, run_modes_study
@@ -115,9 +116,12 @@ def test_unwritable_out_is_one_line_exit_2(capsys, tmp_path):
 
 
 def test_parse_modes():
-    assert parse_modes("30:240") == (30, 60, 120, 240)
+    assert parse_modes("30,60,120,240") == (30, 60, 120, 240)
     assert parse_modes("30,45,60") == (30, 45, 60)
-    assert parse_modes("1:4") == (1, 2, 4)
+    assert parse_modes("1:3") == (1, 2, 3)  # the one list syntax: every integer
+    assert parse_modes("30:60:3") == (30, 45, 60)
+    with pytest.raises(ParameterError, match="modes_list"):
+        parse_modes("30:480")  # 451 counts: not a study
 
 
 def _by_key(study):

@@ -116,7 +116,7 @@ def test_alpha_liftoff_converges_to_modal_liftoff_at_order_2(model):
 
 def test_fem_pole_motion_alpha_with_automatic_step():
     motion, info = fem_pole_motion(
-        PHI_A, DAMPING, "lanczos", mesh="axisym", elements=40, order=2, time="alpha"
+        PHI_A, DAMPING, "lanczos", mesh="axisym", elements=40, order=2, scheme="alpha"
     )
     assert info["time_scheme"] == "alpha" and info["rho_inf"] == 1.0
     assert info["dt"] * info["omega_cut"] <= 0.2 + 1e-12

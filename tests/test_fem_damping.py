@@ -35,7 +35,7 @@ def test_rayleigh_runs_and_reports_effective_ratios():
         mesh="axisym",
         elements=60,
         order=2,
-        time="alpha",
+        scheme="alpha",
         damping_model="rayleigh",
     )
     rayleigh = info["rayleigh"]

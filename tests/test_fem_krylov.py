@@ -143,7 +143,7 @@ def test_fem_pole_motion_routes_agree_and_auto_picks_krylov_on_large_meshes():
     _, auto_large = fem_pole_motion(2.6, 0.13, mesh="sphere", level=3, order=2)
     assert auto_small["route"] == "full" and auto_large["route"] == "krylov"
     with pytest.raises(ParameterError, match="route"):
-        fem_pole_motion(2.6, 0.13, mesh="axisym", elements=50, time="alpha", route="krylov")
+        fem_pole_motion(2.6, 0.13, mesh="axisym", elements=50, scheme="alpha", route="krylov")
 
 
 def test_thorough_verify_uses_the_fast_route_at_level_5_p2():

@@ -125,7 +125,7 @@ def test_alpha_frequency_error_is_the_trapezoidal_rule_and_second_order() -> Non
 
 
 def test_coarse_time_step_warns(capsys) -> None:
-    argv = ("--backend", "fem", "--mesh", "axisym", "--time", "alpha", "--dt", "3e-3")
+    argv = ("--backend", "fem", "--mesh", "axisym", "--scheme", "alpha", "--dt", "3e-3")
     data, lines = run_json(capsys, *argv)
     assert_printed(data, lines)
     step = [w for w in data["warnings"] if w.startswith("time step too coarse")]
@@ -135,7 +135,7 @@ def test_coarse_time_step_warns(capsys) -> None:
 
 @pytest.mark.slow
 def test_default_time_step_is_quiet(capsys) -> None:
-    data, lines = run_json(capsys, "--backend", "fem", "--mesh", "axisym", "--time", "alpha")
+    data, lines = run_json(capsys, "--backend", "fem", "--mesh", "axisym", "--scheme", "alpha")
     assert data["warnings"] == [] and lines == []
 
 

@@ -178,7 +178,7 @@ def test_save_figure_checks_the_path(model, tmp_path):
     "argv",
     [
         ["waterfall", "--level", "1", "--instants", "6"],
-        ["pole", "--level", "1", "--backends", "legendre"],
+        ["pole", "--level", "1", "--backend", "legendre"],
         ["eigen", "--levels", "0,1", "--orders", "1,2"],
     ],
 )
@@ -193,7 +193,7 @@ def test_cli_plot(tmp_path, capsys, argv):
     ("argv", "flag"),
     [
         (["surface"], "plot kind"),
-        (["pole", "--backends", "abaqus"], "--backends"),
+        (["pole", "--backend", "abaqus"], "--backend"),
         (["waterfall", "--instants", "1"], "--instants"),
         (["eigen", "--levels", "x"], "--levels"),
         (["eigen", "--orders", "3"], "--orders"),

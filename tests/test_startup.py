@@ -96,7 +96,7 @@ def test_liftoff_json_with_derived_phi_a_loads_no_scipy():
     packages, report = imported_by(["liftoff", "--v0", "3.0", "--json"])
     assert report["status"] == 0
     assert not packages & set(HEAVY), sorted(packages & set(HEAVY))
-    assert json.loads(report["stdout"])["phi_a"] == phi_a_from_v0(3.0, 0.12, 320.0)
+    assert json.loads(report["stdout"])["phi_a_rad"] == phi_a_from_v0(3.0, 0.12, 320.0)
 
 
 def test_fem_liftoff_json_loads_no_plotting_rendering_or_dask():

@@ -422,7 +422,7 @@ def check_fem(
     modes: int,
     route: str,
     *,
-    time: str = "modal",
+    scheme: str = "modal",
     dt: float | None = None,
     t_end: float = 4.0 * math.pi,
     step_accuracy: float = 0.2,
@@ -437,17 +437,17 @@ def check_fem(
     dimension = 1 if mesh == "axisym" else 2
     if route == "auto":
         route = "krylov" if dofs >= 2000 else "full"
-    if time == "alpha":
+    if scheme == "alpha":
         route = "full"
     size = options(level=level, elements=elements, order=order) or "the finite-element mesh"
     estimate = check(size, fem_estimate(dofs, modes, route, dimension))
-    if time != "alpha":
+    if scheme != "alpha":
         return estimate
     omega_cut = 0.5 * (legendre_omega(modes) + legendre_omega(modes + 1))
     step = dt if dt is not None else step_accuracy / omega_cut
     pairs = (modes + 1) ** 2 if dimension == 2 else modes + 1
     if dt is None:
-        option = "--time alpha"
+        option = "--scheme alpha"
     elif time_unit_s is None:
         option = f"--dt (dt c = {dt:.3g})"
     else:

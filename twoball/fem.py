@@ -8,6 +8,7 @@ inside, the shared lift-off criteria of §3(a) out, as the same
 from __future__ import annotations
 
 import time as clock
+from numbers import Integral
 from typing import Any
 
 from twoball.mesh_options import MeshOptions
@@ -26,7 +27,7 @@ def solve(
     elements: int | None = None,
     order: int | None = None,
     pole: Any = None,
-    time: str | None = None,
+    scheme: str | None = None,
     dt: float | None = None,
     route: str | None = None,
     damping_model: str | None = None,
@@ -53,12 +54,12 @@ def solve(
         Element and geometry order (default 2; a file: its own).
     pole : (x, y, z) or "X,Y,Z", optional
         Pole direction of a mesh file, in its frame (default +z).
-    time : {"modal", "alpha"}, optional
+    scheme : {"modal", "alpha"}, optional
         Modal superposition, eqs. (3.14)-(3.16) (default), or generalized-alpha stepping.
     dt : float, optional
-        Time step [s] of ``time="alpha"`` (default: omega_cut dt = 0.2); refused with modal.
+        Time step [s] of ``scheme="alpha"`` (default: omega_cut dt = 0.2); refused with modal.
     route : {"auto", "full", "krylov"}, optional
-        Eigen route of ``time="modal"`` (default auto); ``alpha`` needs the full pairs.
+        Eigen route of ``scheme="modal"`` (default auto); ``alpha`` needs the full pairs.
     damping_model : {"modal", "rayleigh"}, optional
         ``alpha`` only: one ratio D per mode (default) or Rayleigh damping.
     sigma : {"lanczos", "printed", "none"}
@@ -79,21 +80,21 @@ def solve(
 
     case = Case.preset("basketball") if case is None else case
     spec = MeshOptions.resolve(mesh, level=level, elements=elements, order=order, pole=pole)
-    time = "modal" if time is None else time
-    if time == "modal":
+    scheme = "modal" if scheme is None else scheme
+    if scheme == "modal":
         if dt is not None:
-            raise ParameterError("dt", "left out with time modal (no time steps)", dt)
+            raise ParameterError("dt", "left out with scheme modal (no time steps)", dt)
         if damping_model not in (None, "modal"):
             raise ParameterError(
-                "damping_model", "modal with time modal (one ratio D per mode)", damping_model
+                "damping_model", "modal with scheme modal (one ratio D per mode)", damping_model
             )
-    elif time == "alpha" and route not in (None, "full", "auto"):
-        raise ParameterError("route", "full or auto with time alpha", route)
+    elif scheme == "alpha" and route not in (None, "full", "auto"):
+        raise ParameterError("route", "full or auto with scheme alpha", route)
     dt_scaled = None
     if dt is not None:
-        from twoball.fem_membrane.checks import check_dt
+        from twoball.fem_membrane.checks import check_dt_in_window
 
-        dt_scaled = check_dt(dt) / case.scalings.time
+        dt_scaled = check_dt_in_window(dt, case.scalings.time, t_end_dimensionless(case, t_end))
     if spec.kind != "file":  # the budget in the user's units (the model layer checks again)
         from twoball.budget import check_fem
 
@@ -104,7 +105,7 @@ def solve(
             spec.order,
             case.modes,
             "auto" if route is None else route,
-            time=time,
+            scheme=scheme,
             dt=dt_scaled,
             t_end=t_end_dimensionless(case, t_end),
             time_unit_s=case.scalings.time,
@@ -119,7 +120,7 @@ def solve(
         level=spec.level,
         elements=spec.elements,
         order=spec.order if loaded is None else None,
-        time=time,
+        scheme=scheme,
         damping_model="modal" if damping_model is None else damping_model,
         dt=dt_scaled,
         t_end=t_end_dimensionless(case, t_end),
@@ -183,6 +184,8 @@ def eigen(
     from twoball.fem_membrane.eigen import eigen_table
 
     spec = MeshOptions.resolve(mesh, level=level, elements=elements, order=order, pole=pole)
+    if isinstance(count, bool) or not isinstance(count, Integral) or count < 1:
+        raise ParameterError("count", "an integer >= 1", count)
     if spec.kind != "file":  # refuse absurd meshes before building them
         dofs = fem_dofs(spec.kind, spec.level, spec.elements, spec.order)
         size = options(level=spec.level, elements=spec.elements, order=spec.order)

@@ -7,7 +7,6 @@ to ``out`` and returns a small result object with ``as_dict()``.
 
 from __future__ import annotations
 
-import math
 import os
 from collections.abc import Sequence
 from dataclasses import dataclass, field
@@ -24,6 +23,8 @@ __all__ = ["ExportResult", "PlotResult", "RenderResult", "export", "plot", "rend
 FIELD_BACKENDS: tuple[str, ...] = ("fem", "legendre")
 INITIAL_METHODS: tuple[str, ...] = ("projection", "interpolation")
 DEFAULT_ANIMATION_FRAMES = 60
+DEFAULT_FPS = 20.0
+FPS_RANGE = (1e-3, 1e3)  # frames per second of an animation
 
 
 @dataclass(frozen=True)
@@ -119,6 +120,53 @@ def field_warnings(model: Any, backend: str, order: int | None, level: int | Non
     return warnings
 
 
+def check_initial(initial: str | None, backends: Sequence[str]) -> str:
+    """``initial`` (default projection); refused when no finite-element backend is solved."""
+    if initial is None:
+        return "projection"
+    if "fem" not in backends:
+        raise ParameterError(
+            "initial", "left out without the fem backend (it sets the FE initial state)", initial
+        )
+    if initial not in INITIAL_METHODS:
+        raise ParameterError("initial", "one of " + ", ".join(INITIAL_METHODS), initial)
+    return initial
+
+
+def check_fps(fps: object) -> float:
+    """Frames per second of an animation, in :data:`FPS_RANGE`."""
+    from twoball.modal.errors import bounded
+
+    return bounded("fps", fps, *FPS_RANGE)
+
+
+def _eigen_sizes(
+    levels: Sequence[int] | None, orders: Sequence[int] | None, max_degree: int | None
+) -> tuple[list[int], list[int]]:
+    """Levels and orders of the eigenvalue plot, each mesh checked against the budget."""
+    from twoball.budget import check, fem_dofs, fem_estimate, options
+
+    levels = [1, 2, 3] if levels is None else levels
+    orders = [1, 2] if orders is None else orders
+    for name, values in (("levels", levels), ("orders", orders)):
+        if isinstance(values, (str, bytes)) or not isinstance(values, Sequence) or not values:
+            raise ParameterError(name, "a non-empty list of integers", values)
+    if max_degree is not None and (
+        isinstance(max_degree, bool) or not isinstance(max_degree, int) or max_degree < 1
+    ):
+        raise ParameterError("max_degree", "an integer >= 1", max_degree)
+    for order in orders:
+        for level in levels:
+            try:
+                spec = MeshOptions.resolve(None, level=level, order=order, files=False)
+            except ParameterError as error:  # named as the list the value came from
+                name = "levels" if error.name == "level" else "orders"
+                raise ParameterError(name, f"a list of {error.valid}", error.got) from None
+            size = options(level=spec.level, order=spec.order)
+            check(size, fem_estimate(fem_dofs("sphere", spec.level, None, spec.order), 30))
+    return list(levels), list(orders)
+
+
 def check_frame_budget(
     case: Case, count: int, name: str, level: int | None, order: int | None
 ) -> None:
@@ -151,6 +199,7 @@ def ball_model_of(
     from twoball.verify.output.fields import ball_model
 
     spec = MeshOptions.resolve(mesh, level=level, order=order, kinds=SPHERE_KINDS, files=False)
+    initial = check_initial(initial, backends)
     if initial not in INITIAL_METHODS:
         raise ParameterError("initial", "one of " + ", ".join(INITIAL_METHODS), initial)
     return ball_model(
@@ -177,7 +226,7 @@ def export(
     mesh: str | None = None,
     level: int | None = None,
     order: int | None = None,
-    initial: str = "projection",
+    initial: str | None = None,
     sigma: str = "lanczos",
     recontact: str = "window",
     t_end: float | None = None,
@@ -201,8 +250,8 @@ def export(
     mesh, level, order
         Sphere mesh (``sphere`` or ``ring``), level (default 3), order (default 2).
         Mesh files are not taken here yet (the fields are evaluated on generated meshes).
-    initial : {"projection", "interpolation"}
-        FE representation of the initial displacement, eq. (3.10).
+    initial : {"projection", "interpolation"}, optional
+        FE representation of the initial displacement, eq. (3.10) (default projection).
     sigma, recontact, t_end
         As in :func:`twoball.liftoff`.
     """
@@ -277,11 +326,11 @@ def render(
     frames: int | None = None,
     warp: float | None = None,
     size: tuple[int, int] | str | None = None,
-    fps: float = 20.0,
+    fps: float | None = None,
     mesh: str | None = None,
     level: int | None = None,
     order: int | None = None,
-    initial: str = "projection",
+    initial: str | None = None,
     sigma: str = "lanczos",
     recontact: str = "window",
     t_end: float | None = None,
@@ -304,10 +353,10 @@ def render(
         Displacement magnification (default automatic: largest displacement at 15 % of R).
     size : (int, int) or "WxH", optional
         Image size in pixels (MP4: rounded up to multiples of 16).
-    fps : float
-        Frames per second of an animation.
+    fps : float, optional
+        Frames per second of an animation, in [0.001, 1000] (default 20); not with ``.png``.
     mesh, level, order, initial, sigma, recontact, t_end
-        As in :func:`export`.
+        As in :func:`export` (``initial`` needs ``backend="fem"``).
     """
     import numpy as np
 
@@ -329,8 +378,10 @@ def render(
     size = check_size(DEFAULT_SIZE if size is None else size)
     warp = check_warp(warp)
     _check_backend(backend)
-    if not (isinstance(fps, (int, float)) and math.isfinite(fps) and fps > 0):
-        raise ParameterError("fps", "a number > 0", fps)
+    if kind == ".png" and fps is not None:
+        raise ParameterError("fps", "used with .gif or .mp4 only", fps)
+    fps = DEFAULT_FPS if fps is None else check_fps(fps)
+    check_initial(initial, (backend,))
     if kind == ".png" and frames is not None:
         raise ParameterError("frames", "used with .gif or .mp4 only (use time for .png)", frames)
     if kind != ".png" and time is not None:
@@ -339,7 +390,10 @@ def render(
     MeshOptions.resolve(mesh, level=level, order=order, kinds=SPHERE_KINDS, files=False)
     times = None
     if time is not None:
-        times = check_times(window(case, t_end), [time], "time")
+        from twoball.modal.errors import real_number
+
+        valid = "a time >= 0 in seconds within the modelled window"
+        times = check_times(window(case, t_end), [real_number("time", time, valid)], "time")
     if kind != ".png":
         count = DEFAULT_ANIMATION_FRAMES if frames is None else frames
         check_frame_budget(case, count, "frames", level, order)
@@ -378,17 +432,17 @@ def plot(
     out: str | os.PathLike[str],
     case: Case | None = None,
     *,
-    backends: Sequence[str] = FIELD_BACKENDS,
+    backends: Sequence[str] | None = None,
     instants: int | None = None,
-    levels: Sequence[int] = (1, 2, 3),
-    orders: Sequence[int] = (1, 2),
+    levels: Sequence[int] | None = None,
+    orders: Sequence[int] | None = None,
     max_degree: int | None = None,
     mesh: str | None = None,
     level: int | None = None,
     order: int | None = None,
-    initial: str = "projection",
-    sigma: str = "lanczos",
-    recontact: str = "window",
+    initial: str | None = None,
+    sigma: str | None = None,
+    recontact: str | None = None,
     t_end: float | None = None,
     dpi: float | None = None,
 ) -> PlotResult:
@@ -402,23 +456,25 @@ def plot(
         Output file; its suffix chooses the format: any format matplotlib
         writes (``.pdf``, ``.svg``, ``.eps``, ``.png``, ...).
     case : Case, optional
-        The impact (default the basketball preset); not used by ``eigen``.
-    backends : sequence of {"fem", "legendre"}
-        Solvers drawn by ``waterfall`` and ``pole``.
+        The impact (default the basketball preset); refused by ``eigen``.
+    backends : sequence of {"fem", "legendre"}, optional
+        Solvers drawn by ``waterfall`` and ``pole`` (default both).
     instants : int, optional
-        Curves of the waterfall (default 24, as in Fig. 6), >= 2.
+        Curves of the waterfall (default 24, as in Fig. 6), >= 2; ``waterfall`` only.
     levels, orders, max_degree
-        ``eigen``: mesh levels, element orders and the largest degree l.
+        ``eigen`` only: mesh levels (default 1, 2, 3), element orders (default 1,
+        2) and the largest degree l.
     mesh, level, order, initial, sigma, recontact, t_end
-        As in :func:`export` (``waterfall`` and ``pole``).
+        As in :func:`export` (``waterfall`` and ``pole`` only; defaults as there).
     dpi : float, optional
         Resolution of raster formats (PNG, ...) [dots per inch], 50 to 1200;
         default 300.
 
-    Notes
-    -----
-    ``pole`` with both backends puts a panel of the difference finite elements
-    minus closed form under each quantity.
+    Every argument that the chosen ``kind`` does not use is refused
+    (:class:`ParameterError`), never ignored.  ``pole`` with both backends
+    puts a panel of the difference finite elements minus closed form under
+    each quantity; ``waterfall`` with both stacks that difference at the nodes
+    beside the waterfall.
     """
     from twoball.staging import check_file
     from twoball.verify.output.figures import PLOT_KINDS, check_dpi, figure_format, save_figure
@@ -436,17 +492,33 @@ def plot(
     warnings: list[str] = []
     if kind == "eigen":
         for name, value in (
+            ("case", case),
+            ("backends", backends),
+            ("instants", instants),
             ("mesh", mesh),
             ("level", level),
             ("order", order),
-            ("instants", instants),
+            ("initial", initial),
+            ("sigma", sigma),
+            ("recontact", recontact),
+            ("t_end", t_end),
         ):
             if value is not None:
-                raise ParameterError(name, "left out with kind eigen (use levels, orders)", value)
+                shown = type(value).__name__ if name == "case" else value
+                raise ParameterError(name, "left out with kind eigen (use levels, orders)", shown)
+        levels, orders = _eigen_sizes(levels, orders, max_degree)
         tables = [eigen_table(lv, od, max_degree) for od in orders for lv in levels]
         figure = eigen_figure(tables)
         rows += [(t.label, f"l <= {t.degrees[-1]}, worst {t.errors[1:].max():.2e}") for t in tables]
     else:
+        for name, value in (("levels", levels), ("orders", orders), ("max_degree", max_degree)):
+            if value is not None:
+                raise ParameterError(name, f"left out with kind {kind} (eigen only)", value)
+        if kind == "pole" and instants is not None:
+            raise ParameterError("instants", "left out with kind pole (waterfall only)", instants)
+        sigma = "lanczos" if sigma is None else sigma
+        recontact = "window" if recontact is None else recontact
+        backends = FIELD_BACKENDS if backends is None else backends
         instants = WATERFALL_INSTANTS if instants is None else instants
         if isinstance(instants, bool) or not isinstance(instants, int) or instants < 2:
             raise ParameterError("instants", "an integer >= 2", instants)

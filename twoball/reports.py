@@ -7,7 +7,6 @@ write a report directory (report.md, results.json, CSV tables, PNG plots).
 from __future__ import annotations
 
 import os
-import re
 from collections.abc import Callable
 from typing import Any
 
@@ -24,24 +23,24 @@ def _quiet(_: str) -> None:
 
 
 def parse_levels(text: str, mesh: str, study: str = "h") -> tuple[int, ...]:
-    """``"A:B"`` -> levels A, A+1, ..., B (integers, A < B, inside the allowed range).
+    """Consecutive levels, e.g. ``"2:5"`` or ``"2,3,4,5"`` (the one list syntax).
 
     Mesh levels are bounded per mesh; time-step levels (``study="dt"``: dt =
-    0.01 / 2^level) have their own bounds.
+    0.01 / 2^level) have their own bounds.  At least two levels, each one more
+    than the last (a refinement ratio of 2 between neighbours).
     """
+    from twoball.ranges import parse_values
     from twoball.verify.studies.fem_runs import LEVEL_LIMITS
     from twoball.verify.studies.time_step import DT_LEVEL_LIMITS
 
     low_limit, high_limit = DT_LEVEL_LIMITS if study == "dt" else LEVEL_LIMITS[mesh]
     what = "study dt" if study == "dt" else f"mesh {mesh}"
-    valid = f"A:B with integers {low_limit} <= A < B <= {high_limit} for {what}"
-    match = re.fullmatch(r"\s*(\d+)\s*:\s*(\d+)\s*", str(text))
-    if match is None:
+    valid = f"consecutive integers in [{low_limit}, {high_limit}] for {what}, e.g. 2:4"
+    levels = parse_values(text, "levels", integer=True, valid=valid)
+    consecutive = all(b == a + 1 for a, b in zip(levels[:-1], levels[1:], strict=True))
+    if len(levels) < 2 or not consecutive or levels[0] < low_limit or levels[-1] > high_limit:
         raise ParameterError("levels", valid, text)
-    low, high = int(match.group(1)), int(match.group(2))
-    if not (low_limit <= low < high <= high_limit):
-        raise ParameterError("levels", valid, text)
-    return tuple(range(low, high + 1))
+    return tuple(int(v) for v in levels)
 
 
 def converge(
@@ -93,12 +92,16 @@ def converge(
     from twoball.verify.studies.time_step import run_dt_study
 
     case = Case.preset("basketball") if case is None else case
+    if not isinstance(case, Case):
+        raise ParameterError("case", "a twoball.Case", type(case).__name__)
     if study not in STUDIES:
         raise ParameterError("study", "one of " + ", ".join(STUDIES), study)
     if study == "modes":  # the Legendre series: no mesh
         for name, value in (("mesh", mesh), ("order", order)):
             if value is not None:
                 raise ParameterError(name, "left out with study modes (no mesh)", value)
+    if study == "order" and order is not None:
+        raise ParameterError("order", "left out with study order (it compares P1 and P2)", order)
     if mesh is None:
         mesh = "axisym" if study == "dt" else "sphere"
     if mesh not in ("sphere", "axisym"):
@@ -174,6 +177,8 @@ def verify(
     from twoball.verify.checks.run import run_verify
 
     case = Case.preset("basketball") if case is None else case
+    if not isinstance(case, Case):
+        raise ParameterError("case", "a twoball.Case", type(case).__name__)
     if thorough and fast:
         raise ParameterError("fast", "left out with thorough", fast)
     target = None

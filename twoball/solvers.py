@@ -33,7 +33,7 @@ def liftoff(
     elements: int | None = None,
     order: int | None = None,
     pole: Any = None,
-    time: str | None = None,
+    scheme: str | None = None,
     dt: float | None = None,
     route: str | None = None,
     damping_model: str | None = None,
@@ -53,7 +53,7 @@ def liftoff(
         Re-contact horizon of criterion (ii), §3(a).
     t_end : float, optional
         Modelled window [s] (default 4 pi / c).
-    mesh, level, elements, order, pole, time, dt, route, damping_model
+    mesh, level, elements, order, pole, scheme, dt, route, damping_model
         Finite-element options (see :func:`twoball.fem.solve`; ``mesh`` may be a
         kind name or the user's mesh: a file path, ``meshio.Mesh`` or ``MeshTri``);
         refused with ``backend="legendre"``.
@@ -73,7 +73,7 @@ def liftoff(
         "elements": elements,
         "order": order,
         "pole": pole,
-        "time": time,
+        "scheme": scheme,
         "dt": dt,
         "route": route,
         "damping_model": damping_model,
@@ -128,7 +128,7 @@ def sweep(
     sigma: str = "lanczos",
     recontact: str = "window",
     t_end: float | None = None,
-    workers: int = 1,
+    workers: int | None = None,
     scheduler: str | None = None,
     progress: Callable[[int], None] | None = None,
 ) -> SweepResult:
@@ -144,8 +144,9 @@ def sweep(
         The base case (default the basketball preset).
     sigma, recontact, t_end
         As in :func:`liftoff` (``t_end`` in seconds).
-    workers : int
-        Local processes (1: serial; the numbers do not depend on it).
+    workers : int, optional
+        Local processes (default 1: serial; the numbers do not depend on it);
+        refused with ``scheduler``.
     scheduler : str, optional
         Address of a dask.distributed scheduler.
     progress : callable, optional
@@ -163,6 +164,13 @@ def sweep(
     from twoball.verify.sweeps.sweeps import SWEEP_PARAMETERS, SweepGrid, SweepSolver, run_sweep
 
     case = Case.preset("basketball") if case is None else case
+    if not isinstance(case, Case):
+        raise ParameterError("case", "a twoball.Case", type(case).__name__)
+    if scheduler and workers is not None:
+        raise ParameterError("workers", "left out with scheduler (the cluster decides)", workers)
+    workers = 1 if workers is None and not scheduler else workers
+    if workers is not None:
+        check_workers(workers)  # its type and range, before the budget compares it
     if not isinstance(values, Mapping) or not 1 <= len(values) <= 2:
         raise ParameterError("values", "a mapping of one or two parameters to values", values)
     parameters = tuple(_sweep_name(k) for k in values)
@@ -182,8 +190,8 @@ def sweep(
     modes = int(max(arrays[parameters.index("modes")])) if "modes" in parameters else case.modes
     check_sweep(math.prod(grid.shape), modes, t_end_dimensionless(case, t_end), workers)
     cases = grid.cases(case)
-    workers = check_workers(workers)
-    if len(cases) < MIN_PARALLEL_ITEMS:
+    workers = None if scheduler else check_workers(workers)
+    if len(cases) < MIN_PARALLEL_ITEMS and not scheduler:
         workers = 1  # would run in process anyway; do not start a pool
     solver = SweepSolver(sigma, recontact, t_end)
     with Runner(workers, scheduler) as runner:

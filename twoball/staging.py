@@ -99,6 +99,16 @@ def _named(error: OSError, target: Path) -> OSError:
 # --------------------------------------------------------------------------- targets
 def _plain_target(path: str | os.PathLike[str], param: str, valid: str) -> Path:
     """``path`` made absolute; refused if it is a symbolic link or its folder is unusable."""
+    try:
+        return _usable_target(path, param, valid)
+    except OSError as error:  # a name or path too long, a loop of links, ...
+        reason = error.strerror or str(error)
+        shown = os.fspath(path)
+        shown = shown if len(shown) <= 200 else shown[:100] + "..." + shown[-60:]
+        raise _parameter_error(param, valid + f" ({reason})", shown) from None
+
+
+def _usable_target(path: str | os.PathLike[str], param: str, valid: str) -> Path:
     out = Path(path).expanduser()
     if out.name in ("", ".", ".."):
         raise _parameter_error(param, valid, str(path))

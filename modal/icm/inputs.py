@@ -7,26 +7,25 @@ Every check returns the value as a float or raises
 
 from __future__ import annotations
 
-import math
-
-from ..errors import ParameterError
+from ..errors import ParameterError, real_number
 
 
 def _as_float(name: str, valid: str, value: object) -> float:
-    try:
-        out = float(value)  # type: ignore[arg-type]
-    except (TypeError, ValueError):
-        raise ParameterError(name, valid, value) from None
-    if not math.isfinite(out):
-        raise ParameterError(name, valid, value)
-    return out
+    """A finite real number (not a string, not a boolean), as a float."""
+    return real_number(name, valid=valid, value=value)
+
+
+#: Largest mass ratio, gap and drop height: physically meaningful and far from the
+#: overflow of eqs. (2.1)-(2.6) (a velocity sqrt(2 g H) or a ratio mu u / (mu + 1)).
+UPPER: dict[str, float] = {"mu": 1e6, "dx": 1e6, "drop_height": 1e6, "g": 1e6}
 
 
 def _bounded_below(name: str, value: object, unit: str, strict: bool) -> float:
-    """A finite float ``> 0`` (``strict``) or ``>= 0``; ``unit`` is named in the message."""
-    valid = f"a finite number {'>' if strict else '>='} 0" + (f" [{unit}]" if unit else "")
+    """A finite float in ``(0, UPPER]`` (``strict``) or ``[0, UPPER]``; ``unit`` in the message."""
+    high = UPPER[name]
+    valid = f"a number in {'(' if strict else '['}0, {high:g}]" + (f" [{unit}]" if unit else "")
     out = _as_float(name, valid, value)
-    if not (out > 0.0 if strict else out >= 0.0):
+    if not ((out > 0.0 if strict else out >= 0.0) and out <= high):
         raise ParameterError(name, valid, out)
     return out
 

@@ -149,7 +149,7 @@ def alpha_checks(
     rows = [
         run_row(
             case, "fem alpha", label, modal.dofs, result.t, result.velocity, seconds, reference,
-            limit, {"steps": info["steps"], "dt": target.dt,
+            limit, {"steps": info["steps"], "dt_s": target.dt * case.scalings.time,
                     "liftoff_gap_to_modal": gap, "liftoff_gap_to_modal_hermite": hermite_gap},
         )
     ]  # fmt: skip

@@ -3,7 +3,6 @@
 from __future__ import annotations
 
 import argparse
-import math
 
 from twoball.modal.errors import ParameterError
 from twoball.modal.filters import FILTER_KINDS
@@ -11,14 +10,14 @@ from twoball.modal.liftoff import HORIZONS
 from twoball.modal.parameters import STANDARD_GRAVITY, Case
 
 VALID_RANGES: dict[str, str] = {
-    "--radius": "a number > 0 [m]",
-    "--wave-speed": "a number > 0 [1/s]",
-    "--pressure": "a number > 0 [Pa]",
-    "--mass": "a number > 0 [kg]",
-    "--v0": "a nonzero number [m/s]",
-    "--phi-a": "a number in (pi/2, pi) [rad]",
+    "--radius": "a number in [1e-06, 1e+06] [m]",
+    "--wave-speed": "a number in [1e-06, 1e+09] [1/s]",
+    "--pressure": "a number in [1e-06, 1e+12] [Pa]",
+    "--mass": "a number in [1e-12, 1e+12] [kg]",
+    "--v0": "a nonzero speed with |v0| <= 1e+06 [m/s]",
+    "--phi-a": "a number in (pi/2, pi - 1e-6] [rad]",
     "--damping": "a number in [0, 1)",
-    "--modes": "an integer >= 1",
+    "--modes": "an integer in [1, 1000000]",
     "--t-end": "a number > 0 [s]",
     "--max-memory": "a size > 0 such as 12GiB, 500MB or 2e9 (bytes)",
     "--max-time": "a duration > 0 such as 3600, 90min or 2h",
@@ -69,17 +68,11 @@ def case_from_options(args: argparse.Namespace) -> Case:
     follows the rule of :class:`~twoball.modal.parameters.Case`: ``--phi-a`` if
     given, else the preset's measured angle at its own R, c, |v0|, else eq. (3.7).
     """
-    from twoball.budget import Budget, set_budget
-
-    set_budget(Budget.from_options(args.max_memory, args.max_time))
+    apply_limits(args)
     if (args.pressure is None) != (args.mass is None):
         raise ParameterError("--pressure/--mass", "given together")
     if args.pressure is not None and args.wave_speed is not None:
         raise ParameterError("wave_speed", "given alone, not with --pressure and --mass")
-    for name in ("radius", "v0", "damping", "pressure", "mass", "wave_speed", "phi_a", "t_end"):
-        value = getattr(args, name, None)
-        if value is not None and not math.isfinite(value):
-            raise ParameterError(name, "a finite number", value)
     changes: dict[str, float] = {}
     for name in ("radius", "wave_speed", "v0", "phi_a", "damping", "modes"):
         value = getattr(args, name)
@@ -92,4 +85,30 @@ def case_from_options(args: argparse.Namespace) -> Case:
     return Case.preset(args.preset, **changes)
 
 
-__all__ = ["VALID_RANGES", "add_case_options", "case_from_options"]
+#: The options that describe the case (``--sigma`` etc. belong to the model).
+CASE_OPTIONS = ("radius", "wave_speed", "pressure", "mass", "v0", "phi_a", "damping", "modes")
+
+
+def case_options_given(args: argparse.Namespace) -> bool:
+    """Whether any option of the case (or a preset or g other than the default) was given."""
+    return (
+        any(getattr(args, name) is not None for name in CASE_OPTIONS)
+        or args.preset != "basketball"
+        or args.g != STANDARD_GRAVITY
+    )
+
+
+def apply_limits(args: argparse.Namespace) -> None:
+    """Set the resource limits of ``--max-memory`` and ``--max-time`` for this run."""
+    from twoball.budget import Budget, set_budget
+
+    set_budget(Budget.from_options(args.max_memory, args.max_time))
+
+
+__all__ = [
+    "VALID_RANGES",
+    "add_case_options",
+    "apply_limits",
+    "case_from_options",
+    "case_options_given",
+]

@@ -18,10 +18,14 @@ if TYPE_CHECKING:
 
 
 def console(wide: bool = False) -> Console:
-    """A console that prints brackets literally (units like ``[m/s]`` are not markup)."""
+    """A console that prints brackets literally (units like ``[m/s]`` are not markup).
+
+    On a terminal, tables fit its width.  ``wide`` tables written to a file or a
+    pipe (a CI log) get at least 120 columns, so their rows are not wrapped.
+    """
     from rich.console import Console
 
-    width = max(Console().width, 120) if wide else None
+    width = max(Console().width, 120) if wide and not sys.stdout.isatty() else None
     return Console(markup=False, highlight=False, width=width)
 
 

@@ -11,6 +11,7 @@ from pathlib import Path
 
 from rich.progress import Progress, SpinnerColumn, TextColumn, TimeElapsedColumn
 from rich.table import Table
+from twoball.modal.errors import ParameterError
 from twoball.verify.cli.case_options import add_case_options, case_from_options
 from twoball.verify.cli.console import console, print_notes
 from twoball.verify.output.report_files import json_text, study_summary_rows
@@ -30,7 +31,7 @@ def print_study(study: StudyResult, out: Path) -> None:
     out_console = console(wide=True)
     out_console.print(table)
     settings = study.settings
-    out_console.print(f"phi_a = {settings['phi_a']:.6f} rad ({settings['phi_a_source']})")
+    out_console.print(f"phi_a = {settings['phi_a_rad']:.6f} rad ({settings['phi_a_source']})")
     for note in study.notes:
         out_console.print("* " + note)
     verdict = "PASS" if study.passed else "FAIL"
@@ -41,7 +42,7 @@ def run(args: argparse.Namespace) -> int:
     """Run ``twoball converge``: :func:`twoball.converge` with the options, report in ``--out``."""
     from twoball.reports import converge
 
-    out = args.out or f"twoball-converge-{args.study}"
+    out = args.out if args.out is not None else f"twoball-converge-{args.study}"
     options = {
         "study": args.study,
         "mesh": args.mesh,
@@ -53,6 +54,8 @@ def run(args: argparse.Namespace) -> int:
         "t_end": args.t_end,
         "out": out,
     }
+    if args.study == "modes" and args.modes is not None:
+        raise ParameterError("modes", "left out with --study modes (use --modes-list)", args.modes)
     case = case_from_options(args)
     print_notes([case.phi_a_note] if case.phi_a_note else [])
     if args.json:
@@ -101,14 +104,14 @@ def register(parser: argparse.ArgumentParser) -> None:
     )
     parser.add_argument(
         "--levels",
-        metavar="A:B",
-        help="refinement levels A..B (sphere: icosphere level; axisym: 25 * 2^level "
-        "elements; dt: dt = dt0 / 2^level)",
+        metavar="LIST",
+        help="consecutive refinement levels, e.g. 2:5 or 2,3,4,5 (sphere: icosphere "
+        "level; axisym: 25 * 2^level elements; dt: dt = dt0 / 2^level)",
     )
     parser.add_argument(
         "--modes-list",
-        metavar="N1,N2,..|NMIN:NMAX",
-        help="mode counts of --study modes (default 30:480, doubling)",
+        metavar="LIST",
+        help="mode counts of --study modes, 3 to 16 increasing (default 30,60,120,240,480)",
     )
     add_case_options(parser)
     parser.add_argument(

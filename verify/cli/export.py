@@ -36,7 +36,7 @@ def add_frame_options(parser: argparse.ArgumentParser, default: int) -> None:
         help=f"K frames evenly spaced over [0, t_end] (default {default}; plus the lift-off)",
     )
     group.add_argument(
-        "--times", metavar="T1,T2,...", help="frame times in seconds, comma-separated"
+        "--times", metavar="LIST", help="frame times in seconds: t1,t2,... or START:STOP:COUNT"
     )
 
 
@@ -85,6 +85,7 @@ def register(parser: argparse.ArgumentParser) -> None:
     )
     add_case_options(parser)
     add_mesh_options(parser, SPHERE_KINDS, initial=True, files=False)
+    parser.set_defaults(initial=None)  # the API's default (projection)
     add_backend_option(parser)
     parser.add_argument(
         "--format",

@@ -30,13 +30,14 @@ FLAGS: dict[str, str] = {
     "recontact": "--recontact",
     "t_end": "--t-end",
     "backend": "--backend",
-    "backends": "--backends",
+    "backends": "--backend",
     # finite elements
     "mesh": "--mesh",
     "level": "--level",
     "elements": "--elements",
     "order": "--order",
     "time": "--time",
+    "scheme": "--scheme",
     "dt": "--dt",
     "route": "--route",
     "damping_model": "--damping-model",
@@ -83,10 +84,19 @@ def flag_of(name: str, args: Namespace | None = None) -> str:
     """The command-line flag of parameter ``name`` (``name`` itself if it has none).
 
     ``mesh`` is ``--mesh-file`` when the mesh came from ``--mesh-file`` (the API
-    takes a kind name or a file as the same ``mesh`` argument).
+    takes a kind name or a file as the same ``mesh`` argument); ``case`` is the
+    first case option given (the API takes them together as one ``Case``).
     """
     if name == "mesh" and getattr(args, "mesh_file", None) is not None:
         return "--mesh-file"
+    if name == "case" and args is not None:  # the case came from the first case option given
+        for option in ("preset", "radius", "wave_speed", "pressure", "mass", "v0", "phi_a"):
+            if getattr(args, option, None) not in (None, "basketball"):
+                return FLAGS[option]
+        for option in ("damping", "modes", "g"):
+            if getattr(args, option, None) is not None and option != "g":
+                return FLAGS[option]
+        return "--g"
     return FLAGS.get(name, name)
 
 

@@ -10,18 +10,23 @@ from twoball.modal.errors import ParameterError
 from twoball.verify.cli.console import Table, console, print_json
 
 VALID_RANGES = {
-    "--mu": "a number >= 0",
+    "--mu": "a number in [0, 1e+06]",
     "--e2": "a number in [0, 1]",
     "--e12": "a number in [0, 1]",
-    "--dx": "a number >= 0 [m]",
-    "--drop-height": "a number > 0 [m]",
+    "--dx": "a number in [0, 1e+06] [m]",
+    "--drop-height": "a number in (0, 1e+06] [m]",
 }
 
 
 def run(args: argparse.Namespace) -> int:
     """Run ``twoball icm``."""
-    out = console(wide=True)
+    out = console()
     if args.table1:
+        for flag in ("mu", "e2", "e12", "dx", "drop_height"):
+            if getattr(args, flag) is not None:
+                raise ParameterError(
+                    flag, "left out with --table1 (its rows fix them)", getattr(args, flag)
+                )
         checks = icm.table1_check()
         if args.json:
             rows = [
@@ -38,23 +43,25 @@ def run(args: argparse.Namespace) -> int:
             ]
             print_json(rows)
             return 0
-        table = Table(title="Table 1: ICM (eq. (2.6)) recomputed beside the printed values")
-        for name in (
-            "lower",
-            "upper",
-            "mu",
-            "e2",
-            "e12",
-            "v1 printed",
-            "v1 ours",
-            "",
-            "v2 printed",
-            "v2 ours",
-            " ",
-        ):
-            table.add_column(name, justify="right")
+        from rich import box
+
+        table = Table(
+            title="Table 1: ICM (eq. (2.6)), printed vs ours",
+            box=box.SIMPLE_HEAD,
+            show_edge=False,
+            pad_edge=False,
+            padding=(0, 1, 0, 0),
+        )
+        for name in ("lower", "upper", "mu", "e2", "e12", "v1\nprinted", "v1\nours"):
+            table.add_column(name, justify="left" if name in ("lower", "upper") else "right")
+        table.add_column("v2\nprinted", justify="right")
+        table.add_column("v2\nours", justify="right")
+        for column in table.columns:
+            column.no_wrap = True
+        differs = False
         for c in checks:
             r = c.row
+            differs |= c.v1_differs or c.v2_differs
             table.add_row(
                 r.lower,
                 r.upper,
@@ -62,14 +69,14 @@ def run(args: argparse.Namespace) -> int:
                 f"{r.e2:g}",
                 f"{r.e12:g}",
                 f"{r.icm_v1:g}",
-                f"{c.v1:.3f}",
-                "DIFFERS" if c.v1_differs else "ok",
+                f"{c.v1:.3f}" + (" *" if c.v1_differs else "  "),
                 f"{r.icm_v2:g}",
-                f"{c.v2:.3f}",
-                "DIFFERS" if c.v2_differs else "ok",
+                f"{c.v2:.3f}" + (" *" if c.v2_differs else "  "),
             )
         out.print(table)
-        out.print("Ratios are v/|v0|; 'ok' means equal after rounding to the printed digits.")
+        out.print("Ratios v/|v0|. * DIFFERS from the printed value rounded to its digits.")
+        if differs:
+            out.print("Why: docs, page 'Independent collision model', 'Table 1 recomputed'.")
         return 0
     missing = [
         f for f, v in (("--mu", args.mu), ("--e2", args.e2), ("--e12", args.e12)) if v is None

@@ -104,6 +104,18 @@ def full_parser() -> argparse.ArgumentParser:
     return build_parser("*")
 
 
+def value_options(parser: argparse.ArgumentParser) -> set[str]:
+    """Every option string of ``parser`` and its loaded subcommands that takes one value."""
+    found: set[str] = set()
+    for action in parser._actions:
+        if isinstance(action, argparse._SubParsersAction):
+            for command in action.choices.values():
+                found |= value_options(command)
+        elif action.option_strings and action.nargs is None:
+            found.update(action.option_strings)
+    return found
+
+
 def chosen_command(argv: Sequence[str]) -> str | None:
     """The subcommand named in ``argv`` (its first word that is not an option), if any."""
     for word in argv:
@@ -132,6 +144,9 @@ def _main(argv: Sequence[str] | None = None) -> int:
     if not argv:
         parser.print_help()
         return 0
+    from twoball.ranges import join_negative_values
+
+    argv = join_negative_values(argv, value_options(parser))
     args = parser.parse_args(argv)
     if args.command is None:
         fail("choose a command: " + ", ".join(COMMANDS))

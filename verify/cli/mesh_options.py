@@ -5,7 +5,7 @@ Every subcommand that takes a mesh (``liftoff --backend fem``, ``eigen``,
 and None when not given, to the public function, whose
 :class:`twoball.mesh_options.MeshOptions` supplies the defaults and refuses an
 option that does not apply (``--level`` with ``--mesh axisym``, ``--elements``
-on a sphere, ``--dt`` with ``--time modal``, any of them with ``--backend legendre``).
+on a sphere, ``--dt`` with ``--scheme modal``, any of them with ``--backend legendre``).
 """
 
 from __future__ import annotations
@@ -89,9 +89,12 @@ def add_mesh_options(
 
 
 def add_time_options(parser: argparse.ArgumentParser) -> None:
-    """``--time``, ``--damping-model``, ``--dt`` and ``--route`` of the finite-element lift-off."""
+    """``--scheme``, ``--damping-model``, ``--dt``, ``--route`` of the finite-element lift-off."""
     group = parser.add_argument_group("finite-element time integration")
-    group.add_argument("--time", help="modal (superposition, default) or alpha (generalized-alpha)")
+    group.add_argument(
+        "--scheme",
+        help="time integration: modal (superposition, default) or alpha (generalized-alpha)",
+    )
     group.add_argument(
         "--damping-model", help="alpha only: modal (ratio D per mode, default) or rayleigh"
     )
@@ -122,7 +125,7 @@ def mesh_arguments(args: argparse.Namespace) -> dict[str, Any]:
 
 def time_arguments(args: argparse.Namespace) -> dict[str, Any]:
     """The time options given on the command line, as keyword arguments of the API."""
-    return {n: getattr(args, n) for n in ("time", "dt", "route", "damping_model")}
+    return {n: getattr(args, n) for n in ("scheme", "dt", "route", "damping_model")}
 
 
 __all__ = [

@@ -8,7 +8,12 @@ from __future__ import annotations
 import argparse
 
 from twoball.modal.errors import ParameterError
-from twoball.verify.cli.case_options import add_case_options, case_from_options
+from twoball.verify.cli.case_options import (
+    add_case_options,
+    apply_limits,
+    case_from_options,
+    case_options_given,
+)
 from twoball.verify.cli.console import console, key_value_table, print_notes, print_warnings
 from twoball.verify.cli.mesh_options import SPHERE_KINDS, add_mesh_options, mesh_arguments
 from twoball.verify.cli.mesh_options import VALID_RANGES as MESH_RANGES
@@ -24,25 +29,20 @@ VALID_RANGES: dict[str, str] = {
 
 
 def parse_list(text: str, flag: str, valid: str, allowed: set[int] | None = None) -> list[int]:
-    """Comma-separated integers (e.g. ``--levels 2,3``)."""
-    try:
-        values = [int(p) for p in str(text).split(",")]
-    except ValueError:
-        raise ParameterError(flag, valid, text) from None
-    if (
-        not values
-        or any(v < 0 for v in values)
-        or (allowed and any(v not in allowed for v in values))
-    ):
+    """Integers in the one list syntax (e.g. ``--levels 2,3`` or ``--levels 1:3``)."""
+    from twoball.ranges import parse_values
+
+    values = parse_values(text, flag, integer=True, valid=valid)
+    if any(v < 0 for v in values) or (allowed and any(v not in allowed for v in values)):
         raise ParameterError(flag, valid, text)
-    return sorted(set(values))
+    return sorted(set(int(v) for v in values))
 
 
 def parse_backends(text: str) -> tuple[str, ...]:
-    """``--backends``: comma-separated names among fem, legendre."""
+    """``--backend``: one of fem, legendre, or both comma-separated."""
     names = tuple(dict.fromkeys(p.strip() for p in str(text).split(",")))
     if not names or any(n not in BACKENDS for n in names):
-        raise ParameterError("--backends", "a comma-separated list of fem, legendre", text)
+        raise ParameterError("--backend", "fem, legendre or fem,legendre", text)
     return names
 
 
@@ -51,31 +51,32 @@ def run(args: argparse.Namespace) -> int:
     from twoball.files import plot
 
     options = mesh_arguments(args)
-    if args.kind == "eigen":
+    levels = None
+    if args.levels is not None:
         levels = parse_list(args.levels, "--levels", "comma-separated levels >= 0, e.g. 1,2")
+    orders = None
+    if args.orders is not None:
         orders = parse_list(args.orders, "--orders", "comma-separated orders 1 or 2", {1, 2})
-        result = plot(
-            "eigen",
-            args.out,
-            levels=levels,
-            orders=orders,
-            max_degree=args.max_degree,
-            dpi=args.dpi,
-            **options,
-        )
+    if args.kind == "eigen":  # no case: every case option given is passed on and refused
+        apply_limits(args)
+        case = case_from_options(args) if case_options_given(args) else None
     else:
-        result = plot(
-            args.kind,
-            args.out,
-            case_from_options(args),
-            backends=parse_backends(args.backends),
-            instants=args.instants,
-            sigma=args.sigma,
-            recontact=args.recontact,
-            t_end=args.t_end,
-            dpi=args.dpi,
-            **options,
-        )
+        case = case_from_options(args)
+    result = plot(
+        args.kind,
+        args.out,
+        case,
+        backends=None if args.backend is None else parse_backends(args.backend),
+        instants=args.instants,
+        levels=levels,
+        orders=orders,
+        max_degree=args.max_degree,
+        sigma=args.sigma,
+        recontact=args.recontact,
+        t_end=args.t_end,
+        dpi=args.dpi,
+        **options,
+    )
     rows = [("file", str(result.file)), ("plot", result.kind), *result.rows]
     if result.reports:
         case = next(iter(result.reports.values())).case
@@ -97,16 +98,18 @@ def register(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("kind", metavar="KIND", help="waterfall, pole or eigen")
     add_case_options(parser)
     add_mesh_options(parser, SPHERE_KINDS, initial=True, files=False)
+    # None when not given: the API fills in the defaults and refuses what the kind does not use
+    parser.set_defaults(sigma=None, recontact=None, initial=None)
     parser.add_argument(
-        "--backends", default="fem,legendre", help="solvers drawn (default fem,legendre)"
+        "--backend", help="solvers drawn: fem, legendre or both (default fem,legendre)"
     )
     parser.add_argument(
         "--instants",
         type=int,
         help=f"curves of the waterfall (default {WATERFALL_INSTANTS})",
     )
-    parser.add_argument("--levels", default="1,2,3", help="eigen: mesh levels (default 1,2,3)")
-    parser.add_argument("--orders", default="1,2", help="eigen: element orders (default 1,2)")
+    parser.add_argument("--levels", help="eigen: mesh levels (default 1,2,3)")
+    parser.add_argument("--orders", help="eigen: element orders (default 1,2)")
     parser.add_argument(
         "--max-degree", type=int, help="eigen: largest degree l (default: half the unknowns)"
     )

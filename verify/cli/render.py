@@ -22,7 +22,7 @@ VALID_RANGES: dict[str, str] = {
     **MESH_RANGES,
     "--time": "a time >= 0 in seconds within the modelled window",
     "--frames": f"an integer in [1, {MAX_FRAMES}]",
-    "--fps": "a number > 0",
+    "--fps": "a number in [0.001, 1000]",
 }
 
 
@@ -104,5 +104,8 @@ def register(parser: argparse.ArgumentParser) -> None:
         metavar="WxH",
         help="image size in pixels (MP4: rounded up to multiples of 16)",
     )
-    parser.add_argument("--fps", type=float, default=20.0, help="frames per second (animations)")
+    parser.add_argument(
+        "--fps", type=float, help="frames per second of a .gif or .mp4 (default 20)"
+    )
+    parser.set_defaults(initial=None)  # the API's default; refused with --backend legendre
     parser.set_defaults(run=run)

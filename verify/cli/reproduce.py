@@ -24,7 +24,7 @@ VALID_RANGES = dict(PARALLEL_RANGES)
 def run(args: argparse.Namespace) -> int:
     """Run ``twoball reproduce``."""
     names = parse_only(args.only)
-    workers = check_workers(args.workers)
+    workers = check_workers(args.workers) if not args.scheduler else args.workers
     check_output(args.out)  # fail before any work
     err = console_err()
     with Runner(workers, args.scheduler) as runner:

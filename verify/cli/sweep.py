@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import argparse
 
+from twoball.modal.errors import ParameterError
 from twoball.verify.cli.case_options import add_case_options, case_from_options
 from twoball.verify.cli.console import (
     Table,
@@ -74,7 +75,13 @@ def run(args: argparse.Namespace) -> int:
     from twoball.solvers import sweep
 
     grid = make_grid(args.param, args.values)
-    workers = check_workers(args.workers)
+    workers = check_workers(args.workers) if not args.scheduler else args.workers
+    for name in grid.parameters:  # the swept parameter's base value would be replaced
+        field = SWEEP_PARAMETERS[name]
+        if getattr(args, field, None) is not None:
+            raise ParameterError(
+                field, f"left out when --param {name} is swept", getattr(args, field)
+            )
     plot = None if args.plot is None else check_plot_path(args.plot)
     base = case_from_options(args)
     values = dict(zip(grid.parameters, grid.values, strict=True))
@@ -161,8 +168,8 @@ def register(parser: argparse.ArgumentParser) -> None:
         "--values",
         required=True,
         action="append",
-        metavar="START:STOP:COUNT",
-        help="values of the matching --param (same order)",
+        metavar="LIST",
+        help="values of the matching --param (same order): START:STOP:COUNT or v1,v2,...",
     )
     parser.add_argument(
         "--plot",

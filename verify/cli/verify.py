@@ -53,7 +53,7 @@ def print_result(result: VerifyResult, out: Path) -> None:
         )
     out_console.print(runs)
     settings = result.settings
-    out_console.print(f"phi_a = {settings['phi_a']:.6f} rad ({settings['phi_a_source']})")
+    out_console.print(f"phi_a = {settings['phi_a_rad']:.6f} rad ({settings['phi_a_source']})")
     checks = Table(title="checks")
     for name in ("check", "value", "tolerance", "result"):
         checks.add_column(name, justify="left" if name == "check" else "right")

@@ -20,7 +20,6 @@ returns SI (m, m/s, m/s^2, s) unless its docstring says otherwise.
 
 from __future__ import annotations
 
-import math
 from collections.abc import Sequence
 from dataclasses import dataclass, field
 from typing import Literal
@@ -322,18 +321,16 @@ def check_frames(frames: object, flag: str = "--frames") -> int:
 
 
 def parse_times(text: str, flag: str = "--times") -> tuple[float, ...]:
-    """Times [s] from a comma-separated list such as ``0,0.005,0.01``.
+    """Times [s] in the one list syntax: ``0,0.005,0.01`` or ``0:0.01:3``.
 
     Each must be a finite number >= 0; they are returned sorted, without duplicates.
     """
-    valid = "comma-separated times >= 0 in seconds, e.g. 0,0.005,0.01"
-    parts = [p.strip() for p in str(text).split(",")]
-    try:
-        values = [float(p) for p in parts]
-    except ValueError:
-        raise ParameterError(flag, valid, text) from None
-    if not values or any(not math.isfinite(v) or v < 0 for v in values):
-        raise ParameterError(flag, valid, text)
+    from twoball.ranges import SYNTAX, parse_values
+
+    valid = "times >= 0 in seconds, e.g. 0,0.005,0.01 or 0:0.01:11"
+    values = parse_values(text, flag, valid=valid)
+    if any(v < 0 for v in values):
+        raise ParameterError(flag, f"{SYNTAX} ({valid})", text)
     return tuple(sorted(set(values)))
 
 

@@ -355,7 +355,7 @@ def verify_markdown(result: VerifyResult) -> str:
                     f"{s['radius_m']:g}",
                     f"{s['wave_speed_1_s']:g}",
                     f"{s['v0_m_s']:g}",
-                    f"{s['phi_a']:.6f}",
+                    f"{s['phi_a_rad']:.6f}",
                     f"{s['damping']:g}",
                     str(s["modes"]),
                     s["sigma"],

@@ -24,7 +24,8 @@ from .reference import LegendreRun
 from .result import Progress, si
 
 MESH_LABELS = {"sphere": "icosphere", "axisym": "axisym"}
-LEVEL_LIMITS: dict[str, tuple[int, int]] = {"sphere": (0, 6), "axisym": (0, 8)}
+# level 0 of the icosphere resolves no complete degree l >= 1 (nothing to compare)
+LEVEL_LIMITS: dict[str, tuple[int, int]] = {"sphere": (1, 6), "axisym": (0, 8)}
 # Levels (A:B) each finite-element study runs by default, per (study, mesh, order).
 DEFAULT_LEVELS: dict[tuple[str, str, int], str] = {
     ("h", "sphere", 1): "2:5",

@@ -41,24 +41,18 @@ MODES_BANDS: dict[str, OrderBand | None] = {
 
 
 def parse_modes(text: str) -> tuple[int, ...]:
-    """``"30,60,120"`` or ``"30:480"`` (doubling) -> increasing mode counts."""
-    valid = "N1,N2,... or NMIN:NMAX (doubling), integers >= 1, increasing, at least 3"
-    try:
-        if ":" in text:
-            low, high = (int(p) for p in text.split(":"))
-            values: list[int] = []
-            n = low
-            while n <= high and low >= 1:
-                values.append(n)
-                n *= 2
-        else:
-            values = [int(p) for p in text.split(",")]
-    except ValueError:
-        raise ParameterError("--modes-list", valid, text) from None
+    """``"30,60,120,240"`` (or a range, :mod:`twoball.ranges`) -> increasing mode counts.
+
+    At least 3 and at most 16 counts, each >= 1, strictly increasing.
+    """
+    from twoball.ranges import parse_values
+
+    valid = "increasing integers >= 1, 3 to 16 of them, e.g. 30,60,120,240"
+    values = parse_values(text, "modes_list", integer=True, valid=valid)
     increasing = all(b > a for a, b in zip(values[:-1], values[1:], strict=True))
-    if len(values) < 3 or min(values) < 1 or not increasing:
-        raise ParameterError("--modes-list", valid, text)
-    return tuple(values)
+    if not 3 <= len(values) <= 16 or min(values) < 1 or not increasing:
+        raise ParameterError("modes_list", valid, text)
+    return tuple(int(v) for v in values)
 
 
 def run_modes_study(

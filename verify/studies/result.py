@@ -85,7 +85,7 @@ def case_settings(case: Case, sigma: str, recontact: str, t_end: float) -> dict[
         "radius_m": case.radius,
         "wave_speed_1_s": case.wave_speed,
         "v0_m_s": case.v0,
-        "phi_a": case.phi_a,
+        "phi_a_rad": case.phi_a,
         "phi_a_source": case.phi_a_source,
         "damping": case.damping,
         "modes": case.modes,

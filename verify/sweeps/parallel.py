@@ -34,6 +34,7 @@ import sys
 from collections.abc import Callable, Sequence
 from concurrent.futures import ProcessPoolExecutor, as_completed
 from dataclasses import dataclass
+from numbers import Integral
 from typing import Any
 
 from twoball.modal.errors import ParameterError
@@ -96,7 +97,7 @@ def check_workers(workers: int | None) -> int:
     """``workers`` validated (default: all cores); ParameterError names ``--workers``."""
     if workers is None:
         return default_workers()
-    if isinstance(workers, bool) or int(workers) != workers or workers < 1:
+    if isinstance(workers, bool) or not isinstance(workers, Integral) or workers < 1:
         raise ParameterError("--workers", VALID_RANGES["--workers"], workers)
     return int(workers)
 
@@ -143,12 +144,16 @@ class Runner:
     ----------
     workers : int, optional
         Local worker processes (default: all cores); 1 means strictly serial.
-        Ignored when ``scheduler`` is given (the cluster decides).
+        Refused together with ``scheduler`` (the cluster decides).
     scheduler : str, optional
         Address of a running ``dask.distributed`` scheduler.
     """
 
     def __init__(self, workers: int | None = None, scheduler: str | None = None) -> None:
+        if scheduler and workers is not None:
+            raise ParameterError(
+                "--workers", "left out with --scheduler (the cluster decides)", workers
+            )
         self.workers = check_workers(workers)
         self.scheduler = scheduler
         self._pool: ProcessPoolExecutor | None = None

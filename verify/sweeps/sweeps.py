@@ -41,24 +41,22 @@ PARAMETER_LABELS: dict[str, str] = {
 
 
 def parse_range(text: str, name: str = "--values") -> np.ndarray:
-    """``START:STOP:COUNT`` -> ``COUNT`` evenly spaced values from START to STOP inclusive."""
-    parts = text.split(":")
-    valid = "START:STOP:COUNT (numbers, COUNT an integer >= 1)"
-    if len(parts) != 3:
-        raise ParameterError(name, valid, text)
-    try:
-        start, stop = float(parts[0]), float(parts[1])
-        count = int(parts[2])
-    except ValueError:
-        raise ParameterError(name, valid, text) from None
-    if count < 1 or not (np.isfinite(start) and np.isfinite(stop)):
-        raise ParameterError(name, valid, text)
-    if count == 1 and start != stop:
-        raise ParameterError(name, valid + " (COUNT 1 needs START = STOP)", text)
-    from twoball.budget import check_count
+    """The values of ``text`` in the one list syntax (:mod:`twoball.ranges`).
 
-    check_count(f"{name} {text}", count)  # before numpy allocates COUNT values
-    return np.linspace(start, stop, count)
+    ``START:STOP:COUNT`` gives ``COUNT`` evenly spaced values from START to STOP
+    inclusive; ``v1,v2,...`` the values as written.
+    """
+    from twoball.budget import check_count
+    from twoball.ranges import parse_values
+
+    if isinstance(text, str) and text.count(":") == 2:  # the budget before building the list
+        try:
+            count = int(float(text.split(":")[2]))
+        except ValueError:
+            count = 0
+        if count > 1:
+            check_count(f"{name} {text}", count)
+    return np.asarray(parse_values(text, name), dtype=float)
 
 
 def _field_value(field: str, value: float) -> float | int:
@@ -188,7 +186,7 @@ class SweepPoint:
                 "t_liftoff_s": None,
                 "v_liftoff_m_s": None,
                 "ratio": None,
-                "phi_a": c.phi_a,
+                "phi_a_rad": c.phi_a,
                 "phi_a_source": c.phi_a_source,
                 "radius_m": c.radius,
                 "wave_speed_1_s": c.wave_speed,

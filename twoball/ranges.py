@@ -1,0 +1,142 @@
+"""One syntax for every list of values: ``v1,v2,...`` or ``START:STOP[:COUNT]``.
+
+Every option that takes several values (sweep values, refinement levels, mode
+counts, export times, plot levels and orders) reads them here, so one rule holds
+everywhere:
+
+* ``1,2,3`` -- the values as written (negative numbers allowed: ``-1,0,1``);
+* ``START:STOP:COUNT`` -- ``COUNT`` evenly spaced values from START to STOP,
+  both ends included (``0:0.5:6``; ``-1:1:3`` gives ``-1, 0, 1``);
+* ``START:STOP`` -- for whole-number options only, every integer from START to
+  STOP (``2:5`` gives ``2, 3, 4, 5``).
+
+On the command line a value that starts with ``-`` is taken as the option's
+value, not as a new option (``--values -1:1:3`` works; see
+:func:`join_negative_values`).
+"""
+
+from __future__ import annotations
+
+import math
+import re
+from collections.abc import Sequence
+
+from twoball.modal.errors import ParameterError
+
+__all__ = ["SYNTAX", "join_negative_values", "parse_values"]
+
+SYNTAX = "v1,v2,... or START:STOP:COUNT"
+INTEGER_SYNTAX = "v1,v2,... or START:STOP[:COUNT]"
+MAX_VALUES = 1_000_000  # a list longer than this is a typo, not a study
+
+_NEGATIVE_VALUE = re.compile(r"-(\d|\.\d|inf|nan)", re.IGNORECASE)
+
+
+def parse_values(
+    text: str | Sequence[float],
+    name: str,
+    *,
+    integer: bool = False,
+    valid: str = "",
+) -> tuple[float, ...] | tuple[int, ...]:
+    """The values of ``text`` in the one list syntax (see the module docstring).
+
+    Parameters
+    ----------
+    text : str or sequence of numbers
+        ``"v1,v2,..."``, ``"START:STOP:COUNT"`` or (``integer``) ``"START:STOP"``;
+        a sequence of numbers is taken as the list itself (Python API).
+    name : str
+        The parameter's name, for the error message.
+    integer : bool
+        Whole numbers only (levels, orders, mode counts).
+    valid : str
+        What else the values must satisfy, appended to the syntax in errors
+        (for example ``"levels in [0, 6]"``).  The caller checks it.
+
+    Returns
+    -------
+    tuple
+        The values in the order written (a range ascends or descends as given);
+        ``int`` when ``integer``.
+
+    Raises
+    ------
+    ParameterError
+        Not in the syntax, not finite, not whole when ``integer``, empty, or
+        more than a million values.
+    """
+    syntax = INTEGER_SYNTAX if integer else SYNTAX
+    expected = syntax + ("" if not valid else f" ({valid})")
+    if not isinstance(text, str):
+        try:
+            values = [float(v) for v in text]
+        except (TypeError, ValueError):
+            raise ParameterError(name, expected, text) from None
+        return _finish(values, name, expected, integer, text)
+    parts = [p.strip() for p in text.split(":")]
+    try:
+        if len(parts) == 1:
+            values = [float(p) for p in text.split(",")]
+        elif len(parts) in (2, 3) and "," not in text:
+            start, stop = float(parts[0]), float(parts[1])
+            if len(parts) == 3:
+                count = _count(parts[2])
+            elif integer and start == round(start) and stop == round(stop):
+                count = int(abs(stop - start)) + 1 if math.isfinite(stop - start) else 0
+            else:
+                raise ValueError
+            if not (math.isfinite(start) and math.isfinite(stop)) or count < 1:
+                raise ValueError
+            if count > MAX_VALUES:
+                raise ParameterError(name, f"{expected}, at most {MAX_VALUES} values", text)
+            if count == 1 and start != stop:
+                raise ParameterError(name, f"{expected} (COUNT 1 needs START = STOP)", text)
+            step = 0.0 if count == 1 else (stop - start) / (count - 1)
+            values = [start + k * step for k in range(count - 1)] + [stop]
+        else:
+            raise ValueError
+    except ValueError:
+        raise ParameterError(name, expected, text) from None
+    return _finish(values, name, expected, integer, text)
+
+
+def _count(text: str) -> int:
+    count = float(text)
+    if count != round(count):
+        raise ValueError
+    return int(count)
+
+
+def _finish(
+    values: list[float], name: str, expected: str, integer: bool, text: object
+) -> tuple[float, ...] | tuple[int, ...]:
+    if not values or len(values) > MAX_VALUES or not all(math.isfinite(v) for v in values):
+        raise ParameterError(name, expected, text)
+    if integer:
+        if any(v != round(v) for v in values):
+            raise ParameterError(name, expected + ", whole numbers", text)
+        return tuple(int(round(v)) for v in values)
+    return tuple(values)
+
+
+def join_negative_values(argv: Sequence[str], value_options: set[str]) -> list[str]:
+    """``["--values", "-1:1:3"]`` -> ``["--values=-1:1:3"]`` for options that take a value.
+
+    argparse reads a word that starts with ``-`` as an option unless it is a
+    plain negative number, so ranges and lists starting below zero (and values
+    such as ``-1e-3``) are joined to their option here, before parsing.
+    """
+    out: list[str] = []
+    words = list(argv)
+    k = 0
+    while k < len(words):
+        word = words[k]
+        nxt = words[k + 1] if k + 1 < len(words) else None
+        if word in value_options and nxt is not None and _NEGATIVE_VALUE.match(nxt):
+            out.append(f"{word}={nxt}")
+            k += 2
+            continue
+        out.append(word)
+        k += 1
+    return out
