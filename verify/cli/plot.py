@@ -25,6 +25,7 @@ VALID_RANGES: dict[str, str] = {
     **MESH_RANGES,
     "--instants": "an integer >= 2",
     "--max-degree": "an integer >= 1",
+    "--dpi": f"a number of dots per inch in [{DPI_RANGE[0]}, {DPI_RANGE[1]}]",
 }
 
 
