@@ -16,8 +16,11 @@ import matplotlib.pyplot as plt
 import numpy as np
 from twoball.modal.filters import SpectralFilter
 from twoball.modal.legendre import legendre_series
+from twoball.verify.output.figures.style import STYLE
 
 import twoball
+
+plt.rcParams.update(STYLE)  # the style of the package's own figures
 
 case = twoball.Case.preset("basketball")
 print(f"R = {case.radius} m, c = {case.wave_speed} 1/s, |v0| = {case.v0} m/s")
@@ -44,14 +47,14 @@ t_l_ms = report.t_liftoff_s * 1e3
 fig, (top, bottom) = plt.subplots(2, 1, sharex=True, figsize=(7, 5.5), layout="constrained")
 top.plot(ms, u_t * scale.velocity)
 top.plot(t_l_ms, report.v_liftoff_m_s, "o", color="C3", label="lift-off")
-top.set_ylabel("pole velocity u_t [m/s]")
+top.set_ylabel("pole velocity $u_t$ [m/s]")
 top.legend()
 bottom.plot(ms, u_tt * scale.acceleration)
-bottom.axhline(-case.g, color="k", linestyle=":", label="-g (criterion (i))")
+bottom.axhline(-case.g, color="k", linestyle=":", label="$-g$ (criterion (i))")
 bottom.axvline(t_l_ms, color="C3", linestyle="--")
 bottom.set_ylim(-40 * case.g, 40 * case.g)
-bottom.set_ylabel("pole acceleration u_tt [m/s²]")
-bottom.set_xlabel("time after maximal compression [ms]")
+bottom.set_ylabel("pole acceleration $u_{tt}$ [m/s$^2$]")
+bottom.set_xlabel("time $t$ after maximal compression [ms]")
 bottom.legend()
 plt.show()
 
@@ -67,6 +70,6 @@ for v0 in speeds:
 
 fig, ax = plt.subplots(figsize=(6, 3.5), layout="constrained")
 ax.plot(speeds, ratios, "o-")
-ax.set_xlabel("impact speed |v0| [m/s]")
-ax.set_ylabel("rebound ratio v_l / |v0|")
+ax.set_xlabel("impact speed $|v_0|$ [m/s]")
+ax.set_ylabel("rebound ratio $v_l/|v_0|$ [–]")
 plt.show()

@@ -30,9 +30,13 @@ print(f"relative difference of t_l: {abs(fem.t_liftoff_s / legendre.t_liftoff_s 
 # %%
 # Pole displacement, velocity and acceleration of both backends; the dots and
 # dashed lines mark each backend's lift-off, the dotted line in the velocity
-# panel is the body's free flight after it.  The figure functions of
-# :mod:`twoball.verify.output.figures` return a pyplot-free
-# :class:`matplotlib.figure.Figure` (``save_figure`` writes it as PNG);
-# ``plt.figure`` adopts it so that ``plt.show`` displays it.
+# panel is the body's free flight after it.  Under each quantity a smaller
+# panel shows the difference finite elements minus closed form, which the
+# upper panels cannot show: the curves lie on top of each other.  The figure
+# functions of :mod:`twoball.verify.output.figures` return a pyplot-free
+# :class:`matplotlib.figure.Figure` in the one style of the package
+# (``save_figure`` writes it as PDF, SVG, PNG, ... by the file suffix, as
+# ``twoball plot pole --out pole.pdf`` does); ``plt.figure`` adopts it so that
+# ``plt.show`` displays it.
 plt.figure(pole_figure(model))
 plt.show()

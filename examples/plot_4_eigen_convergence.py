@@ -15,6 +15,9 @@ import math
 
 import matplotlib.pyplot as plt
 from twoball.verify.output.figures.eigen import eigen_table
+from twoball.verify.output.figures.style import STYLE
+
+plt.rcParams.update(STYLE)  # the style of the package's own figures
 
 DEGREE = 4  # the cluster l = 4, exact eigenvalue 20
 levels = {1: (1, 2, 3, 4), 2: (1, 2, 3)}
@@ -35,9 +38,9 @@ fig, ax = plt.subplots(figsize=(6, 4), layout="constrained")
 for order, errs in errors.items():
     lv = levels[order]
     ax.semilogy(lv, errs, "o-", label=f"P{order}")
-    ax.semilogy(lv, [errs[0] * 2.0 ** (-2 * order * (k - lv[0])) for k in lv], ":", color="gray")
-ax.set_xlabel("icosphere level (h halves per level)")
-ax.set_ylabel(f"relative error of λ, l = {DEGREE}")
-ax.set_title("dotted: slopes 2 (P1) and 4 (P2)")
+    slope = [errs[0] * 2.0 ** (-2 * order * (k - lv[0])) for k in lv]
+    ax.semilogy(lv, slope, ":", color="gray", label=f"slope {2 * order} (theory, P{order})")
+ax.set_xlabel("icosphere level ($h$ halves per level) [–]")
+ax.set_ylabel(rf"relative error of $\lambda$, $\ell$ = {DEGREE} [–]")
 ax.legend()
 plt.show()

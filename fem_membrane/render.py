@@ -36,6 +36,8 @@ MACRO_BLOCK = 16  # MP4 (H.264, yuv420p) frame sizes must be multiples of this
 AUTO_WARP_SHARE = 0.15  # auto warp: the largest displacement drawn at 15 % of R
 BODY_SHARE = 0.2  # radius of the drawn upper body, as a share of R
 MAX_SIZE = 4096  # largest accepted image side [px]
+COLOUR_MAP = "coolwarm"  # of the displacement, drawn on the ball and in the colour bar
+FOOTER_CHARS = 30  # longest footer line at the default size [characters]
 
 
 @dataclass(frozen=True)
@@ -232,25 +234,27 @@ class _Renderer:
         self.surface.point_data["u [mm]"] = scene.u[0] * 1e3
         self.plotter = pv.Plotter(off_screen=True, window_size=list(size))
         scale = min(size[0] / DEFAULT_SIZE[0], size[1] / DEFAULT_SIZE[1])  # text follows size
-        small, large = max(6, round(8 * scale)), max(8, round(11 * scale))
+        small, large = max(9, round(10 * scale)), max(10, round(12 * scale))
         self.plotter.set_background("white")
         clim = color_limits(scene.u * 1e3)
         self.actor = self.plotter.add_mesh(
             self.surface,
             scalars="u [mm]",
-            cmap="coolwarm",
+            cmap=COLOUR_MAP,
+            n_colors=256,
             clim=clim,
             smooth_shading=True,
             copy_mesh=False,
             scalar_bar_args={
-                "title": "u [mm]",
+                "title": "u [mm]\n",  # the newline lifts the title clear of the top label
                 "color": "black",
                 "vertical": True,
-                "position_x": 0.86,
-                "position_y": 0.2,
-                "height": 0.6,
+                "position_x": 0.84,
+                "position_y": 0.22,
+                "height": 0.56,
                 "width": 0.08,
                 "fmt": "%.1f",
+                "n_labels": 3,
                 "title_font_size": max(10, round(16 * scale)),
                 "label_font_size": max(9, round(14 * scale)),
                 "unconstrained_font_size": True,
@@ -259,7 +263,9 @@ class _Renderer:
         self.drawn = self.actor.mapper.dataset  # what the mapper draws (normals added)
         body = pv.Sphere(radius=self.body_radius, theta_resolution=32, phi_resolution=32)
         self.body = self.plotter.add_mesh(body, color="gold", smooth_shading=True)
-        self.plotter.add_text(scene.label, position="lower_left", font_size=small, color="black")
+        # short lines: a corner annotation shrinks its font until its longest line fits
+        footer = wrap_footer(scene.label, max(FOOTER_CHARS, round(FOOTER_CHARS * scale)))
+        self.plotter.add_text(footer, position="lower_left", font_size=small, color="black")
         self.clock = self.plotter.add_text(
             "", position="upper_left", font_size=large, color="black"
         )
@@ -338,6 +344,24 @@ def render_frames(
             renderer.close()
 
 
+def wrap_footer(text: str, width: int = FOOTER_CHARS) -> str:
+    """``text`` broken after ``:`` and ``,`` into lines of at most ``width`` characters.
+
+    >>> wrap_footer("finite elements: R = 0.12 m, c = 320 1/s, D = 0.13", 24)
+    'finite elements:\nR = 0.12 m, c = 320 1/s,\nD = 0.13'
+    """
+    import re
+
+    pieces = re.findall(r"[^,:]+[,:]?", text)
+    lines: list[str] = []
+    for piece in (p.strip() for p in pieces):
+        if lines and not lines[-1].endswith(":") and len(lines[-1]) + 1 + len(piece) <= width:
+            lines[-1] += " " + piece
+        else:
+            lines.append(piece)
+    return "\n".join(lines)
+
+
 def _write_png(target: Path, images: Iterator[np.ndarray]) -> int:
     import imageio.v3 as iio
 
@@ -347,13 +371,11 @@ def _write_png(target: Path, images: Iterator[np.ndarray]) -> int:
 
 
 def _write_gif(target: Path, images: Iterator[np.ndarray], fps: float) -> int:
-    import imageio.v3 as iio
+    from .palette import gif_bytes
 
-    frames = list(images)
-    # encoded in memory, then written by Python: a full disk is one OSError (imageio's
-    # writer would retry the failed flush when it is garbage-collected)
-    data = iio.imwrite("<bytes>", np.stack(frames), extension=".gif", duration=1000.0 / fps, loop=0)
-    target.write_bytes(data)
+    frames = np.stack(list(images))
+    # encoded in memory, then written by Python: a full disk is one OSError
+    target.write_bytes(gif_bytes(frames, fps, COLOUR_MAP))
     return len(frames)
 
 

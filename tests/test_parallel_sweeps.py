@@ -182,7 +182,7 @@ def test_grid_cli_json_and_heat_map(capsys, tmp_path):
         (["--param", "v0", "--values", "1:2:3", "--workers", "0"], "--workers"),
         (["--param", "v0", "--values", "1:2:3", "--workers", "two"], "--workers"),
         (["--param", "v0", "--values", "1:2:3", "--plot", "/nonexistent/dir/a.png"], "--plot"),
-        (["--param", "v0", "--values", "1:2:3", "--plot", "/tmp/a.pdf"], "--plot"),
+        (["--param", "v0", "--values", "1:2:3", "--plot", "/tmp/a.xyz"], "--plot"),
     ],
 )
 def test_bad_sweep_input_is_one_line_exit_2(capsys, argv, flag):

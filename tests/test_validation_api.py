@@ -138,6 +138,7 @@ CALLS: dict[str, dict[str, Callable[[Any, Path], Any]]] = {
         "plot": lambda v, tmp: twoball.plot("waterfall", tmp / "p.png", CASE, level=1, instants=v)
     },
     "max_degree": {"plot": lambda v, tmp: twoball.plot("eigen", tmp / "p.png", max_degree=v)},
+    "dpi": {"plot": lambda v, tmp: twoball.plot("eigen", tmp / "p.png", dpi=v)},
 }
 
 

@@ -85,6 +85,7 @@ RANGES: dict[str, Range] = {
     "--fps": Range(1e-3, 1e3),
     "--instants": Range(2, 2000, integer=True),
     "--max-degree": Range(1, 10**4, integer=True),
+    "--dpi": Range(50, 1200),
 }
 #: Values that a range accepts but the model refuses anyway, per option.
 ALSO_BAD: dict[str, tuple[str, ...]] = {

@@ -59,6 +59,7 @@ FLAGS: dict[str, str] = {
     "fast": "--fast",
     # files and pictures
     "out": "--out",
+    "dpi": "--dpi",
     "format": "--format",
     "frames": "--frames",
     "times": "--times",

@@ -35,7 +35,7 @@ COMMANDS: dict[str, str] = {
     "reproduce": "recompute the paper's figures and numbers beside ours (PNG + reproduction.md)",
     "export": "write u, u_t, u_tt of both backends on the sphere mesh (XDMF, PVD or VTU)",
     "render": "picture (PNG) or animation (GIF, MP4) of the deformed ball and the upper body",
-    "plot": "PNG plots: waterfall of u(phi) (Fig. 6), pole motion, FE eigenvalue errors",
+    "plot": "figures (PDF, SVG, PNG, ...): waterfall of u(phi), pole motion, FE eigenvalue errors",
     "converge": "refinement studies: observed orders, Richardson extrapolation, GCI",
 }
 

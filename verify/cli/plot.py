@@ -1,4 +1,4 @@
-"""``twoball plot waterfall|pole|eigen``: PNG figures of the solution and of the FE spectrum.
+"""``twoball plot waterfall|pole|eigen``: figures of the solution and of the FE spectrum.
 
 A thin layer over :func:`twoball.plot`.
 """
@@ -18,12 +18,14 @@ from twoball.verify.cli.console import console, key_value_table, print_notes, pr
 from twoball.verify.cli.mesh_options import SPHERE_KINDS, add_mesh_options, mesh_arguments
 from twoball.verify.cli.mesh_options import VALID_RANGES as MESH_RANGES
 from twoball.verify.output.fields import BACKENDS
+from twoball.verify.output.figures import DPI, DPI_RANGE
 from twoball.verify.output.figures.waterfall import WATERFALL_INSTANTS
 
 VALID_RANGES: dict[str, str] = {
     **MESH_RANGES,
     "--instants": "an integer >= 2",
     "--max-degree": "an integer >= 1",
+    "--dpi": f"a number of dots per inch in [{DPI_RANGE[0]}, {DPI_RANGE[1]}]",
 }
 
 
@@ -78,6 +80,7 @@ def run(args: argparse.Namespace) -> int:
             recontact=args.recontact,
             t_end=args.t_end,
             progress=progress,
+            dpi=args.dpi,
             **options,
         )
     rows = [("file", str(result.file)), ("plot", result.kind), *result.rows]
@@ -94,8 +97,9 @@ def register(parser: argparse.ArgumentParser) -> None:
     """The options of ``twoball plot``."""
     parser.description = (
         "waterfall: u(phi) at 24 instants, closed form (lines) and FE nodes (dots); "
-        "pole: u, u_t, u_tt of the pole against time with lift-off; eigen: FE eigenvalue "
-        "errors against l(l+1) per level and order."
+        "pole: u, u_t, u_tt of the pole against time with lift-off (and the difference "
+        "finite elements - closed form); eigen: FE eigenvalue errors against l(l+1) per "
+        "level and order.  The suffix of --out chooses the format (.pdf, .svg, .eps, .png, ...)."
     )
     parser.add_argument("kind", metavar="KIND", help="waterfall, pole or eigen")
     add_case_options(parser)
@@ -115,5 +119,16 @@ def register(parser: argparse.ArgumentParser) -> None:
     parser.add_argument(
         "--max-degree", type=int, help="eigen: largest degree l (default: half the unknowns)"
     )
-    parser.add_argument("--out", required=True, metavar="FILE.png", help="output PNG")
+    parser.add_argument(
+        "--out",
+        required=True,
+        metavar="FILE",
+        help="output figure; the suffix chooses the format: .pdf, .svg, .eps, .png, ...",
+    )
+    parser.add_argument(
+        "--dpi",
+        type=float,
+        help=f"resolution of raster formats (.png, ...) in dots per inch, "
+        f"{DPI_RANGE[0]} to {DPI_RANGE[1]} (default {DPI})",
+    )
     parser.set_defaults(run=run)

@@ -158,9 +158,9 @@ def register(parser: argparse.ArgumentParser) -> None:
     )
     parser.add_argument(
         "--plot",
-        metavar="FILE.png",
-        help="also write a PNG: v_l/|v0| and t_l against the parameter (1-D) "
-        "or as two heat maps (2-D)",
+        metavar="FILE",
+        help="also write a figure (.png, .pdf, .svg, ... by the suffix): v_l/|v0| and t_l "
+        "against the parameter (1-D) or as two heat maps (2-D)",
     )
     run_group = parser.add_argument_group("execution")
     run_group.add_argument(

@@ -335,28 +335,26 @@ def _ignore(done: int) -> None:
     return None
 
 
-def new_figure(*args: Any, **kwargs: Any) -> tuple[Any, Any]:
-    """``plt.subplots`` on the Agg backend, constrained layout."""
-    import matplotlib
+def new_figure(*args: Any, figsize: tuple[float, float], **kwargs: Any) -> tuple[Any, Any]:
+    """A constrained-layout figure of ``figsize`` inches and its ``subplots(*args, **kwargs)``.
 
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
+    No pyplot: call it inside a function decorated with
+    :func:`~twoball.verify.output.figures.style.styled` so that the one figure
+    style applies.
+    """
+    from twoball.verify.output.figures import new_figure as blank
 
-    kwargs.setdefault("layout", "constrained")
-    return plt.subplots(*args, **kwargs)
+    figure = blank(*figsize)
+    return figure, figure.subplots(*args, **kwargs)
 
 
 def save(ctx: Context, figure: Any, name: str) -> str:
-    """Write ``figure`` as ``name`` (PNG) into the output directory and close it.
+    """Write ``figure`` as ``name`` (PNG) into the output directory.
 
     Through :func:`twoball.verify.output.figures.save_figure`, the one way
-    twoball saves a figure.
+    twoball saves a figure, at the resolution of the reports.
     """
-    import matplotlib.pyplot as plt
-    from twoball.verify.output.figures import save_figure
+    from twoball.verify.output.figures import REPORT_DPI, save_figure
 
-    try:
-        save_figure(figure, ctx.path(name), dpi=110)
-    finally:
-        plt.close(figure)
+    save_figure(figure, ctx.path(name), dpi=REPORT_DPI)
     return name

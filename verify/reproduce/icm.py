@@ -6,9 +6,12 @@ available.  Velocities are ratios ``v / |v0|`` (see :mod:`twoball.modal.icm` for
 
 from __future__ import annotations
 
+from typing import TYPE_CHECKING
+
 import numpy as np
 from twoball.modal import icm
 from twoball.modal.parameters import STANDARD_GRAVITY, preset, wave_speed_from_pressure
+from twoball.verify.output.figures.style import label, styled
 from twoball.verify.reproduce.common import (
     Comparison,
     Context,
@@ -20,6 +23,10 @@ from twoball.verify.reproduce.common import (
 )
 
 #: Radius of the lower ball (the basketball, Table 2) [m]: fall height H = x2 - r2.
+if TYPE_CHECKING:
+    from matplotlib.figure import Figure
+
+
 BASKETBALL_RADIUS = 0.12
 
 
@@ -143,38 +150,52 @@ def _curves(mu: float, e2: float, e12: float, x2: float, dx: np.ndarray):
     return np.array([r.v1_ratio for r in res]), np.array([r.v2_ratio for r in res])
 
 
+GAP = label(r"gap $\Delta x$", "mm")
+RATIO = label(r"$v\,/\,|v_0|$", None)
+
+
+@styled
+def fig3_figure(dx: np.ndarray, v1: np.ndarray, v2: np.ndarray) -> Figure:
+    """ICM ratios against the gap for the basketball and the tennis ball (Fig. 3)."""
+    fig, ax = new_figure(figsize=(6.4, 4.4))
+    ax.plot(dx * 1e3, v1, label=r"$v_1/|v_0|$ (tennis ball, upper)")
+    ax.plot(dx * 1e3, v2, label=r"$v_2/|v_0|$ (basketball, lower)")
+    ax.axvline(120.0, color="red", lw=0.8, label=r"$\Delta x$ = 120 mm")
+    ax.set_xlabel(GAP)
+    ax.set_ylabel(RATIO)
+    ax.set_title(r"Fig. 3 theory: $\mu$ = 0.1007, $e_2$ = 0.80, $e_{12}$ = 0.89, $x_2$ = 1 m")
+    ax.legend()
+    return fig
+
+
+@styled
+def fig8_figure(dx: np.ndarray, curves: dict) -> Figure:
+    """ICM ratios against the gap for the light upper balls of Table 1 rows 5, 6 (Fig. 8)."""
+    fig, axes = new_figure(1, 2, figsize=(11.0, 4.2), sharey=True)
+    for ax, (index, (a, b)) in zip(axes, curves.items(), strict=True):
+        row = icm.TABLE1[index - 1]
+        ax.plot(dx * 1e3, a, label=r"$v_1/|v_0|$ (upper)")
+        ax.plot(dx * 1e3, b, label=r"$v_2/|v_0|$ (basketball)")
+        ax.set_title(f"Fig. 8: basketball / {row.upper.lower()}, $\\mu$ = {row.mu:g}")
+        ax.set_xlabel(GAP)
+    axes[0].set_ylabel(RATIO)
+    axes[0].legend()
+    return fig
+
+
 def part_icm(ctx: Context) -> Section:
     """ICM curves ``v1/|v0|`` and ``v2/|v0|`` against the gap (Figs. 3 and 8, theory only)."""
     sec = Section("icm", "Figs. 3 and 8: ICM rebound ratios against the gap")
     dx3 = np.linspace(0.0, 0.150, 151)
     v1, v2 = _curves(0.1007, 0.80, 0.89, 1.0, dx3)
-    fig, ax = new_figure(figsize=(6.4, 4.4))
-    ax.plot(dx3 * 1e3, v1, label="v1/|v0| (tennis ball, upper)")
-    ax.plot(dx3 * 1e3, v2, label="v2/|v0| (basketball, lower)")
-    ax.axvline(120.0, color="red", lw=0.8, label="120 mm")
-    ax.set_xlabel("gap dx [mm]")
-    ax.set_ylabel("v / |v0|")
-    ax.set_title("Fig. 3 theory: mu = 0.1007, e2 = 0.80, e12 = 0.89, x2 = 1 m")
-    ax.grid(True, alpha=0.3)
-    ax.legend()
-    name3 = save(ctx, fig, "fig03_icm_basketball_tennis.png")
-
+    name3 = save(ctx, fig3_figure(dx3, v1, v2), "fig03_icm_basketball_tennis.png")
     dx8 = np.linspace(0.0, 0.250, 251)
     rows = {4: None, 5: None, 6: None}
-    fig, axes = new_figure(1, 2, figsize=(11.0, 4.2), sharey=True)
     curves8 = {}
-    for ax, index in zip(axes, (5, 6), strict=True):
+    for index in (5, 6):
         row = icm.TABLE1[index - 1]
-        a, b = _curves(row.mu, row.e2, row.e12, 0.92, dx8)
-        curves8[index] = (a, b)
-        ax.plot(dx8 * 1e3, a, label="v1/|v0| (upper)")
-        ax.plot(dx8 * 1e3, b, label="v2/|v0| (basketball)")
-        ax.set_title(f"Fig. 8: basketball / {row.upper.lower()}, mu = {row.mu:g}")
-        ax.set_xlabel("gap dx [mm]")
-        ax.grid(True, alpha=0.3)
-    axes[0].set_ylabel("v / |v0|")
-    axes[0].legend()
-    name8 = save(ctx, fig, "fig08_icm_basketball_light.png")
+        curves8[index] = _curves(row.mu, row.e2, row.e12, 0.92, dx8)
+    name8 = save(ctx, fig8_figure(dx8, curves8), "fig08_icm_basketball_light.png")
     sec.figures += [
         (name3, "Fig. 3: ICM (eqs. (2.1), (2.2), (2.5)) for the basketball and tennis ball."),
         (name8, "Fig. 8: ICM for the basketball with the tissue ball and the table-tennis ball."),

@@ -238,21 +238,23 @@ def run_sweep(
 
 
 def plot_sweep(grid: SweepGrid, points: list[SweepPoint], target: str | os.PathLike[str]) -> Path:
-    """Write :func:`~twoball.verify.output.figures.sweep.sweep_figure` as PNG to ``target``.
+    """Write :func:`~twoball.verify.output.figures.sweep.sweep_figure` to ``target``.
 
-    The path was checked before the sweep by :func:`check_plot_path`; the file
-    is replaced whole or not at all (:func:`twoball.staging.staged_file`).
+    The format follows the suffix (``.png``, ``.pdf``, ``.svg``, ...).  The path
+    was checked before the sweep by :func:`check_plot_path`; the file is
+    replaced whole or not at all (:func:`twoball.staging.staged_file`).
     """
-    from twoball.verify.output.figures import save_figure
+    from twoball.verify.output.figures import REPORT_DPI, save_figure
     from twoball.verify.output.figures.sweep import sweep_figure
 
-    return save_figure(sweep_figure(grid, points), target, "--plot", dpi=120)
+    return save_figure(sweep_figure(grid, points), target, "--plot", dpi=REPORT_DPI)
 
 
 def check_plot_path(path: str, flag: str = "--plot") -> Path:
-    """A PNG path (not a folder or link) in an existing writable folder, else ParameterError."""
+    """A figure path (any format matplotlib writes, not a folder or link) in a writable folder."""
+    from twoball.verify.output.figures import figure_format
+
     from twoball.staging import check_file
 
-    if Path(path).suffix.lower() != ".png":
-        raise ParameterError(flag, "a .png file in an existing, writable directory", path)
+    figure_format(path, flag)
     return check_file(path, flag)

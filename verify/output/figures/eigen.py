@@ -10,6 +10,7 @@ from typing import TYPE_CHECKING
 import numpy as np
 from twoball.modal.errors import ParameterError
 from twoball.verify.output.figures import new_figure
+from twoball.verify.output.figures.style import chunks, label, styled
 
 if TYPE_CHECKING:
     from matplotlib.figure import Figure
@@ -66,28 +67,39 @@ def eigen_table(level: int, order: int, max_degree: int | None = None) -> EigenT
     return EigenTable(f"P{order}, level {level} ({n} unknowns)", degrees, errors)
 
 
+@styled
 def eigen_figure(tables: Sequence[EigenTable]) -> Figure:
-    """Relative eigenvalue error against the degree l, one line per discretisation (log scale)."""
-    figure = new_figure(7.0, 4.6)
-    axis = figure.subplots()
-    markers = "osd^v<>ph"
-    for k, table in enumerate(tables):
-        errors = np.where(table.errors > 0, table.errors, np.nan)
-        axis.semilogy(
-            table.degrees[1:],
-            errors[1:],
-            marker=markers[k % len(markers)],
-            markersize=3,
-            linewidth=1.0,
-            label=table.label,
-        )
-    axis.set_xlabel("degree l (eigenvalue l(l+1), multiplicity 2l+1)")
-    axis.set_ylabel("max |λ_h − l(l+1)| / (l(l+1))")
-    axis.grid(True, which="both", alpha=0.3)
-    axis.legend(fontsize=8)
-    axis.set_title(
-        "Finite-element eigenvalues of the unit sphere against l(l+1), eq. (3.11)", fontsize=10
+    """Relative eigenvalue error against the degree l, one line per discretisation (log scale).
+
+    More than :data:`~.style.MAX_CURVES` discretisations are split over panels
+    side by side (sharing the axes).
+    """
+    return _error_panels(
+        [(t.label, t.degrees[1:], t.errors[1:]) for t in tables],
+        r"Finite-element eigenvalues of the unit sphere against $\ell(\ell+1)$, eq. (3.11)",
+        r"degree $\ell$ (eigenvalue $\ell(\ell+1)$, multiplicity $2\ell+1$)",
     )
+
+
+ERROR_LABEL = label(r"$\max\,|\lambda_h - \ell(\ell+1)|\,/\,\ell(\ell+1)$", None)
+
+
+def _error_panels(
+    lines: Sequence[tuple[str, np.ndarray, np.ndarray]], title: str, xlabel: str
+) -> Figure:
+    groups = chunks(lines) or [[]]
+    figure = new_figure(min(6.5 * len(groups), 16.0), 4.6)
+    axes = figure.subplots(1, len(groups), sharey=True, squeeze=False)[0]
+    markers = "osd^v<>ph"
+    for axis, group in zip(axes, groups, strict=True):
+        for k, (name, degrees, errors) in enumerate(group):
+            shown = np.where(errors > 0, errors, np.nan)
+            axis.semilogy(degrees, shown, marker=markers[k % len(markers)], label=name)
+        axis.set_xlabel(label(xlabel, None))
+        if group:
+            axis.legend()
+    axes[0].set_ylabel(ERROR_LABEL)
+    figure.suptitle(title)
     return figure
 
 
@@ -104,17 +116,11 @@ class EigenErrors:
     errors: np.ndarray
 
 
+@styled
 def eigen_errors_figure(tables: Sequence[EigenErrors]) -> Figure:
     """Relative eigenvalue error against the degree l for each discretisation (log scale)."""
-    fig = new_figure(7.0, 4.5)
-    axis = fig.subplots()
-    for table in tables:
-        errors = np.where(table.errors > 0, table.errors, np.nan)
-        axis.semilogy(table.degrees, errors, marker="o", markersize=3, label=table.label)
-    axis.set_xlabel("degree l")
-    axis.set_ylabel("max |lambda_h - l(l+1)| / (l(l+1))")
-    axis.grid(True, which="both", alpha=0.3)
-    if tables:
-        axis.legend(fontsize=8)
-    axis.set_title("Eigenvalue error of the finite elements against l(l+1)")
-    return fig
+    return _error_panels(
+        [(t.label, t.degrees, t.errors) for t in tables],
+        r"Eigenvalue error of the finite elements against $\ell(\ell+1)$",
+        r"degree $\ell$",
+    )

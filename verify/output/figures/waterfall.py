@@ -3,12 +3,13 @@
 from __future__ import annotations
 
 import math
-from typing import TYPE_CHECKING
+from typing import TYPE_CHECKING, Any
 
 import numpy as np
 from twoball.modal.errors import ParameterError
 from twoball.verify.output.fields import BallModel, node_polar_angles
 from twoball.verify.output.figures import LABELS, new_figure
+from twoball.verify.output.figures.style import STACKED, difference_unit, label, styled
 
 if TYPE_CHECKING:
     from matplotlib.figure import Figure
@@ -23,6 +24,7 @@ def waterfall_times(model: BallModel, instants: int = WATERFALL_INSTANTS) -> np.
     return np.linspace(0.0, model.t_end_s, int(instants))
 
 
+@styled
 def waterfall_figure(
     model: BallModel,
     instants: int = WATERFALL_INSTANTS,
@@ -35,7 +37,11 @@ def waterfall_figure(
     its time [ms].  Lines: the closed form, eq. (3.16), on a fine grid of polar
     angles.  Dots: the finite-element nodal values against the polar angle of
     each node (all azimuths; their spread shows the departure from axial
-    symmetry).  SI: u in mm, phi in rad, t in ms.
+    symmetry).  SI: u in mm, phi in rad, t in ms.  With both backends a
+    narrower panel on the right stacks the difference finite elements minus
+    closed form at the nodes, row by row beside its instant.  The axis is a stack of
+    shifted curves that never overlap, tagged :data:`~.style.STACKED` (the one
+    kind of axis allowed more than six curves).
 
     Parameters
     ----------
@@ -50,8 +56,12 @@ def waterfall_figure(
     """
     times = waterfall_times(model, instants)
     scale = model.case.scalings
-    figure = new_figure(7.5, 9.0)
-    axis = figure.subplots()
+    compare = "fem" in model.backends and "legendre" in model.backends
+    figure = new_figure(10.5 if compare else 7.5, 9.0)
+    if compare:
+        axis, side = figure.subplots(1, 2, gridspec_kw={"width_ratios": [3.0, 1.25]})
+    else:
+        axis, side = figure.subplots(), None
     curves: dict[str, tuple[np.ndarray, np.ndarray]] = {}
     if "legendre" in model.backends:
         from twoball.modal.legendre import displacement
@@ -102,21 +112,73 @@ def waterfall_figure(
             va="center",
             fontsize=7,
         )
-    axis.axvline(model.case.phi_a, color="grey", linewidth=0.7, linestyle=":")
+    axis.axvline(
+        model.case.phi_a,
+        color="grey",
+        linewidth=0.7,
+        linestyle=":",
+        label=r"edge of the contact at $t = 0$, $\varphi_a$",
+    )
     axis.set_xlim(0.0, math.pi)
-    axis.set_xticks(np.linspace(0.0, math.pi, 5), ["0", "π/4", "π/2", "3π/4", "π"])
-    axis.set_xlabel("polar angle φ [rad] (0: top, where the upper body rests)")
-    axis.set_ylabel(f"u(t, φ) [mm], curves shifted by {offset_mm:.3g} mm per instant")
+    axis.set_xticks(
+        np.linspace(0.0, math.pi, 5), ["0", r"$\pi/4$", r"$\pi/2$", r"$3\pi/4$", r"$\pi$"]
+    )
+    axis.set_xlabel(label(r"polar angle $\varphi$ (0: top, where the upper body rests)", "rad"))
+    axis.set_ylabel(
+        label(rf"$u(t, \varphi)$ + {offset_mm:.3g} mm per instant (time at the right)", "mm")
+    )
+    axis.set_gid(STACKED)
     axis.set_ylim(_waterfall_limits(curves, offset_mm, len(times)))
-    axis.legend(loc="upper left", fontsize=8, markerscale=5)
+    axis.legend(loc="upper left", markerscale=5)
     case = model.case
     axis.set_title(
-        f"Radial displacement at {len(times)} instants (cf. Fig. 6): φa = {case.phi_a:.3g}, "
-        f"R = {case.radius:g} m, c = {case.wave_speed:g} 1/s, D = {case.damping:g}",
-        fontsize=9,
+        f"Radial displacement at {len(times)} instants (cf. Fig. 6): "
+        rf"$\varphi_a$ = {case.phi_a:.3g} rad, $R$ = {case.radius:g} m, "
+        f"$c$ = {case.wave_speed:g} 1/s, $D$ = {case.damping:g}"
     )
-    axis.grid(True, axis="x", alpha=0.3)
+    axis.grid(False, axis="y")
+    if side is not None:
+        _difference_stack(side, model, times, curves["fem"], axis.get_ylim(), offset_mm, colours)
     return figure
+
+
+def _difference_stack(
+    axis: Any,
+    model: BallModel,
+    times: np.ndarray,
+    fem: tuple[np.ndarray, np.ndarray],
+    limits: tuple[float, float],
+    offset_mm: float,
+    colours: np.ndarray,
+) -> None:
+    """Finite elements minus closed form at the nodes, stacked like the waterfall beside it.
+
+    Instant k sits at the same height as in the waterfall: the stack's offset and
+    limits are the waterfall's scaled by one factor, so the rows line up.
+    """
+    from twoball.modal.legendre import displacement
+
+    phi, u_fem = fem
+    scale = model.case.scalings
+    series = model.backends["legendre"].series
+    closed = displacement(series, times / scale.time, phi) * scale.length
+    diff = u_fem - closed  # m
+    factor, unit = difference_unit(diff[1:].ravel() if len(times) > 1 else diff.ravel(), "m")
+    spread = float(np.percentile(np.abs(diff[1:] * factor), 99.5)) if len(times) > 1 else 0.0
+    offset = 1.5 * spread if spread > 0 else 1.0
+    ratio = offset / offset_mm
+    for k in range(len(times)):
+        axis.plot(phi, diff[k] * factor + k * offset, ".", markersize=1.6, color=colours[k])
+    axis.axvline(model.case.phi_a, color="grey", linewidth=0.7, linestyle=":")
+    axis.set_xlim(0.0, math.pi)
+    axis.set_xticks(np.linspace(0.0, math.pi, 3), ["0", r"$\pi/2$", r"$\pi$"])
+    axis.set_ylim(limits[0] * ratio, limits[1] * ratio)
+    axis.set_xlabel(label(r"$\varphi$", "rad"))
+    shift = rf"finite elements $-$ closed form + {offset:.3g} {unit} per instant"
+    axis.set_ylabel(label(shift, unit))
+    axis.set_title("difference at the nodes")
+    axis.grid(False, axis="y")
+    axis.set_gid(STACKED)
 
 
 def _colours(count: int) -> np.ndarray:

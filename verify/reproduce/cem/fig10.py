@@ -3,27 +3,22 @@
 from __future__ import annotations
 
 import math
+from typing import TYPE_CHECKING
 
 import numpy as np
 from twoball.modal.initial import phi_a_from_v0, v0_dimensionless
+from twoball.verify.output.figures.style import label, styled
 from twoball.verify.reproduce.common import Comparison, Context, Section, new_figure, save
+
+if TYPE_CHECKING:
+    from matplotlib.figure import Figure
 
 
 def part_fig10(ctx: Context) -> Section:
     """phi_a against v0 from eq. (3.7) for c = 220, 320, 350 1/s, R = 0.12 m."""
     radius = 0.12
     v0 = np.linspace(0.05, 8.0, 400)
-    fig, ax = new_figure(figsize=(6.4, 4.6))
-    for c, style in ((220.0, "--"), (320.0, "-"), (350.0, ":")):
-        phi = [phi_a_from_v0(v, radius, c) for v in v0]
-        ax.plot(v0, phi, style, label=f"c = {c:g} 1/s")
-    ax.plot([4.1], [2.6], "o", color="red", label="basketball: |v0| = 4.1 m/s, phi_a = 2.6")
-    ax.set_xlabel("impact speed |v0| [m/s]")
-    ax.set_ylabel("contact angle phi_a [rad]")
-    ax.set_title("Eq. (3.7), R = 0.12 m")
-    ax.grid(True, alpha=0.3)
-    ax.legend()
-    name = save(ctx, fig, "fig10_phi_a_vs_v0.png")
+    name = save(ctx, fig10_figure(v0, radius), "fig10_phi_a_vs_v0.png")
 
     phi_320 = phi_a_from_v0(4.1, radius, 320.0)
     c_implied = 4.1 / (radius * v0_dimensionless(2.6))
@@ -74,3 +69,24 @@ def part_fig10(ctx: Context) -> Section:
         "to within its rounding."
     )
     return sec
+
+
+@styled
+def fig10_figure(v0: np.ndarray, radius: float) -> Figure:
+    """``phi_a`` against ``|v0|`` from eq. (3.7) for c = 220, 320, 350 1/s, with the basketball."""
+    fig, ax = new_figure(figsize=(6.4, 4.6))
+    for c, style in ((220.0, "--"), (320.0, "-"), (350.0, ":")):
+        phi = [phi_a_from_v0(v, radius, c) for v in v0]
+        ax.plot(v0, phi, linestyle=style, label=f"$c$ = {c:g} 1/s")
+    ax.plot(
+        [4.1],
+        [2.6],
+        "o",
+        color="red",
+        label=r"basketball (Table 2): $|v_0|$ = 4.1 m/s, $\varphi_a$ = 2.6 rad",
+    )
+    ax.set_xlabel(label(r"impact speed $|v_0|$", "m/s"))
+    ax.set_ylabel(label(r"contact angle $\varphi_a$", "rad"))
+    ax.set_title(f"Eq. (3.7), $R$ = {radius:g} m")
+    ax.legend()
+    return fig

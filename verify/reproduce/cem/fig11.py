@@ -7,12 +7,13 @@ threshold; (b) v_l and t_l against D at N = 30 under both horizons.
 
 from __future__ import annotations
 
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 import numpy as np
 from scipy.optimize import brentq
 from twoball.modal.parameters import STANDARD_GRAVITY as G
 from twoball.modal.parameters import preset
+from twoball.verify.output.figures.style import REFERENCE_COLOUR, label, styled
 from twoball.verify.reproduce.common import (
     Comparison,
     Context,
@@ -35,6 +36,10 @@ from .tasks import (
     run_tasks,
     threshold_text,
 )
+
+if TYPE_CHECKING:
+    from matplotlib.figure import Figure
+
 
 N_LIST = (10, 20, 30, 40, 60)
 D_CAPTION = np.round(np.linspace(0.600, 0.609, 10), 3)
@@ -94,14 +99,17 @@ def part_fig11(ctx: Context) -> Section:
     at_013 = liftoff(base)
     undamped = liftoff(base.derive(damping=0.0))
 
-    names = [_plot_fig11a(ctx, table), _plot_fig11b(ctx, window, paper, at_013)]
+    names = [
+        save(ctx, fig11a_figure(table), "fig11a_min_acceleration.png"),
+        save(ctx, fig11b_figure(window, paper, at_013), "fig11b_liftoff_vs_damping.png"),
+    ]
     sec = Section("fig11", "Fig. 11: damping, lift-off and the no-lift-off threshold")
     sec.figures += [
         (
             names[0],
-            "(a) Smallest pole acceleration over the window against D for several N: whole "
-            "window (solid) and only while the pole moves up (dashed); the horizontal line "
-            "is -g.  Left: the caption's range 0.600-0.609; right: 0-0.99 (symlog scale).",
+            "(a) Smallest pole acceleration against D for several N: over the whole window "
+            "(top) and only while the pole moves up (bottom); the dashed line is -g.  Left: "
+            "the caption's range 0.600-0.609; right: 0-0.99 (symlog scale).",
         ),
         (
             names[1],
@@ -277,42 +285,52 @@ def _fig11_text(table, thresholds, window, paper) -> list[str]:
     ]
 
 
-def _plot_fig11a(ctx: Context, table: dict) -> str:
-    fig, axes = new_figure(1, 2, figsize=(12.0, 4.8))
-    for k, n in enumerate(N_LIST):
-        for ax, ds in ((axes[0], D_CAPTION), (axes[1], D_WIDE)):
-            ms = [table.get((n, float(d))) for d in ds]
-            overall = [np.nan if m is None else m.overall for m in ms]
-            up = [np.nan if m is None or m.moving_up is None else m.moving_up for m in ms]
-            ax.plot(ds, overall, "-", color=f"C{k}", label=f"N = {n}, whole window")
-            ax.plot(ds, up, "--", color=f"C{k}", label=f"N = {n}, moving up")
-    for ax in axes:
-        ax.axhline(-G, color="k", lw=1.2)
-        ax.set_xlabel("damping ratio D")
-        ax.set_ylabel("min pole acceleration [m/s^2]")
-        ax.grid(True, alpha=0.3)
-    axes[1].set_yscale("symlog", linthresh=10.0)
-    axes[0].set_title("D = 0.600 ... 0.609 (caption of Fig. 11(a))")
-    axes[1].set_title("D = 0 ... 0.99")
-    axes[1].legend(fontsize=7, ncol=2)
-    return save(ctx, fig, "fig11a_min_acceleration.png")
+@styled
+def fig11a_figure(table: dict) -> Figure:
+    """2 x 2 panels: whole window / moving up (rows) over the caption's and the wide D range."""
+    fig, axes = new_figure(2, 2, figsize=(11.0, 7.0), sharex="col")
+    ranges = (D_CAPTION, D_WIDE)
+    for row, (field, what) in enumerate(
+        (("overall", "over the whole window"), ("moving_up", "while the pole moves up"))
+    ):
+        for column, ds in enumerate(ranges):
+            ax = axes[row, column]
+            for k, n in enumerate(N_LIST):
+                ms = [table.get((n, float(d))) for d in ds]
+                values = [np.nan if m is None or getattr(m, field) is None else getattr(m, field)
+                          for m in ms]  # fmt: skip
+                ax.plot(ds, values, color=f"C{k}", linestyle="-", marker=".", label=f"$N$ = {n}")
+            ax.axhline(-G, color=REFERENCE_COLOUR, lw=1.0, ls="--", label=f"$-g$ = {-G:g} m/s$^2$")
+            ax.set_ylabel(label(r"min $u_{tt}(t, 0)$ " + what, "m/s$^2$"), fontsize=8)
+            if column == 1:
+                ax.set_yscale("symlog", linthresh=10.0)
+    for column, title in enumerate(
+        ("$D$ = 0.600 ... 0.609 (caption of Fig. 11(a))", "$D$ = 0 ... 0.99 (symlog scale)")
+    ):
+        axes[0, column].set_title(title)
+        axes[1, column].set_xlabel(label("damping ratio $D$", None))
+    axes[0, 1].legend(ncol=2)
+    fig.suptitle("Fig. 11(a): smallest pole acceleration against the damping ratio")
+    return fig
 
 
-def _plot_fig11b(ctx: Context, window, paper, at_013) -> str:
+@styled
+def fig11b_figure(window, paper, at_013) -> Figure:
+    """v_l and t_l against D under both horizons; the red dot is D = 0.13."""
     fig, axes = new_figure(2, 1, figsize=(6.4, 6.4), sharex=True)
-    d = D_LIFTOFF
-    axes[0].plot(d, [p.v_liftoff_m_s for p in window], "-", label="window horizon")
-    axes[0].plot(d, [p.v_liftoff_m_s for p in paper], ":", label="paper horizon")
-    axes[1].plot(d, [1e3 * p.t_liftoff_s for p in window], "-", label="window horizon")
-    axes[1].plot(d, [1e3 * p.t_liftoff_s for p in paper], ":", label="paper horizon")
-    axes[0].plot([0.13], [at_013.v_liftoff_m_s], "o", color="red", label="D = 0.13")
-    axes[1].plot([0.13], [1e3 * at_013.t_liftoff_s], "o", color="red")
-    axes[0].set_ylabel("v_l [m/s]")
+    d = [p.case.damping for p in window]
+    axes[0].plot(d, [p.v_liftoff_m_s for p in window], "-", label="`window` horizon")
+    axes[0].plot(d, [p.v_liftoff_m_s for p in paper], ":", label="`paper` horizon")
+    axes[1].plot(d, [1e3 * p.t_liftoff_s for p in window], "-", label="`window` horizon")
+    axes[1].plot(d, [1e3 * p.t_liftoff_s for p in paper], ":", label="`paper` horizon")
+    axes[0].plot([0.13], [at_013.v_liftoff_m_s], "o", color="red", label="$D$ = 0.13 (§4(b))")
+    axes[1].plot([0.13], [1e3 * at_013.t_liftoff_s], "o", color="red", label="$D$ = 0.13 (§4(b))")
+    axes[0].set_ylabel(label("$v_l$", "m/s"))
     axes[0].set_yscale("log")
-    axes[1].set_ylabel("t_l [ms]")
-    axes[1].set_xlabel("damping ratio D")
+    axes[1].set_ylabel(label("$t_l$", "ms"))
+    axes[1].set_xlabel(label("damping ratio $D$", None))
     axes[0].legend()
-    for ax in axes:
-        ax.grid(True, alpha=0.3)
-    axes[0].set_title("|v0| = 4.1 m/s, phi_a = 2.6, R = 0.12 m, c = 320 1/s, N = 30")
-    return save(ctx, fig, "fig11b_liftoff_vs_damping.png")
+    axes[0].set_title(
+        r"$|v_0|$ = 4.1 m/s, $\varphi_a$ = 2.6 rad, $R$ = 0.12 m, $c$ = 320 1/s, $N$ = 30"
+    )
+    return fig

@@ -7,11 +7,13 @@ bounded scalar search between the grid neighbours of its best point.
 from __future__ import annotations
 
 from dataclasses import dataclass
+from typing import TYPE_CHECKING
 
 import numpy as np
 from scipy.optimize import minimize_scalar
 from twoball.modal.parameters import STANDARD_GRAVITY as G
 from twoball.modal.parameters import Case, preset
+from twoball.verify.output.figures.style import label, styled
 from twoball.verify.reproduce.common import (
     Comparison,
     Context,
@@ -25,6 +27,10 @@ from twoball.verify.sweeps.sweeps import SweepSolver, run_sweep
 
 from .tasks import call, run_tasks
 
+if TYPE_CHECKING:
+    from matplotlib.figure import Figure
+
+
 FIG12_DAMPING = (0.0, 0.05, 0.13, 0.3)
 FIG12_AXES: dict[str, tuple[str, np.ndarray, str]] = {
     "v0": ("v0", np.linspace(0.1, 20.0, 100), "impact speed |v0| [m/s]"),
@@ -33,6 +39,11 @@ FIG12_AXES: dict[str, tuple[str, np.ndarray, str]] = {
 }
 FIG12_PAPER_OPTIMUM = {"v0": 8.7, "c": 180.0, "R": 0.075}
 FIG12_UNITS = {"v0": "m/s", "c": "1/s", "R": "m"}
+FIG12_LABELS = {
+    "v0": label(r"impact speed $|v_0|$", "m/s"),
+    "c": label("wave speed $c$", "1/s"),
+    "R": label("radius $R$", "m"),
+}
 
 
 @dataclass(frozen=True)
@@ -133,14 +144,15 @@ def part_fig12(ctx: Context) -> Section:
             x, r = x_grid, r_grid
         optima[(panel, d)] = (x, r)
     dot = liftoff(base)
-    name = _plot_fig12(ctx, sweeps, optima, dot)
+    name = save(ctx, fig12_figure(sweeps, optima, dot), "fig12_parameter_dependence.png")
 
     sec = Section("fig12", "Fig. 12: parameter dependence and the optimum")
     sec.figures.append(
         (
             name,
             "v_l/|v0| against |v0|, c and R (phi_a from eq. (3.7)) for D = 0, 0.05, 0.13, "
-            "0.3; crosses mark each curve's maximum, the red dot the basketball case.",
+            "0.3; crosses mark each curve's maximum, small dots early lift-offs (left out of "
+            "the curves), the red dot the basketball case.",
         )
     )
     errors = sum(p.error is not None for pts in sweeps.values() for p in pts)
@@ -323,26 +335,36 @@ def part_fig12(ctx: Context) -> Section:
     return sec
 
 
-def _plot_fig12(ctx, sweeps, optima, dot) -> str:
-    fig, axes = new_figure(1, 3, figsize=(14.0, 4.4), sharey=True)
+@styled
+def fig12_figure(sweeps, optima, dot) -> Figure:
+    """``v_l/|v0|`` against ``|v0|``, c and R per damping ratio; maxima, early lift-offs."""
+    fig, axes = new_figure(1, 3, figsize=(14.0, 4.6), sharey=True)
     greens = ["#00441b", "#1b7837", "#5aae61", "#a6dba0"]
     base = fig12_base()
-    for ax, (panel, (field, values, label)) in zip(axes, FIG12_AXES.items(), strict=True):
+    for ax, (panel, (field, values, _)) in zip(axes, FIG12_AXES.items(), strict=True):
         for colour, d in zip(greens, FIG12_DAMPING, strict=True):
             points = sweeps[(panel, d)]
-            ax.plot(values, main_branch(points), color=colour, label=f"D = {d:g}")
+            ax.plot(values, main_branch(points), "-", color=colour, label=f"$D$ = {d:g}")
             early = np.array([_early(p) for p in points])
             if early.any():
                 ratio = np.array([p.ratio for p in points])
                 ax.plot(values[early], ratio[early], ".", ms=3, color=colour)
             if (panel, d) in optima:
                 x, r = optima[(panel, d)]
-                ax.plot([x], [r], "x", color=colour)
+                ax.plot([x], [r], "x", ms=6, mew=1.5, color=colour)
         ax.plot([getattr(base, field)], [dot.ratio], "o", color="red")
-        ax.set_xlabel(label)
+        ax.set_xlabel(FIG12_LABELS[panel])
         ax.set_yscale("log")
-        ax.grid(True, alpha=0.3)
-    axes[0].set_ylabel("v_l / |v0|")
-    axes[0].legend()
-    fig.suptitle("Fig. 12: phi_a from eq. (3.7); other parameters those of the basketball")
-    return save(ctx, fig, "fig12_parameter_dependence.png")
+    axes[0].set_ylabel(label(r"$v_l\,/\,|v_0|$", None))
+    # what the markers mean, once: proxies without data
+    proxies = [
+        axes[1].plot([], [], "x", color="0.3", mew=1.5, label="maximum of the curve")[0],
+        axes[1].plot([], [], ".", color="0.3", label="early lift-off (ringing; not in the curve)")[
+            0
+        ],
+        axes[1].plot([], [], "o", color="red", label="basketball case (Table 2)")[0],
+    ]
+    axes[0].legend(title="damping ratio")
+    axes[1].legend(handles=proxies, title="markers")
+    fig.suptitle(r"Fig. 12: $\varphi_a$ from eq. (3.7); other parameters those of the basketball")
+    return fig

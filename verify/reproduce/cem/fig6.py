@@ -3,12 +3,17 @@
 from __future__ import annotations
 
 import math
+from typing import TYPE_CHECKING
 
 import numpy as np
 from twoball.modal.filters import SpectralFilter
 from twoball.modal.legendre import displacement, legendre_series
 from twoball.modal.parameters import preset
+from twoball.verify.output.figures.style import STACKED, label, styled
 from twoball.verify.reproduce.common import Context, Section, liftoff, new_figure, save
+
+if TYPE_CHECKING:
+    from matplotlib.figure import Figure
 
 
 def part_fig6(ctx: Context) -> Section:
@@ -19,20 +24,16 @@ def part_fig6(ctx: Context) -> Section:
     t_ms = np.linspace(0.0, 11.5, 24)
     t = t_ms * 1e-3 / case.scalings.time
     u_mm = displacement(series, t, phi) * case.radius * 1e3
-    fig, ax = new_figure(figsize=(7.5, 5.5), subplot_kw={"projection": "3d"})
-    for k in range(len(t)):
-        ax.plot(phi, np.full_like(phi, t_ms[k]), u_mm[k], lw=0.9, color=f"C{k % 10}")
-    ax.set_xlabel("polar angle phi [rad]")
-    ax.set_ylabel("t [ms]")
-    ax.set_zlabel("u [mm]")
-    ax.view_init(elev=28, azim=-62)
-    ax.set_title("Radial displacement u(t, phi): phi_a = 2.6, R = 0.12 m, c = 320 1/s, D = 0.1")
-    name = save(ctx, fig, "fig06_waterfall.png")
+    name = save(ctx, fig6_figure(phi, t_ms, u_mm), "fig06_waterfall.png")
     report = liftoff(case)
     pole = u_mm[:, 0]
     sec = Section("fig6", "Fig. 6: waterfall of the radial displacement")
     sec.figures.append(
-        (name, "u(t, phi) in mm at 24 instants 0, 0.5, ..., 11.5 ms (N = 30, Lanczos filter).")
+        (
+            name,
+            "u(t, phi) in mm at 24 instants 0, 0.5, ..., 11.5 ms (N = 30, Lanczos filter), "
+            "coloured by time.",
+        )
     )
     sec.paragraphs += [
         "Parameters as in the caption of Fig. 6: phi_a = 2.6, R = 0.12 m, |v0| = 4.1 m/s, "
@@ -51,3 +52,24 @@ def part_fig6(ctx: Context) -> Section:
         "v_liftoff_m_s": report.v_liftoff_m_s,
     }
     return sec
+
+
+@styled
+def fig6_figure(phi: np.ndarray, t_ms: np.ndarray, u_mm: np.ndarray) -> Figure:
+    """3-D waterfall: one curve per instant along the time axis (never overlapping)."""
+    from matplotlib import colormaps
+
+    fig, ax = new_figure(figsize=(7.5, 5.5), subplot_kw={"projection": "3d"})
+    colours = colormaps["viridis"](np.linspace(0.0, 0.9, len(t_ms)))
+    for k in range(len(t_ms)):
+        ax.plot(phi, np.full_like(phi, t_ms[k]), u_mm[k], "-", lw=0.9, color=colours[k])
+    ax.set_xlabel(label(r"polar angle $\varphi$", "rad"))
+    ax.set_ylabel(label("$t$", "ms"))
+    ax.set_zlabel(label("$u$", "mm"))
+    ax.set_gid(STACKED)
+    ax.view_init(elev=28, azim=-62)
+    ax.set_title(
+        r"Radial displacement $u(t, \varphi)$: $\varphi_a$ = 2.6 rad, $R$ = 0.12 m, "
+        "$c$ = 320 1/s, $D$ = 0.1"
+    )
+    return fig
