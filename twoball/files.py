@@ -11,8 +11,17 @@ import json
 import os
 from collections.abc import Sequence
 from dataclasses import replace
-from typing import Any
 
+from twoball.field_model import (
+    FIELD_BACKENDS,
+    ball_model_of,
+    check_backend,
+    check_fps,
+    check_frame_budget,
+    check_initial,
+    eigen_sizes,
+    field_warnings,
+)
 from twoball.file_results import ExportResult, PlotResult, RenderResult
 from twoball.mesh_options import SPHERE_KINDS, MeshOptions
 from twoball.modal.errors import ParameterError
@@ -23,129 +32,8 @@ from twoball.provenance import block
 
 __all__ = ["ExportResult", "PlotResult", "RenderResult", "export", "plot", "render"]
 
-FIELD_BACKENDS: tuple[str, ...] = ("fem", "legendre")
-INITIAL_METHODS: tuple[str, ...] = ("projection", "interpolation")
 DEFAULT_ANIMATION_FRAMES = 60
 DEFAULT_FPS = 20.0
-FPS_RANGE = (1e-3, 1e3)  # frames per second of an animation
-
-
-def _check_backend(backend: str) -> str:
-    if backend not in FIELD_BACKENDS:
-        raise ParameterError("backend", "one of " + ", ".join(FIELD_BACKENDS), backend)
-    return backend
-
-
-def field_warnings(model: Any, backend: str, order: int | None, level: int | None) -> list[str]:
-    """Accuracy warnings of ``backend``'s fields: its lift-off's, and the FE mesh resolution."""
-    warnings = list(model.backend(backend).report.warnings)
-    if backend == "fem":
-        from twoball.fem_membrane.guards import mesh_warnings
-
-        kind = "ring" if model.mesh.ring is not None else "sphere"
-        order = MeshOptions.resolve(None, level=level, order=order).order
-        warnings += mesh_warnings(kind, level, None, order, model.backend(backend).series.filter)
-    return warnings
-
-
-def check_initial(initial: str | None, backends: Sequence[str]) -> str:
-    """``initial`` (default projection); refused when no finite-element backend is solved."""
-    if initial is None:
-        return "projection"
-    if "fem" not in backends:
-        raise ParameterError(
-            "initial", "left out without the fem backend (it sets the FE initial state)", initial
-        )
-    if initial not in INITIAL_METHODS:
-        raise ParameterError("initial", "one of " + ", ".join(INITIAL_METHODS), initial)
-    return initial
-
-
-def check_fps(fps: object) -> float:
-    """Frames per second of an animation, in :data:`FPS_RANGE`."""
-    from twoball.modal.errors import bounded
-
-    return bounded("fps", fps, *FPS_RANGE)
-
-
-def _eigen_sizes(
-    levels: Sequence[int] | None, orders: Sequence[int] | None, max_degree: int | None
-) -> tuple[list[int], list[int]]:
-    """Levels and orders of the eigenvalue plot, each mesh checked against the budget."""
-    from twoball.budget import check, fem_dofs, fem_estimate, options
-
-    levels = [1, 2, 3] if levels is None else levels
-    orders = [1, 2] if orders is None else orders
-    for name, values in (("levels", levels), ("orders", orders)):
-        if isinstance(values, (str, bytes)) or not isinstance(values, Sequence) or not values:
-            raise ParameterError(name, "a non-empty list of integers", values)
-    if max_degree is not None and (
-        isinstance(max_degree, bool) or not isinstance(max_degree, int) or max_degree < 1
-    ):
-        raise ParameterError("max_degree", "an integer >= 1", max_degree)
-    for order in orders:
-        for level in levels:
-            try:
-                spec = MeshOptions.resolve(None, level=level, order=order, files=False)
-            except ParameterError as error:  # named as the list the value came from
-                name = "levels" if error.name == "level" else "orders"
-                raise ParameterError(name, f"a list of {error.valid}", error.got) from None
-            size = options(level=spec.level, order=spec.order)
-            check(size, fem_estimate(fem_dofs("sphere", spec.level, None, spec.order), 30))
-    return list(levels), list(orders)
-
-
-def check_frame_budget(
-    case: Case, count: int, name: str, level: int | None, order: int | None
-) -> None:
-    """Refuse ``count`` frames on the mesh when their memory or time cannot fit (budget)."""
-    from twoball.budget import check_frames
-    from twoball.verify.output.fields import MAX_FRAMES
-
-    if count > MAX_FRAMES:  # the same cap for frames, times and instants
-        if name in ("instants", "frames"):  # a count
-            low = 2 if name == "instants" else 1
-            raise ParameterError(name, f"an integer in [{low}, {MAX_FRAMES}]", count)
-        raise ParameterError(name, f"at most {MAX_FRAMES} {name}", f"{count} {name}")
-    spec = MeshOptions.resolve(None, level=level, order=order)
-    check_frames(f"{name} ({count} frames)", count, "sphere", spec.level, spec.order, case.modes)
-
-
-def ball_model_of(
-    case: Case,
-    backends: Sequence[str],
-    *,
-    mesh: str | None,
-    level: int | None,
-    order: int | None,
-    initial: str,
-    sigma: str,
-    recontact: str,
-    t_end: float | None,
-    progress: Step | None = None,
-) -> Any:
-    """Solve ``case`` with ``backends`` on the sphere mesh of the options (see ``BallModel``)."""
-    from twoball.verify.output.fields import ball_model
-
-    spec = MeshOptions.resolve(mesh, level=level, order=order, kinds=SPHERE_KINDS, files=False)
-    initial = check_initial(initial, backends)
-    if initial not in INITIAL_METHODS:
-        raise ParameterError("initial", "one of " + ", ".join(INITIAL_METHODS), initial)
-    from twoball.modal.report import t_end_dimensionless
-
-    t_end_dimensionless(case, t_end)  # the window is checked before any progress line
-    (progress or silent)(f"solving {' and '.join(backends)} on {spec.label}")
-    return ball_model(
-        case,
-        spec.level,
-        spec.order,
-        mesh=spec.kind,
-        sigma=sigma,
-        recontact=recontact,
-        t_end_s=t_end,
-        backends=tuple(backends),
-        initial=initial,
-    )
 
 
 def export(
@@ -211,7 +99,7 @@ def export(
     case = Case.preset("basketball") if case is None else case
     fmt = series_format(out, format)
     target = check_file(out)
-    _check_backend(backend)
+    check_backend(backend)
     MeshOptions.resolve(mesh, level=level, order=order, kinds=SPHERE_KINDS, files=False)
     if frames is not None and times is not None:
         raise ParameterError("frames", "left out when times are given", frames)
@@ -327,7 +215,7 @@ def render(
     target = check_file(out)
     size = check_size(DEFAULT_SIZE if size is None else size)
     warp = check_warp(warp)
-    _check_backend(backend)
+    check_backend(backend)
     if kind == ".png" and fps is not None:
         raise ParameterError("fps", "used with .gif or .mp4 only", fps)
     fps = DEFAULT_FPS if fps is None else check_fps(fps)
@@ -465,7 +353,7 @@ def plot(
             if value is not None:
                 shown = type(value).__name__ if name == "case" else value
                 raise ParameterError(name, "left out with kind eigen (use levels, orders)", shown)
-        levels, orders = _eigen_sizes(levels, orders, max_degree)
+        levels, orders = eigen_sizes(levels, orders, max_degree)
         say = progress or silent
         tables = []
         for od in orders:
