@@ -114,7 +114,7 @@ def same_image(a: Path, b: Path) -> bool:
 COMMANDS = {
     "verify": (["verify", "--fast", "--json", "--out", "{out}"], "results.json", same_json),
     "converge --study modes": (
-        ["converge", "--study", "modes", "--modes-list", "30:120", "--out", "{out}"],
+        ["converge", "--study", "modes", "--modes-list", "30,60,120", "--out", "{out}"],
         "results.json",
         same_json,
     ),
