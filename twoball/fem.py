@@ -26,6 +26,7 @@ def solve(
     elements: int | None = None,
     order: int | None = None,
     pole: Any = None,
+    geometry: str | None = None,
     time: str | None = None,
     dt: float | None = None,
     route: str | None = None,
@@ -49,10 +50,14 @@ def solve(
         Sphere refinement level >= 0 (default 3); not with ``axisym`` or a file.
     elements : int, optional
         Elements >= 2 of ``axisym`` (default 400); not with a sphere.
-    order : {1, 2}, optional
+    order : {1, 2, 3, 4}, optional
         Element and geometry order (default 2; a file: its own).
     pole : (x, y, z) or "X,Y,Z", optional
         Pole direction of a mesh file, in its frame (default +z).
+    geometry : {"isoparametric", "exact"}, optional
+        Discrete sphere: the order-p interpolant through the nodes (default),
+        or the exact sphere (radial projection of the flat triangles; not on
+        the ring sphere or the axisymmetric line).
     time : {"modal", "alpha"}, optional
         Modal superposition, eqs. (3.14)-(3.16) (default), or generalized-alpha stepping.
     dt : float, optional
@@ -78,7 +83,9 @@ def solve(
     from twoball.modal.report import report_liftoff, t_end_dimensionless
 
     case = Case.preset("basketball") if case is None else case
-    spec = MeshOptions.resolve(mesh, level=level, elements=elements, order=order, pole=pole)
+    spec = MeshOptions.resolve(
+        mesh, level=level, elements=elements, order=order, pole=pole, geometry=geometry
+    )
     time = "modal" if time is None else time
     if time == "modal":
         if dt is not None:
@@ -124,12 +131,14 @@ def solve(
         dt=dt_scaled,
         t_end=t_end_dimensionless(case, t_end),
         route="auto" if route is None else route,
+        geometry=spec.geometry,
     )
     extra: dict[str, Any] = {
         "dofs": info["dofs"],
         "modes_used": info["modes_used"],
         "mesh": info["mesh"],
         "order": info["order"],
+        "geometry": info["geometry"],
         "time_scheme": info["time_scheme"],
         "route": info["route"],
         "damping_model": info["damping_model"],
@@ -171,6 +180,7 @@ def eigen(
     elements: int | None = None,
     order: int | None = None,
     pole: Any = None,
+    geometry: str | None = None,
     count: int = 25,
 ) -> list[dict[str, float | int]]:
     """The lowest ``count`` nonzero eigenvalues of -Laplace-Beltrami beside l (l + 1), eq. (3.11).
@@ -182,14 +192,21 @@ def eigen(
     from twoball.budget import check, fem_dofs, fem_estimate, options
     from twoball.fem_membrane.eigen import eigen_table
 
-    spec = MeshOptions.resolve(mesh, level=level, elements=elements, order=order, pole=pole)
+    spec = MeshOptions.resolve(
+        mesh, level=level, elements=elements, order=order, pole=pole, geometry=geometry
+    )
     if spec.kind != "file":  # refuse absurd meshes before building them
         dofs = fem_dofs(spec.kind, spec.level, spec.elements, spec.order)
         size = options(level=spec.level, elements=spec.elements, order=spec.order)
         check(size, fem_estimate(dofs, 30, "krylov"))
     loaded = spec.load()
     if loaded is not None:
-        return eigen_table(mesh=loaded.mesh, order=None, count=count)
+        return eigen_table(mesh=loaded.mesh, order=None, count=count, geometry=spec.geometry)
     return eigen_table(
-        mesh=spec.kind, level=spec.level, elements=spec.elements, order=spec.order, count=count
+        mesh=spec.kind,
+        level=spec.level,
+        elements=spec.elements,
+        order=spec.order,
+        count=count,
+        geometry=spec.geometry,
     )

@@ -33,6 +33,7 @@ def liftoff(
     elements: int | None = None,
     order: int | None = None,
     pole: Any = None,
+    geometry: str | None = None,
     time: str | None = None,
     dt: float | None = None,
     route: str | None = None,
@@ -53,7 +54,7 @@ def liftoff(
         Re-contact horizon of criterion (ii), §3(a).
     t_end : float, optional
         Modelled window [s] (default 4 pi / c).
-    mesh, level, elements, order, pole, time, dt, route, damping_model
+    mesh, level, elements, order, pole, geometry, time, dt, route, damping_model
         Finite-element options (see :func:`twoball.fem.solve`; ``mesh`` may be a
         kind name or the user's mesh: a file path, ``meshio.Mesh`` or ``MeshTri``);
         refused with ``backend="legendre"``.
@@ -73,6 +74,7 @@ def liftoff(
         "elements": elements,
         "order": order,
         "pole": pole,
+        "geometry": geometry,
         "time": time,
         "dt": dt,
         "route": route,

@@ -45,6 +45,7 @@ FLAGS: dict[str, str] = {
     "count": "--count",
     "mesh_file": "--mesh-file",
     "pole": "--pole",
+    "geometry": "--geometry",
     # sweeps, studies, reports
     "values": "--values",
     "param": "--param",
