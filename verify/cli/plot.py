@@ -52,7 +52,7 @@ def run(args: argparse.Namespace) -> int:
     options = mesh_arguments(args)
     if args.kind == "eigen":
         levels = parse_list(args.levels, "--levels", "comma-separated levels >= 0, e.g. 1,2")
-        orders = parse_list(args.orders, "--orders", "comma-separated orders 1 or 2", {1, 2})
+        orders = parse_list(args.orders, "--orders", "comma-separated orders 1 to 4", {1, 2, 3, 4})
         result = plot(
             "eigen", args.out, levels=levels, orders=orders, max_degree=args.max_degree, **options
         )
