@@ -23,8 +23,9 @@ from twoball.fem_membrane.mapping import RadialProjectionMapping
 from twoball.fem_membrane.mesh import elevate, icosphere, locate_pole, ring_sphere
 from twoball.fem_membrane.mesh_input import load_sphere_mesh
 from twoball.fem_membrane.space import sphere_space
-from twoball.mesh_options import MeshOptions
 from twoball.modal.errors import ParameterError
+
+from twoball.mesh_options import MeshOptions
 
 BAND = 0.3  # observed order within +-0.3 of the expected one (too high fails too)
 GEOMETRIC_RATE = {1: 2.0, 2: 4.0, 3: 4.0, 4: 6.0}  # isoparametric: min(2p, p+1 | p+2)
@@ -36,15 +37,19 @@ def rates(errors: np.ndarray) -> np.ndarray:
     return np.log2(errors[:-1] / errors[1:])
 
 
-def cluster_errors(space, degrees: range) -> np.ndarray:
-    """Largest relative error in each cluster l of ``degrees`` (2l + 1 eigenvalues l (l + 1))."""
+def cluster_errors(space, degrees: range, margin: float = 0.0) -> np.ndarray:
+    """Largest relative error in each cluster l of ``degrees`` (2l + 1 eigenvalues l (l + 1)).
+
+    ``margin`` > 0: every eigenvalue below ``(1 + margin) L (L + 1)`` for the last
+    degree L (conforming eigenvalues lie above the exact ones, by less than the margin).
+    """
     last = degrees[-1]
     count = (last + 1) ** 2
-    if last <= 6:
+    if margin <= 0.0:
         values = lowest_eigenpairs(space.stiffness, space.mass, count).values
-    else:  # every eigenvalue up to well above cluster ``last`` (the errors are upper bounds)
-        values = eigenpairs(space.stiffness, space.mass, 1.8 * last * (last + 1), next_value=False)
-        values = values.values
+    else:
+        cutoff = (1.0 + margin) * last * (last + 1)
+        values = eigenpairs(space.stiffness, space.mass, cutoff, next_value=False).values
     assert values.size >= count
     return np.array(
         [np.abs(values[d * d : (d + 1) ** 2] / (d * (d + 1.0)) - 1.0).max() for d in degrees]
@@ -106,6 +111,32 @@ def test_low_clusters_converge_at_2p_on_the_exact_sphere(order, levels):
     errors = np.array(
         [cluster_errors(sphere_space(icosphere(lv), order, "exact"), range(1, 7)) for lv in levels]
     )
+    observed = rates(errors)
+    assert np.all(np.abs(observed - 2 * order) < BAND), observed
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize(
+    ("order", "levels", "degrees", "margin"),
+    [(1, (4, 5), range(1, 30), 0.45), (2, (3, 4), range(1, 13), 0.0),
+     (3, (2, 3), range(1, 12), 0.0), (4, (2, 3), range(1, 13), 0.0)],
+)  # fmt: skip
+def test_resolved_clusters_converge_at_2p_on_the_exact_sphere(order, levels, degrees, margin):
+    """Every cluster l = 1..29 at P1, and the clusters the coarse mesh resolves at P2-P4, at 2p.
+
+    A cluster is in the asymptotic range when its error on the coarse level is
+    below 1 % (P4: 0.07 %, its higher clusters still descend faster than 2p on
+    level 2, measured 7.2-7.6 for l = 13..18); measured orders: P1 2.00-2.10
+    (l = 1..29), P2 3.85-3.99, P3 5.83-6.16, P4 7.79-8.17.  The clusters up to
+    l = 29 at P2-P4 need a level more than this test affords (see
+    docs/verification.rst).
+    """
+    errors = np.array(
+        [cluster_errors(sphere_space(icosphere(lv), order, "exact"), degrees, margin)
+         for lv in levels]
+    )  # fmt: skip
+    if order > 1:
+        assert errors[0].max() < (7e-4 if order == 4 else 1e-2)  # the asymptotic range
     observed = rates(errors)
     assert np.all(np.abs(observed - 2 * order) < BAND), observed
 
@@ -199,9 +230,10 @@ def test_cli_refusals_are_one_line(capsys, argv, flag):
 
 def test_cli_equals_api_with_the_exact_geometry(capsys):
     """Same inputs, bit-identical numbers: liftoff --geometry exact against twoball.fem.solve."""
+    from twoball.verify.cli.main import main
+
     import twoball
     from twoball.fem import solve
-    from twoball.verify.cli.main import main
 
     code = main(["liftoff", "--backend", "fem", "--level", "1", "--order", "3",
                  "--geometry", "exact", "--json"])  # fmt: skip
