@@ -17,6 +17,7 @@ least, its geometric error being O(h^4) like P2's (see the method page).
 import time
 
 import matplotlib.pyplot as plt
+
 import twoball
 from twoball.fem import solve
 
