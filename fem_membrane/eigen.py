@@ -282,8 +282,11 @@ def lowest_eigenpairs(K: sp.spmatrix, M: sp.spmatrix, count: int) -> Eigenpairs:
         extra, extra_vectors = _shift_invert(K, M, FIRST_SHIFT, present - count, deflate=deflate)
         values = np.concatenate([values, extra])
         vectors = np.hstack([vectors, extra_vectors])
+        complete = values.size >= present  # every eigenvalue up to ``top`` is in hand
         order = np.argsort(values)[:count]
         values, vectors = values[order], vectors[:, order]
+        if complete:  # (a tie across the cut would otherwise be deflated for ever)
+            break
     else:
         raise NumericalError("eigensolver: could not complete the lowest eigenpairs")
     return Eigenpairs(values, m_orthonormalise(vectors, M))
