@@ -6,7 +6,7 @@ from twoball.modal.errors import ParameterError
 from twoball.modal.initial import _check_phi_a
 
 from .axisym import axisym_space
-from .checks import MESH_KINDS, check_choice, check_elements, check_level, check_order
+from .checks import GEOMETRIES, MESH_KINDS, check_choice, check_elements, check_level, check_order
 from .mesh import SphereMesh, icosphere, ring_sphere
 from .space import Discretisation, sphere_space
 
@@ -21,6 +21,7 @@ def build_space(
     elements: int | None = None,
     order: int | None = 2,
     phi_a: float = 2.6,
+    geometry: str = "isoparametric",
 ) -> Discretisation:
     """The finite-element space of eq. (3.9) for a mesh kind or a sphere mesh (dimensionless).
 
@@ -40,23 +41,33 @@ def build_space(
         Element (and geometry) order; None for a SphereMesh: its own.
     phi_a : float
         Contact angle [rad] in (pi/2, pi).
+    geometry : {"isoparametric", "exact"}
+        Discrete sphere (see :func:`~twoball.fem_membrane.space.sphere_space`):
+        ``exact`` on the icosphere and a given SphereMesh only; the ring keeps
+        its edges on phi_a and the straight axisymmetric line is exact already.
 
     Returns
     -------
     Discretisation
     """
     phi_a = _check_phi_a(phi_a)
+    geometry = check_choice("geometry", geometry, GEOMETRIES)
     if isinstance(mesh, SphereMesh):
         for name, value in (("level", level), ("elements", elements)):
             if value is not None:
                 raise ParameterError(name, "left out with a given sphere mesh", value)
-        return sphere_space(mesh, None if order is None else check_order(order))
+        return sphere_space(mesh, None if order is None else check_order(order), geometry)
     mesh = check_choice("mesh", mesh, MESH_KINDS)
     order = check_order(2 if order is None else order)
     level = DEFAULT_LEVEL if level is None else check_level(level)
     elements = DEFAULT_ELEMENTS if elements is None else check_elements(elements)
+    if mesh != "sphere" and geometry == "exact":
+        why = "its ring edges follow phi_a" if mesh == "ring" else "its line is exact"
+        raise ParameterError("geometry", f"isoparametric with mesh {mesh} ({why})", geometry)
     if mesh == "axisym":
         return axisym_space(elements, phi_a, order)
     if mesh == "ring":
         return sphere_space(ring_sphere(level, phi_a, order))
+    if geometry == "exact":  # the order-1 mesh: nodes are rebuilt as exact images
+        return sphere_space(icosphere(level), order, geometry)
     return sphere_space(icosphere(level, order))

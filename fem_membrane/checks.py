@@ -14,6 +14,7 @@ from twoball.modal.errors import ParameterError
 ORDERS: tuple[int, ...] = (1, 2, 3, 4)
 ORDER_RANGE = "1, 2, 3 or 4"
 MESH_KINDS: tuple[str, ...] = ("sphere", "ring", "axisym")
+GEOMETRIES: tuple[str, ...] = ("isoparametric", "exact")
 TIME_SCHEMES: tuple[str, ...] = ("modal", "alpha")
 DAMPING_MODELS: tuple[str, ...] = ("modal", "rayleigh")
 INITIAL_METHODS: tuple[str, ...] = ("projection", "interpolation")

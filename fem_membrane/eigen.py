@@ -282,8 +282,11 @@ def lowest_eigenpairs(K: sp.spmatrix, M: sp.spmatrix, count: int) -> Eigenpairs:
         extra, extra_vectors = _shift_invert(K, M, FIRST_SHIFT, present - count, deflate=deflate)
         values = np.concatenate([values, extra])
         vectors = np.hstack([vectors, extra_vectors])
+        complete = values.size >= present  # every eigenvalue up to ``top`` is in hand
         order = np.argsort(values)[:count]
         values, vectors = values[order], vectors[:, order]
+        if complete:  # (a tie across the cut would otherwise be deflated for ever)
+            break
     else:
         raise NumericalError("eigensolver: could not complete the lowest eigenpairs")
     return Eigenpairs(values, m_orthonormalise(vectors, M))
@@ -305,6 +308,7 @@ def eigen_table(
     order: int = 1,
     count: int = 25,
     phi_a: float = 2.6,
+    geometry: str = "isoparametric",
 ) -> list[dict[str, float | int]]:
     """The lowest ``count`` nonzero eigenvalues beside the exact ``l (l + 1)`` (eq. (3.11)).
 
@@ -314,13 +318,15 @@ def eigen_table(
         Mesh kind (see :func:`twoball.fem_membrane.build.build_space`).
     level, elements : int, optional
         Sphere level (``--level``) or axisymmetric element count (``--elements``).
-    order : {1, 2}
+    order : {1, 2, 3, 4}
         Element order (``--order``).
     count : int
         Number of nonzero eigenvalues listed (``--count``), >= 1.
     phi_a : float
         Position of the ring / axisymmetric node at the kink (no effect on the
         exact eigenvalues).
+    geometry : {"isoparametric", "exact"}
+        Discrete sphere (see :func:`twoball.fem_membrane.build.build_space`).
 
     Returns
     -------
@@ -335,7 +341,9 @@ def eigen_table(
 
     if isinstance(count, bool) or int(count) != count or count < 1:
         raise ParameterError("count", "an integer >= 1", count)
-    space = build_space(mesh, level=level, elements=elements, order=order, phi_a=phi_a)
+    space = build_space(
+        mesh, level=level, elements=elements, order=order, phi_a=phi_a, geometry=geometry
+    )
     axisymmetric = space.kind == "axisym"
     if axisymmetric:
         degrees = np.arange(count + 1)

@@ -14,7 +14,14 @@ geometry is Lagrange-interpolated from nodes: P1 (flat triangles) or P2, P3, P4
 order p is ``x(xi) = sum_k x_k phi_k(xi)`` over the element's geometry nodes
 ``x_k`` and the reference Lagrange basis ``phi_k`` of scikit-fem's
 ``ElementTriP{p}``, and ``J`` is the same sum over the basis gradients.
-Dimensionless.
+
+:class:`RadialProjectionMapping` is the exact sphere instead: the reference
+triangle goes affinely onto the flat triangle of the element's three vertices,
+``y(xi) = a + (b - a) xi_1 + (c - a) xi_2``, and then radially onto the unit
+sphere, ``x = y / |y|``, with ``J = (I - x x^T) J_y / |y|`` (the derivative of
+``y / |y|``).  The discrete surface is the sphere itself, so no geometric error
+remains; its images of the equispaced reference nodes are the nodes of
+:func:`twoball.fem_membrane.mesh.elevate`.  Dimensionless.
 """
 
 from __future__ import annotations
@@ -113,3 +120,55 @@ class SurfaceMapping(Mapping):
 
     def normals(self, X, tind, find, t2f):  # noqa: D102 - closed surfaces have no facets
         raise NotImplementedError("SurfaceMapping: a closed surface has no boundary facets")
+
+
+class RadialProjectionMapping(SurfaceMapping):
+    """Exact map of reference triangles onto the unit sphere: flat triangle, then ``y / |y|``.
+
+    Parameters
+    ----------
+    vertices : ndarray, shape (3, V)
+        Triangle vertices (on the unit sphere; only their directions matter).
+    triangles : ndarray, shape (3, T)
+        Vertex indices per element, counter-clockwise seen from outside.
+
+    Notes
+    -----
+    ``x(xi) = y(xi) / |y(xi)|`` with ``y`` the affine map onto the flat triangle
+    of the three vertices, and ``J = (I - x x^T) J_y / |y|``, where the columns
+    of ``J_y`` are the edge vectors ``b - a`` and ``c - a``.  Every point of the
+    element lies on the unit sphere, so the area element and the tangential
+    gradients are those of the sphere itself (the geometric error of
+    isoparametric elements is absent).  Used with any element order.
+    """
+
+    def __init__(self, vertices: np.ndarray, triangles: np.ndarray) -> None:
+        from skfem import ElementTriP1
+
+        super().__init__(vertices, triangles, ElementTriP1())
+
+    def _flat(self, X: np.ndarray, tind: np.ndarray | None) -> tuple[np.ndarray, np.ndarray]:
+        """Flat points y (3, T, Q) and edge vectors J_y (3, 2, T)."""
+        elements = self._select(tind)
+        a, b, c = (self.nodes[:, elements[k]] for k in range(3))
+        edges = np.stack([b - a, c - a], axis=1)  # (3, 2, T)
+        y = a[:, :, None] + np.einsum("ijt,jq->itq", edges, X)
+        return y, edges
+
+    def F(self, X: np.ndarray, tind: np.ndarray | None = None) -> np.ndarray:
+        """Points on the unit sphere x(xi) = y / |y|, shape (3, T, Q)."""
+        y, _ = self._flat(self._check_points(X), tind)
+        return y / np.linalg.norm(y, axis=0)[None]
+
+    def DF(self, X: np.ndarray, tind: np.ndarray | None = None) -> np.ndarray:
+        """Jacobian ``(I - x x^T) J_y / |y|``, shape (3, 2, T, Q) (cached)."""
+        X = self._check_points(X)
+        key = (X.tobytes(), X.shape, None if tind is None else np.asarray(tind).tobytes())
+        if key not in self._cache:
+            y, edges = self._flat(X, tind)
+            norm = np.linalg.norm(y, axis=0)  # (T, Q)
+            x = y / norm[None]
+            along = np.einsum("itq,ijt->jtq", x, edges)  # x . (J_y)_j
+            out = (edges[:, :, :, None] - x[:, None] * along[None]) / norm[None, None]
+            self._cache = {key: out}
+        return self._cache[key]

@@ -89,6 +89,7 @@ def modal_model(
     order: int = 2,
     initial: str = "projection",
     route: str = "full",
+    geometry: str = "isoparametric",
 ) -> ModalModel:
     """Assemble, project F (eq. (3.10)) and build the filtered modal series.
 
@@ -98,7 +99,8 @@ def modal_model(
     Krylov method of :mod:`twoball.fem_membrane.krylov` (pole motion exact to 1e-10
     relative; no eigenvector set, ``pairs`` is None); ``route="auto"`` takes
     Krylov from :data:`twoball.fem_membrane.krylov.AUTO_THRESHOLD` DOFs on.  See
-    :func:`fem_pole_motion`.
+    :func:`fem_pole_motion`.  ``geometry`` is that of
+    :func:`twoball.fem_membrane.build.build_space`.
     """
     phi_a = _check_phi_a(phi_a)
     damping = check_damping(damping)
@@ -107,7 +109,9 @@ def modal_model(
     seconds = {}
     check_fem(mesh, level, elements, order, filter.modes, route)  # before any allocation
     start = clock.perf_counter()
-    space = build_space(mesh, level=level, elements=elements, order=order, phi_a=phi_a)
+    space = build_space(
+        mesh, level=level, elements=elements, order=order, phi_a=phi_a, geometry=geometry
+    )
     moments = initial_moments(space, phi_a, initial)
     seconds["assembly"] = clock.perf_counter() - start
     route = choose_route(route, space.dofs)
@@ -203,6 +207,7 @@ def fem_pole_motion(
     initial: str = "projection",
     rayleigh_frequencies: tuple[float, float] | None = None,
     route: str = "auto",
+    geometry: str = "isoparametric",
 ) -> tuple[PoleMotion, dict[str, Any]]:
     """Pole motion of the damped membrane from finite elements (dimensionless).
 
@@ -230,6 +235,9 @@ def fem_pole_motion(
     order : {1, 2, 3, 4}, optional
         P1 on flat triangles or isoparametric P2, P3, P4 (``--order``); None with a
         SphereMesh: the mesh's own order.
+    geometry : {"isoparametric", "exact"}
+        The order-p interpolant of the sphere, or the sphere itself (icosphere
+        and SphereMesh only; ``--geometry``).
     scheme : {"modal", "alpha"}
         Modal superposition or generalized-alpha stepping (``--scheme``).
     route : {"auto", "full", "krylov"}
@@ -292,6 +300,7 @@ def fem_pole_motion(
         order=order,
         initial=initial,
         route=route,
+        geometry=geometry,
     )
     space, pairs, series = model.space, model.pairs, model.series
     next_value = None if pairs is None else pairs.next_value
@@ -304,6 +313,7 @@ def fem_pole_motion(
         "mesh_kind": space.kind,
         "omega_max": series.max_frequency,
         "order": space.order,
+        "geometry": space.geometry,
         "time_scheme": scheme,
         "damping_model": damping_model,
         "initial": initial,

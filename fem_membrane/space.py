@@ -23,10 +23,11 @@ import scipy.sparse as sp
 from skfem import CellBasis, ElementTriP1, ElementTriP2, ElementTriP3, ElementTriP4, MeshTri1, asm
 from skfem.assembly import Dofs
 from skfem.element import Element
+from twoball.modal.errors import ParameterError
 
-from .checks import check_order
+from .checks import GEOMETRIES, check_choice, check_order
 from .forms import mass, stiffness
-from .mapping import SurfaceMapping
+from .mapping import RadialProjectionMapping, SurfaceMapping
 from .mesh import SphereMesh, elevate, flatten, locate_pole, topology
 
 PoleFunctional = int | sp.spmatrix
@@ -37,6 +38,8 @@ TRIANGLE_ELEMENTS = {1: ElementTriP1, 2: ElementTriP2, 3: ElementTriP3, 4: Eleme
 # triangles the integrands are rational (sqrt det G, G^-1), integrated with
 # degree 2p + 2: the polynomial part u v is of degree 2p, the metric adds two
 SURFACE_INTORDER = {1: 2, 2: 6, 3: 8, 4: 10}
+# on the exact sphere the metric is rational for every order: degree 2p + 2 for P1 too
+EXACT_INTORDER = {1: 4, 2: 6, 3: 8, 4: 10}
 
 
 def sphere_polar_cosine(x: np.ndarray) -> np.ndarray:
@@ -75,6 +78,11 @@ class Discretisation:
         Global coordinates (shape (dim, ...)) to cos(phi).
     kink : float or None
         ``cos(phi_a)`` if the mesh has nodes (or a ring of edges) there.
+    geometry : {"isoparametric", "exact"}
+        Discrete surface of the sphere spaces: the Lagrange interpolant of order
+        ``order`` through the nodes, or the sphere itself
+        (:class:`~twoball.fem_membrane.mapping.RadialProjectionMapping`); the
+        axisymmetric line is exact either way.
     """
 
     basis: CellBasis
@@ -87,6 +95,7 @@ class Discretisation:
     measure: float
     polar_cosine: Callable[[np.ndarray], np.ndarray]
     kink: float | None = None
+    geometry: str = "isoparametric"
 
     def __post_init__(self) -> None:
         self.pole_row = pole_functional(self.pole_row, self.dofs)
@@ -152,20 +161,22 @@ def pole_vector(pole: PoleFunctional, dofs: int) -> np.ndarray:
     return out
 
 
-def surface_pole_row(basis: CellBasis, mesh: SphereMesh) -> sp.csr_matrix:
+def surface_pole_row(basis: CellBasis, mesh: SphereMesh, exact: bool = False) -> sp.csr_matrix:
     """Pole functional of a sphere basis: basis values at the pole (0, 0, 1) of ``mesh``.
 
     With a node at the pole it is the unit row of that node's degree of freedom
     (as for every generated mesh); otherwise the pole is located in its element
     by :func:`twoball.fem_membrane.mesh.locate_pole` and the row holds the values
-    of that element's basis functions there (they sum to 1).  Dimensionless.
+    of that element's basis functions there (they sum to 1).  With the exact
+    geometry (``exact``) the pole is located on the flat triangles, whose radial
+    projection the elements are.  Dimensionless.
     """
     node = mesh.pole_node
     if node is not None:
         element, local = np.argwhere(mesh.cells == node)[0]
         if local < basis.Nbfun:  # the node is one of the element's own nodes
             return pole_functional(int(basis.element_dofs[local, element]), basis.N)
-    element, xi = locate_pole(mesh)
+    element, xi = locate_pole(flatten(mesh) if exact else mesh)
     point = xi[:, None]
     values = np.array([basis.elem.lbasis(point, i)[0][0] for i in range(basis.Nbfun)])
     dofs = basis.element_dofs[:, element]
@@ -202,17 +213,27 @@ def oriented_dofs(topo: MeshTri1, elem: Element) -> Dofs:
     return dofs
 
 
-def surface_basis(mesh: SphereMesh, order: int, intorder: int | None = None) -> CellBasis:
-    """scikit-fem basis of Lagrange order ``order`` on ``mesh`` with its own geometry.
+def surface_basis(
+    mesh: SphereMesh, order: int, intorder: int | None = None, geometry: str = "isoparametric"
+) -> CellBasis:
+    """scikit-fem basis of Lagrange order ``order`` on ``mesh``.
 
-    The geometry is the mesh's: flat for an order-1 mesh, curved for orders 2
-    to 4; an order-p element on an order-p mesh is isoparametric.  Degrees of
-    freedom are numbered by :func:`oriented_dofs`.  Quadrature degree
-    :data:`SURFACE_INTORDER` of the higher of the two orders unless given.
+    ``geometry="isoparametric"``: the mesh's own geometry, flat for an order-1
+    mesh, curved for orders 2 to 4 (an order-p element on an order-p mesh is
+    isoparametric); quadrature degree :data:`SURFACE_INTORDER` of the higher of
+    the two orders.  ``geometry="exact"``: the unit sphere itself through
+    :class:`~twoball.fem_membrane.mapping.RadialProjectionMapping` of the mesh's
+    triangles, quadrature degree :data:`EXACT_INTORDER`.  Degrees of freedom are
+    numbered by :func:`oriented_dofs`.
     """
     order = check_order(order)
-    geometry = TRIANGLE_ELEMENTS[mesh.order]()
-    mapping = SurfaceMapping(mesh.points.T, mesh.cells.T, geometry)
+    geometry = check_choice("geometry", geometry, GEOMETRIES)
+    if geometry == "exact":
+        mapping = RadialProjectionMapping(mesh.points[: mesh.vertex_count].T, mesh.triangles.T)
+        intorder = EXACT_INTORDER[order] if intorder is None else intorder
+    else:
+        lagrange = TRIANGLE_ELEMENTS[mesh.order]()
+        mapping = SurfaceMapping(mesh.points.T, mesh.cells.T, lagrange)
     if intorder is None:
         intorder = max(SURFACE_INTORDER[order], SURFACE_INTORDER[mesh.order])
     topo = topology(mesh)
@@ -231,15 +252,25 @@ def dof_nodes(basis: CellBasis, mesh: SphereMesh) -> np.ndarray:
     return nodes
 
 
-def sphere_space(mesh: SphereMesh, order: int | None = None) -> Discretisation:
-    """Isoparametric space on a sphere mesh: order 1 flat, orders 2 to 4 curved.
+def sphere_space(
+    mesh: SphereMesh, order: int | None = None, geometry: str = "isoparametric"
+) -> Discretisation:
+    """Space on a sphere mesh: isoparametric (order 1 flat, 2 to 4 curved) or on the exact sphere.
 
     Parameters
     ----------
     mesh : SphereMesh
         Any order; it is flattened or elevated to ``order``.
     order : {1, 2, 3, 4}, optional
-        Element and geometry order (default: the mesh's).
+        Element (and isoparametric geometry) order (default: the mesh's).
+    geometry : {"isoparametric", "exact"}
+        The order-p interpolant of the sphere through the mesh's nodes, or the
+        sphere itself (radial projection of the flat triangles, see
+        :class:`~twoball.fem_membrane.mapping.RadialProjectionMapping`); with
+        ``exact`` only the mesh's vertices are used and its nodes are rebuilt as
+        the images of the reference nodes.  A ring sphere keeps its ring edges
+        on the circle of latitude, which the radial projection would not:
+        ``exact`` is refused there.
 
     Returns
     -------
@@ -247,13 +278,22 @@ def sphere_space(mesh: SphereMesh, order: int | None = None) -> Discretisation:
         K, M of eq. (3.9) on the discrete sphere (dimensionless).
     """
     order = mesh.order if order is None else check_order(order)
+    geometry = check_choice("geometry", geometry, GEOMETRIES)
+    exact = geometry == "exact"
+    if exact and mesh.ring is not None:
+        raise ParameterError(
+            "geometry", "isoparametric on the ring sphere (its ring edges follow phi_a)", geometry
+        )
+    if exact:
+        mesh = flatten(mesh)  # nodes rebuilt from the vertices: the exact images
     mesh = elevate(mesh, order) if order > 1 else flatten(mesh)
-    basis = surface_basis(mesh, order)
+    basis = surface_basis(mesh, order, geometry=geometry)
     K = asm(stiffness, basis).tocsr()
     M = asm(mass, basis).tocsr()
-    pole = surface_pole_row(basis, mesh)
+    pole = surface_pole_row(basis, mesh, exact)
     kind = "sphere" if mesh.ring is None else "ring"
     kink = None if mesh.ring is None else float(np.cos(mesh.ring))
+    name = f"{mesh.name}, P{order}" + (", exact geometry" if exact else "")
     return Discretisation(
-        basis, K, M, pole, kind, order, f"{mesh.name}, P{order}", 1.0, sphere_polar_cosine, kink
+        basis, K, M, pole, kind, order, name, 1.0, sphere_polar_cosine, kink, geometry
     )

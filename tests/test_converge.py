@@ -142,12 +142,46 @@ def test_axisym_h_study_orders(order, expected):
     assert q["strain_energy"].checked_order == pytest.approx(order + 1.0, abs=0.3)
 
 
-def test_axisym_order_study_compares_p1_and_p2_at_equal_dofs():
+def test_axisym_order_study_compares_p1_to_p4_at_equal_dofs():
     study = run_order_study(preset("basketball"), mesh="axisym", levels=(2, 3, 4))
     assert study.passed
     keys = {q.spec.key for q in study.quantities}
     assert {"v_l (P1)", "v_l (P2)", "lambda_6 (P1)", "lambda_6 (P2)"} <= keys
+    assert {"t_l (P3)", "t_l (P4)", "pole_l2 (P3)", "pole_l2 (P4)"} <= keys
     assert any("times smaller with P2" in note for note in study.notes)
+    q = _by_key(study)
+    # equal unknowns (P3 up to rounding of 2E/3 elements), and each order's own 2p
+    for p in (1, 2, 3, 4):
+        assert np.allclose(q[f"t_l (P{p})"].dofs, q["t_l (P2)"].dofs, rtol=0.01)
+    assert q["pole_l2 (P3)"].checked_order == pytest.approx(6.0, abs=0.5)
+    assert q["pole_l2 (P4)"].checked_order == pytest.approx(8.0, abs=0.6)
+    # at equal unknowns (401) each order lowers the t_l error by orders of magnitude, down to
+    # round-off (measured 9.0e-6, 2.2e-9, 1.0e-12, 1.1e-13)
+    finest = [q[f"t_l (P{p})"].relative_errors[-1] for p in (1, 2, 3, 4)]
+    assert finest[0] > 100 * finest[1] > 1e4 * finest[2] and finest[3] <= finest[2], finest
+    assert all("seconds" in row for row in study.runs[1:])
+
+
+@pytest.mark.parametrize(("order", "levels"), [(3, (0, 1, 2, 3)), (4, (0, 1, 2))])
+def test_axisym_h_study_at_p3_p4_converges_at_2p(order, levels):
+    """The line has no geometric error: t_l, v_l and the trajectory at 2p (+-0.5)."""
+    study = run_h_study(preset("basketball"), mesh="axisym", order=order, levels=levels)
+    assert study.passed, [(q.spec.key, q.checked_order) for q in study.quantities if not q.passed]
+    q = _by_key(study)
+    for key in ("t_l", "v_l", "pole_l2"):
+        assert q[key].checked_order == pytest.approx(2.0 * order, abs=0.5), key
+    assert q["strain_energy"].checked_order == pytest.approx(order + 1.0, abs=0.5)
+
+
+def test_converge_cli_takes_orders_3_4_and_the_exact_geometry(capsys, tmp_path):
+    code, stdout, _ = run(
+        capsys, "converge", "--study", "h", "--mesh", "sphere", "--order", "3", "--geometry",
+        "exact", "--levels", "1:2", "--out", str(tmp_path / "h"), "--json",
+    )  # fmt: skip
+    data = json.loads(stdout)
+    labels = [row["label"] for row in data["runs"][1:]]
+    assert labels == ["sphere P3 L1 exact", "sphere P3 L2 exact"] and code in (0, 1)
+    assert "exact" in data["title"]
 
 
 def test_dt_study_is_second_order_for_generalized_alpha():

@@ -307,3 +307,15 @@ def test_field_files_and_pictures_refuse_p3_p4_in_one_line(tmp_path, capsys, arg
     err = capsys.readouterr().err
     assert stop.value.code == 2
     assert len(err.strip().splitlines()) == 1 and "--order" in err and "Traceback" not in err
+
+
+@pytest.mark.slow
+def test_lowest_eigenpairs_with_a_tie_across_the_cut():
+    """P3 level 2, 676 pairs (plot eigen's default there): a multiple eigenvalue straddles the
+    cut, which deflation used to chase for ever; against the dense generalized solver."""
+    from scipy.linalg import eigh
+
+    space = sphere_space(icosphere(2, 3))
+    values = lowest_eigenpairs(space.stiffness, space.mass, 676).values
+    dense = eigh(space.stiffness.toarray(), space.mass.toarray(), eigvals_only=True)[:676]
+    assert np.allclose(values, dense, rtol=1e-9, atol=1e-9)

@@ -180,6 +180,7 @@ def test_save_figure_checks_the_path(model, tmp_path):
         ["waterfall", "--level", "1", "--instants", "6"],
         ["pole", "--level", "1", "--backend", "legendre"],
         ["eigen", "--levels", "0,1", "--orders", "1,2"],
+        ["eigen", "--levels", "0,1", "--orders", "3,4"],
     ],
 )
 def test_cli_plot(tmp_path, capsys, argv):
@@ -196,7 +197,7 @@ def test_cli_plot(tmp_path, capsys, argv):
         (["pole", "--backend", "abaqus"], "--backend"),
         (["waterfall", "--instants", "1"], "--instants"),
         (["eigen", "--levels", "x"], "--levels"),
-        (["eigen", "--orders", "3"], "--orders"),
+        (["eigen", "--orders", "5"], "--orders"),
         (["eigen", "--levels", "1", "--max-degree", "0"], "--max-degree"),
         (["pole", "--level", "-2"], "--level"),
     ],

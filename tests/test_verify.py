@@ -162,3 +162,26 @@ def test_out_refuses_a_folder_that_is_not_a_report(tmp_path):
     assert (report / MARKER).is_file()
     write_report_dir(report, {"a.txt": lambda p: p.write_text("2")})  # an earlier report
     assert (report / "a.txt").read_text() == "2"
+
+
+def test_thorough_runs_p3_and_p4_and_their_line_checks_pass():
+    """verify --thorough has P3 and P4 on the line and the sphere (full and Krylov routes).
+
+    The line's P3/P4 targets are run here through the same checks (measured
+    lift-off 6.6e-12 and 1.3e-13, eigenvalues 6.3e-12 and 2.0e-13 against their
+    bounds); the sphere targets belong to the thorough run (minutes).
+    """
+    thorough = config("thorough")
+    specs = [t.spec for t in thorough.fem]
+    assert {(s.mesh, s.order) for s in specs} >= {
+        ("axisym", 3), ("axisym", 4), ("sphere", 3), ("sphere", 4)
+    }  # fmt: skip
+    assert {(t.spec.order, t.spec.geometry) for t in thorough.krylov} >= {
+        (4, "isoparametric"), (4, "exact")
+    }  # fmt: skip
+    line = tuple(t for t in thorough.fem if t.spec.mesh == "axisym" and t.spec.order > 2)
+    small = type(thorough)("p34", line, ())
+    result = run_verify(preset("basketball"), configuration=small)
+    assert result.passed, [(c.name, c.value) for c in result.checks if not c.passed]
+    names = {c.name for c in result.checks}
+    assert {"lift-off axisym P3 200 el.", "eigenvalues axisym P4 100 el."} <= names

@@ -28,6 +28,7 @@ def solve(
     elements: int | None = None,
     order: int | None = None,
     pole: Any = None,
+    geometry: str | None = None,
     scheme: str | None = None,
     dt: float | None = None,
     route: str | None = None,
@@ -52,10 +53,14 @@ def solve(
         Sphere refinement level >= 0 (default 3); not with ``axisym`` or a file.
     elements : int, optional
         Elements >= 2 of ``axisym`` (default 400); not with a sphere.
-    order : {1, 2}, optional
+    order : {1, 2, 3, 4}, optional
         Element and geometry order (default 2; a file: its own).
     pole : (x, y, z) or "X,Y,Z", optional
         Pole direction of a mesh file, in its frame (default +z).
+    geometry : {"isoparametric", "exact"}, optional
+        Discrete sphere: the order-p interpolant through the nodes (default),
+        or the exact sphere (radial projection of the flat triangles; not on
+        the ring sphere or the axisymmetric line).
     scheme : {"modal", "alpha"}, optional
         Modal superposition, eqs. (3.14)-(3.16) (default), or generalized-alpha stepping.
     dt : float, optional
@@ -83,7 +88,9 @@ def solve(
     from twoball.modal.report import report_liftoff, t_end_dimensionless
 
     case = Case.preset("basketball") if case is None else case
-    spec = MeshOptions.resolve(mesh, level=level, elements=elements, order=order, pole=pole)
+    spec = MeshOptions.resolve(
+        mesh, level=level, elements=elements, order=order, pole=pole, geometry=geometry
+    )
     scheme = "modal" if scheme is None else scheme
     if scheme == "modal":
         if dt is not None:
@@ -131,12 +138,14 @@ def solve(
         dt=dt_scaled,
         t_end=t_end_dimensionless(case, t_end),
         route="auto" if route is None else route,
+        geometry=spec.geometry,
     )
     extra: dict[str, Any] = {
         "dofs": info["dofs"],
         "modes_used": info["modes_used"],
         "mesh": info["mesh"],
         "order": info["order"],
+        "geometry": info["geometry"],
         "time_scheme": info["time_scheme"],
         "route": info["route"],
         "damping_model": info["damping_model"],
@@ -198,6 +207,7 @@ def eigen(
     elements: int | None = None,
     order: int | None = None,
     pole: Any = None,
+    geometry: str | None = None,
     count: int = 25,
     progress: Step | None = None,
 ) -> list[dict[str, float | int]]:
@@ -211,7 +221,9 @@ def eigen(
     from twoball.budget import check, fem_dofs, fem_estimate, options
     from twoball.fem_membrane.eigen import eigen_table
 
-    spec = MeshOptions.resolve(mesh, level=level, elements=elements, order=order, pole=pole)
+    spec = MeshOptions.resolve(
+        mesh, level=level, elements=elements, order=order, pole=pole, geometry=geometry
+    )
     if isinstance(count, bool) or not isinstance(count, Integral) or count < 1:
         raise ParameterError("count", "an integer >= 1", count)
     if spec.kind != "file":  # refuse absurd meshes before building them
@@ -221,7 +233,12 @@ def eigen(
     (progress or silent)(f"{count} eigenvalues on {spec.label}")
     loaded = spec.load()
     if loaded is not None:
-        return eigen_table(mesh=loaded.mesh, order=None, count=count)
+        return eigen_table(mesh=loaded.mesh, order=None, count=count, geometry=spec.geometry)
     return eigen_table(
-        mesh=spec.kind, level=spec.level, elements=spec.elements, order=spec.order, count=count
+        mesh=spec.kind,
+        level=spec.level,
+        elements=spec.elements,
+        order=spec.order,
+        count=count,
+        geometry=spec.geometry,
     )

@@ -4,9 +4,10 @@ Every entry point that takes a mesh -- :func:`twoball.liftoff` with the FE
 backend, :func:`twoball.fem.solve`, :func:`twoball.fem.eigen`,
 :func:`twoball.export`, :func:`twoball.render`, :func:`twoball.plot` and the
 command-line subcommands built on them -- resolves its ``mesh``, ``level``,
-``elements``, ``order`` and ``pole`` arguments here, so the defaults and the
-refusals (``level`` on the axisymmetric line or a mesh file, ``elements`` on a
-sphere, ``pole`` without a mesh file) are the same everywhere.  ``mesh`` is a
+``elements``, ``order``, ``pole`` and ``geometry`` arguments here, so the
+defaults and the refusals (``level`` on the axisymmetric line or a mesh file,
+``elements`` on a sphere, ``pole`` without a mesh file, the exact geometry on
+the ring sphere and the line) are the same everywhere.  ``mesh`` is a
 kind name or the user's own sphere: a file path (any format meshio reads), a
 ``meshio.Mesh`` or a scikit-fem ``MeshTri``, read by
 :func:`twoball.fem_membrane.mesh_input.load_sphere_mesh`.  No numerical library
@@ -29,6 +30,10 @@ SPHERE_KINDS: tuple[str, ...] = ("sphere", "ring")
 DEFAULT_LEVEL = 3  # icosphere refinement level (1280 triangles)
 DEFAULT_ELEMENTS = 400  # elements of the axisymmetric line
 DEFAULT_ORDER = 2  # isoparametric P2
+ORDERS: tuple[int, ...] = (1, 2, 3, 4)
+#: Discrete sphere: the order-p interpolant through the nodes, or the sphere itself.
+GEOMETRIES: tuple[str, ...] = ("isoparametric", "exact")
+DEFAULT_GEOMETRY = "isoparametric"
 FILE = "file"  # the kind of a user's mesh (path, meshio.Mesh, scikit-fem MeshTri)
 
 
@@ -51,12 +56,16 @@ class MeshOptions:
         Sphere refinement level >= 0 (None on the axisymmetric line and files).
     elements : int or None
         Line elements >= 2 of ``axisym`` (None on the spheres).
-    order : {1, 2} or None
+    order : {1, 2, 3, 4} or None
         Element and geometry order (None for a file: the file's own).
     source : path, meshio.Mesh or scikit-fem mesh, optional
         The user's mesh (kind ``file``).
     pole : (float, float, float) or "X,Y,Z", optional
         Pole direction in the frame of ``source`` (default +z).
+    geometry : {"isoparametric", "exact"}
+        Discrete sphere: the Lagrange interpolant of order ``order`` through the
+        nodes, or the exact sphere (radial projection of the flat triangles;
+        sphere and file meshes only).
     """
 
     kind: str = "sphere"
@@ -65,6 +74,7 @@ class MeshOptions:
     order: int | None = DEFAULT_ORDER
     source: Any = None
     pole: Any = None
+    geometry: str = DEFAULT_GEOMETRY
 
     @classmethod
     def resolve(
@@ -75,6 +85,7 @@ class MeshOptions:
         elements: int | None = None,
         order: int | None = None,
         pole: Any = None,
+        geometry: str | None = None,
         kinds: tuple[str, ...] = MESH_KINDS,
         files: bool = True,
     ) -> MeshOptions:
@@ -90,25 +101,33 @@ class MeshOptions:
         elements : int, optional
             Elements >= 2 of ``axisym`` (default 400); refused on a sphere.
         order : int, optional
-            1 or 2 (default 2; a file: its own order).
+            1, 2, 3 or 4 (default 2; a file: its own order).
         pole : (x, y, z) or "X,Y,Z", optional
             Pole direction of a mesh file (default +z); refused with a kind name.
+        geometry : {"isoparametric", "exact"}, optional
+            Default isoparametric; ``exact`` is refused on the ring sphere (its
+            ring edges follow the latitude phi_a) and the axisymmetric line
+            (straight, exact already).
         kinds : tuple of str
             The kinds the caller can use (export and render need a sphere).
         files : bool
             Whether the caller takes the user's meshes.
         """
         if order is not None and (
-            isinstance(order, bool) or not isinstance(order, Integral) or order not in (1, 2)
+            isinstance(order, bool) or not isinstance(order, Integral) or order not in ORDERS
         ):
-            raise ParameterError("order", "1 or 2", order)
+            raise ParameterError("order", "1, 2, 3 or 4", order)
+        geometry = DEFAULT_GEOMETRY if geometry is None else geometry
+        if geometry not in GEOMETRIES:
+            raise ParameterError("geometry", "one of " + ", ".join(GEOMETRIES), geometry)
         if _is_source(mesh):
             if not files:
                 raise ParameterError("mesh", "one of " + ", ".join(kinds) + " here", str(mesh))
             for name, value in (("level", level), ("elements", elements)):
                 if value is not None:
                     raise ParameterError(name, "left out with a mesh file (its own size)", value)
-            return cls(FILE, None, None, None if order is None else int(order), mesh, pole)
+            order = None if order is None else int(order)
+            return cls(FILE, None, None, order, mesh, pole, geometry)
         kind = "sphere" if mesh is None else mesh
         if kind not in kinds:
             valid = "one of " + ", ".join(kinds)
@@ -116,6 +135,9 @@ class MeshOptions:
         if pole is not None:
             raise ParameterError("pole", "left out unless the mesh is a file", pole)
         order = DEFAULT_ORDER if order is None else order
+        if geometry == "exact" and kind != "sphere":
+            why = "its ring edges follow phi_a" if kind == "ring" else "its line is exact"
+            raise ParameterError("geometry", f"isoparametric with mesh {kind} ({why})", geometry)
         if kind == "axisym":
             if level is not None:
                 raise ParameterError(
@@ -128,16 +150,22 @@ class MeshOptions:
                 "elements", f"left out with mesh {kind} (its size is level)", elements
             )
         size = DEFAULT_LEVEL if level is None else level
-        return cls(kind, _integer("level", size, 0, "an integer >= 0"), None, int(order))
+        level = _integer("level", size, 0, "an integer >= 0")
+        return cls(kind, level, None, int(order), geometry=geometry)
 
     @property
     def label(self) -> str:
-        """Short description, e.g. ``sphere L3 P2``, ``axisym 400 P2`` or ``file ball.msh``."""
+        """Short description, e.g. ``sphere L3 P2``, ``axisym 400 P2`` or ``file ball.msh``.
+
+        ``exact`` is appended with the exact geometry.
+        """
+        exact = " exact" if self.geometry == "exact" else ""
         if self.kind == FILE:
             name = self.source if isinstance(self.source, (str, os.PathLike)) else "mesh"
-            return f"file {Path(name).name}" + ("" if self.order is None else f" P{self.order}")
+            order = "" if self.order is None else f" P{self.order}"
+            return f"file {Path(name).name}{order}{exact}"
         size = f"L{self.level}" if self.elements is None else f"{self.elements}"
-        return f"{self.kind} {size} P{self.order}"
+        return f"{self.kind} {size} P{self.order}{exact}"
 
     def load(self) -> Any:
         """The user's mesh, checked and on the unit sphere (:class:`MeshInput`), or None."""

@@ -45,6 +45,7 @@ def converge(
     order: int | None = None,
     levels: str | None = None,
     modes_list: str | None = None,
+    geometry: str | None = None,
     sigma: str = "lanczos",
     recontact: str = "window",
     t_end: float | None = None,
@@ -61,8 +62,11 @@ def converge(
         Mesh refinement, P1 against P2, Legendre truncation N, or time step.
     mesh : {"sphere", "axisym"}, optional
         Default sphere (axisym for ``dt``); not used by ``modes``.
-    order : {1, 2}, optional
-        Default 1 (2 for ``dt``).
+    order : {1, 2, 3, 4}, optional
+        Default 1 (2 for ``dt``); ``order`` runs P1 to P4 and takes none.
+    geometry : {"isoparametric", "exact"}, optional
+        Discrete sphere of ``h`` and ``order`` on the sphere (default
+        isoparametric); refused on the line and with ``modes`` and ``dt``.
     levels : str, optional
         ``"A:B"``; default per study and mesh.
     modes_list : str, optional
@@ -102,8 +106,16 @@ def converge(
         raise ParameterError("mesh", "one of sphere, axisym", mesh)
     if order is None:
         order = 2 if study == "dt" else 1
-    if order not in (1, 2) or isinstance(order, bool):
-        raise ParameterError("order", "1 or 2", order)
+    if order not in (1, 2, 3, 4) or isinstance(order, bool):
+        raise ParameterError("order", "1, 2, 3 or 4", order)
+    if geometry is not None:
+        if geometry not in ("isoparametric", "exact"):
+            raise ParameterError("geometry", "one of isoparametric, exact", geometry)
+        if study not in ("h", "order") or mesh != "sphere":
+            raise ParameterError(
+                "geometry", "left out except with study h or order on the sphere", geometry
+            )
+    geometry = "isoparametric" if geometry is None else geometry
     if study == "modes":
         if levels is not None:
             raise ParameterError("levels", "left out with study modes (use modes_list)", levels)
@@ -122,9 +134,11 @@ def converge(
         extra = {} if mode_list is None else {"modes": mode_list}
         result = run_modes_study(case, **common, **extra)
     elif study == "h":
-        result = run_h_study(case, mesh=mesh, order=order, levels=level_list, **common)
+        result = run_h_study(
+            case, mesh=mesh, order=order, levels=level_list, geometry=geometry, **common
+        )
     elif study == "order":
-        result = run_order_study(case, mesh=mesh, levels=level_list, **common)
+        result = run_order_study(case, mesh=mesh, levels=level_list, geometry=geometry, **common)
     else:
         result = run_dt_study(case, mesh=mesh, order=order, levels=level_list, **common)
     from twoball.provenance import block

@@ -34,6 +34,7 @@ def liftoff(
     elements: int | None = None,
     order: int | None = None,
     pole: Any = None,
+    geometry: str | None = None,
     scheme: str | None = None,
     dt: float | None = None,
     route: str | None = None,
@@ -55,7 +56,7 @@ def liftoff(
         Re-contact horizon of criterion (ii), §3(a).
     t_end : float, optional
         Modelled window [s] (default 4 pi / c).
-    mesh, level, elements, order, pole, scheme, dt, route, damping_model
+    mesh, level, elements, order, pole, geometry, scheme, dt, route, damping_model
         Finite-element options (see :func:`twoball.fem.solve`; ``mesh`` may be a
         kind name or the user's mesh: a file path, ``meshio.Mesh`` or ``MeshTri``);
         refused with ``backend="legendre"``.
@@ -78,6 +79,7 @@ def liftoff(
         "elements": elements,
         "order": order,
         "pole": pole,
+        "geometry": geometry,
         "scheme": scheme,
         "dt": dt,
         "route": route,

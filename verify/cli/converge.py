@@ -46,6 +46,7 @@ def run(args: argparse.Namespace) -> int:
         "study": args.study,
         "mesh": args.mesh,
         "order": args.order,
+        "geometry": args.geometry,
         "levels": args.levels,
         "modes_list": args.modes_list,
         "sigma": args.sigma,
@@ -83,7 +84,7 @@ def register(parser: argparse.ArgumentParser) -> None:
         "--study",
         required=True,
         choices=STUDIES,
-        help="h: mesh refinement; order: P1 against P2; modes: Legendre N; dt: time step",
+        help="h: mesh refinement; order: P1 to P4 at equal DOFs; modes: Legendre N; dt: time step",
     )
     parser.add_argument(
         "--mesh",
@@ -93,8 +94,13 @@ def register(parser: argparse.ArgumentParser) -> None:
     parser.add_argument(
         "--order",
         type=int,
-        choices=(1, 2),
+        choices=(1, 2, 3, 4),
         help="element order P (default: 1; 2 for --study dt)",
+    )
+    parser.add_argument(
+        "--geometry",
+        help="--study h|order on the sphere: isoparametric (default) or exact (the sphere "
+        "itself, radial projection of the flat triangles)",
     )
     parser.add_argument(
         "--levels",

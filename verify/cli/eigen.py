@@ -48,7 +48,7 @@ def run(args: argparse.Namespace) -> int:
 
 def register(parser: argparse.ArgumentParser) -> None:
     """The options of ``twoball eigen``."""
-    add_mesh_options(parser)
+    add_mesh_options(parser, geometry=True)
     parser.add_argument(
         "--count", type=int, default=25, help="nonzero eigenvalues listed (default 25)"
     )

@@ -46,6 +46,7 @@ FLAGS: dict[str, str] = {
     "count": "--count",
     "mesh_file": "--mesh-file",
     "pole": "--pole",
+    "geometry": "--geometry",
     # sweeps, studies, reports
     "values": "--values",
     "param": "--param",

@@ -104,7 +104,7 @@ def register(parser: argparse.ArgumentParser) -> None:
         "--backend", default="legendre", help="legendre (closed form, default) or fem"
     )
     add_case_options(parser)
-    add_mesh_options(parser)
+    add_mesh_options(parser, geometry=True)
     add_time_options(parser)
     parser.add_argument("--json", action="store_true", help="print one JSON object")
     parser.set_defaults(run=run)

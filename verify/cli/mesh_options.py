@@ -25,7 +25,7 @@ from twoball.mesh_options import (
 VALID_RANGES: dict[str, str] = {
     "--level": "an integer >= 0",
     "--elements": "an integer >= 2",
-    "--order": "1 or 2",
+    "--order": "1, 2, 3 or 4",
     "--dt": "a time step > 0 [s]",
 }
 _KIND_HELP = {
@@ -41,12 +41,14 @@ def add_mesh_options(
     *,
     initial: bool = False,
     files: bool = True,
+    geometry: bool = False,
 ) -> None:
     """``--mesh`` | ``--mesh-file`` (with ``--pole``), ``--level`` | ``--elements``, ``--order``.
 
     Defaults are None here: the public API fills them in (level 3, 400
     elements, order 2) and refuses options that do not apply.  ``--elements``
-    exists if ``axisym`` is a kind, ``--mesh-file`` and ``--pole`` if ``files``.
+    exists if ``axisym`` is a kind, ``--mesh-file`` and ``--pole`` if ``files``,
+    ``--geometry`` if ``geometry``.
     """
     group = parser.add_argument_group("finite-element mesh")
     which = group.add_mutually_exclusive_group()
@@ -77,8 +79,16 @@ def add_mesh_options(
             help=f"axisymmetric line elements >= 2 (default {DEFAULT_ELEMENTS})",
         )
     group.add_argument(
-        "--order", type=int, help=f"element and geometry order 1 or 2 (default {DEFAULT_ORDER})"
+        "--order",
+        type=int,
+        help=f"element and geometry order 1, 2, 3 or 4 (default {DEFAULT_ORDER})",
     )
+    if geometry:
+        group.add_argument(
+            "--geometry",
+            help="discrete sphere: isoparametric (order-p interpolant, default) or exact "
+            "(radial projection of the flat triangles; sphere and --mesh-file only)",
+        )
     if initial:
         group.add_argument(
             "--initial",
@@ -116,7 +126,7 @@ def mesh_arguments(args: argparse.Namespace) -> dict[str, Any]:
 
     ``--mesh-file PATH`` becomes ``mesh=Path(PATH)`` (a path, never a kind name).
     """
-    names = ("mesh", "level", "elements", "order", "pole", "initial")
+    names = ("mesh", "level", "elements", "order", "pole", "geometry", "initial")
     options = {n: getattr(args, n) for n in names if hasattr(args, n)}
     if getattr(args, "mesh_file", None) is not None:
         options["mesh"] = Path(args.mesh_file)

@@ -58,7 +58,7 @@ def run(args: argparse.Namespace) -> int:
         levels = parse_list(args.levels, "--levels", "comma-separated levels >= 0, e.g. 1,2")
     orders = None
     if args.orders is not None:
-        orders = parse_list(args.orders, "--orders", "comma-separated orders 1 or 2", {1, 2})
+        orders = parse_list(args.orders, "--orders", "comma-separated orders 1 to 4", {1, 2, 3, 4})
     if args.kind == "eigen":  # no case: every case option given is passed on and refused
         apply_limits(args)
         case = case_from_options(args) if case_options_given(args) else None

@@ -32,14 +32,26 @@ DEFAULT_LEVELS: dict[tuple[str, str, int], str] = {
     ("h", "sphere", 2): "1:4",
     ("h", "axisym", 1): "1:5",
     ("h", "axisym", 2): "1:5",
+    ("h", "sphere", 3): "1:3",
+    ("h", "sphere", 4): "1:3",
+    ("h", "axisym", 3): "0:3",
+    ("h", "axisym", 4): "0:2",
     ("order", "sphere", 1): "1:3",
     ("order", "sphere", 2): "1:3",
     ("order", "axisym", 1): "1:4",
     ("order", "axisym", 2): "1:4",
+    ("order", "sphere", 3): "1:3",
+    ("order", "sphere", 4): "1:3",
+    ("order", "axisym", 3): "1:4",
+    ("order", "axisym", 4): "1:4",
     ("dt", "sphere", 1): "1:4",
     ("dt", "sphere", 2): "1:4",
     ("dt", "axisym", 1): "1:4",
     ("dt", "axisym", 2): "1:4",
+    ("dt", "sphere", 3): "1:4",
+    ("dt", "sphere", 4): "1:4",
+    ("dt", "axisym", 3): "1:4",
+    ("dt", "axisym", 4): "1:4",
 }
 AXISYM_BASE_ELEMENTS = 25  # axisym "level" k has 25 * 2**k elements
 EIGEN_DEGREES = tuple(range(1, 7))  # l = 1..6 in every eigenvalue check
@@ -53,22 +65,26 @@ class FEMSpec:
     ----------
     mesh : {"sphere", "axisym"}
         Icosphere or the axisymmetric line x = cos(phi).
-    order : {1, 2}
-        Element (and, on the sphere, geometry) order.
+    order : {1, 2, 3, 4}
+        Element (and, on the isoparametric sphere, geometry) order.
     size : int
         Icosphere level, or number of axisymmetric elements.
+    geometry : {"isoparametric", "exact"}
+        Discrete sphere (the line is exact either way).
     """
 
     mesh: str
     order: int
     size: int
+    geometry: str = "isoparametric"
 
     @property
     def label(self) -> str:
-        """Short description, e.g. ``sphere P1 L4`` or ``axisym P2 400 el.``."""
+        """Short description: ``sphere P1 L4``, ``sphere P4 L2 exact``, ``axisym P2 400 el.``."""
         if self.mesh == "axisym":
             return f"axisym P{self.order} {self.size} el."
-        return f"sphere P{self.order} L{self.size}"
+        exact = " exact" if self.geometry == "exact" else ""
+        return f"sphere P{self.order} L{self.size}{exact}"
 
     @property
     def step(self) -> float:
@@ -89,14 +105,17 @@ class FEMSpec:
         """Keyword arguments of :func:`twoball.fem_membrane.solve.modal_model`."""
         if self.mesh == "axisym":
             return {"mesh": "axisym", "elements": self.size, "order": self.order}
-        return {"mesh": "sphere", "level": self.size, "order": self.order}
+        options = {"mesh": "sphere", "level": self.size, "order": self.order}
+        if self.geometry != "isoparametric":
+            options["geometry"] = self.geometry
+        return options
 
 
-def spec_from_level(mesh: str, order: int, level: int) -> FEMSpec:
+def spec_from_level(mesh: str, order: int, level: int, geometry: str = "isoparametric") -> FEMSpec:
     """The discretisation of refinement level ``level`` (axisym: 25 * 2**level elements)."""
     if mesh == "axisym":
         return FEMSpec("axisym", order, AXISYM_BASE_ELEMENTS * 2**level)
-    return FEMSpec("sphere", order, level)
+    return FEMSpec("sphere", order, level, geometry)
 
 
 @dataclass
@@ -136,7 +155,7 @@ def fem_run(
     """Assemble, build the filtered modal series, and find lift-off.
 
     Uses :func:`twoball.fem_membrane.solve.modal_model`, the same path as
-    ``fem_pole_motion(..., time="modal")``, and keeps the model for the
+    ``fem_pole_motion(..., scheme="modal")``, and keeps the model for the
     eigenvalue and energy checks (``route="full"``; the Krylov route has no
     eigenvector set and serves lift-off checks only).
     """
