@@ -37,7 +37,11 @@ def liftoff(
     dt: float | None = None,
     route: str | None = None,
     damping_model: str | None = None,
-) -> LiftoffReport:
+    mass_ratio: float | None = None,
+    contact_radius: float | None = None,
+    restitution: float = 0.0,
+    energy: str = "ball",
+) -> LiftoffReport | Any:
     """Lift-off time and velocity of the body on the ball, in SI.
 
     Parameters
@@ -57,16 +61,42 @@ def liftoff(
         Finite-element options (see :func:`twoball.fem.solve`; ``mesh`` may be a
         kind name or the user's mesh: a file path, ``meshio.Mesh`` or ``MeshTri``);
         refused with ``backend="legendre"``.
+    mass_ratio : float, optional
+        ``mu = m1 / m2`` of an upper body of finite mass in unilateral contact
+        (docs/contact.rst); None (default): the massless body of the paper.  0 is
+        the massless criteria on the cap-averaged motion.
+    contact_radius : float, optional
+        Radius a [m] of the contact cap (default R/10); only with ``mass_ratio``.
+    restitution : float
+        Newton's coefficient at re-contact, in [0, 1] (default 0); only with ``mass_ratio``.
+    energy : {"ball", "both"}
+        Energy at t = 0: eq. (3.6) for the lower ball alone, or with the upper
+        body's kinetic energy; only with ``mass_ratio``.
 
     Returns
     -------
     LiftoffReport
         ``t_liftoff_s``, ``v_liftoff_m_s``, ``ratio``, ``case`` (with
-        ``phi_a_source``), ``notes``; ``as_dict()`` for JSON.
+        ``phi_a_source``), ``notes``; ``as_dict()`` for JSON.  With ``mass_ratio``
+        a :class:`~twoball.modal.contact.report.ContactReport` (the same
+        properties, plus every contact event).
     """
     case = Case.preset("basketball") if case is None else case
     if not isinstance(case, Case):
         raise ParameterError("case", "a twoball.Case", type(case).__name__)
+    if mass_ratio is not None:
+        return _contact_liftoff(
+            case, backend, sigma, recontact, t_end, mass_ratio, contact_radius,
+            restitution, energy, mesh=mesh, level=level, elements=elements, order=order,
+            pole=pole, scheme=scheme, dt=dt, route=route, damping_model=damping_model,
+        )  # fmt: skip
+    for name, value, default in (
+        ("contact_radius", contact_radius, None),
+        ("restitution", restitution, 0.0),
+        ("energy", energy, "ball"),
+    ):
+        if value != default:
+            raise ParameterError(name, "given only with mass_ratio", value)
     fem_options = {
         "mesh": mesh,
         "level": level,
@@ -88,6 +118,40 @@ def liftoff(
     from twoball.modal.report import legendre_liftoff
 
     return legendre_liftoff(case, sigma, recontact, t_end)
+
+
+def _contact_liftoff(
+    case: Case,
+    backend: str,
+    sigma: str,
+    recontact: str,
+    t_end: float | None,
+    mass_ratio: float,
+    contact_radius: float | None,
+    restitution: float,
+    energy: str,
+    **fem_options: Any,
+) -> Any:
+    """The finite-mass body (issue 13): the shared contact solver on a backend's modes."""
+    if recontact != "window":
+        raise ParameterError(
+            "recontact", "window with mass_ratio (events are simulated)", recontact
+        )
+    if backend == "fem":
+        raise ParameterError(
+            "backend",
+            "legendre with mass_ratio (the finite-element contact backend is not built yet)",
+            backend,
+        )
+    if backend != "legendre":
+        raise ParameterError("backend", "one of " + ", ".join(BACKENDS), backend)
+    refuse_mesh_options("with backend legendre (no mesh, no time steps)", **fem_options)
+    from twoball.modal.contact.report import legendre_contact
+
+    return legendre_contact(
+        case, mass_ratio, contact_radius, sigma=sigma, restitution=restitution,
+        energy=energy, t_end_s=t_end,
+    )  # fmt: skip
 
 
 @dataclass(frozen=True)
