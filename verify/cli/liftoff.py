@@ -66,10 +66,59 @@ def print_liftoff(report: LiftoffReport) -> None:
     console().print(key_value_table(title, liftoff_rows(report)))
 
 
+def contact_rows(report) -> list[tuple[str, str]]:
+    """The rows of a finite-mass (contact) report (SI): the case, every event, v1."""
+    case = report.case
+    rows = [
+        ("R [m]", f"{case.radius:g}"),
+        ("c [1/s]", f"{case.wave_speed:g}"),
+        ("|v0| [m/s]", f"{case.v0:g}"),
+        ("phi_a [rad]", f"{report.as_dict()['phi_a_rad']:.6f}"),
+        ("D", f"{case.damping:g}"),
+        ("N", f"{case.modes}"),
+        ("mass ratio mu", f"{report.mass_ratio:g}"),
+        ("contact radius a [m]", f"{report.contact_radius_m:g}"),
+        ("restitution e", f"{report.restitution:g}"),
+        ("energy at t = 0", report.energy),
+    ]
+    for event in report.events_si():
+        rows.append(
+            (
+                f"{event['kind']} [ms]",
+                f"{event['t_s'] * 1e3:.4f}  (v = {event['velocity_m_s']:+.4f} m/s)",
+            )
+        )
+    rows += [
+        ("lifted", "yes" if report.lifted else "no"),
+        ("final separation [ms]", number(report.t_liftoff_s, 1e3)),
+        ("v1 [m/s]", number(report.v_liftoff_m_s)),
+        ("v1 / |v0|", number(report.ratio)),
+    ]
+    return rows
+
+
+def contact_arguments(args: argparse.Namespace) -> dict:
+    """The finite-mass options as :func:`twoball.liftoff` arguments (none if not given)."""
+    if getattr(args, "mass_ratio", None) is None:
+        return {}
+    return {
+        "mass_ratio": args.mass_ratio,
+        "contact_radius": args.contact_radius,
+        "restitution": args.restitution,
+        "energy": args.energy,
+    }
+
+
 def solve_from_options(args: argparse.Namespace) -> LiftoffReport:
     """Call :func:`twoball.liftoff` with the case, model, mesh and time options."""
     from twoball.solvers import liftoff
 
+    if args.mass_ratio is None:
+        for name, default in (("contact_radius", None), ("restitution", 0.0), ("energy", "ball")):
+            if getattr(args, name) != default:
+                from twoball.modal.errors import ParameterError
+
+                raise ParameterError(name, "given only with --mass-ratio", getattr(args, name))
     return liftoff(
         case_from_options(args),
         backend=args.backend,
@@ -78,6 +127,7 @@ def solve_from_options(args: argparse.Namespace) -> LiftoffReport:
         t_end=args.t_end,
         **mesh_arguments(args),
         **time_arguments(args),
+        **contact_arguments(args),
     )
 
 
@@ -88,6 +138,8 @@ def run(args: argparse.Namespace) -> int:
     print_warnings(report.warnings)
     if args.json:
         print_json(report.as_dict())
+    elif args.mass_ratio is not None:
+        console().print(key_value_table("Lift-off of a body of finite mass", contact_rows(report)))
     else:
         print_liftoff(report)
     return 0
@@ -101,5 +153,18 @@ def register(parser: argparse.ArgumentParser) -> None:
     add_case_options(parser)
     add_mesh_options(parser)
     add_time_options(parser)
+    group = parser.add_argument_group("upper body of finite mass (docs: contact)")
+    group.add_argument(
+        "--mass-ratio", type=float, metavar="MU", help="m1/m2 in [0, 100] (0: massless criteria)"
+    )
+    group.add_argument(
+        "--contact-radius", type=float, metavar="A", help="contact cap radius a [m] (default R/10)"
+    )
+    group.add_argument(
+        "--restitution", type=float, default=0.0, metavar="E", help="Newton's e at re-contact"
+    )
+    group.add_argument(
+        "--energy", default="ball", help="energy at t = 0: ball (eq. (3.6)) or both bodies"
+    )
     parser.add_argument("--json", action="store_true", help="print one JSON object")
     parser.set_defaults(run=run)
