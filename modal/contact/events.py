@@ -29,7 +29,7 @@ from .system import ContactSystem
 
 TIME_TOLERANCE = 1e-12
 MAX_EVENTS = 10000
-_ZENO_RATE = 1e-12  # |g'| below which a Newton impact is treated as plastic (ends Zeno chains)
+_ZENO_RATE = 1e-6  # |g'| (units R c) below which an impact is plastic: ends Zeno chains
 
 
 @dataclass(frozen=True)
@@ -278,6 +278,8 @@ def _in_step(
     t_min = float(_root(slope, lo, h))
     if float(value(np.array([t_min]))[0]) > 0.0:
         return None
+    if start <= 0.0:
+        return lo  # it never opened beyond round-off: touching again at once
     return float(_root(value, lo, t_min))
 
 
