@@ -138,11 +138,18 @@ def _contact_liftoff(
             "recontact", "window with mass_ratio (events are simulated)", recontact
         )
     if backend == "fem":
-        raise ParameterError(
-            "backend",
-            "legendre with mass_ratio (the finite-element contact backend is not built yet)",
-            backend,
-        )
+        for name in ("pole", "scheme", "dt", "route", "damping_model"):
+            if fem_options[name] is not None:
+                raise ParameterError(
+                    name, "left out with mass_ratio (modal route only)", fem_options[name]
+                )
+        from twoball.fem_membrane.contact import fem_contact
+
+        return fem_contact(
+            case, mass_ratio, contact_radius, sigma=sigma, restitution=restitution,
+            energy=energy, t_end_s=t_end, mesh=fem_options["mesh"], level=fem_options["level"],
+            elements=fem_options["elements"], order=fem_options["order"],
+        )  # fmt: skip
     if backend != "legendre":
         raise ParameterError("backend", "one of " + ", ".join(BACKENDS), backend)
     refuse_mesh_options("with backend legendre (no mesh, no time steps)", **fem_options)

@@ -29,6 +29,7 @@ from .system import ContactSystem
 
 TIME_TOLERANCE = 1e-12
 MAX_EVENTS = 10000
+_DENSE_EXPM_MAX = 200  # state size up to which exp(A t) is formed densely for each root step
 _ZENO_RATE = 1e-6  # |g'| (units R c) below which an impact is plastic: ends Zeno chains
 
 
@@ -91,8 +92,16 @@ class _Phase:
         self.grid_map = expm(matrix * step)
 
     def at(self, z: np.ndarray, tau: np.ndarray) -> np.ndarray:
-        """States at offsets ``tau`` (each in [0, step]) from ``z``."""
-        return np.array([expm(self.matrix * t) @ z for t in np.atleast_1d(tau)])
+        """States at offsets ``tau`` (each in [0, step]) from ``z``.
+
+        Small systems: the dense ``expm``; large ones (finite-element spheres with
+        hundreds of modes): ``expm_multiply``, a few matrix-vector products.
+        """
+        if self.matrix.shape[0] <= _DENSE_EXPM_MAX:
+            return np.array([expm(self.matrix * t) @ z for t in np.atleast_1d(tau)])
+        from scipy.sparse.linalg import expm_multiply
+
+        return np.array([expm_multiply(self.matrix * t, z) for t in np.atleast_1d(tau)])
 
 
 def integrate(
@@ -213,7 +222,7 @@ def _advance(phase: _Phase, z: np.ndarray, duration: float) -> np.ndarray:
     for _ in range(steps):
         z = phase.grid_map @ z
     rest = duration - steps * phase.step
-    return expm(phase.matrix * rest) @ z if rest > 0 else z
+    return phase.at(z, np.array([rest]))[0] if rest > 0 else z
 
 
 def _next_event(
@@ -233,12 +242,12 @@ def _next_event(
     duration = t_end - t0
     while tau < duration:
         h = min(phase.step, duration - tau)
-        z_next = phase.grid_map @ z if h == phase.step else expm(phase.matrix * h) @ z
+        z_next = phase.grid_map @ z if h == phase.step else phase.at(z, np.array([h]))[0]
         lo = max(skip - tau, 0.0)  # offset inside this step where the search begins
         if lo < h:
             hit = _in_step(phase, signal, rate, z, h, lo, z_next)
             if hit is not None:
-                return tau + hit, expm(phase.matrix * hit) @ z
+                return tau + hit, phase.at(z, np.array([hit]))[0]
         z, tau = z_next, tau + h
     return None
 
