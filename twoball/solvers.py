@@ -202,6 +202,7 @@ def sweep(
     workers: int = 1,
     scheduler: str | None = None,
     progress: Callable[[int], None] | None = None,
+    contact_radius: float | None = None,
 ) -> SweepResult:
     """Closed-form lift-off over one parameter or a grid of two (Fig. 11(b), Fig. 12).
 
@@ -221,6 +222,9 @@ def sweep(
         Address of a dask.distributed scheduler.
     progress : callable, optional
         Called with the number of points done.
+    contact_radius : float, optional
+        Contact cap radius a [m] of a ``mass_ratio`` sweep (default R/10): the
+        points then run the finite-mass contact solver (docs/contact.rst).
 
     Returns
     -------
@@ -256,7 +260,16 @@ def sweep(
     workers = check_workers(workers)
     if len(cases) < MIN_PARALLEL_ITEMS:
         workers = 1  # would run in process anyway; do not start a pool
-    solver = SweepSolver(sigma, recontact, t_end)
+    if contact_radius is not None and "mass-ratio" not in parameters:
+        raise ParameterError("contact_radius", "given only with a mass_ratio sweep", contact_radius)
+    if "mass-ratio" in parameters:
+        from twoball.modal.contact.report import check_contact_options
+
+        for mu in arrays[parameters.index("mass-ratio")]:
+            check_contact_options(case, float(mu), contact_radius, 0.0, "ball")
+        if recontact != "window":
+            raise ParameterError("recontact", "window with mass_ratio", recontact)
+    solver = SweepSolver(sigma, recontact, t_end, contact_radius=contact_radius)
     with Runner(workers, scheduler) as runner:
         points = run_sweep(cases, solver, progress, runner=runner, indices=grid.indices())
     return SweepResult(parameters, grid.shape, points)

@@ -88,6 +88,12 @@ class ContactReport:
     membrane: Case | None = None
 
     @property
+    def result(self) -> Any:
+        """The dimensionless outcome: the :class:`ContactHistory` (or the massless
+        :class:`LiftoffResult`); both have ``lifted``, ``t`` and ``velocity``."""
+        return self.history if self.history is not None else self.massless
+
+    @property
     def lifted(self) -> bool:
         """True if the body is in flight at the end of the window."""
         return bool(self.history.lifted if self.history is not None else self.massless.lifted)
@@ -181,6 +187,22 @@ class ContactReport:
         data["notes"] = self.notes
         data["warnings"] = list(self.warnings)
         return data
+
+
+@dataclass(frozen=True)
+class ContactCase:
+    """A case with an upper body of mass ratio ``mass_ratio``: one point of a mass sweep.
+
+    Reads like its :class:`Case` (``phi_a``, ``v0``, ...) plus ``mass_ratio``.
+    """
+
+    case: Case
+    mass_ratio: float
+
+    def __getattr__(self, name: str) -> Any:
+        if name.startswith("__"):
+            raise AttributeError(name)
+        return getattr(self.case, name)
 
 
 def solve_contact(

@@ -58,7 +58,7 @@ def print_sweep(grid: SweepGrid, points: list[SweepPoint]) -> None:
             cells += ["error", "-", "-", "-"]
         else:
             cells += [
-                "yes" if r.result.lifted else "no",
+                "yes" if r.result.lifted else "no",  # ContactReport.result too
                 number(r.t_liftoff_s, 1e3),
                 number(r.v_liftoff_m_s),
                 number(r.ratio),
@@ -85,6 +85,8 @@ def run(args: argparse.Namespace) -> int:
         "workers": workers,
         "scheduler": args.scheduler,
     }
+    if args.contact_radius is not None:
+        options["contact_radius"] = args.contact_radius
     total = 1
     for n in grid.shape:
         total *= n
@@ -183,5 +185,11 @@ def register(parser: argparse.ArgumentParser) -> None:
         help="run on an existing dask.distributed scheduler (needs the 'dask' extra)",
     )
     add_case_options(parser)
+    parser.add_argument(
+        "--contact-radius",
+        type=float,
+        metavar="A",
+        help="with --param mass-ratio: contact cap radius a [m] (default R/10)",
+    )
     parser.add_argument("--json", action="store_true", help="print a JSON list")
     parser.set_defaults(run=run)
