@@ -191,7 +191,9 @@ def test_energy_option_both_deforms_more():
         ({"mass_ratio": 0.1, "contact_radius": 0.0}, "contact_radius"),
         ({"mass_ratio": 0.1, "restitution": 1.5}, "restitution"),
         ({"mass_ratio": 0.1, "energy": "all"}, "energy"),
-        ({"mass_ratio": 0.1, "backend": "fem"}, "backend"),
+        ({"mass_ratio": 0.1, "backend": "spectral"}, "backend"),
+        ({"mass_ratio": 0.1, "backend": "fem", "scheme": "alpha"}, "scheme"),
+        ({"mass_ratio": 0.1, "backend": "fem", "mesh": "axisym", "level": 2}, "level"),
         ({"mass_ratio": 0.1, "recontact": "paper"}, "recontact"),
         ({"contact_radius": 0.01}, "contact_radius"),
     ],
@@ -226,3 +228,38 @@ def test_cli_bad_mass_ratio_is_one_line():
     assert (
         out.stderr.strip() == "twoball: error: --mass-ratio must be a number in [0, 100], got -1.0"
     )
+
+
+def test_converges_in_modes_at_second_order():
+    """a = R/10, mu = 0.101: v1(N) converges like N^-2 (the Lanczos filter); band 1.6-2.6."""
+    v = {}
+    for modes in (30, 60, 120):
+        case = BASKETBALL.derive(modes=modes)
+        v[modes] = twoball.liftoff(case, mass_ratio=0.101, contact_radius=0.012).v_liftoff_m_s
+    order = math.log2(abs(v[60] - v[30]) / abs(v[120] - v[60]))
+    assert 1.6 < order < 2.6
+
+
+def test_event_grid_does_not_change_the_result():
+    """The events are exact roots: 16, 32 or 64 grid points per period give the same v1."""
+    from twoball.modal.contact.report import legendre_contact
+
+    v = [
+        legendre_contact(BASKETBALL, 0.101, 0.012, samples_per_period=n).v_liftoff_m_s
+        for n in (16, 64)
+    ]
+    assert v[0] == pytest.approx(v[1], rel=1e-10)
+
+
+def test_mass_ratio_sweep_equals_single_runs():
+    result = twoball.sweep({"mass_ratio": [0.004, 0.101]}, BASKETBALL, contact_radius=0.03)
+    for point, mu in zip(result.points, (0.004, 0.101), strict=True):
+        single = twoball.liftoff(BASKETBALL, mass_ratio=mu, contact_radius=0.03)
+        assert point.v_liftoff_m_s == single.v_liftoff_m_s
+        assert point.as_dict()["mass_ratio"] == mu
+    with pytest.raises(twoball.ParameterError) as info:
+        twoball.sweep({"mass_ratio": [-1.0]}, BASKETBALL)
+    assert info.value.name == "mass_ratio"
+    with pytest.raises(twoball.ParameterError) as info:
+        twoball.sweep({"damping": [0.1]}, BASKETBALL, contact_radius=0.01)
+    assert info.value.name == "contact_radius"

@@ -74,3 +74,21 @@ def test_fem_sphere_agrees_with_legendre_at_finite_mass():
         BASKETBALL, mass_ratio=0.1, contact_radius=0.012, backend="fem", mesh="sphere", level=4
     )
     assert fem.v_liftoff_m_s == pytest.approx(legendre.v_liftoff_m_s, rel=1e-3)
+
+
+def test_fem_axisym_converges_to_legendre_in_h():
+    """mu = 0.101, a = R/10: the P2 line's v1 error falls at about h^4 (eigenvalues); band 3-5."""
+    legendre = twoball.liftoff(BASKETBALL, mass_ratio=0.101, contact_radius=0.012)
+    errors = []
+    for elements in (25, 100):
+        fem = twoball.liftoff(
+            BASKETBALL,
+            mass_ratio=0.101,
+            contact_radius=0.012,
+            backend="fem",
+            mesh="axisym",
+            elements=elements,
+        )
+        errors.append(abs(fem.v_liftoff_m_s / legendre.v_liftoff_m_s - 1))
+    order = np.log2(errors[0] / errors[1]) / 2  # h / 4
+    assert 3.0 < order < 5.0
