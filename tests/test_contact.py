@@ -278,3 +278,32 @@ def test_reproduce_contact_part(tmp_path):
     mu = section.data["mass_ratios"][-1]
     assert ratios[-1] == twoball.liftoff(BASKETBALL, mass_ratio=mu).ratio
     assert all(b < a for a, b in zip(ratios, ratios[1:], strict=False))
+
+
+def test_trajectory_follows_the_events():
+    """The sampled path: gap >= 0, body on the cap in contact phases, event values hit."""
+    report = twoball.liftoff(BASKETBALL, mass_ratio=0.004)
+    data = report.trajectory_si(400)
+    gap = data["body_height_m"] - data["cap_displacement_m"]
+    assert gap.min() > -1e-12 * BASKETBALL.radius
+    on = data["contact"]
+    assert on.any() and (~on).any()
+    np.testing.assert_allclose(gap[on], 0.0, atol=1e-12 * BASKETBALL.radius)
+    final = report.events_si()[-1]
+    after = data["t_s"] > final["t_s"]
+    t = data["t_s"][after] - final["t_s"]
+    g = BASKETBALL.g
+    expected = final["height_m"] + final["velocity_m_s"] * t - 0.5 * g * t * t
+    np.testing.assert_allclose(data["body_height_m"][after], expected, rtol=1e-9, atol=1e-12)
+
+
+def test_cli_plot_contact_sequence(tmp_path):
+    target = tmp_path / "sequence.png"
+    out = _cli("liftoff", "--mass-ratio", "0.004", "--plot", str(target))
+    assert out.returncode == 0, out.stderr
+    assert target.stat().st_size > 0
+    bad = _cli("liftoff", "--plot", str(tmp_path / "x.png"))
+    assert bad.returncode == 2
+    assert bad.stderr.strip() == (
+        f"twoball: error: --plot must be given only with --mass-ratio, got '{tmp_path / 'x.png'}'"
+    )

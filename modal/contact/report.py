@@ -86,6 +86,7 @@ class ContactReport:
     extra: dict[str, Any] = field(default_factory=dict)
     warnings: tuple[str, ...] = ()
     membrane: Case | None = None
+    system: ContactSystem | None = field(default=None, repr=False, compare=False)
 
     @property
     def result(self) -> Any:
@@ -127,6 +128,27 @@ class ContactReport:
         """How phi_a was chosen (as for the massless lift-off)."""
         note = (self.membrane or self.case).phi_a_note
         return [note] if note else []
+
+    def trajectory_si(self, samples: int = 600) -> dict[str, Any]:
+        """Body and cap-averaged membrane on ``samples`` times over the window (SI).
+
+        Keys: ``t_s``, ``body_height_m``, ``body_velocity_m_s``, ``cap_displacement_m``,
+        ``cap_velocity_m_s``, ``contact`` (bool); empty in the massless mode.
+        """
+        if self.history is None or self.system is None:
+            return {}
+        from .trajectory import sample
+
+        scale = self.case.scalings
+        data = sample(self.system, self.history, np.linspace(0, self.history.t_end, samples))
+        return {
+            "t_s": data["t"] * scale.time,
+            "body_height_m": data["body_height"] * scale.length,
+            "body_velocity_m_s": data["body_velocity"] * scale.velocity,
+            "cap_displacement_m": data["cap_displacement"] * scale.length,
+            "cap_velocity_m_s": data["cap_velocity"] * scale.velocity,
+            "contact": data["contact"],
+        }
 
     def events_si(self) -> list[dict[str, Any]]:
         """Every contact event in SI: kind, time, body height and velocity, impulse, loss."""
@@ -222,6 +244,7 @@ def solve_contact(
     samples_per_period: int = 32,
 ) -> ContactReport:
     """Run the shared contact solver on any backend's series and cap averages."""
+    system = None
     if mass_ratio == 0.0:
         cap_series = ModalSeries(
             series.omega,
@@ -240,6 +263,7 @@ def solve_contact(
     return ContactReport(
         case, mass_ratio, contact_radius_m, restitution, energy, backend, sigma,
         history, result, dict(extra or {}), (), membrane,
+        None if mass_ratio == 0.0 else system,
     )  # fmt: skip
 
 

@@ -36,6 +36,7 @@ FLAGS: dict[str, str] = {
     "contact_radius": "--contact-radius",
     "restitution": "--restitution",
     "energy": "--energy",
+    "plot": "--plot",
     # finite elements
     "mesh": "--mesh",
     "level": "--level",

@@ -133,7 +133,20 @@ def solve_from_options(args: argparse.Namespace) -> LiftoffReport:
 
 def run(args: argparse.Namespace) -> int:
     """Run ``twoball liftoff``."""
+    plot = None
+    if args.plot is not None:
+        from twoball.modal.errors import ParameterError
+        from twoball.verify.sweeps.sweeps import check_plot_path
+
+        if args.mass_ratio is None:
+            raise ParameterError("plot", "given only with --mass-ratio", args.plot)
+        plot = check_plot_path(args.plot)
     report = solve_from_options(args)
+    if plot is not None and report.history is not None:
+        from twoball.verify.output.figures import save_figure
+        from twoball.verify.output.figures.contact import contact_figure
+
+        save_figure(contact_figure(report), plot, "--plot")
     print_notes(report.notes)
     print_warnings(report.warnings)
     if args.json:
@@ -165,6 +178,11 @@ def register(parser: argparse.ArgumentParser) -> None:
     )
     group.add_argument(
         "--energy", default="ball", help="energy at t = 0: ball (eq. (3.6)) or both bodies"
+    )
+    group.add_argument(
+        "--plot",
+        metavar="FILE.png",
+        help="with --mass-ratio: draw the body's path and the cap with every contact",
     )
     parser.add_argument("--json", action="store_true", help="print one JSON object")
     parser.set_defaults(run=run)
