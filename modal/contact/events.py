@@ -173,6 +173,8 @@ def integrate(
         # impact
         approach = float(system.gap_rate(z_event))
         e = restitution if abs(approach) > _ZENO_RATE else 0.0
+        if e > 0.0 and _unresolved_bounce(system, signal, z_event, e, skip):
+            e = 0.0  # the rebound would land again within the round-off zone: plastic
         before = float(system.energy(z_event))
         z, impulse = system.impact(z_event, e)
         z[2 * system.size] = float(system.contact @ z[: system.size])  # g = 0 exactly
@@ -203,6 +205,21 @@ def integrate(
         z,
         restitution,
     )
+
+
+def _unresolved_bounce(
+    system: ContactSystem, gap_row: np.ndarray, z: np.ndarray, e: float, skip: float
+) -> bool:
+    """True if a rebound with coefficient ``e`` would touch again within ``2 skip``.
+
+    The flight time of a bounce is about ``2 g'+ / |g''|`` (g'' the relative
+    acceleration in flight); shorter than the resolved time it is the tail of a Zeno
+    sequence, whose limit (the body staying on) is taken at once.
+    """
+    bounced, _ = system.impact(z, e)
+    rate = float(system.gap_rate(bounced))
+    accel = float(gap_row @ system.flight_matrix @ system.flight_matrix @ bounced)
+    return accel < 0.0 and 2.0 * rate / -accel < 2.0 * skip
 
 
 def _body(system: ContactSystem, z: np.ndarray) -> tuple[float, float]:
