@@ -269,7 +269,10 @@ def sweep(
             check_contact_options(case, float(mu), contact_radius, 0.0, "ball")
         if recontact != "window":
             raise ParameterError("recontact", "window with mass_ratio", recontact)
-    solver = SweepSolver(sigma, recontact, t_end, contact_radius=contact_radius)
+    if contact_radius is None:
+        solver = SweepSolver(sigma, recontact, t_end)
+    else:
+        solver = SweepSolver(sigma, recontact, t_end, contact_radius=contact_radius)
     with Runner(workers, scheduler) as runner:
         points = run_sweep(cases, solver, progress, runner=runner, indices=grid.indices())
     return SweepResult(parameters, grid.shape, points)
