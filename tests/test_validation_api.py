@@ -139,6 +139,11 @@ CALLS: dict[str, dict[str, Callable[[Any, Path], Any]]] = {
     },
     "max_degree": {"plot": lambda v, tmp: twoball.plot("eigen", tmp / "p.png", max_degree=v)},
     "dpi": {"plot": lambda v, tmp: twoball.plot("eigen", tmp / "p.png", dpi=v)},
+    "mass_ratio": {"liftoff": lambda v, _: twoball.liftoff(CASE, mass_ratio=v)},
+    "contact_radius": {
+        "liftoff": lambda v, _: twoball.liftoff(CASE, mass_ratio=0.01, contact_radius=v)
+    },
+    "restitution": {"liftoff": lambda v, _: twoball.liftoff(CASE, mass_ratio=0.01, restitution=v)},
 }
 
 

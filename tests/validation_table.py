@@ -86,6 +86,9 @@ RANGES: dict[str, Range] = {
     "--instants": Range(2, 2000, integer=True),
     "--max-degree": Range(1, 10**4, integer=True),
     "--dpi": Range(50, 1200),
+    "--mass-ratio": Range(0.0, 100.0),
+    "--contact-radius": Range(0.0, 0.12, low_open=True, high_open=True),  # (0, R) m
+    "--restitution": Range(0.0, 1.0),
 }
 #: Values that a range accepts but the model refuses anyway, per option.
 ALSO_BAD: dict[str, tuple[str, ...]] = {
@@ -122,6 +125,8 @@ CONTEXT: dict[tuple[str, str], list[str]] = {
     ("plot", "--max-degree"): ["eigen"],
     ("icm", "--dx"): ["--drop-height", "1"],
     ("sweep", "--workers"): ["--values", "0:0.5:3"],
+    ("liftoff", "--contact-radius"): ["--mass-ratio", "0.01"],
+    ("liftoff", "--restitution"): ["--mass-ratio", "0.01"],
 }
 #: Options the base line already gives (a bad value replaces the base's).
 PATH_OPTIONS = ("--out", "--plot", "--mesh-file")

@@ -40,7 +40,11 @@ def liftoff(
     route: str | None = None,
     damping_model: str | None = None,
     progress: Step | None = None,
-) -> LiftoffReport:
+    mass_ratio: float | None = None,
+    contact_radius: float | None = None,
+    restitution: float | None = None,
+    energy: str | None = None,
+) -> LiftoffReport | Any:
     """Lift-off time and velocity of the body on the ball, in SI.
 
     Parameters
@@ -63,16 +67,54 @@ def liftoff(
     progress : callable, optional
         Called with a short text as each stage of a finite-element solve starts
         (a :class:`twoball.progress.Reporter`, for instance).
+    mass_ratio : float, optional
+        ``mu = m1 / m2`` of an upper body of finite mass in unilateral contact
+        (docs/contact.rst); None (default): the massless body of the paper.  0 is
+        the massless criteria on the cap-averaged motion.
+    contact_radius : float, optional
+        Radius a [m] of the contact cap (default R/10); only with ``mass_ratio``.
+    restitution : float, optional
+        Newton's coefficient at re-contact, in [0, 1] (default 0); only with ``mass_ratio``.
+    energy : {"ball", "both"}, optional
+        Energy at t = 0: eq. (3.6) for the lower ball alone, or with the upper
+        body's kinetic energy; only with ``mass_ratio``.
 
     Returns
     -------
     LiftoffReport
         ``t_liftoff_s``, ``v_liftoff_m_s``, ``ratio``, ``case`` (with
-        ``phi_a_source``), ``notes``; ``as_dict()`` for JSON.
+        ``phi_a_source``), ``notes``; ``as_dict()`` for JSON.  With ``mass_ratio``
+        a :class:`~twoball.modal.contact.report.ContactReport` (the same
+        properties, plus every contact event).
     """
     case = Case.preset("basketball") if case is None else case
     if not isinstance(case, Case):
         raise ParameterError("case", "a twoball.Case", type(case).__name__)
+    if mass_ratio is not None:
+        from twoball.provenance import block
+
+        restitution = 0.0 if restitution is None else restitution
+        energy = "ball" if energy is None else energy
+        contact = _contact_liftoff(
+            case, backend, sigma, recontact, t_end, mass_ratio, contact_radius,
+            restitution, energy, mesh=mesh, level=level, elements=elements, order=order,
+            pole=pole, scheme=scheme, dt=dt, route=route, damping_model=damping_model,
+        )  # fmt: skip
+        arguments = {
+            "backend": backend,
+            "mass_ratio": mass_ratio,
+            "contact_radius": contact_radius,
+            "restitution": restitution,
+            "energy": energy,
+        }
+        return replace(contact, provenance=block(case, "twoball.liftoff", arguments))
+    for name, value, default in (
+        ("contact_radius", contact_radius, None),
+        ("restitution", restitution, None),
+        ("energy", energy, None),
+    ):
+        if value != default:
+            raise ParameterError(name, "given only with mass_ratio", value)
     fem_options = {
         "mesh": mesh,
         "level": level,
@@ -103,6 +145,47 @@ def liftoff(
 
     arguments = {**options, **{k: v for k, v in fem_options.items() if v is not None}}
     return replace(report, provenance=block(case, "twoball.liftoff", arguments))
+
+
+def _contact_liftoff(
+    case: Case,
+    backend: str,
+    sigma: str,
+    recontact: str,
+    t_end: float | None,
+    mass_ratio: float,
+    contact_radius: float | None,
+    restitution: float,
+    energy: str,
+    **fem_options: Any,
+) -> Any:
+    """The finite-mass body (issue 13): the shared contact solver on a backend's modes."""
+    if recontact != "window":
+        raise ParameterError(
+            "recontact", "window with mass_ratio (events are simulated)", recontact
+        )
+    if backend == "fem":
+        for name in ("pole", "scheme", "dt", "route", "damping_model"):
+            if fem_options[name] is not None:
+                raise ParameterError(
+                    name, "left out with mass_ratio (modal route only)", fem_options[name]
+                )
+        from twoball.fem_membrane.contact import fem_contact
+
+        return fem_contact(
+            case, mass_ratio, contact_radius, sigma=sigma, restitution=restitution,
+            energy=energy, t_end_s=t_end, mesh=fem_options["mesh"], level=fem_options["level"],
+            elements=fem_options["elements"], order=fem_options["order"],
+        )  # fmt: skip
+    if backend != "legendre":
+        raise ParameterError("backend", "one of " + ", ".join(BACKENDS), backend)
+    refuse_mesh_options("with backend legendre (no mesh, no time steps)", **fem_options)
+    from twoball.modal.contact.report import legendre_contact
+
+    return legendre_contact(
+        case, mass_ratio, contact_radius, sigma=sigma, restitution=restitution,
+        energy=energy, t_end_s=t_end,
+    )  # fmt: skip
 
 
 @dataclass(frozen=True)
@@ -150,6 +233,7 @@ def sweep(
     workers: int | None = None,
     scheduler: str | None = None,
     progress: Callable[[int], None] | None = None,
+    contact_radius: float | None = None,
 ) -> SweepResult:
     """Closed-form lift-off over one parameter or a grid of two (Fig. 11(b), Fig. 12).
 
@@ -170,6 +254,9 @@ def sweep(
         Address of a dask.distributed scheduler.
     progress : callable, optional
         Called with the number of points done (e.g. :meth:`twoball.progress.Reporter.update`).
+    contact_radius : float, optional
+        Contact cap radius a [m] of a ``mass_ratio`` sweep (default R/10): the
+        points then run the finite-mass contact solver (docs/contact.rst).
 
     Returns
     -------
@@ -219,7 +306,19 @@ def sweep(
     workers = None if scheduler else check_workers(workers)
     if len(cases) < MIN_PARALLEL_ITEMS and not scheduler:
         workers = 1  # would run in process anyway; do not start a pool
-    solver = SweepSolver(sigma, recontact, t_end)
+    if contact_radius is not None and "mass-ratio" not in parameters:
+        raise ParameterError("contact_radius", "given only with a mass_ratio sweep", contact_radius)
+    if "mass-ratio" in parameters:
+        from twoball.modal.contact.report import check_contact_options
+
+        for mu in arrays[parameters.index("mass-ratio")]:
+            check_contact_options(case, float(mu), contact_radius, 0.0, "ball")
+        if recontact != "window":
+            raise ParameterError("recontact", "window with mass_ratio", recontact)
+    if contact_radius is None:
+        solver = SweepSolver(sigma, recontact, t_end)
+    else:
+        solver = SweepSolver(sigma, recontact, t_end, contact_radius=contact_radius)
     with Runner(workers, scheduler) as runner:
         points = run_sweep(cases, solver, progress, runner=runner, indices=grid.indices())
     from twoball.provenance import block

@@ -31,6 +31,12 @@ FLAGS: dict[str, str] = {
     "t_end": "--t-end",
     "backend": "--backend",
     "backends": "--backend",
+    # upper body of finite mass (contact)
+    "mass_ratio": "--mass-ratio",
+    "contact_radius": "--contact-radius",
+    "restitution": "--restitution",
+    "energy": "--energy",
+    "plot": "--plot",
     # finite elements
     "mesh": "--mesh",
     "level": "--level",

@@ -66,6 +66,43 @@ def print_liftoff(report: LiftoffReport) -> None:
     console().print(key_value_table(title, liftoff_rows(report)))
 
 
+def contact_rows(report) -> list[tuple[str, str]]:
+    """The rows of a finite-mass (contact) report (SI): the case, every event, v1."""
+    case = report.case
+    rows = [
+        ("R [m]", f"{case.radius:g}"),
+        ("c [1/s]", f"{case.wave_speed:g}"),
+        ("|v0| [m/s]", f"{case.v0:g}"),
+        ("phi_a [rad]", f"{report.as_dict()['phi_a_rad']:.6f}"),
+        ("D", f"{case.damping:g}"),
+        ("N", f"{case.modes}"),
+        ("mass ratio mu", f"{report.mass_ratio:g}"),
+        ("contact radius a [m]", f"{report.contact_radius_m:g}"),
+        ("restitution e", f"{report.restitution:g}"),
+        ("energy at t = 0", report.energy),
+    ]
+    for event in report.events_si():
+        rows.append(
+            (
+                f"{event['kind']} [ms]",
+                f"{event['t_s'] * 1e3:.4f}  (v = {event['velocity_m_s']:+.4f} m/s)",
+            )
+        )
+    rows += [
+        ("lifted", "yes" if report.lifted else "no"),
+        ("final separation [ms]", number(report.t_liftoff_s, 1e3)),
+        ("v1 [m/s]", number(report.v_liftoff_m_s)),
+        ("v1 / |v0|", number(report.ratio)),
+    ]
+    return rows
+
+
+def contact_arguments(args: argparse.Namespace) -> dict:
+    """The finite-mass options as :func:`twoball.liftoff` arguments (none if not given)."""
+    names = ("mass_ratio", "contact_radius", "restitution", "energy")
+    return {n: getattr(args, n) for n in names if getattr(args, n, None) is not None}
+
+
 def solve_from_options(args: argparse.Namespace) -> LiftoffReport:
     """Call :func:`twoball.liftoff` with the case, model, mesh and time options."""
     from twoball.progress import QUICK, Reporter
@@ -78,6 +115,7 @@ def solve_from_options(args: argparse.Namespace) -> LiftoffReport:
         "t_end": args.t_end,
         **mesh_arguments(args),
         **time_arguments(args),
+        **contact_arguments(args),
     }
     case = case_from_options(args)
     if args.backend != "fem":  # the closed form takes milliseconds
@@ -88,11 +126,26 @@ def solve_from_options(args: argparse.Namespace) -> LiftoffReport:
 
 def run(args: argparse.Namespace) -> int:
     """Run ``twoball liftoff``."""
+    plot = None
+    if args.plot is not None:
+        from twoball.modal.errors import ParameterError
+        from twoball.verify.sweeps.sweeps import check_plot_path
+
+        if args.mass_ratio is None:
+            raise ParameterError("plot", "given only with --mass-ratio", args.plot)
+        plot = check_plot_path(args.plot)
     report = solve_from_options(args)
+    if plot is not None and report.history is not None:
+        from twoball.verify.output.figures import save_figure
+        from twoball.verify.output.figures.contact import contact_figure
+
+        save_figure(contact_figure(report), plot, "--plot")
     print_notes(report.notes)
     print_warnings(report.warnings)
     if args.json:
         print_json(report.as_dict())
+    elif args.mass_ratio is not None:
+        console().print(key_value_table("Lift-off of a body of finite mass", contact_rows(report)))
     else:
         print_liftoff(report)
     return 0
@@ -106,5 +159,21 @@ def register(parser: argparse.ArgumentParser) -> None:
     add_case_options(parser)
     add_mesh_options(parser, geometry=True)
     add_time_options(parser)
+    group = parser.add_argument_group("upper body of finite mass (docs: contact)")
+    group.add_argument(
+        "--mass-ratio", type=float, metavar="MU", help="m1/m2 in [0, 100] (0: massless criteria)"
+    )
+    group.add_argument(
+        "--contact-radius", type=float, metavar="A", help="contact cap radius a [m] (default R/10)"
+    )
+    group.add_argument(
+        "--restitution", type=float, metavar="E", help="Newton's e at re-contact (default 0)"
+    )
+    group.add_argument("--energy", help="energy at t = 0: ball (eq. (3.6)) or both bodies")
+    group.add_argument(
+        "--plot",
+        metavar="FILE.png",
+        help="with --mass-ratio: draw the body's path and the cap with every contact",
+    )
     parser.add_argument("--json", action="store_true", help="print one JSON object")
     parser.set_defaults(run=run)

@@ -59,7 +59,7 @@ def print_sweep(grid: SweepGrid, points: list[SweepPoint]) -> None:
             cells += ["error", "-", "-", "-"]
         else:
             cells += [
-                "yes" if r.result.lifted else "no",
+                "yes" if r.result.lifted else "no",  # ContactReport.result too
                 number(r.t_liftoff_s, 1e3),
                 number(r.v_liftoff_m_s),
                 number(r.ratio),
@@ -92,6 +92,8 @@ def run(args: argparse.Namespace) -> int:
         "workers": workers,
         "scheduler": args.scheduler,
     }
+    if args.contact_radius is not None:
+        options["contact_radius"] = args.contact_radius
     from twoball.progress import QUICK, Reporter
 
     total = 1
@@ -175,6 +177,12 @@ def register(parser: argparse.ArgumentParser) -> None:
         help="run on an existing dask.distributed scheduler (needs the 'dask' extra)",
     )
     add_case_options(parser)
+    parser.add_argument(
+        "--contact-radius",
+        type=float,
+        metavar="A",
+        help="with --param mass-ratio: contact cap radius a [m] (default R/10)",
+    )
     parser.add_argument(
         "--json",
         action="store_true",

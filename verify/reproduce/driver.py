@@ -23,6 +23,7 @@ from typing import Any
 
 from twoball.modal.errors import ParameterError
 from twoball.verify.reproduce import cem as reproduce_cem
+from twoball.verify.reproduce import contact as reproduce_contact
 from twoball.verify.reproduce import icm as reproduce_icm
 from twoball.verify.reproduce.common import Context, Section, comparison_table
 from twoball.verify.sweeps.parallel import Runner
@@ -39,6 +40,7 @@ PARTS: dict[str, Callable[[Context], Section]] = {
     "thresholds": reproduce_cem.part_thresholds,
     "table1": reproduce_icm.part_table1,
     "icm": reproduce_icm.part_icm,
+    "contact": reproduce_contact.part_contact,
 }
 DEFAULT_OUT = "twoball-reproduction"
 REPORT = "reproduction.md"

@@ -29,6 +29,7 @@ SWEEP_PARAMETERS: dict[str, str] = {
     "wave-speed": "wave_speed",
     "radius": "radius",
     "modes": "modes",
+    "mass-ratio": "mass_ratio",  # not a Case field: the points become ContactCase
 }
 #: Axis labels (SI) of the swept parameters.
 PARAMETER_LABELS: dict[str, str] = {
@@ -37,6 +38,7 @@ PARAMETER_LABELS: dict[str, str] = {
     "wave-speed": "wave speed c [1/s]",
     "radius": "radius R [m]",
     "modes": "modes N",
+    "mass-ratio": "mass ratio mu = m1/m2",
 }
 
 
@@ -104,7 +106,13 @@ class SweepGrid:
                 f: _field_value(f, self.values[axis][i])
                 for axis, (f, i) in enumerate(zip(fields, index, strict=True))
             }
-            out.append(base.derive(**changes))
+            mass_ratio = changes.pop("mass_ratio", None)
+            case = base.derive(**changes) if changes else base
+            if mass_ratio is not None:
+                from twoball.modal.contact.report import ContactCase
+
+                case = ContactCase(case, mass_ratio)
+            out.append(case)
         return out
 
 
@@ -142,7 +150,17 @@ class SweepSolver:
     #: the converged-series reference of the truncation guard (10 ms-1 s a point: off)
     reference: bool = False
 
+    #: contact options of a ``mass-ratio`` sweep (:mod:`twoball.modal.contact`)
+    contact_radius: float | None = None
+
     def __call__(self, case: Case) -> LiftoffReport:
+        if hasattr(case, "mass_ratio"):
+            from twoball.modal.contact.report import legendre_contact
+
+            return legendre_contact(
+                case.case, case.mass_ratio, self.contact_radius, sigma=self.sigma,
+                t_end_s=self.t_end_s,
+            )  # fmt: skip
         return legendre_liftoff(
             case, self.sigma, self.recontact, self.t_end_s, reference=self.reference
         )

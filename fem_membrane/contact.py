@@ -1,0 +1,164 @@
+"""The finite-element backend of the finite-mass contact (issue 13).
+
+The eigenpairs give the same :class:`~twoball.modal.series.ModalSeries` as for the
+massless lift-off; the contact vector is ``b_k = f . phi_k`` with ``f`` the cap
+functional: ``f . u`` is the average of the finite-element function u over the
+polar cap, by the quadrature of :mod:`twoball.modal.contact.caps` (Gauss in
+``cos(phi)``, times the trapezoid rule in azimuth on the sphere), at points
+located in their elements (the pole search of
+:func:`twoball.fem_membrane.mesh.locate_pole`, on the mesh rotated so that the
+point lies on the axis).  The shared solver of :mod:`twoball.modal.contact` does
+the rest.  Dimensionless.
+"""
+
+from __future__ import annotations
+
+from dataclasses import replace
+from typing import Any
+
+import numpy as np
+import scipy.sparse as sp
+from twoball.modal.contact.caps import cap_rule, sphere_cap_points
+from twoball.modal.errors import ParameterError
+
+from .build import DEFAULT_LEVEL
+from .mesh import SphereMesh, icosphere, locate_pole, ring_sphere
+from .space import Discretisation
+
+#: Cap quadrature: Gauss points in cos(phi), and azimuthal points on the sphere.
+CAP_RINGS = 12
+CAP_SPOKES = 24
+
+
+def _rotation_to_pole(direction: np.ndarray) -> np.ndarray:
+    """Rotation matrix taking the unit vector ``direction`` to (0, 0, 1) (Rodrigues)."""
+    d = direction / np.linalg.norm(direction)
+    z = np.array([0.0, 0.0, 1.0])
+    v = np.cross(d, z)
+    c = float(d @ z)
+    if np.linalg.norm(v) < 1e-15:
+        return np.eye(3) if c > 0 else np.diag([1.0, -1.0, -1.0])
+    vx = np.array([[0, -v[2], v[1]], [v[2], 0, -v[0]], [-v[1], v[0], 0]])
+    return np.eye(3) + vx + vx @ vx / (1.0 + c)
+
+
+def sphere_point_row(space: Discretisation, mesh: SphereMesh, point: np.ndarray) -> np.ndarray:
+    """Dense row r with ``r . u = u(point)`` on the discrete sphere (radial projection)."""
+    rotated = replace(mesh, points=mesh.points @ _rotation_to_pole(point).T)
+    element, xi = locate_pole(rotated)
+    basis = space.basis
+    values = np.array([basis.elem.lbasis(xi[:, None], i)[0][0] for i in range(basis.Nbfun)])
+    row = np.zeros(basis.N)
+    np.add.at(row, basis.element_dofs[:, element], values)
+    return row
+
+
+def cap_functional(
+    space: Discretisation, theta: float, mesh: SphereMesh | None = None
+) -> np.ndarray:
+    """Vector f with ``f . u`` = the cap average of u (half-angle ``theta``), dimensionless."""
+    if space.kind == "axisym":
+        x, w = cap_rule(theta, CAP_RINGS)
+        probes = space.basis.probes(x[None, :])
+        return np.asarray(sp.csr_matrix(probes).T @ w).ravel()
+    if mesh is None:
+        raise ValueError("a sphere space needs its SphereMesh for the cap functional")
+    points, weights = sphere_cap_points(theta, CAP_RINGS, CAP_SPOKES)
+    f = np.zeros(space.dofs)
+    for j in range(points.shape[1]):
+        f += weights[j] * sphere_point_row(space, mesh, points[:, j])
+    return f
+
+
+def fem_contact_model(
+    phi_a: float,
+    damping: float,
+    filter: Any,
+    theta: float,
+    *,
+    mesh: str = "axisym",
+    level: int | None = None,
+    elements: int | None = None,
+    order: int | None = 2,
+) -> tuple[Any, np.ndarray, dict[str, Any]]:
+    """Modal series (full eigen route), contact vector and details for one FE mesh."""
+    from .solve import modal_model
+
+    if mesh not in ("axisym", "sphere", "ring"):
+        raise ParameterError("mesh", "axisym, sphere or ring with mass_ratio", mesh)
+    order = 2 if order is None else order
+    sphere_mesh = None
+    if mesh == "axisym":
+        if level is not None:
+            raise ParameterError("level", "left out with mesh axisym", level)
+        model = modal_model(
+            phi_a, damping, filter, mesh="axisym", elements=elements, order=order, route="full"
+        )
+    else:
+        if elements is not None:
+            raise ParameterError("elements", "left out with a sphere mesh", elements)
+        lvl = DEFAULT_LEVEL if level is None else level
+        sphere_mesh = icosphere(lvl, order) if mesh == "sphere" else ring_sphere(lvl, phi_a, order)
+        model = modal_model(phi_a, damping, filter, mesh=sphere_mesh, order=None, route="full")
+    f = cap_functional(model.space, theta, sphere_mesh)
+    contact = model.pairs.vectors.T @ f
+    info = {
+        "dofs": model.space.dofs,
+        "mesh": model.space.name,
+        "mesh_kind": mesh,
+        "order": model.space.order,
+        "modes_computed": len(model.series.omega),
+        "cap_functional_sum": float(f.sum()),
+    }
+    return model.series, contact, info
+
+
+def fem_contact(
+    case: Any,
+    mass_ratio: float,
+    contact_radius: float | None = None,
+    *,
+    sigma: str = "lanczos",
+    restitution: float = 0.0,
+    energy: str = "ball",
+    t_end_s: float | None = None,
+    mesh: str | None = None,
+    level: int | None = None,
+    elements: int | None = None,
+    order: int | None = None,
+) -> Any:
+    """Finite-mass lift-off on the finite-element modes (full eigen route), in SI.
+
+    The same options and the same shared solver as
+    :func:`twoball.modal.contact.report.legendre_contact`; ``mesh`` is ``sphere``
+    (default, level 3), ``ring`` or ``axisym`` (default 400 elements), P1 or P2.
+    """
+    from twoball.modal.contact.caps import cap_angle
+    from twoball.modal.contact.report import check_contact_options, membrane_case, solve_contact
+    from twoball.modal.filters import SpectralFilter
+    from twoball.modal.report import t_end_dimensionless
+
+    from twoball.budget import check_fem
+    from twoball.mesh_options import MeshOptions
+
+    radius = check_contact_options(case, mass_ratio, contact_radius, restitution, energy)
+    spec = MeshOptions.resolve(mesh, level=level, elements=elements, order=order, files=False)
+    check_fem(spec.kind, spec.level, spec.elements, spec.order, case.modes, "full")
+    membrane = membrane_case(case, float(mass_ratio), energy)
+    theta = cap_angle(radius, case.radius)
+    series, contact, info = fem_contact_model(
+        membrane.phi_a,
+        case.damping,
+        SpectralFilter(sigma, case.modes),
+        theta,
+        mesh=spec.kind,
+        level=spec.level,
+        elements=spec.elements,
+        order=spec.order,
+    )
+    return solve_contact(
+        case, series, contact,
+        mass_ratio=float(mass_ratio), contact_radius_m=radius, restitution=float(restitution),
+        energy=energy, backend="fem", sigma=sigma, t_end=t_end_dimensionless(case, t_end_s),
+        membrane=membrane, extra={"cap_angle_rad": theta, **info},
+    )  # fmt: skip

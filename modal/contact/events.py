@@ -1,0 +1,313 @@
+"""Event-driven integration of the contact problem on the closed-form modal motion.
+
+Between events the state follows ``z(t) = exp(A t) z(t_0)`` exactly (A the flight
+or the contact matrix of :class:`~twoball.modal.contact.system.ContactSystem`).
+Events are located on a grid of ``samples_per_period`` points per shortest modal
+period and refined to ``TIME_TOLERANCE``:
+
+* in contact, the force ``Lambda`` reaches zero from above: separation;
+* in flight, the gap ``g`` reaches zero: an impact, resolved by Newton's law with
+  restitution e (default 0, inelastic).  After an inelastic impact the body stays
+  (contact phase) if the contact force is positive, else it flies on at once.
+
+Both signals are checked at the grid points and at every local minimum between
+them (zeros of their rate crossed from below), so a short excursion below zero
+between two grid points is not missed.  Dimensionless throughout.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field
+
+import numpy as np
+from scipy.linalg import expm
+
+from ..errors import NumericalError, ParameterError
+from ..roots import bracketed_roots
+from .system import ContactSystem
+
+TIME_TOLERANCE = 1e-12
+MAX_EVENTS = 10000
+_DENSE_EXPM_MAX = 200  # state size up to which exp(A t) is formed densely for each root step
+_ZENO_RATE = 1e-6  # |g'| (units R c) below which an impact is plastic: ends Zeno chains
+
+
+@dataclass(frozen=True)
+class ContactEvent:
+    """One event: ``kind`` is ``impact`` or ``separation`` (dimensionless).
+
+    ``velocity`` is the body's velocity right after the event, ``impulse`` the
+    impulse of an impact (0 for a separation), ``energy_loss`` the energy lost in
+    it, ``approach`` the gap rate just before an impact.
+    """
+
+    kind: str
+    t: float
+    height: float
+    velocity: float
+    impulse: float = 0.0
+    approach: float = 0.0
+    energy_loss: float = 0.0
+    energy_before: float = 0.0
+    state_before: np.ndarray | None = field(default=None, repr=False, compare=False)
+    state_after: np.ndarray | None = field(default=None, repr=False, compare=False)
+
+
+@dataclass(frozen=True)
+class ContactHistory:
+    """All events on [0, t_end] and the final separation (dimensionless).
+
+    ``lifted`` is True if the body is in flight at ``t_end``; then ``t`` and
+    ``velocity`` are the time and the body's upward velocity at the last
+    separation (lift-off or rebound), ``displacement`` its height there.
+    """
+
+    events: tuple[ContactEvent, ...]
+    t_end: float
+    lifted: bool
+    t: float | None
+    velocity: float | None
+    displacement: float | None
+    final_state: np.ndarray = field(repr=False, compare=False)
+    restitution: float = 0.0
+
+    @property
+    def impacts(self) -> tuple[ContactEvent, ...]:
+        """The impacts, in order."""
+        return tuple(e for e in self.events if e.kind == "impact")
+
+    @property
+    def separations(self) -> tuple[ContactEvent, ...]:
+        """Every separation (lift-off from persistent contact or rebound), in order."""
+        return tuple(e for e in self.events if e.kind == "separation")
+
+
+class _Phase:
+    """Closed-form propagation ``exp(A t) z`` of one phase, with its grid step."""
+
+    def __init__(self, matrix: np.ndarray, step: float) -> None:
+        self.matrix = matrix
+        self.step = step
+        self.grid_map = expm(matrix * step)
+
+    def at(self, z: np.ndarray, tau: np.ndarray) -> np.ndarray:
+        """States at offsets ``tau`` (each in [0, step]) from ``z``.
+
+        Small systems: the dense ``expm``; large ones (finite-element spheres with
+        hundreds of modes): ``expm_multiply``, a few matrix-vector products.
+        """
+        if self.matrix.shape[0] <= _DENSE_EXPM_MAX:
+            return np.array([expm(self.matrix * t) @ z for t in np.atleast_1d(tau)])
+        from scipy.sparse.linalg import expm_multiply
+
+        return np.array([expm_multiply(self.matrix * t, z) for t in np.atleast_1d(tau)])
+
+
+def integrate(
+    system: ContactSystem,
+    t_end: float,
+    restitution: float = 0.0,
+    samples_per_period: int = 32,
+) -> ContactHistory:
+    """Integrate the body on the membrane from rest in contact to ``t_end``.
+
+    Parameters
+    ----------
+    system : ContactSystem
+        Modes, contact vector, body (``body_mass > 0``).
+    t_end : float
+        End of the modelled window (dimensionless).
+    restitution : float
+        Newton's coefficient e in [0, 1] at every impact.
+    samples_per_period : int
+        Event-detection grid points per shortest modal period (>= 16).
+
+    Returns
+    -------
+    ContactHistory
+    """
+    if not (0.0 <= restitution <= 1.0):
+        raise ParameterError("restitution", "in [0, 1]", restitution)
+    if not (system.body_mass > 0):
+        raise ParameterError("mass_ratio", "> 0 for the contact solver", system.body_mass)
+    if not (math.isfinite(t_end) and t_end > 0):
+        raise ParameterError("t_end", "a finite time > 0", t_end)
+    if samples_per_period < 16:
+        raise ParameterError("samples_per_period", "an integer >= 16", samples_per_period)
+    omega = max(system.max_frequency, 1.0)
+    step = 2.0 * math.pi / (omega * samples_per_period)
+    phases = {
+        "flight": _Phase(system.flight_matrix, step),
+        "contact": _Phase(system.contact_matrix, step),
+    }
+    skip = 1e-3 / omega  # round-off zone right after an event
+    force = system.force_row
+    events: list[ContactEvent] = []
+    z, t = system.start(), 0.0
+    mode = "contact" if float(force @ z) > 0.0 else "flight"
+    if mode == "flight":
+        events.append(_separation(system, 0.0, z))
+    while True:
+        phase = phases[mode]
+        if mode == "contact":
+            signal = force
+        else:
+            k = system.size
+            signal = np.zeros_like(force)
+            signal[2 * k] = 1.0
+            signal[:k] = -system.contact
+        found = _next_event(phase, signal, z, t, t_end, skip)
+        if found is None:
+            z = _advance(phase, z, t_end - t)
+            break
+        tau, z_event = found
+        t += tau
+        if len(events) >= MAX_EVENTS:
+            raise NumericalError(f"contact: more than {MAX_EVENTS} events (a Zeno sequence?)")
+        if mode == "contact":
+            z = z_event
+            events.append(_separation(system, t, z))
+            mode = "flight"
+            continue
+        # impact
+        approach = float(system.gap_rate(z_event))
+        e = restitution if abs(approach) > _ZENO_RATE else 0.0
+        if e > 0.0 and _unresolved_bounce(system, signal, z_event, e, skip):
+            e = 0.0  # the rebound would land again within the round-off zone: plastic
+        before = float(system.energy(z_event))
+        z, impulse = system.impact(z_event, e)
+        z[2 * system.size] = float(system.contact @ z[: system.size])  # g = 0 exactly
+        after = float(system.energy(z))
+        events.append(
+            ContactEvent(
+                "impact", t, *_body(system, z), impulse, approach, before - after, before,
+                z_event, z.copy(),
+            )
+        )  # fmt: skip
+        if e > 0.0:
+            events.append(_separation(system, t, z))
+            mode = "flight"
+        elif float(force @ z) > 0.0:
+            mode = "contact"
+        else:
+            events.append(_separation(system, t, z))
+            mode = "flight"
+    final = events[-1] if events and events[-1].kind == "separation" else None
+    lifted = mode == "flight" and final is not None
+    return ContactHistory(
+        tuple(events),
+        t_end,
+        lifted,
+        final.t if lifted else None,
+        final.velocity if lifted else None,
+        final.height if lifted else None,
+        z,
+        restitution,
+    )
+
+
+def _unresolved_bounce(
+    system: ContactSystem, gap_row: np.ndarray, z: np.ndarray, e: float, skip: float
+) -> bool:
+    """True if a rebound with coefficient ``e`` would touch again within ``2 skip``.
+
+    The flight time of a bounce is about ``2 g'+ / |g''|`` (g'' the relative
+    acceleration in flight); shorter than the resolved time it is the tail of a Zeno
+    sequence, whose limit (the body staying on) is taken at once.
+    """
+    bounced, _ = system.impact(z, e)
+    rate = float(system.gap_rate(bounced))
+    accel = float(gap_row @ system.flight_matrix @ system.flight_matrix @ bounced)
+    return accel < 0.0 and 2.0 * rate / -accel < 2.0 * skip
+
+
+def _body(system: ContactSystem, z: np.ndarray) -> tuple[float, float]:
+    k = system.size
+    return float(z[2 * k]), float(z[2 * k + 1])
+
+
+def _separation(system: ContactSystem, t: float, z: np.ndarray) -> ContactEvent:
+    energy = float(system.energy(z))
+    return ContactEvent(
+        "separation", t, *_body(system, z), energy_before=energy, state_after=z.copy()
+    )
+
+
+def _advance(phase: _Phase, z: np.ndarray, duration: float) -> np.ndarray:
+    steps = int(duration // phase.step)
+    for _ in range(steps):
+        z = phase.grid_map @ z
+    rest = duration - steps * phase.step
+    return phase.at(z, np.array([rest]))[0] if rest > 0 else z
+
+
+def _next_event(
+    phase: _Phase,
+    signal: np.ndarray,
+    z0: np.ndarray,
+    t0: float,
+    t_end: float,
+    skip: float,
+) -> tuple[float, np.ndarray] | None:
+    """First time after ``skip`` at which ``signal . z`` reaches zero from above.
+
+    Returns the offset from ``t0`` and the state there, or None before ``t_end``.
+    """
+    rate = signal @ phase.matrix  # d/dt (signal . z) = signal . A z
+    z, tau = z0, 0.0
+    duration = t_end - t0
+    while tau < duration:
+        h = min(phase.step, duration - tau)
+        z_next = phase.grid_map @ z if h == phase.step else phase.at(z, np.array([h]))[0]
+        lo = max(skip - tau, 0.0)  # offset inside this step where the search begins
+        if lo < h:
+            hit = _in_step(phase, signal, rate, z, h, lo, z_next)
+            if hit is not None:
+                return tau + hit, phase.at(z, np.array([hit]))[0]
+        z, tau = z_next, tau + h
+    return None
+
+
+def _in_step(
+    phase: _Phase,
+    signal: np.ndarray,
+    rate: np.ndarray,
+    z: np.ndarray,
+    h: float,
+    lo: float,
+    z_next: np.ndarray,
+) -> float | None:
+    """First zero of ``signal . z(tau)`` crossed downwards in ``[lo, h]``, if any."""
+
+    def value(tau: np.ndarray, _i: np.ndarray | None = None) -> np.ndarray:
+        return phase.at(z, tau) @ signal
+
+    def slope(tau: np.ndarray, _i: np.ndarray | None = None) -> np.ndarray:
+        return phase.at(z, tau) @ rate
+
+    if lo > 0.0:
+        z_lo = phase.at(z, np.array([lo]))[0]
+        start, s0 = float(signal @ z_lo), float(rate @ z_lo)
+    else:
+        start, s0 = float(signal @ z), float(rate @ z)
+    end, s1 = float(signal @ z_next), float(rate @ z_next)
+    if start > 0.0 and end <= 0.0:
+        return float(_root(value, lo, h))
+    if start <= 0.0 and end <= 0.0:
+        return lo  # already below zero and staying there: touching at once
+    # start <= 0 alone is round-off right after an event (the signal leaves zero
+    # like (t - t_event)^2 or ^3); then only a later minimum below zero counts.
+    # both ends positive: look for a local minimum below zero in between
+    if not (s0 < 0.0 and s1 > 0.0):
+        return None
+    t_min = float(_root(slope, lo, h))
+    if float(value(np.array([t_min]))[0]) > 0.0:
+        return None
+    if start <= 0.0:
+        return lo  # it never opened beyond round-off: touching again at once
+    return float(_root(value, lo, t_min))
+
+
+def _root(f, a: float, b: float) -> float:
+    return float(bracketed_roots(f, np.array([a]), np.array([b]), xtol=TIME_TOLERANCE)[0])

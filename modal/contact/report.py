@@ -1,0 +1,316 @@
+"""The finite-mass lift-off in SI units: case in, contact sequence and v1 out.
+
+``mass_ratio > 0`` runs the event-driven contact solver
+(:mod:`twoball.modal.contact.events`); ``mass_ratio = 0`` is the massless mode:
+the paper's criteria (i)-(ii) of §3(a) applied to the cap-averaged motion
+(:func:`twoball.modal.liftoff.find_liftoff` on a series whose "pole values" are the
+cap averages), which is today's pole result as the contact radius goes to 0.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field
+from typing import Any
+
+import numpy as np
+
+from ..errors import ParameterError
+from ..filters import SpectralFilter
+from ..legendre import legendre_series
+from ..liftoff import find_liftoff
+from ..parameters import FROM_V0, Case
+from ..report import t_end_dimensionless
+from ..series import ModalSeries
+from .caps import DEFAULT_RADIUS_FRACTION, cap_angle, legendre_cap_averages
+from .events import ContactHistory, integrate
+from .system import ContactSystem
+
+ENERGY_OPTIONS: tuple[str, ...] = ("ball", "both")
+MAX_MASS_RATIO = 100.0
+
+
+def check_contact_options(
+    case: Case, mass_ratio: float, contact_radius: float | None, restitution: float, energy: str
+) -> float:
+    """Validate the contact options; return the contact radius [m] (default R/10)."""
+    if isinstance(mass_ratio, bool) or not isinstance(mass_ratio, (int, float)):
+        raise ParameterError("mass_ratio", f"a number in [0, {MAX_MASS_RATIO:g}]", mass_ratio)
+    if not (math.isfinite(mass_ratio) and 0.0 <= mass_ratio <= MAX_MASS_RATIO):
+        raise ParameterError("mass_ratio", f"a number in [0, {MAX_MASS_RATIO:g}]", mass_ratio)
+    if isinstance(restitution, bool) or not (
+        isinstance(restitution, (int, float)) and 0.0 <= restitution <= 1.0
+    ):
+        raise ParameterError("restitution", "a number in [0, 1]", restitution)
+    if energy not in ENERGY_OPTIONS:
+        raise ParameterError("energy", "one of " + ", ".join(ENERGY_OPTIONS), energy)
+    if contact_radius is None:
+        return DEFAULT_RADIUS_FRACTION * case.radius
+    if isinstance(contact_radius, bool) or not isinstance(contact_radius, (int, float)):
+        raise ParameterError(
+            "contact_radius", f"in (0, R) = (0, {case.radius:g}) m", contact_radius
+        )
+    cap_angle(contact_radius, case.radius)
+    return float(contact_radius)
+
+
+def membrane_case(case: Case, mass_ratio: float, energy: str) -> Case:
+    """The case whose phi_a sets the membrane's initial shape.
+
+    ``ball``: eq. (3.6) as printed, the lower ball's kinetic energy alone becomes
+    deformation.  ``both``: the upper body's ``mu m2 v0^2 / 2`` too, i.e. eq. (3.7)
+    at ``|v0| sqrt(1 + mu)``.
+    """
+    if energy == "ball" or mass_ratio == 0.0:
+        return case
+    return case.derive(v0=case.v0 * math.sqrt(1.0 + mass_ratio), phi_a=FROM_V0)
+
+
+@dataclass(frozen=True)
+class ContactReport:
+    """Finite-mass lift-off of the upper body, in SI (seconds, m/s, N s).
+
+    ``history`` is the dimensionless event history (None in the massless mode,
+    where ``massless`` holds the criteria's :class:`LiftoffResult`).
+    """
+
+    case: Case
+    mass_ratio: float
+    contact_radius_m: float
+    restitution: float
+    energy: str
+    backend: str
+    sigma: str
+    history: ContactHistory | None
+    massless: Any = None
+    extra: dict[str, Any] = field(default_factory=dict)
+    warnings: tuple[str, ...] = ()
+    membrane: Case | None = None
+    system: ContactSystem | None = field(default=None, repr=False, compare=False)
+    provenance: dict[str, Any] | None = field(default=None, compare=False, repr=False)
+
+    @property
+    def result(self) -> Any:
+        """The dimensionless outcome: the :class:`ContactHistory` (or the massless
+        :class:`LiftoffResult`); both have ``lifted``, ``t`` and ``velocity``."""
+        return self.history if self.history is not None else self.massless
+
+    @property
+    def lifted(self) -> bool:
+        """True if the body is in flight at the end of the window."""
+        return bool(self.history.lifted if self.history is not None else self.massless.lifted)
+
+    @property
+    def _dimensionless(self) -> tuple[float | None, float | None]:
+        if self.history is not None:
+            return self.history.t, self.history.velocity
+        return self.massless.t, self.massless.velocity
+
+    @property
+    def t_liftoff_s(self) -> float | None:
+        """Final separation time [s] after maximal compression, or None."""
+        t = self._dimensionless[0]
+        return None if t is None else t * self.case.scalings.time
+
+    @property
+    def v_liftoff_m_s(self) -> float | None:
+        """The body's velocity v1 [m/s] at the final separation, or None."""
+        v = self._dimensionless[1]
+        return None if v is None else v * self.case.scalings.velocity
+
+    @property
+    def ratio(self) -> float | None:
+        """``v1 / |v0|``."""
+        v = self.v_liftoff_m_s
+        return None if v is None else v / self.case.v0
+
+    @property
+    def notes(self) -> list[str]:
+        """How phi_a was chosen (as for the massless lift-off)."""
+        note = (self.membrane or self.case).phi_a_note
+        return [note] if note else []
+
+    def trajectory_si(self, samples: int = 600) -> dict[str, Any]:
+        """Body and cap-averaged membrane on ``samples`` times over the window (SI).
+
+        Keys: ``t_s``, ``body_height_m``, ``body_velocity_m_s``, ``cap_displacement_m``,
+        ``cap_velocity_m_s``, ``contact`` (bool); empty in the massless mode.
+        """
+        if self.history is None or self.system is None:
+            return {}
+        from .trajectory import sample
+
+        scale = self.case.scalings
+        data = sample(self.system, self.history, np.linspace(0, self.history.t_end, samples))
+        return {
+            "t_s": data["t"] * scale.time,
+            "body_height_m": data["body_height"] * scale.length,
+            "body_velocity_m_s": data["body_velocity"] * scale.velocity,
+            "cap_displacement_m": data["cap_displacement"] * scale.length,
+            "cap_velocity_m_s": data["cap_velocity"] * scale.velocity,
+            "contact": data["contact"],
+        }
+
+    def events_si(self) -> list[dict[str, Any]]:
+        """Every contact event in SI: kind, time, body height and velocity, impulse, loss."""
+        if self.history is None:
+            return []
+        scale = self.case.scalings
+        energy_unit = self._energy_unit
+        impulse_unit = energy_unit / scale.velocity  # (T R^2) / (R c) = T R / c
+        return [
+            {
+                "kind": e.kind,
+                "t_s": e.t * scale.time,
+                "height_m": e.height * scale.length,
+                "velocity_m_s": e.velocity * scale.velocity,
+                "impulse_N_s": e.impulse * impulse_unit,
+                "energy_loss_J": e.energy_loss * energy_unit,
+            }
+            for e in self.history.events
+        ]
+
+    @property
+    def _energy_unit(self) -> float:
+        """T R^2 [J] with ``T = rho R^2 c^2`` and ``rho = m2 / (4 pi R^2)``; m2 unknown here.
+
+        The membrane's mass is not a case parameter, so energies and impulses are
+        given per kilogram of membrane: ``T R^2 / m2 = R^2 c^2 / (4 pi)`` [J/kg].
+        """
+        scale = self.case.scalings
+        return scale.velocity**2 / (4.0 * math.pi)
+
+    def as_dict(self) -> dict[str, Any]:
+        """JSON-ready (SI; impulses and energies per kilogram of membrane mass)."""
+        data: dict[str, Any] = {
+            "lifted": self.lifted,
+            "t_liftoff_s": self.t_liftoff_s,
+            "v_liftoff_m_s": self.v_liftoff_m_s,
+            "ratio": self.ratio,
+            "mass_ratio": self.mass_ratio,
+            "contact_radius_m": self.contact_radius_m,
+            "restitution": self.restitution,
+            "energy": self.energy,
+            "mode": "massless criteria" if self.history is None else "contact dynamics",
+            "impacts": 0 if self.history is None else len(self.history.impacts),
+            "events": self.events_si(),
+            "events_units": "impulse_N_s and energy_loss_J per kg of membrane mass m2",
+            "phi_a_rad": (self.membrane or self.case).phi_a,
+            "phi_a_source": (self.membrane or self.case).phi_a_source,
+            "gamma": self.case.gamma,
+            "backend": self.backend,
+            "radius_m": self.case.radius,
+            "wave_speed_1_s": self.case.wave_speed,
+            "v0_m_s": self.case.v0,
+            "damping": self.case.damping,
+            "modes": self.case.modes,
+            "sigma": self.sigma,
+        }
+        data.update(self.extra)
+        data["notes"] = self.notes
+        data["warnings"] = list(self.warnings)
+        if self.provenance is not None:
+            data["provenance"] = self.provenance
+        return data
+
+
+@dataclass(frozen=True)
+class ContactCase:
+    """A case with an upper body of mass ratio ``mass_ratio``: one point of a mass sweep.
+
+    Reads like its :class:`Case` (``phi_a``, ``v0``, ...) plus ``mass_ratio``.
+    """
+
+    case: Case
+    mass_ratio: float
+
+    def __getattr__(self, name: str) -> Any:
+        if name.startswith("__"):
+            raise AttributeError(name)
+        return getattr(self.case, name)
+
+
+def solve_contact(
+    case: Case,
+    series: ModalSeries,
+    contact: np.ndarray,
+    *,
+    mass_ratio: float,
+    contact_radius_m: float,
+    restitution: float,
+    energy: str,
+    backend: str,
+    sigma: str,
+    t_end: float,
+    membrane: Case,
+    extra: dict[str, Any] | None = None,
+    samples_per_period: int = 32,
+) -> ContactReport:
+    """Run the shared contact solver on any backend's series and cap averages."""
+    system = None
+    if mass_ratio == 0.0:
+        cap_series = ModalSeries(
+            series.omega,
+            series.coefficients,
+            np.asarray(contact, dtype=float),
+            series.damping,
+            series.filter,
+            series.mode_norms,
+        )
+        result = find_liftoff(cap_series, case.gamma, t_end=t_end)
+        history = None
+    else:
+        system = ContactSystem.from_series(series, contact, mass_ratio, case.gamma)
+        history = integrate(system, t_end, restitution, samples_per_period)
+        result = None
+    return ContactReport(
+        case, mass_ratio, contact_radius_m, restitution, energy, backend, sigma,
+        history, result, dict(extra or {}), (), membrane,
+        None if mass_ratio == 0.0 else system,
+    )  # fmt: skip
+
+
+def legendre_contact(
+    case: Case,
+    mass_ratio: float,
+    contact_radius: float | None = None,
+    *,
+    sigma: str = "lanczos",
+    restitution: float = 0.0,
+    energy: str = "ball",
+    t_end_s: float | None = None,
+    samples_per_period: int = 32,
+) -> ContactReport:
+    """Finite-mass lift-off on the Legendre modes (the closed-form backend).
+
+    Parameters
+    ----------
+    case : Case
+        The impact (SI).
+    mass_ratio : float
+        ``mu = m1 / m2`` in [0, 100]; 0 is the massless mode (criteria (i)-(ii)).
+    contact_radius : float, optional
+        Radius a [m] of the contact cap, in (0, R); default R/10.
+    sigma : {"lanczos", "printed", "none"}
+        Spectral filter of the initial values, eq. (3.16).
+    restitution : float
+        Newton's coefficient e in [0, 1] at re-contact (default 0, inelastic).
+    energy : {"ball", "both"}
+        Energy at t = 0: eq. (3.6) for the lower ball alone, or with the upper
+        body's kinetic energy (see :func:`membrane_case`).
+    t_end_s : float, optional
+        Modelled window [s] (default 4 pi / c).
+    """
+    radius = check_contact_options(case, mass_ratio, contact_radius, restitution, energy)
+    mass_ratio = float(mass_ratio)
+    membrane = membrane_case(case, mass_ratio, energy)
+    series = legendre_series(membrane.phi_a, case.damping, SpectralFilter(sigma, case.modes))
+    theta = cap_angle(radius, case.radius)
+    contact = legendre_cap_averages(theta, case.modes)
+    return solve_contact(
+        case, series, contact,
+        mass_ratio=mass_ratio, contact_radius_m=radius, restitution=float(restitution),
+        energy=energy, backend="legendre", sigma=sigma,
+        t_end=t_end_dimensionless(case, t_end_s), membrane=membrane,
+        extra={"cap_angle_rad": theta}, samples_per_period=samples_per_period,
+    )  # fmt: skip
