@@ -6,7 +6,7 @@ functional: ``f . u`` is the average of the finite-element function u over the
 polar cap, by the quadrature of :mod:`twoball.modal.contact.caps` (Gauss in
 ``cos(phi)``, times the trapezoid rule in azimuth on the sphere), at points
 located in their elements (the pole search of
-:func:`twoball.fem_membrane.mesh.locate_pole`, on the mesh rotated so that the
+:func:`twoball.fem_membrane.locate.locate_pole`, on the mesh rotated so that the
 point lies on the axis).  The shared solver of :mod:`twoball.modal.contact` does
 the rest.  Dimensionless.
 """
@@ -22,7 +22,8 @@ from twoball.modal.contact.caps import cap_rule, sphere_cap_points
 from twoball.modal.errors import ParameterError
 
 from .build import DEFAULT_LEVEL
-from .mesh import SphereMesh, icosphere, locate_pole, ring_sphere
+from .locate import locate_pole
+from .mesh import SphereMesh, icosphere, ring_sphere
 from .space import Discretisation
 
 #: Cap quadrature: Gauss points in cos(phi), and azimuthal points on the sphere.

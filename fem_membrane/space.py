@@ -27,8 +27,9 @@ from twoball.modal.errors import ParameterError
 
 from .checks import GEOMETRIES, check_choice, check_order
 from .forms import mass, stiffness
+from .locate import locate_pole
 from .mapping import RadialProjectionMapping, SurfaceMapping
-from .mesh import SphereMesh, elevate, flatten, locate_pole, topology
+from .mesh import SphereMesh, elevate, flatten, topology
 
 PoleFunctional = int | sp.spmatrix
 """A degree-of-freedom index at the pole, or a sparse row (1, dofs) evaluating u there."""
@@ -166,7 +167,7 @@ def surface_pole_row(basis: CellBasis, mesh: SphereMesh, exact: bool = False) ->
 
     With a node at the pole it is the unit row of that node's degree of freedom
     (as for every generated mesh); otherwise the pole is located in its element
-    by :func:`twoball.fem_membrane.mesh.locate_pole` and the row holds the values
+    by :func:`twoball.fem_membrane.locate.locate_pole` and the row holds the values
     of that element's basis functions there (they sum to 1).  With the exact
     geometry (``exact``) the pole is located on the flat triangles, whose radial
     projection the elements are.  Dimensionless.

@@ -19,8 +19,9 @@ import numpy as np
 import pytest
 from twoball.fem_membrane.build import build_space
 from twoball.fem_membrane.eigen import eigenpairs, lowest_eigenpairs
+from twoball.fem_membrane.locate import locate_pole
 from twoball.fem_membrane.mapping import RadialProjectionMapping
-from twoball.fem_membrane.mesh import elevate, icosphere, locate_pole, ring_sphere
+from twoball.fem_membrane.mesh import elevate, icosphere, ring_sphere
 from twoball.fem_membrane.mesh_input import load_sphere_mesh
 from twoball.fem_membrane.space import sphere_space
 from twoball.modal.errors import ParameterError

@@ -20,7 +20,8 @@ from skfem import ElementTriP3, ElementTriP4
 from twoball.fem_membrane.axisym import axisym_space
 from twoball.fem_membrane.eigen import eigenpairs, lowest_eigenpairs
 from twoball.fem_membrane.initial import initial_load
-from twoball.fem_membrane.mesh import _edges, icosphere, locate_pole, ring_sphere, shape_functions
+from twoball.fem_membrane.locate import locate_pole, shape_functions
+from twoball.fem_membrane.mesh import _edges, icosphere, ring_sphere
 from twoball.fem_membrane.solve import modal_model
 from twoball.fem_membrane.space import dof_nodes, sphere_space
 from twoball.modal.filters import SpectralFilter

@@ -114,11 +114,14 @@ def ball_model_of(
     recontact: str,
     t_end: float | None,
     progress: Step | None = None,
+    cells: bool = False,
 ) -> Any:
     """Solve ``case`` with ``backends`` on the sphere mesh of the options (see ``BallModel``)."""
     from twoball.verify.output.fields import ball_model
 
     spec = MeshOptions.resolve(mesh, level=level, order=order, kinds=SPHERE_KINDS, files=False)
+    if cells and spec.order > 2:  # VTK and pyvista cells stop at quadratic triangles
+        raise ParameterError("order", "1 or 2 for field files and pictures", spec.order)
     initial = check_initial(initial, backends)
     if initial not in INITIAL_METHODS:
         raise ParameterError("initial", "one of " + ", ".join(INITIAL_METHODS), initial)

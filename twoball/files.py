@@ -126,6 +126,7 @@ def export(
         recontact=recontact,
         t_end=t_end,
         progress=progress,
+        cells=True,
     )
     if fmt == "vtu" and times is None and frames is None:
         selected = liftoff_frame(model, backend)
@@ -247,6 +248,7 @@ def render(
         recontact=recontact,
         t_end=t_end,
         progress=progress,
+        cells=True,
     )
     if kind == ".png":
         times = liftoff_frame(model, backend) if times is None else times
