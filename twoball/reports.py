@@ -63,7 +63,7 @@ def converge(
     mesh : {"sphere", "axisym"}, optional
         Default sphere (axisym for ``dt``); not used by ``modes``.
     order : {1, 2, 3, 4}, optional
-        Default 1 (2 for ``dt``); ``order`` runs P1 to P4 and takes none.
+        Default 2, as everywhere; ``order`` runs P1 to P4 and takes none.
     geometry : {"isoparametric", "exact"}, optional
         Discrete sphere of ``h`` and ``order`` on the sphere (default
         isoparametric); refused on the line and with ``modes`` and ``dt``.
@@ -99,13 +99,13 @@ def converge(
             if value is not None:
                 raise ParameterError(name, "left out with study modes (no mesh)", value)
     if study == "order" and order is not None:
-        raise ParameterError("order", "left out with study order (it compares P1 and P2)", order)
+        raise ParameterError("order", "left out with study order (it compares P1 to P4)", order)
     if mesh is None:
         mesh = "axisym" if study == "dt" else "sphere"
     if mesh not in ("sphere", "axisym"):
         raise ParameterError("mesh", "one of sphere, axisym", mesh)
     if order is None:
-        order = 2 if study == "dt" else 1
+        order = 2
     if order not in (1, 2, 3, 4) or isinstance(order, bool):
         raise ParameterError("order", "1, 2, 3 or 4", order)
     if geometry is not None:

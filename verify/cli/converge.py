@@ -95,7 +95,7 @@ def register(parser: argparse.ArgumentParser) -> None:
         "--order",
         type=int,
         choices=(1, 2, 3, 4),
-        help="element order P (default: 1; 2 for --study dt)",
+        help="element order P (default 2, as in every subcommand)",
     )
     parser.add_argument(
         "--geometry",
