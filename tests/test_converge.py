@@ -46,7 +46,7 @@ def test_modes_study_is_second_order_and_states_the_n30_truncation():
 def test_converge_modes_cli_writes_every_file(capsys, tmp_path):
     out = tmp_path / "modes"
     code, stdout, _ = run(
-        capsys, "converge", "--study", "modes", "--modes-list", "30,60,120", "--out", str(out),
+        capsys, "converge", "modes", "--modes-list", "30,60,120", "--out", str(out),
         "--json",
     )  # fmt: skip
     assert code == 0
@@ -65,7 +65,7 @@ def test_converge_replaces_an_old_report_and_leaves_no_scratch(capsys, tmp_path)
     out.mkdir()
     (out / ".twoball-report").write_text("")  # a report of an earlier twoball version
     (out / "report.md").write_text("old")
-    code, _, _ = run(capsys, "converge", "--study", "modes", "--modes-list", "30,60,120",
+    code, _, _ = run(capsys, "converge", "modes", "--modes-list", "30,60,120",
                      "--out", str(out))  # fmt: skip
     assert code == 0 and (out / "report.md").read_text() != "old"
     assert not (out / ".twoball-report").exists()
@@ -78,7 +78,7 @@ def test_converge_refuses_an_old_report_holding_a_user_file(capsys, tmp_path):
     (out / ".twoball-report").write_text("")
     (out / "stale.txt").write_text("mine")
     with pytest.raises(SystemExit) as stop:
-        main(["converge", "--study", "modes", "--modes-list", "30,60,120", "--out", str(out)])
+        main(["converge", "modes", "--modes-list", "30,60,120", "--out", str(out)])
     assert stop.value.code == 2 and "stale.txt" in capsys.readouterr().err
     assert (out / "stale.txt").read_text() == "mine"
 
@@ -86,12 +86,12 @@ def test_converge_refuses_an_old_report_holding_a_user_file(capsys, tmp_path):
 @pytest.mark.parametrize(
     ("argv", "flag"),
     [
-        (["--study", "h", "--levels", "3"], "--levels"),
-        (["--study", "h", "--levels", "4:2"], "--levels"),
-        (["--study", "h", "--levels", "a:b"], "--levels"),
-        (["--study", "h", "--levels", "2:99"], "--levels"),
-        (["--study", "nonsense"], "--study"),
-        (["--study", "modes", "--modes-list", "30,20,40"], "--modes-list"),
+        (["h", "--levels", "3"], "--levels"),
+        (["h", "--levels", "4:2"], "--levels"),
+        (["h", "--levels", "a:b"], "--levels"),
+        (["h", "--levels", "2:99"], "--levels"),
+        (["nonsense"], "STUDY"),
+        (["modes", "--modes-list", "30,20,40"], "--modes-list"),
     ],
 )
 def test_bad_input_is_one_line_exit_2_and_no_files(capsys, tmp_path, argv, flag):
@@ -109,7 +109,7 @@ def test_unwritable_out_is_one_line_exit_2(capsys, tmp_path):
     blocker.write_text("x")
     for out in (blocker, blocker / "sub"):
         with pytest.raises(SystemExit) as exit_info:
-            main(["converge", "--study", "modes", "--out", str(out)])
+            main(["converge", "modes", "--out", str(out)])
         err = capsys.readouterr().err
         assert exit_info.value.code == 2 and "--out" in err and err.count("\n") == 1
     assert [p.name for p in tmp_path.iterdir()] == ["file"]
@@ -175,7 +175,7 @@ def test_axisym_h_study_at_p3_p4_converges_at_2p(order, levels):
 
 def test_converge_cli_takes_orders_3_4_and_the_exact_geometry(capsys, tmp_path):
     code, stdout, _ = run(
-        capsys, "converge", "--study", "h", "--mesh", "sphere", "--order", "3", "--geometry",
+        capsys, "converge", "h", "--mesh", "sphere", "--order", "3", "--geometry",
         "exact", "--levels", "1:2", "--out", str(tmp_path / "h"), "--json",
     )  # fmt: skip
     data = json.loads(stdout)
@@ -196,7 +196,7 @@ def test_dt_study_is_second_order_for_generalized_alpha():
 def test_converge_h_cli_axisym(capsys, tmp_path):
     out = tmp_path / "h"
     code, stdout, _ = run(
-        capsys, "converge", "--study", "h", "--mesh", "axisym", "--order", "2", "--levels", "2:4",
+        capsys, "converge", "h", "--mesh", "axisym", "--order", "2", "--levels", "2:4",
         "--out", str(out), "--json",
     )  # fmt: skip
     data = json.loads(stdout)

@@ -216,7 +216,7 @@ def test_options_refuse_what_does_not_apply(kwargs, text):
         (["liftoff", "--backend", "fem", "--mesh", "ring", "--geometry", "exact"], "--geometry"),
         (["eigen", "--mesh", "axisym", "--geometry", "exact"], "--geometry"),
         (["liftoff", "--geometry", "exact"], "--geometry"),
-        (["converge", "--study", "h", "--mesh", "axisym", "--geometry", "exact"], "--geometry"),
+        (["converge", "h", "--mesh", "axisym", "--geometry", "exact"], "--geometry"),
         (["eigen", "--order", "5"], "--order"),
     ],
 )

@@ -489,7 +489,7 @@ def test_gmsh_ball_of_radius_012_converges_through_the_cli(tmp_path, capsys, ord
 
     ``twoball liftoff --mesh-file`` against the Legendre series with the same N
     and filter: t_l converges at 2p (finest step within the band of ``converge
-    --study h``; measured 2.03 for P1 levels 4 -> 5 and 3.98 for P2 levels
+    converge h``; measured 2.03 for P1 levels 4 -> 5 and 3.98 for P2 levels
     3 -> 4); v_l shrinks on every refinement but irregularly on the icosphere
     (measured 1.6, 3.3 for P1 and 10.0, 1.7 for P2), so only its decrease is checked.
     """

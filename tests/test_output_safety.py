@@ -36,7 +36,7 @@ FILE_WRITERS = {
 SUFFIX = {"export": ".pvd", "render": ".png", "plot": ".png", "sweep": ".png"}
 FOLDER_WRITERS = {
     "verify": ["verify", "--fast", "--out"],
-    "converge": ["converge", "--study", "modes", "--modes-list", "30,60,120", "--out"],
+    "converge": ["converge", "modes", "--modes-list", "30,60,120", "--out"],
     "reproduce": ["reproduce", "--only", "table2", "--out"],
 }
 

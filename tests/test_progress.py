@@ -113,8 +113,8 @@ def same_image(a: Path, b: Path) -> bool:
 
 COMMANDS = {
     "verify": (["verify", "--fast", "--json", "--out", "{out}"], "results.json", same_json),
-    "converge --study modes": (
-        ["converge", "--study", "modes", "--modes-list", "30,60,120", "--out", "{out}"],
+    "converge modes": (
+        ["converge", "modes", "--modes-list", "30,60,120", "--out", "{out}"],
         "results.json",
         same_json,
     ),

@@ -132,7 +132,7 @@ CONTROL = [
     ["sweep", "--param", "damping", "--values", "0:0.5:3", "--json"],
     ["icm", "--mu", "0", "--e2", "0", "--e12", "1", "--json"],
     ["icm", "--table1", "--json"],
-    ["converge", "--study", "modes", "--modes-list", "30,60,120", "--out", "{tmp}/c", "--json"],
+    ["converge", "modes", "--modes-list", "30,60,120", "--out", "{tmp}/c", "--json"],
     ["export", "--level", "1", "--order", "1", "--out", "{tmp}/x.vtu"],
     ["render", "--level", "1", "--order", "1", "--size", "64x48", "--out", "{tmp}/x.png"],
     ["plot", "pole", "--level", "1", "--order", "1", "--out", "{tmp}/p.png"],

@@ -22,7 +22,7 @@ MESHES = ("sphere", "axisym")
 def print_study(study: StudyResult, out: Path) -> None:
     """The summary table, the notes and where the files went."""
     header, rows = study_summary_rows(study)
-    table = Table(title=f"converge --study {study.study}: {study.title}")
+    table = Table(title=f"converge {study.study}: {study.title}")
     for name in header:
         table.add_column(name, justify="right" if name != "quantity" else "left")
     for row in rows:
@@ -55,12 +55,12 @@ def run(args: argparse.Namespace) -> int:
         "out": out,
     }
     if args.study == "modes" and args.modes is not None:
-        raise ParameterError("modes", "left out with --study modes (use --modes-list)", args.modes)
+        raise ParameterError("modes", "left out with study modes (use --modes-list)", args.modes)
     case = case_from_options(args)
     print_notes([case.phi_a_note] if case.phi_a_note else [])
     from twoball.progress import Reporter
 
-    with Reporter(f"converge --study {args.study}") as progress:
+    with Reporter(f"converge {args.study}") as progress:
         study = converge(case, progress=progress, **options)
     target = Path(out).expanduser()
     if args.json:
@@ -81,15 +81,15 @@ def register(parser: argparse.ArgumentParser) -> None:
         "status 1 if an observed order falls outside its expected band."
     )
     parser.add_argument(
-        "--study",
-        required=True,
+        "study",
+        metavar="STUDY",
         choices=STUDIES,
         help="h: mesh refinement; order: P1 to P4 at equal DOFs; modes: Legendre N; dt: time step",
     )
     parser.add_argument(
         "--mesh",
         choices=MESHES,
-        help="finite-element mesh (default: sphere; axisym for --study dt)",
+        help="finite-element mesh (default: sphere; axisym for study dt)",
     )
     parser.add_argument(
         "--order",
@@ -99,7 +99,7 @@ def register(parser: argparse.ArgumentParser) -> None:
     )
     parser.add_argument(
         "--geometry",
-        help="--study h|order on the sphere: isoparametric (default) or exact (the sphere "
+        help="study h or order on the sphere: isoparametric (default) or exact (the sphere "
         "itself, radial projection of the flat triangles)",
     )
     parser.add_argument(
@@ -111,7 +111,7 @@ def register(parser: argparse.ArgumentParser) -> None:
     parser.add_argument(
         "--modes-list",
         metavar="LIST",
-        help="mode counts of --study modes, 3 to 16 increasing (default 30,60,120,240,480)",
+        help="mode counts of study modes, 3 to 16 increasing (default 30,60,120,240,480)",
     )
     add_case_options(parser)
     parser.add_argument(

@@ -58,7 +58,7 @@ FLAGS: dict[str, str] = {
     "param": "--param",
     "workers": "--workers",
     "scheduler": "--scheduler",
-    "study": "--study",
+    "study": "converge STUDY",
     "levels": "--levels",
     "orders": "--orders",
     "modes_list": "--modes-list",

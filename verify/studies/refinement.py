@@ -299,7 +299,7 @@ def run_order_study(
     one axis and their orders in h carry over.  The eigenvalue lambda_6 and the
     pole trajectory are checked against their bands (where the order has one);
     t_l and v_l are compared by their errors (their orders are checked by
-    ``--study h``).  The run rows carry DOFs and seconds (error per DOF and per
+    ``converge h``).  The run rows carry DOFs and seconds (error per DOF and per
     second); the notes state how much smaller each order's error is at equal DOFs.
     """
     del order  # every order of ``orders`` is run
