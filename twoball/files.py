@@ -146,10 +146,14 @@ def ball_model_of(
     sigma: str,
     recontact: str,
     t_end: float | None,
+    route: str = "auto",
 ) -> Any:
     """Solve ``case`` with ``backends`` on the sphere mesh of the options (see ``BallModel``)."""
+    from twoball.fem_membrane.krylov import ROUTES
     from twoball.verify.output.fields import ball_model
 
+    if route not in ROUTES:
+        raise ParameterError("route", "one of " + ", ".join(ROUTES), route)
     spec = MeshOptions.resolve(mesh, level=level, order=order, kinds=SPHERE_KINDS, files=False)
     if initial not in INITIAL_METHODS:
         raise ParameterError("initial", "one of " + ", ".join(INITIAL_METHODS), initial)
@@ -163,6 +167,7 @@ def ball_model_of(
         t_end_s=t_end,
         backends=tuple(backends),
         initial=initial,
+        route=route,
     )
 
 
@@ -181,6 +186,7 @@ def export(
     sigma: str = "lanczos",
     recontact: str = "window",
     t_end: float | None = None,
+    route: str = "auto",
 ) -> ExportResult:
     """Write u, u_t, u_tt (SI) of both backends on the sphere mesh over time.
 
@@ -205,6 +211,10 @@ def export(
         FE representation of the initial displacement, eq. (3.10).
     sigma, recontact, t_end
         As in :func:`twoball.liftoff`.
+    route : {"auto", "full", "krylov"}
+        FE mode shapes: every eigenpair below the cutoff (``full``), the Ritz pairs
+        of the rational Krylov route converged on the whole field (``krylov``), or
+        Krylov from 2000 unknowns on (``auto``, default; sphere P2 level 3 has 2562).
     """
     from twoball.fem_membrane.export import series_format, write_series
     from twoball.staging import check_file
@@ -246,6 +256,7 @@ def export(
         sigma=sigma,
         recontact=recontact,
         t_end=t_end,
+        route=route,
     )
     if fmt == "vtu" and times is None and frames is None:
         selected = liftoff_frame(model, backend)
@@ -285,6 +296,7 @@ def render(
     sigma: str = "lanczos",
     recontact: str = "window",
     t_end: float | None = None,
+    route: str = "auto",
 ) -> RenderResult:
     """Off-screen picture (``.png``) or animation (``.gif``, ``.mp4``) of the bouncing ball.
 
@@ -306,7 +318,7 @@ def render(
         Image size in pixels (MP4: rounded up to multiples of 16).
     fps : float
         Frames per second of an animation.
-    mesh, level, order, initial, sigma, recontact, t_end
+    mesh, level, order, initial, sigma, recontact, t_end, route
         As in :func:`export`.
     """
     import numpy as np
@@ -353,6 +365,7 @@ def render(
         sigma=sigma,
         recontact=recontact,
         t_end=t_end,
+        route=route,
     )
     if kind == ".png":
         times = liftoff_frame(model, backend) if times is None else times
@@ -390,6 +403,7 @@ def plot(
     sigma: str = "lanczos",
     recontact: str = "window",
     t_end: float | None = None,
+    route: str = "auto",
 ) -> PlotResult:
     """PNG figures: ``waterfall`` of u(phi) (Fig. 6), ``pole`` motion, FE ``eigen`` errors.
 
@@ -407,7 +421,7 @@ def plot(
         Curves of the waterfall (default 24, as in Fig. 6), >= 2.
     levels, orders, max_degree
         ``eigen``: mesh levels, element orders and the largest degree l.
-    mesh, level, order, initial, sigma, recontact, t_end
+    mesh, level, order, initial, sigma, recontact, t_end, route
         As in :func:`export` (``waterfall`` and ``pole``).
     """
     from twoball.staging import check_file
@@ -456,6 +470,7 @@ def plot(
             sigma=sigma,
             recontact=recontact,
             t_end=t_end,
+            route=route,
         )
         figure = waterfall_figure(model, instants) if kind == "waterfall" else pole_figure(model)
         for name, solved in model.backends.items():
