@@ -38,9 +38,10 @@ shift), every ``max(1, basis // 100)`` cycles, against the previous evaluation
 (issue 16: the Rayleigh-Ritz eigenproblem of the growing basis dominated the cost
 when done on every step; the wider spacing only makes the comparison stricter).
 The basis grows by at most two columns per step, so a cycle adds 2 len(shifts)
-directions; a stagnating step cannot satisfy the rule alone.  With ``field_times`` the whole field must settle too
-(:mod:`twoball.fem_membrane.ritz_field`).  This is a difference-of-iterates estimate, not a bound:
-measured against the full route the u_tt error was up to about 10 ``tol``
+directions; a stagnating step cannot satisfy the rule alone.  With
+``field_times`` the whole field must settle too
+(:mod:`twoball.fem_membrane.ritz_field`).  This is a difference-of-iterates
+estimate, not a bound: measured against the full route the u_tt error was up to about 10 ``tol``
 (2e-10 on sphere P1 level 4 with 4 shifts) and u, t_l, v_l agreed to 1e-11 or
 better.  If the rule is not met within ``max_basis`` vectors, NumericalError.
 

@@ -194,10 +194,11 @@ def fem_nodal_series(
     route, converged on the whole field over [0, ``t_end``]
     (:mod:`twoball.fem_membrane.ritz_field`), ``auto`` (default) Krylov from
     :data:`twoball.fem_membrane.krylov.AUTO_THRESHOLD` unknowns on, like the pole.
-    For Lagrange elements on their own geometry every degree of freedom sits at a mesh node, so the mesh returned here has the
-    degrees of freedom as its nodes (``doflocs``) and their numbering in its cells
-    (skfem's local order: vertices, then edges 01, 12, 20 -- meshio's
-    ``triangle6``), and the eigenvectors are the mode shapes at the nodes as they are.
+    For Lagrange elements on their own geometry every degree of freedom sits at a
+    mesh node, so the mesh returned here has the degrees of freedom as its nodes
+    (``doflocs``) and their numbering in its cells (skfem's local order: vertices,
+    then edges 01, 12, 20 -- meshio's ``triangle6``), and the eigenvectors (or
+    Ritz vectors) are the mode shapes at the nodes as they are.
 
     Returns
     -------
