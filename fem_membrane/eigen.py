@@ -216,14 +216,18 @@ def eigen_table(
         One row per eigenvalue, the constant mode first: ``index``, ``l``,
         ``value``, ``exact`` = l (l + 1), ``relative_error`` (absolute for
         l = 0), ``multiplicity`` (computed eigenvalues in the cluster of l) and
-        ``expected_multiplicity`` (2 l + 1 on the sphere, 1 on the line).
-        Dimensionless.
+        ``expected_multiplicity`` (2 l + 1 on the sphere, 1 on the line),
+        ``residual`` = ``||K x - lambda M x|| / max(||K x||, ||M x||)`` of the
+        pair and ``orthonormality`` = ``max |Phi^T M Phi - I|`` over all pairs
+        computed.  Dimensionless.
     """
     from .build import build_space  # local: build imports the spaces, which import nothing here
 
     if isinstance(count, bool) or int(count) != count or count < 1:
         raise ParameterError("count", "an integer >= 1", count)
     space = build_space(mesh, level=level, elements=elements, order=order, phi_a=phi_a)
+    if count > space.dofs:
+        raise ParameterError("count", f"at most the number of unknowns ({space.dofs})", count)
     axisymmetric = space.kind == "axisym"
     if axisymmetric:
         degrees = np.arange(count + 1)
@@ -234,11 +238,15 @@ def eigen_table(
     needed = min(needed, space.dofs)
     pairs = lowest_eigenpairs(space.stiffness, space.mass, needed)
     values = pairs.values
+    listed = min(count + 1, values.size)
+    residuals = relative_residuals(
+        space.stiffness, space.mass, values[:listed], pairs.vectors[:, :listed]
+    )
     counts = np.ones(values.size, dtype=int)
     if not axisymmetric:
         counts = np.bincount(sphere_degree(values), minlength=values.size)
     rows = []
-    for index in range(min(count + 1, values.size)):
+    for index in range(listed):
         degree = int(degrees[index]) if axisymmetric else int(math.isqrt(index))
         exact = float(degree * (degree + 1))
         error = abs(values[index] - exact) / exact if exact > 0 else abs(values[index])
@@ -251,6 +259,8 @@ def eigen_table(
                 "relative_error": float(error),
                 "multiplicity": int(counts[degree]),
                 "expected_multiplicity": 1 if axisymmetric else 2 * degree + 1,
+                "residual": float(residuals[index]),
+                "orthonormality": float(pairs.orthonormality),
             }
         )
     return rows

@@ -447,6 +447,8 @@ def plot(
         ):
             if value is not None:
                 raise ParameterError(name, "left out with kind eigen (use levels, orders)", value)
+        if route != "auto":
+            raise ParameterError("route", "left out with kind eigen", route)
         tables = [eigen_table(lv, od, max_degree) for od in orders for lv in levels]
         figure = eigen_figure(tables)
         rows += [(t.label, f"l <= {t.degrees[-1]}, worst {t.errors[1:].max():.2e}") for t in tables]

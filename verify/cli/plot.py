@@ -10,7 +10,13 @@ import argparse
 from twoball.modal.errors import ParameterError
 from twoball.verify.cli.case_options import add_case_options, case_from_options
 from twoball.verify.cli.console import console, key_value_table, print_notes, print_warnings
-from twoball.verify.cli.mesh_options import SPHERE_KINDS, add_mesh_options, mesh_arguments
+from twoball.verify.cli.mesh_options import (
+    SPHERE_KINDS,
+    add_mesh_options,
+    add_route_option,
+    mesh_arguments,
+    route_arguments,
+)
 from twoball.verify.cli.mesh_options import VALID_RANGES as MESH_RANGES
 from twoball.verify.output.fields import BACKENDS
 from twoball.verify.output.figures.waterfall import WATERFALL_INSTANTS
@@ -49,7 +55,7 @@ def run(args: argparse.Namespace) -> int:
     """Run ``twoball plot``: :func:`twoball.plot` with the options."""
     from twoball.files import plot
 
-    options = mesh_arguments(args)
+    options = {**mesh_arguments(args), **route_arguments(args)}
     if args.kind == "eigen":
         levels = parse_list(args.levels, "--levels", "comma-separated levels >= 0, e.g. 1,2")
         orders = parse_list(args.orders, "--orders", "comma-separated orders 1 or 2", {1, 2})
@@ -88,6 +94,7 @@ def register(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("kind", metavar="KIND", help="waterfall, pole or eigen")
     add_case_options(parser)
     add_mesh_options(parser, SPHERE_KINDS, initial=True, files=False)
+    add_route_option(parser)
     parser.add_argument(
         "--backends", default="fem,legendre", help="solvers drawn (default fem,legendre)"
     )
