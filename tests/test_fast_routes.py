@@ -1,4 +1,4 @@
-"""Fields from the Krylov Ritz basis and the full eigen route by dense LAPACK or slicing (issue 16)."""
+"""Fields from the Krylov Ritz basis; the full eigen route by dense LAPACK or slicing (issue 16)."""
 
 from __future__ import annotations
 
@@ -64,7 +64,7 @@ def _forced_slicing(monkeypatch):
 
 @pytest.mark.parametrize("path", ["dense", "slicing"])
 def test_lowest_pairs_for_counts_across_cluster_boundaries(path, monkeypatch):
-    """Any count from 1 to n: values vs LAPACK on the dense matrices, residuals, M-orthonormality."""
+    """Any count 1..n: values vs LAPACK on the dense matrices, residuals, M-orthonormality."""
     if path == "slicing":
         _forced_slicing(monkeypatch)
     space = sphere_space(icosphere(2), 1)  # 162 unknowns, exact icosahedral multiplicities
