@@ -131,7 +131,9 @@ def main() -> None:
                 if good and all(r[2] == 0 for r in samples["new"]):
                     old_cpu = statistics.median(r[0] for r in good)
                     ratio = f"{old_cpu / statistics.median(r[0] for r in samples['new']):.1f}x"
-                print(f"{task:10} {level:5d} | {cells['old']:>24} | {cells['new']:>14} | {ratio:>9}")
+                print(
+                    f"{task:10} {level:5d} | {cells['old']:>24} | {cells['new']:>14} | {ratio:>9}"
+                )
                 sys.stdout.flush()
     print(f"load average after: {os.getloadavg()}")
 

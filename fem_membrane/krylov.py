@@ -75,7 +75,6 @@ from typing import Any
 
 import numpy as np
 import scipy.sparse as sp
-from scipy.sparse.linalg import splu
 from threadpoolctl import threadpool_limits
 from twoball.modal.errors import NumericalError, ParameterError
 from twoball.modal.filters import SpectralFilter
@@ -84,6 +83,7 @@ from twoball.modal.series import ModalSeries, check_damping
 
 from .eigen import Eigenpairs
 from .ritz_field import FieldChange
+from .slicing import factorise
 from .space import Discretisation, PoleFunctional, pole_value, pole_vector
 
 TOLERANCE = 1e-10  # relative change of the filtered pole trajectory (u and u_tt)
@@ -96,7 +96,6 @@ DEPENDENT = 1e-10  # drop a new direction whose norm falls below this fraction
 SAMPLES_PER_PERIOD = 16  # trajectory samples per period of omega_cut
 CHECK_SPACING = 100  # criteria every max(1, basis // 100) cycles of shifts
 PASSES = 2  # consecutive cycles on which the trajectory criterion must hold
-PIVOT_THRESHOLD = 0.1  # SuperLU keeps the diagonal pivot unless 10x smaller than the column
 
 
 @dataclass
@@ -221,20 +220,6 @@ def _m_orthonormalise(
         mass_block = mass_block @ transform
         before = np.ones(block.shape[1])
     return block, mass_block
-
-
-def _factorise(matrix: sp.csc_matrix):
-    """Sparse LU of a symmetric matrix: symmetric minimum-degree ordering, diagonal pivots.
-
-    The factorisation only generates the Krylov subspace; the Rayleigh-Ritz step
-    uses K and M themselves, so its accuracy does not rest on the pivoting.
-    """
-    return splu(
-        matrix,
-        permc_spec="MMD_AT_PLUS_A",
-        diag_pivot_thresh=PIVOT_THRESHOLD,
-        options={"SymmetricMode": True},
-    )
 
 
 def _series(
@@ -382,7 +367,7 @@ def _krylov(
         sigma = np.asarray(shifts, dtype=float).ravel()
     seconds: dict[str, float] = {}
     start = clock.perf_counter()
-    factors = [_factorise(sp.csc_matrix(K - s * M)) for s in sigma]
+    factors = [factorise(sp.csc_matrix(K - s * M)) for s in sigma]
     seconds["factorize"] = clock.perf_counter() - start
 
     start = clock.perf_counter()
@@ -468,7 +453,7 @@ def _krylov(
         residual = (stiff_basis[:, :size] @ small[:, chosen]) - (
             mass_basis[:, :size] @ small[:, chosen]
         ) * theta[chosen]
-        dual = np.einsum("ij,ij->j", residual, _factorise(M).solve(residual))
+        dual = np.einsum("ij,ij->j", residual, factorise(M).solve(residual))
         norms = np.sqrt(np.maximum(dual, 0.0)) / (1.0 + np.abs(theta[chosen]))
         seconds["residuals"] = clock.perf_counter() - start
     series = _series(theta, coefficients, pole_values, damping, filter)
