@@ -133,3 +133,25 @@ def test_eigen_table_reports_residuals_and_refuses_too_many():
     with pytest.raises(ParameterError) as error:
         eigen_table("sphere", level=1, order=1, count=space_dofs + 1)
     assert error.value.name == "count"
+
+
+@pytest.mark.parametrize(
+    "argv",
+    [
+        ["export", "--out", "{tmp}/f.vtu", "--route", "bogus"],
+        ["render", "--out", "{tmp}/f.png", "--route", "eigen"],
+        ["plot", "pole", "--out", "{tmp}/f.png", "--route", "dense"],
+        ["plot", "eigen", "--out", "{tmp}/f.png", "--route", "full"],
+        ["eigen", "--level", "1", "--order", "1", "--count", "43"],
+    ],
+)
+def test_bad_route_or_count_is_one_line_exit_2(argv, tmp_path, capsys):
+    from twoball.verify.cli.main import main
+
+    with pytest.raises(SystemExit) as stop:
+        main([a.format(tmp=tmp_path) for a in argv])
+    err = capsys.readouterr().err.strip().splitlines()
+    assert stop.value.code == 2 and len(err) == 1, err
+    flag = "--count" if "--count" in argv else "--route"
+    assert err[0].startswith("twoball: error: " + flag), err
+    assert not any(tmp_path.iterdir())  # no partial output
