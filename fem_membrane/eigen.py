@@ -21,6 +21,7 @@ from twoball.modal.errors import NumericalError, ParameterError
 
 from .slicing import (
     ORTHONORMALITY,
+    RESIDUAL_LIMIT,
     WINDOW,
     count_bound,
     dense_pairs,
@@ -103,6 +104,10 @@ def _checked(
         vectors = m_orthonormalise(vectors, M)
         error = orthonormality_error(M, vectors)
     residual = relative_residuals(K, M, values, vectors)
+    if residual.size and residual.max() > RESIDUAL_LIMIT:
+        raise NumericalError(
+            f"eigensolver: relative residual {residual.max():.1e} above {RESIDUAL_LIMIT:g}"
+        )
     return Eigenpairs(
         values,
         vectors,
