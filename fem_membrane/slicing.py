@@ -35,8 +35,8 @@ or 200 pairs instead of 40 did not help ARPACK (27-28 s at level 4).  ARPACK's
 tolerance 1e-8 instead of 1e-10 saved 6 % at level 4 (17.0 against 18.1 s) with
 the same relative residuals of the pairs, 3e-11 at most.
 
-Everything here is dimensionless and returns plain arrays; :mod:`.eigen` wraps
-them into :class:`~twoball.fem_membrane.eigen.Eigenpairs`.
+Everything here is dimensionless and returns plain arrays; :mod:`twoball.fem_membrane.eigen` wraps
+them into :class:`twoball.fem_membrane.eigen.Eigenpairs`.
 """
 
 from __future__ import annotations
