@@ -4,26 +4,10 @@ The discrete spectrum approximates the Laplace-Beltrami eigenvalues ``l (l + 1)`
 of the unit sphere (multiplicity ``2 l + 1``; on the axisymmetric line each
 appears once, with eigenfunction ``P_l(x)``), eq. (3.11).  Dimensionless.
 
-All pairs below a cutoff are found by shift-invert Lanczos (ARPACK through
-:func:`scipy.sparse.linalg.eigsh`, with a sparse LU of ``K - sigma M`` as the
-inverse) on *slices* of the spectrum:
-
-1. Sylvester's law of inertia counts the eigenvalues below any shift mu: the
-   number of negative pivots of a symmetric (diagonally pivoted) factorisation of
-   ``K - mu M``.  This gives the exact number of pairs wanted, in total and per
-   slice, and so certifies that none is missed.
-2. Slice boundaries are put at ``(l + 1)^2``, midway between the exact
-   eigenvalues ``l (l + 1)`` and ``(l + 1)(l + 2)``: in a spectral gap on any
-   reasonable mesh, where shift-invert Lanczos converges fastest and no cluster
-   of nearly equal eigenvalues is split between two runs.  Consecutive gaps are
-   merged into slices of about ``window`` eigenvalues.
-3. Each slice [a, b] holding k eigenvalues is solved with the shift at its centre
-   and k requested: the k eigenvalues nearest to the centre are exactly those in
-   [a, b], which is checked.
-
-The constant mode (lambda = 0, K singular) lies in the first slice, whose lower
-end is slightly negative.  Small problems, and problems where most of the
-spectrum is wanted, are solved densely.
+The pairs come from :mod:`twoball.fem_membrane.slicing`: dense LAPACK for small
+problems (or most of the spectrum), spectrum slicing by shift-invert Lanczos with
+inertia counts above; every result carries its largest relative residual
+and its M-orthonormality error.
 """
 
 from __future__ import annotations
@@ -32,18 +16,33 @@ import math
 from dataclasses import dataclass
 
 import numpy as np
-import scipy.linalg as sl
 import scipy.sparse as sp
-from scipy.sparse.linalg import LinearOperator, eigsh, splu
 from twoball.modal.errors import NumericalError, ParameterError
 
-FIRST_SHIFT = -1e-2  # below the constant mode lambda = 0
-DENSE_LIMIT = 200  # dense eigensolver up to this many degrees of freedom
-WINDOW = 40  # target number of eigenvalues per shift-invert slice
-TOLERANCE = 1e-10  # ARPACK relative accuracy of the Ritz values
-EXTRA = 6  # pairs requested beyond those wanted in a slice (ARPACK may skip near-ties)
-MAX_DEFLATIONS = 12  # extra runs for copies of multiple eigenvalues missed by Lanczos
-ORTHONORMALITY = 1e-9  # |Phi^T M Phi - I| above this triggers re-orthonormalisation
+from .slicing import (
+    ORTHONORMALITY,
+    RESIDUAL_LIMIT,
+    WINDOW,
+    count_bound,
+    dense_pairs,
+    inertia,
+    orthonormality_error,
+    relative_residuals,
+    shift_invert,
+    sliced_pairs,
+    use_dense,
+)
+from .slicing import m_orthonormal as m_orthonormalise
+
+__all__ = [
+    "Eigenpairs",
+    "eigen_table",
+    "eigenpairs",
+    "inertia",
+    "lowest_eigenpairs",
+    "m_orthonormalise",
+    "sphere_degree",
+]
 
 
 @dataclass(frozen=True)
@@ -58,11 +57,22 @@ class Eigenpairs:
         Eigenvectors with ``Phi^T M Phi = I``.
     next_value : float or None
         Smallest eigenvalue above the cutoff, None when not computed.
+    max_residual : float or None
+        Largest relative residual ``||K x - lambda M x|| / max(||K x||, ||M x||)``
+        (see :func:`twoball.fem_membrane.slicing.relative_residuals`), None when
+        not computed.
+    orthonormality : float or None
+        ``max |Phi^T M Phi - I|``, None when not computed.
+    method : str
+        ``dense``, ``slicing`` or ``ritz`` (Krylov Ritz vectors).
     """
 
     values: np.ndarray
     vectors: np.ndarray
     next_value: float | None = None
+    max_residual: float | None = None
+    orthonormality: float | None = None
+    method: str = ""
 
     @property
     def omega(self) -> np.ndarray:
@@ -73,135 +83,39 @@ class Eigenpairs:
         return int(self.values.size)
 
 
-def _dense(K: sp.spmatrix, M: sp.spmatrix) -> tuple[np.ndarray, np.ndarray]:
-    return sl.eigh(K.toarray(), M.toarray())
+def _next_above(K: sp.csc_matrix, M: sp.csc_matrix, upper: float) -> float:
+    """The smallest eigenvalue above ``upper`` (shift-invert Lanczos, one pair)."""
+    return float(shift_invert(K, M, upper, 1, which="LA")[0].min())
 
 
-def inertia(K: sp.spmatrix, M: sp.spmatrix, shift: float) -> int:
-    """Number of eigenvalues of ``K phi = lambda M phi`` below ``shift`` (Sylvester).
-
-    Counts the negative pivots of ``P (K - shift M) P^T = L U`` computed with a
-    symmetric ordering and diagonal pivots (U = D L^T), which has the inertia of
-    ``K - shift M``.
-    """
-    matrix = sp.csc_matrix(K - shift * M)
-    for attempt in range(3):
-        try:
-            lu = splu(
-                matrix,
-                permc_spec="MMD_AT_PLUS_A",
-                diag_pivot_thresh=0.0,
-                options={"SymmetricMode": True},
-            )
-        except RuntimeError:  # exactly singular: shift on an eigenvalue
-            shift += 1e-9 * (1.0 + abs(shift)) * (attempt + 1)
-            matrix = sp.csc_matrix(K - shift * M)
-            continue
-        if not np.array_equal(lu.perm_r, lu.perm_c):
-            raise NumericalError("inertia: the factorisation was not symmetric")
-        return int(np.count_nonzero(lu.U.diagonal() < 0.0))
-    raise NumericalError(f"inertia: K - mu M is singular near mu = {shift:g}")
-
-
-def _shift_invert(
-    K: sp.csc_matrix,
-    M: sp.csc_matrix,
-    sigma: float,
-    k: int,
-    which: str = "LM",
-    deflate: np.ndarray | None = None,
-):
-    """The k eigenpairs nearest to ``sigma`` (or just above it for which='LA'), ascending.
-
-    ``deflate`` (M-orthonormal columns) removes known eigenvectors: the operator
-    becomes ``P (K - sigma M)^{-1} M P`` with the M-orthogonal projector
-    ``P = I - X X^T M``, whose spectrum near sigma is that of the remaining modes.
-    """
-    lu = splu(sp.csc_matrix(K - sigma * M))
-    if deflate is None:
-        solve = lu.solve
-    else:
-        X, MX = deflate, M @ deflate
-
-        def solve(z: np.ndarray) -> np.ndarray:
-            w = lu.solve(z - MX @ (X.T @ z))
-            return w - X @ (MX.T @ w)
-
-    operator = LinearOperator(K.shape, matvec=solve, dtype=float)
-    start = np.random.default_rng(K.shape[0]).standard_normal(K.shape[0])  # reproducible
-    if deflate is not None:
-        start -= deflate @ (MX.T @ start)
-    try:
-        values, vectors = eigsh(
-            K, k, M, sigma=sigma, which=which, OPinv=operator, tol=TOLERANCE, v0=start
-        )
-    except Exception as error:  # ArpackNoConvergence and friends
-        raise NumericalError(f"eigensolver did not converge near {sigma:g}: {error}") from error
-    order = np.argsort(values)
-    return values[order], vectors[:, order]
-
-
-def _slice(K: sp.csc_matrix, M: sp.csc_matrix, lower: float, higher: float, count: int):
-    """The ``count`` eigenpairs in [lower, higher] (count known from the inertia).
-
-    Lanczos with a single start vector can miss a copy of a multiple eigenvalue
-    (exact multiplicities occur on symmetric meshes); missing pairs are then
-    found by a second run with the pairs already found deflated.
-    """
-    sigma = 0.5 * (lower + higher)
-    slack = 1e-9 * (1.0 + abs(higher))
-    values, vectors = np.empty(0), np.empty((K.shape[0], 0))
-    for _ in range(MAX_DEFLATIONS + 1):  # each run finds >= 1 copy of every multiple value
-        missing = count - values.size
-        if missing == 0:
-            break
-        deflate = m_orthonormalise(vectors, M) if values.size else None
-        request = min(missing + EXTRA, K.shape[0] - values.size - 2)
-        new_values, new_vectors = _shift_invert(K, M, sigma, request, deflate=deflate)
-        inside = (new_values >= lower - slack) & (new_values <= higher + slack)
-        if not np.any(inside):
-            break
-        values = np.concatenate([values, new_values[inside]])
-        vectors = np.hstack([vectors, new_vectors[:, inside]])
-    if values.size != count:
+def _checked(
+    K: sp.spmatrix,
+    M: sp.spmatrix,
+    values: np.ndarray,
+    vectors: np.ndarray,
+    method: str,
+    next_value: float | None = None,
+) -> Eigenpairs:
+    """Eigenpairs with their residuals and M-orthonormality measured (NaN: NumericalError)."""
+    if not (np.all(np.isfinite(values)) and np.all(np.isfinite(vectors))):
+        raise NumericalError("eigensolver returned NaN or inf")
+    error = orthonormality_error(M, vectors)
+    if error > ORTHONORMALITY:
+        vectors = m_orthonormalise(vectors, M)
+        error = orthonormality_error(M, vectors)
+    residual = relative_residuals(K, M, values, vectors)
+    if residual.size and residual.max() > RESIDUAL_LIMIT:
         raise NumericalError(
-            f"eigensolver: slice [{lower:g}, {higher:g}] holds {count} eigenvalues "
-            f"(inertia), found {values.size}"
+            f"eigensolver: relative residual {residual.max():.1e} above {RESIDUAL_LIMIT:g}"
         )
-    order = np.argsort(values)
-    return values[order], vectors[:, order]
-
-
-def slice_bounds(upper: float, total: int, window: int = WINDOW) -> list[float]:
-    """Slice boundaries in (FIRST_SHIFT, upper]: gap points ``(l + 1)^2`` merged to ~window.
-
-    The number of eigenvalues below a gap g is estimated as ``total (g / upper)^p``
-    with p fitted to the two ends (p = 1 on the sphere, 1/2 on the line); the
-    estimate only sizes the slices, the counts used are exact.
-    """
-    exponent = math.log(max(total, 2)) / math.log(max(upper, 2.0))
-
-    def estimate(g: float) -> float:
-        return total * (max(g, 0.0) / upper) ** exponent
-
-    bounds = [FIRST_SHIFT]
-    for degree in range(int(math.sqrt(max(upper, 0.0))) + 1):
-        gap = (degree + 1.0) ** 2
-        if gap >= upper:
-            break
-        if estimate(gap) - estimate(bounds[-1]) >= window and total - estimate(gap) >= window / 2:
-            bounds.append(gap)
-    bounds.append(upper)
-    return bounds
-
-
-def m_orthonormalise(vectors: np.ndarray, M: sp.spmatrix) -> np.ndarray:
-    """Return ``vectors`` with ``V^T M V = I`` (Cholesky correction if needed)."""
-    gram = vectors.T @ (M @ vectors)
-    if gram.size == 0 or np.abs(gram - np.eye(gram.shape[0])).max() <= ORTHONORMALITY:
-        return vectors
-    factor = sl.cholesky(gram, lower=False)  # gram = R^T R
-    return sl.solve_triangular(factor, vectors.T, trans="T", lower=False).T
+    return Eigenpairs(
+        values,
+        vectors,
+        next_value,
+        max_residual=float(residual.max(initial=0.0)),
+        orthonormality=error,
+        method=method,
+    )
 
 
 def eigenpairs(
@@ -220,7 +134,7 @@ def eigenpairs(
     upper : float
         Eigenvalue cutoff, e.g. ``omega_cut**2`` of the spectral filter.
     window : int
-        Target number of eigenvalues per shift-invert slice.
+        Target number of eigenvalues per slice (spectrum slicing).
     next_value : bool
         Also find the first eigenvalue above ``upper``.
 
@@ -228,68 +142,44 @@ def eigenpairs(
     -------
     Eigenpairs
         M-orthonormal pairs, ascending; their number equals the inertia count
-        below ``upper`` (else :class:`NumericalError`).
+        below ``upper`` (else :class:`NumericalError`); residuals and
+        M-orthonormality measured.
     """
     n = K.shape[0]
     K, M = sp.csc_matrix(K), sp.csc_matrix(M)
-    total = inertia(K, M, upper) if n > DENSE_LIMIT else n
-    if total >= n // 2:  # most of the spectrum is wanted: dense is cheaper and complete
-        values, vectors = _dense(K, M)
+    total = inertia(K, M, upper)
+    if use_dense(n, total):
+        values, vectors = dense_pairs(K, M, min(total + 1, n))
         keep = values <= upper
         above = values[~keep]
         after = float(above[0]) if above.size else None
-        return Eigenpairs(values[keep], m_orthonormalise(vectors[:, keep], M), after)
-    bounds = slice_bounds(upper, total, window)
-    counts = [0] + [inertia(K, M, g) for g in bounds[1:-1]] + [total]
-    kept_values, kept_vectors = [], []
-    for lower, higher, below, up_to in zip(bounds, bounds[1:], counts, counts[1:], strict=False):
-        k = up_to - below
-        if k <= 0:
-            continue
-        values, vectors = _slice(K, M, lower, higher, k)
-        kept_values.append(values)
-        kept_vectors.append(vectors)
-    values = np.concatenate(kept_values) if kept_values else np.empty(0)
-    vectors = np.hstack(kept_vectors) if kept_vectors else np.empty((n, 0))
-    if not (np.all(np.isfinite(values)) and np.all(np.isfinite(vectors))):
-        raise NumericalError("eigensolver returned NaN or inf")
-    after = float(_shift_invert(K, M, upper, 1, which="LA")[0][0]) if next_value else None
-    return Eigenpairs(values, m_orthonormalise(vectors, M), after)
+        return _checked(K, M, values[keep], vectors[:, keep], "dense", after)
+    values, vectors = sliced_pairs(K, M, upper, window)
+    after = _next_above(K, M, upper) if next_value and total < n else None
+    return _checked(K, M, values, vectors, "slicing", after)
 
 
 def lowest_eigenpairs(K: sp.spmatrix, M: sp.spmatrix, count: int) -> Eigenpairs:
     """The ``count`` smallest eigenpairs (the constant mode first), M-orthonormal.
 
-    Checked by the inertia: all eigenvalues up to the largest one returned are
-    present (missing copies of multiple eigenvalues are found by deflation).
+    Any ``count`` from 1 to the number of unknowns: dense LAPACK for small
+    problems or large counts, else every pair below the smallest spectral gap
+    ``(l + 1)^2`` holding ``count`` of them (inertia), by spectrum slicing, of
+    which the lowest ``count`` are returned.
     """
     n = K.shape[0]
     if isinstance(count, bool) or int(count) != count or count < 1:
         raise ParameterError("count", "an integer >= 1", count)
     if count > n:
         raise ParameterError("count", f"at most the number of unknowns ({n})", count)
-    if n <= DENSE_LIMIT or count >= n - 1:
-        values, vectors = _dense(K, M)
-        return Eigenpairs(values[:count], m_orthonormalise(vectors[:, :count], M))
+    count = int(count)
     K, M = sp.csc_matrix(K), sp.csc_matrix(M)
-    values, vectors = _shift_invert(K, M, FIRST_SHIFT, int(count))
-    for _ in range(MAX_DEFLATIONS):
-        top = values[count - 1]
-        present = inertia(K, M, top + 1e-9 * (1.0 + abs(top)))
-        if present <= count:
-            break
-        deflate = m_orthonormalise(vectors, M)
-        extra, extra_vectors = _shift_invert(K, M, FIRST_SHIFT, present - count, deflate=deflate)
-        values = np.concatenate([values, extra])
-        vectors = np.hstack([vectors, extra_vectors])
-        complete = values.size >= present  # every eigenvalue up to ``top`` is in hand
-        order = np.argsort(values)[:count]
-        values, vectors = values[order], vectors[:, order]
-        if complete:  # (a tie across the cut would otherwise be deflated for ever)
-            break
-    else:
-        raise NumericalError("eigensolver: could not complete the lowest eigenpairs")
-    return Eigenpairs(values, m_orthonormalise(vectors, M))
+    bound = None if use_dense(n, count) else count_bound(K, M, count)
+    if bound is None or use_dense(n, inertia(K, M, bound)):
+        values, vectors = dense_pairs(K, M, count)
+        return _checked(K, M, values, vectors, "dense")
+    values, vectors = sliced_pairs(K, M, bound)
+    return _checked(K, M, values[:count], vectors[:, :count], "slicing")
 
 
 def sphere_degree(values: np.ndarray) -> np.ndarray:
@@ -334,8 +224,10 @@ def eigen_table(
         One row per eigenvalue, the constant mode first: ``index``, ``l``,
         ``value``, ``exact`` = l (l + 1), ``relative_error`` (absolute for
         l = 0), ``multiplicity`` (computed eigenvalues in the cluster of l) and
-        ``expected_multiplicity`` (2 l + 1 on the sphere, 1 on the line).
-        Dimensionless.
+        ``expected_multiplicity`` (2 l + 1 on the sphere, 1 on the line),
+        ``residual`` = ``||K x - lambda M x|| / max(||K x||, ||M x||)`` of the
+        pair and ``orthonormality`` = ``max |Phi^T M Phi - I|`` over all pairs
+        computed.  Dimensionless.
     """
     from .build import build_space  # local: build imports the spaces, which import nothing here
 
@@ -344,6 +236,8 @@ def eigen_table(
     space = build_space(
         mesh, level=level, elements=elements, order=order, phi_a=phi_a, geometry=geometry
     )
+    if count > space.dofs:
+        raise ParameterError("count", f"at most the number of unknowns ({space.dofs})", count)
     axisymmetric = space.kind == "axisym"
     if axisymmetric:
         degrees = np.arange(count + 1)
@@ -354,11 +248,15 @@ def eigen_table(
     needed = min(needed, space.dofs)
     pairs = lowest_eigenpairs(space.stiffness, space.mass, needed)
     values = pairs.values
+    listed = min(count + 1, values.size)
+    residuals = relative_residuals(
+        space.stiffness, space.mass, values[:listed], pairs.vectors[:, :listed]
+    )
     counts = np.ones(values.size, dtype=int)
     if not axisymmetric:
         counts = np.bincount(sphere_degree(values), minlength=values.size)
     rows = []
-    for index in range(min(count + 1, values.size)):
+    for index in range(listed):
         degree = int(degrees[index]) if axisymmetric else int(math.isqrt(index))
         exact = float(degree * (degree + 1))
         error = abs(values[index] - exact) / exact if exact > 0 else abs(values[index])
@@ -371,6 +269,8 @@ def eigen_table(
                 "relative_error": float(error),
                 "multiplicity": int(counts[degree]),
                 "expected_multiplicity": 1 if axisymmetric else 2 * degree + 1,
+                "residual": float(residuals[index]),
+                "orthonormality": float(pairs.orthonormality),
             }
         )
     return rows

@@ -48,6 +48,7 @@ from .initial import initial_moments
 from .krylov import ROUTES, choose_route, krylov_modal_series
 from .mesh import SphereMesh
 from .modal import filtered_displacement, modal_series
+from .ritz_field import field_times
 from .space import Discretisation
 
 STEP_ACCURACY = 0.2  # automatic dt: omega_cut * dt <= 0.2
@@ -90,6 +91,8 @@ def modal_model(
     initial: str = "projection",
     route: str = "full",
     geometry: str = "isoparametric",
+    fields: bool = False,
+    t_end: float = DEFAULT_T_END,
 ) -> ModalModel:
     """Assemble, project F (eq. (3.10)) and build the filtered modal series.
 
@@ -101,6 +104,11 @@ def modal_model(
     Krylov from :data:`twoball.fem_membrane.krylov.AUTO_THRESHOLD` DOFs on.  See
     :func:`fem_pole_motion`.  ``geometry`` is that of
     :func:`twoball.fem_membrane.build.build_space`.
+
+    ``fields=True`` asks for mode shapes on every node: on the Krylov route
+    ``pairs`` then holds the Ritz pairs below the cutoff, and the Krylov method
+    also stops on the whole filtered field (u, u_t, u_tt in the M-norm at
+    instants over [0, ``t_end``], :mod:`twoball.fem_membrane.ritz_field`).
     """
     phi_a = _check_phi_a(phi_a)
     damping = check_damping(damping)
@@ -121,8 +129,11 @@ def modal_model(
         series = modal_series(pairs, moments, space.pole_row, damping, filter)
         krylov = None
     else:
-        series, details = krylov_modal_series(space, moments, damping, filter)
-        pairs, krylov = None, details.as_dict()
+        times = field_times(t_end, filter.omega_cut) if fields else None
+        series, details = krylov_modal_series(
+            space, moments, damping, filter, t_end=t_end, vectors=fields, field_times=times
+        )
+        pairs, krylov = details.pairs, details.as_dict()
     seconds["eigen"] = clock.perf_counter() - start
     return ModalModel(space, pairs, moments, series, seconds, krylov)
 
@@ -306,7 +317,7 @@ def fem_pole_motion(
     next_value = None if pairs is None else pairs.next_value
     info: dict[str, Any] = {
         "dofs": space.dofs,
-        "route": "full" if pairs is not None else "krylov",
+        "route": "full" if model.krylov is None else "krylov",
         "modes_used": int(np.count_nonzero(series.retained)),
         "modes_computed": len(series.omega),
         "mesh": space.name,

@@ -7,7 +7,7 @@ import math
 import numpy as np
 import pytest
 import scipy.linalg as sl
-import twoball.fem_membrane.eigen as eigen_module
+import twoball.fem_membrane.slicing as slicing
 from twoball.fem_membrane.axisym import axisym_space
 from twoball.fem_membrane.eigen import eigen_table, eigenpairs, inertia, lowest_eigenpairs
 from twoball.fem_membrane.mesh import icosphere
@@ -84,7 +84,7 @@ def test_axisymmetric_table_is_simple():
 
 
 def test_slicing_solver_matches_dense_and_inertia(monkeypatch):
-    monkeypatch.setattr(eigen_module, "DENSE_LIMIT", 100)  # force the sliced Lanczos path
+    monkeypatch.setattr(slicing, "DENSE_DOFS", 100)  # force the sliced Lanczos path
     space = sphere_space(icosphere(2), 1)  # 162 unknowns, exact icosahedral multiplicities
     K, M = space.stiffness, space.mass
     dense = sl.eigh(K.toarray(), M.toarray(), eigvals_only=True)

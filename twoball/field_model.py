@@ -115,10 +115,14 @@ def ball_model_of(
     t_end: float | None,
     progress: Step | None = None,
     cells: bool = False,
+    route: str = "auto",
 ) -> Any:
     """Solve ``case`` with ``backends`` on the sphere mesh of the options (see ``BallModel``)."""
+    from twoball.fem_membrane.krylov import ROUTES
     from twoball.verify.output.fields import ball_model
 
+    if route not in ROUTES:
+        raise ParameterError("route", "one of " + ", ".join(ROUTES), route)
     spec = MeshOptions.resolve(mesh, level=level, order=order, kinds=SPHERE_KINDS, files=False)
     if cells and spec.order > 2:  # VTK and pyvista cells stop at quadratic triangles
         raise ParameterError("order", "1 or 2 for field files and pictures", spec.order)
@@ -139,4 +143,5 @@ def ball_model_of(
         t_end_s=t_end,
         backends=tuple(backends),
         initial=initial,
+        route=route,
     )

@@ -52,6 +52,7 @@ def export(
     recontact: str = "window",
     t_end: float | None = None,
     progress: Step | None = None,
+    route: str = "auto",
 ) -> ExportResult:
     """Write u, u_t, u_tt (SI) of both backends on the sphere mesh over time.
 
@@ -78,6 +79,10 @@ def export(
         As in :func:`twoball.liftoff`.
     progress : callable, optional
         Called with a short text as each stage starts (:class:`twoball.progress.Reporter`).
+    route : {"auto", "full", "krylov"}
+        FE mode shapes: every eigenpair below the cutoff (``full``), the Ritz pairs
+        of the rational Krylov route converged on the whole field (``krylov``), or
+        Krylov from 2000 unknowns on (``auto``, default; sphere P2 level 3 has 2562).
 
     Every file carries the case and :mod:`twoball.provenance` (VTU string field
     data ``provenance`` and ``case``, XDMF grid attributes); field names end in
@@ -127,6 +132,7 @@ def export(
         t_end=t_end,
         progress=progress,
         cells=True,
+        route=route,
     )
     if fmt == "vtu" and times is None and frames is None:
         selected = liftoff_frame(model, backend)
@@ -172,6 +178,7 @@ def render(
     recontact: str = "window",
     t_end: float | None = None,
     progress: Step | None = None,
+    route: str = "auto",
 ) -> RenderResult:
     """Off-screen picture (``.png``) or animation (``.gif``, ``.mp4``) of the bouncing ball.
 
@@ -193,7 +200,7 @@ def render(
         Image size in pixels (MP4: rounded up to multiples of 16).
     fps : float, optional
         Frames per second of an animation, in [0.001, 1000] (default 20); not with ``.png``.
-    mesh, level, order, initial, sigma, recontact, t_end, progress
+    mesh, level, order, initial, sigma, recontact, t_end, progress, route
         As in :func:`export` (``initial`` needs ``backend="fem"``).
     """
     arguments = dict(locals())  # the call, for the provenance
@@ -249,6 +256,7 @@ def render(
         t_end=t_end,
         progress=progress,
         cells=True,
+        route=route,
     )
     if kind == ".png":
         times = liftoff_frame(model, backend) if times is None else times
@@ -290,6 +298,7 @@ def plot(
     recontact: str | None = None,
     t_end: float | None = None,
     progress: Step | None = None,
+    route: str = "auto",
     dpi: float | None = None,
 ) -> PlotResult:
     """Figures: ``waterfall`` of u(phi) (Fig. 6), ``pole`` motion, FE ``eigen`` errors.
@@ -312,8 +321,8 @@ def plot(
         2) and the largest degree l.
     mesh, level, order, initial, sigma, recontact, t_end
         As in :func:`export` (``waterfall`` and ``pole`` only; defaults as there).
-    progress : callable, optional
-        As in :func:`export`.
+    progress, route
+        As in :func:`export` (``route`` not with ``eigen``).
     dpi : float, optional
         Resolution of raster formats (PNG, ...) [dots per inch], 50 to 1200;
         default 300.
@@ -355,6 +364,8 @@ def plot(
             if value is not None:
                 shown = type(value).__name__ if name == "case" else value
                 raise ParameterError(name, "left out with kind eigen (use levels, orders)", shown)
+        if route != "auto":
+            raise ParameterError("route", "left out with kind eigen", route)
         levels, orders = eigen_sizes(levels, orders, max_degree)
         say = progress or silent
         tables = []
@@ -393,6 +404,7 @@ def plot(
             recontact=recontact,
             t_end=t_end,
             progress=progress,
+            route=route,
         )
         figure = waterfall_figure(model, instants) if kind == "waterfall" else pole_figure(model)
         for name, solved in model.backends.items():

@@ -30,7 +30,8 @@ def run(args: argparse.Namespace) -> int:
         return 0
     spec = MeshOptions.resolve(**options)
     table = Table(title=f"Eigenvalues of -Laplace-Beltrami: {spec.label}")
-    for name in ("#", "l", "lambda (FE)", "l(l+1)", "rel. error", "cluster", "expected"):
+    names = ("#", "l", "lambda (FE)", "l(l+1)", "rel. error", "cluster", "expected", "residual")
+    for name in names:
         table.add_column(name, justify="right")
     for r in rows:
         table.add_row(
@@ -41,6 +42,12 @@ def run(args: argparse.Namespace) -> int:
             f"{r['relative_error']:.3e}",
             str(r["multiplicity"]),
             str(r["expected_multiplicity"]),
+            f"{r['residual']:.1e}",
+        )
+    if rows:
+        table.caption = (
+            f"residual = |K x - lambda M x| / |K x| (|M x| for lambda = 0); "
+            f"M-orthonormality error max |X^T M X - I| = {rows[0]['orthonormality']:.1e}"
         )
     console().print(table)
     return 0

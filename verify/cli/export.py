@@ -10,7 +10,13 @@ import argparse
 from twoball.fem_membrane.export import FORMATS
 from twoball.verify.cli.case_options import add_case_options, case_from_options
 from twoball.verify.cli.console import console, key_value_table, number, print_notes, print_warnings
-from twoball.verify.cli.mesh_options import SPHERE_KINDS, add_mesh_options, mesh_arguments
+from twoball.verify.cli.mesh_options import (
+    SPHERE_KINDS,
+    add_mesh_options,
+    add_route_option,
+    mesh_arguments,
+    route_arguments,
+)
 from twoball.verify.cli.mesh_options import VALID_RANGES as MESH_RANGES
 from twoball.verify.output.fields import DEFAULT_FRAMES, MAX_FRAMES, parse_times
 
@@ -59,6 +65,7 @@ def run(args: argparse.Namespace) -> int:
             recontact=args.recontact,
             t_end=args.t_end,
             **mesh_arguments(args),
+            **route_arguments(args),
             progress=progress,
         )
     files, report, selected = result.files, result.report, result.times_s
@@ -90,6 +97,7 @@ def register(parser: argparse.ArgumentParser) -> None:
     add_case_options(parser)
     add_mesh_options(parser, SPHERE_KINDS, initial=True, files=False)
     parser.set_defaults(initial=None)  # the API's default (projection)
+    add_route_option(parser)
     add_backend_option(parser)
     parser.add_argument(
         "--format",

@@ -98,6 +98,23 @@ def add_mesh_options(
         )
 
 
+ROUTE_HELP = (
+    "FE mode shapes of the fields: full (every eigenpair below the cutoff), krylov "
+    "(Ritz pairs of the rational Krylov route, converged on the whole field) or auto "
+    "(krylov from 2000 DOFs; default)"
+)
+
+
+def add_route_option(parser: argparse.ArgumentParser) -> None:
+    """``--route`` of the field commands (export, render, plot waterfall|pole)."""
+    parser.add_argument("--route", help=ROUTE_HELP)
+
+
+def route_arguments(args: argparse.Namespace) -> dict[str, Any]:
+    """``route`` for the API when ``--route`` was given (else the API's default)."""
+    return {} if getattr(args, "route", None) is None else {"route": args.route}
+
+
 def add_time_options(parser: argparse.ArgumentParser) -> None:
     """``--scheme``, ``--damping-model``, ``--dt``, ``--route`` of the finite-element lift-off."""
     group = parser.add_argument_group("finite-element time integration")

@@ -15,7 +15,13 @@ from twoball.verify.cli.case_options import (
     case_options_given,
 )
 from twoball.verify.cli.console import console, key_value_table, print_notes, print_warnings
-from twoball.verify.cli.mesh_options import SPHERE_KINDS, add_mesh_options, mesh_arguments
+from twoball.verify.cli.mesh_options import (
+    SPHERE_KINDS,
+    add_mesh_options,
+    add_route_option,
+    mesh_arguments,
+    route_arguments,
+)
 from twoball.verify.cli.mesh_options import VALID_RANGES as MESH_RANGES
 from twoball.verify.output.fields import BACKENDS
 from twoball.verify.output.figures import DPI, DPI_RANGE
@@ -52,7 +58,7 @@ def run(args: argparse.Namespace) -> int:
     from twoball.files import plot
     from twoball.progress import Reporter
 
-    options = mesh_arguments(args)
+    options = {**mesh_arguments(args), **route_arguments(args)}
     levels = None
     if args.levels is not None:
         levels = parse_list(args.levels, "--levels", "comma-separated levels >= 0, e.g. 1,2")
@@ -106,6 +112,7 @@ def register(parser: argparse.ArgumentParser) -> None:
     add_mesh_options(parser, SPHERE_KINDS, initial=True, files=False)
     # None when not given: the API fills in the defaults and refuses what the kind does not use
     parser.set_defaults(sigma=None, recontact=None, initial=None)
+    add_route_option(parser)
     parser.add_argument(
         "--backend", help="solvers drawn: fem, legendre or both (default fem,legendre)"
     )

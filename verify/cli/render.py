@@ -12,7 +12,13 @@ from twoball.modal.errors import ParameterError
 from twoball.verify.cli.case_options import add_case_options, case_from_options
 from twoball.verify.cli.console import console, key_value_table, print_notes, print_warnings
 from twoball.verify.cli.export import add_backend_option
-from twoball.verify.cli.mesh_options import SPHERE_KINDS, add_mesh_options, mesh_arguments
+from twoball.verify.cli.mesh_options import (
+    SPHERE_KINDS,
+    add_mesh_options,
+    add_route_option,
+    mesh_arguments,
+    route_arguments,
+)
 from twoball.verify.cli.mesh_options import VALID_RANGES as MESH_RANGES
 from twoball.verify.output.fields import MAX_FRAMES
 
@@ -56,6 +62,7 @@ def run(args: argparse.Namespace) -> int:
             recontact=args.recontact,
             t_end=args.t_end,
             **mesh_arguments(args),
+            **route_arguments(args),
             progress=progress,
         )
     times = result.times_s
@@ -82,6 +89,7 @@ def register(parser: argparse.ArgumentParser) -> None:
     )
     add_case_options(parser)
     add_mesh_options(parser, SPHERE_KINDS, initial=True, files=False)
+    add_route_option(parser)
     add_backend_option(parser)
     parser.add_argument("--out", required=True, metavar="FILE", help="FILE.png, .gif or .mp4")
     group = parser.add_mutually_exclusive_group()

@@ -179,6 +179,8 @@ def fem_nodal_series(
     mesh: str = "sphere",
     sigma: str = "lanczos",
     initial: str = "projection",
+    route: str = "auto",
+    t_end: float | None = None,
 ) -> tuple[SphereMesh, ModalSeries, np.ndarray, dict[str, float]]:
     """Finite-element modal series (dimensionless), its mesh and its mode shapes at the nodes.
 
@@ -186,11 +188,16 @@ def fem_nodal_series(
     P1/P2 space of eq. (3.9) on the icosphere (or ring sphere) of ``level``, the
     initial displacement (3.10) projected or interpolated, all eigenpairs below the
     cutoff of the spectral filter, and the damping and filter of the closed form
-    (eqs. (3.14)-(3.16)).  For Lagrange elements on their own geometry every
-    degree of freedom sits at a mesh node, so the mesh returned here has the
-    degrees of freedom as its nodes (``doflocs``) and their numbering in its cells
-    (skfem's local order: vertices, then edges 01, 12, 20 -- meshio's
-    ``triangle6``), and the eigenvectors are the mode shapes at the nodes as they are.
+    (eqs. (3.14)-(3.16)).  ``route`` (``--route``): ``full`` takes every
+    eigenpair below the cutoff, ``krylov`` the Ritz pairs of the rational Krylov
+    route, converged on the whole field over [0, ``t_end``]
+    (:mod:`twoball.fem_membrane.ritz_field`), ``auto`` (default) Krylov from
+    :data:`twoball.fem_membrane.krylov.AUTO_THRESHOLD` unknowns on, like the pole.
+    For Lagrange elements on their own geometry every degree of freedom sits at a
+    mesh node, so the mesh returned here has the degrees of freedom as its nodes
+    (``doflocs``) and their numbering in its cells (skfem's local order: vertices,
+    then edges 01, 12, 20 -- meshio's ``triangle6``), and the eigenvectors (or
+    Ritz vectors) are the mode shapes at the nodes as they are.
 
     Returns
     -------
@@ -203,6 +210,7 @@ def fem_nodal_series(
         ``dofs``, ``eigenpairs`` and ``eigen_seconds``.
     """
     from twoball.fem_membrane.solve import modal_model
+    from twoball.modal.liftoff import DEFAULT_T_END
 
     if mesh not in MESH_KINDS:
         raise ParameterError("--mesh", "one of " + ", ".join(MESH_KINDS), mesh)
@@ -214,6 +222,9 @@ def fem_nodal_series(
         level=level,
         order=order,
         initial=initial,
+        route=route,
+        fields=True,
+        t_end=DEFAULT_T_END if t_end is None else t_end,
     )
     basis = model.space.basis
     kind = "icosphere" if mesh == "sphere" else "ring sphere"
@@ -242,12 +253,15 @@ def fem_backend(
     recontact: str,
     t_end: float,
     initial: str = "projection",
+    route: str = "auto",
 ) -> tuple[SphereMesh, Backend]:
     """The finite-element backend and its mesh, see :func:`fem_nodal_series`.
 
     Lift-off by the shared :func:`twoball.modal.report.report_liftoff`.
     """
-    nodes, series, shapes, details = fem_nodal_series(case, level, order, mesh, sigma, initial)
+    nodes, series, shapes, details = fem_nodal_series(
+        case, level, order, mesh, sigma, initial, route, t_end
+    )
     report = report_liftoff(
         case,
         series,
@@ -270,6 +284,7 @@ def ball_model(
     t_end_s: float | None = None,
     backends: Sequence[str] = BACKENDS,
     initial: str = "projection",
+    route: str = "auto",
 ) -> BallModel:
     """Solve ``case`` with the requested backends on a sphere mesh of ``level``/``order``.
 
@@ -289,6 +304,9 @@ def ball_model(
         Which solvers to run; the closed form is cheap, the FE eigenproblem is not.
     initial : {"projection", "interpolation"}
         How the FE backend represents the initial displacement (3.10) (``--initial``).
+    route : {"auto", "full", "krylov"}
+        FE mode shapes from every eigenpair (``full``), from the Ritz pairs of the
+        rational Krylov route (``krylov``), or Krylov from 2000 unknowns (``auto``).
 
     Returns
     -------
@@ -301,7 +319,7 @@ def ball_model(
     solved: dict[str, Backend] = {}
     if "fem" in backends:
         unit_mesh, solved["fem"] = fem_backend(
-            case, level, order, mesh, sigma, recontact, t_end, initial
+            case, level, order, mesh, sigma, recontact, t_end, initial, route
         )
     else:
         unit_mesh = build_mesh(case, level, order, mesh)
