@@ -14,6 +14,7 @@ from typing import Any
 
 from .errors import ParameterError
 from .initial import phi_a_from_v0
+from .stiffness import ATMOSPHERE, GAS_MODELS, Stiffness, stiffness_from_si
 
 STANDARD_GRAVITY = 9.81  # m/s^2, the value used in the paper (§2)
 
@@ -95,21 +96,77 @@ def _positive(name: str, value: float) -> float:
 
 @dataclass(frozen=True)
 class Measured:
-    """A preset's measured impact: R [m], c [1/s], ``|v0|`` [m/s], phi_a [rad], D, N."""
+    """A preset: R [m], c [1/s], ``|v0|`` [m/s], phi_a [rad] (None: eq. (3.7)), D, N.
+
+    ``pressure`` [Pa] (excess) and ``mass`` [kg] document c (eq. (3.8)) and set
+    the tension ``T = P R / 2`` of the bending and gas terms; ``bending`` B [N m]
+    and ``gas`` as in :mod:`twoball.modal.stiffness`.  ``source``: where the
+    values come from (see docs/stiff_balls.rst).
+    """
 
     radius: float
     wave_speed: float
     v0: float
-    phi_a: float
+    phi_a: float | None
     damping: float
     modes: int
+    pressure: float | None = None
+    mass: float | None = None
+    bending: float = 0.0
+    gas: str = "none"
+    source: str = ""
 
 
-#: Measured cases (Table 2, Fig. 11): R, c, ``|v0|`` and phi_a measured; D fitted once.
+def _tennis() -> Measured:
+    from .stiffness import flexural_rigidity
+
+    radius, mass, pressure = 0.0335, 0.0577, 82700.0
+    return Measured(
+        radius=radius,
+        wave_speed=wave_speed_from_pressure(pressure, mass, radius),
+        v0=4.1,
+        phi_a=None,
+        damping=0.13,
+        modes=30,
+        pressure=pressure,
+        mass=mass,
+        bending=flexural_rigidity(6.0e6, 3.2e-3, 0.5),
+        gas="adiabatic",
+        source="ITF Rules of Tennis, App. I (diameter 6.54-6.86 cm, mass 56.0-59.4 g); "
+        "12 psi = 82.7 kPa excess pressure and a 3.2 mm rubber wall (Cross 1999, Sports "
+        "Eng. 2 23; Brody, Cross & Lindsey 2002); rubber E = 6 MPa, nu = 0.5 assumed; "
+        "D = 0.13 and |v0| = 4.1 m/s taken from the basketball (not measured)",
+    )
+
+
+def _volleyball() -> Measured:
+    radius, mass, pressure = 0.105, 0.270, 30600.0
+    return Measured(
+        radius=radius,
+        wave_speed=wave_speed_from_pressure(pressure, mass, radius),
+        v0=4.1,
+        phi_a=None,
+        damping=0.13,
+        modes=30,
+        pressure=pressure,
+        mass=mass,
+        gas="adiabatic",
+        source="FIVB Official Volleyball Rules 2021-2024, rule 3.1 (circumference 65-67 "
+        "cm, mass 260-280 g, pressure 0.30-0.325 kgf/cm^2 = 29.4-31.9 kPa); a membrane "
+        "like the basketball (B = 0); D = 0.13 and |v0| = 4.1 m/s from the basketball",
+    )
+
+
+#: Presets.  basketball: Table 2, Fig. 11 (R, c, ``|v0|``, phi_a measured; D fitted
+#: once).  tennis, volleyball: rule-book sizes and pressures, phi_a from eq. (3.7).
 MEASURED: dict[str, Measured] = {
     "basketball": Measured(
-        radius=0.12, wave_speed=320.0, v0=4.1, phi_a=2.6, damping=0.13, modes=30
-    ),
+        radius=0.12, wave_speed=320.0, v0=4.1, phi_a=2.6, damping=0.13, modes=30,
+        pressure=77200.0, mass=0.567,
+        source="Cross et al., two-ball bounce, Table 2 and Fig. 11 (measured)",
+    ),  # fmt: skip
+    "tennis": _tennis(),
+    "volleyball": _volleyball(),
 }
 #: ``phi_a`` request meaning "derive it from ``|v0|``, R and c by eq. (3.7)".
 FROM_V0 = "eq. (3.7)"
@@ -156,6 +213,16 @@ class Case:
         Legendre truncation N >= 1, eq. (3.16).
     g : float
         Gravitational acceleration [m/s^2].
+    bending : float
+        Flexural rigidity B [N m] >= 0 of the wall (0: the paper's membrane);
+        see :mod:`twoball.modal.stiffness`.
+    gas : {"none", "isothermal", "adiabatic"}
+        The enclosed gas's compression law (none: the paper's membrane).
+    pressure : float or None
+        Excess pressure P [Pa]; with bending or gas it sets ``T = P R / 2``
+        (§4(b)) and the gas pressure ``P + atmosphere``.  Unused otherwise.
+    atmosphere : float
+        Ambient pressure [Pa] (default 101325).
     preset_name : str or None
         The preset whose measurements the case starts from (default
         ``basketball``, whose values are the defaults above); None for a case of
@@ -173,6 +240,10 @@ class Case:
     g: float = STANDARD_GRAVITY
     preset_name: str | None = "basketball"
     phi_a_source: str | None = None
+    bending: float = 0.0
+    gas: str = "none"
+    pressure: float | None = None
+    atmosphere: float = ATMOSPHERE
 
     def __post_init__(self) -> None:
         _positive("radius", self.radius)
@@ -197,15 +268,63 @@ class Case:
         ):
             raise ParameterError("modes", "an integer >= 1", self.modes)
         object.__setattr__(self, "modes", int(self.modes))
+        self._check_stiffness()
         phi_a, source = self._resolve_phi_a()
         object.__setattr__(self, "phi_a", phi_a)
         object.__setattr__(self, "phi_a_source", source)
+
+    def _check_stiffness(self) -> None:
+        bending = _number("bending", self.bending, "a finite number >= 0 [N m]")
+        if not (math.isfinite(bending) and bending >= 0):
+            raise ParameterError("bending", "a finite number >= 0 [N m]", self.bending)
+        if self.gas not in GAS_MODELS:
+            raise ParameterError("gas", "one of " + ", ".join(GAS_MODELS), self.gas)
+        if self.pressure is not None:
+            object.__setattr__(self, "pressure", _positive("pressure", self.pressure))
+        atmosphere = _number("atmosphere", self.atmosphere, "a finite number >= 0 [Pa]")
+        if not (math.isfinite(atmosphere) and atmosphere >= 0):
+            raise ParameterError("atmosphere", "a finite number >= 0 [Pa]", self.atmosphere)
+        object.__setattr__(self, "bending", bending)
+        object.__setattr__(self, "atmosphere", atmosphere)
+        self.stiffness  # noqa: B018 -- raises ParameterError when pressure is missing
+
+    @property
+    def stiffness(self) -> Stiffness:
+        """Dimensionless bending ratio beta and gas stiffness omega_0^2 (zero: membrane)."""
+        return stiffness_from_si(
+            radius=self.radius,
+            pressure=self.pressure,
+            bending=self.bending,
+            gas=self.gas,
+            atmosphere=self.atmosphere,
+        )
+
+    @property
+    def stiff(self) -> bool:
+        """True when bending or gas departs from the paper's membrane."""
+        return self.bending > 0.0 or self.gas != "none"
+
+    @property
+    def floor_time(self) -> float:
+        """Estimated time [s] from maximum compression until the ball leaves the floor.
+
+        ``pi / (2 c)``: half the period of the pressure spring ``k = 2 pi R P``
+        (:func:`twoball.modal.stiffness.floor_contact_time`).
+        """
+        from .stiffness import floor_contact_time
+
+        return floor_contact_time(self.wave_speed)
 
     def _resolve_phi_a(self) -> tuple[float, str]:
         """The rule for phi_a: given, else the preset's measurement, else eq. (3.7)."""
         measured = _measured(self.preset_name)
         if self.phi_a is None or self.phi_a == FROM_V0:
-            if self.phi_a is None and measured is not None and self.at_measured_point:
+            if (
+                self.phi_a is None
+                and measured is not None
+                and measured.phi_a is not None
+                and self.at_measured_point
+            ):
                 return measured.phi_a, f"measured ({self.preset_name})"
             return phi_a_from_v0(self.v0, self.radius, self.wave_speed), FROM_V0
         phi_a = _number("phi_a", self.phi_a, PHI_A_RANGE)
@@ -218,7 +337,7 @@ class Case:
             if phi_a == phi_a_from_v0(self.v0, self.radius, self.wave_speed):
                 return phi_a, source
         if measured is not None and source == f"measured ({self.preset_name})":
-            if self.at_measured_point and phi_a == measured.phi_a:
+            if self.at_measured_point and measured.phi_a is not None and phi_a == measured.phi_a:
                 return phi_a, source
         raise ParameterError(
             "phi_a_source", "None, 'given' or consistent with the preset", self.phi_a_source
@@ -239,7 +358,7 @@ class Case:
     def phi_a_note(self) -> str | None:
         """Why phi_a differs from the preset's measured angle (eq. (3.7) applied), or None."""
         m = _measured(self.preset_name)
-        if m is None or self.phi_a_source != FROM_V0 or self.phi_a == m.phi_a:
+        if m is None or m.phi_a is None or self.phi_a_source != FROM_V0 or self.phi_a == m.phi_a:
             return None
         moved = [
             f"{label} = {value:g} {unit}"
@@ -267,8 +386,11 @@ class Case:
         return self.scalings.gamma
 
     def as_dict(self) -> dict[str, Any]:
-        """The case in SI, JSON-ready, with ``phi_a_source``."""
-        return {
+        """The case in SI, JSON-ready, with ``phi_a_source``.
+
+        Bending and gas keys (and beta, omega_0) appear only for a stiffened ball.
+        """
+        out = {
             "radius_m": self.radius,
             "wave_speed_1_s": self.wave_speed,
             "v0_m_s": self.v0,
@@ -279,6 +401,17 @@ class Case:
             "g_m_s2": self.g,
             "preset": self.preset_name,
         }
+        if self.stiff:
+            stiffness = self.stiffness
+            out.update(
+                bending_N_m=self.bending,
+                gas=self.gas,
+                pressure_Pa=self.pressure,
+                atmosphere_Pa=self.atmosphere,
+                beta=stiffness.beta,
+                omega0_squared=stiffness.gas,
+            )
+        return out
 
     def with_v0(self, v0: float) -> Case:
         """This case with a new impact speed; phi_a by the rule (see :class:`Case`)."""
@@ -339,7 +472,7 @@ class Case:
         base = cls(preset_name=None) if preset is None else cls.preset(preset)
         radius = changes.get("radius", base.radius)
         wave_speed = wave_speed_from_pressure(pressure, mass, radius)
-        return base.derive(**changes, wave_speed=wave_speed)
+        return base.derive(**changes, wave_speed=wave_speed, pressure=float(pressure))
 
     @classmethod
     def from_measurements(
@@ -366,12 +499,13 @@ class Case:
 
 
 PRESETS: dict[str, Case] = {name: Case(preset_name=name, radius=m.radius, wave_speed=m.wave_speed,
-                                       v0=m.v0, damping=m.damping, modes=m.modes)
+                                       v0=m.v0, damping=m.damping, modes=m.modes,
+                                       bending=m.bending, gas=m.gas, pressure=m.pressure)
                             for name, m in MEASURED.items()}  # fmt: skip
 
 
 def preset(name: str) -> Case:
-    """The named preset case (currently ``basketball``), phi_a measured."""
+    """The named preset case (basketball, tennis, volleyball); see :data:`MEASURED`."""
     try:
         return PRESETS[name]
     except KeyError:

@@ -17,6 +17,12 @@ from .liftoff import DEFAULT_T_END, Horizon, LiftoffResult, PoleMotion, find_lif
 from .parameters import Case
 
 
+FLOOR_TIME_ESTIMATE = (
+    "pi/(2c): half period of the pressure spring k = 2 pi R P of a ball flattened on the "
+    "floor (Cross 1999, Am. J. Phys. 67 222); an upper bound with bending or gas"
+)
+
+
 @dataclass(frozen=True)
 class LiftoffReport:
     """A lift-off result with its case, in SI units (seconds, m/s).
@@ -66,6 +72,12 @@ class LiftoffReport:
         return self.result.velocity * self.case.scalings.velocity
 
     @property
+    def before_floor_departure(self) -> bool | None:
+        """True if t_l precedes the estimated floor departure ``pi / (2 c)``; None without lift-off."""
+        t = self.t_liftoff_s
+        return None if t is None else t < self.case.floor_time
+
+    @property
     def ratio(self) -> float | None:
         """``v_l / |v0|``, the rebound ratio of the upper body (Fig. 11, 12)."""
         v = self.v_liftoff_m_s
@@ -90,6 +102,8 @@ class LiftoffReport:
             "t_liftoff_s": self.t_liftoff_s,
             "v_liftoff_m_s": self.v_liftoff_m_s,
             "ratio": self.ratio,
+            "floor_time_s": self.case.floor_time,
+            "floor_time_estimate": FLOOR_TIME_ESTIMATE,
             "phi_a_rad": self.case.phi_a,
             "phi_a_source": self.case.phi_a_source,
             "gamma": self.case.gamma,
@@ -168,7 +182,9 @@ def legendre_liftoff(
     from twoball.budget import check_series
 
     check_series(case.modes, t_end_dimensionless(case, t_end_s), t_end_s)
-    series = legendre_series(case.phi_a, case.damping, SpectralFilter(sigma, case.modes))
+    series = legendre_series(
+        case.phi_a, case.damping, SpectralFilter(sigma, case.modes), stiffness=case.stiffness
+    )
     return report_liftoff(
         case,
         series,
