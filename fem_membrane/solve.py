@@ -28,6 +28,7 @@ from twoball.modal.filters import FilterKind, SpectralFilter
 from twoball.modal.initial import _check_phi_a
 from twoball.modal.liftoff import DEFAULT_T_END, PoleMotion, SampledPoleMotion
 from twoball.modal.series import ModalSeries, check_damping
+from twoball.modal.stiffness import Stiffness
 
 from twoball.budget import check_fem
 
@@ -64,6 +65,8 @@ class ModalModel:
     seconds: dict[str, float] = field(default_factory=dict)
     krylov: dict[str, Any] | None = None
     """Krylov route details (None on the full eigen route, where ``pairs`` is set)."""
+    stiffness: Stiffness | None = None
+    """Bending and gas (:mod:`twoball.fem_membrane.shell`); None: the membrane."""
 
     @property
     def filter(self) -> SpectralFilter:
@@ -89,6 +92,7 @@ def modal_model(
     order: int = 2,
     initial: str = "projection",
     route: str = "full",
+    stiffness: Stiffness | None = None,
 ) -> ModalModel:
     """Assemble, project F (eq. (3.10)) and build the filtered modal series.
 
@@ -98,7 +102,10 @@ def modal_model(
     Krylov method of :mod:`twoball.fem_membrane.krylov` (pole motion exact to 1e-10
     relative; no eigenvector set, ``pairs`` is None); ``route="auto"`` takes
     Krylov from :data:`twoball.fem_membrane.krylov.AUTO_THRESHOLD` DOFs on.  See
-    :func:`fem_pole_motion`.
+    :func:`fem_pole_motion`.  ``stiffness`` (bending, gas) maps the membrane
+    spectrum to the mixed bending form's and the gas term's
+    (:func:`twoball.fem_membrane.shell.stiff_series`); ``pairs`` then hold the
+    stiffened eigenvalues.
     """
     phi_a = _check_phi_a(phi_a)
     damping = check_damping(damping)
@@ -119,8 +126,16 @@ def modal_model(
     else:
         series, details = krylov_modal_series(space, moments, damping, filter)
         pairs, krylov = None, details.as_dict()
+    if stiffness is not None and stiffness.active:
+        from .shell import stiff_pairs, stiff_series
+
+        series = stiff_series(series, space, stiffness)
+        if pairs is not None:
+            pairs = stiff_pairs(pairs, series)
+    else:
+        stiffness = None
     seconds["eigen"] = clock.perf_counter() - start
-    return ModalModel(space, pairs, moments, series, seconds, krylov)
+    return ModalModel(space, pairs, moments, series, seconds, krylov, stiffness)
 
 
 def rayleigh_damping(
@@ -162,6 +177,8 @@ def alpha_motion(
     info: dict[str, Any] = {"dt": dt, "rho_inf": rho_inf}
     if damping_model == "modal":
         damping = ModalDamping.from_modes(space.mass, pairs, series.damping)
+    elif model.stiffness is not None:
+        raise ParameterError("damping_model", "modal with bending or gas", damping_model)
     else:
         rayleigh = rayleigh_damping(model, rayleigh_frequencies)
         damping = rayleigh.matrix(space.mass, space.stiffness)
@@ -174,7 +191,13 @@ def alpha_motion(
             "table": rayleigh.table(retained),
         }
     start = clock.perf_counter()
-    stepper = GeneralizedAlpha(space.mass, space.stiffness, dt, damping, rho_inf)
+    if model.stiffness is not None:
+        from .shell import ShellAlpha, ShellOperator
+
+        operator = ShellOperator(space, model.stiffness)
+        stepper = ShellAlpha(space.mass, operator, dt, damping, rho_inf)
+    else:
+        stepper = GeneralizedAlpha(space.mass, space.stiffness, dt, damping, rho_inf)
     u0 = filtered_displacement(series, pairs)
     history = stepper.run(u0, np.zeros_like(u0), t_end, space.pole_row)
     info["steps"] = history.t.size - 1
@@ -203,6 +226,7 @@ def fem_pole_motion(
     initial: str = "projection",
     rayleigh_frequencies: tuple[float, float] | None = None,
     route: str = "auto",
+    stiffness: Stiffness | None = None,
 ) -> tuple[PoleMotion, dict[str, Any]]:
     """Pole motion of the damped membrane from finite elements (dimensionless).
 
@@ -252,6 +276,8 @@ def fem_pole_motion(
         Galerkin L2 projection of F, or nodal interpolation (``--initial``).
     rayleigh_frequencies : (float, float), optional
         The two frequencies where the Rayleigh ratio equals D.
+    stiffness : Stiffness, optional
+        Bending and gas (:mod:`twoball.fem_membrane.shell`); None: the membrane.
 
     Returns
     -------
@@ -292,6 +318,7 @@ def fem_pole_motion(
         order=order,
         initial=initial,
         route=route,
+        stiffness=stiffness,
     )
     space, pairs, series = model.space, model.pairs, model.series
     next_value = None if pairs is None else pairs.next_value

@@ -124,6 +124,7 @@ def solve(
         dt=dt_scaled,
         t_end=t_end_dimensionless(case, t_end),
         route="auto" if route is None else route,
+        stiffness=case.stiffness if case.stiff else None,
     )
     extra: dict[str, Any] = {
         "dofs": info["dofs"],
