@@ -148,9 +148,7 @@ def converged_legendre(
     clock = time.perf_counter()
     if base is None:
         lanczos = SpectralFilter("lanczos", start_modes)
-        base_series = legendre_series(
-            case.phi_a, case.damping, lanczos, stiffness=case.stiffness
-        )
+        base_series = legendre_series(case.phi_a, case.damping, lanczos, stiffness=case.stiffness)
         base = find_liftoff(base_series, case.gamma, t_end=t_end, horizon=recontact)
     if base.t is None:
         return ConvergedReference(

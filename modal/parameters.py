@@ -161,8 +161,14 @@ def _volleyball() -> Measured:
 #: once).  tennis, volleyball: rule-book sizes and pressures, phi_a from eq. (3.7).
 MEASURED: dict[str, Measured] = {
     "basketball": Measured(
-        radius=0.12, wave_speed=320.0, v0=4.1, phi_a=2.6, damping=0.13, modes=30,
-        pressure=77200.0, mass=0.567,
+        radius=0.12,
+        wave_speed=320.0,
+        v0=4.1,
+        phi_a=2.6,
+        damping=0.13,
+        modes=30,
+        pressure=77200.0,
+        mass=0.567,
         source="Cross et al., two-ball bounce, Table 2 and Fig. 11 (measured)",
     ),  # fmt: skip
     "tennis": _tennis(),

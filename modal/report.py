@@ -16,7 +16,6 @@ from .legendre import legendre_series
 from .liftoff import DEFAULT_T_END, Horizon, LiftoffResult, PoleMotion, find_liftoff
 from .parameters import Case
 
-
 FLOOR_TIME_ESTIMATE = (
     "pi/(2c): half period of the pressure spring k = 2 pi R P of a ball flattened on the "
     "floor (Cross 1999, Am. J. Phys. 67 222); an upper bound with bending or gas"
@@ -73,7 +72,7 @@ class LiftoffReport:
 
     @property
     def before_floor_departure(self) -> bool | None:
-        """True if t_l precedes the estimated floor departure ``pi / (2 c)``; None without lift-off."""
+        """True if t_l precedes the estimated floor departure ``pi / (2 c)`` (None: no lift-off)."""
         t = self.t_liftoff_s
         return None if t is None else t < self.case.floor_time
 
@@ -118,6 +117,11 @@ class LiftoffReport:
             "recontact": self.recontact,
             "t_end_s": self.result.t_end * scale.time,
         }
+        if self.case.stiff:  # bending and gas (absent for the paper's membrane)
+            case = self.case.as_dict()
+            for key in ("bending_N_m", "gas", "pressure_Pa", "atmosphere_Pa", "beta"):
+                data[key] = case[key]
+            data["omega0_squared"] = case["omega0_squared"]
         data.update(self.extra)
         data["notes"] = self.notes
         data["warnings"] = list(self.warnings)

@@ -65,9 +65,7 @@ def add_case_options(parser: argparse.ArgumentParser) -> None:
     stiff.add_argument(
         "--poisson", type=float, metavar="NU", help="Poisson's ratio (default 0.5, rubber)"
     )
-    stiff.add_argument(
-        "--gas", choices=tuple(GAS_MODELS), help="enclosed gas: none, isothermal, adiabatic"
-    )
+    stiff.add_argument("--gas", metavar="MODEL", help="enclosed gas: " + ", ".join(GAS_MODELS))
     stiff.add_argument(
         "--atmosphere", type=float, metavar="PA", help="ambient pressure [Pa] (101325)"
     )
