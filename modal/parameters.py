@@ -433,7 +433,7 @@ class Case:
         """
         if "phi_a_source" in changes:
             raise ParameterError("phi_a_source", "set by the class, not given", None)
-        known = [f for f in self.__dataclass_fields__ if f != "phi_a_source"]
+        known = [f for f in self.__dataclass_fields__ if f not in ("phi_a_source", "pressure")]
         for name in changes:
             if name not in known:
                 hint = (
@@ -478,7 +478,8 @@ class Case:
         base = cls(preset_name=None) if preset is None else cls.preset(preset)
         radius = changes.get("radius", base.radius)
         wave_speed = wave_speed_from_pressure(pressure, mass, radius)
-        return base.derive(**changes, wave_speed=wave_speed, pressure=float(pressure))
+        case = base.derive(**changes, wave_speed=wave_speed)
+        return replace(case, pressure=float(pressure))  # T = P R / 2 of bending and gas
 
     @classmethod
     def from_measurements(
@@ -493,20 +494,31 @@ class Case:
         damping: float = 0.13,
         modes: int = 30,
         g: float = STANDARD_GRAVITY,
+        bending: float = 0.0,
+        gas: str = "none",
     ) -> Case:
-        """A case of one's own measurements (no preset): c, or P and m; phi_a given or eq. (3.7)."""
+        """A case of one's own measurements (no preset): c, or P and m; phi_a given or eq. (3.7).
+
+        ``bending`` B [N m] and ``gas`` (:mod:`twoball.modal.stiffness`) need the
+        excess pressure P for the tension ``T = P R / 2``.
+        """
         if wave_speed is None:
             if pressure is None or mass is None:
                 raise ParameterError("wave_speed", "given, or both pressure and mass")
             wave_speed = wave_speed_from_pressure(pressure, mass, radius)
-        elif pressure is not None or mass is not None:
+        elif mass is not None or (pressure is not None and bending == 0 and gas == "none"):
             raise ParameterError("wave_speed", "given alone, not with pressure and mass")
-        return cls(radius, wave_speed, v0, phi_a, damping, modes, g, preset_name=None)
+        return cls(
+            radius, wave_speed, v0, phi_a, damping, modes, g, preset_name=None,
+            bending=bending, gas=gas, pressure=pressure,
+        )  # fmt: skip
 
 
 PRESETS: dict[str, Case] = {name: Case(preset_name=name, radius=m.radius, wave_speed=m.wave_speed,
                                        v0=m.v0, damping=m.damping, modes=m.modes,
-                                       bending=m.bending, gas=m.gas, pressure=m.pressure)
+                                       bending=m.bending, gas=m.gas,
+                                       pressure=m.pressure if m.bending or m.gas != "none"
+                                       else None)
                             for name, m in MEASURED.items()}  # fmt: skip
 
 

@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import json
 import math
+from dataclasses import replace
 
 import numpy as np
 import pytest
@@ -59,7 +60,8 @@ def test_membrane_results_are_todays_bit_for_bit(cli, args):
 
 def test_zero_bending_and_no_gas_leave_the_series_unchanged():
     base = Case.preset("basketball")
-    same = base.derive(bending=0.0, gas="none", pressure=77200.0)
+    same = Case(bending=0.0, gas="none", pressure=77200.0)
+    assert same == replace(base, pressure=77200.0)
     assert not same.stiff and not same.stiffness.active
     a = legendre_series(base.phi_a, base.damping, SpectralFilter("lanczos", 30))
     b = legendre_series(
@@ -137,7 +139,7 @@ def test_small_stiffness_tends_to_the_membrane_liftoff():
     base = Case.preset("basketball")
     ref = twoball.liftoff(base)
     for beta_scale in (1e-8,):
-        tiny = base.derive(bending=beta_scale, pressure=77200.0)
+        tiny = Case(bending=beta_scale, pressure=77200.0)
         assert tiny.stiffness.beta < 1e-7
         out = twoball.liftoff(tiny)
         assert out.t_liftoff_s == pytest.approx(ref.t_liftoff_s, rel=1e-6)
@@ -184,8 +186,20 @@ def test_presets_and_floor_time():
 )
 def test_bad_stiffness_raises_parameter_error(changes, name):
     with pytest.raises(ParameterError) as info:
-        Case.preset("basketball").derive(**{"pressure": None, **changes})
+        Case(**changes)
     assert info.value.name == name
+
+
+def test_pressure_comes_with_the_mass_or_a_stiff_measurement():
+    with pytest.raises(ParameterError) as info:
+        Case.preset("tennis", pressure=6e4)  # c would not follow: use from_pressure
+    assert info.value.name == "pressure"
+    soft = Case.from_pressure(6e4, 0.0577, preset="tennis")
+    assert soft.pressure == 6e4 and soft.wave_speed == wave_speed_from_pressure(6e4, 0.0577, 0.0335)
+    own = Case.from_measurements(
+        radius=0.0335, v0=4.1, wave_speed=549.0, pressure=8e4, gas="isothermal"
+    )
+    assert own.stiffness.gas == pytest.approx(6 * (8e4 + ATMOSPHERE) / 8e4, rel=1e-14)
 
 
 @pytest.mark.parametrize(
