@@ -199,7 +199,8 @@ class Case:
     The contact angle phi_a is (1) the value given; else (2) the preset's
     measured phi_a when R, c and ``|v0|`` are the preset's own measured values (so
     typing a preset's own value never changes the answer); else (3) derived from
-    ``|v0|``, R and c by eq. (3.7).  :attr:`phi_a_source` says which, and
+    ``|v0|``, R and c by eq. (3.7) (with the enclosed gas's energy added when
+    ``gas`` is set).  :attr:`phi_a_source` says which, and
     :attr:`phi_a_note` explains when (3) departs from a preset's measured angle.
 
     Parameters
@@ -332,7 +333,7 @@ class Case:
                 and self.at_measured_point
             ):
                 return measured.phi_a, f"measured ({self.preset_name})"
-            return phi_a_from_v0(self.v0, self.radius, self.wave_speed), FROM_V0
+            return phi_a_from_v0(self.v0, self.radius, self.wave_speed, self.stiffness.gas), FROM_V0
         phi_a = _number("phi_a", self.phi_a, PHI_A_RANGE)
         if not (math.pi / 2 < phi_a < math.pi):
             raise ParameterError("phi_a", PHI_A_RANGE, self.phi_a)
@@ -340,7 +341,7 @@ class Case:
         if source == "given":
             return phi_a, source
         if source == FROM_V0:  # kept through derive(): still the root of eq. (3.7)?
-            if phi_a == phi_a_from_v0(self.v0, self.radius, self.wave_speed):
+            if phi_a == phi_a_from_v0(self.v0, self.radius, self.wave_speed, self.stiffness.gas):
                 return phi_a, source
         if measured is not None and source == f"measured ({self.preset_name})":
             if self.at_measured_point and measured.phi_a is not None and phi_a == measured.phi_a:
@@ -443,7 +444,7 @@ class Case:
                 )
                 valid = "a field of Case, one of " + ", ".join(known) + hint
                 raise ParameterError(name, valid, None)
-        rule = ("v0", "wave_speed", "radius", "preset_name")
+        rule = ("v0", "wave_speed", "radius", "preset_name", "gas", "atmosphere")
         if "phi_a" in changes or any(k in changes for k in rule):
             changes = {"phi_a": None, **changes, "phi_a_source": None}
         return replace(self, **changes)
@@ -479,7 +480,10 @@ class Case:
         radius = changes.get("radius", base.radius)
         wave_speed = wave_speed_from_pressure(pressure, mass, radius)
         case = base.derive(**changes, wave_speed=wave_speed)
-        return replace(case, pressure=float(pressure))  # T = P R / 2 of bending and gas
+        # T = P R / 2 of bending and gas (the gas's energy enters phi_a by eq. (3.7))
+        if "phi_a" in changes:
+            return replace(case, pressure=float(pressure))
+        return replace(case, pressure=float(pressure), phi_a=None, phi_a_source=None)
 
     @classmethod
     def from_measurements(

@@ -126,11 +126,15 @@ def test_axisymmetric_p2_liftoff_agrees_with_the_closed_form(route):
 def test_sphere_p2_liftoff_error_falls_at_the_eigenvalue_order():
     case = Case.preset("tennis", modes=12)
     ref = twoball.liftoff(case)
-    errors = [
-        abs(twoball.liftoff(case, backend="fem", mesh="sphere", level=lv, order=2).t_liftoff_s
-            / ref.t_liftoff_s - 1.0)
-        for lv in (3, 4)
-    ]  # fmt: skip
+    errors = []
+    for level in (3, 4):
+        fem = twoball.liftoff(case, backend="fem", mesh="sphere", level=level, order=2)
+        errors.append(
+            max(
+                abs(fem.t_liftoff_s / ref.t_liftoff_s - 1.0),
+                abs(fem.v_liftoff_m_s / ref.v_liftoff_m_s - 1.0),
+            )
+        )
     observed = orders(errors)[0]
     assert 3.0 < observed < 5.0, (errors, observed)
 

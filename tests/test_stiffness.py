@@ -229,3 +229,18 @@ def test_cli_preset_equals_the_api_bit_for_bit(cli):
         assert data[key] == api[key]
     e = cli("--preset", "tennis", "--youngs-modulus", "6e6", "--thickness", "3.2e-3", "--json")
     assert json.loads(e.stdout)["t_liftoff_s"] == api["t_liftoff_s"]
+
+
+def test_gas_energy_enters_the_contact_angle_of_eq_3_7():
+    # kinetic energy 2 pi v0^2 = membrane strain energy (3.5) + gas 2 pi omega_0^2 a_0^2
+    from twoball.modal.initial import deformation_work
+    from twoball.modal.legendre import legendre_coefficients
+
+    case = Case.preset("volleyball")
+    assert case.phi_a_source == "eq. (3.7)" and case.stiffness.gas > 0
+    v0 = case.v0 / (case.radius * case.wave_speed)
+    a0 = legendre_coefficients(case.phi_a, 1)[0]  # quadrature of eq. (3.12), not (3.13)
+    energy = -deformation_work(case.phi_a) + 2 * math.pi * case.stiffness.gas * a0**2
+    assert 2 * math.pi * v0**2 == pytest.approx(energy, rel=1e-12)
+    membrane = case.derive(gas="none")  # the rule applies again: less energy stored, deeper
+    assert membrane.phi_a < case.phi_a
