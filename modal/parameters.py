@@ -479,11 +479,9 @@ class Case:
         base = cls(preset_name=None) if preset is None else cls.preset(preset)
         radius = changes.get("radius", base.radius)
         wave_speed = wave_speed_from_pressure(pressure, mass, radius)
-        case = base.derive(**changes, wave_speed=wave_speed)
-        # T = P R / 2 of bending and gas (the gas's energy enters phi_a by eq. (3.7))
-        if "phi_a" in changes:
-            return replace(case, pressure=float(pressure))
-        return replace(case, pressure=float(pressure), phi_a=None, phi_a_source=None)
+        # P also sets T = P R / 2 of bending and gas (and the gas's energy in eq. (3.7))
+        base = replace(base, pressure=float(pressure), phi_a=None, phi_a_source=None)
+        return base.derive(**changes, wave_speed=wave_speed)
 
     @classmethod
     def from_measurements(

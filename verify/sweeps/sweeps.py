@@ -29,6 +29,7 @@ SWEEP_PARAMETERS: dict[str, str] = {
     "wave-speed": "wave_speed",
     "radius": "radius",
     "modes": "modes",
+    "bending": "bending",
 }
 #: Axis labels (SI) of the swept parameters.
 PARAMETER_LABELS: dict[str, str] = {
@@ -37,6 +38,7 @@ PARAMETER_LABELS: dict[str, str] = {
     "wave-speed": "wave speed c [1/s]",
     "radius": "radius R [m]",
     "modes": "modes N",
+    "bending": "flexural rigidity B [N m]",
 }
 
 
