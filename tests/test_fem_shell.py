@@ -140,11 +140,12 @@ def test_sphere_p2_liftoff_error_falls_at_the_eigenvalue_order():
 
 
 @pytest.mark.slow
-def test_sphere_p2_liftoff_agrees_with_the_closed_form():
+@pytest.mark.parametrize("route", ["krylov", "full"])  # CPU: ~6 s and ~36 s
+def test_sphere_p2_liftoff_agrees_with_the_closed_form(route):
     # N = 12: with N = 30 the bending-stiffened top modes need level >= 6 for 1e-4
     case = Case.preset("tennis", modes=12)
     ref = twoball.liftoff(case)
-    fem = twoball.liftoff(case, backend="fem", mesh="sphere", level=5, order=2, route="krylov")
+    fem = twoball.liftoff(case, backend="fem", mesh="sphere", level=5, order=2, route=route)
     assert fem.t_liftoff_s == pytest.approx(ref.t_liftoff_s, rel=1e-4)
     assert fem.v_liftoff_m_s == pytest.approx(ref.v_liftoff_m_s, rel=1e-4)
 
