@@ -103,6 +103,7 @@ class LiftoffReport:
             "ratio": self.ratio,
             "floor_time_s": self.case.floor_time,
             "floor_time_estimate": FLOOR_TIME_ESTIMATE,
+            "before_floor_departure": self.before_floor_departure,
             "phi_a_rad": self.case.phi_a,
             "phi_a_source": self.case.phi_a_source,
             "gamma": self.case.gamma,

@@ -170,7 +170,9 @@ def test_presets_and_floor_time():
     data = report.as_dict()
     assert data["floor_time_s"] == tennis.floor_time
     assert data["beta"] == tennis.stiffness.beta and data["gas"] == "adiabatic"
-    assert report.before_floor_departure is (report.t_liftoff_s < tennis.floor_time)
+    assert report.before_floor_departure is (report.t_liftoff_s < tennis.floor_time) is True
+    assert data["before_floor_departure"] is True
+    assert twoball.liftoff().as_dict()["before_floor_departure"] is False  # 9.9 ms > 4.9 ms
 
 
 @pytest.mark.parametrize(

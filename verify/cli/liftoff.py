@@ -45,7 +45,6 @@ def liftoff_rows(report: LiftoffReport) -> list[tuple[str, str]]:
     """The human-readable rows of a lift-off report (SI)."""
     case = report.case
     rows = [
-        ("preset", str(case.preset_name)),
         ("R [m]", f"{case.radius:g}"),
         ("c [1/s]", f"{case.wave_speed:g}"),
         ("|v0| [m/s]", f"{case.v0:g}"),
@@ -57,7 +56,7 @@ def liftoff_rows(report: LiftoffReport) -> list[tuple[str, str]]:
         ("gamma = g/(R c^2)", f"{case.gamma:.4e}"),
         ("lifted", "yes" if report.result.lifted else "no"),
         ("t_l [ms]", number(report.t_liftoff_s, 1e3)),
-        ("ball leaves floor [ms] (estimate pi/(2c))", number(case.floor_time, 1e3)),
+        ("floor time [ms]", number(case.floor_time, 1e3)),  # estimate pi / (2 c)
         ("v_l [m/s]", number(report.v_liftoff_m_s)),
         ("v_l / |v0|", number(report.ratio)),
         ("rejected candidates", str(len(report.result.rejected))),
