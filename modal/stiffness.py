@@ -133,7 +133,12 @@ def stiffness_from_si(
     if bending == 0.0 and gas == "none":
         return Stiffness()
     if pressure is None:
-        raise ParameterError("pressure", "given (sets T = P R / 2) with bending or gas", None)
+        raise ParameterError(
+            "pressure",
+            "given with bending or gas: it sets the tension T = P R / 2 (command line: "
+            "--pressure with --mass, or a preset that has one: tennis, volleyball)",
+            None,
+        )
     if not (math.isfinite(pressure) and pressure > 0):
         raise ParameterError("pressure", "a finite number > 0 [Pa]", pressure)
     if not (math.isfinite(atmosphere) and atmosphere >= 0):

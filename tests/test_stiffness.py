@@ -215,6 +215,7 @@ def test_pressure_comes_with_the_mass_or_a_stiff_measurement():
         (("--preset", "tennis", "--youngs-modulus", "1e6", "--thickness", "3e-3",
           "--poisson", "0.7"), "--poisson"),
         (("--preset", "squash"), "--preset"),
+        (("--gas", "adiabatic"), "--pressure"),  # the basketball preset has no pressure
     ],
 )  # fmt: skip
 def test_cli_refuses_bad_stiffness_in_one_line(cli, args, flag):
