@@ -430,6 +430,9 @@ class Case:
         Without ``phi_a`` in ``changes``, a new v0, c or R (or ``preset_name``)
         re-applies the rule: the preset's measured phi_a at its own values, eq.
         (3.7) elsewhere.  ``phi_a="eq. (3.7)"`` asks for eq. (3.7) explicitly.
+        ``gas`` and ``atmosphere`` re-apply the rule too (the gas's energy enters
+        eq. (3.7)); ``pressure`` is not a change here: it comes with the mass
+        through :meth:`from_pressure`, which sets c and T together.
         This is how Fig. 12 varies one parameter at a time.
         """
         if "phi_a_source" in changes:
