@@ -28,6 +28,7 @@ from twoball.modal.filters import FilterKind, SpectralFilter
 from twoball.modal.initial import _check_phi_a
 from twoball.modal.liftoff import DEFAULT_T_END, PoleMotion, SampledPoleMotion
 from twoball.modal.series import ModalSeries, check_damping
+from twoball.modal.stiffness import Stiffness
 
 from twoball.budget import check_fem
 
@@ -65,6 +66,8 @@ class ModalModel:
     seconds: dict[str, float] = field(default_factory=dict)
     krylov: dict[str, Any] | None = None
     """Krylov route details (None on the full eigen route, where ``pairs`` is set)."""
+    stiffness: Stiffness | None = None
+    """Bending and gas (:mod:`twoball.fem_membrane.shell`); None: the membrane."""
 
     @property
     def filter(self) -> SpectralFilter:
@@ -93,6 +96,7 @@ def modal_model(
     geometry: str = "isoparametric",
     fields: bool = False,
     t_end: float = DEFAULT_T_END,
+    stiffness: Stiffness | None = None,
 ) -> ModalModel:
     """Assemble, project F (eq. (3.10)) and build the filtered modal series.
 
@@ -109,6 +113,11 @@ def modal_model(
     ``pairs`` then holds the Ritz pairs below the cutoff, and the Krylov method
     also stops on the whole filtered field (u, u_t, u_tt in the M-norm at
     instants over [0, ``t_end``], :mod:`twoball.fem_membrane.ritz_field`).
+
+    ``stiffness`` (bending, gas) maps the membrane
+    spectrum to the mixed bending form's and the gas term's
+    (:func:`twoball.fem_membrane.shell.stiff_series`); ``pairs`` then hold the
+    stiffened eigenvalues.
     """
     phi_a = _check_phi_a(phi_a)
     damping = check_damping(damping)
@@ -134,8 +143,16 @@ def modal_model(
             space, moments, damping, filter, t_end=t_end, vectors=fields, field_times=times
         )
         pairs, krylov = details.pairs, details.as_dict()
+    if stiffness is not None and stiffness.active:
+        from .shell import stiff_pairs, stiff_series
+
+        series = stiff_series(series, space, stiffness)
+        if pairs is not None:
+            pairs = stiff_pairs(pairs, series)
+    else:
+        stiffness = None
     seconds["eigen"] = clock.perf_counter() - start
-    return ModalModel(space, pairs, moments, series, seconds, krylov)
+    return ModalModel(space, pairs, moments, series, seconds, krylov, stiffness)
 
 
 def rayleigh_damping(
@@ -177,6 +194,8 @@ def alpha_motion(
     info: dict[str, Any] = {"dt": dt, "rho_inf": rho_inf}
     if damping_model == "modal":
         damping = ModalDamping.from_modes(space.mass, pairs, series.damping)
+    elif model.stiffness is not None:
+        raise ParameterError("damping_model", "modal with bending or gas", damping_model)
     else:
         rayleigh = rayleigh_damping(model, rayleigh_frequencies)
         damping = rayleigh.matrix(space.mass, space.stiffness)
@@ -189,7 +208,13 @@ def alpha_motion(
             "table": rayleigh.table(retained),
         }
     start = clock.perf_counter()
-    stepper = GeneralizedAlpha(space.mass, space.stiffness, dt, damping, rho_inf)
+    if model.stiffness is not None:
+        from .shell import ShellAlpha, ShellOperator
+
+        operator = ShellOperator(space, model.stiffness)
+        stepper = ShellAlpha(space.mass, operator, dt, damping, rho_inf)
+    else:
+        stepper = GeneralizedAlpha(space.mass, space.stiffness, dt, damping, rho_inf)
     u0 = filtered_displacement(series, pairs)
     history = stepper.run(u0, np.zeros_like(u0), t_end, space.pole_row)
     info["steps"] = history.t.size - 1
@@ -219,6 +244,7 @@ def fem_pole_motion(
     rayleigh_frequencies: tuple[float, float] | None = None,
     route: str = "auto",
     geometry: str = "isoparametric",
+    stiffness: Stiffness | None = None,
 ) -> tuple[PoleMotion, dict[str, Any]]:
     """Pole motion of the damped membrane from finite elements (dimensionless).
 
@@ -271,6 +297,8 @@ def fem_pole_motion(
         Galerkin L2 projection of F, or nodal interpolation (``--initial``).
     rayleigh_frequencies : (float, float), optional
         The two frequencies where the Rayleigh ratio equals D.
+    stiffness : Stiffness, optional
+        Bending and gas (:mod:`twoball.fem_membrane.shell`); None: the membrane.
 
     Returns
     -------
@@ -312,6 +340,7 @@ def fem_pole_motion(
         initial=initial,
         route=route,
         geometry=geometry,
+        stiffness=stiffness,
     )
     space, pairs, series = model.space, model.pairs, model.series
     next_value = None if pairs is None else pairs.next_value

@@ -87,7 +87,20 @@ def max_v0_dimensionless() -> float:
     return math.inf
 
 
-def phi_a_from_v0(v0: float, radius: float, wave_speed: float) -> float:
+def gas_energy_shape(phi_a: float, gas: float) -> float:
+    """Gas term added to the shape of eq. (3.7): ``omega_0^2 a_0^2`` (dimensionless).
+
+    The enclosed gas stores ``(1/2) omega_0^2 int a_0^2 dOmega = 2 pi omega_0^2
+    a_0^2`` (unit T R^2) when the mean displacement is a_0 of eq. (3.13); with the
+    kinetic energy ``2 pi v0^2`` of eq. (3.6) this adds ``omega_0^2 a_0^2`` to
+    ``v0^2``.  (Bending adds nothing finite: F has a crease at phi_a.)
+    """
+    c = math.cos(_check_phi_a(phi_a))
+    a0 = 0.5 * (c * (math.log(-c) - 1.0) - 1.0)
+    return gas * a0 * a0
+
+
+def phi_a_from_v0(v0: float, radius: float, wave_speed: float, gas: float = 0.0) -> float:
     """Contact angle phi_a [rad] in (pi/2, pi) for impact speed ``|v0|`` [m/s], inverting eq. (3.7).
 
     The right-hand side of (3.7) decreases monotonically from +inf (phi_a -> pi/2)
@@ -98,6 +111,9 @@ def phi_a_from_v0(v0: float, radius: float, wave_speed: float) -> float:
     precision by a bracketing solver (:func:`~twoball.modal.roots.bracketed_roots`,
     regula falsi with bisection) on the logarithm of (3.7) as a function of
     ``log(pi - phi_a)``, where it is nearly a straight line.
+
+    ``gas`` (``omega_0^2`` of :mod:`twoball.modal.stiffness`, default 0) adds the
+    energy of the compressed gas to the balance (3.6) (:func:`gas_energy_shape`).
     """
     from .parameters import check_v0
 
@@ -110,8 +126,13 @@ def phi_a_from_v0(v0: float, radius: float, wave_speed: float) -> float:
     # Solve in y = log(pi - phi_a): with s = pi - phi_a the shape of (3.7) rises
     # monotonically from ~s^4/8 (s -> 0) to +inf (s -> pi/2); its logarithm is
     # ~ 4 y - log 8 for small s, so a bracket in y is refined quickly and uniformly.
+    def shape(phi_a: float) -> float:
+        if gas > 0.0:
+            return _energy_shape(phi_a) + gas_energy_shape(phi_a, gas)
+        return _energy_shape(phi_a)
+
     def residual(y: float) -> float:
-        return math.log(_energy_shape(math.pi - math.exp(y))) - target
+        return math.log(shape(math.pi - math.exp(y))) - target
 
     upper = math.log(math.pi / 2 * (1 - 1e-15))
     if residual(upper) < 0:
@@ -123,7 +144,7 @@ def phi_a_from_v0(v0: float, radius: float, wave_speed: float) -> float:
         )
     if residual(_LOG_S_MIN) > 0:
         # 1 + cos(phi_a) ~ s^2 / 2 is lost to round-off as s -> 0 (log(0) below s ~ 1e-8)
-        slowest = radius * wave_speed * math.sqrt(_energy_shape(math.pi - math.exp(_LOG_S_MIN)))
+        slowest = radius * wave_speed * math.sqrt(shape(math.pi - math.exp(_LOG_S_MIN)))
         raise ParameterError(
             "v0",
             f"at least {slowest:.3g} m/s at R = {radius:g} m, c = {wave_speed:g} 1/s (slower "

@@ -20,6 +20,7 @@ from .errors import NumericalError, ParameterError
 from .filters import FilterKind, SpectralFilter, legendre_frequency
 from .initial import _check_phi_a
 from .series import ModalSeries
+from .stiffness import Stiffness
 
 _MAX_QUADRATURE = 20000
 
@@ -148,6 +149,7 @@ def legendre_series(
     damping: float,
     filter: SpectralFilter | FilterKind = "lanczos",
     modes: int | None = None,
+    stiffness: Stiffness | None = None,
 ) -> ModalSeries:
     """The damped, filtered Legendre series of eq. (3.16) as a :class:`ModalSeries`.
 
@@ -161,6 +163,10 @@ def legendre_series(
         Spectral filter; a string needs ``modes``.
     modes : int, optional
         Truncation N (taken from ``filter`` when a SpectralFilter is given).
+    stiffness : Stiffness, optional
+        Bending and gas (:mod:`twoball.modal.stiffness`): ``omega_n^2 = n (n+1)
+        (1 + beta (n (n+1) - 2))``, ``omega_0^2 = gas``; the filter still weighs
+        mode n by ``sqrt(n (n+1))``.  None or inactive: the paper's membrane.
 
     Returns
     -------
@@ -173,13 +179,15 @@ def legendre_series(
     elif modes is not None and modes != filter.modes:
         raise ValueError("modes disagrees with filter.modes")
     n = np.arange(filter.modes + 1)
+    stiff = stiffness is not None and stiffness.active
     return ModalSeries(
-        omega=legendre_frequency(n),
+        omega=stiffness.legendre_omega(n) if stiff else legendre_frequency(n),
         coefficients=legendre_coefficients(phi_a, filter.modes),
         pole_values=np.ones(n.size),
         damping=damping,
         filter=filter,
         mode_norms=4.0 * np.pi / (2 * n + 1),
+        filter_omega=legendre_frequency(n) if stiff else None,
     )
 
 

@@ -14,6 +14,7 @@ from typing import Any
 
 from .errors import ParameterError, bounded, real_number
 from .initial import PHI_A_RANGE, check_phi_a, phi_a_from_v0  # noqa: F401 -- re-exported
+from .stiffness import ATMOSPHERE, GAS_MODELS, Stiffness, stiffness_from_si
 
 STANDARD_GRAVITY = 9.81  # m/s^2, the value used in the paper (§2)
 # Physically meaningful magnitudes (SI).  They also keep the dimensionless numbers
@@ -24,6 +25,7 @@ G_RANGE = (1e-6, 1e6)  # m/s^2
 V0_MAX = 1e6  # m/s
 PRESSURE_RANGE = (1e-6, 1e12)  # Pa
 MASS_RANGE = (1e-12, 1e12)  # kg
+BENDING_RANGE = (0.0, 1e6)  # N m: flexural rigidity B (a tennis ball's is ~0.02)
 MODES_MAX = 10**6  # far above what the resource guards let run
 
 
@@ -141,21 +143,83 @@ def _number(name: str, value: object, valid: str) -> float:
 
 @dataclass(frozen=True)
 class Measured:
-    """A preset's measured impact: R [m], c [1/s], ``|v0|`` [m/s], phi_a [rad], D, N."""
+    """A preset: R [m], c [1/s], ``|v0|`` [m/s], phi_a [rad] (None: eq. (3.7)), D, N.
+
+    ``pressure`` [Pa] (excess) and ``mass`` [kg] document c (eq. (3.8)) and set
+    the tension ``T = P R / 2`` of the bending and gas terms; ``bending`` B [N m]
+    and ``gas`` as in :mod:`twoball.modal.stiffness`.  ``source``: where the
+    values come from (see docs/stiff_balls.rst).
+    """
 
     radius: float
     wave_speed: float
     v0: float
-    phi_a: float
+    phi_a: float | None
     damping: float
     modes: int
+    pressure: float | None = None
+    mass: float | None = None
+    bending: float = 0.0
+    gas: str = "none"
+    source: str = ""
 
 
-#: Measured cases (Table 2, Fig. 11): R, c, ``|v0|`` and phi_a measured; D fitted once.
+def _tennis() -> Measured:
+    from .stiffness import flexural_rigidity
+
+    radius, mass, pressure = 0.0335, 0.0577, 82700.0
+    return Measured(
+        radius=radius,
+        wave_speed=wave_speed_from_pressure(pressure, mass, radius),
+        v0=4.1,
+        phi_a=None,
+        damping=0.13,
+        modes=30,
+        pressure=pressure,
+        mass=mass,
+        bending=flexural_rigidity(6.0e6, 3.2e-3, 0.5),
+        gas="adiabatic",
+        source="ITF Rules of Tennis, App. I (diameter 6.54-6.86 cm, mass 56.0-59.4 g); "
+        "12 psi = 82.7 kPa excess pressure and a 3.2 mm rubber wall (Cross 1999, Sports "
+        "Eng. 2 23; Brody, Cross & Lindsey 2002); rubber E = 6 MPa, nu = 0.5 assumed; "
+        "D = 0.13 and |v0| = 4.1 m/s taken from the basketball (not measured)",
+    )
+
+
+def _volleyball() -> Measured:
+    radius, mass, pressure = 0.105, 0.270, 30600.0
+    return Measured(
+        radius=radius,
+        wave_speed=wave_speed_from_pressure(pressure, mass, radius),
+        v0=4.1,
+        phi_a=None,
+        damping=0.13,
+        modes=30,
+        pressure=pressure,
+        mass=mass,
+        gas="adiabatic",
+        source="FIVB Official Volleyball Rules 2021-2024, rule 3.1 (circumference 65-67 "
+        "cm, mass 260-280 g, pressure 0.30-0.325 kgf/cm^2 = 29.4-31.9 kPa); a membrane "
+        "like the basketball (B = 0); D = 0.13 and |v0| = 4.1 m/s from the basketball",
+    )
+
+
+#: Presets.  basketball: Table 2, Fig. 11 (R, c, ``|v0|``, phi_a measured; D fitted
+#: once).  tennis, volleyball: rule-book sizes and pressures, phi_a from eq. (3.7).
 MEASURED: dict[str, Measured] = {
     "basketball": Measured(
-        radius=0.12, wave_speed=320.0, v0=4.1, phi_a=2.6, damping=0.13, modes=30
-    ),
+        radius=0.12,
+        wave_speed=320.0,
+        v0=4.1,
+        phi_a=2.6,
+        damping=0.13,
+        modes=30,
+        pressure=77200.0,
+        mass=0.567,
+        source="Cross et al., two-ball bounce, Table 2 and Fig. 11 (measured)",
+    ),  # fmt: skip
+    "tennis": _tennis(),
+    "volleyball": _volleyball(),
 }
 #: ``phi_a`` request meaning "derive it from ``|v0|``, R and c by eq. (3.7)".
 FROM_V0 = "eq. (3.7)"
@@ -182,7 +246,8 @@ class Case:
     The contact angle phi_a is (1) the value given; else (2) the preset's
     measured phi_a when R, c and ``|v0|`` are the preset's own measured values (so
     typing a preset's own value never changes the answer); else (3) derived from
-    ``|v0|``, R and c by eq. (3.7).  :attr:`phi_a_source` says which, and
+    ``|v0|``, R and c by eq. (3.7) (with the enclosed gas's energy added when
+    ``gas`` is set).  :attr:`phi_a_source` says which, and
     :attr:`phi_a_note` explains when (3) departs from a preset's measured angle.
 
     Parameters
@@ -202,6 +267,16 @@ class Case:
         Legendre truncation N >= 1, eq. (3.16).
     g : float
         Gravitational acceleration [m/s^2].
+    bending : float
+        Flexural rigidity B [N m] >= 0 of the wall (0: the paper's membrane);
+        see :mod:`twoball.modal.stiffness`.
+    gas : {"none", "isothermal", "adiabatic"}
+        The enclosed gas's compression law (none: the paper's membrane).
+    pressure : float or None
+        Excess pressure P [Pa]; with bending or gas it sets ``T = P R / 2``
+        (§4(b)) and the gas pressure ``P + atmosphere``.  Unused otherwise.
+    atmosphere : float
+        Ambient pressure [Pa] (default 101325).
     preset_name : str or None
         The preset whose measurements the case starts from (default
         ``basketball``, whose values are the defaults above); None for a case of
@@ -219,6 +294,10 @@ class Case:
     g: float = STANDARD_GRAVITY
     preset_name: str | None = "basketball"
     phi_a_source: str | None = None
+    bending: float = 0.0
+    gas: str = "none"
+    pressure: float | None = None
+    atmosphere: float = ATMOSPHERE
 
     def __post_init__(self) -> None:
         object.__setattr__(self, "radius", check_radius(self.radius))
@@ -232,26 +311,72 @@ class Case:
         object.__setattr__(self, "modes", check_modes(self.modes))
         if self.preset_name is not None and not isinstance(self.preset_name, str):
             raise ParameterError("preset", "a preset name or None", self.preset_name)
+        self._check_stiffness()
         phi_a, source = self._resolve_phi_a()
         object.__setattr__(self, "phi_a", phi_a)
         object.__setattr__(self, "phi_a_source", source)
+
+    def _check_stiffness(self) -> None:
+        bending = bounded("bending", self.bending, *BENDING_RANGE, "N m")
+        if self.gas not in GAS_MODELS:
+            raise ParameterError("gas", "one of " + ", ".join(GAS_MODELS), self.gas)
+        if self.pressure is not None:
+            object.__setattr__(
+                self, "pressure", bounded("pressure", self.pressure, *PRESSURE_RANGE, "Pa")
+            )
+        atmosphere = bounded("atmosphere", self.atmosphere, 0.0, PRESSURE_RANGE[1], "Pa")
+        object.__setattr__(self, "bending", bending)
+        object.__setattr__(self, "atmosphere", atmosphere)
+        self.stiffness  # noqa: B018 -- raises ParameterError when pressure is missing
+
+    @property
+    def stiffness(self) -> Stiffness:
+        """Dimensionless bending ratio beta and gas stiffness omega_0^2 (zero: membrane)."""
+        return stiffness_from_si(
+            radius=self.radius,
+            pressure=self.pressure,
+            bending=self.bending,
+            gas=self.gas,
+            atmosphere=self.atmosphere,
+        )
+
+    @property
+    def stiff(self) -> bool:
+        """True when bending or gas departs from the paper's membrane."""
+        return self.bending > 0.0 or self.gas != "none"
+
+    @property
+    def floor_time(self) -> float:
+        """Estimated time [s] from maximum compression until the ball leaves the floor.
+
+        ``pi / (2 c)``: half the period of the pressure spring ``k = 2 pi R P``
+        (:func:`twoball.modal.stiffness.floor_contact_time`).
+        """
+        from .stiffness import floor_contact_time
+
+        return floor_contact_time(self.wave_speed)
 
     def _resolve_phi_a(self) -> tuple[float, str]:
         """The rule for phi_a: given, else the preset's measurement, else eq. (3.7)."""
         measured = _measured(self.preset_name)
         if self.phi_a is None or self.phi_a == FROM_V0:
-            if self.phi_a is None and measured is not None and self.at_measured_point:
+            if (
+                self.phi_a is None
+                and measured is not None
+                and measured.phi_a is not None
+                and self.at_measured_point
+            ):
                 return measured.phi_a, f"measured ({self.preset_name})"
-            return phi_a_from_v0(self.v0, self.radius, self.wave_speed), FROM_V0
+            return phi_a_from_v0(self.v0, self.radius, self.wave_speed, self.stiffness.gas), FROM_V0
         phi_a = check_phi_a(self.phi_a)
         source = self.phi_a_source or "given"
         if source == "given":
             return phi_a, source
         if source == FROM_V0:  # kept through derive(): still the root of eq. (3.7)?
-            if phi_a == phi_a_from_v0(self.v0, self.radius, self.wave_speed):
+            if phi_a == phi_a_from_v0(self.v0, self.radius, self.wave_speed, self.stiffness.gas):
                 return phi_a, source
         if measured is not None and source == f"measured ({self.preset_name})":
-            if self.at_measured_point and phi_a == measured.phi_a:
+            if self.at_measured_point and measured.phi_a is not None and phi_a == measured.phi_a:
                 return phi_a, source
         raise ParameterError(
             "phi_a_source", "None, 'given' or consistent with the preset", self.phi_a_source
@@ -272,7 +397,7 @@ class Case:
     def phi_a_note(self) -> str | None:
         """Why phi_a differs from the preset's measured angle (eq. (3.7) applied), or None."""
         m = _measured(self.preset_name)
-        if m is None or self.phi_a_source != FROM_V0 or self.phi_a == m.phi_a:
+        if m is None or m.phi_a is None or self.phi_a_source != FROM_V0 or self.phi_a == m.phi_a:
             return None
         moved = [
             f"{label} = {value:g} {unit}"
@@ -300,8 +425,11 @@ class Case:
         return self.scalings.gamma
 
     def as_dict(self) -> dict[str, Any]:
-        """The case in SI, JSON-ready, with ``phi_a_source``."""
-        return {
+        """The case in SI, JSON-ready, with ``phi_a_source``.
+
+        Bending and gas keys (and beta, omega_0) appear only for a stiffened ball.
+        """
+        out = {
             "radius_m": self.radius,
             "wave_speed_1_s": self.wave_speed,
             "v0_m_s": self.v0,
@@ -312,6 +440,17 @@ class Case:
             "g_m_s2": self.g,
             "preset": self.preset_name,
         }
+        if self.stiff:
+            stiffness = self.stiffness
+            out.update(
+                bending_N_m=self.bending,
+                gas=self.gas,
+                pressure_Pa=self.pressure,
+                atmosphere_Pa=self.atmosphere,
+                beta=stiffness.beta,
+                omega0_squared=stiffness.gas,
+            )
+        return out
 
     def with_v0(self, v0: float) -> Case:
         """This case with a new impact speed; phi_a by the rule (see :class:`Case`)."""
@@ -323,11 +462,14 @@ class Case:
         Without ``phi_a`` in ``changes``, a new v0, c or R (or ``preset_name``)
         re-applies the rule: the preset's measured phi_a at its own values, eq.
         (3.7) elsewhere.  ``phi_a="eq. (3.7)"`` asks for eq. (3.7) explicitly.
+        ``gas`` and ``atmosphere`` re-apply the rule too (the gas's energy enters
+        eq. (3.7)); ``pressure`` is not a change here: it comes with the mass
+        through :meth:`from_pressure`, which sets c and T together.
         This is how Fig. 12 varies one parameter at a time.
         """
         if "phi_a_source" in changes:
             raise ParameterError("phi_a_source", "set by the class, not given", None)
-        known = [f for f in self.__dataclass_fields__ if f != "phi_a_source"]
+        known = [f for f in self.__dataclass_fields__ if f not in ("phi_a_source", "pressure")]
         for name in changes:
             if name not in known:
                 hint = (
@@ -337,7 +479,7 @@ class Case:
                 )
                 valid = "a field of Case, one of " + ", ".join(known) + hint
                 raise ParameterError(name, valid, None)
-        rule = ("v0", "wave_speed", "radius", "preset_name")
+        rule = ("v0", "wave_speed", "radius", "preset_name", "gas", "atmosphere")
         if "phi_a" in changes or any(k in changes for k in rule):
             changes = {"phi_a": None, **changes, "phi_a_source": None}
         return replace(self, **changes)
@@ -372,6 +514,8 @@ class Case:
         base = cls(preset_name=None) if preset is None else cls.preset(preset)
         radius = changes.get("radius", base.radius)
         wave_speed = wave_speed_from_pressure(pressure, mass, radius)
+        # P also sets T = P R / 2 of bending and gas (and the gas's energy in eq. (3.7))
+        base = replace(base, pressure=float(pressure), phi_a=None, phi_a_source=None)
         return base.derive(**changes, wave_speed=wave_speed)
 
     @classmethod
@@ -387,24 +531,36 @@ class Case:
         damping: float = 0.13,
         modes: int = 30,
         g: float = STANDARD_GRAVITY,
+        bending: float = 0.0,
+        gas: str = "none",
     ) -> Case:
-        """A case of one's own measurements (no preset): c, or P and m; phi_a given or eq. (3.7)."""
+        """A case of one's own measurements (no preset): c, or P and m; phi_a given or eq. (3.7).
+
+        ``bending`` B [N m] and ``gas`` (:mod:`twoball.modal.stiffness`) need the
+        excess pressure P for the tension ``T = P R / 2``.
+        """
         if wave_speed is None:
             if pressure is None or mass is None:
                 raise ParameterError("wave_speed", "given, or both pressure and mass")
             wave_speed = wave_speed_from_pressure(pressure, mass, radius)
-        elif pressure is not None or mass is not None:
+        elif mass is not None or (pressure is not None and bending == 0 and gas == "none"):
             raise ParameterError("wave_speed", "given alone, not with pressure and mass")
-        return cls(radius, wave_speed, v0, phi_a, damping, modes, g, preset_name=None)
+        return cls(
+            radius, wave_speed, v0, phi_a, damping, modes, g, preset_name=None,
+            bending=bending, gas=gas, pressure=pressure,
+        )  # fmt: skip
 
 
 PRESETS: dict[str, Case] = {name: Case(preset_name=name, radius=m.radius, wave_speed=m.wave_speed,
-                                       v0=m.v0, damping=m.damping, modes=m.modes)
+                                       v0=m.v0, damping=m.damping, modes=m.modes,
+                                       bending=m.bending, gas=m.gas,
+                                       pressure=m.pressure if m.bending or m.gas != "none"
+                                       else None)
                             for name, m in MEASURED.items()}  # fmt: skip
 
 
 def preset(name: str) -> Case:
-    """The named preset case (currently ``basketball``), phi_a measured."""
+    """The named preset case (basketball, tennis, volleyball); see :data:`MEASURED`."""
     try:
         return PRESETS[name]
     except KeyError:

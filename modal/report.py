@@ -15,6 +15,11 @@ from .legendre import legendre_series
 from .liftoff import DEFAULT_T_END, Horizon, LiftoffResult, PoleMotion, find_liftoff
 from .parameters import Case
 
+FLOOR_TIME_ESTIMATE = (
+    "pi/(2c): half period of the pressure spring k = 2 pi R P of a ball flattened on the "
+    "floor (Cross 1999, Am. J. Phys. 67 222); an upper bound with bending or gas"
+)
+
 
 @dataclass(frozen=True)
 class LiftoffReport:
@@ -69,6 +74,12 @@ class LiftoffReport:
         return self.result.velocity * self.case.scalings.velocity
 
     @property
+    def before_floor_departure(self) -> bool | None:
+        """True if t_l precedes the estimated floor departure ``pi / (2 c)`` (None: no lift-off)."""
+        t = self.t_liftoff_s
+        return None if t is None else t < self.case.floor_time
+
+    @property
     def ratio(self) -> float | None:
         """``v_l / |v0|``, the rebound ratio of the upper body (Fig. 11, 12)."""
         v = self.v_liftoff_m_s
@@ -93,6 +104,9 @@ class LiftoffReport:
             "t_liftoff_s": self.t_liftoff_s,
             "v_liftoff_m_s": self.v_liftoff_m_s,
             "ratio": self.ratio,
+            "floor_time_s": self.case.floor_time,
+            "floor_time_estimate": FLOOR_TIME_ESTIMATE,
+            "before_floor_departure": self.before_floor_departure,
             "phi_a_rad": self.case.phi_a,
             "phi_a_source": self.case.phi_a_source,
             "gamma": self.case.gamma,
@@ -107,6 +121,11 @@ class LiftoffReport:
             "recontact": self.recontact,
             "t_end_s": self.result.t_end * scale.time,
         }
+        if self.case.stiff:  # bending and gas (absent for the paper's membrane)
+            case = self.case.as_dict()
+            for key in ("bending_N_m", "gas", "pressure_Pa", "atmosphere_Pa", "beta"):
+                data[key] = case[key]
+            data["omega0_squared"] = case["omega0_squared"]
         data.update(self.extra)
         data["notes"] = self.notes
         data["warnings"] = list(self.warnings)
@@ -181,7 +200,9 @@ def legendre_liftoff(
     from twoball.budget import check_series
 
     check_series(case.modes, t_end_dimensionless(case, t_end_s), t_end_s)
-    series = legendre_series(case.phi_a, case.damping, SpectralFilter(sigma, case.modes))
+    series = legendre_series(
+        case.phi_a, case.damping, SpectralFilter(sigma, case.modes), stiffness=case.stiffness
+    )
     return report_liftoff(
         case,
         series,

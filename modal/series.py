@@ -61,6 +61,11 @@ class ModalSeries:
     mode_norms : array_like, shape (K,), optional
         ``integral of phi_k^2 over the unit sphere`` (the M-norm); enters the energy
         only.  Defaults to ones (M-orthonormal modes).
+    filter_omega : array_like, shape (K,), optional
+        The frequency the filter weighs each mode by, when it is not ``omega``:
+        the membrane frequency ``sqrt(n (n+1))`` of a mode stiffened by bending
+        or gas (:func:`twoball.modal.stiffness.stiffen`), so that the filter of
+        eq. (3.16) keeps acting on the degree n.  None: ``omega``.
     """
 
     omega: np.ndarray
@@ -69,6 +74,7 @@ class ModalSeries:
     damping: float
     filter: SpectralFilter = field(default_factory=SpectralFilter)
     mode_norms: np.ndarray | None = None
+    filter_omega: np.ndarray | None = None
 
     def __post_init__(self) -> None:
         omega = np.asarray(self.omega, dtype=float)
@@ -87,12 +93,18 @@ class ModalSeries:
         object.__setattr__(self, "pole_values", pole_values)
         object.__setattr__(self, "mode_norms", norms.astype(float))
         object.__setattr__(self, "damping", check_damping(self.damping))
+        if self.filter_omega is not None:
+            by = np.asarray(self.filter_omega, dtype=float)
+            if by.shape != omega.shape or not np.all(np.isfinite(by)):
+                raise ValueError("filter_omega must be finite, one value per mode")
+            object.__setattr__(self, "filter_omega", by)
 
     # --- derived quantities -------------------------------------------------
     @cached_property
     def weights(self) -> np.ndarray:
         """Filter weights sigma(omega_k), zero for modes beyond the cutoff."""
-        return self.filter(self.omega)
+        by = self.omega if self.filter_omega is None else self.filter_omega
+        return self.filter(by)
 
     @cached_property
     def retained(self) -> np.ndarray:

@@ -81,7 +81,7 @@ def test_sweep_modes(capsys):
         (["liftoff", "--damping", "-0.01"], "--damping"),
         (["liftoff", "--phi-a", "1.2"], "--phi-a"),
         (["liftoff", "--phi-a", "3.2"], "--phi-a"),
-        (["liftoff", "--preset", "volleyball"], "--preset"),
+        (["liftoff", "--preset", "squash"], "--preset"),
         (["liftoff", "--modes", "0"], "--modes"),
         (["liftoff", "--v0", "0"], "--v0"),
         (["liftoff", "--wave-speed", "-3"], "--wave-speed"),

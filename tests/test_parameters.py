@@ -73,8 +73,8 @@ def test_invalid_case_names_parameter_and_range(changes, name):
 
 
 def test_unknown_preset():
-    with pytest.raises(ParameterError, match="preset must be one of basketball"):
-        preset("volleyball")
+    with pytest.raises(ParameterError, match="preset must be one of basketball, tennis"):
+        preset("squash")
 
 
 @pytest.mark.parametrize("args", [(0, 0.5, 0.1), (1e5, -1, 0.1), (1e5, 0.5, 0)])

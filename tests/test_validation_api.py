@@ -21,6 +21,7 @@ from typing import Any
 import pytest
 import validation_table as table
 from twoball.modal import icm
+from twoball.modal.stiffness import flexural_rigidity
 from twoball.verify.cli.flags import FLAGS
 
 import twoball
@@ -144,6 +145,11 @@ CALLS: dict[str, dict[str, Callable[[Any, Path], Any]]] = {
         "liftoff": lambda v, _: twoball.liftoff(CASE, mass_ratio=0.01, contact_radius=v)
     },
     "restitution": {"liftoff": lambda v, _: twoball.liftoff(CASE, mass_ratio=0.01, restitution=v)},
+    "bending": {"Case": lambda v, _: twoball.Case.preset("tennis").derive(bending=v)},
+    "atmosphere": {"Case": lambda v, _: twoball.Case.preset("tennis").derive(atmosphere=v)},
+    "youngs_modulus": {"flexural_rigidity": lambda v, _: flexural_rigidity(v, 0.003)},
+    "thickness": {"flexural_rigidity": lambda v, _: flexural_rigidity(6e6, v)},
+    "poisson": {"flexural_rigidity": lambda v, _: flexural_rigidity(6e6, 0.003, v)},
 }
 
 

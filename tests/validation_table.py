@@ -89,6 +89,11 @@ RANGES: dict[str, Range] = {
     "--mass-ratio": Range(0.0, 100.0),
     "--contact-radius": Range(0.0, 0.12, low_open=True, high_open=True),  # (0, R) m
     "--restitution": Range(0.0, 1.0),
+    "--bending": Range(0.0, 1e6),
+    "--youngs-modulus": Range(0.0, 1e15, low_open=True),
+    "--thickness": Range(0.0, 1.0, low_open=True),
+    "--poisson": Range(0.0, 0.5),
+    "--atmosphere": Range(0.0, 1e12),
 }
 #: Values that a range accepts but the model refuses anyway, per option.
 ALSO_BAD: dict[str, tuple[str, ...]] = {
@@ -127,6 +132,18 @@ CONTEXT: dict[tuple[str, str], list[str]] = {
     ("sweep", "--workers"): ["--values", "0:0.5:3"],
     ("liftoff", "--contact-radius"): ["--mass-ratio", "0.01"],
     ("liftoff", "--restitution"): ["--mass-ratio", "0.01"],
+    ("liftoff", "--bending"): ["--preset", "tennis"],
+    ("liftoff", "--youngs-modulus"): ["--preset", "tennis", "--thickness", "0.003"],
+    ("liftoff", "--thickness"): ["--preset", "tennis", "--youngs-modulus", "6e6"],
+    ("liftoff", "--poisson"): [
+        "--preset",
+        "tennis",
+        "--youngs-modulus",
+        "6e6",
+        "--thickness",
+        "0.003",
+    ],
+    ("liftoff", "--atmosphere"): ["--preset", "tennis"],
 }
 #: Options the base line already gives (a bad value replaces the base's).
 PATH_OPTIONS = ("--out", "--plot", "--mesh-file")

@@ -139,6 +139,7 @@ def solve(
         t_end=t_end_dimensionless(case, t_end),
         route="auto" if route is None else route,
         geometry=spec.geometry,
+        stiffness=case.stiffness if case.stiff else None,
     )
     extra: dict[str, Any] = {
         "dofs": info["dofs"],

@@ -92,6 +92,13 @@ def converge(
     case = Case.preset("basketball") if case is None else case
     if not isinstance(case, Case):
         raise ParameterError("case", "a twoball.Case", type(case).__name__)
+    if case.stiff:  # the studies measure against the membrane's l (l + 1) and eq. (3.16)
+        raise ParameterError(
+            "bending",
+            "0 with gas none for the convergence studies (the stiffened ball: "
+            "tests/test_fem_shell.py, docs 'Stiffer balls')",
+            case.bending if case.bending else case.gas,
+        )
     if study not in STUDIES:
         raise ParameterError("study", "one of " + ", ".join(STUDIES), study)
     if study == "modes":  # the Legendre series: no mesh

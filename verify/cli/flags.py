@@ -25,6 +25,12 @@ FLAGS: dict[str, str] = {
     "damping": "--damping",
     "modes": "--modes",
     "g": "--g",
+    "bending": "--bending",
+    "youngs_modulus": "--youngs-modulus",
+    "thickness": "--thickness",
+    "poisson": "--poisson",
+    "gas": "--gas",
+    "atmosphere": "--atmosphere",
     # model
     "sigma": "--sigma",
     "recontact": "--recontact",

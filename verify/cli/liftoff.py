@@ -28,6 +28,19 @@ from twoball.verify.cli.mesh_options import (
 __all__ = ["VALID_RANGES", "register", "run"]
 
 
+def _stiffness_rows(case) -> list[tuple[str, str]]:
+    if not case.stiff:
+        return []
+    stiffness = case.stiffness
+    return [
+        ("bending B [N m]", f"{case.bending:.4g}"),
+        ("beta = B/(T R^2)", f"{stiffness.beta:.4g}"),
+        ("gas", case.gas),
+        ("P (excess) [Pa]", f"{case.pressure:g}"),
+        ("omega_0^2 (gas, units c^2)", f"{stiffness.gas:.4g}"),
+    ]
+
+
 def liftoff_rows(report: LiftoffReport) -> list[tuple[str, str]]:
     """The human-readable rows of a lift-off report (SI)."""
     case = report.case
@@ -39,9 +52,11 @@ def liftoff_rows(report: LiftoffReport) -> list[tuple[str, str]]:
         ("phi_a from", str(case.phi_a_source)),
         ("D", f"{case.damping:g}"),
         ("N", f"{case.modes}"),
+        *_stiffness_rows(case),
         ("gamma = g/(R c^2)", f"{case.gamma:.4e}"),
         ("lifted", "yes" if report.result.lifted else "no"),
         ("t_l [ms]", number(report.t_liftoff_s, 1e3)),
+        ("floor time [ms]", number(case.floor_time, 1e3)),  # estimate pi / (2 c)
         ("v_l [m/s]", number(report.v_liftoff_m_s)),
         ("v_l / |v0|", number(report.ratio)),
         ("rejected candidates", str(len(report.result.rejected))),

@@ -159,7 +159,9 @@ def legendre_backend(
     case: Case, mesh: SphereMesh, sigma: str, recontact: str, t_end: float
 ) -> Backend:
     """The closed form of eq. (3.16) with its Legendre modes at the nodes of ``mesh``."""
-    series = legendre_series(case.phi_a, case.damping, SpectralFilter(sigma, case.modes))
+    series = legendre_series(
+        case.phi_a, case.damping, SpectralFilter(sigma, case.modes), stiffness=case.stiffness
+    )
     shapes = legendre_shapes(node_polar_angles(mesh), case.modes)
     report = report_liftoff(
         case,
@@ -225,6 +227,7 @@ def fem_nodal_series(
         route=route,
         fields=True,
         t_end=DEFAULT_T_END if t_end is None else t_end,
+        stiffness=case.stiffness,
     )
     basis = model.space.basis
     kind = "icosphere" if mesh == "sphere" else "ring sphere"

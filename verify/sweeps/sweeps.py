@@ -30,6 +30,7 @@ SWEEP_PARAMETERS: dict[str, str] = {
     "radius": "radius",
     "modes": "modes",
     "mass-ratio": "mass_ratio",  # not a Case field: the points become ContactCase
+    "bending": "bending",
 }
 #: Axis labels (SI) of the swept parameters.
 PARAMETER_LABELS: dict[str, str] = {
@@ -39,6 +40,7 @@ PARAMETER_LABELS: dict[str, str] = {
     "radius": "radius R [m]",
     "modes": "modes N",
     "mass-ratio": "mass ratio mu = m1/m2",
+    "bending": "flexural rigidity B [N m]",
 }
 
 

@@ -1,0 +1,219 @@
+"""Stiffer balls: bending stiffness and the enclosed gas, in closed form.
+
+The paper's membrane (eq. (3.1), ``rho u_tt = T Delta_s u``) is extended by two
+terms, both linear in the radial displacement u (§3 names both as the physics a
+tennis ball needs):
+
+Bending
+    ``rho u_tt = T Delta_s u - (B / R^2) Delta_s (Delta_s + 2) u`` with the flexural
+    rigidity ``B = E h^3 / (12 (1 - nu^2))`` [N m] and Delta_s the Laplace-Beltrami
+    operator of the sphere of radius R.  On P_n (``Delta_s P_n = -n (n+1) P_n /
+    R^2``) the bending term gives ``B n (n+1) (n (n+1) - 2) / R^4``: the factor
+    ``(n - 1) n (n + 1) (n + 2)`` of the linearised bending energy of a closed
+    spherical shell (Helfrich 1973, Z. Naturforsch. 28c 693; Milner & Safran 1987,
+    Phys. Rev. A 36 4371), which leaves the rigid translations n = 1 free of
+    bending energy.  In units ``c^2 = T / (rho R^2)``::
+
+        omega_n^2 = n (n + 1) (1 + beta (n (n + 1) - 2)),   beta = B / (T R^2).
+
+Gas
+    An ideal gas of absolute pressure ``P_abs = P + P_atm`` filling ``V = 4 pi R^3 /
+    3`` changes its pressure by ``-kappa P_abs dV / V`` (kappa = 1 isothermal, 1.4
+    adiabatic), and ``dV = R^2 int u dOmega`` sees only the mean of u: only n = 0
+    is stiffened.  For ``u = a_0`` the force per area is ``-3 kappa P_abs a_0 / R``,
+    so ``rho omega_0^2 = 3 kappa P_abs / R`` and, dimensionless,
+    ``omega_0^2 = 3 kappa P_abs R / T``; with the paper's ``T = P R / 2`` (§4(b))
+    this is ``6 kappa (P + P_atm) / P`` -- the breathing mode then oscillates
+    instead of keeping its initial mean displacement a_0 (eq. (3.13)) for ever.
+
+Everything here is dimensionless except :func:`stiffness_from_si`.  The
+classical thin-shell theory of Kraus / Baker (refs [22, 23]) couples the
+radial motion to tangential displacements and to the extensional stiffness
+``E h``; it has two branches and no radial-only equation, so the radial model
+above (the one the issue proposes, with the shell's bending-energy factor) is
+kept: it reduces exactly to the paper's membrane for beta = 0 and no gas.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, replace
+
+import numpy as np
+
+from .errors import NumericalError, ParameterError
+from .series import ModalSeries
+
+GAS_MODELS: dict[str, float] = {"none": 0.0, "isothermal": 1.0, "adiabatic": 1.4}
+"""Polytropic exponent kappa of the enclosed gas (0: no gas term)."""
+
+ATMOSPHERE = 101325.0  # Pa, standard atmosphere (ISO 2533)
+
+
+@dataclass(frozen=True)
+class Stiffness:
+    """Dimensionless bending ratio and gas stiffness of a stiffened ball.
+
+    Parameters
+    ----------
+    beta : float
+        ``B / (T R^2)`` >= 0.
+    gas : float
+        ``omega_0^2 = 3 kappa P_abs R / T`` >= 0 (0: no gas).
+    """
+
+    beta: float = 0.0
+    gas: float = 0.0
+
+    def __post_init__(self) -> None:
+        for name in ("beta", "gas"):
+            value = getattr(self, name)
+            if not (isinstance(value, (int, float)) and math.isfinite(value) and value >= 0):
+                raise ParameterError(name, "a finite number >= 0", value)
+
+    @property
+    def active(self) -> bool:
+        """True when anything departs from the paper's membrane."""
+        return self.beta > 0.0 or self.gas > 0.0
+
+    def omega_squared(self, membrane: np.ndarray) -> np.ndarray:
+        """``lambda (1 + beta (lambda - 2))`` for membrane eigenvalues lambda (n >= 1)."""
+        lam = np.asarray(membrane, dtype=float)
+        return lam * (1.0 + self.beta * (lam - 2.0))
+
+    def legendre_omega(self, n: np.ndarray) -> np.ndarray:
+        """Angular frequencies of the Legendre modes n (omega_0^2 = gas), dimensionless."""
+        n = np.asarray(n, dtype=float)
+        squared = self.omega_squared(n * (n + 1.0))
+        squared = np.where(n == 0, self.gas, squared)
+        return np.sqrt(squared)
+
+    def membrane_value(self, omega_squared: np.ndarray) -> np.ndarray:
+        """Inverse of :meth:`omega_squared` on lambda >= 2 (the root >= 0 of a quadratic)."""
+        w2 = np.asarray(omega_squared, dtype=float)
+        if self.beta == 0.0:
+            return w2.copy()
+        b = 1.0 - 2.0 * self.beta
+        return 2.0 * w2 / (b + np.sqrt(b * b + 4.0 * self.beta * w2))
+
+
+def stiffness_from_si(
+    *,
+    radius: float,
+    pressure: float | None,
+    bending: float = 0.0,
+    gas: str = "none",
+    atmosphere: float = ATMOSPHERE,
+) -> Stiffness:
+    """The dimensionless :class:`Stiffness` of a ball in SI.
+
+    Parameters
+    ----------
+    radius : float
+        R [m].
+    pressure : float or None
+        Excess (gauge) pressure P [Pa]: tension ``T = P R / 2`` (§4(b)); needed
+        unless bending is 0 and gas is "none".
+    bending : float
+        Flexural rigidity B [N m] >= 0.
+    gas : {"none", "isothermal", "adiabatic"}
+        Compression law of the enclosed gas (kappa 0, 1, 1.4).
+    atmosphere : float
+        Ambient pressure [Pa]; the gas is at ``P + atmosphere``.
+
+    Returns
+    -------
+    Stiffness
+        ``beta = 2 B / (P R^3)``, ``gas = 6 kappa (P + P_atm) / P``.
+    """
+    if gas not in GAS_MODELS:
+        raise ParameterError("gas", "one of " + ", ".join(GAS_MODELS), gas)
+    if not (math.isfinite(bending) and bending >= 0):
+        raise ParameterError("bending", "a finite number >= 0 [N m]", bending)
+    if bending == 0.0 and gas == "none":
+        return Stiffness()
+    if pressure is None:
+        raise ParameterError(
+            "pressure",
+            "given with bending or gas: it sets the tension T = P R / 2 (command line: "
+            "--pressure with --mass, or a preset that has one: tennis, volleyball)",
+            None,
+        )
+    if not (math.isfinite(pressure) and pressure > 0):
+        raise ParameterError("pressure", "a finite number > 0 [Pa]", pressure)
+    if not (math.isfinite(atmosphere) and atmosphere >= 0):
+        raise ParameterError("atmosphere", "a finite number >= 0 [Pa]", atmosphere)
+    tension = pressure * radius / 2.0
+    beta = bending / (tension * radius**2)
+    kappa = GAS_MODELS[gas]
+    omega0_sq = 3.0 * kappa * (pressure + atmosphere) * radius / tension
+    return Stiffness(beta=beta, gas=omega0_sq)
+
+
+CONSTANT_MODE = 1e-6  # membrane eigenvalue below which a mode is the constant (n = 0) one
+
+
+def stiffen(series: ModalSeries, stiffness: Stiffness, surface_ratio: float = 1.0) -> ModalSeries:
+    """A membrane modal series with its frequencies mapped to the stiffened ball's.
+
+    Every membrane eigenvalue ``lambda = omega^2`` becomes ``lambda (1 + beta
+    (lambda - 2))`` and the constant mode's (``lambda < 1e-6``, exactly one)
+    becomes ``gas * surface_ratio``; shapes, coefficients and pole values are
+    kept and the filter keeps weighing each mode by its membrane frequency.
+    Exact for the Legendre modes, and for finite elements whose bending term is
+    the mixed form ``K M^-1 K`` on the membrane's own space and whose gas term
+    is ``(gas / 4 pi) m m^T`` with ``m = M 1`` (:mod:`twoball.fem_membrane.shell`):
+    the membrane eigenvectors diagonalise both, and ``surface_ratio`` is the
+    discrete area ``1^T M 1`` over 4 pi.  Dimensionless.
+    """
+    if not stiffness.active:
+        return series
+    membrane = series.omega if series.filter_omega is None else series.filter_omega
+    squared = membrane**2
+    constant = np.flatnonzero(squared < CONSTANT_MODE)
+    if constant.size > 1:
+        raise NumericalError(f"stiffen: {constant.size} constant modes (one expected)")
+    mapped = np.clip(stiffness.omega_squared(squared), 0.0, None)
+    if stiffness.beta == 0.0:
+        omega = series.omega.copy()
+    else:
+        omega = np.sqrt(mapped)
+    if constant.size and stiffness.gas > 0.0:
+        omega[constant] = math.sqrt(stiffness.gas * surface_ratio)
+    return replace(series, omega=omega, filter_omega=membrane)
+
+
+def flexural_rigidity(youngs_modulus: float, thickness: float, poisson: float = 0.5) -> float:
+    """``B = E h^3 / (12 (1 - nu^2))`` [N m] from E [Pa], h [m] and nu in [0, 1/2]."""
+    from .errors import bounded
+
+    youngs_modulus = bounded("youngs_modulus", youngs_modulus, 0.0, 1e15, "Pa", low_open=True)
+    thickness = bounded("thickness", thickness, 0.0, 1.0, "m", low_open=True)
+    poisson = bounded("poisson", poisson, 0.0, 0.5)
+    return youngs_modulus * thickness**3 / (12.0 * (1.0 - poisson**2))
+
+
+def floor_contact_time(wave_speed: float) -> float:
+    """Half the floor contact time of a pressurised ball [s]: ``pi / (2 c)``.
+
+    A ball of excess pressure P pressed flat on a floor by delta carries the
+    force ``P * pi * 2 R delta`` (pressure times the contact area ``pi (2 R
+    delta)``), a linear spring ``k = 2 pi R P`` (Cross 1999, Am. J. Phys. 67 222,
+    paper ref. [14]; Hubbard & Stronge 2001, ref. [25]).  The half period
+    ``(pi / 2) sqrt(m / k)`` from maximum compression to leaving the floor, with
+    ``m = 4 pi R^2 rho`` and ``T = P R / 2 = rho c^2 R^2``, is exactly
+    ``pi / (2 c)``: a quarter of the dimensionless time pi.  Bending stiffness
+    and gas compression only stiffen the ball, so this is an upper bound then.
+    """
+    return math.pi / (2.0 * wave_speed)
+
+
+__all__ = [
+    "ATMOSPHERE",
+    "GAS_MODELS",
+    "Stiffness",
+    "flexural_rigidity",
+    "floor_contact_time",
+    "stiffen",
+    "stiffness_from_si",
+]
