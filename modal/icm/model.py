@@ -66,6 +66,22 @@ class ICMResult:
     v1_ratio: float
     v2_ratio: float
 
+    #: JSON key of each field: its name with the SI unit appended.
+    UNITS = {
+        "dx": "m",
+        "drop_height": "m",
+        "g": "m_s2",
+        **dict.fromkeys(("v0", "u0", "u1", "u2", "v1", "v2"), "m_s"),
+        **dict.fromkeys(("t0", "dt", "t1"), "s"),
+    }
+
+    def as_dict(self) -> dict[str, float]:
+        """JSON-ready, SI, the unit in every key (``v0_m_s``, ``dt_s``; ratios bare)."""
+        return {
+            (f"{name}_{self.UNITS[name]}" if name in self.UNITS else name): value
+            for name, value in self.__dict__.items()
+        }
+
 
 def icm(
     mu: float,

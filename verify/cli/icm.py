@@ -97,7 +97,7 @@ def run(args: argparse.Namespace) -> int:
     if args.json:
         arguments = {"mu": args.mu, "e2": args.e2, "e12": args.e12}
         arguments |= {"dx": args.dx, "drop_height": args.drop_height}
-        print_json(attach(asdict(result), block(None, "twoball.modal.icm.icm", arguments)))
+        print_json(attach(result.as_dict(), block(None, "twoball.modal.icm.icm", arguments)))
         return 0
     table = Table(title="Independent collision model (§2)")
     table.add_column("quantity")
