@@ -156,7 +156,7 @@ class RadialProjectionMapping(SurfaceMapping):
         return y, edges
 
     def F(self, X: np.ndarray, tind: np.ndarray | None = None) -> np.ndarray:
-        """Points on the unit sphere x(xi) = y / |y|, shape (3, T, Q)."""
+        """Points on the unit sphere ``x(xi) = y / |y|``, shape (3, T, Q)."""
         y, _ = self._flat(self._check_points(X), tind)
         return y / np.linalg.norm(y, axis=0)[None]
 

@@ -133,7 +133,7 @@ def _switch_radius(base: Case) -> float:
         case = base.derive(radius=math.exp(log_r))
         return quadrature_points(case.modes, case.phi_a) - MAX_QUADRATURE_POINTS - 0.5
 
-    return math.exp(brentq(points, math.log(1e-7), math.log(0.3), xtol=1e-6))
+    return math.exp(brentq(points, math.log(1e-6), math.log(0.3), xtol=1e-6))
 
 
 def _threshold_text_paragraphs(results, base: Case, failures: int) -> list[str]:
