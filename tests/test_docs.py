@@ -134,12 +134,15 @@ def parser_options() -> dict[str, set[str]]:
 
     parser = full_parser()
     (sub,) = (a for a in parser._actions if isinstance(a, argparse._SubParsersAction))
+    global_options = {o for a in parser._actions for o in a.option_strings}
     options = {}
     for name, command in sub.choices.items():
         names: set[str] = set()
         for action in command._actions:
             if isinstance(action, argparse._HelpAction) or action.help == argparse.SUPPRESS:
                 continue  # -h, and options hidden from --help (e.g. --g, --fast)
+            if action.default == argparse.SUPPRESS and set(action.option_strings) <= global_options:
+                continue  # a global option (--quiet) also accepted after the subcommand
             names.update(action.option_strings or [action.metavar or action.dest])
         options[name] = names
     return options

@@ -257,7 +257,7 @@ def test_full_reproduction(tmp_path):
     data = json.loads((out / "reproduction.json").read_text())
     assert list(data["sections"]) == list(rep.PARTS)
     figures = [f for s in data["sections"].values() for f in s["figures"]]
-    assert len(figures) == 7 and all((out / f).is_file() for f in figures)
+    assert len(figures) == 8 and all((out / f).is_file() for f in figures)  # 7 + contact
     text = (out / "reproduction.md").read_text()
     for number in ("0.602", "0.29 m/s", "13.3 1/s", "0.091 mm", "1.02", "8.7 m/s", "180 1/s"):
         assert number in text
