@@ -129,20 +129,12 @@ def platform_info() -> dict[str, Any]:
 
 
 def case_block(case: Case | None) -> dict[str, Any] | None:
-    """The case in SI with the unit in every key (``radius_m``, ``phi_a_rad``, ...)."""
-    if case is None:
-        return None
-    return {
-        "preset": case.preset_name,
-        "radius_m": case.radius,
-        "wave_speed_1_s": case.wave_speed,
-        "v0_m_s": case.v0,
-        "phi_a_rad": case.phi_a,
-        "phi_a_source": case.phi_a_source,
-        "damping": case.damping,
-        "modes": case.modes,
-        "g_m_s2": case.g,
-    }
+    """The case in SI with the unit in every key (``radius_m``, ``phi_a_rad``, ...).
+
+    :meth:`twoball.Case.as_dict`, the one SI form of a case (bending and gas keys
+    only for a stiffened ball).
+    """
+    return None if case is None else case.as_dict()
 
 
 def _plain(value: Any) -> Any:

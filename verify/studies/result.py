@@ -81,16 +81,9 @@ class StudyResult:
 
 
 def case_settings(case: Case, sigma: str, recontact: str, t_end: float) -> dict[str, Any]:
-    """The case and model options as a JSON-ready dictionary (SI)."""
+    """The case (:meth:`twoball.Case.as_dict`) and the model options, JSON-ready (SI)."""
     return {
-        "radius_m": case.radius,
-        "wave_speed_1_s": case.wave_speed,
-        "v0_m_s": case.v0,
-        "phi_a_rad": case.phi_a,
-        "phi_a_source": case.phi_a_source,
-        "damping": case.damping,
-        "modes": case.modes,
-        "g_m_s2": case.g,
+        **case.as_dict(),
         "gamma": case.gamma,
         "sigma": sigma,
         "recontact": recontact,
