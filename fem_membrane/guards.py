@@ -20,14 +20,16 @@ Mesh (eigenvalue error of the retained modes, eq. (3.11))
     ``e_l = C (l h)^(2p)`` for elements of order p and mesh size h (the known
     rates: O(h^2) for P1, O(h^4) for P2).  C was fitted to the worst member of
     each degree-l cluster (measured: sphere P1 levels 3-4, P2 levels 2-3; ring P1
-    level 4, P2 level 3; axisymmetric P1 100/400 and P2 50/100 elements; the fits
-    agree within 40 % across sizes), see :data:`MESH_CONSTANTS`.  The guard
+    level 4, P2 level 3; axisymmetric P1 100/400 and P2 50/100 elements; sphere P3
+    and P4 levels 2-3 and axisymmetric P3/P4 25/50 elements at l = 10-20, where the
+    Galerkin term dominates the geometric one; the fits agree within 40 % across
+    sizes), see :data:`MESH_CONSTANTS`.  The guard
     evaluates it at the highest degree the filter keeps with weight >= 1/2 (l = 17
     of N = 30 for Lanczos; N for the printed and no filter) and warns above
     :data:`EIGENVALUE_ERROR` = 5 % (2.5 % in frequency).  Defaults (icosphere
     level 3, P2: 3 %; axisymmetric 400 P2: 1e-5) are quiet; icosphere level 2 P1
     (lift-off 5.76 ms instead of 9.88 ms) is warned.  Orders without a fitted
-    constant get no estimate.
+    constant (the ring sphere at P3/P4, user meshes) get no estimate.
 """
 
 from __future__ import annotations
@@ -50,6 +52,10 @@ MESH_CONSTANTS: dict[tuple[str, int], float] = {
     ("ring", 2): 2.0e-3,
     ("axisym", 1): 0.09,
     ("axisym", 2): 1.4e-3,
+    ("sphere", 3): 1.0e-5,
+    ("sphere", 4): 5.0e-8,
+    ("axisym", 3): 1.05e-5,
+    ("axisym", 4): 4.3e-8,
 }
 
 

@@ -168,6 +168,10 @@ def _cluster_error(mesh: str, order: int, degree: int, **size: int) -> float:
         ("sphere", 1, 5, {"level": 2}),
         ("sphere", 1, 10, {"level": 3}),
         ("sphere", 2, 5, {"level": 2}),
+        ("sphere", 3, 17, {"level": 2}),
+        ("sphere", 4, 14, {"level": 2}),
+        ("axisym", 3, 17, {"elements": 25}),
+        ("axisym", 4, 20, {"elements": 50}),
     ],
 )
 def test_mesh_error_estimate_within_a_factor_two(mesh, order, degree, size) -> None:
@@ -185,3 +189,12 @@ def test_coarse_mesh_warns_and_default_mesh_is_quiet(capsys) -> None:
     assert half_weight_degree(lanczos) == 17
     default = eigenvalue_error_estimate("sphere", 2, mesh_size("sphere", 3, None), 17)
     assert default < EIGENVALUE_ERROR
+
+
+def test_high_order_coarse_mesh_warns_and_fine_mesh_is_quiet(capsys) -> None:
+    """P3 on level 1 (estimated ~500 % at l = 17) warns; P4 on level 3 (~3e-5) is quiet."""
+    data, lines = run_json(capsys, "--backend", "fem", "--level", "1", "--order", "3")
+    assert_printed(data, lines)
+    assert any(w.startswith("mesh under-resolves the retained modes") for w in data["warnings"])
+    fine = eigenvalue_error_estimate("sphere", 4, mesh_size("sphere", 3, None), 17)
+    assert fine < 1e-4
