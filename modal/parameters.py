@@ -1,226 +1,45 @@
-"""Case parameters in SI units and the one place that defines the scalings.
+"""One impact of the lower ball in SI units: :class:`Case`, its presets and its phi_a rule.
 
-Inside the solvers everything is dimensionless: length unit R, time unit 1/c,
-velocity unit R c, acceleration unit R c^2, and gravity enters only as
-``gamma = g / (R c^2)`` (§3(b)).  SI lives at the edges (CLI, files, reports).
+The scalings to the dimensionless model and the SI ranges are in
+:mod:`twoball.modal.scalings`, the measured parameters of the presets in
+:mod:`twoball.modal.presets`; both are re-exported here.  SI lives at the edges
+(CLI, files, reports).
 """
 
 from __future__ import annotations
 
 import math
 from dataclasses import dataclass, replace
-from numbers import Real
 from typing import Any
 
 from .errors import ParameterError, bounded, real_number
 from .initial import PHI_A_RANGE, check_phi_a, phi_a_from_v0  # noqa: F401 -- re-exported
+from .presets import MEASURED, Measured
+from .scalings import (  # noqa: F401 -- re-exported
+    BENDING_RANGE,
+    G_RANGE,
+    MASS_RANGE,
+    MODES_MAX,
+    PRESSURE_RANGE,
+    RADIUS_RANGE,
+    STANDARD_GRAVITY,
+    V0_MAX,
+    WAVE_SPEED_RANGE,
+    Scalings,
+    check_g,
+    check_modes,
+    check_radius,
+    check_v0,
+    check_wave_speed,
+    wave_speed_from_pressure,
+)
 from .stiffness import ATMOSPHERE, GAS_MODELS, Stiffness, stiffness_from_si
-
-STANDARD_GRAVITY = 9.81  # m/s^2, the value used in the paper (§2)
-# Physically meaningful magnitudes (SI).  They also keep the dimensionless numbers
-# of the model (gamma = g / (R c^2), |v0| / (R c), t_end c) far from overflow.
-RADIUS_RANGE = (1e-6, 1e6)  # m: a micrometre bubble to a 1000 km balloon
-WAVE_SPEED_RANGE = (1e-6, 1e9)  # 1/s
-G_RANGE = (1e-6, 1e6)  # m/s^2
-V0_MAX = 1e6  # m/s
-PRESSURE_RANGE = (1e-6, 1e12)  # Pa
-MASS_RANGE = (1e-12, 1e12)  # kg
-BENDING_RANGE = (0.0, 1e6)  # N m: flexural rigidity B (a tennis ball's is ~0.02)
-MODES_MAX = 10**6  # far above what the resource guards let run
-
-
-def check_radius(radius: object) -> float:
-    """Ball radius R [m] in :data:`RADIUS_RANGE`."""
-    return bounded("radius", radius, *RADIUS_RANGE, "m")
-
-
-def check_wave_speed(wave_speed: object) -> float:
-    """Angular wave speed c [1/s] in :data:`WAVE_SPEED_RANGE`, eq. (3.8)."""
-    return bounded("wave_speed", wave_speed, *WAVE_SPEED_RANGE, "1/s")
-
-
-def check_g(g: object) -> float:
-    """Gravitational acceleration [m/s^2] in :data:`G_RANGE`."""
-    return bounded("g", g, *G_RANGE, "m/s^2")
-
-
-def check_v0(v0: object) -> float:
-    """``|v0|`` [m/s] of an impact speed: nonzero, ``|v0| <= V0_MAX`` (the sign is ignored)."""
-    valid = f"a nonzero speed with |v0| <= {V0_MAX:g} [m/s]"
-    speed = abs(real_number("v0", v0, valid))
-    if not (0.0 < speed <= V0_MAX):
-        raise ParameterError("v0", valid, v0)
-    return speed
-
-
-def check_modes(modes: object) -> int:
-    """Legendre truncation N: an integer in [1, :data:`MODES_MAX`], eq. (3.16)."""
-    valid = f"an integer in [1, {MODES_MAX}]"
-    if isinstance(modes, bool) or not isinstance(modes, Real):
-        raise ParameterError("modes", valid, modes)
-    if not (math.isfinite(modes) and int(modes) == modes and 1 <= modes <= MODES_MAX):
-        raise ParameterError("modes", valid, modes)
-    return int(modes)
-
-
-@dataclass(frozen=True)
-class Scalings:
-    """Units of the dimensionless model: length R [m], time 1/c [s] (§3(b)).
-
-    Parameters
-    ----------
-    radius : float
-        R [m].
-    wave_speed : float
-        Angular wave speed c [1/s], eq. (3.8).
-    g : float
-        Gravitational acceleration [m/s^2].
-    """
-
-    radius: float
-    wave_speed: float
-    g: float = STANDARD_GRAVITY
-
-    def __post_init__(self) -> None:
-        object.__setattr__(self, "radius", check_radius(self.radius))
-        object.__setattr__(self, "wave_speed", check_wave_speed(self.wave_speed))
-        object.__setattr__(self, "g", check_g(self.g))
-
-    @property
-    def length(self) -> float:
-        """Length unit R [m]."""
-        return self.radius
-
-    @property
-    def time(self) -> float:
-        """Time unit 1/c [s]."""
-        return 1.0 / self.wave_speed
-
-    @property
-    def velocity(self) -> float:
-        """Velocity unit R c [m/s]."""
-        return self.radius * self.wave_speed
-
-    @property
-    def acceleration(self) -> float:
-        """Acceleration unit R c^2 [m/s^2]."""
-        return self.radius * self.wave_speed**2
-
-    @property
-    def gamma(self) -> float:
-        """Dimensionless gravity ``gamma = g / (R c^2) = R g rho / T`` (§3(b))."""
-        return self.g / self.acceleration
-
-
-def wave_speed_from_pressure(pressure: float, mass: float, radius: float) -> float:
-    """Angular wave speed c [1/s] from excess pressure P [Pa], mass m [kg], radius R [m].
-
-    Tension ``T = P R / 2`` and surface density ``rho = m / (4 pi R^2)`` (§4(b)),
-    then ``c = sqrt(T / rho) / R``, eq. (3.8).  Table 2: P = 77200, m = 0.567,
-    R = 0.12 gives c = 320.4 1/s.
-    """
-    pressure = bounded("pressure", pressure, *PRESSURE_RANGE, "Pa")
-    mass = bounded("mass", mass, *MASS_RANGE, "kg")
-    radius = check_radius(radius)
-    # within the bounds above, T / rho <= 5e42: no overflow or underflow
-    tension = pressure * radius / 2.0
-    density = mass / (4.0 * math.pi * radius**2)
-    wave_speed = math.sqrt(tension / density) / radius
-    low, high = WAVE_SPEED_RANGE
-    if not (low <= wave_speed <= high):
-        raise ParameterError(
-            "pressure",
-            f"such that c = sqrt(2 pi P R / m) is in [{low:g}, {high:g}] 1/s "
-            f"(m = {mass:g} kg, R = {radius:g} m)",
-            pressure,
-        )
-    return wave_speed
 
 
 def _number(name: str, value: object, valid: str) -> float:
     return real_number(name, value, valid)
 
 
-@dataclass(frozen=True)
-class Measured:
-    """A preset: R [m], c [1/s], ``|v0|`` [m/s], phi_a [rad] (None: eq. (3.7)), D, N.
-
-    ``pressure`` [Pa] (excess) and ``mass`` [kg] document c (eq. (3.8)) and set
-    the tension ``T = P R / 2`` of the bending and gas terms; ``bending`` B [N m]
-    and ``gas`` as in :mod:`twoball.modal.stiffness`.  ``source``: where the
-    values come from (see docs/stiff_balls.rst).
-    """
-
-    radius: float
-    wave_speed: float
-    v0: float
-    phi_a: float | None
-    damping: float
-    modes: int
-    pressure: float | None = None
-    mass: float | None = None
-    bending: float = 0.0
-    gas: str = "none"
-    source: str = ""
-
-
-def _tennis() -> Measured:
-    from .stiffness import flexural_rigidity
-
-    radius, mass, pressure = 0.0335, 0.0577, 82700.0
-    return Measured(
-        radius=radius,
-        wave_speed=wave_speed_from_pressure(pressure, mass, radius),
-        v0=4.1,
-        phi_a=None,
-        damping=0.13,
-        modes=30,
-        pressure=pressure,
-        mass=mass,
-        bending=flexural_rigidity(6.0e6, 3.2e-3, 0.5),
-        gas="adiabatic",
-        source="ITF Rules of Tennis, App. I (diameter 6.54-6.86 cm, mass 56.0-59.4 g); "
-        "12 psi = 82.7 kPa excess pressure and a 3.2 mm rubber wall (Cross 1999, Sports "
-        "Eng. 2 23; Brody, Cross & Lindsey 2002); rubber E = 6 MPa, nu = 0.5 assumed; "
-        "D = 0.13 and |v0| = 4.1 m/s taken from the basketball (not measured)",
-    )
-
-
-def _volleyball() -> Measured:
-    radius, mass, pressure = 0.105, 0.270, 30600.0
-    return Measured(
-        radius=radius,
-        wave_speed=wave_speed_from_pressure(pressure, mass, radius),
-        v0=4.1,
-        phi_a=None,
-        damping=0.13,
-        modes=30,
-        pressure=pressure,
-        mass=mass,
-        gas="adiabatic",
-        source="FIVB Official Volleyball Rules 2021-2024, rule 3.1 (circumference 65-67 "
-        "cm, mass 260-280 g, pressure 0.30-0.325 kgf/cm^2 = 29.4-31.9 kPa); a membrane "
-        "like the basketball (B = 0); D = 0.13 and |v0| = 4.1 m/s from the basketball",
-    )
-
-
-#: Presets.  basketball: Table 2, Fig. 11 (R, c, ``|v0|``, phi_a measured; D fitted
-#: once).  tennis, volleyball: rule-book sizes and pressures, phi_a from eq. (3.7).
-MEASURED: dict[str, Measured] = {
-    "basketball": Measured(
-        radius=0.12,
-        wave_speed=320.0,
-        v0=4.1,
-        phi_a=2.6,
-        damping=0.13,
-        modes=30,
-        pressure=77200.0,
-        mass=0.567,
-        source="Cross et al., two-ball bounce, Table 2 and Fig. 11 (measured)",
-    ),  # fmt: skip
-    "tennis": _tennis(),
-    "volleyball": _volleyball(),
-}
 #: ``phi_a`` request meaning "derive it from ``|v0|``, R and c by eq. (3.7)".
 FROM_V0 = "eq. (3.7)"
 _SAME = 1e-12  # relative: a typed value equal to the measured one to double precision
