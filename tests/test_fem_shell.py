@@ -140,12 +140,24 @@ def test_sphere_p2_liftoff_error_falls_at_the_eigenvalue_order():
 
 
 @pytest.mark.slow
-@pytest.mark.parametrize("route", ["krylov", "full"])  # CPU: ~6 s and ~36 s
-def test_sphere_p2_liftoff_agrees_with_the_closed_form(route):
-    # N = 12: with N = 30 the bending-stiffened top modes need level >= 6 for 1e-4
+def test_sphere_p2_liftoff_agrees_with_the_closed_form_krylov():
+    # the tennis preset as it is (N = 30): the filtered top modes carry a bending
+    # acceleration beta n^4 times the membrane's, so 1e-4 needs level 6 (163 842 DOFs;
+    # measured 32 s wall, 2.4 GB): t_l -4.8e-5, v_l +1.5e-5 (level 5: -7.4e-4, +2.3e-4)
+    ref = twoball.liftoff(TENNIS)
+    fem = twoball.liftoff(TENNIS, backend="fem", mesh="sphere", level=6, order=2, route="krylov")
+    assert fem.t_liftoff_s == pytest.approx(ref.t_liftoff_s, rel=1e-4)
+    assert fem.v_liftoff_m_s == pytest.approx(ref.v_liftoff_m_s, rel=1e-4)
+    assert abs(fem.t_liftoff_s / ref.t_liftoff_s - 1.0) > 1e-6  # a discretisation error remains
+
+
+@pytest.mark.slow
+def test_sphere_p2_liftoff_agrees_with_the_closed_form_full():
+    # the full route (every eigenpair below the cutoff) at N = 12, where level 5 suffices
+    # (its 1000 pairs at level 6 would take minutes); measured 36 s CPU
     case = Case.preset("tennis", modes=12)
     ref = twoball.liftoff(case)
-    fem = twoball.liftoff(case, backend="fem", mesh="sphere", level=5, order=2, route=route)
+    fem = twoball.liftoff(case, backend="fem", mesh="sphere", level=5, order=2, route="full")
     assert fem.t_liftoff_s == pytest.approx(ref.t_liftoff_s, rel=1e-4)
     assert fem.v_liftoff_m_s == pytest.approx(ref.v_liftoff_m_s, rel=1e-4)
 
