@@ -18,16 +18,16 @@ import imageio.v3 as iio
 import numpy as np
 import pytest
 from test_mesh_input import CENTER, OFF_NODE_POLES, RADIUS, on_ball, write
-from twoball.budget import BudgetError, frames_estimate, limits
 from twoball.fem_membrane.export import read_series
 from twoball.fem_membrane.mesh import icosphere
-from twoball.field_model import check_frame_budget, field_mesh
 from twoball.modal.errors import ParameterError
 from twoball.modal.filters import SpectralFilter
 from twoball.modal.legendre import displacement, legendre_series
 from twoball.verify.cli.main import main
 
 import twoball
+from twoball.budget import BudgetError, frames_estimate, limits
+from twoball.field_model import check_frame_budget, field_mesh
 
 CASE = twoball.Case.preset("basketball")
 MM = 1000.0  # the .msh file is in millimetres
@@ -49,9 +49,7 @@ def files(tmp_path_factory) -> dict[str, Path]:
 @pytest.fixture(scope="module")
 def reference(files):
     """The finite-element lift-off on each file (twoball.liftoff, full eigen route)."""
-    return {
-        name: twoball.liftoff(CASE, backend="fem", mesh=files[name]) for name in ("vtu", "msh")
-    }
+    return {name: twoball.liftoff(CASE, backend="fem", mesh=files[name]) for name in ("vtu", "msh")}
 
 
 def pole_at_liftoff(series, report) -> float:
