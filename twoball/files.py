@@ -409,7 +409,6 @@ def plot(
         instants = WATERFALL_INSTANTS if instants is None else instants
         if isinstance(instants, bool) or not isinstance(instants, int) or instants < 2:
             raise ParameterError("instants", "an integer >= 2", instants)
-        field = field_mesh(mesh, level, order, pole, geometry, load=False)
         chosen = tuple(dict.fromkeys(backends))
         if not chosen or any(b not in FIELD_BACKENDS for b in chosen):
             raise ParameterError("backends", "a list of fem, legendre", list(backends))
