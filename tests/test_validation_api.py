@@ -247,6 +247,17 @@ EXTRA: list[tuple[str, Callable[[Path], Any]]] = [
     ("levels", lambda tmp: twoball.plot("eigen", tmp / "p.png", levels=[-1])),
     ("orders", lambda tmp: twoball.plot("eigen", tmp / "p.png", orders=[7])),
     ("frames", lambda tmp: twoball.export(tmp / "x.vtu", CASE, level=1, frames=5)),
+    # mesh files of the field commands
+    ("pole", lambda tmp: twoball.export(tmp / "x.vtu", CASE, level=1, pole=(0, 0, 1))),
+    ("pole", lambda tmp: twoball.render(tmp / "x.png", CASE, pole="0,0,1")),
+    ("pole", lambda tmp: twoball.plot("pole", tmp / "p.png", CASE, pole=(0, 0, 1))),
+    ("pole", lambda tmp: twoball.plot("eigen", tmp / "p.png", pole=(0, 0, 1))),
+    ("geometry", lambda tmp: twoball.export(tmp / "x.vtu", CASE, mesh="ring", geometry="exact")),
+    ("geometry", lambda tmp: twoball.render(tmp / "x.png", CASE, geometry="bogus")),
+    ("geometry", lambda tmp: twoball.plot("eigen", tmp / "p.png", geometry="exact")),
+    ("mesh", lambda tmp: twoball.plot("eigen", tmp / "p.png", mesh=tmp / "ball.msh")),
+    ("level", lambda tmp: twoball.render(tmp / "x.png", CASE, mesh=tmp / "ball.msh", level=1)),
+    ("order", lambda tmp: twoball.export(tmp / "x.vtu", CASE, level=1, order=3)),
     ("times", lambda tmp: twoball.export(tmp / "x.pvd", CASE, level=1, times=[math.nan])),
     ("times", lambda tmp: twoball.export(tmp / "x.pvd", CASE, level=1, times=[1.0])),
     # paths: empty, over-long, unwritable, unreadable
@@ -262,8 +273,14 @@ EXTRA: list[tuple[str, Callable[[Path], Any]]] = [
         )
     ],
     *[
-        ("mesh", lambda tmp, p=path: twoball.fem.eigen(mesh=_under(tmp, p)))
+        ("mesh", call)
         for path in ("a" * 300 + ".msh", table.LONG_PATH + ".msh", "/proc/x/y.msh")
+        for call in (
+            lambda tmp, p=path: twoball.fem.eigen(mesh=_under(tmp, p)),
+            lambda tmp, p=path: twoball.export(tmp / "x.vtu", CASE, mesh=_under(tmp, p)),
+            lambda tmp, p=path: twoball.render(tmp / "x.png", CASE, mesh=_under(tmp, p)),
+            lambda tmp, p=path: twoball.plot("pole", tmp / "p.png", CASE, mesh=_under(tmp, p)),
+        )
     ],
 ]
 

@@ -250,8 +250,12 @@ def path_cases(parser: argparse.ArgumentParser) -> list[tuple[str, list[str]]]:
                 "{tmp}/a-file/z" + end,  # a folder that is a file
             ]
             context = ["--backend", "fem"] if flag == "--mesh-file" and command == "liftoff" else []
+            base = list(BASE[command])
+            if flag == "--mesh-file" and "--level" in base:  # a file has its own size
+                i = base.index("--level")
+                del base[i : i + 2]
             for path in paths:
-                cases.append((flag, _merge(_merge(list(BASE[command]), context), [flag, path])))
+                cases.append((flag, _merge(_merge(base, context), [flag, path])))
     return cases
 
 
@@ -340,6 +344,29 @@ NOT_APPLICABLE: list[tuple[str, list[str]]] = [
     ("--times", ["export", "--level", "1", "--times", "", "--out", "{tmp}/x.pvd"]),
     ("--format", ["export", "--level", "1", "--format", "bogus", "--out", "{tmp}/x.vtu"]),
     ("--mesh", ["export", "--mesh", "axisym", "--out", "{tmp}/x.vtu"]),
+    # mesh files of the field commands: --pole needs one, --level does not apply to one,
+    # the exact geometry not to the ring sphere, the eigen plot takes generated meshes only
+    *[
+        (flag, [*command, *extra])
+        for command in (
+            ["export", "--out", "{tmp}/x.vtu"],
+            ["render", "--out", "{tmp}/x.png"],
+            ["plot", "pole", "--out", "{tmp}/p.png"],
+        )
+        for flag, extra in (
+            ("--pole", ["--pole", "0,0,1"]),
+            ("--pole", ["--mesh", "sphere", "--pole", "0,0,1"]),
+            ("--level", ["--mesh-file", "{tmp}/ball.msh", "--level", "1"]),
+            ("--geometry", ["--mesh", "ring", "--geometry", "exact"]),
+            ("--geometry", ["--geometry", "bogus"]),
+            ("--mesh-file", ["--mesh-file", "{tmp}/a-file"]),
+        )
+    ],
+    ("--order", ["export", "--level", "1", "--order", "3", "--out", "{tmp}/x.vtu"]),
+    ("--order", ["render", "--level", "1", "--order", "4", "--out", "{tmp}/x.png"]),
+    ("--mesh-file", ["plot", "eigen", "--mesh-file", "{tmp}/ball.msh", "--out", "{tmp}/p.png"]),
+    ("--pole", ["plot", "eigen", "--pole", "0,0,1", "--out", "{tmp}/p.png"]),
+    ("--geometry", ["plot", "eigen", "--geometry", "exact", "--out", "{tmp}/p.png"]),
     ("--initial", ["export", "--initial", "bogus", "--out", "{tmp}/x.vtu"]),
     ("--backend", ["export", "--backend", "bogus", "--out", "{tmp}/x.vtu"]),
     ("--fps", ["render", "--level", "1", "--fps", "10", "--out", "{tmp}/x.png"]),

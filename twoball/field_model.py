@@ -1,17 +1,22 @@
 """The solved ball behind ``export``, ``render`` and ``plot``, and the checks they share.
 
-:func:`ball_model_of` solves a case with one or both backends on a generated
-sphere mesh; the ``check_*`` functions refuse, before any work starts, what
-those files cannot hold (initial method without finite elements, frame rates,
-frame counts over the budget, eigenvalue plots of meshes that do not fit).
+:func:`field_mesh` resolves and checks the sphere mesh of the fields: a
+generated icosphere or ring sphere, or the user's mesh file, read and checked
+as :func:`twoball.liftoff` reads it.  :func:`ball_model_of` solves a case with
+one or both backends on it; the ``check_*`` functions refuse, before any work
+starts, what those files cannot hold (initial method without finite elements,
+frame rates, frame counts over the budget, eigenvalue plots of meshes that do
+not fit).
 """
 
 from __future__ import annotations
 
+import os
 from collections.abc import Sequence
+from dataclasses import dataclass, replace
 from typing import Any
 
-from twoball.mesh_options import SPHERE_KINDS, MeshOptions
+from twoball.mesh_options import FILE, SPHERE_KINDS, MeshOptions
 from twoball.modal.errors import ParameterError
 from twoball.modal.parameters import Case
 from twoball.progress import Step, silent
@@ -27,15 +32,99 @@ def check_backend(backend: str) -> str:
     return backend
 
 
-def field_warnings(model: Any, backend: str, order: int | None, level: int | None) -> list[str]:
-    """Accuracy warnings of ``backend``'s fields: its lift-off's, and the FE mesh resolution."""
+@dataclass(frozen=True)
+class FieldMesh:
+    """The sphere mesh of the fields: the checked options and, for a file, the mesh read.
+
+    Attributes
+    ----------
+    spec : MeshOptions
+        Kind ``sphere``, ``ring`` or ``file``, level, order, pole, geometry.
+    loaded : MeshInput or None
+        The user's mesh, checked, on the unit sphere with its pole on +z
+        (:func:`twoball.fem_membrane.mesh_input.load_sphere_mesh`); None for a kind.
+    """
+
+    spec: MeshOptions
+    loaded: Any = None
+
+    @property
+    def order(self) -> int:
+        """Element order of the fields: the option's, or the file's own (1 or 2)."""
+        return int(self.spec.order if self.loaded is None else self.loaded.mesh.order)
+
+    @property
+    def mesh(self) -> Any:
+        """The kind name, or the user's unit-sphere :class:`SphereMesh` (pole on +z)."""
+        return self.spec.kind if self.loaded is None else self.loaded.mesh
+
+    @property
+    def source(self) -> dict[str, Any] | None:
+        """The user's mesh for the file metadata and the provenance (None for a kind).
+
+        ``path`` (absolute; None for a mesh object), the fitted ``radius`` and
+        ``center`` in the file's length unit, the unit ``pole`` direction in the
+        file's frame, ``geometry``, and the figures of :meth:`MeshInput.as_dict`.
+        """
+        if self.loaded is None:
+            return None
+        given = self.spec.source
+        path = os.path.abspath(given) if isinstance(given, (str, os.PathLike)) else None
+        head = {"path": path, "length_unit": "the file's", "geometry": self.spec.geometry}
+        return head | self.loaded.as_dict()
+
+
+def field_mesh(
+    mesh: Any,
+    level: int | None,
+    order: int | None,
+    pole: Any = None,
+    geometry: str | None = None,
+    *,
+    cells: bool = False,
+    load: bool = True,
+) -> FieldMesh:
+    """Check the mesh options of a field command and read the user's mesh file.
+
+    Parameters
+    ----------
+    mesh : {"sphere", "ring"}, path, meshio.Mesh or scikit-fem mesh, optional
+        A sphere kind (default ``sphere``), or the user's sphere (any radius,
+        centre and length unit, 3- or 6-node triangles).
+    level, order, pole, geometry
+        As in :meth:`MeshOptions.resolve` (``level`` refused with a file,
+        ``pole`` without one, ``geometry="exact"`` on the ring sphere).
+    cells : bool
+        The fields become VTK cells (files, pictures): orders 1 and 2 only.
+    load : bool
+        Read the file now; False checks the options only (the file is then
+        read by :func:`ball_model_of`, or by calling this again).
+
+    Raises
+    ------
+    ParameterError
+        Naming the option, or ``mesh`` for a file that is not one closed sphere.
+    """
+    spec = MeshOptions.resolve(
+        mesh, level=level, order=order, pole=pole, geometry=geometry, kinds=SPHERE_KINDS
+    )
+    if cells and spec.order is not None and spec.order > 2:  # VTK cells stop at quadratic
+        raise ParameterError("order", "1 or 2 for field files and pictures", spec.order)
+    return FieldMesh(spec, spec.load() if load and spec.kind == FILE else None)
+
+
+def field_warnings(model: Any, backend: str, field: FieldMesh) -> list[str]:
+    """Accuracy warnings of ``backend``'s fields: its lift-off's, and the FE mesh resolution.
+
+    As in :func:`twoball.liftoff`, the resolution of a user's mesh is not
+    estimated (it has no level): only its lift-off's warnings are given.
+    """
     warnings = list(model.backend(backend).report.warnings)
-    if backend == "fem":
+    if backend == "fem" and field.loaded is None:
         from twoball.fem_membrane.guards import mesh_warnings
 
-        kind = "ring" if model.mesh.ring is not None else "sphere"
-        order = MeshOptions.resolve(None, level=level, order=order).order
-        warnings += mesh_warnings(kind, level, None, order, model.backend(backend).series.filter)
+        spec, series = field.spec, model.backend(backend).series
+        warnings += mesh_warnings(spec.kind, spec.level, None, spec.order, series.filter)
     return warnings
 
 
@@ -86,10 +175,12 @@ def eigen_sizes(
     return list(levels), list(orders)
 
 
-def check_frame_budget(
-    case: Case, count: int, name: str, level: int | None, order: int | None
-) -> None:
-    """Refuse ``count`` frames on the mesh when their memory or time cannot fit (budget)."""
+def check_frame_budget(case: Case, count: int, name: str, field: FieldMesh) -> None:
+    """Refuse ``count`` frames on the mesh when their memory or time cannot fit (budget).
+
+    The nodes are those of the generated sphere of the level and order, or the
+    user's mesh's own (its triangles at its order).
+    """
     from twoball.budget import check_frames
     from twoball.verify.output.fields import MAX_FRAMES
 
@@ -98,46 +189,46 @@ def check_frame_budget(
             low = 2 if name == "instants" else 1
             raise ParameterError(name, f"an integer in [{low}, {MAX_FRAMES}]", count)
         raise ParameterError(name, f"at most {MAX_FRAMES} {name}", f"{count} {name}")
-    spec = MeshOptions.resolve(None, level=level, order=order)
-    check_frames(f"{name} ({count} frames)", count, "sphere", spec.level, spec.order, case.modes)
+    spec = field.spec
+    mesh = spec.kind if field.loaded is None else field.loaded.mesh
+    check_frames(f"{name} ({count} frames)", count, mesh, spec.level, field.order, case.modes)
 
 
 def ball_model_of(
     case: Case,
     backends: Sequence[str],
+    field: FieldMesh,
     *,
-    mesh: str | None,
-    level: int | None,
-    order: int | None,
-    initial: str,
+    initial: str | None,
     sigma: str,
     recontact: str,
     t_end: float | None,
     progress: Step | None = None,
-    cells: bool = False,
     route: str = "auto",
 ) -> Any:
-    """Solve ``case`` with ``backends`` on the sphere mesh of the options (see ``BallModel``)."""
+    """Solve ``case`` with ``backends`` on the sphere mesh ``field`` (see ``BallModel``).
+
+    On the user's mesh the model's ``source`` holds the file's path, radius,
+    centre and pole (:attr:`FieldMesh.source`).
+    """
     from twoball.fem_membrane.krylov import ROUTES
     from twoball.verify.output.fields import ball_model
 
     if route not in ROUTES:
         raise ParameterError("route", "one of " + ", ".join(ROUTES), route)
-    spec = MeshOptions.resolve(mesh, level=level, order=order, kinds=SPHERE_KINDS, files=False)
-    if cells and spec.order > 2:  # VTK and pyvista cells stop at quadratic triangles
-        raise ParameterError("order", "1 or 2 for field files and pictures", spec.order)
     initial = check_initial(initial, backends)
-    if initial not in INITIAL_METHODS:
-        raise ParameterError("initial", "one of " + ", ".join(INITIAL_METHODS), initial)
     from twoball.modal.report import t_end_dimensionless
 
     t_end_dimensionless(case, t_end)  # the window is checked before any progress line
-    (progress or silent)(f"solving {' and '.join(backends)} on {spec.label}")
-    return ball_model(
+    if field.spec.kind == FILE and field.loaded is None:
+        field = replace(field, loaded=field.spec.load())
+    (progress or silent)(f"solving {' and '.join(backends)} on {field.spec.label}")
+    model = ball_model(
         case,
-        spec.level,
-        spec.order,
-        mesh=spec.kind,
+        field.spec.level,
+        field.order,
+        mesh=field.mesh,
+        geometry=field.spec.geometry,
         sigma=sigma,
         recontact=recontact,
         t_end_s=t_end,
@@ -145,3 +236,4 @@ def ball_model_of(
         initial=initial,
         route=route,
     )
+    return replace(model, source=field.source)

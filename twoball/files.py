@@ -11,19 +11,21 @@ import json
 import os
 from collections.abc import Sequence
 from dataclasses import replace
+from typing import Any
 
 from twoball.field_model import (
     FIELD_BACKENDS,
+    FieldMesh,
     ball_model_of,
     check_backend,
     check_fps,
     check_frame_budget,
     check_initial,
     eigen_sizes,
+    field_mesh,
     field_warnings,
 )
 from twoball.file_results import ExportResult, PlotResult, RenderResult
-from twoball.mesh_options import SPHERE_KINDS, MeshOptions
 from twoball.modal.errors import ParameterError
 from twoball.modal.parameters import Case
 from twoball.modal.report import LiftoffReport
@@ -44,9 +46,11 @@ def export(
     format: str | None = None,
     frames: int | None = None,
     times: Sequence[float] | None = None,
-    mesh: str | None = None,
+    mesh: Any = None,
     level: int | None = None,
     order: int | None = None,
+    pole: Sequence[float] | str | None = None,
+    geometry: str | None = None,
     initial: str | None = None,
     sigma: str = "lanczos",
     recontact: str = "window",
@@ -70,9 +74,23 @@ def export(
         Frames evenly spaced over [0, t_end] (default 25, plus the lift-off).
     times : sequence of float, optional
         Frame times [s] instead of ``frames``.
-    mesh, level, order
-        Sphere mesh (``sphere`` or ``ring``), level (default 3), order (default 2).
-        Mesh files are not taken here yet (the fields are evaluated on generated meshes).
+    mesh : {"sphere", "ring"}, path, meshio.Mesh or scikit-fem mesh, optional
+        Sphere mesh kind (default ``sphere``), or the user's sphere: a file any
+        format meshio reads, of any radius, centre and length unit, 3- or
+        6-node triangles, checked as by :func:`twoball.liftoff` (a broken or
+        non-spherical mesh raises :class:`ParameterError` naming ``mesh``).
+        The fields are in SI in the case's frame: nodes at R times the unit
+        sphere, the pole on +z; the file's radius, centre, pole and path are in
+        the file's metadata (field data ``mesh_file_*``, text ``mesh_file``)
+        and provenance (``mesh_file``).
+    level, order
+        Level of a generated sphere (default 3; not with a file) and element
+        order 1 or 2 (default 2; a file: its own, a 6-node file is order 2).
+    pole : (x, y, z) or "X,Y,Z", optional
+        Pole direction in the file's frame (default +z); a mesh file only.
+    geometry : {"isoparametric", "exact"}, optional
+        Discrete sphere of the finite elements (default isoparametric); ``exact``
+        on the icosphere and files only.
     initial : {"projection", "interpolation"}, optional
         FE representation of the initial displacement, eq. (3.10) (default projection).
     sigma, recontact, t_end
@@ -105,7 +123,7 @@ def export(
     fmt = series_format(out, format)
     target = check_file(out)
     check_backend(backend)
-    MeshOptions.resolve(mesh, level=level, order=order, kinds=SPHERE_KINDS, files=False)
+    field = field_mesh(mesh, level, order, pole, geometry, cells=True, load=False)
     if frames is not None and times is not None:
         raise ParameterError("frames", "left out when times are given", frames)
     if times is not None:
@@ -115,23 +133,21 @@ def export(
         raise ParameterError("frames", "1 for a single .vtu file (or give one time)", frames)
     if fmt == "vtu" and times is not None and len(times) != 1:
         raise ParameterError("times", "exactly one time for a single .vtu file", list(times))
+    field = field_mesh(mesh, level, order, pole, geometry, cells=True)  # reads a file
     if times is not None:
-        check_frame_budget(case, len(times), "times", level, order)
+        check_frame_budget(case, len(times), "times", field)
     else:
-        check_frame_budget(case, frames or DEFAULT_FRAMES, "frames", level, order)
+        check_frame_budget(case, frames or DEFAULT_FRAMES, "frames", field)
     say = progress or silent
     model = ball_model_of(
         case,
         FIELD_BACKENDS,
-        mesh=mesh,
-        level=level,
-        order=order,
+        field,
         initial=initial,
         sigma=sigma,
         recontact=recontact,
         t_end=t_end,
         progress=progress,
-        cells=True,
         route=route,
     )
     if fmt == "vtu" and times is None and frames is None:
@@ -142,7 +158,7 @@ def export(
         selected = frame_times(model, frames, times, backend)
     say(f"fields at {len(selected)} frames")
     series = field_series(model, selected, backend)
-    provenance = block(case, "twoball.export", arguments)
+    provenance = block(case, "twoball.export", arguments) | mesh_block(field)
     series = replace(series, text={**series.text, "provenance": json.dumps(provenance)})
     say(f"writing {target}")
     files = write_series(target, series, fmt)
@@ -155,7 +171,7 @@ def export(
         cell_type=series.cell_type,
         point_data=list(series.point_data),
         report=model.backend(backend).report,
-        warnings=field_warnings(model, backend, order, level),
+        warnings=field_warnings(model, backend, field),
         provenance=provenance,
     )
 
@@ -170,9 +186,11 @@ def render(
     warp: float | None = None,
     size: tuple[int, int] | str | None = None,
     fps: float | None = None,
-    mesh: str | None = None,
+    mesh: Any = None,
     level: int | None = None,
     order: int | None = None,
+    pole: Sequence[float] | str | None = None,
+    geometry: str | None = None,
     initial: str | None = None,
     sigma: str = "lanczos",
     recontact: str = "window",
@@ -200,7 +218,7 @@ def render(
         Image size in pixels (MP4: rounded up to multiples of 16).
     fps : float, optional
         Frames per second of an animation, in [0.001, 1000] (default 20); not with ``.png``.
-    mesh, level, order, initial, sigma, recontact, t_end, progress, route
+    mesh, level, order, pole, geometry, initial, sigma, recontact, t_end, progress, route
         As in :func:`export` (``initial`` needs ``backend="fem"``).
     """
     arguments = dict(locals())  # the call, for the provenance
@@ -233,29 +251,27 @@ def render(
     if kind != ".png" and time is not None:
         raise ParameterError("time", "used with .png only (use frames for animations)", time)
     frames = None if frames is None else check_frames(frames)
-    MeshOptions.resolve(mesh, level=level, order=order, kinds=SPHERE_KINDS, files=False)
+    field = field_mesh(mesh, level, order, pole, geometry, cells=True, load=False)
     times = None
     if time is not None:
         from twoball.modal.errors import real_number
 
         valid = "a time >= 0 in seconds within the modelled window"
         times = check_times(window(case, t_end), [real_number("time", time, valid)], "time")
+    field = field_mesh(mesh, level, order, pole, geometry, cells=True)  # reads a file
     if kind != ".png":
         count = DEFAULT_ANIMATION_FRAMES if frames is None else frames
-        check_frame_budget(case, count, "frames", level, order)
+        check_frame_budget(case, count, "frames", field)
     say = progress or silent
     model = ball_model_of(
         case,
         (backend,),
-        mesh=mesh,
-        level=level,
-        order=order,
+        field,
         initial=initial,
         sigma=sigma,
         recontact=recontact,
         t_end=t_end,
         progress=progress,
-        cells=True,
         route=route,
     )
     if kind == ".png":
@@ -275,8 +291,8 @@ def render(
         warp=float(scene.auto_warp() if warp is None else warp),
         backend=backend,
         report=model.backend(backend).report,
-        warnings=field_warnings(model, backend, order, level),
-        provenance=block(case, "twoball.render", arguments),
+        warnings=field_warnings(model, backend, field),
+        provenance=block(case, "twoball.render", arguments) | mesh_block(field),
     )
 
 
@@ -290,9 +306,11 @@ def plot(
     levels: Sequence[int] | None = None,
     orders: Sequence[int] | None = None,
     max_degree: int | None = None,
-    mesh: str | None = None,
+    mesh: Any = None,
     level: int | None = None,
     order: int | None = None,
+    pole: Sequence[float] | str | None = None,
+    geometry: str | None = None,
     initial: str | None = None,
     sigma: str | None = None,
     recontact: str | None = None,
@@ -319,8 +337,9 @@ def plot(
     levels, orders, max_degree
         ``eigen`` only: mesh levels (default 1, 2, 3), element orders (default 1,
         2) and the largest degree l.
-    mesh, level, order, initial, sigma, recontact, t_end
-        As in :func:`export` (``waterfall`` and ``pole`` only; defaults as there).
+    mesh, level, order, pole, geometry, initial, sigma, recontact, t_end
+        As in :func:`export` (``waterfall`` and ``pole`` only; defaults as there;
+        a mesh file too).
     progress, route
         As in :func:`export` (``route`` not with ``eigen``).
     dpi : float, optional
@@ -354,6 +373,8 @@ def plot(
             ("backends", backends),
             ("instants", instants),
             ("mesh", mesh),
+            ("pole", pole),
+            ("geometry", geometry),
             ("level", level),
             ("order", order),
             ("initial", initial),
@@ -363,6 +384,7 @@ def plot(
         ):
             if value is not None:
                 shown = type(value).__name__ if name == "case" else value
+                shown = os.fspath(shown) if isinstance(shown, os.PathLike) else shown
                 raise ParameterError(name, "left out with kind eigen (use levels, orders)", shown)
         if route != "auto":
             raise ParameterError("route", "left out with kind eigen", route)
@@ -387,18 +409,17 @@ def plot(
         instants = WATERFALL_INSTANTS if instants is None else instants
         if isinstance(instants, bool) or not isinstance(instants, int) or instants < 2:
             raise ParameterError("instants", "an integer >= 2", instants)
-        check_frame_budget(
-            Case.preset("basketball") if case is None else case, instants, "instants", level, order
-        )
         chosen = tuple(dict.fromkeys(backends))
         if not chosen or any(b not in FIELD_BACKENDS for b in chosen):
             raise ParameterError("backends", "a list of fem, legendre", list(backends))
+        field = field_mesh(mesh, level, order, pole, geometry)  # reads a file
+        check_frame_budget(
+            Case.preset("basketball") if case is None else case, instants, "instants", field
+        )
         model = ball_model_of(
             Case.preset("basketball") if case is None else case,
             chosen,
-            mesh=mesh,
-            level=level,
-            order=order,
+            field,
             initial=initial,
             sigma=sigma,
             recontact=recontact,
@@ -410,7 +431,7 @@ def plot(
         for name, solved in model.backends.items():
             report = solved.report
             reports[name] = report
-            warnings += [f"{name}: {text}" for text in field_warnings(model, name, order, level)]
+            warnings += [f"{name}: {text}" for text in field_warnings(model, name, field)]
             if report.result.lifted:
                 text = f"{report.t_liftoff_s * 1e3:.3f} ms, {report.v_liftoff_m_s:.4f} m/s"
             else:
@@ -419,4 +440,12 @@ def plot(
     (progress or silent)(f"writing {target}")
     save_figure(figure, target, "out", dpi, "dpi")
     used = None if kind == "eigen" else Case.preset("basketball") if case is None else case
-    return PlotResult(target, kind, rows, reports, warnings, block(used, "twoball.plot", arguments))
+    provenance = block(used, "twoball.plot", arguments)
+    if kind != "eigen":
+        provenance |= mesh_block(field)
+    return PlotResult(target, kind, rows, reports, warnings, provenance)
+
+
+def mesh_block(field: FieldMesh) -> dict[str, object]:
+    """``mesh_file`` for a provenance block: the user's file (path, radius, centre, pole)."""
+    return {} if field.source is None else {"mesh_file": field.source}

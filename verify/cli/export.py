@@ -95,7 +95,7 @@ def register(parser: argparse.ArgumentParser) -> None:
         "displacement vector u n, and u_fem, u_legendre, u_diff; lift-off in field data."
     )
     add_case_options(parser)
-    add_mesh_options(parser, SPHERE_KINDS, initial=True, files=False)
+    add_mesh_options(parser, SPHERE_KINDS, initial=True, geometry=True)
     parser.set_defaults(initial=None)  # the API's default (projection)
     add_route_option(parser)
     add_backend_option(parser)

@@ -109,7 +109,7 @@ def register(parser: argparse.ArgumentParser) -> None:
     )
     parser.add_argument("kind", metavar="KIND", help="waterfall, pole or eigen")
     add_case_options(parser)
-    add_mesh_options(parser, SPHERE_KINDS, initial=True, files=False)
+    add_mesh_options(parser, SPHERE_KINDS, initial=True, geometry=True)
     # None when not given: the API fills in the defaults and refuses what the kind does not use
     parser.set_defaults(sigma=None, recontact=None, initial=None)
     add_route_option(parser)

@@ -88,7 +88,7 @@ def register(parser: argparse.ArgumentParser) -> None:
         "and coloured by u [mm], the upper body on the pole and in free flight after lift-off."
     )
     add_case_options(parser)
-    add_mesh_options(parser, SPHERE_KINDS, initial=True, files=False)
+    add_mesh_options(parser, SPHERE_KINDS, initial=True, geometry=True)
     add_route_option(parser)
     add_backend_option(parser)
     parser.add_argument("--out", required=True, metavar="FILE", help="FILE.png, .gif or .mp4")

@@ -20,13 +20,14 @@ returns SI (m, m/s, m/s^2, s) unless its docstring says otherwise.
 
 from __future__ import annotations
 
+import json
 from collections.abc import Sequence
 from dataclasses import dataclass, field
-from typing import Literal
+from typing import Any, Literal
 
 import numpy as np
 from twoball.fem_membrane.export import TimeSeries
-from twoball.fem_membrane.mesh import SphereMesh, sphere_mesh
+from twoball.fem_membrane.mesh import SphereMesh, elevate, flatten, sphere_mesh
 from twoball.fem_membrane.render import BallScene
 from twoball.modal.errors import ParameterError
 from twoball.modal.filters import SpectralFilter
@@ -34,12 +35,22 @@ from twoball.modal.legendre import legendre_series, legendre_shapes
 from twoball.modal.parameters import Case
 from twoball.modal.report import LiftoffReport, report_liftoff, t_end_dimensionless
 from twoball.modal.series import ModalSeries
+from twoball.verify.output.field_times import (  # noqa: F401 -- their home before
+    DEFAULT_FRAMES,
+    MAX_FRAMES,
+    check_frames,
+    check_times,
+    frame_times,
+    liftoff_frame,
+    parse_times,
+    window_s,
+)
 
 BackendName = Literal["fem", "legendre"]
 BACKENDS: tuple[str, ...] = ("fem", "legendre")
 MESH_KINDS: tuple[str, ...] = ("sphere", "ring")
-DEFAULT_FRAMES = 25
-MAX_FRAMES = 2000
+#: A generated mesh kind, or the user's mesh (unit sphere, pole on +z; from a file).
+MeshChoice = str | SphereMesh
 
 
 @dataclass(frozen=True)
@@ -87,6 +98,10 @@ class BallModel:
         Modelled window (dimensionless, unit 1/c).
     sigma, recontact : str
         Spectral filter and re-contact horizon used for both backends.
+    source : dict or None
+        The user's mesh file (:meth:`twoball.field_model.FieldMesh.source`): its
+        ``path``, fitted ``radius`` and ``center`` (the file's length unit), unit
+        ``pole`` direction in the file's frame, ...; None on a generated mesh.
     """
 
     case: Case
@@ -95,6 +110,7 @@ class BallModel:
     t_end: float
     sigma: str = "lanczos"
     recontact: str = "window"
+    source: dict[str, Any] | None = None
 
     @property
     def polar_angles(self) -> np.ndarray:
@@ -148,11 +164,27 @@ def node_polar_angles(mesh: SphereMesh) -> np.ndarray:
     return np.arccos(np.clip(cosine, -1.0, 1.0))
 
 
-def build_mesh(case: Case, level: int, order: int, kind: str = "sphere") -> SphereMesh:
-    """The unit-sphere mesh: icosphere (``sphere``) or ring sphere, ring at phi_a (``ring``)."""
+def build_mesh(
+    case: Case,
+    level: int | None,
+    order: int | None,
+    kind: MeshChoice = "sphere",
+    geometry: str = "isoparametric",
+) -> SphereMesh:
+    """The unit-sphere mesh: icosphere (``sphere``), ring sphere (``ring``) or the user's.
+
+    A user's :class:`SphereMesh` is raised to or flattened to ``order`` (default
+    its own) as the finite-element space does (:func:`~twoball.fem_membrane.space.sphere_space`):
+    with ``geometry="exact"`` only its vertices are kept and the other nodes are
+    their radial projections, the nodes of the exact geometry.
+    """
+    if isinstance(kind, SphereMesh):
+        order = kind.order if order is None else order
+        base = flatten(kind) if geometry == "exact" else kind
+        return elevate(base, order) if order > 1 else flatten(base)
     if kind not in MESH_KINDS:
         raise ParameterError("--mesh", "one of " + ", ".join(MESH_KINDS), kind)
-    return sphere_mesh(level, order, case.phi_a if kind == "ring" else None)
+    return sphere_mesh(int(level or 0), int(order or 2), case.phi_a if kind == "ring" else None)
 
 
 def legendre_backend(
@@ -176,13 +208,14 @@ def legendre_backend(
 
 def fem_nodal_series(
     case: Case,
-    level: int,
-    order: int,
-    mesh: str = "sphere",
+    level: int | None,
+    order: int | None,
+    mesh: MeshChoice = "sphere",
     sigma: str = "lanczos",
     initial: str = "projection",
     route: str = "auto",
     t_end: float | None = None,
+    geometry: str = "isoparametric",
 ) -> tuple[SphereMesh, ModalSeries, np.ndarray, dict[str, float]]:
     """Finite-element modal series (dimensionless), its mesh and its mode shapes at the nodes.
 
@@ -199,7 +232,11 @@ def fem_nodal_series(
     mesh node, so the mesh returned here has the degrees of freedom as its nodes
     (``doflocs``) and their numbering in its cells (skfem's local order: vertices,
     then edges 01, 12, 20 -- meshio's ``triangle6``), and the eigenvectors (or
-    Ritz vectors) are the mode shapes at the nodes as they are.
+    Ritz vectors) are the mode shapes at the nodes as they are.  ``mesh`` may be
+    the user's unit-sphere mesh (``level`` None, ``order`` None for its own), and
+    ``geometry`` ``exact`` maps the elements onto the sphere itself (the nodes
+    are then the exact images).  The pole may lie inside an element of a user's
+    mesh: the series reads it through the space's pole functional.
 
     Returns
     -------
@@ -214,30 +251,36 @@ def fem_nodal_series(
     from twoball.fem_membrane.solve import modal_model
     from twoball.modal.liftoff import DEFAULT_T_END
 
-    if mesh not in MESH_KINDS:
+    own = isinstance(mesh, SphereMesh)
+    if not own and mesh not in MESH_KINDS:
         raise ParameterError("--mesh", "one of " + ", ".join(MESH_KINDS), mesh)
     model = modal_model(
         case.phi_a,
         case.damping,
         SpectralFilter(sigma, case.modes),
         mesh=mesh,
-        level=level,
-        order=order,
+        level=None if own else level,
+        order=None if own and order is None else order,
         initial=initial,
         route=route,
+        geometry=geometry,
         fields=True,
         t_end=DEFAULT_T_END if t_end is None else t_end,
         stiffness=case.stiffness,
     )
     basis = model.space.basis
-    kind = "icosphere" if mesh == "sphere" else "ring sphere"
+    if own:
+        name = mesh.name
+    else:
+        name = ("icosphere" if mesh == "sphere" else "ring sphere") + f" level {level}"
     nodes = SphereMesh(
         basis.doflocs.T,
         basis.element_dofs.T,
-        f"{kind} level {level}, P{order}",
+        f"{name}, P{model.space.order}",
         case.phi_a if mesh == "ring" else None,
     )
-    if nodes.pole != model.space.pole:  # pragma: no cover - guards the dof = node premise
+    node = nodes.pole_node  # None: the pole inside an element (a user's mesh)
+    if node is not None and node != model.space.pole:  # pragma: no cover - dof = node premise
         raise ValueError("the pole node is not the pole degree of freedom")
     details = {
         "dofs": float(model.space.dofs),
@@ -249,21 +292,22 @@ def fem_nodal_series(
 
 def fem_backend(
     case: Case,
-    level: int,
-    order: int,
-    mesh: str,
+    level: int | None,
+    order: int | None,
+    mesh: MeshChoice,
     sigma: str,
     recontact: str,
     t_end: float,
     initial: str = "projection",
     route: str = "auto",
+    geometry: str = "isoparametric",
 ) -> tuple[SphereMesh, Backend]:
     """The finite-element backend and its mesh, see :func:`fem_nodal_series`.
 
     Lift-off by the shared :func:`twoball.modal.report.report_liftoff`.
     """
     nodes, series, shapes, details = fem_nodal_series(
-        case, level, order, mesh, sigma, initial, route, t_end
+        case, level, order, mesh, sigma, initial, route, t_end, geometry
     )
     report = report_liftoff(
         case,
@@ -278,16 +322,17 @@ def fem_backend(
 
 def ball_model(
     case: Case,
-    level: int = 3,
-    order: int = 2,
+    level: int | None = 3,
+    order: int | None = 2,
     *,
-    mesh: str = "sphere",
+    mesh: MeshChoice = "sphere",
     sigma: str = "lanczos",
     recontact: str = "window",
     t_end_s: float | None = None,
     backends: Sequence[str] = BACKENDS,
     initial: str = "projection",
     route: str = "auto",
+    geometry: str = "isoparametric",
 ) -> BallModel:
     """Solve ``case`` with the requested backends on a sphere mesh of ``level``/``order``.
 
@@ -296,9 +341,12 @@ def ball_model(
     case : Case
         The impact (SI).
     level, order : int
-        Mesh refinement (``--level``) and element order 1 or 2 (``--order``).
-    mesh : {"sphere", "ring"}
-        Icosphere, or ring sphere with mesh edges along phi = phi_a (``--mesh``).
+        Mesh refinement (``--level``) and element order 1 or 2 (``--order``);
+        with the user's mesh ``level`` is None and ``order`` None keeps its own.
+    mesh : {"sphere", "ring"} or SphereMesh
+        Icosphere, or ring sphere with mesh edges along phi = phi_a (``--mesh``),
+        or the user's mesh on the unit sphere with its pole on +z
+        (:func:`twoball.fem_membrane.mesh_input.load_sphere_mesh`).
     sigma, recontact : str
         Spectral filter (eq. (3.16)) and re-contact horizon (§3(a)(ii)).
     t_end_s : float, optional
@@ -310,6 +358,9 @@ def ball_model(
     route : {"auto", "full", "krylov"}
         FE mode shapes from every eigenpair (``full``), from the Ritz pairs of the
         rational Krylov route (``krylov``), or Krylov from 2000 unknowns (``auto``).
+    geometry : {"isoparametric", "exact"}
+        Discrete sphere of the FE backend (``--geometry``; exact: the icosphere
+        and the user's mesh only).
 
     Returns
     -------
@@ -322,85 +373,23 @@ def ball_model(
     solved: dict[str, Backend] = {}
     if "fem" in backends:
         unit_mesh, solved["fem"] = fem_backend(
-            case, level, order, mesh, sigma, recontact, t_end, initial, route
+            case, level, order, mesh, sigma, recontact, t_end, initial, route, geometry
         )
     else:
-        unit_mesh = build_mesh(case, level, order, mesh)
+        unit_mesh = build_mesh(case, level, order, mesh, geometry)
     if "legendre" in backends:
         solved["legendre"] = legendre_backend(case, unit_mesh, sigma, recontact, t_end)
     return BallModel(case, unit_mesh, solved, t_end, sigma, recontact)
 
 
-# --------------------------------------------------------------------------- times
-def check_frames(frames: object, flag: str = "--frames") -> int:
-    """Number of frames: an integer in [1, 2000]."""
-    if isinstance(frames, bool) or not isinstance(frames, int | np.integer):
-        raise ParameterError(flag, f"an integer in [1, {MAX_FRAMES}]", frames)
-    if not (1 <= int(frames) <= MAX_FRAMES):
-        raise ParameterError(flag, f"an integer in [1, {MAX_FRAMES}]", frames)
-    return int(frames)
-
-
-def parse_times(text: str, flag: str = "--times") -> tuple[float, ...]:
-    """Times [s] in the one list syntax: ``0,0.005,0.01`` or ``0:0.01:3``.
-
-    Each must be a finite number >= 0; they are returned sorted, without duplicates.
-    """
-    from twoball.ranges import SYNTAX, parse_values
-
-    valid = "times >= 0 in seconds, e.g. 0,0.005,0.01 or 0:0.01:11"
-    values = parse_values(text, flag, valid=valid)
-    if any(v < 0 for v in values):
-        raise ParameterError(flag, f"{SYNTAX} ({valid})", text)
-    return tuple(sorted(set(values)))
-
-
-def window_s(case: Case, t_end_s: float | None = None) -> float:
-    """The modelled window [s]: ``t_end_s``, or 4 pi / c by default."""
-    return t_end_dimensionless(case, t_end_s) * case.scalings.time
-
-
-def check_times(end: float, times_s: Sequence[float], flag: str = "--times") -> np.ndarray:
-    """``times_s`` [s] as a sorted array, each inside the modelled window [0, ``end``]."""
-    times = np.asarray(sorted({float(t) for t in times_s}), dtype=float)
-    if times.size == 0 or np.any(~np.isfinite(times)) or times.min() < 0 or times.max() > end:
-        raise ParameterError(
-            flag, f"times in [0, {end:.6g}] s (the modelled window)", list(times_s)
-        )
-    return times
-
-
-def frame_times(
-    model: BallModel,
-    frames: int | None = None,
-    times_s: Sequence[float] | None = None,
-    backend: str = "fem",
-    include_liftoff: bool = True,
-) -> np.ndarray:
-    """Frame times [s]: given ``times_s``, or ``frames`` evenly spaced over [0, t_end].
-
-    With ``frames`` (default 25) the lift-off time of ``backend`` is added as an
-    extra frame when ``include_liftoff`` is set and the body lifts off.
-    """
-    if times_s is not None:
-        return check_times(model.t_end_s, times_s)
-    count = DEFAULT_FRAMES if frames is None else check_frames(frames)
-    times = np.linspace(0.0, model.t_end_s, count) if count > 1 else np.array([0.0])
-    report = model.backend(backend).report
-    if include_liftoff and report.result.lifted:
-        times = np.union1d(times, [report.t_liftoff_s])
-    return times
-
-
-def liftoff_frame(model: BallModel, backend: str = "fem") -> np.ndarray:
-    """The lift-off time [s] of ``backend`` as a one-frame array (t = 0 if no lift-off)."""
-    report = model.backend(backend).report
-    return np.array([report.t_liftoff_s if report.result.lifted else 0.0])
-
-
 # --------------------------------------------------------------------------- products
 def series_metadata(model: BallModel, backend: str) -> dict[str, float]:
-    """Scalars for file metadata (SI): the case, the mesh and each backend's lift-off."""
+    """Scalars for file metadata (SI): the case, the mesh and each backend's lift-off.
+
+    On the user's mesh also ``mesh_file_radius`` and ``mesh_file_center_x``, ``_y``,
+    ``_z`` (in the file's own length unit) and the unit pole direction in the
+    file's frame, ``mesh_file_pole_x``, ``_y``, ``_z``.
+    """
     case = model.case
     data: dict[str, float] = {
         "radius_m": case.radius,
@@ -414,6 +403,12 @@ def series_metadata(model: BallModel, backend: str) -> dict[str, float]:
         "mesh_order": float(model.mesh.order),
         "nodes": float(len(model.mesh.points)),
     }
+    if model.source is not None:  # the user's file: its own unit and frame
+        data["mesh_file_radius"] = float(model.source["radius"])
+        centre, pole = model.source["center"], model.source["pole"]
+        for k, axis in enumerate("xyz"):
+            data[f"mesh_file_center_{axis}"] = float(centre[k])
+            data[f"mesh_file_pole_{axis}"] = float(pole[k])
     for name, solved in model.backends.items():
         report = solved.report
         data[f"lifted_{name}"] = 1.0 if report.result.lifted else 0.0
@@ -445,7 +440,9 @@ def field_series(model: BallModel, times_s: np.ndarray, backend: str = "fem") ->
         Both backends' u [m] and ``u_fem - u_legendre`` (when both were solved).
 
     Field data: :func:`series_metadata` (``t_liftoff_s``, ``v_liftoff_m_s``, ...);
-    text ``case`` (:func:`case_text`).  Every name ends in its SI unit.
+    text ``case`` (:func:`case_text`) and, on the user's mesh, ``mesh_file`` (JSON
+    of :attr:`BallModel.source`).  Every name ends in its SI unit, but the
+    ``mesh_file`` entries, which are in the file's units.
     """
     times_s = np.atleast_1d(np.asarray(times_s, dtype=float))
     scale = model.case.scalings
@@ -468,7 +465,8 @@ def field_series(model: BallModel, times_s: np.ndarray, backend: str = "fem") ->
         times_s,
         data,
         series_metadata(model, backend),
-        {"case": case_text(model, backend)},
+        {"case": case_text(model, backend)}
+        | ({} if model.source is None else {"mesh_file": json.dumps(model.source)}),
     )
 
 
