@@ -256,3 +256,84 @@ def contact_series(series: TimeSeries, model: CoupledModel, backend: str) -> Tim
         ),
     }
     return replace(series, field_data=field_data, text=text, frame_data=frame_data)
+
+
+def contact_scene(model: CoupledModel, times_s: np.ndarray, backend: str) -> Any:
+    """The scene of :func:`~twoball.verify.output.fields.ball_scene` with the body's contact.
+
+    The membrane is the coupled field, the body at its height ``s(t)``; the
+    caption marks the frames in contact (:class:`twoball.fem_membrane.render_body.ContactScene`).
+    """
+    from twoball.fem_membrane.render_body import ContactScene
+    from twoball.verify.output.fields import ball_scene
+
+    scene = ball_scene(model, times_s, backend)
+    report = model.contact(backend)
+    impacts = [e["t_s"] for e in report.events_si() if e["kind"] == "impact"]
+    return ContactScene(
+        scene.points, scene.cells, scene.times, scene.u, scene.body, scene.radius,
+        scene.t_liftoff, f"{scene.label}, mu = {report.mass_ratio:g}",
+        contact=model.states(backend, scene.times).contact, impacts=np.array(impacts),
+        mass_ratio=report.mass_ratio,
+    )  # fmt: skip
+
+
+def plot_contact(
+    kind: str,
+    case: Case | None,
+    mass_ratio: float | None,
+    contact_radius: float | None,
+    restitution: float | None,
+    energy: str | None,
+    *,
+    recontact: str | None,
+    route: str,
+) -> ContactOptions | None:
+    """The finite-mass options of ``twoball.plot``: ``pole`` only, else refused."""
+    if kind != "pole":
+        for name, value in (
+            ("mass_ratio", mass_ratio),
+            ("contact_radius", contact_radius),
+            ("restitution", restitution),
+            ("energy", energy),
+        ):
+            if value is not None:
+                raise ParameterError(name, f"left out with kind {kind} (pole only)", value)
+        return None
+    case = Case.preset("basketball") if case is None else case
+    return contact_options(
+        case, mass_ratio, contact_radius, restitution, energy, recontact=recontact, route=route
+    )
+
+
+def model_of(
+    case: Case,
+    backends: Sequence[str],
+    contact: ContactOptions | None,
+    **options: Any,
+) -> BallModel:
+    """:func:`twoball.field_model.ball_model_of` without a body; the coupled model with one.
+
+    ``options`` are those of ``ball_model_of`` (mesh, level, order, initial,
+    sigma, recontact, t_end, progress, cells, route), checked the same way.
+    """
+    from twoball.modal.report import t_end_dimensionless
+
+    from twoball.field_model import ball_model_of, check_initial
+    from twoball.mesh_options import SPHERE_KINDS, MeshOptions
+
+    if contact is None:
+        return ball_model_of(case, backends, **options)
+    spec = MeshOptions.resolve(
+        options.get("mesh"), level=options.get("level"), order=options.get("order"),
+        kinds=SPHERE_KINDS, files=False,
+    )  # fmt: skip
+    if options.get("cells") and spec.order > 2:  # VTK and pyvista cells stop at quadratic
+        raise ParameterError("order", "1 or 2 for field files and pictures", spec.order)
+    initial = check_initial(options.get("initial"), backends)
+    t_end_dimensionless(case, options.get("t_end"))  # checked before any progress line
+    return coupled_model(
+        case, backends, contact, mesh=spec.kind, level=spec.level, order=spec.order,
+        initial=initial, sigma=options.get("sigma", "lanczos"), t_end_s=options.get("t_end"),
+        progress=options.get("progress"),
+    )  # fmt: skip
