@@ -74,7 +74,9 @@ def test_plot_pole_draws_the_path_and_one_marker_per_event(model):
                 assert np.allclose(line.get_xdata(), [e["t_s"] * 1e3 for e in chosen])
                 assert np.allclose(line.get_ydata(), [e[key] * factor for e in chosen])
         # the body's path is the solver's trajectory at the same times
-        (path,) = [line for line in displacement.get_lines() if line.get_gid() == f"{BODY_GID}-{name}"]
+        (path,) = [
+            line for line in displacement.get_lines() if line.get_gid() == f"{BODY_GID}-{name}"
+        ]
         data = report.trajectory_si(samples)
         assert np.allclose(path.get_xdata(), data["t_s"] * 1e3, rtol=1e-12)
         scale = np.abs(data["body_height_m"]).max()
@@ -133,22 +135,30 @@ def test_exported_membrane_carries_the_body_while_in_contact(exported):
     s = series.frame_data["s_m"]
     touching = series.frame_data["contact"] == 1.0
     gap = np.abs(u_pole - s)[touching] / np.abs(s[touching])
-    assert gap.max() < 1e-8, gap  # the cap average of a 1e-6 m cap is the pole value
+    assert gap.max() < 2e-9, gap  # the cap average of a 1e-6 m cap is the pole value (1e-9)
     assert np.all(u_pole[~touching] < s[~touching])  # in flight the body is above
 
 
 def test_small_mass_approaches_the_massless_field(tmp_path):
+    """Both backends' coupled fields tend to the free membrane at first order in mu."""
     times = [0.0, 2e-3, 6e-3, 12e-3]
     common = {"backend": "legendre", "level": 1, "times": times}
-    twoball.export(tmp_path / "light.pvd", CASE, mass_ratio=1e-9, **common)
     twoball.export(tmp_path / "free.pvd", CASE, **common)
-    light, free = read_series(tmp_path / "light.pvd"), read_series(tmp_path / "free.pvd")
-    assert "s_m" in light.frame_data and not free.frame_data
+    free = read_series(tmp_path / "free.pvd")
+    assert not free.frame_data
+    errors = {}
+    for mu in (1e-9, 1e-6):
+        twoball.export(tmp_path / "light.pvd", CASE, mass_ratio=mu, **common)
+        light = read_series(tmp_path / "light.pvd")
+        assert "s_m" in light.frame_data
+        for name in ("u_fem_m", "u_legendre_m", "u_t_m_s"):
+            size = np.abs(free.point_data[name]).max()
+            errors[mu, name] = np.abs(light.point_data[name] - free.point_data[name]).max() / size
+            # measured 2-3 mu for u, 16 mu for u_t
+            assert 0.0 < errors[mu, name] < 30 * mu, (name, errors[mu, name])
     for name in ("u_fem_m", "u_legendre_m", "u_t_m_s"):
-        size = np.abs(free.point_data[name]).max()
-        diff = np.abs(light.point_data[name] - free.point_data[name]).max()
-        assert diff < 1e-7 * size, (name, diff / size)
-        assert diff > 0.0  # the coupled field, not the free one
+        order = np.log10(errors[1e-6, name] / errors[1e-9, name]) / 3.0
+        assert abs(order - 1.0) < 0.01, (name, order)
 
 
 def test_render_draws_the_body_and_its_contact(model, tmp_path, monkeypatch):
@@ -169,22 +179,23 @@ def test_render_draws_the_body_and_its_contact(model, tmp_path, monkeypatch):
     assert list(tmp_path.iterdir()) == [out]
 
 
-@pytest.mark.parametrize(
-    ("argv", "flag"),
-    [
-        (["plot", "eigen", "--mass-ratio", "0.1", "--out", "{tmp}/p.png"], "--mass-ratio"),
-        (["plot", "waterfall", "--mass-ratio", "0.1", "--out", "{tmp}/p.png"], "--mass-ratio"),
-        (["export", "--contact-radius", "0.01", "--out", "{tmp}/x.xdmf"], "--contact-radius"),
-        (["export", "--mass-ratio", "0", "--out", "{tmp}/x.xdmf"], "--mass-ratio"),
-        (["export", "--mass-ratio", "0.1", "--route", "krylov", "--out", "{tmp}/x.xdmf"], "--route"),
-        (["render", "--mass-ratio", "0.1", "--recontact", "paper", "--out", "{tmp}/x.png"], "--recontact"),
-        (["render", "--mass-ratio", "-1", "--out", "{tmp}/x.png"], "--mass-ratio"),
-        (["plot", "pole", "--mass-ratio", "0.1", "--contact-radius", "1", "--out", "{tmp}/p.png"], "--contact-radius"),
-    ],
-)  # fmt: skip
+REFUSED = [
+    (["plot", "eigen", "--mass-ratio", "0.1"], "--mass-ratio"),
+    (["plot", "waterfall", "--mass-ratio", "0.1"], "--mass-ratio"),
+    (["plot", "pole", "--mass-ratio", "0.1", "--contact-radius", "1"], "--contact-radius"),
+    (["export", "--contact-radius", "0.01"], "--contact-radius"),
+    (["export", "--mass-ratio", "0"], "--mass-ratio"),
+    (["export", "--mass-ratio", "0.1", "--route", "krylov"], "--route"),
+    (["render", "--mass-ratio", "0.1", "--recontact", "paper"], "--recontact"),
+    (["render", "--mass-ratio", "-1"], "--mass-ratio"),
+]
+
+
+@pytest.mark.parametrize(("argv", "flag"), REFUSED)
 def test_options_that_do_not_apply_are_refused(argv, flag, tmp_path, capsys):
+    out = tmp_path / {"export": "x.xdmf", "render": "x.png", "plot": "p.png"}[argv[0]]
     with pytest.raises(SystemExit) as stop:
-        main([word.replace("{tmp}", str(tmp_path)) for word in argv])
+        main([*argv, "--out", str(out)])
     assert stop.value.code == 2
     err = capsys.readouterr().err.strip()
     assert err.count("\n") == 0 and flag in err, err
