@@ -200,3 +200,12 @@ def test_options_that_do_not_apply_are_refused(argv, flag, tmp_path, capsys):
     err = capsys.readouterr().err.strip()
     assert err.count("\n") == 0 and flag in err, err
     assert list(tmp_path.iterdir()) == []
+
+
+def test_cli_option_constants_match_the_model():
+    """The option group (kept light: no scipy at start-up) states the model's limits."""
+    from twoball.modal.contact import report
+    from twoball.verify.cli import contact_options
+
+    assert contact_options.MAX_MASS_RATIO == report.MAX_MASS_RATIO
+    assert contact_options.ENERGY_OPTIONS == report.ENERGY_OPTIONS

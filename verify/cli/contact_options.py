@@ -11,12 +11,14 @@ from __future__ import annotations
 
 import argparse
 
-from twoball.modal.contact.report import ENERGY_OPTIONS, MAX_MASS_RATIO
-
 __all__ = ["CONTACT_NAMES", "VALID_RANGES", "add_contact_options", "contact_arguments"]
 
 #: The API arguments of the group.
 CONTACT_NAMES: tuple[str, ...] = ("mass_ratio", "contact_radius", "restitution", "energy")
+#: As :mod:`twoball.modal.contact.report` (not imported here: it loads scipy, and
+#: ``twoball liftoff`` on the closed form loads numpy only); the API checks the values.
+MAX_MASS_RATIO = 100.0
+ENERGY_OPTIONS: tuple[str, ...] = ("ball", "both")
 VALID_RANGES: dict[str, str] = {
     "--mass-ratio": f"a number in [0, {MAX_MASS_RATIO:g}]",
     "--contact-radius": "a radius in (0, R) in metres",
