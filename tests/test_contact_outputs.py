@@ -94,6 +94,17 @@ def test_cli_plot_pole_with_a_mass_ratio(tmp_path, capsys):
     assert "lift-off (legendre)" in capsys.readouterr().out
 
 
+def test_one_vtu_holds_the_lift_off(tmp_path):
+    """A single VTU is the final separation: the body there is the last event's."""
+    result = twoball.export(tmp_path / "one.vtu", CASE, backend="legendre", level=1, mass_ratio=MU)
+    series = read_series(tmp_path / "one.vtu")
+    last = result.report.events_si()[-1]
+    assert last["kind"] == "separation" and series.times[0] == last["t_s"]
+    assert series.frame_data["s_m"][0] == pytest.approx(last["height_m"], rel=1e-14)
+    assert series.frame_data["s_t_m_s"][0] == pytest.approx(last["velocity_m_s"], rel=1e-14)
+    assert series.frame_data["contact"][0] == 0.0
+
+
 @pytest.fixture(scope="module")
 def exported(tmp_path_factory):
     folder = tmp_path_factory.mktemp("export")
@@ -176,7 +187,12 @@ def test_render_draws_the_body_and_its_contact(model, tmp_path, monkeypatch):
     assert image.shape[:2] == (240, 320)
     assert float(np.mean(np.any(image[..., :3] < 245, axis=-1))) > 0.1  # not blank
     assert result.report.mass_ratio == 0.004
-    assert list(tmp_path.iterdir()) == [out]
+    assert list(tmp_path.iterdir()) == [out]  # no scratch files left
+    gif = tmp_path / "bounce.gif"
+    twoball.render(
+        gif, CASE, backend="legendre", level=1, frames=3, size=(160, 120), mass_ratio=0.004
+    )
+    assert iio.imread(gif, index=None).shape[:3] == (3, 120, 160)
 
 
 REFUSED = [
