@@ -61,6 +61,7 @@ FORMATS: tuple[str, ...] = ("xdmf", "vtu", "pvd")
 SUFFIXES: dict[str, str] = {"xdmf": ".xdmf", "vtu": ".vtu", "pvd": ".pvd"}
 CELL_TYPES: dict[int, str] = {3: "triangle", 6: "triangle6"}
 TIME_VALUE = "TimeValue"  # the VTK/ParaView name of a dataset's time in field data
+FRAME_DATA = "frame_data"  # the text listing the names of per-frame field data
 
 
 @dataclass(frozen=True)
@@ -83,6 +84,10 @@ class TimeSeries:
         leave out non-finite entries (VTK cannot parse ``nan`` in field data).
     text : dict of str -> str
         Texts describing the whole series (``provenance`` JSON, ``case``).
+    frame_data : dict of str -> ndarray, shape (F,)
+        Scalars of each frame (e.g. the upper body's height ``s_m``): field data
+        of each VTU, a grid attribute of each XDMF step; their names are listed in
+        the text ``frame_data`` (comma-separated) so that readers tell them apart.
     """
 
     points: np.ndarray
@@ -91,6 +96,7 @@ class TimeSeries:
     point_data: dict[str, np.ndarray]
     field_data: dict[str, float] = field(default_factory=dict)
     text: dict[str, str] = field(default_factory=dict)
+    frame_data: dict[str, np.ndarray] = field(default_factory=dict)
 
     def __post_init__(self) -> None:
         points = np.ascontiguousarray(self.points, dtype=float)
@@ -118,7 +124,14 @@ class TimeSeries:
         object.__setattr__(
             self, "field_data", {k: float(v) for k, v in dict(self.field_data).items()}
         )
-        object.__setattr__(self, "text", {str(k): str(v) for k, v in dict(self.text).items()})
+        text = {str(k): str(v) for k, v in dict(self.text).items()}
+        frame_data = {k: np.asarray(v, dtype=float) for k, v in dict(self.frame_data).items()}
+        if any(v.shape != times.shape for v in frame_data.values()):
+            raise ValueError("frame data must have one value per frame, shape (F,)")
+        if frame_data:
+            text[FRAME_DATA] = ",".join(frame_data)
+        object.__setattr__(self, "text", text)
+        object.__setattr__(self, "frame_data", frame_data)
 
     @property
     def cell_type(self) -> str:
@@ -132,6 +145,11 @@ class TimeSeries:
         """Point data of frame ``k``: name -> (P,) or (P, 3)."""
         return {name: values[k] for name, values in self.point_data.items()}
 
+    def frame_fields(self, k: int) -> dict[str, float]:
+        """Field data of frame ``k``: the series-wide scalars, its frame data, ``TimeValue``."""
+        own = {name: float(values[k]) for name, values in self.frame_data.items()}
+        return {**self.field_data, **own, TIME_VALUE: float(self.times[k])}
+
     def select(self, frames: Sequence[int]) -> TimeSeries:
         """The series restricted to the frames with the given indices."""
         index = np.asarray(frames, dtype=int)
@@ -142,6 +160,7 @@ class TimeSeries:
             {name: values[index] for name, values in self.point_data.items()},
             self.field_data,
             self.text,
+            {name: values[index] for name, values in self.frame_data.items()},
         )
 
 
@@ -220,8 +239,7 @@ def write_vtu(path: str | os.PathLike[str], series: TimeSeries, frame: int = 0) 
         The file written.
     """
     with staged_file(path) as target:
-        field_data = {**series.field_data, TIME_VALUE: float(series.times[frame])}
-        _write_vtu_file(target, series, frame, field_data)
+        _write_vtu_file(target, series, frame, series.frame_fields(frame))
     return [Path(path).expanduser()]
 
 
@@ -276,8 +294,7 @@ def write_pvd(path: str | os.PathLike[str], series: TimeSeries) -> list[Path]:
         frames.mkdir()
         digest = hashlib.sha256()
         for k, name in enumerate(names):
-            time = float(series.times[k])
-            _write_vtu_file(frames / name, series, k, {**series.field_data, TIME_VALUE: time})
+            _write_vtu_file(frames / name, series, k, series.frame_fields(k))
             digest.update(name.encode() + b"\0" + (frames / name).read_bytes())
         folder = f"{out.stem}_frames-{digest.hexdigest()[:12]}"
         write_marker(frames, "twoball export (PVD frames)")
@@ -403,6 +420,9 @@ def write_xdmf(path: str | os.PathLike[str], series: TimeSeries) -> list[Path]:
             writer.write_metadata(series.field_data, series.text)
             for k, time in enumerate(series.times):
                 writer.write_data(float(time), point_data=series.frame(k))
+                for name, values in series.frame_data.items():  # this step's own scalars
+                    value = repr(float(values[k]))
+                    writer.collection[-1].append(_grid_attribute(name, "Float", "8", "1", value))
         if not (scratch / h5_name).is_file():  # pragma: no cover - guards the workaround
             raise OSError(f"the HDF5 file {h5_name} was not written beside {out.name}")
     return [out, out.with_name(h5_name)]
@@ -451,8 +471,13 @@ def read_series(path: str | os.PathLike[str]) -> TimeSeries:
     files = [path.name] if fmt == "vtu" else _pvd_files(path)
     meshes = [read_vtu(path.parent / name) for name in files]
     fields = dict(meshes[0][1])
-    times = [f.pop(TIME_VALUE) for _, f, _ in meshes]
-    fields.pop(TIME_VALUE, None)
+    names = [n for n in meshes[0][2].get(FRAME_DATA, "").split(",") if n]
+    frame_data = {n: np.array([f.pop(n) for _, f, _ in meshes]) for n in [*names, TIME_VALUE]}
+    for name in frame_data:
+        fields.pop(name, None)
+    times = frame_data.pop(TIME_VALUE)
     mesh = meshes[0][0]
     point_data = stack([m.point_data for m, _, _ in meshes])
-    return TimeSeries(mesh.points, mesh.cells[0].data, times, point_data, fields, meshes[0][2])
+    return TimeSeries(
+        mesh.points, mesh.cells[0].data, times, point_data, fields, meshes[0][2], frame_data
+    )

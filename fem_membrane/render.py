@@ -87,6 +87,14 @@ class BallScene:
         object.__setattr__(self, "points", points)
         object.__setattr__(self, "cells", np.asarray(self.cells, dtype=np.int64))
 
+    def caption(self, k: int, warp: float) -> str:
+        """Text of frame ``k``: time, lift-off, where the body is, warp (short lines)."""
+        text = f"t = {self.times[k] * 1e3:6.2f} ms"
+        if self.t_liftoff is not None:
+            text += f"\nlift-off {self.t_liftoff * 1e3:.2f} ms\nbody "
+            text += "in flight" if self.times[k] >= self.t_liftoff - 1e-12 else "on the pole"
+        return text + (f"\nwarp x{warp:.3g}" if warp != 1.0 else "")
+
     def auto_warp(self) -> float:
         """Warp factor drawing the largest displacement at 15 % of R, never below 1.
 
@@ -304,15 +312,7 @@ class _Renderer:
         self.drawn.point_data.active_normals_name = "Normals"
         height = scene.radius + self.warp * float(scene.body[k]) + self.body_radius
         self.body.position = (0.0, 0.0, height)
-        text = f"t = {scene.times[k] * 1e3:6.2f} ms"
-        if scene.t_liftoff is not None:
-            flying = scene.times[k] >= scene.t_liftoff - 1e-12
-            # short lines: the corner annotation shrinks its font to fit the longest
-            text += f"\nlift-off {scene.t_liftoff * 1e3:.2f} ms"
-            text += "\nbody in flight" if flying else "\nbody on the pole"
-        if self.warp != 1.0:
-            text += f"\nwarp x{self.warp:.3g}"
-        self.clock.set_text("upper_left", text)
+        self.clock.set_text("upper_left", scene.caption(k, self.warp))
         self.plotter.render()
         return np.asarray(self.plotter.screenshot(return_img=True))[..., :3].copy()
 

@@ -69,7 +69,19 @@ def read_xdmf(path: Path) -> TimeSeries:
             handle.close()
     info = {i.get("Name", ""): i.get("Value", "nan") for i in domain.findall("Information")}
     field_data, text = _split_text(info)
-    return TimeSeries(points, cells.astype(np.int64), times, stack(frames), field_data, text)
+    names = [n for n in text.get("frame_data", "").split(",") if n]
+    frame_data = {n: np.array([_step_value(g, n) for g in steps]) for n in names}
+    return TimeSeries(
+        points, cells.astype(np.int64), times, stack(frames), field_data, text, frame_data
+    )
+
+
+def _step_value(step: ET.Element, name: str) -> float:
+    """The scalar grid attribute ``name`` of one XDMF time step (per-frame field data)."""
+    for attribute in step.iter("Attribute"):
+        if attribute.get("Name") == name and attribute.get("Center") == "Grid":
+            return float((attribute.findtext("DataItem") or "nan").strip())
+    raise ValueError(f"frame data {name!r} missing in an XDMF time step")
 
 
 def read_vtu(path: Path) -> tuple[meshio.Mesh, dict[str, float], dict[str, str]]:

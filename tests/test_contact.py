@@ -20,6 +20,7 @@ from twoball.modal.contact.caps import (
 )
 from twoball.modal.contact.events import integrate
 from twoball.modal.contact.system import ContactSystem
+from twoball.modal.errors import ParameterError
 from twoball.modal.legendre import legendre_series
 from twoball.modal.parameters import Case
 from twoball.modal.series import ModalSeries
@@ -311,3 +312,12 @@ def test_cli_plot_contact_sequence(tmp_path):
     assert bad.stderr.strip() == (
         f"twoball: error: --plot must be given only with --mass-ratio, got '{tmp_path / 'x.png'}'"
     )
+
+
+@pytest.mark.parametrize("mass_ratio", [0.0, 0.1])
+def test_a_body_on_a_stiff_ball_is_refused_not_solved_as_a_membrane(mass_ratio):
+    """The contact system holds the membrane's modes only: bending or gas would be dropped."""
+    with pytest.raises(ParameterError, match="mass_ratio.*bending or gas"):
+        twoball.liftoff(Case.preset("tennis"), mass_ratio=mass_ratio)
+    with pytest.raises(ParameterError, match="mass_ratio.*bending or gas"):
+        twoball.sweep({"mass_ratio": [0.01]}, Case.preset("volleyball"))

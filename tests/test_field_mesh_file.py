@@ -220,3 +220,14 @@ def test_refusals_that_do_not_apply(files, tmp_path, capsys):
     assert "--level must be left out with a mesh file" in refused(level, tmp_path / "c", capsys)
     with pytest.raises(ParameterError, match="^pole"):
         twoball.plot("waterfall", tmp_path / "w.png", CASE, pole=(0, 0, 1))
+
+
+@pytest.mark.parametrize("command", COMMANDS)
+def test_a_body_of_finite_mass_needs_a_generated_mesh(files, tmp_path, capsys, command):
+    """A body of finite mass is solved on generated meshes: a file or exact geometry is refused."""
+    argv = [*COMMANDS[command], "--mass-ratio", "0.01", "--mesh-file", str(files["vtu"])]
+    line = refused(argv, tmp_path / "a", capsys)
+    assert line.startswith("twoball: error: --mesh-file must be a generated mesh"), line
+    argv = [*COMMANDS[command], "--mass-ratio", "0.01", "--geometry", "exact"]
+    line = refused(argv, tmp_path / "b", capsys)
+    assert "--geometry must be isoparametric with mass_ratio" in line, line

@@ -16,7 +16,9 @@ import pytest
 from twoball.modal.filters import SpectralFilter
 from twoball.modal.legendre import displacement, legendre_series
 from twoball.modal.parameters import preset
+from twoball.verify.output.contact_fields import contact_options, coupled_model
 from twoball.verify.output.fields import ball_model
+from twoball.verify.output.figures.contact_pole import contact_pole_figure
 from twoball.verify.output.figures.eigen import (
     EigenErrors,
     eigen_errors_figure,
@@ -109,6 +111,9 @@ def every_figure(case, model, monkeypatch):
     t_end = model.t_end
     yield "plot waterfall", waterfall_figure(model, 6)
     yield "plot pole", pole_figure(model, 300)
+    body = contact_options(case, 0.004, None, None, None)
+    coupled = coupled_model(case, ("fem", "legendre"), body, level=1, order=1)
+    yield "plot pole with a body", contact_pole_figure(coupled, 300)
     yield "plot eigen", eigen_figure([eigen_table(lv, od, 2) for od in (1, 2) for lv in (0, 1)])
     # verify: pole.png (8 backends: split in columns), eigenvalues.png, energy.png
     yield "verify pole", pole_motion_figure(case, _traces(case, range(30, 70, 5)), t_end, 300)
@@ -185,7 +190,7 @@ def test_every_figure_labels_units_and_counts_curves(case, model, monkeypatch):
         for text in texts:
             box = text.get_window_extent(renderer)
             assert box.x0 >= -1 and box.x1 <= width + 1, f"{name}: {text.get_text()!r} cut off"
-    assert len(seen) == 17
+    assert len(seen) == 18
 
 
 def test_crowded_data_becomes_small_multiples(case, model):

@@ -140,11 +140,36 @@ CALLS: dict[str, dict[str, Callable[[Any, Path], Any]]] = {
     },
     "max_degree": {"plot": lambda v, tmp: twoball.plot("eigen", tmp / "p.png", max_degree=v)},
     "dpi": {"plot": lambda v, tmp: twoball.plot("eigen", tmp / "p.png", dpi=v)},
-    "mass_ratio": {"liftoff": lambda v, _: twoball.liftoff(CASE, mass_ratio=v)},
-    "contact_radius": {
-        "liftoff": lambda v, _: twoball.liftoff(CASE, mass_ratio=0.01, contact_radius=v)
+    "mass_ratio": {
+        "liftoff": lambda v, _: twoball.liftoff(CASE, mass_ratio=v),
+        "export": lambda v, tmp: twoball.export(tmp / "x.vtu", CASE, level=1, mass_ratio=v),
+        "render": lambda v, tmp: twoball.render(tmp / "x.png", CASE, level=1, mass_ratio=v),
+        "plot": lambda v, tmp: twoball.plot("pole", tmp / "p.png", CASE, level=1, mass_ratio=v),
     },
-    "restitution": {"liftoff": lambda v, _: twoball.liftoff(CASE, mass_ratio=0.01, restitution=v)},
+    "contact_radius": {
+        "liftoff": lambda v, _: twoball.liftoff(CASE, mass_ratio=0.01, contact_radius=v),
+        "export": lambda v, tmp: twoball.export(
+            tmp / "x.vtu", CASE, level=1, mass_ratio=0.01, contact_radius=v
+        ),
+        "render": lambda v, tmp: twoball.render(
+            tmp / "x.png", CASE, level=1, mass_ratio=0.01, contact_radius=v
+        ),
+        "plot": lambda v, tmp: twoball.plot(
+            "pole", tmp / "p.png", CASE, level=1, mass_ratio=0.01, contact_radius=v
+        ),
+    },
+    "restitution": {
+        "liftoff": lambda v, _: twoball.liftoff(CASE, mass_ratio=0.01, restitution=v),
+        "export": lambda v, tmp: twoball.export(
+            tmp / "x.vtu", CASE, level=1, mass_ratio=0.01, restitution=v
+        ),
+        "render": lambda v, tmp: twoball.render(
+            tmp / "x.png", CASE, level=1, mass_ratio=0.01, restitution=v
+        ),
+        "plot": lambda v, tmp: twoball.plot(
+            "pole", tmp / "p.png", CASE, level=1, mass_ratio=0.01, restitution=v
+        ),
+    },
     "bending": {"Case": lambda v, _: twoball.Case.preset("tennis").derive(bending=v)},
     "atmosphere": {"Case": lambda v, _: twoball.Case.preset("tennis").derive(atmosphere=v)},
     "youngs_modulus": {"flexural_rigidity": lambda v, _: flexural_rigidity(v, 0.003)},

@@ -132,6 +132,11 @@ CONTEXT: dict[tuple[str, str], list[str]] = {
     ("sweep", "--workers"): ["--values", "0:0.5:3"],
     ("liftoff", "--contact-radius"): ["--mass-ratio", "0.01"],
     ("liftoff", "--restitution"): ["--mass-ratio", "0.01"],
+    **{
+        (command, flag): ["--mass-ratio", "0.01"]
+        for command in ("export", "render", "plot")
+        for flag in ("--contact-radius", "--restitution")
+    },
     ("liftoff", "--bending"): ["--preset", "tennis"],
     ("liftoff", "--youngs-modulus"): ["--preset", "tennis", "--thickness", "0.003"],
     ("liftoff", "--thickness"): ["--preset", "tennis", "--youngs-modulus", "6e6"],
@@ -407,6 +412,65 @@ NOT_APPLICABLE: list[tuple[str, list[str]]] = [
             ("--instants", "5"),
         )
     ],
+    # an upper body of finite mass: plot pole, render and export only, with its own rules
+    ("--mass-ratio", ["plot", "eigen", "--mass-ratio", "0.1", "--out", "{tmp}/p.png"]),
+    ("--mass-ratio", ["plot", "waterfall", "--mass-ratio", "0.1", "--out", "{tmp}/p.png"]),
+    ("--mass-ratio", ["export", "--level", "1", "--mass-ratio", "0", "--out", "{tmp}/x.vtu"]),
+    (
+        "--mass-ratio",
+        ["render", "--preset", "tennis", "--mass-ratio", "0.1", "--out", "{tmp}/x.png"],
+    ),
+    *[
+        (flag, [*command, "--level", "1", flag, value, "--out", "{tmp}/x" + end])
+        for command, end in ((["export"], ".vtu"), (["render"], ".png"), (["plot", "pole"], ".png"))
+        for flag, value in (
+            ("--contact-radius", "0.01"),
+            ("--restitution", "0.5"),
+            ("--energy", "both"),
+        )
+    ],
+    (
+        "--energy",
+        [
+            "export",
+            "--level",
+            "1",
+            "--mass-ratio",
+            "0.1",
+            "--energy",
+            "bogus",
+            "--out",
+            "{tmp}/x.vtu",
+        ],
+    ),
+    (
+        "--route",
+        [
+            "export",
+            "--level",
+            "1",
+            "--mass-ratio",
+            "0.1",
+            "--route",
+            "krylov",
+            "--out",
+            "{tmp}/x.vtu",
+        ],
+    ),
+    (
+        "--recontact",
+        [
+            "render",
+            "--level",
+            "1",
+            "--mass-ratio",
+            "0.1",
+            "--recontact",
+            "paper",
+            "--out",
+            "{tmp}/x.png",
+        ],
+    ),
     ("--levels", ["plot", "eigen", "--levels", "-1", "--out", "{tmp}/p.png"]),
     ("--orders", ["plot", "eigen", "--orders", "7", "--out", "{tmp}/p.png"]),
     ("--backend", ["plot", "pole", "--backend", "bogus", "--out", "{tmp}/p.png"]),

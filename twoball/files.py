@@ -16,7 +16,6 @@ from typing import Any
 from twoball.field_model import (
     FIELD_BACKENDS,
     FieldMesh,
-    ball_model_of,
     check_backend,
     check_fps,
     check_frame_budget,
@@ -57,6 +56,10 @@ def export(
     t_end: float | None = None,
     progress: Step | None = None,
     route: str = "auto",
+    mass_ratio: float | None = None,
+    contact_radius: float | None = None,
+    restitution: float | None = None,
+    energy: str | None = None,
 ) -> ExportResult:
     """Write u, u_t, u_tt (SI) of both backends on the sphere mesh over time.
 
@@ -101,6 +104,11 @@ def export(
         FE mode shapes: every eigenpair below the cutoff (``full``), the Ritz pairs
         of the rational Krylov route converged on the whole field (``krylov``), or
         Krylov from 2000 unknowns on (``auto``, default; sphere P2 level 3 has 2562).
+    mass_ratio, contact_radius, restitution, energy : optional
+        An upper body of finite mass (docs/contact.rst; ``mass_ratio`` in (0, 100],
+        ``contact_radius`` [m]): the fields are the membrane coupled to it (full
+        eigen route), each frame gets field data ``s_m`` [m], ``s_t_m_s`` [m/s] and
+        ``contact`` (1/0), and the text ``contact_events`` lists every event (JSON, SI).
 
     Every file carries the case and :mod:`twoball.provenance` (VTU string field
     data ``provenance`` and ``case``, XDMF grid attributes); field names end in
@@ -109,6 +117,7 @@ def export(
     arguments = dict(locals())  # the call, for the provenance
     from twoball.fem_membrane.export import series_format, write_series
     from twoball.staging import check_file
+    from twoball.verify.output.contact_fields import contact_options, contact_series, model_of
     from twoball.verify.output.fields import (
         DEFAULT_FRAMES,
         check_frames,
@@ -124,6 +133,9 @@ def export(
     target = check_file(out)
     check_backend(backend)
     field = field_mesh(mesh, level, order, pole, geometry, cells=True, load=False)
+    contact = contact_options(
+        case, mass_ratio, contact_radius, restitution, energy, recontact=recontact, route=route
+    )
     if frames is not None and times is not None:
         raise ParameterError("frames", "left out when times are given", frames)
     if times is not None:
@@ -139,9 +151,10 @@ def export(
     else:
         check_frame_budget(case, frames or DEFAULT_FRAMES, "frames", field)
     say = progress or silent
-    model = ball_model_of(
+    model = model_of(
         case,
         FIELD_BACKENDS,
+        contact,
         field,
         initial=initial,
         sigma=sigma,
@@ -158,6 +171,7 @@ def export(
         selected = frame_times(model, frames, times, backend)
     say(f"fields at {len(selected)} frames")
     series = field_series(model, selected, backend)
+    series = series if contact is None else contact_series(series, model, backend)
     provenance = block(case, "twoball.export", arguments) | mesh_block(field)
     series = replace(series, text={**series.text, "provenance": json.dumps(provenance)})
     say(f"writing {target}")
@@ -197,6 +211,10 @@ def render(
     t_end: float | None = None,
     progress: Step | None = None,
     route: str = "auto",
+    mass_ratio: float | None = None,
+    contact_radius: float | None = None,
+    restitution: float | None = None,
+    energy: str | None = None,
 ) -> RenderResult:
     """Off-screen picture (``.png``) or animation (``.gif``, ``.mp4``) of the bouncing ball.
 
@@ -220,6 +238,9 @@ def render(
         Frames per second of an animation, in [0.001, 1000] (default 20); not with ``.png``.
     mesh, level, order, pole, geometry, initial, sigma, recontact, t_end, progress, route
         As in :func:`export` (``initial`` needs ``backend="fem"``).
+    mass_ratio, contact_radius, restitution, energy : optional
+        An upper body of finite mass: drawn at its height s(t) over the coupled
+        membrane, the caption saying when it is in contact (as in :func:`export`).
     """
     arguments = dict(locals())  # the call, for the provenance
     import numpy as np
@@ -233,6 +254,7 @@ def render(
         round_size,
     )
     from twoball.staging import check_file
+    from twoball.verify.output.contact_fields import contact_options, contact_scene, model_of
     from twoball.verify.output.fields import ball_scene, check_frames, check_times, liftoff_frame
     from twoball.verify.output.fields import window_s as window
 
@@ -252,6 +274,9 @@ def render(
         raise ParameterError("time", "used with .png only (use frames for animations)", time)
     frames = None if frames is None else check_frames(frames)
     field = field_mesh(mesh, level, order, pole, geometry, cells=True, load=False)
+    contact = contact_options(
+        case, mass_ratio, contact_radius, restitution, energy, recontact=recontact, route=route
+    )
     times = None
     if time is not None:
         from twoball.modal.errors import real_number
@@ -263,9 +288,10 @@ def render(
         count = DEFAULT_ANIMATION_FRAMES if frames is None else frames
         check_frame_budget(case, count, "frames", field)
     say = progress or silent
-    model = ball_model_of(
+    model = model_of(
         case,
         (backend,),
+        contact,
         field,
         initial=initial,
         sigma=sigma,
@@ -279,7 +305,7 @@ def render(
     else:
         count = DEFAULT_ANIMATION_FRAMES if frames is None else frames
         times = np.linspace(0.0, model.t_end_s, count)
-    scene = ball_scene(model, times, backend)
+    scene = (ball_scene if contact is None else contact_scene)(model, times, backend)
     say(f"drawing {len(times)} frame(s) into {target}")
     drawn = None if len(times) < 2 else lambda k: say(f"frame {k}/{len(times)} into {target}")
     render_scene(target, scene, warp=warp, size=size, fps=fps, progress=drawn)
@@ -318,6 +344,10 @@ def plot(
     progress: Step | None = None,
     route: str = "auto",
     dpi: float | None = None,
+    mass_ratio: float | None = None,
+    contact_radius: float | None = None,
+    restitution: float | None = None,
+    energy: str | None = None,
 ) -> PlotResult:
     """Figures: ``waterfall`` of u(phi) (Fig. 6), ``pole`` motion, FE ``eigen`` errors.
 
@@ -345,6 +375,10 @@ def plot(
     dpi : float, optional
         Resolution of raster formats (PNG, ...) [dots per inch], 50 to 1200;
         default 300.
+    mass_ratio, contact_radius, restitution, energy : optional
+        ``pole`` only: an upper body of finite mass; the panels show the cap
+        average of the coupled membrane with the body's path s(t), every impact
+        and separation marked (as in :func:`export`).
 
     Every argument that the chosen ``kind`` does not use is refused
     (:class:`ParameterError`), never ignored.  ``pole`` with both backends
@@ -354,7 +388,9 @@ def plot(
     """
     arguments = dict(locals())  # the call, for the provenance
     from twoball.staging import check_file
+    from twoball.verify.output.contact_fields import model_of, plot_contact
     from twoball.verify.output.figures import PLOT_KINDS, check_dpi, figure_format, save_figure
+    from twoball.verify.output.figures.contact_pole import contact_pole_figure
     from twoball.verify.output.figures.eigen import eigen_figure, eigen_table
     from twoball.verify.output.figures.pole import pole_figure
     from twoball.verify.output.figures.waterfall import WATERFALL_INSTANTS, waterfall_figure
@@ -364,6 +400,10 @@ def plot(
     figure_format(out, "out")
     dpi = check_dpi(dpi, "dpi")
     target = check_file(out)
+    contact = plot_contact(
+        kind, case, mass_ratio, contact_radius, restitution, energy,
+        recontact=recontact, route=route,
+    )  # fmt: skip
     rows: list[tuple[str, str]] = []
     reports: dict[str, LiftoffReport] = {}
     warnings: list[str] = []
@@ -416,9 +456,10 @@ def plot(
         check_frame_budget(
             Case.preset("basketball") if case is None else case, instants, "instants", field
         )
-        model = ball_model_of(
+        model = model_of(
             Case.preset("basketball") if case is None else case,
             chosen,
+            contact,
             field,
             initial=initial,
             sigma=sigma,
@@ -427,7 +468,12 @@ def plot(
             progress=progress,
             route=route,
         )
-        figure = waterfall_figure(model, instants) if kind == "waterfall" else pole_figure(model)
+        if contact is not None:
+            figure = contact_pole_figure(model)
+        elif kind == "waterfall":
+            figure = waterfall_figure(model, instants)
+        else:
+            figure = pole_figure(model)
         for name, solved in model.backends.items():
             report = solved.report
             reports[name] = report

@@ -44,6 +44,9 @@ def check_contact_options(
         raise ParameterError("restitution", "a number in [0, 1]", restitution)
     if energy not in ENERGY_OPTIONS:
         raise ParameterError("energy", "one of " + ", ".join(ENERGY_OPTIONS), energy)
+    if case.stiff:  # the contact system is built on the membrane's modes (eq. (3.11)) only
+        valid = "left out with bending or gas (the contact model has the membrane's modes only)"
+        raise ParameterError("mass_ratio", valid, mass_ratio)
     if contact_radius is None:
         return DEFAULT_RADIUS_FRACTION * case.radius
     if isinstance(contact_radius, bool) or not isinstance(contact_radius, (int, float)):

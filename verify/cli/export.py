@@ -10,6 +10,8 @@ import argparse
 from twoball.fem_membrane.export import FORMATS
 from twoball.verify.cli.case_options import add_case_options, case_from_options
 from twoball.verify.cli.console import console, key_value_table, number, print_notes, print_warnings
+from twoball.verify.cli.contact_options import VALID_RANGES as CONTACT_RANGES
+from twoball.verify.cli.contact_options import add_contact_options, contact_arguments
 from twoball.verify.cli.mesh_options import (
     SPHERE_KINDS,
     add_mesh_options,
@@ -20,7 +22,11 @@ from twoball.verify.cli.mesh_options import (
 from twoball.verify.cli.mesh_options import VALID_RANGES as MESH_RANGES
 from twoball.verify.output.fields import DEFAULT_FRAMES, MAX_FRAMES, parse_times
 
-VALID_RANGES: dict[str, str] = {**MESH_RANGES, "--frames": f"an integer in [1, {MAX_FRAMES}]"}
+VALID_RANGES: dict[str, str] = {
+    **MESH_RANGES,
+    **CONTACT_RANGES,
+    "--frames": f"an integer in [1, {MAX_FRAMES}]",
+}
 
 
 def add_backend_option(parser: argparse.ArgumentParser) -> None:
@@ -66,6 +72,7 @@ def run(args: argparse.Namespace) -> int:
             t_end=args.t_end,
             **mesh_arguments(args),
             **route_arguments(args),
+            **contact_arguments(args),
             progress=progress,
         )
     files, report, selected = result.files, result.report, result.times_s
@@ -106,4 +113,7 @@ def register(parser: argparse.ArgumentParser) -> None:
     )
     add_frame_options(parser, DEFAULT_FRAMES)
     parser.add_argument("--out", required=True, metavar="PATH", help="main output file")
+    add_contact_options(
+        parser, "m1/m2 in (0, 100]: the membrane coupled to the body, its path in field data"
+    )
     parser.set_defaults(run=run)

@@ -17,15 +17,19 @@ from twoball.verify.cli.console import (
     print_notes,
     print_warnings,
 )
+from twoball.verify.cli.contact_options import VALID_RANGES as CONTACT_RANGES
+from twoball.verify.cli.contact_options import add_contact_options, contact_arguments
+from twoball.verify.cli.mesh_options import VALID_RANGES as MESH_RANGES
 from twoball.verify.cli.mesh_options import (
-    VALID_RANGES,
     add_mesh_options,
     add_time_options,
     mesh_arguments,
     time_arguments,
 )
 
-__all__ = ["VALID_RANGES", "register", "run"]
+__all__ = ["VALID_RANGES", "contact_arguments", "register", "run"]
+
+VALID_RANGES: dict[str, str] = {**MESH_RANGES, **CONTACT_RANGES}
 
 
 def _stiffness_rows(case) -> list[tuple[str, str]]:
@@ -112,12 +116,6 @@ def contact_rows(report) -> list[tuple[str, str]]:
     return rows
 
 
-def contact_arguments(args: argparse.Namespace) -> dict:
-    """The finite-mass options as :func:`twoball.liftoff` arguments (none if not given)."""
-    names = ("mass_ratio", "contact_radius", "restitution", "energy")
-    return {n: getattr(args, n) for n in names if getattr(args, n, None) is not None}
-
-
 def solve_from_options(args: argparse.Namespace) -> LiftoffReport:
     """Call :func:`twoball.liftoff` with the case, model, mesh and time options."""
     from twoball.progress import QUICK, Reporter
@@ -174,17 +172,7 @@ def register(parser: argparse.ArgumentParser) -> None:
     add_case_options(parser)
     add_mesh_options(parser, geometry=True)
     add_time_options(parser)
-    group = parser.add_argument_group("upper body of finite mass (docs: contact)")
-    group.add_argument(
-        "--mass-ratio", type=float, metavar="MU", help="m1/m2 in [0, 100] (0: massless criteria)"
-    )
-    group.add_argument(
-        "--contact-radius", type=float, metavar="A", help="contact cap radius a [m] (default R/10)"
-    )
-    group.add_argument(
-        "--restitution", type=float, metavar="E", help="Newton's e at re-contact (default 0)"
-    )
-    group.add_argument("--energy", help="energy at t = 0: ball (eq. (3.6)) or both bodies")
+    group = add_contact_options(parser)
     group.add_argument(
         "--plot",
         metavar="FILE.png",

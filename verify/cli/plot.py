@@ -15,6 +15,8 @@ from twoball.verify.cli.case_options import (
     case_options_given,
 )
 from twoball.verify.cli.console import console, key_value_table, print_notes, print_warnings
+from twoball.verify.cli.contact_options import VALID_RANGES as CONTACT_RANGES
+from twoball.verify.cli.contact_options import add_contact_options, contact_arguments
 from twoball.verify.cli.mesh_options import (
     SPHERE_KINDS,
     add_mesh_options,
@@ -29,6 +31,7 @@ from twoball.verify.output.figures.waterfall import WATERFALL_INSTANTS
 
 VALID_RANGES: dict[str, str] = {
     **MESH_RANGES,
+    **CONTACT_RANGES,
     "--instants": "an integer >= 2",
     "--max-degree": "an integer >= 1",
     "--dpi": f"a number of dots per inch in [{DPI_RANGE[0]}, {DPI_RANGE[1]}]",
@@ -58,7 +61,7 @@ def run(args: argparse.Namespace) -> int:
     from twoball.files import plot
     from twoball.progress import Reporter
 
-    options = {**mesh_arguments(args), **route_arguments(args)}
+    options = {**mesh_arguments(args), **route_arguments(args), **contact_arguments(args)}
     levels = None
     if args.levels is not None:
         levels = parse_list(args.levels, "--levels", "comma-separated levels >= 0, e.g. 1,2")
@@ -137,5 +140,8 @@ def register(parser: argparse.ArgumentParser) -> None:
         type=float,
         help=f"resolution of raster formats (.png, ...) in dots per inch, "
         f"{DPI_RANGE[0]} to {DPI_RANGE[1]} (default {DPI})",
+    )
+    add_contact_options(
+        parser, "pole: m1/m2 in (0, 100], the cap and the body's path with every event"
     )
     parser.set_defaults(run=run)

@@ -11,6 +11,8 @@ from twoball.fem_membrane.render import DEFAULT_SIZE, check_warp
 from twoball.modal.errors import ParameterError
 from twoball.verify.cli.case_options import add_case_options, case_from_options
 from twoball.verify.cli.console import console, key_value_table, print_notes, print_warnings
+from twoball.verify.cli.contact_options import VALID_RANGES as CONTACT_RANGES
+from twoball.verify.cli.contact_options import add_contact_options, contact_arguments
 from twoball.verify.cli.export import add_backend_option
 from twoball.verify.cli.mesh_options import (
     SPHERE_KINDS,
@@ -26,6 +28,7 @@ from twoball.files import DEFAULT_ANIMATION_FRAMES
 
 VALID_RANGES: dict[str, str] = {
     **MESH_RANGES,
+    **CONTACT_RANGES,
     "--time": "a time >= 0 in seconds within the modelled window",
     "--frames": f"an integer in [1, {MAX_FRAMES}]",
     "--fps": "a number in [0.001, 1000]",
@@ -63,6 +66,7 @@ def run(args: argparse.Namespace) -> int:
             t_end=args.t_end,
             **mesh_arguments(args),
             **route_arguments(args),
+            **contact_arguments(args),
             progress=progress,
         )
     times = result.times_s
@@ -119,4 +123,7 @@ def register(parser: argparse.ArgumentParser) -> None:
         "--fps", type=float, help="frames per second of a .gif or .mp4 (default 20)"
     )
     parser.set_defaults(initial=None)  # the API's default; refused with --backend legendre
+    add_contact_options(
+        parser, "m1/m2 in (0, 100]: the body over the coupled membrane, in contact or not"
+    )
     parser.set_defaults(run=run)
