@@ -71,6 +71,18 @@ def cap_functional(
     return f
 
 
+def model_facts(model: Any, mesh: str, cap: np.ndarray) -> dict[str, Any]:
+    """Facts of a contact model for reports and files: unknowns, mesh, order, modes, cap sum."""
+    return {
+        "dofs": model.space.dofs,
+        "mesh": model.space.name,
+        "mesh_kind": mesh,
+        "order": model.space.order,
+        "modes_computed": len(model.series.omega),
+        "cap_functional_sum": float(cap.sum()),
+    }
+
+
 def fem_contact_model(
     phi_a: float,
     damping: float,
@@ -103,15 +115,7 @@ def fem_contact_model(
         model = modal_model(phi_a, damping, filter, mesh=sphere_mesh, order=None, route="full")
     f = cap_functional(model.space, theta, sphere_mesh)
     contact = model.pairs.vectors.T @ f
-    info = {
-        "dofs": model.space.dofs,
-        "mesh": model.space.name,
-        "mesh_kind": mesh,
-        "order": model.space.order,
-        "modes_computed": len(model.series.omega),
-        "cap_functional_sum": float(f.sum()),
-    }
-    return model.series, contact, info
+    return model.series, contact, model_facts(model, mesh, f)
 
 
 def fem_contact(

@@ -15,7 +15,7 @@ from typing import Any
 import numpy as np
 
 from .build import DEFAULT_LEVEL
-from .contact import cap_functional
+from .contact import cap_functional, model_facts
 from .mesh import SphereMesh, icosphere, ring_sphere
 
 
@@ -101,15 +101,7 @@ def fem_contact_fields(
         f"{kind} level {lvl}, P{order}",
         membrane.phi_a if mesh == "ring" else None,
     )
-    info = {
-        "dofs": model.space.dofs,
-        "mesh": model.space.name,
-        "mesh_kind": mesh,
-        "order": model.space.order,
-        "modes_computed": len(model.series.omega),
-        "cap_functional_sum": float(f.sum()),
-        "cap_angle_rad": theta,
-    }
+    info = {**model_facts(model, mesh, f), "cap_angle_rad": theta}
     report = solve_contact(
         case, model.series, vectors.T @ f,
         mass_ratio=float(mass_ratio), contact_radius_m=radius, restitution=float(restitution),

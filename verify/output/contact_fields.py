@@ -329,19 +329,10 @@ def model_of(
     spec = field.spec
     if spec.kind == FILE:
         valid = "a generated mesh (sphere or ring) with mass_ratio, not a mesh file"
-        shown = spec.source if isinstance(spec.source, str | os.PathLike) else "a mesh object"
-        raise ParameterError("mesh", valid, os.fspath(shown) if shown != "a mesh object" else shown)
+        path = isinstance(spec.source, str | os.PathLike)
+        raise ParameterError("mesh", valid, os.fspath(spec.source) if path else "a mesh object")
     if spec.geometry != "isoparametric":
         raise ParameterError("geometry", "isoparametric with mass_ratio", spec.geometry)
-    initial = check_initial(options.get("initial"), backends)
-    t_end_dimensionless(case, options.get("t_end"))  # checked before any progress line
-    return coupled_model(
-        case, backends, contact, mesh=spec.kind, level=spec.level, order=spec.order,
-        initial=initial, sigma=options.get("sigma", "lanczos"), t_end_s=options.get("t_end"),
-        progress=options.get("progress"),
-    )  # fmt: skip
-    if options.get("cells") and spec.order > 2:  # VTK and pyvista cells stop at quadratic
-        raise ParameterError("order", "1 or 2 for field files and pictures", spec.order)
     initial = check_initial(options.get("initial"), backends)
     t_end_dimensionless(case, options.get("t_end"))  # checked before any progress line
     return coupled_model(
