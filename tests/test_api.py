@@ -18,6 +18,8 @@ from pathlib import Path
 
 import numpy as np
 import pytest
+from twoball.modal.errors import ParameterError
+from twoball.modal.parameters import Case
 from twoball.verify.cli.main import main
 
 import twoball
@@ -355,3 +357,18 @@ def test_quickstart_examples_run(tmp_path, monkeypatch, capsys):
     for block in blocks:
         exec(compile(block, "docs/quickstart.rst", "exec"), namespace)  # noqa: S102
     assert "t_l =" in capsys.readouterr().out
+
+
+@pytest.mark.parametrize(
+    "call",
+    [
+        lambda: twoball.export(Case.preset("basketball"), "a.vtu"),  # arguments swapped
+        lambda: twoball.render(3, "a.png"),
+        lambda: twoball.plot("pole", None),
+    ],
+)
+def test_an_output_that_is_not_a_path_is_refused_by_name(call, tmp_path, monkeypatch):
+    monkeypatch.chdir(tmp_path)
+    with pytest.raises(ParameterError, match=r"^out must be a file path \(str or os.PathLike\)"):
+        call()
+    assert not any(tmp_path.iterdir())

@@ -30,6 +30,7 @@ from twoball.modal.parameters import Case
 from twoball.modal.report import LiftoffReport
 from twoball.progress import Step, silent
 from twoball.provenance import block
+from twoball.staging import check_path_type
 
 __all__ = ["ExportResult", "PlotResult", "RenderResult", "export", "plot", "render"]
 
@@ -115,6 +116,7 @@ def export(
     their unit (``u_m``, ``u_t_m_s``, ``u_tt_m_s2``, ...).
     """
     arguments = dict(locals())  # the call, for the provenance
+    check_path_type(out)
     from twoball.fem_membrane.export import series_format, write_series
     from twoball.staging import check_file
     from twoball.verify.output.contact_fields import contact_options, contact_series, model_of
@@ -243,6 +245,7 @@ def render(
         membrane, the caption saying when it is in contact (as in :func:`export`).
     """
     arguments = dict(locals())  # the call, for the provenance
+    check_path_type(out)
     import numpy as np
 
     from twoball.fem_membrane.render import (
@@ -387,6 +390,7 @@ def plot(
     beside the waterfall.
     """
     arguments = dict(locals())  # the call, for the provenance
+    check_path_type(out)
     from twoball.staging import check_file
     from twoball.verify.output.contact_fields import model_of, plot_contact
     from twoball.verify.output.figures import PLOT_KINDS, check_dpi, figure_format, save_figure

@@ -131,6 +131,16 @@ def _usable_target(path: str | os.PathLike[str], param: str, valid: str) -> Path
     return out
 
 
+def check_path_type(path: object, param: str = "out") -> str | os.PathLike[str]:
+    """``path`` itself if it is a str or os.PathLike (else ParameterError naming ``param``)."""
+    if isinstance(path, bool) or not isinstance(path, str | os.PathLike):
+        from twoball.modal.errors import ParameterError
+
+        shown = path if isinstance(path, int | float) else type(path).__name__
+        raise ParameterError(param, "a file path (str or os.PathLike)", shown)
+    return path
+
+
 def check_file(path: str | os.PathLike[str], param: str = "out") -> Path:
     """Check, before any work, that a file (or a collection's main file) can be written.
 
