@@ -93,8 +93,9 @@ def fem_contact_model(
     level: int | None = None,
     elements: int | None = None,
     order: int | None = 2,
+    initial: str = "projection",
 ) -> tuple[Any, np.ndarray, dict[str, Any]]:
-    """Modal series (full eigen route), contact vector and details for one FE mesh."""
+    """Modal model (full eigen route), contact vector and details for one FE mesh."""
     from .solve import modal_model
 
     if mesh not in ("axisym", "sphere", "ring"):
@@ -105,20 +106,23 @@ def fem_contact_model(
         if level is not None:
             raise ParameterError("level", "left out with mesh axisym", level)
         model = modal_model(
-            phi_a, damping, filter, mesh="axisym", elements=elements, order=order, route="full"
-        )
+            phi_a, damping, filter, mesh="axisym", elements=elements, order=order,
+            initial=initial, route="full",
+        )  # fmt: skip
     else:
         if elements is not None:
             raise ParameterError("elements", "left out with a sphere mesh", elements)
         lvl = DEFAULT_LEVEL if level is None else level
         sphere_mesh = icosphere(lvl, order) if mesh == "sphere" else ring_sphere(lvl, phi_a, order)
-        model = modal_model(phi_a, damping, filter, mesh=sphere_mesh, order=None, route="full")
+        model = modal_model(
+            phi_a, damping, filter, mesh=sphere_mesh, order=None, initial=initial, route="full"
+        )
     f = cap_functional(model.space, theta, sphere_mesh)
     contact = model.pairs.vectors.T @ f
-    return model.series, contact, model_facts(model, mesh, f)
+    return model, contact, model_facts(model, mesh, f)
 
 
-def fem_contact(
+def fem_contact_solution(
     case: Any,
     mass_ratio: float,
     contact_radius: float | None = None,
@@ -131,12 +135,15 @@ def fem_contact(
     level: int | None = None,
     elements: int | None = None,
     order: int | None = None,
-) -> Any:
-    """Finite-mass lift-off on the finite-element modes (full eigen route), in SI.
+    initial: str = "projection",
+) -> tuple[Any, Any]:
+    """The finite-element modal model (full eigen route) and its contact report (SI).
 
     The same options and the same shared solver as
     :func:`twoball.modal.contact.report.legendre_contact`; ``mesh`` is ``sphere``
-    (default, level 3), ``ring`` or ``axisym`` (default 400 elements), P1 or P2.
+    (default, level 3), ``ring`` or ``axisym`` (default 400 elements).  The model
+    holds the eigenvectors the contact solver moved (fields of
+    :mod:`twoball.fem_membrane.contact_fields`).
     """
     from twoball.modal.contact.caps import cap_angle
     from twoball.modal.contact.report import check_contact_options, membrane_case, solve_contact
@@ -151,7 +158,7 @@ def fem_contact(
     check_fem(spec.kind, spec.level, spec.elements, spec.order, case.modes, "full")
     membrane = membrane_case(case, float(mass_ratio), energy)
     theta = cap_angle(radius, case.radius)
-    series, contact, info = fem_contact_model(
+    model, contact, info = fem_contact_model(
         membrane.phi_a,
         case.damping,
         SpectralFilter(sigma, case.modes),
@@ -160,10 +167,12 @@ def fem_contact(
         level=spec.level,
         elements=spec.elements,
         order=spec.order,
+        initial=initial,
     )
-    return solve_contact(
-        case, series, contact,
+    report = solve_contact(
+        case, model.series, contact,
         mass_ratio=float(mass_ratio), contact_radius_m=radius, restitution=float(restitution),
         energy=energy, backend="fem", sigma=sigma, t_end=t_end_dimensionless(case, t_end_s),
         membrane=membrane, extra={"cap_angle_rad": theta, **info},
     )  # fmt: skip
+    return model, report

@@ -2,8 +2,9 @@
 
 Exports and pictures of the membrane under a body of finite mass need the mode
 shapes at the nodes *and* the contact solver's modal state on the same modes.
-This builds both from one eigen solve (the full route: every eigenpair below the
-filter cutoff, as :func:`twoball.fem_membrane.contact.fem_contact_model`), so the
+This takes both from the one eigen solve of the contact solution (the full route:
+every eigenpair below the filter cutoff,
+:func:`twoball.fem_membrane.contact.fem_contact_solution`), so the
 drawn field ``u = sum_k q_k phi_k`` is exactly the one the contact solver moved
 (eq. (C1) of docs/contact.rst).  Dimensionless inside; the report is SI.
 """
@@ -15,8 +16,7 @@ from typing import Any
 import numpy as np
 
 from .build import DEFAULT_LEVEL
-from .contact import cap_functional, model_facts
-from .mesh import SphereMesh, icosphere, ring_sphere
+from .mesh import SphereMesh
 
 
 def fem_contact_fields(
@@ -64,48 +64,15 @@ def fem_contact_fields(
     report : ContactReport
         The contact solution on these modes (``report.system``, ``report.history``).
     """
-    from twoball.modal.contact.caps import cap_angle
-    from twoball.modal.contact.report import check_contact_options, membrane_case, solve_contact
-    from twoball.modal.filters import SpectralFilter
-    from twoball.modal.report import t_end_dimensionless
+    from .contact import fem_contact_solution
+    from .space import dof_mesh
 
-    from twoball.budget import check_fem
-
-    from .solve import modal_model
-
-    radius = check_contact_options(case, mass_ratio, contact_radius, restitution, energy)
-    lvl = DEFAULT_LEVEL if level is None else level
-    check_fem(mesh, lvl, None, order, case.modes, "full")  # before any allocation
-    membrane = membrane_case(case, float(mass_ratio), energy)
-    theta = cap_angle(radius, case.radius)
-    if mesh == "ring":
-        geometry = ring_sphere(lvl, membrane.phi_a, order)
-    else:
-        geometry = icosphere(lvl, order)
-    model = modal_model(
-        membrane.phi_a,
-        case.damping,
-        SpectralFilter(sigma, case.modes),
-        mesh=geometry,
-        order=None,
-        initial=initial,
-        route="full",
-    )
-    f = cap_functional(model.space, theta, geometry)
-    vectors = model.pairs.vectors
-    basis = model.space.basis
-    kind = "icosphere" if mesh == "sphere" else "ring sphere"
-    nodes = SphereMesh(
-        basis.doflocs.T,
-        basis.element_dofs.T,
-        f"{kind} level {lvl}, P{order}",
-        membrane.phi_a if mesh == "ring" else None,
-    )
-    info = {**model_facts(model, mesh, f), "cap_angle_rad": theta}
-    report = solve_contact(
-        case, model.series, vectors.T @ f,
-        mass_ratio=float(mass_ratio), contact_radius_m=radius, restitution=float(restitution),
-        energy=energy, backend="fem", sigma=sigma, t_end=t_end_dimensionless(case, t_end_s),
-        membrane=membrane, extra=info,
+    model, report = fem_contact_solution(
+        case, mass_ratio, contact_radius, sigma=sigma, restitution=restitution, energy=energy,
+        t_end_s=t_end_s, mesh=mesh, level=level, order=order, initial=initial,
     )  # fmt: skip
-    return nodes, vectors.T, model.series, report
+    kind = "icosphere" if mesh == "sphere" else "ring sphere"
+    lvl = DEFAULT_LEVEL if level is None else level
+    ring = report.membrane.phi_a if mesh == "ring" else None
+    nodes = dof_mesh(model.space.basis, f"{kind} level {lvl}, P{model.space.order}", ring)
+    return nodes, model.pairs.vectors.T, model.series, report

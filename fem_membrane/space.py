@@ -243,6 +243,18 @@ def surface_basis(
     return CellBasis(topo, elem, mapping=mapping, intorder=intorder, dofs=dofs)
 
 
+def dof_mesh(basis: CellBasis, name: str, ring: float | None = None) -> SphereMesh:
+    """The unit-sphere mesh whose nodes are the degrees of freedom of ``basis``.
+
+    For Lagrange elements every degree of freedom sits at a node of the element:
+    the nodes are ``doflocs`` and the cells their numbering (skfem's local order:
+    vertices, then edges 01, 12, 20 -- meshio's ``triangle6`` at order 2), so
+    eigenvectors are values at these nodes as they are.  ``ring``: phi_a of a
+    ring sphere.
+    """
+    return SphereMesh(basis.doflocs.T, basis.element_dofs.T, name, ring)
+
+
 def dof_nodes(basis: CellBasis, mesh: SphereMesh) -> np.ndarray:
     """For each degree of freedom, the index of the mesh node at the same place.
 

@@ -71,3 +71,14 @@ def bounded(
     if not ((out > low if low_open else out >= low) and out <= high):
         raise ParameterError(name, valid, value)
     return out
+
+
+def refuse_given(valid: str, **options: object) -> None:
+    """Refuse the first of ``options`` that is not None: ``name must be VALID``.
+
+    For options that only act together with another, e.g.
+    ``refuse_given("given only with mass_ratio", restitution=...)``.
+    """
+    for name, value in options.items():
+        if value is not None:
+            raise ParameterError(name, valid, value)

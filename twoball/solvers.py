@@ -12,7 +12,7 @@ from dataclasses import dataclass, field, replace
 from typing import Any
 
 from twoball.mesh_options import refuse_mesh_options
-from twoball.modal.errors import ParameterError
+from twoball.modal.errors import ParameterError, refuse_given
 from twoball.modal.parameters import Case
 from twoball.modal.report import LiftoffReport
 from twoball.progress import Step
@@ -108,13 +108,12 @@ def liftoff(
             "energy": energy,
         }
         return replace(contact, provenance=block(case, "twoball.liftoff", arguments))
-    for name, value, default in (
-        ("contact_radius", contact_radius, None),
-        ("restitution", restitution, None),
-        ("energy", energy, None),
-    ):
-        if value != default:
-            raise ParameterError(name, "given only with mass_ratio", value)
+    refuse_given(
+        "given only with mass_ratio",
+        contact_radius=contact_radius,
+        restitution=restitution,
+        energy=energy,
+    )
     fem_options = {
         "mesh": mesh,
         "level": level,
@@ -170,13 +169,14 @@ def _contact_liftoff(
                 raise ParameterError(
                     name, "left out with mass_ratio (modal route only)", fem_options[name]
                 )
-        from twoball.fem_membrane.contact import fem_contact
+        from twoball.fem_membrane.contact import fem_contact_solution
 
-        return fem_contact(
+        _, report = fem_contact_solution(
             case, mass_ratio, contact_radius, sigma=sigma, restitution=restitution,
             energy=energy, t_end_s=t_end, mesh=fem_options["mesh"], level=fem_options["level"],
             elements=fem_options["elements"], order=fem_options["order"],
         )  # fmt: skip
+        return report
     if backend != "legendre":
         raise ParameterError("backend", "one of " + ", ".join(BACKENDS), backend)
     refuse_mesh_options("with backend legendre (no mesh, no time steps)", **fem_options)

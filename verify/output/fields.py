@@ -249,6 +249,7 @@ def fem_nodal_series(
         ``dofs``, ``eigenpairs`` and ``eigen_seconds``.
     """
     from twoball.fem_membrane.solve import modal_model
+    from twoball.fem_membrane.space import dof_mesh
     from twoball.modal.liftoff import DEFAULT_T_END
 
     own = isinstance(mesh, SphereMesh)
@@ -273,12 +274,8 @@ def fem_nodal_series(
         name = mesh.name
     else:
         name = ("icosphere" if mesh == "sphere" else "ring sphere") + f" level {level}"
-    nodes = SphereMesh(
-        basis.doflocs.T,
-        basis.element_dofs.T,
-        f"{name}, P{model.space.order}",
-        case.phi_a if mesh == "ring" else None,
-    )
+    ring = case.phi_a if mesh == "ring" else None
+    nodes = dof_mesh(basis, f"{name}, P{model.space.order}", ring)
     node = nodes.pole_node  # None: the pole inside an element (a user's mesh)
     if node is not None and node != model.space.pole:  # pragma: no cover - dof = node premise
         raise ValueError("the pole node is not the pole degree of freedom")
