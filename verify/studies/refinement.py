@@ -76,9 +76,9 @@ LIFTOFF_BAND = {
 }  # sphere P3, P4: reported, not checked (see LIFTOFF_NOTE)
 LIFTOFF_NOTE = (
     "P3 and P4 on the sphere: t_l, v_l, the pole trajectory and the end energy are reported "
-    "with their observed orders, not checked against a band (the kink of F cuts the curved "
-    "triangles at level-dependent places, and the errors approach the 1e-10 accuracy of the "
-    "kink quadrature and of the eigen routes within the default levels)."
+    "with their observed orders, not checked against a band: on the default levels they are "
+    "not yet asymptotic, and v_l, a point value, converges at the pointwise rate of the "
+    "elements (P + 1, or P + 2 at a vertex for even P), not at 2P (docs/verification.rst)."
 )
 ENERGY_BAND = {
     ("axisym", 1): OrderBand(2.0, 0.3, 0.3),
@@ -90,17 +90,18 @@ ENERGY_BAND = {
     ("sphere", 3): OrderBand(1.0, 0.5, 1.0),
     ("sphere", 4): OrderBand(1.0, 0.5, 1.0),
 }
-# v_l on the icosphere: the kink of F crosses the triangles at positions that change from
-# level to level, which adds an irregular component to this one point value (observed local
-# orders 2.3 to 3.0 for P1 on levels 3-5, and 10, 2.0, 5.0 for P2 on levels 2-5 while t_l
-# keeps 3.7-4.0).  Its observed order is stated, not checked; t_l, the trajectory and the
-# energy carry the band.
+# v_l on the icosphere: a point value.  The per-degree pole amplitudes sum_k q_k(0) phi_k(pole)
+# carry the pointwise error of the elements, whose sign changes from degree to degree and from
+# level to level (a smooth datum without the kink of F shows the same), so at P1, P2 the sum
+# does not settle into one order on the default levels (observed local orders 2.3 to 3.0 for
+# P1 on levels 3-5, and 10, 2.0, 5.0 for P2 on levels 2-5, while t_l keeps 3.7-4.0).  Its
+# observed order is stated, not checked; t_l, the trajectory and the energy carry the band.
 UNCHECKED_ON_SPHERE = ("v_l",)
 SPHERE_NOTE = (
     "v_l on the icosphere is reported with its observed order but not checked against a band: "
-    "the kink of F at phi_a cuts the triangles at level-dependent places, which makes the "
-    "convergence of this point value irregular (t_l, the pole trajectory and the energies are "
-    "checked)."
+    "it is a point value, and the pointwise errors of the modes at the pole change sign from "
+    "degree to degree and level to level, which makes its convergence irregular on these "
+    "levels (t_l, the pole trajectory and the energies are checked)."
 )
 
 
