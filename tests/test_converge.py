@@ -91,6 +91,9 @@ def test_converge_refuses_an_old_report_holding_a_user_file(capsys, tmp_path):
         (["h", "--levels", "a:b"], "--levels"),
         (["h", "--levels", "2:99"], "--levels"),
         (["nonsense"], "STUDY"),
+        (["--study", "nonsense"], "--study"),
+        ([], "STUDY"),
+        (["h", "--study", "order"], "STUDY"),
         (["modes", "--modes-list", "30,20,40"], "--modes-list"),
     ],
 )
@@ -102,6 +105,19 @@ def test_bad_input_is_one_line_exit_2_and_no_files(capsys, tmp_path, argv, flag)
     assert exit_info.value.code == 2
     assert err.count("\n") == 1 and err.startswith("twoball: error:") and flag in err
     assert not out.exists() and list(tmp_path.iterdir()) == []
+
+
+def test_study_option_is_the_positional_study(capsys, tmp_path):
+    """``converge --study modes`` gives the numbers of ``converge modes``."""
+    results = []
+    for argv in (["modes"], ["--study", "modes"], ["modes", "--study", "modes"]):
+        out = tmp_path / str(len(results))
+        code, text, _ = run(capsys, "converge", *argv, "--modes-list", "30,60,120", "--json",
+                            "--out", str(out))  # fmt: skip
+        data = json.loads(text)
+        assert code == 0 and data["study"] == "modes"
+        results.append(json.dumps(data["quantities"], sort_keys=True))
+    assert results[0] == results[1] == results[2]
 
 
 def test_unwritable_out_is_one_line_exit_2(capsys, tmp_path):

@@ -41,6 +41,7 @@ def run(args: argparse.Namespace) -> int:
     """Run ``twoball converge``: :func:`twoball.converge` with the options, report in ``--out``."""
     from twoball.reports import converge
 
+    args.study = chosen_study(args.study, args.study_option)
     out = args.out if args.out is not None else f"twoball-converge-{args.study}"
     options = {
         "study": args.study,
@@ -72,6 +73,16 @@ def run(args: argparse.Namespace) -> int:
     return 0 if study.passed else 1
 
 
+def chosen_study(positional: str | None, option: str | None) -> str:
+    """The study named as ``STUDY`` or as ``--study STUDY`` (the same if both)."""
+    if positional is not None and option is not None and positional != option:
+        raise ParameterError("study", "given once, as STUDY or --study", f"{positional}, {option}")
+    study = positional if positional is not None else option
+    if study is None:
+        raise ParameterError("study", "one of " + ", ".join(STUDIES), "none")
+    return study
+
+
 def register(parser: argparse.ArgumentParser) -> None:
     """The options of ``twoball converge``."""
     parser.description = (
@@ -83,8 +94,16 @@ def register(parser: argparse.ArgumentParser) -> None:
     parser.add_argument(
         "study",
         metavar="STUDY",
+        nargs="?",
         choices=STUDIES,
         help="h: mesh refinement; order: P1 to P4 at equal DOFs; modes: Legendre N; dt: time step",
+    )
+    parser.add_argument(
+        "--study",
+        dest="study_option",
+        metavar="STUDY",
+        choices=STUDIES,
+        help="the same as the positional STUDY (twoball converge --study order)",
     )
     parser.add_argument(
         "--mesh",
