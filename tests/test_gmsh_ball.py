@@ -6,9 +6,9 @@ nested, linear or (``setOrder(2)``) quadratic triangles with their edge nodes on
 the sphere, plus the line and point elements of the geometry's seam and poles.
 Independent value: the Legendre series with the same N and filter (eqs.
 (3.12)-(3.16)), the limit of the finite elements as h -> 0.  The step is
-h = (4 pi / DOFs)^(1/2) times p, so that the observed order in h is banded
-like ``twoball converge h``: 2p +-0.3 for t_l on the finest pair (measured 2.00
-for P1, 4.01 for P2), v_l shrinking on every refinement.
+h = (4 pi / DOFs)^(1/2), as in ``twoball converge order``, because the meshes
+are not nested: t_l at 2p +-0.3 on the finest pair (measured 2.00 for P1, 4.01
+for P2), v_l shrinking on every refinement.
 """
 
 from __future__ import annotations
