@@ -1,0 +1,244 @@
+"""The same numbers before and after a change: JSON of representative commands, array hashes.
+
+``python benchmarks/same_numbers.py record`` runs every command below with ``--json``
+and writes their outputs, with the provenance blocks removed, to
+``benchmarks/same_numbers.json``, together with SHA-256 hashes of every nodal array of
+one XDMF export.  ``python benchmarks/same_numbers.py check`` runs them again and
+compares: numbers bit for bit, and texts (notes, warnings, labels) separately, so a
+change that rewords a warning is told apart from one that moves a number.  It exits 1
+when a number differs.
+
+The commands run as ``python -m twoball`` with this interpreter; run the script from
+outside the checkout with the package installed, or with ``PYTHONPATH`` pointing at it.
+"""
+
+from __future__ import annotations
+
+import argparse
+import hashlib
+import json
+import os
+import subprocess
+import sys
+import tempfile
+import xml.etree.ElementTree as ET
+from pathlib import Path
+
+HERE = Path(__file__).resolve().parent
+RECORD = HERE / "same_numbers.json"
+
+#: name -> arguments of ``twoball`` (``--json`` is appended).
+COMMANDS: dict[str, list[str]] = {
+    "liftoff": ["liftoff"],
+    "liftoff-tennis": ["liftoff", "--preset", "tennis"],
+    "liftoff-volleyball": ["liftoff", "--preset", "volleyball"],
+    "liftoff-unfiltered-60": ["liftoff", "--sigma", "none", "--modes", "60"],
+    "liftoff-paper-recontact": ["liftoff", "--recontact", "paper", "--damping", "0.2"],
+    "liftoff-v0-eq37": ["liftoff", "--v0", "3.0"],
+    "liftoff-bending-gas": [
+        "liftoff", "--preset", "volleyball", "--bending", "0.002", "--gas", "isothermal",
+    ],
+    "fem-axisym": ["liftoff", "--backend", "fem", "--mesh", "axisym"],
+    "fem-axisym-p3": [
+        "liftoff", "--backend", "fem", "--mesh", "axisym", "--order", "3", "--elements", "60",
+    ],
+    "fem-sphere-full": [
+        "liftoff", "--backend", "fem", "--level", "2", "--route", "full",
+    ],
+    "fem-sphere-krylov": [
+        "liftoff", "--backend", "fem", "--level", "3", "--route", "krylov",
+    ],
+    "fem-ring": ["liftoff", "--backend", "fem", "--mesh", "ring", "--level", "2"],
+    "fem-exact-p3": [
+        "liftoff", "--backend", "fem", "--level", "2", "--order", "3", "--geometry", "exact",
+    ],
+    "fem-alpha": [
+        "liftoff", "--backend", "fem", "--mesh", "axisym", "--elements", "100",
+        "--scheme", "alpha", "--dt", "2e-6",
+    ],
+    "fem-alpha-rayleigh": [
+        "liftoff", "--backend", "fem", "--mesh", "axisym", "--elements", "100",
+        "--scheme", "alpha", "--damping-model", "rayleigh", "--dt", "2e-6",
+    ],
+    "fem-mesh-file": ["liftoff", "--backend", "fem", "--mesh-file", "{mesh_file}"],
+    "contact-0.1": ["liftoff", "--mass-ratio", "0.1"],
+    "contact-0.05-restitution": [
+        "liftoff", "--mass-ratio", "0.05", "--restitution", "0.5", "--energy", "both",
+        "--contact-radius", "0.02",
+    ],
+    "contact-fem-axisym": [
+        "liftoff", "--mass-ratio", "0.1", "--backend", "fem", "--mesh", "axisym",
+    ],
+    "sweep-damping": ["sweep", "--param", "damping", "--values", "0:0.6:7"],
+    "sweep-v0": ["sweep", "--param", "v0", "--values", "2,3,4.1"],
+    "sweep-grid": [
+        "sweep", "--param", "damping", "--values", "0.1,0.2",
+        "--param", "wave-speed", "--values", "250,320",
+    ],
+    "sweep-mass-ratio": ["sweep", "--param", "mass-ratio", "--values", "0.01,0.1"],
+    "icm": ["icm", "--mu", "0.1", "--e2", "0.8", "--e12", "0.89", "--dx", "0.01", "--drop-height", "0.9"],
+    "icm-table1": ["icm", "--table1"],
+    "eigen-sphere": ["eigen", "--level", "2"],
+    "eigen-axisym": ["eigen", "--mesh", "axisym", "--elements", "50", "--order", "3"],
+    "converge-modes": ["converge", "modes", "--modes-list", "30,60,120", "--out", "{tmp}/cm"],
+}  # fmt: skip
+
+#: One export whose nodal arrays are hashed.
+EXPORT = ["export", "--level", "2", "--frames", "5", "--format", "xdmf"]
+
+#: Keys whose values change from run to run or with the layout, not with the numbers.
+VOLATILE = {
+    "provenance", "out", "file", "files", "directory", "path", "report_dir", "seconds",
+    "elapsed_s", "wall_s",
+}  # fmt: skip
+
+
+def _strip(value: object) -> object:
+    if isinstance(value, dict):
+        return {k: _strip(v) for k, v in value.items() if k not in VOLATILE}
+    if isinstance(value, list):
+        return [_strip(v) for v in value]
+    return value
+
+
+def _run(args: list[str], env: dict[str, str]) -> subprocess.CompletedProcess[str]:
+    return subprocess.run(
+        [sys.executable, "-m", "twoball", "--quiet", *args],
+        capture_output=True,
+        text=True,
+        env=env,
+        timeout=1800,
+    )
+
+
+def _mesh_file(tmp: Path) -> Path:
+    """A level-3 icosphere of radius 0.12 m written by meshio (for the mesh-file command).
+
+    Built here, not by twoball, so that the file is the same whatever the package's layout.
+    """
+    import meshio
+    import numpy as np
+
+    t = (1.0 + 5.0**0.5) / 2.0
+    points = [
+        (-1, t, 0), (1, t, 0), (-1, -t, 0), (1, -t, 0), (0, -1, t), (0, 1, t),
+        (0, -1, -t), (0, 1, -t), (t, 0, -1), (t, 0, 1), (-t, 0, -1), (-t, 0, 1),
+    ]  # fmt: skip
+    faces = [
+        (0, 11, 5), (0, 5, 1), (0, 1, 7), (0, 7, 10), (0, 10, 11), (1, 5, 9), (5, 11, 4),
+        (11, 10, 2), (10, 7, 6), (7, 1, 8), (3, 9, 4), (3, 4, 2), (3, 2, 6), (3, 6, 8),
+        (3, 8, 9), (4, 9, 5), (2, 4, 11), (6, 2, 10), (8, 6, 7), (9, 8, 1),
+    ]  # fmt: skip
+    xyz = [np.asarray(p, float) / np.linalg.norm(p) for p in points]
+    for _ in range(3):
+        middle: dict[tuple[int, int], int] = {}
+
+        def mid(i: int, j: int) -> int:
+            key = (min(i, j), max(i, j))
+            if key not in middle:
+                m = xyz[i] + xyz[j]
+                xyz.append(m / np.linalg.norm(m))
+                middle[key] = len(xyz) - 1
+            return middle[key]
+
+        refined = []
+        for a, b, c in faces:
+            ab, bc, ca = mid(a, b), mid(b, c), mid(c, a)
+            refined += [(a, ab, ca), (b, bc, ab), (c, ca, bc), (ab, bc, ca)]
+        faces = refined
+    path = tmp / "ball.vtu"
+    meshio.write(path, meshio.Mesh(0.12 * np.array(xyz), [("triangle", np.array(faces))]))
+    return path
+
+
+def _export_hashes(tmp: Path, env: dict[str, str]) -> dict[str, str]:
+    out = tmp / "export" / "fields.xdmf"
+    out.parent.mkdir()
+    done = _run([*EXPORT, "--out", str(out)], env)
+    if done.returncode != 0:
+        raise SystemExit(f"export failed: {done.stderr.strip()}")
+    import h5py
+    import numpy as np
+
+    hashes: dict[str, str] = {}
+    root = ET.parse(out).getroot()
+    with h5py.File(out.with_suffix(".h5"), "r") as h5:
+        for step, grid in enumerate(root.iter("Grid")):
+            if grid.get("GridType") != "Uniform":
+                continue
+            for attribute in grid.iter("Attribute"):
+                if attribute.get("Center") != "Node":
+                    continue
+                item = attribute.find("DataItem")
+                path = item.text.strip().split(":", 1)[1]
+                array = np.ascontiguousarray(h5[path][()], dtype=np.float64)
+                key = f"{step - 1}/{attribute.get('Name')}"
+                hashes[key] = hashlib.sha256(array.tobytes()).hexdigest()
+    return hashes
+
+
+def collect() -> dict[str, object]:
+    """Run every command and the export; their stripped JSON and the array hashes."""
+    env = dict(os.environ)
+    results: dict[str, object] = {}
+    with tempfile.TemporaryDirectory() as name:
+        tmp = Path(name)
+        mesh_file = _mesh_file(tmp)
+        for key, args in COMMANDS.items():
+            args = [a.format(mesh_file=mesh_file, tmp=tmp) for a in args]
+            done = _run([*args, "--json"], env)
+            print(f"{key:28s} exit {done.returncode}", file=sys.stderr)
+            if done.returncode not in (0, 1):
+                results[key] = {"exit": done.returncode, "stderr": done.stderr.strip()}
+                continue
+            results[key] = {"exit": done.returncode, "json": _strip(json.loads(done.stdout))}
+        results["export-hashes"] = _export_hashes(tmp, env)
+    return results
+
+
+def _compare(old: object, new: object, where: str, numbers: list[str], texts: list[str]) -> None:
+    if isinstance(old, dict) and isinstance(new, dict):
+        for key in sorted(set(old) | set(new)):
+            if key not in old or key not in new:
+                side = "added" if key not in old else "removed"
+                texts.append(f"{where}/{key}: {side}")
+                continue
+            _compare(old[key], new[key], f"{where}/{key}", numbers, texts)
+    elif isinstance(old, list) and isinstance(new, list) and len(old) == len(new):
+        for i, (a, b) in enumerate(zip(old, new, strict=True)):
+            _compare(a, b, f"{where}[{i}]", numbers, texts)
+    elif old != new:
+        is_number = isinstance(old, (int, float)) or isinstance(new, (int, float))
+        hashed = where.startswith("/export-hashes")
+        (numbers if is_number or hashed or isinstance(old, list) else texts).append(
+            f"{where}: {old!r} -> {new!r}"
+        )
+
+
+def main() -> int:
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("action", choices=("record", "check"))
+    args = parser.parse_args()
+    results = collect()
+    if args.action == "record":
+        RECORD.write_text(json.dumps(results, indent=1, sort_keys=True) + "\n")
+        print(f"recorded {len(COMMANDS)} commands and one export in {RECORD}")
+        return 0
+    old = json.loads(RECORD.read_text())
+    numbers: list[str] = []
+    texts: list[str] = []
+    _compare(old, json.loads(json.dumps(results)), "", numbers, texts)
+    for line in texts:
+        print("text   ", line)
+    for line in numbers:
+        print("NUMBER ", line)
+    hashes = len(results["export-hashes"])
+    print(
+        f"{len(COMMANDS)} commands, {hashes} exported arrays: "
+        f"{len(numbers)} numbers differ, {len(texts)} texts differ"
+    )
+    return 1 if numbers else 0
+
+
+if __name__ == "__main__":
+    raise SystemExit(main())
