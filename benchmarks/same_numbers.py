@@ -76,7 +76,10 @@ COMMANDS: dict[str, list[str]] = {
         "--param", "wave-speed", "--values", "250,320",
     ],
     "sweep-mass-ratio": ["sweep", "--param", "mass-ratio", "--values", "0.01,0.1"],
-    "icm": ["icm", "--mu", "0.1", "--e2", "0.8", "--e12", "0.89", "--dx", "0.01", "--drop-height", "0.9"],
+    "icm": [
+        "icm", "--mu", "0.1", "--e2", "0.8", "--e12", "0.89", "--dx", "0.01",
+        "--drop-height", "0.9",
+    ],
     "icm-table1": ["icm", "--table1"],
     "eigen-sphere": ["eigen", "--level", "2"],
     "eigen-axisym": ["eigen", "--mesh", "axisym", "--elements", "50", "--order", "3"],
@@ -133,7 +136,7 @@ def _mesh_file(tmp: Path) -> Path:
     for _ in range(3):
         middle: dict[tuple[int, int], int] = {}
 
-        def mid(i: int, j: int) -> int:
+        def mid(i: int, j: int, middle: dict[tuple[int, int], int] = middle) -> int:
             key = (min(i, j), max(i, j))
             if key not in middle:
                 m = xyz[i] + xyz[j]
