@@ -31,11 +31,10 @@ import numpy as np
 import scipy.linalg as sl
 import scipy.sparse as sp
 from scipy.sparse.linalg import splu
+from twoball.fem_membrane.checks import check_dt, check_rho_inf, check_t_end
+from twoball.fem_membrane.damping import ModalDamping
+from twoball.fem_membrane.space import PoleFunctional, pole_value
 from twoball.modal.errors import NumericalError
-
-from .checks import check_dt, check_rho_inf, check_t_end
-from .damping import ModalDamping
-from .space import PoleFunctional, pole_value
 
 
 @dataclass(frozen=True)

@@ -2,13 +2,19 @@
 
 from __future__ import annotations
 
+from twoball.fem_membrane.axisym import axisym_space
+from twoball.fem_membrane.checks import (
+    GEOMETRIES,
+    MESH_KINDS,
+    check_choice,
+    check_elements,
+    check_level,
+    check_order,
+)
+from twoball.fem_membrane.mesh import SphereMesh, icosphere, ring_sphere
+from twoball.fem_membrane.space import Discretisation, sphere_space
 from twoball.modal.errors import ParameterError
 from twoball.modal.initial import _check_phi_a
-
-from .axisym import axisym_space
-from .checks import GEOMETRIES, MESH_KINDS, check_choice, check_elements, check_level, check_order
-from .mesh import SphereMesh, icosphere, ring_sphere
-from .space import Discretisation, sphere_space
 
 DEFAULT_LEVEL = 3
 DEFAULT_ELEMENTS = 400

@@ -18,13 +18,12 @@ from typing import Any
 
 import numpy as np
 import scipy.sparse as sp
+from twoball.fem_membrane.build import DEFAULT_LEVEL
+from twoball.fem_membrane.locate import locate_pole
+from twoball.fem_membrane.mesh import SphereMesh, icosphere, ring_sphere
+from twoball.fem_membrane.space import Discretisation
 from twoball.modal.contact.caps import cap_rule, sphere_cap_points
 from twoball.modal.errors import ParameterError
-
-from .build import DEFAULT_LEVEL
-from .locate import locate_pole
-from .mesh import SphereMesh, icosphere, ring_sphere
-from .space import Discretisation
 
 #: Cap quadrature: Gauss points in cos(phi), and azimuthal points on the sphere.
 CAP_RINGS = 12
@@ -96,7 +95,7 @@ def fem_contact_model(
     initial: str = "projection",
 ) -> tuple[Any, np.ndarray, dict[str, Any]]:
     """Modal model (full eigen route), contact vector and details for one FE mesh."""
-    from .solve import modal_model
+    from twoball.fem_membrane.solve import modal_model
 
     if mesh not in ("axisym", "sphere", "ring"):
         raise ParameterError("mesh", "axisym, sphere or ring with mass_ratio", mesh)

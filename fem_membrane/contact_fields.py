@@ -14,9 +14,8 @@ from __future__ import annotations
 from typing import Any
 
 import numpy as np
-
-from .build import DEFAULT_LEVEL
-from .mesh import SphereMesh
+from twoball.fem_membrane.build import DEFAULT_LEVEL
+from twoball.fem_membrane.mesh import SphereMesh
 
 
 def fem_contact_fields(
@@ -64,8 +63,8 @@ def fem_contact_fields(
     report : ContactReport
         The contact solution on these modes (``report.system``, ``report.history``).
     """
-    from .contact import fem_contact_solution
-    from .space import dof_mesh
+    from twoball.fem_membrane.contact import fem_contact_solution
+    from twoball.fem_membrane.space import dof_mesh
 
     model, report = fem_contact_solution(
         case, mass_ratio, contact_radius, sigma=sigma, restitution=restitution, energy=energy,

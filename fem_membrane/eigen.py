@@ -17,9 +17,7 @@ from dataclasses import dataclass
 
 import numpy as np
 import scipy.sparse as sp
-from twoball.modal.errors import NumericalError, ParameterError
-
-from .slicing import (
+from twoball.fem_membrane.slicing import (
     ORTHONORMALITY,
     RESIDUAL_LIMIT,
     WINDOW,
@@ -32,7 +30,8 @@ from .slicing import (
     sliced_pairs,
     use_dense,
 )
-from .slicing import m_orthonormal as m_orthonormalise
+from twoball.fem_membrane.slicing import m_orthonormal as m_orthonormalise
+from twoball.modal.errors import NumericalError, ParameterError
 
 __all__ = [
     "Eigenpairs",
@@ -229,7 +228,9 @@ def eigen_table(
         pair and ``orthonormality`` = ``max |Phi^T M Phi - I|`` over all pairs
         computed.  Dimensionless.
     """
-    from .build import build_space  # local: build imports the spaces, which import nothing here
+    from twoball.fem_membrane.build import (
+        build_space,  # local: build imports the spaces, which import nothing here
+    )
 
     if isinstance(count, bool) or int(count) != count or count < 1:
         raise ParameterError("count", "an integer >= 1", count)

@@ -462,7 +462,7 @@ def read_series(path: str | os.PathLike[str]) -> TimeSeries:
     after the string arrays (``provenance``, ``case``), which it refuses, are
     taken out and read here.
     """
-    from .series_read import read_vtu, read_xdmf, stack
+    from twoball.fem_membrane.series_read import read_vtu, read_xdmf, stack
 
     path = Path(path)
     fmt = series_format(path)

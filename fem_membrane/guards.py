@@ -37,9 +37,8 @@ from __future__ import annotations
 import math
 
 import numpy as np
+from twoball.fem_membrane.alpha import AlphaParameters
 from twoball.modal.filters import SpectralFilter, legendre_frequency
-
-from .alpha import AlphaParameters
 
 FREQUENCY_ERROR = 0.01  # relative frequency error of the highest retained mode (time step)
 EIGENVALUE_ERROR = 0.05  # relative eigenvalue error at the last half-weight degree (mesh)

@@ -26,10 +26,9 @@ from scipy.sparse.linalg import splu
 from skfem import CellBasis, LinearForm, MeshLine1, MeshTri1
 from skfem.quadrature import get_quadrature
 from skfem.refdom import RefLine, RefTri
+from twoball.fem_membrane.checks import INITIAL_METHODS, check_choice
+from twoball.fem_membrane.space import Discretisation
 from twoball.modal.initial import _check_phi_a, initial_displacement_x
-
-from .checks import INITIAL_METHODS, check_choice
-from .space import Discretisation
 
 KINK_SUBDIVISIONS = 4  # refinements of the reference element on elements cut by the kink
 LOAD_EXTRA_ORDER = 4  # quadrature degree beyond 2 * order for the smooth parts of F

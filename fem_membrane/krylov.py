@@ -76,15 +76,14 @@ from typing import Any
 import numpy as np
 import scipy.sparse as sp
 from threadpoolctl import threadpool_limits
+from twoball.fem_membrane.eigen import Eigenpairs
+from twoball.fem_membrane.ritz_field import FieldChange
+from twoball.fem_membrane.slicing import factorise
+from twoball.fem_membrane.space import Discretisation, PoleFunctional, pole_value, pole_vector
 from twoball.modal.errors import NumericalError, ParameterError
 from twoball.modal.filters import SpectralFilter
 from twoball.modal.liftoff import DEFAULT_T_END
 from twoball.modal.series import ModalSeries, check_damping
-
-from .eigen import Eigenpairs
-from .ritz_field import FieldChange
-from .slicing import factorise
-from .space import Discretisation, PoleFunctional, pole_value, pole_vector
 
 TOLERANCE = 1e-10  # relative change of the filtered pole trajectory (u and u_tt)
 SHIFT_COUNT = 3  # default number of shifts (factorisations of K - sigma M)

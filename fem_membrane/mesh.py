@@ -30,9 +30,8 @@ from pathlib import Path
 
 import numpy as np
 from skfem import MeshTri1
+from twoball.fem_membrane.checks import check_level, check_order
 from twoball.modal.errors import ParameterError
-
-from .checks import check_level, check_order
 
 POLE = np.array([0.0, 0.0, 1.0])
 _POLE_TOLERANCE = 1e-12
@@ -455,7 +454,7 @@ def read_mesh(path: str | Path, ring: float | None = None) -> SphereMesh:
     mesh edges (see :func:`ring_sphere`).  Points are read by meshio, never
     through ``skfem.MeshTri.load``, which keeps only x and y.
     """
-    from .mesh_input import load_sphere_mesh
+    from twoball.fem_membrane.mesh_input import load_sphere_mesh
 
     return replace(load_sphere_mesh(path).mesh, ring=ring)
 

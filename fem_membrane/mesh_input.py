@@ -33,11 +33,9 @@ from pathlib import Path
 from typing import Any
 
 import numpy as np
-from twoball.modal.errors import ParameterError
-
-from .checks import check_order
-from .mesh import SphereMesh, elevate, flatten
-from .surface_checks import (
+from twoball.fem_membrane.checks import check_order
+from twoball.fem_membrane.mesh import SphereMesh, elevate, flatten
+from twoball.fem_membrane.surface_checks import (
     MAX_RADIAL_DEVIATION,
     check_sphere,
     check_topology,
@@ -45,6 +43,7 @@ from .surface_checks import (
     orient_outward,
     refuse,
 )
+from twoball.modal.errors import ParameterError
 
 __all__ = ["MAX_RADIAL_DEVIATION", "MeshInput", "check_pole", "load_sphere_mesh", "rotation_to_z"]
 

@@ -12,11 +12,10 @@ evaluated by exactly the same code as for the Legendre series.
 from __future__ import annotations
 
 import numpy as np
+from twoball.fem_membrane.eigen import Eigenpairs
+from twoball.fem_membrane.space import PoleFunctional, pole_value
 from twoball.modal.filters import SpectralFilter
 from twoball.modal.series import ModalSeries
-
-from .eigen import Eigenpairs
-from .space import PoleFunctional, pole_value
 
 
 def modal_series(

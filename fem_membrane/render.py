@@ -371,7 +371,7 @@ def _write_png(target: Path, images: Iterator[np.ndarray]) -> int:
 
 
 def _write_gif(target: Path, images: Iterator[np.ndarray], fps: float) -> int:
-    from .palette import gif_bytes
+    from twoball.fem_membrane.palette import gif_bytes
 
     frames = np.stack(list(images))
     # encoded in memory, then written by Python: a full disk is one OSError

@@ -12,8 +12,7 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 
 import numpy as np
-
-from .render import BallScene
+from twoball.fem_membrane.render import BallScene
 
 
 @dataclass(frozen=True)

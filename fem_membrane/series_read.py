@@ -14,8 +14,7 @@ from typing import Any
 
 import meshio
 import numpy as np
-
-from .export import TimeSeries
+from twoball.fem_membrane.export import TimeSeries
 
 __all__ = ["read_vtu", "read_xdmf", "stack"]
 

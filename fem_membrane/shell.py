@@ -37,15 +37,14 @@ import numpy as np
 import scipy.linalg as sl
 import scipy.sparse as sp
 from scipy.sparse.linalg import LinearOperator, eigsh, splu
+from twoball.fem_membrane.alpha import AlphaParameters, GeneralizedAlpha
+from twoball.fem_membrane.checks import check_dt
+from twoball.fem_membrane.damping import ModalDamping
+from twoball.fem_membrane.eigen import Eigenpairs
+from twoball.fem_membrane.space import Discretisation
 from twoball.modal.errors import NumericalError
 from twoball.modal.series import ModalSeries
 from twoball.modal.stiffness import Stiffness, stiffen
-
-from .alpha import AlphaParameters, GeneralizedAlpha
-from .checks import check_dt
-from .damping import ModalDamping
-from .eigen import Eigenpairs
-from .space import Discretisation
 
 
 class ShellOperator(LinearOperator):

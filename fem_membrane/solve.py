@@ -23,18 +23,9 @@ from dataclasses import dataclass, field
 from typing import Any
 
 import numpy as np
-from twoball.modal.errors import ParameterError
-from twoball.modal.filters import FilterKind, SpectralFilter
-from twoball.modal.initial import _check_phi_a
-from twoball.modal.liftoff import DEFAULT_T_END, PoleMotion, SampledPoleMotion
-from twoball.modal.series import ModalSeries, check_damping
-from twoball.modal.stiffness import Stiffness
-
-from twoball.budget import check_fem
-
-from .alpha import GeneralizedAlpha, automatic_step
-from .build import build_space
-from .checks import (
+from twoball.fem_membrane.alpha import GeneralizedAlpha, automatic_step
+from twoball.fem_membrane.build import build_space
+from twoball.fem_membrane.checks import (
     DAMPING_MODELS,
     INITIAL_METHODS,
     TIME_SCHEMES,
@@ -43,14 +34,22 @@ from .checks import (
     check_rho_inf,
     check_t_end,
 )
-from .damping import RAYLEIGH_LOW, ModalDamping, RayleighDamping
-from .eigen import Eigenpairs, eigenpairs
-from .initial import initial_moments
-from .krylov import ROUTES, choose_route, krylov_modal_series
-from .mesh import SphereMesh
-from .modal import filtered_displacement, modal_series
-from .ritz_field import field_times
-from .space import Discretisation
+from twoball.fem_membrane.damping import RAYLEIGH_LOW, ModalDamping, RayleighDamping
+from twoball.fem_membrane.eigen import Eigenpairs, eigenpairs
+from twoball.fem_membrane.initial import initial_moments
+from twoball.fem_membrane.krylov import ROUTES, choose_route, krylov_modal_series
+from twoball.fem_membrane.mesh import SphereMesh
+from twoball.fem_membrane.modal import filtered_displacement, modal_series
+from twoball.fem_membrane.ritz_field import field_times
+from twoball.fem_membrane.space import Discretisation
+from twoball.modal.errors import ParameterError
+from twoball.modal.filters import FilterKind, SpectralFilter
+from twoball.modal.initial import _check_phi_a
+from twoball.modal.liftoff import DEFAULT_T_END, PoleMotion, SampledPoleMotion
+from twoball.modal.series import ModalSeries, check_damping
+from twoball.modal.stiffness import Stiffness
+
+from twoball.budget import check_fem
 
 STEP_ACCURACY = 0.2  # automatic dt: omega_cut * dt <= 0.2
 
@@ -144,7 +143,7 @@ def modal_model(
         )
         pairs, krylov = details.pairs, details.as_dict()
     if stiffness is not None and stiffness.active:
-        from .shell import stiff_pairs, stiff_series
+        from twoball.fem_membrane.shell import stiff_pairs, stiff_series
 
         series = stiff_series(series, space, stiffness)
         if pairs is not None:
@@ -209,7 +208,7 @@ def alpha_motion(
         }
     start = clock.perf_counter()
     if model.stiffness is not None:
-        from .shell import ShellAlpha, ShellOperator
+        from twoball.fem_membrane.shell import ShellAlpha, ShellOperator
 
         operator = ShellOperator(space, model.stiffness)
         stepper = ShellAlpha(space.mass, operator, dt, damping, rho_inf)

@@ -12,13 +12,18 @@ import time
 from dataclasses import dataclass
 
 import numpy as np
-
-from .filters import SpectralFilter, legendre_frequency
-from .legendre import legendre_coefficients_recurrence, legendre_series
-from .liftoff import DEFAULT_T_END, Horizon, LiftoffResult, find_liftoff, flight_clearance
-from .parameters import Case
-from .roots import bracketed_roots
-from .series import ModalSeries
+from twoball.modal.filters import SpectralFilter, legendre_frequency
+from twoball.modal.legendre import legendre_coefficients_recurrence, legendre_series
+from twoball.modal.liftoff import (
+    DEFAULT_T_END,
+    Horizon,
+    LiftoffResult,
+    find_liftoff,
+    flight_clearance,
+)
+from twoball.modal.parameters import Case
+from twoball.modal.roots import bracketed_roots
+from twoball.modal.series import ModalSeries
 
 PAPER_MODES = 30  # the truncation used throughout the paper (§3(b))
 REFERENCE_TOLERANCE = 1e-7  # relative change of v_l that stops the doubling of N

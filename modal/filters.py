@@ -12,8 +12,7 @@ from dataclasses import dataclass
 from typing import Literal
 
 import numpy as np
-
-from .errors import ParameterError
+from twoball.modal.errors import ParameterError
 
 FilterKind = Literal["lanczos", "printed", "none"]
 FILTER_KINDS: tuple[str, ...] = ("lanczos", "printed", "none")

@@ -33,8 +33,8 @@ import math
 from dataclasses import dataclass
 from typing import Any
 
-from .liftoff import LiftoffResult
-from .parameters import Case
+from twoball.modal.liftoff import LiftoffResult
+from twoball.modal.parameters import Case
 
 TRUNCATION_WARNING = 0.05  # relative difference of t_l or v_l from the converged series
 REFOCUS_PERIOD = 2.0 * math.pi  # dimensionless: the wave is back at the pole after 2 pi / c
@@ -101,7 +101,7 @@ def truncation(case: Case, result: LiftoffResult, base: LiftoffResult | None = N
         ``result`` itself when it is the N = 30 Lanczos closed form, the root the
         reference follows (saves recomputing it).
     """
-    from .converged import converged_legendre
+    from twoball.modal.converged import converged_legendre
 
     horizon = "paper" if result.horizon == "paper" else "window"
     reference = converged_legendre(
@@ -188,7 +188,7 @@ def liftoff_guards(
     case: Case, result: LiftoffResult, backend: str = "legendre", sigma: str = "lanczos"
 ) -> tuple[list[str], Truncation]:
     """All closed-form guards of one lift-off: (warnings, truncation block)."""
-    from .converged import PAPER_MODES
+    from twoball.modal.converged import PAPER_MODES
 
     same = backend == "legendre" and sigma == "lanczos" and case.modes == PAPER_MODES
     block = truncation(case, result, result if same else None)

@@ -15,12 +15,11 @@ from functools import lru_cache
 import numpy as np
 from numpy.polynomial.legendre import legvander
 from numpy.typing import ArrayLike
-
-from .errors import NumericalError, ParameterError
-from .filters import FilterKind, SpectralFilter, legendre_frequency
-from .initial import _check_phi_a
-from .series import ModalSeries
-from .stiffness import Stiffness
+from twoball.modal.errors import NumericalError, ParameterError
+from twoball.modal.filters import FilterKind, SpectralFilter, legendre_frequency
+from twoball.modal.initial import _check_phi_a
+from twoball.modal.series import ModalSeries
+from twoball.modal.stiffness import Stiffness
 
 _MAX_QUADRATURE = 20000
 

@@ -20,10 +20,9 @@ from typing import Literal, Protocol, runtime_checkable
 
 import numpy as np
 from numpy.typing import ArrayLike
-
-from .errors import NumericalError, ParameterError
-from .roots import bracketed_roots, newton_bracketed
-from .series import PoleState
+from twoball.modal.errors import NumericalError, ParameterError
+from twoball.modal.roots import bracketed_roots, newton_bracketed
+from twoball.modal.series import PoleState
 
 Horizon = Literal["window", "paper"]
 HORIZONS: tuple[str, ...] = ("window", "paper")

@@ -12,10 +12,10 @@ import math
 from dataclasses import dataclass, replace
 from typing import Any
 
-from .errors import ParameterError, bounded, real_number
-from .initial import PHI_A_RANGE, check_phi_a, phi_a_from_v0  # noqa: F401 -- re-exported
-from .presets import MEASURED, Measured
-from .scalings import (  # noqa: F401 -- re-exported
+from twoball.modal.errors import ParameterError, bounded, real_number
+from twoball.modal.initial import PHI_A_RANGE, check_phi_a, phi_a_from_v0  # noqa: F401 -- re-exported
+from twoball.modal.presets import MEASURED, Measured
+from twoball.modal.scalings import (  # noqa: F401 -- re-exported
     BENDING_RANGE,
     G_RANGE,
     MASS_RANGE,
@@ -33,7 +33,7 @@ from .scalings import (  # noqa: F401 -- re-exported
     check_wave_speed,
     wave_speed_from_pressure,
 )
-from .stiffness import ATMOSPHERE, GAS_MODELS, Stiffness, stiffness_from_si
+from twoball.modal.stiffness import ATMOSPHERE, GAS_MODELS, Stiffness, stiffness_from_si
 
 
 def _number(name: str, value: object, valid: str) -> float:
@@ -171,7 +171,7 @@ class Case:
         ``pi / (2 c)``: half the period of the pressure spring ``k = 2 pi R P``
         (:func:`twoball.modal.stiffness.floor_contact_time`).
         """
-        from .stiffness import floor_contact_time
+        from twoball.modal.stiffness import floor_contact_time
 
         return floor_contact_time(self.wave_speed)
 

@@ -10,7 +10,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
-from .scalings import wave_speed_from_pressure
+from twoball.modal.scalings import wave_speed_from_pressure
 
 
 @dataclass(frozen=True)
@@ -37,7 +37,7 @@ class Measured:
 
 
 def _tennis() -> Measured:
-    from .stiffness import flexural_rigidity
+    from twoball.modal.stiffness import flexural_rigidity
 
     radius, mass, pressure = 0.0335, 0.0577, 82700.0
     return Measured(

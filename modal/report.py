@@ -10,10 +10,10 @@ from collections.abc import Sequence
 from dataclasses import dataclass, field
 from typing import Any
 
-from .filters import FilterKind, SpectralFilter
-from .legendre import legendre_series
-from .liftoff import DEFAULT_T_END, Horizon, LiftoffResult, PoleMotion, find_liftoff
-from .parameters import Case
+from twoball.modal.filters import FilterKind, SpectralFilter
+from twoball.modal.legendre import legendre_series
+from twoball.modal.liftoff import DEFAULT_T_END, Horizon, LiftoffResult, PoleMotion, find_liftoff
+from twoball.modal.parameters import Case
 
 FLOOR_TIME_ESTIMATE = (
     "pi/(2c): half period of the pressure spring k = 2 pi R P of a ball flattened on the "
@@ -141,7 +141,7 @@ def t_end_dimensionless(case: Case, t_end_s: float | None) -> float:
     """The modelled window in units of 1/c; default 4 pi (i.e. 4 pi / c seconds)."""
     if t_end_s is None:
         return DEFAULT_T_END
-    from .errors import ParameterError, real_number
+    from twoball.modal.errors import ParameterError, real_number
 
     # [1e-3, 1e9] time units 1/c: shorter windows hold no sample of the series,
     # longer ones overflow the sample counts (and the resource guards refuse far less)
@@ -177,7 +177,7 @@ def report_liftoff(
         motion, case.gamma, t_end=t_end_dimensionless(case, t_end_s), horizon=recontact
     )
     extra, notes = dict(extra or {}), list(warnings)
-    from .guards import liftoff_guards, window_warnings
+    from twoball.modal.guards import liftoff_guards, window_warnings
 
     if reference:
         found, block = liftoff_guards(case, result, backend, sigma)

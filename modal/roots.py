@@ -5,8 +5,7 @@ from __future__ import annotations
 from collections.abc import Callable
 
 import numpy as np
-
-from .errors import NumericalError
+from twoball.modal.errors import NumericalError
 
 
 def bracketed_roots(

@@ -13,7 +13,7 @@ import math
 from dataclasses import dataclass
 from numbers import Real
 
-from .errors import ParameterError, bounded, real_number
+from twoball.modal.errors import ParameterError, bounded, real_number
 
 STANDARD_GRAVITY = 9.81  # m/s^2, the value used in the paper (§2)
 # Physically meaningful magnitudes (SI).  They also keep the dimensionless numbers

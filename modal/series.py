@@ -16,9 +16,8 @@ from typing import NamedTuple
 
 import numpy as np
 from numpy.typing import ArrayLike
-
-from .errors import NumericalError, ParameterError
-from .filters import SpectralFilter
+from twoball.modal.errors import NumericalError, ParameterError
+from twoball.modal.filters import SpectralFilter
 
 _CHUNK = 4096  # time samples evaluated at once; bounds memory for large mode counts
 

@@ -23,8 +23,8 @@ from __future__ import annotations
 import importlib as _importlib
 import os as _os
 
-from ._lazy import attach as _attach
-from ._version import __version__
+from twoball._lazy import attach as _attach
+from twoball._version import __version__
 
 # In a source checkout the parts (modal/, fem_membrane/, verify/) sit beside this
 # folder; installed, setuptools maps them to twoball/modal, ... (pyproject.toml).

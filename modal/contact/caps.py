@@ -14,8 +14,7 @@ import math
 
 import numpy as np
 from numpy.polynomial.legendre import leggauss, legvander
-
-from ..errors import ParameterError
+from twoball.modal.errors import ParameterError
 
 #: Default contact radius as a fraction of R (docs/contact.rst, "The contact radius").
 DEFAULT_RADIUS_FRACTION = 0.1

@@ -22,10 +22,9 @@ from dataclasses import dataclass, field
 
 import numpy as np
 from scipy.linalg import expm
-
-from ..errors import NumericalError, ParameterError
-from ..roots import bracketed_roots
-from .system import ContactSystem
+from twoball.modal.contact.system import ContactSystem
+from twoball.modal.errors import NumericalError, ParameterError
+from twoball.modal.roots import bracketed_roots
 
 TIME_TOLERANCE = 1e-12
 MAX_EVENTS = 10000

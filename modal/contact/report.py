@@ -14,17 +14,16 @@ from dataclasses import dataclass, field
 from typing import Any
 
 import numpy as np
-
-from ..errors import ParameterError
-from ..filters import SpectralFilter
-from ..legendre import legendre_series
-from ..liftoff import find_liftoff
-from ..parameters import FROM_V0, Case
-from ..report import t_end_dimensionless
-from ..series import ModalSeries
-from .caps import DEFAULT_RADIUS_FRACTION, cap_angle, legendre_cap_averages
-from .events import ContactHistory, integrate
-from .system import ContactSystem
+from twoball.modal.contact.caps import DEFAULT_RADIUS_FRACTION, cap_angle, legendre_cap_averages
+from twoball.modal.contact.events import ContactHistory, integrate
+from twoball.modal.contact.system import ContactSystem
+from twoball.modal.errors import ParameterError
+from twoball.modal.filters import SpectralFilter
+from twoball.modal.legendre import legendre_series
+from twoball.modal.liftoff import find_liftoff
+from twoball.modal.parameters import FROM_V0, Case
+from twoball.modal.report import t_end_dimensionless
+from twoball.modal.series import ModalSeries
 
 ENERGY_OPTIONS: tuple[str, ...] = ("ball", "both")
 MAX_MASS_RATIO = 100.0
@@ -141,7 +140,7 @@ class ContactReport:
         """
         if self.history is None or self.system is None:
             return {}
-        from .trajectory import sample
+        from twoball.modal.contact.trajectory import sample
 
         scale = self.case.scalings
         data = sample(self.system, self.history, np.linspace(0, self.history.t_end, samples))

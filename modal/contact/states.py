@@ -15,10 +15,9 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 import numpy as np
-
-from .events import _DENSE_EXPM_MAX, ContactHistory
-from .system import ContactSystem
-from .trajectory import phases
+from twoball.modal.contact.events import _DENSE_EXPM_MAX, ContactHistory
+from twoball.modal.contact.system import ContactSystem
+from twoball.modal.contact.trajectory import phases
 
 #: Above this many times in one phase, evenly spaced times are reached by repeated
 #: multiplication with ``exp(A dt)`` (one exponential per phase) instead of one each.

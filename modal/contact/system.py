@@ -28,9 +28,8 @@ from dataclasses import dataclass
 from functools import cached_property
 
 import numpy as np
-
-from ..errors import NumericalError, ParameterError
-from ..series import ModalSeries
+from twoball.modal.errors import NumericalError, ParameterError
+from twoball.modal.series import ModalSeries
 
 
 @dataclass(frozen=True)

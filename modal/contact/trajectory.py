@@ -8,9 +8,8 @@ Rebuilds the phases from a :class:`~twoball.modal.contact.events.ContactHistory`
 from __future__ import annotations
 
 import numpy as np
-
-from .events import ContactHistory, _Phase
-from .system import ContactSystem
+from twoball.modal.contact.events import ContactHistory, _Phase
+from twoball.modal.contact.system import ContactSystem
 
 
 def phases(system: ContactSystem, history: ContactHistory) -> list[tuple[float, np.ndarray, str]]:

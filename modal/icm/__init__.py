@@ -23,7 +23,7 @@ and the ``|u0|`` reading misses all of them (for example row 1 gives
 see :func:`table1_check` and the documentation page on the ICM.
 """
 
-from .impacts import (
+from twoball.modal.icm.impacts import (
     impact_time,
     impact_velocity,
     max_separation,
@@ -31,9 +31,16 @@ from .impacts import (
     rebound_velocity,
     second_impact_delay,
 )
-from .limits import light_touching_limit, touching_limit, touching_ratios
-from .model import ICMResult, icm
-from .table1 import TABLE1, TABLE1_DIGITS, Table1Check, Table1Row, round_significant, table1_check
+from twoball.modal.icm.limits import light_touching_limit, touching_limit, touching_ratios
+from twoball.modal.icm.model import ICMResult, icm
+from twoball.modal.icm.table1 import (
+    TABLE1,
+    TABLE1_DIGITS,
+    Table1Check,
+    Table1Row,
+    round_significant,
+    table1_check,
+)
 
 __all__ = [
     "TABLE1",

@@ -8,10 +8,15 @@ restitution (eqs. (2.3)-(2.5)).  SI units; velocities positive upwards.
 from __future__ import annotations
 
 import numpy as np
-
-from ..errors import ParameterError
-from ..parameters import STANDARD_GRAVITY
-from .inputs import check_drop_height, check_dx, check_g, check_mu, check_restitution
+from twoball.modal.errors import ParameterError
+from twoball.modal.icm.inputs import (
+    check_drop_height,
+    check_dx,
+    check_g,
+    check_mu,
+    check_restitution,
+)
+from twoball.modal.parameters import STANDARD_GRAVITY
 
 
 def impact_velocity(drop_height: float, g: float = STANDARD_GRAVITY) -> float:

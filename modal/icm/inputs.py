@@ -7,7 +7,7 @@ Every check returns the value as a float or raises
 
 from __future__ import annotations
 
-from ..errors import ParameterError, real_number
+from twoball.modal.errors import ParameterError, real_number
 
 
 def _as_float(name: str, valid: str, value: object) -> float:

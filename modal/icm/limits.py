@@ -7,7 +7,7 @@ ratios ``v / |v0|`` are ``-k`` (:func:`touching_ratios`).
 
 from __future__ import annotations
 
-from .inputs import check_mu, check_restitution
+from twoball.modal.icm.inputs import check_mu, check_restitution
 
 
 def touching_limit(mu: float, e2: float, e12: float) -> tuple[float, float]:

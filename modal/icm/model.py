@@ -7,15 +7,21 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
-from ..parameters import STANDARD_GRAVITY
-from .impacts import (
+from twoball.modal.icm.impacts import (
     impact_time,
     impact_velocity,
     post_impact_velocities,
     rebound_velocity,
     second_impact_delay,
 )
-from .inputs import check_drop_height, check_dx, check_g, check_mu, check_restitution
+from twoball.modal.icm.inputs import (
+    check_drop_height,
+    check_dx,
+    check_g,
+    check_mu,
+    check_restitution,
+)
+from twoball.modal.parameters import STANDARD_GRAVITY
 
 
 @dataclass(frozen=True)

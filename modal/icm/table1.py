@@ -9,8 +9,8 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
-from ..errors import ParameterError
-from .limits import touching_ratios
+from twoball.modal.errors import ParameterError
+from twoball.modal.icm.limits import touching_ratios
 
 #: Significant figures of the ICM columns in Table 1.
 TABLE1_DIGITS = 2

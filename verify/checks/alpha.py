@@ -15,13 +15,12 @@ from typing import Any
 import numpy as np
 from twoball.modal.liftoff import Horizon, find_liftoff
 from twoball.modal.parameters import Case
+from twoball.verify.checks.config import AlphaTarget
+from twoball.verify.checks.results import Check, RunRow, bounded, liftoff_gap, run_row
 from twoball.verify.output.figures.pole import Trace
 from twoball.verify.studies.fem_runs import FEMRun
 from twoball.verify.studies.reference import ConvergedReference, LegendreRun
 from twoball.verify.studies.trajectory import TrajectoryNorm, hermite_resample
-
-from .config import AlphaTarget
-from .results import Check, RunRow, bounded, liftoff_gap, run_row
 
 
 @dataclass

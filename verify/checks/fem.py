@@ -11,6 +11,8 @@ from twoball.modal.filters import FilterKind
 from twoball.modal.initial import deformation_work
 from twoball.modal.liftoff import Horizon
 from twoball.modal.parameters import Case
+from twoball.verify.checks.config import FEMTarget, VerifyConfig
+from twoball.verify.checks.results import Check, bounded
 from twoball.verify.output.figures.eigen import EigenErrors
 from twoball.verify.studies.fem_runs import (
     EIGEN_DEGREES,
@@ -22,9 +24,6 @@ from twoball.verify.studies.fem_runs import (
 )
 from twoball.verify.studies.orders import observed_order
 from twoball.verify.studies.result import Progress
-
-from .config import FEMTarget, VerifyConfig
-from .results import Check, bounded
 
 
 def eigen_checks(run: FEMRun, target: FEMTarget) -> tuple[list[Check], EigenErrors]:

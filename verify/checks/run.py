@@ -22,6 +22,10 @@ from twoball.modal.filters import FilterKind
 from twoball.modal.liftoff import Horizon
 from twoball.modal.parameters import Case
 from twoball.modal.report import t_end_dimensionless
+from twoball.verify.checks.alpha import alpha_checks
+from twoball.verify.checks.config import ROUTE_AGREEMENT, VerifyConfig, config
+from twoball.verify.checks.fem import eigen_checks, energy_check, energy_order_check
+from twoball.verify.checks.results import Check, RunRow, VerifyResult, bounded, liftoff_gap, run_row
 from twoball.verify.output.figures.eigen import EigenErrors
 from twoball.verify.output.figures.pole import Trace
 from twoball.verify.studies.fem_runs import FEMRun, FEMSpec, fem_run
@@ -32,11 +36,6 @@ from twoball.verify.studies.reference import (
     legendre_run,
 )
 from twoball.verify.studies.result import Progress, case_settings, si
-
-from .alpha import alpha_checks
-from .config import ROUTE_AGREEMENT, VerifyConfig, config
-from .fem import eigen_checks, energy_check, energy_order_check
-from .results import Check, RunRow, VerifyResult, bounded, liftoff_gap, run_row
 
 
 def run_verify(

@@ -19,9 +19,8 @@ from twoball.modal.filters import FilterKind, SpectralFilter
 from twoball.modal.liftoff import Horizon, find_liftoff
 from twoball.modal.parameters import Case
 from twoball.modal.series import ModalSeries
-
-from .reference import LegendreRun
-from .result import Progress, si
+from twoball.verify.studies.reference import LegendreRun
+from twoball.verify.studies.result import Progress, si
 
 MESH_LABELS = {"sphere": "icosphere", "axisym": "axisym"}
 # level 0 of the icosphere resolves no complete degree l >= 1 (nothing to compare)

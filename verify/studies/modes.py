@@ -14,11 +14,10 @@ from twoball.modal.filters import FilterKind
 from twoball.modal.liftoff import Horizon
 from twoball.modal.parameters import Case
 from twoball.modal.report import t_end_dimensionless
-
-from .gci import finite_or_none
-from .orders import OrderBand
-from .quantities import evaluate_quantity, liftoff_specs
-from .reference import (
+from twoball.verify.studies.gci import finite_or_none
+from twoball.verify.studies.orders import OrderBand
+from twoball.verify.studies.quantities import evaluate_quantity, liftoff_specs
+from twoball.verify.studies.reference import (
     PAPER_MODES,
     ConvergedReference,
     LegendreRun,
@@ -27,8 +26,8 @@ from .reference import (
     legendre_run,
     unfiltered_series,
 )
-from .result import Progress, StudyResult, case_settings, quiet, si
-from .trajectory import TrajectoryNorm
+from twoball.verify.studies.result import Progress, StudyResult, case_settings, quiet, si
+from twoball.verify.studies.trajectory import TrajectoryNorm
 
 DEFAULT_MODES: tuple[int, ...] = (30, 60, 120, 240, 480)
 MODES_BANDS: dict[str, OrderBand | None] = {

@@ -16,8 +16,7 @@ from typing import Literal
 
 import numpy as np
 from numpy.typing import ArrayLike
-
-from .gci import SAFETY_FACTOR, GCIResult, gci, positive_finite, richardson
+from twoball.verify.studies.gci import SAFETY_FACTOR, GCIResult, gci, positive_finite, richardson
 
 
 def observed_order(e_coarse: float, e_fine: float, h_coarse: float, h_fine: float) -> float:

@@ -15,9 +15,14 @@ from typing import Any
 
 import numpy as np
 from twoball.modal.parameters import Case
-
-from .gci import finite_or_none
-from .orders import OrderBand, OrderFit, SequenceAnalysis, analyse, least_squares_order
+from twoball.verify.studies.gci import finite_or_none
+from twoball.verify.studies.orders import (
+    OrderBand,
+    OrderFit,
+    SequenceAnalysis,
+    analyse,
+    least_squares_order,
+)
 
 ROUNDOFF = 1e-11  # relative errors below this are round-off: they carry no order
 

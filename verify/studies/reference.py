@@ -25,8 +25,7 @@ from twoball.modal.legendre import legendre_series
 from twoball.modal.liftoff import Horizon, find_liftoff
 from twoball.modal.parameters import Case
 from twoball.modal.series import ModalSeries
-
-from .result import si
+from twoball.verify.studies.result import si
 
 __all__ = [
     "PAPER_MODES",

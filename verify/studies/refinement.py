@@ -18,8 +18,7 @@ from twoball.modal.initial import deformation_work
 from twoball.modal.liftoff import Horizon
 from twoball.modal.parameters import Case
 from twoball.modal.report import t_end_dimensionless
-
-from .fem_runs import (
+from twoball.verify.studies.fem_runs import (
     AXISYM_BASE_ELEMENTS,
     EIGEN_DEGREES,
     MESH_LABELS,
@@ -31,11 +30,16 @@ from .fem_runs import (
     projection_energy,
     spec_from_level,
 )
-from .orders import OrderBand
-from .quantities import QuantityResult, QuantitySpec, evaluate_quantity, liftoff_specs
-from .reference import LegendreRun, legendre_row, legendre_run
-from .result import Progress, StudyResult, case_settings, quiet
-from .trajectory import TrajectoryNorm
+from twoball.verify.studies.orders import OrderBand
+from twoball.verify.studies.quantities import (
+    QuantityResult,
+    QuantitySpec,
+    evaluate_quantity,
+    liftoff_specs,
+)
+from twoball.verify.studies.reference import LegendreRun, legendre_row, legendre_run
+from twoball.verify.studies.result import Progress, StudyResult, case_settings, quiet
+from twoball.verify.studies.trajectory import TrajectoryNorm
 
 # Expected orders in h (element order P).  Eigenvalues: 2P (Babuska & Osborn 1991; on the
 # sphere P2 needs the curved isoparametric geometry, a flat P1 polyhedron adds O(h^2)).  On an

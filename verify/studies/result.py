@@ -11,11 +11,10 @@ from dataclasses import dataclass, field
 from typing import Any
 
 from twoball.modal.parameters import Case
+from twoball.verify.studies.quantities import QuantityResult
 
 from twoball.progress import Step as Progress  # the one progress mechanism (twoball.progress)
 from twoball.progress import silent as quiet
-
-from .quantities import QuantityResult
 
 STUDIES: tuple[str, ...] = ("h", "order", "modes", "dt")
 __all__ = ["STUDIES", "Progress", "StudyResult", "case_settings", "quiet", "si"]

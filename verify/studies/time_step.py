@@ -16,13 +16,17 @@ from twoball.modal.filters import FilterKind
 from twoball.modal.liftoff import Horizon, find_liftoff
 from twoball.modal.parameters import Case
 from twoball.modal.report import t_end_dimensionless
-
-from .fem_runs import FEMSpec, fem_row, fem_run
-from .orders import OrderBand
-from .quantities import QuantitySpec, evaluate_quantity, liftoff_specs, ms_per_unit
-from .reference import legendre_run
-from .result import Progress, StudyResult, case_settings, quiet, si
-from .trajectory import TrajectoryNorm, hermite_resample
+from twoball.verify.studies.fem_runs import FEMSpec, fem_row, fem_run
+from twoball.verify.studies.orders import OrderBand
+from twoball.verify.studies.quantities import (
+    QuantitySpec,
+    evaluate_quantity,
+    liftoff_specs,
+    ms_per_unit,
+)
+from twoball.verify.studies.reference import legendre_run
+from twoball.verify.studies.result import Progress, StudyResult, case_settings, quiet, si
+from twoball.verify.studies.trajectory import TrajectoryNorm, hermite_resample
 
 DT_LEVEL_LIMITS = (0, 8)
 DT_BASE = 0.01  # dt of level 0 (dimensionless; omega_N dt = 0.3 for N = 30)

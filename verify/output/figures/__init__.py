@@ -122,10 +122,9 @@ def save_figure(
         Writing failed (full disk, ...); it names ``path``, and ``path`` is unchanged.
     """
     import matplotlib
+    from twoball.verify.output.figures.style import STYLE
 
     from twoball.staging import staged_file
-
-    from .style import STYLE
 
     out = Path(path).expanduser()
     kind = figure_format(out, flag)

@@ -11,10 +11,10 @@ independent solves goes through the context's runner
 processes or on Dask with the same numbers.
 """
 
-from .fig6 import part_fig6
-from .fig10 import part_fig10
-from .fig11 import part_fig11
-from .fig12 import part_fig12
-from .thresholds import part_thresholds
+from twoball.verify.reproduce.cem.fig6 import part_fig6
+from twoball.verify.reproduce.cem.fig10 import part_fig10
+from twoball.verify.reproduce.cem.fig11 import part_fig11
+from twoball.verify.reproduce.cem.fig12 import part_fig12
+from twoball.verify.reproduce.cem.thresholds import part_thresholds
 
 __all__ = ["part_fig6", "part_fig10", "part_fig11", "part_fig12", "part_thresholds"]

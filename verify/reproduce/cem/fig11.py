@@ -14,6 +14,15 @@ from scipy.optimize import brentq
 from twoball.modal.parameters import STANDARD_GRAVITY as G
 from twoball.modal.parameters import preset
 from twoball.verify.output.figures.style import REFERENCE_COLOUR, label, styled
+from twoball.verify.reproduce.cem.tasks import (
+    CRITERIA,
+    ThresholdTask,
+    call,
+    minima_task,
+    outcome_value,
+    run_tasks,
+    threshold_text,
+)
 from twoball.verify.reproduce.common import (
     Comparison,
     Context,
@@ -26,16 +35,6 @@ from twoball.verify.reproduce.common import (
     save,
 )
 from twoball.verify.sweeps.sweeps import SweepSolver, run_sweep
-
-from .tasks import (
-    CRITERIA,
-    ThresholdTask,
-    call,
-    minima_task,
-    outcome_value,
-    run_tasks,
-    threshold_text,
-)
 
 if TYPE_CHECKING:
     from matplotlib.figure import Figure

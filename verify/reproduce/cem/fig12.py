@@ -14,6 +14,7 @@ from scipy.optimize import minimize_scalar
 from twoball.modal.parameters import STANDARD_GRAVITY as G
 from twoball.modal.parameters import Case, preset
 from twoball.verify.output.figures.style import label, styled
+from twoball.verify.reproduce.cem.tasks import call, run_tasks
 from twoball.verify.reproduce.common import (
     Comparison,
     Context,
@@ -24,8 +25,6 @@ from twoball.verify.reproduce.common import (
     save,
 )
 from twoball.verify.sweeps.sweeps import SweepSolver, run_sweep
-
-from .tasks import call, run_tasks
 
 if TYPE_CHECKING:
     from matplotlib.figure import Figure

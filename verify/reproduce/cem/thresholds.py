@@ -17,6 +17,14 @@ from twoball.modal.legendre import (
 )
 from twoball.modal.parameters import STANDARD_GRAVITY as G
 from twoball.modal.parameters import Case
+from twoball.verify.reproduce.cem.fig12 import fig12_base
+from twoball.verify.reproduce.cem.tasks import (
+    ThresholdTask,
+    call,
+    outcome_value,
+    run_tasks,
+    threshold_text,
+)
 from twoball.verify.reproduce.common import (
     MAX_QUADRATURE_POINTS,
     Comparison,
@@ -25,9 +33,6 @@ from twoball.verify.reproduce.common import (
     fmt,
     markdown_table,
 )
-
-from .fig12 import fig12_base
-from .tasks import ThresholdTask, call, outcome_value, run_tasks, threshold_text
 
 THRESHOLD_SCANS: dict[str, tuple[str, float, float, str, float]] = {
     # panel: (Case field, scan low, scan high, unit, paper value in that unit)
