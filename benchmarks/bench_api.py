@@ -50,9 +50,9 @@ def main() -> int:
     repeats = 5 if parser.parse_args().quick else 21
 
     from twoball.modal.report import legendre_liftoff
-    from twoball.verify.cli.main import main as cli
 
     import twoball
+    from twoball.cli.main import main as cli
 
     case = twoball.Case.preset("basketball")
     slower = case.derive(v0=3.0)

@@ -1,4 +1,4 @@
-"""Calibration of the resource estimates of :mod:`twoball.budget` against measurement.
+"""Calibration of the resource estimates of :mod:`twoball._common.budget` against measurement.
 
 Run from the repository root::
 
@@ -58,7 +58,7 @@ def measure(code: str) -> tuple[float, float]:
 
 def main() -> None:
     """Print the table."""
-    from twoball import budget
+    from twoball._common import budget
 
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--quick", action="store_true")

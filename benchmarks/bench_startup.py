@@ -66,7 +66,7 @@ def twoball_launcher() -> tuple[list[str], str]:
         script = Path(found) if found else script
     if script.exists():
         # The script's own interpreter, from a neutral directory: where does it find twoball?
-        probe = "import twoball.verify.cli.main as m; print(m.__file__)"
+        probe = "import twoball.cli.main as m; print(m.__file__)"
         with tempfile.TemporaryDirectory() as neutral:
             done = subprocess.run(
                 [_interpreter(script), "-c", probe],

@@ -194,7 +194,11 @@ def collect() -> dict[str, object]:
             if done.returncode not in (0, 1):
                 results[key] = {"exit": done.returncode, "stderr": done.stderr.strip()}
                 continue
-            results[key] = {"exit": done.returncode, "json": _strip(json.loads(done.stdout))}
+            try:
+                output = _strip(json.loads(done.stdout))
+            except json.JSONDecodeError:
+                output = {"stdout": done.stdout.strip(), "stderr": done.stderr.strip()}
+            results[key] = {"exit": done.returncode, "json": output}
         results["export-hashes"] = _export_hashes(tmp, env)
     return results
 

@@ -4,7 +4,7 @@ Writing the fields and reading them back
 
 The radial displacement of both backends on the sphere mesh, written by
 meshio as an XDMF time series (XML + HDF5, readable by ParaView and pyvista)
-and read back into a :class:`twoball.fem_membrane.export.TimeSeries`.  The
+and read back into a :class:`twoball.verify.output.series.TimeSeries`.  The
 difference between the backends at lift-off is then plotted from the file,
 not from memory.
 """
@@ -16,8 +16,8 @@ from pathlib import Path
 
 import matplotlib.pyplot as plt
 import numpy as np
-from twoball.fem_membrane.export import read_series, write_series
 from twoball.verify.output.fields import ball_model, field_series, frame_times
+from twoball.verify.output.series import read_series, write_series
 
 import twoball
 

@@ -15,8 +15,8 @@ from pathlib import Path
 
 import matplotlib.image as mpimg
 import matplotlib.pyplot as plt
-from twoball.fem_membrane.render import render_scene
 from twoball.verify.output.fields import ball_model, ball_scene, liftoff_frame
+from twoball.verify.output.render import render_scene
 
 import twoball
 

@@ -16,7 +16,7 @@ Entry points for the command line:
 * :func:`eigen_table` -- lowest eigenvalues beside ``l (l + 1)``.
 """
 
-from twoball._lazy import attach
+from twoball._common.lazy import attach
 
 __getattr__, __dir__ = attach(
     __name__,

@@ -34,7 +34,8 @@ from scipy.sparse.linalg import splu
 from twoball.fem_membrane.checks import check_dt, check_rho_inf, check_t_end
 from twoball.fem_membrane.damping import ModalDamping
 from twoball.fem_membrane.space import PoleFunctional, pole_value
-from twoball.modal.errors import NumericalError
+
+from twoball._common.errors import NumericalError
 
 
 @dataclass(frozen=True)

@@ -13,8 +13,9 @@ from twoball.fem_membrane.checks import (
 )
 from twoball.fem_membrane.mesh import SphereMesh, icosphere, ring_sphere
 from twoball.fem_membrane.space import Discretisation, sphere_space
-from twoball.modal.errors import ParameterError
 from twoball.modal.initial import _check_phi_a
+
+from twoball._common.errors import ParameterError
 
 DEFAULT_LEVEL = 3
 DEFAULT_ELEMENTS = 400

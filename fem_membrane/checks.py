@@ -1,6 +1,6 @@
 """Input validation shared by the finite-element entry points.
 
-Every check raises :class:`twoball.modal.errors.ParameterError` naming the command-line
+Every check raises :class:`twoball._common.errors.ParameterError` naming the command-line
 flag the value comes from, so the CLI can print the message unchanged.
 """
 
@@ -9,7 +9,7 @@ from __future__ import annotations
 import math
 from numbers import Integral, Real
 
-from twoball.modal.errors import ParameterError
+from twoball._common.errors import ParameterError
 
 ORDERS: tuple[int, ...] = (1, 2, 3, 4)
 ORDER_RANGE = "1, 2, 3 or 4"

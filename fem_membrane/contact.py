@@ -23,7 +23,8 @@ from twoball.fem_membrane.locate import locate_pole
 from twoball.fem_membrane.mesh import SphereMesh, icosphere, ring_sphere
 from twoball.fem_membrane.space import Discretisation
 from twoball.modal.contact.caps import cap_rule, sphere_cap_points
-from twoball.modal.errors import ParameterError
+
+from twoball._common.errors import ParameterError
 
 #: Cap quadrature: Gauss points in cos(phi), and azimuthal points on the sphere.
 CAP_RINGS = 12
@@ -144,13 +145,13 @@ def fem_contact_solution(
     holds the eigenvectors the contact solver moved (fields of
     :mod:`twoball.fem_membrane.contact_fields`).
     """
+    from twoball.fem_membrane.options import MeshOptions
     from twoball.modal.contact.caps import cap_angle
     from twoball.modal.contact.report import check_contact_options, membrane_case, solve_contact
     from twoball.modal.filters import SpectralFilter
     from twoball.modal.report import t_end_dimensionless
 
-    from twoball.budget import check_fem
-    from twoball.mesh_options import MeshOptions
+    from twoball._common.budget import check_fem
 
     radius = check_contact_options(case, mass_ratio, contact_radius, restitution, energy)
     spec = MeshOptions.resolve(mesh, level=level, elements=elements, order=order, files=False)

@@ -23,8 +23,9 @@ from dataclasses import dataclass
 import numpy as np
 import scipy.sparse as sp
 from twoball.fem_membrane.eigen import Eigenpairs
-from twoball.modal.errors import ParameterError
 from twoball.modal.series import check_damping
+
+from twoball._common.errors import ParameterError
 
 RAYLEIGH_LOW = math.sqrt(2.0)  # default lower fitting frequency: omega_1 of the sphere
 ZERO_FREQUENCY = 1e-3  # below this a computed frequency is the constant mode (omega = 0)

@@ -31,7 +31,8 @@ from twoball.fem_membrane.slicing import (
     use_dense,
 )
 from twoball.fem_membrane.slicing import m_orthonormal as m_orthonormalise
-from twoball.modal.errors import NumericalError, ParameterError
+
+from twoball._common.errors import NumericalError, ParameterError
 
 __all__ = [
     "Eigenpairs",

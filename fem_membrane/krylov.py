@@ -80,10 +80,11 @@ from twoball.fem_membrane.eigen import Eigenpairs
 from twoball.fem_membrane.ritz_field import FieldChange
 from twoball.fem_membrane.slicing import factorise
 from twoball.fem_membrane.space import Discretisation, PoleFunctional, pole_value, pole_vector
-from twoball.modal.errors import NumericalError, ParameterError
 from twoball.modal.filters import SpectralFilter
 from twoball.modal.liftoff import DEFAULT_T_END
 from twoball.modal.series import ModalSeries, check_damping
+
+from twoball._common.errors import NumericalError, ParameterError
 
 TOLERANCE = 1e-10  # relative change of the filtered pole trajectory (u and u_tt)
 SHIFT_COUNT = 3  # default number of shifts (factorisations of K - sigma M)

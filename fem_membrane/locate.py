@@ -10,7 +10,8 @@ from __future__ import annotations
 
 import numpy as np
 from twoball.fem_membrane.mesh import NODES_PER_TRIANGLE, SphereMesh
-from twoball.modal.errors import NumericalError
+
+from twoball._common.errors import NumericalError
 
 
 def shape_functions(order: int, xi: np.ndarray) -> tuple[np.ndarray, np.ndarray]:

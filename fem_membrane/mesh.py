@@ -31,7 +31,8 @@ from pathlib import Path
 import numpy as np
 from skfem import MeshTri1
 from twoball.fem_membrane.checks import check_level, check_order
-from twoball.modal.errors import ParameterError
+
+from twoball._common.errors import ParameterError
 
 POLE = np.array([0.0, 0.0, 1.0])
 _POLE_TOLERANCE = 1e-12

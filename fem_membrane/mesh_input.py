@@ -11,7 +11,7 @@ dimensionless geometry of eq. (3.9), whose pole motion decides lift-off.
 The checks (one closed, manifold, connected surface of sphere topology,
 spherical to :data:`MAX_RADIAL_DEVIATION`, consistently oriented) and the
 centre and radius fit are in :mod:`twoball.fem_membrane.surface_checks`; each
-failure is a :class:`twoball.modal.errors.ParameterError` naming ``mesh``
+failure is a :class:`twoball._common.errors.ParameterError` naming ``mesh``
 with what is wrong and by how much.  Cells: ``triangle`` (3-node) or
 ``triangle6`` (6-node), one kind only; other surface cells (quadrilaterals,
 polygons) are refused; lines, vertices and volume cells are ignored (and
@@ -43,7 +43,8 @@ from twoball.fem_membrane.surface_checks import (
     orient_outward,
     refuse,
 )
-from twoball.modal.errors import ParameterError
+
+from twoball._common.errors import ParameterError
 
 __all__ = ["MAX_RADIAL_DEVIATION", "MeshInput", "check_pole", "load_sphere_mesh", "rotation_to_z"]
 

@@ -42,9 +42,10 @@ from twoball.fem_membrane.checks import check_dt
 from twoball.fem_membrane.damping import ModalDamping
 from twoball.fem_membrane.eigen import Eigenpairs
 from twoball.fem_membrane.space import Discretisation
-from twoball.modal.errors import NumericalError
 from twoball.modal.series import ModalSeries
 from twoball.modal.stiffness import Stiffness, stiffen
+
+from twoball._common.errors import NumericalError
 
 
 class ShellOperator(LinearOperator):

@@ -47,7 +47,8 @@ import numpy as np
 import scipy.linalg as sl
 import scipy.sparse as sp
 from scipy.sparse.linalg import LinearOperator, eigsh, splu
-from twoball.modal.errors import NumericalError
+
+from twoball._common.errors import NumericalError
 
 DENSE_DOFS = 3000  # dense LAPACK up to this many unknowns when over DENSE_COUNT pairs are wanted
 DENSE_COUNT = 150

@@ -42,14 +42,14 @@ from twoball.fem_membrane.mesh import SphereMesh
 from twoball.fem_membrane.modal import filtered_displacement, modal_series
 from twoball.fem_membrane.ritz_field import field_times
 from twoball.fem_membrane.space import Discretisation
-from twoball.modal.errors import ParameterError
 from twoball.modal.filters import FilterKind, SpectralFilter
 from twoball.modal.initial import _check_phi_a
 from twoball.modal.liftoff import DEFAULT_T_END, PoleMotion, SampledPoleMotion
 from twoball.modal.series import ModalSeries, check_damping
 from twoball.modal.stiffness import Stiffness
 
-from twoball.budget import check_fem
+from twoball._common.budget import check_fem
+from twoball._common.errors import ParameterError
 
 STEP_ACCURACY = 0.2  # automatic dt: omega_cut * dt <= 0.2
 

@@ -28,7 +28,8 @@ from twoball.fem_membrane.forms import mass, stiffness
 from twoball.fem_membrane.locate import locate_pole
 from twoball.fem_membrane.mapping import RadialProjectionMapping, SurfaceMapping
 from twoball.fem_membrane.mesh import SphereMesh, elevate, flatten, topology
-from twoball.modal.errors import ParameterError
+
+from twoball._common.errors import ParameterError
 
 PoleFunctional = int | sp.spmatrix
 """A degree-of-freedom index at the pole, or a sparse row (1, dofs) evaluating u there."""

@@ -1,7 +1,7 @@
 """Checks that a triangulated surface is one closed sphere, and its centre and radius.
 
 The checks behind :func:`twoball.fem_membrane.mesh_input.load_sphere_mesh`; each
-failure is a :class:`twoball.modal.errors.ParameterError` naming ``mesh``
+failure is a :class:`twoball._common.errors.ParameterError` naming ``mesh``
 that says what is wrong and by how much (:func:`refuse`):
 
 * nodes (:func:`clean_nodes`): three finite coordinates; coincident points
@@ -35,7 +35,8 @@ import math
 from dataclasses import dataclass
 
 import numpy as np
-from twoball.modal.errors import ParameterError
+
+from twoball._common.errors import ParameterError
 
 MAX_RADIAL_DEVIATION = 1e-4
 """Largest accepted mean ``|r_i - R| / R`` over the nodes (R the fitted radius).

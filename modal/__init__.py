@@ -3,7 +3,7 @@
 Dimensionless inside (length R, time 1/c); SI at :mod:`twoball.modal.report`.
 """
 
-from twoball._lazy import attach
+from twoball._common.lazy import attach
 
 __getattr__, __dir__ = attach(
     __name__,
@@ -13,9 +13,9 @@ __getattr__, __dir__ = attach(
         "LiftoffReport": ".report",
         "LiftoffResult": ".liftoff",
         "ModalSeries": ".series",
-        "NumericalError": ".errors",
+        "NumericalError": "twoball._common.errors",
         "PRESETS": ".parameters",
-        "ParameterError": ".errors",
+        "ParameterError": "twoball._common.errors",
         "PoleMotion": ".liftoff",
         "PoleState": ".series",
         "SampledPoleMotion": ".liftoff",

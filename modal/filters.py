@@ -12,7 +12,8 @@ from dataclasses import dataclass
 from typing import Literal
 
 import numpy as np
-from twoball.modal.errors import ParameterError
+
+from twoball._common.errors import ParameterError
 
 FilterKind = Literal["lanczos", "printed", "none"]
 FILTER_KINDS: tuple[str, ...] = ("lanczos", "printed", "none")

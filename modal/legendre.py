@@ -15,11 +15,12 @@ from functools import lru_cache
 import numpy as np
 from numpy.polynomial.legendre import legvander
 from numpy.typing import ArrayLike
-from twoball.modal.errors import NumericalError, ParameterError
 from twoball.modal.filters import FilterKind, SpectralFilter, legendre_frequency
 from twoball.modal.initial import _check_phi_a
 from twoball.modal.series import ModalSeries
 from twoball.modal.stiffness import Stiffness
+
+from twoball._common.errors import NumericalError, ParameterError
 
 _MAX_QUADRATURE = 20000
 

@@ -20,9 +20,10 @@ from typing import Literal, Protocol, runtime_checkable
 
 import numpy as np
 from numpy.typing import ArrayLike
-from twoball.modal.errors import NumericalError, ParameterError
 from twoball.modal.roots import bracketed_roots, newton_bracketed
 from twoball.modal.series import PoleState
+
+from twoball._common.errors import NumericalError, ParameterError
 
 Horizon = Literal["window", "paper"]
 HORIZONS: tuple[str, ...] = ("window", "paper")

@@ -12,7 +12,6 @@ import math
 from dataclasses import dataclass, replace
 from typing import Any
 
-from twoball.modal.errors import ParameterError, bounded, real_number
 from twoball.modal.initial import PHI_A_RANGE, check_phi_a, phi_a_from_v0  # noqa: F401 -- re-exported
 from twoball.modal.presets import MEASURED, Measured
 from twoball.modal.scalings import (  # noqa: F401 -- re-exported
@@ -34,6 +33,8 @@ from twoball.modal.scalings import (  # noqa: F401 -- re-exported
     wave_speed_from_pressure,
 )
 from twoball.modal.stiffness import ATMOSPHERE, GAS_MODELS, Stiffness, stiffness_from_si
+
+from twoball._common.errors import ParameterError, bounded, real_number
 
 
 def _number(name: str, value: object, valid: str) -> float:

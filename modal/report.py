@@ -42,7 +42,7 @@ class LiftoffReport:
         empty when the result is inside its trustworthy regime.
     provenance : dict, optional
         Versions, command line or API call, UTC time and case
-        (:func:`twoball.provenance.block`); set by the public API.
+        (:func:`twoball._common.provenance.block`); set by the public API.
     """
 
     case: Case
@@ -141,7 +141,7 @@ def t_end_dimensionless(case: Case, t_end_s: float | None) -> float:
     """The modelled window in units of 1/c; default 4 pi (i.e. 4 pi / c seconds)."""
     if t_end_s is None:
         return DEFAULT_T_END
-    from twoball.modal.errors import ParameterError, real_number
+    from twoball._common.errors import ParameterError, real_number
 
     # [1e-3, 1e9] time units 1/c: shorter windows hold no sample of the series,
     # longer ones overflow the sample counts (and the resource guards refuse far less)
@@ -197,7 +197,7 @@ def legendre_liftoff(
     reference: bool = True,
 ) -> LiftoffReport:
     """Lift-off of the closed-form CEM, eqs. (3.12)-(3.16) with criteria (i)-(ii) of §3(a)."""
-    from twoball.budget import check_series
+    from twoball._common.budget import check_series
 
     check_series(case.modes, t_end_dimensionless(case, t_end_s), t_end_s)
     series = legendre_series(

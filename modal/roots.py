@@ -5,7 +5,8 @@ from __future__ import annotations
 from collections.abc import Callable
 
 import numpy as np
-from twoball.modal.errors import NumericalError
+
+from twoball._common.errors import NumericalError
 
 
 def bracketed_roots(

@@ -3,7 +3,7 @@
 Inside the solvers everything is dimensionless: length unit R, time unit 1/c,
 velocity unit R c, acceleration unit R c^2, and gravity enters only as
 ``gamma = g / (R c^2)`` (§3(b)).  The ranges keep those numbers far from
-overflow; each ``check_*`` raises :class:`~twoball.modal.errors.ParameterError`
+overflow; each ``check_*`` raises :class:`~twoball._common.errors.ParameterError`
 naming the parameter and its valid range.
 """
 
@@ -13,7 +13,7 @@ import math
 from dataclasses import dataclass
 from numbers import Real
 
-from twoball.modal.errors import ParameterError, bounded, real_number
+from twoball._common.errors import ParameterError, bounded, real_number
 
 STANDARD_GRAVITY = 9.81  # m/s^2, the value used in the paper (§2)
 # Physically meaningful magnitudes (SI).  They also keep the dimensionless numbers

@@ -16,8 +16,9 @@ from typing import NamedTuple
 
 import numpy as np
 from numpy.typing import ArrayLike
-from twoball.modal.errors import NumericalError, ParameterError
 from twoball.modal.filters import SpectralFilter
+
+from twoball._common.errors import NumericalError, ParameterError
 
 _CHUNK = 4096  # time samples evaluated at once; bounds memory for large mode counts
 

@@ -40,8 +40,9 @@ import math
 from dataclasses import dataclass, replace
 
 import numpy as np
-from twoball.modal.errors import NumericalError, ParameterError
 from twoball.modal.series import ModalSeries
+
+from twoball._common.errors import NumericalError, ParameterError
 
 GAS_MODELS: dict[str, float] = {"none": 0.0, "isothermal": 1.0, "adiabatic": 1.4}
 """Polytropic exponent kappa of the enclosed gas (0: no gas term)."""
@@ -184,7 +185,7 @@ def stiffen(series: ModalSeries, stiffness: Stiffness, surface_ratio: float = 1.
 
 def flexural_rigidity(youngs_modulus: float, thickness: float, poisson: float = 0.5) -> float:
     """``B = E h^3 / (12 (1 - nu^2))`` [N m] from E [Pa], h [m] and nu in [0, 1/2]."""
-    from twoball.modal.errors import bounded
+    from twoball._common.errors import bounded
 
     youngs_modulus = bounded("youngs_modulus", youngs_modulus, 0.0, 1e15, "Pa", low_open=True)
     thickness = bounded("thickness", thickness, 0.0, 1.0, "m", low_open=True)

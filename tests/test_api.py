@@ -18,11 +18,11 @@ from pathlib import Path
 
 import numpy as np
 import pytest
-from twoball.modal.errors import ParameterError
 from twoball.modal.parameters import Case
-from twoball.verify.cli.main import main
 
 import twoball
+from twoball._common.errors import ParameterError
+from twoball.cli.main import main
 
 ROOT = Path(__file__).resolve().parents[1]
 
@@ -312,7 +312,7 @@ def test_verify_is_callable_and_the_subpackage(tmp_path):
 def test_public_names_and_version():
     for name in ("Case", "liftoff", "sweep", "fem", "converge", "verify", "export", "render"):
         assert name in dir(twoball) and getattr(twoball, name) is not None
-    assert twoball.ParameterError is twoball.modal.errors.ParameterError
+    assert twoball.ParameterError is twoball._common.errors.ParameterError
     assert re.fullmatch(r"\d+\.\d+(\.\d+)?\S*", twoball.__version__)
 
 
@@ -332,7 +332,7 @@ def test_import_twoball_is_light():
 
 def test_closed_form_loads_no_plotting_or_fem():
     loaded = _modules_after(
-        "import contextlib, io\nfrom twoball.verify.cli.main import main\n"
+        "import contextlib, io\nfrom twoball.cli.main import main\n"
         "with contextlib.redirect_stdout(io.StringIO()):\n    main(['liftoff', '--json'])"
     )
     assert not {"matplotlib", "skfem", "pyvista"} & loaded

@@ -1,4 +1,4 @@
-"""Resource guards (twoball.budget): limits, messages, estimates against measurements.
+"""Resource guards (twoball._common.budget): limits, messages, estimates against measurements.
 
 Every absurd size of issue 11 is run in one child process whose address space
 and CPU time are capped: had any of them started its work it would die with a
@@ -16,10 +16,9 @@ import textwrap
 from pathlib import Path
 
 import pytest
-from twoball.modal.errors import ParameterError
 
-from twoball import budget
-from twoball.budget import (
+from twoball._common import budget
+from twoball._common.budget import (
     Budget,
     BudgetError,
     Estimate,
@@ -30,6 +29,7 @@ from twoball.budget import (
     parse_seconds,
     series_estimate,
 )
+from twoball._common.errors import ParameterError
 
 ROOT = Path(__file__).resolve().parents[1]
 
@@ -117,7 +117,7 @@ CHILD = textwrap.dedent(
     import contextlib, io, json, resource, sys
     resource.setrlimit(resource.RLIMIT_AS, (3 * 2**30, 3 * 2**30))
     resource.setrlimit(resource.RLIMIT_CPU, (60, 60))
-    from twoball.verify.cli.main import main
+    from twoball.cli.main import main
     out = []
     for argv in json.loads(sys.argv[1]):
         err = io.StringIO()

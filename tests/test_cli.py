@@ -7,7 +7,8 @@ import subprocess
 import sys
 
 import pytest
-from twoball.verify.cli.main import main
+
+from twoball.cli.main import main
 
 
 def run(capsys, *argv):

@@ -20,12 +20,12 @@ from twoball.modal.contact.caps import (
 )
 from twoball.modal.contact.events import integrate
 from twoball.modal.contact.system import ContactSystem
-from twoball.modal.errors import ParameterError
 from twoball.modal.legendre import legendre_series
 from twoball.modal.parameters import Case
 from twoball.modal.series import ModalSeries
 
 import twoball
+from twoball._common.errors import ParameterError
 
 BASKETBALL = Case.preset("basketball")
 

@@ -16,10 +16,8 @@ import json
 import imageio.v3 as iio
 import numpy as np
 import pytest
-from twoball.fem_membrane.export import read_series
 from twoball.modal.contact.trajectory import sample
 from twoball.modal.parameters import preset
-from twoball.verify.cli.main import main
 from twoball.verify.output.contact_fields import (
     contact_options,
     contact_scene,
@@ -27,8 +25,10 @@ from twoball.verify.output.contact_fields import (
 )
 from twoball.verify.output.figures.contact_pole import BODY_GID, EVENT_GID, contact_pole_figure
 from twoball.verify.output.figures.style import curves
+from twoball.verify.output.series import read_series
 
 import twoball
+from twoball.cli.main import main
 
 CASE = preset("basketball").derive(modes=10)
 MU = 0.1
@@ -221,7 +221,8 @@ def test_options_that_do_not_apply_are_refused(argv, flag, tmp_path, capsys):
 def test_cli_option_constants_match_the_model():
     """The option group (kept light: no scipy at start-up) states the model's limits."""
     from twoball.modal.contact import report
-    from twoball.verify.cli import contact_options
+
+    from twoball.cli import contact_options
 
     assert contact_options.MAX_MASS_RATIO == report.MAX_MASS_RATIO
     assert contact_options.ENERGY_OPTIONS == report.ENERGY_OPTIONS

@@ -14,7 +14,7 @@ Checked:
   one exists in the build, MathJax included, so formulas render offline;
 * the "Section Navigation" sidebar of every content page lists pages;
 * the generated CLI reference names every subcommand of
-  :func:`twoball.verify.cli.main.full_parser` and, in that subcommand's
+  :func:`twoball.cli.main.full_parser` and, in that subcommand's
   section, every one of its options.
 """
 
@@ -130,7 +130,7 @@ def test_section_navigation_lists_the_pages_of_each_section(html: Path) -> None:
 
 def parser_options() -> dict[str, set[str]]:
     """Subcommand -> every option string (or positional metavar) shown by its ``--help``."""
-    from twoball.verify.cli.main import full_parser
+    from twoball.cli.main import full_parser
 
     parser = full_parser()
     (sub,) = (a for a in parser._actions if isinstance(a, argparse._SubParsersAction))

@@ -24,11 +24,11 @@ from twoball.fem_membrane.locate import locate_pole
 from twoball.fem_membrane.mapping import RadialProjectionMapping
 from twoball.fem_membrane.mesh import elevate, icosphere, ring_sphere
 from twoball.fem_membrane.mesh_input import load_sphere_mesh
+from twoball.fem_membrane.options import MeshOptions
 from twoball.fem_membrane.slicing import inertia, slice_pairs
 from twoball.fem_membrane.space import sphere_space
-from twoball.modal.errors import ParameterError
 
-from twoball.mesh_options import MeshOptions
+from twoball._common.errors import ParameterError
 
 BAND = 0.3  # observed order within +-0.3 of the expected one (too high fails too)
 GEOMETRIC_RATE = {1: 2.0, 2: 4.0, 3: 4.0, 4: 6.0}  # isoparametric: min(2p, p+1 | p+2)
@@ -260,7 +260,7 @@ def test_options_refuse_what_does_not_apply(kwargs, text):
     ],
 )
 def test_cli_refusals_are_one_line(capsys, argv, flag):
-    from twoball.verify.cli.main import main
+    from twoball.cli.main import main
 
     with pytest.raises(SystemExit) as stop:
         main(argv)
@@ -271,9 +271,8 @@ def test_cli_refusals_are_one_line(capsys, argv, flag):
 
 def test_cli_equals_api_with_the_exact_geometry(capsys):
     """Same inputs, bit-identical numbers: liftoff --geometry exact against twoball.fem.solve."""
-    from twoball.verify.cli.main import main
-
     import twoball
+    from twoball.cli.main import main
     from twoball.fem import solve
 
     code = main(["liftoff", "--backend", "fem", "--level", "1", "--order", "3",

@@ -10,16 +10,17 @@ import meshio
 import numpy as np
 import pytest
 import pyvista as pv
-from twoball.fem_membrane import export
-from twoball.fem_membrane.export import TimeSeries, read_series, write_series
+from twoball.verify.output import series as export
 from twoball.fem_membrane.initial import initial_load
 from twoball.fem_membrane.space import sphere_space
-from twoball.modal.errors import ParameterError
 from twoball.modal.filters import SpectralFilter
 from twoball.modal.legendre import displacement, legendre_series
 from twoball.modal.parameters import preset
-from twoball.verify.cli.main import main
 from twoball.verify.output.fields import ball_model, field_series, frame_times
+from twoball.verify.output.series import TimeSeries, read_series, write_series
+
+from twoball._common.errors import ParameterError
+from twoball.cli.main import main
 
 FIELDS = ("u_m", "u_t_m_s", "u_tt_m_s2", "displacement_m", "u_fem_m", "u_legendre_m", "u_diff_m")
 

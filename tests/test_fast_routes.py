@@ -14,8 +14,9 @@ from twoball.fem_membrane.mesh import icosphere
 from twoball.fem_membrane.modal import modal_series
 from twoball.fem_membrane.ritz_field import field_times
 from twoball.fem_membrane.space import sphere_space
-from twoball.modal.errors import ParameterError
 from twoball.modal.filters import SpectralFilter
+
+from twoball._common.errors import ParameterError
 
 PHI_A = 2.6
 DAMPING = 0.13
@@ -146,7 +147,7 @@ def test_eigen_table_reports_residuals_and_refuses_too_many():
     ],
 )
 def test_bad_route_or_count_is_one_line_exit_2(argv, tmp_path, capsys):
-    from twoball.verify.cli.main import main
+    from twoball.cli.main import main
 
     with pytest.raises(SystemExit) as stop:
         main([a.format(tmp=tmp_path) for a in argv])

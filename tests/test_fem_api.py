@@ -6,7 +6,8 @@ import pytest
 from twoball.fem_membrane import eigen_table, fem_pole_motion
 from twoball.fem_membrane.axisym import axisym_space
 from twoball.fem_membrane.mesh import icosphere, ring_sphere
-from twoball.modal.errors import ParameterError
+
+from twoball._common.errors import ParameterError
 
 PHI_A, DAMPING = 2.6, 0.13
 

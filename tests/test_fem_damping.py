@@ -8,9 +8,10 @@ import numpy as np
 import pytest
 from twoball.fem_membrane.damping import RayleighDamping
 from twoball.fem_membrane.solve import alpha_motion, fem_pole_motion, modal_model
-from twoball.modal.errors import ParameterError
 from twoball.modal.filters import SpectralFilter
 from twoball.modal.series import ModalSeries
+
+from twoball._common.errors import ParameterError
 
 PHI_A, DAMPING = 2.6, 0.13
 

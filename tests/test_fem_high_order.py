@@ -313,7 +313,7 @@ def test_file_mesh_raised_to_order_p_and_the_pole_inside_an_element(order):
 )
 def test_field_files_and_pictures_refuse_p3_p4_in_one_line(tmp_path, capsys, argv):
     """No node order for 10/15-node triangles is shared by the writers: refused, exit 2."""
-    from twoball.verify.cli.main import main
+    from twoball.cli.main import main
 
     with pytest.raises(SystemExit) as stop:
         main([part.format(tmp=tmp_path) for part in argv])

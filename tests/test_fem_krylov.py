@@ -9,10 +9,11 @@ from twoball.fem_membrane.eigen import eigenpairs
 from twoball.fem_membrane.initial import initial_moments
 from twoball.fem_membrane.krylov import default_shifts, krylov_modal_series
 from twoball.fem_membrane.modal import modal_series
-from twoball.modal.errors import NumericalError, ParameterError
 from twoball.modal.filters import SpectralFilter
 from twoball.modal.liftoff import find_liftoff
 from twoball.modal.series import ModalSeries
+
+from twoball._common.errors import NumericalError, ParameterError
 
 PHI_A = 2.6
 DAMPING = 0.13
@@ -119,7 +120,8 @@ def test_default_shifts_lie_in_gaps():
 
 def test_choose_route():
     from twoball.fem_membrane.krylov import AUTO_THRESHOLD, choose_route
-    from twoball.modal.errors import ParameterError
+
+    from twoball._common.errors import ParameterError
 
     assert choose_route("auto", AUTO_THRESHOLD) == "krylov"
     assert choose_route("auto", AUTO_THRESHOLD - 1) == "full"

@@ -18,16 +18,16 @@ import imageio.v3 as iio
 import numpy as np
 import pytest
 from test_mesh_input import CENTER, OFF_NODE_POLES, RADIUS, on_ball, write
-from twoball.fem_membrane.export import read_series
 from twoball.fem_membrane.mesh import icosphere
-from twoball.modal.errors import ParameterError
 from twoball.modal.filters import SpectralFilter
 from twoball.modal.legendre import displacement, legendre_series
-from twoball.verify.cli.main import main
+from twoball.verify.output.fields import check_frame_budget, field_mesh
+from twoball.verify.output.series import read_series
 
 import twoball
-from twoball.budget import BudgetError, frames_estimate, limits
-from twoball.field_model import check_frame_budget, field_mesh
+from twoball._common.budget import BudgetError, frames_estimate, limits
+from twoball._common.errors import ParameterError
+from twoball.cli.main import main
 
 CASE = twoball.Case.preset("basketball")
 MM = 1000.0  # the .msh file is in millimetres

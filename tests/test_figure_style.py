@@ -255,9 +255,9 @@ def test_label_helpers():
 
 
 def test_gif_colour_bar_is_smooth_and_footer_short(model, tmp_path):
-    from twoball.fem_membrane.palette import colour_map_samples
-    from twoball.fem_membrane.render import COLOUR_MAP, render_scene, wrap_footer
     from twoball.verify.output.fields import ball_scene
+    from twoball.verify.output.palette import colour_map_samples
+    from twoball.verify.output.render import COLOUR_MAP, render_scene, wrap_footer
 
     scene = ball_scene(model, np.linspace(0.0, model.t_end_s, 3), "fem")
     out = render_scene(tmp_path / "ball.gif", scene, size=(320, 240), fps=10)

@@ -4,8 +4,9 @@ import math
 
 import numpy as np
 import pytest
-from twoball.modal.errors import ParameterError
 from twoball.modal.filters import SpectralFilter, legendre_frequency
+
+from twoball._common.errors import ParameterError
 
 
 def test_lanczos_is_sinc_with_pi_and_zero_at_cutoff():

@@ -20,9 +20,9 @@ from pathlib import Path
 import gmsh
 import numpy as np
 import pytest
-from twoball.verify.cli.main import main
 
 import twoball
+from twoball.cli.main import main
 
 RADIUS = 0.12  # m
 CENTRE = (0.01, -0.02, 0.03)  # m

@@ -21,14 +21,15 @@ from twoball.modal.filters import SpectralFilter
 from twoball.modal.guards import TRUNCATION_WARNING, truncation, window_warnings
 from twoball.modal.parameters import preset
 from twoball.modal.report import legendre_liftoff
-from twoball.verify.cli.main import main
+
+from twoball.cli.main import main
 
 
 def run_json(capsys: pytest.CaptureFixture[str], *argv: str) -> tuple[dict, list[str]]:
     """``twoball liftoff --json ...``: the JSON object and the stderr warning lines."""
     assert main(["liftoff", "--json", *argv]) == 0
     out, err = capsys.readouterr()
-    # a finite-element solve longer than 2 s also reports progress (twoball.progress)
+    # a finite-element solve longer than 2 s also reports progress (twoball._common.progress)
     progress = "twoball: liftoff: "
     return json.loads(out), [line for line in err.splitlines() if line and progress not in line]
 

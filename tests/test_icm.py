@@ -7,7 +7,6 @@ import math
 
 import numpy as np
 import pytest
-from twoball.modal.errors import ParameterError
 from twoball.modal.icm import (
     TABLE1,
     ICMResult,
@@ -25,6 +24,8 @@ from twoball.modal.icm import (
     touching_ratios,
 )
 from twoball.modal.parameters import STANDARD_GRAVITY
+
+from twoball._common.errors import ParameterError
 
 # A hand-worked case.  With g = 9.81 and H = g / 2 the impact speed is
 # |v0| = g = 9.81 m/s and t0 = 1 s.  e2 = 0.5: u0 = 4.905 m/s.

@@ -5,7 +5,6 @@ import math
 import numpy as np
 import pytest
 from scipy.integrate import quad
-from twoball.modal.errors import ParameterError
 from twoball.modal.initial import (
     deformation_work,
     initial_displacement,
@@ -14,6 +13,8 @@ from twoball.modal.initial import (
     v0_dimensionless,
     v0_from_phi_a,
 )
+
+from twoball._common.errors import ParameterError
 
 
 def test_initial_displacement_is_the_truncated_sphere():

@@ -46,4 +46,4 @@ def test_installed_distribution_has_one_top_level_name():
 
 def test_console_script_points_into_twoball():
     scripts = _pyproject()["project"]["scripts"]
-    assert scripts == {"twoball": "twoball.verify.cli.main:main"}
+    assert scripts == {"twoball": "twoball.cli.main:main"}

@@ -27,11 +27,12 @@ from twoball.fem_membrane.mesh_input import MAX_RADIAL_DEVIATION, load_sphere_me
 from twoball.fem_membrane.modal import modal_series
 from twoball.fem_membrane.space import pole_value, sphere_space
 from twoball.fem_membrane.surface_checks import sphere_fit
-from twoball.modal.errors import ParameterError
 from twoball.modal.filters import SpectralFilter
 from twoball.modal.legendre import legendre_series
 from twoball.modal.liftoff import find_liftoff
 from twoball.modal.parameters import Case
+
+from twoball._common.errors import ParameterError
 
 PHI_A, DAMPING = 2.6, 0.13
 FILTER = SpectralFilter("lanczos", 30)
@@ -493,9 +494,8 @@ def test_gmsh_ball_of_radius_012_converges_through_the_cli(tmp_path, capsys, ord
     3 -> 4); v_l shrinks on every refinement but irregularly on the icosphere
     (measured 1.6, 3.3 for P1 and 10.0, 1.7 for P2), so only its decrease is checked.
     """
-    from twoball.verify.cli.main import main
-
     import twoball
+    from twoball.cli.main import main
 
     exact = twoball.liftoff(twoball.Case.preset("basketball"))  # Legendre, N = 30, Lanczos
     turn = random_rotation(7)

@@ -2,7 +2,7 @@
 
 Every writing subcommand is pointed at folders holding a user's files; the
 interrupt tests run ``python -m twoball`` in a subprocess that stops at a named
-stage of :mod:`twoball.staging` (``TWOBALL_TEST_PAUSE``) and signal it there.
+stage of :mod:`twoball._common.staging` (``TWOBALL_TEST_PAUSE``) and signal it there.
 """
 
 from __future__ import annotations
@@ -18,10 +18,10 @@ import time
 from pathlib import Path
 
 import pytest
-from twoball.fem_membrane.export import read_series
-from twoball.verify.cli.main import main
+from twoball.verify.output.series import read_series
 
-from twoball.staging import MARKER, SCRATCH_TAG, foreign_entry, sweep_stale
+from twoball._common.staging import MARKER, SCRATCH_TAG, foreign_entry, sweep_stale
+from twoball.cli.main import main
 
 ROOT = Path(__file__).resolve().parents[1]
 FAST = ["--level", "1"]
@@ -55,7 +55,7 @@ def snapshot(folder: Path) -> dict[str, bytes | None]:
     return entries
 
 
-#: A progress line (twoball.progress): ``twoball: verify: 3/12 ... (14 s)``.
+#: A progress line (twoball._common.progress): ``twoball: verify: 3/12 ... (14 s)``.
 PROGRESS = re.compile(r"twoball: [\w -]+: .*\(\d+ s\)$")
 
 
@@ -390,7 +390,7 @@ def test_full_stdout_is_one_line(argv):
 
 
 def test_an_unfinished_mp4_is_an_error_not_a_file(tmp_path):
-    from twoball.fem_membrane.render import _check_mp4, _mp4_boxes
+    from twoball.verify.output.render import _check_mp4, _mp4_boxes
 
     box = (16).to_bytes(4, "big") + b"ftyp" + b"isom" + b"\0" * 4
     whole = tmp_path / "whole.mp4"

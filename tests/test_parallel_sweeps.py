@@ -7,12 +7,13 @@ import time
 
 import numpy as np
 import pytest
-from twoball.modal.errors import NumericalError
 from twoball.modal.parameters import Case, preset
-from twoball.verify.cli.main import main
 from twoball.verify.sweeps import parallel
 from twoball.verify.sweeps.parallel import MIN_PARALLEL_ITEMS, Outcome, Runner, chunk_size
 from twoball.verify.sweeps.sweeps import SweepGrid, SweepSolver, make_grid, run_sweep, sweep_cases
+
+from twoball._common.errors import NumericalError
+from twoball.cli.main import main
 
 
 def cases(count=40):

@@ -3,8 +3,9 @@
 import math
 
 import pytest
-from twoball.modal.errors import ParameterError
 from twoball.modal.parameters import PRESETS, Case, Scalings, preset, wave_speed_from_pressure
+
+from twoball._common.errors import ParameterError
 
 
 def test_table2_wave_speed_from_pressure():

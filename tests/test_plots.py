@@ -5,15 +5,16 @@ from __future__ import annotations
 import matplotlib.image as mpimg
 import numpy as np
 import pytest
-from twoball.modal.errors import ParameterError
 from twoball.modal.parameters import preset
-from twoball.verify.cli.main import main
 from twoball.verify.output.fields import ball_model
 from twoball.verify.output.figures import save_figure
 from twoball.verify.output.figures.eigen import eigen_figure, eigen_table
 from twoball.verify.output.figures.pole import pole_figure
 from twoball.verify.output.figures.style import curves
 from twoball.verify.output.figures.waterfall import waterfall_figure, waterfall_times
+
+from twoball._common.errors import ParameterError
+from twoball.cli.main import main
 
 
 @pytest.fixture(scope="module")

@@ -19,10 +19,10 @@ from pathlib import Path
 import imageio.v3 as iio
 import numpy as np
 import pytest
-from twoball.fem_membrane.export import read_series
 from twoball.verify.output.report_files import split_provenance
+from twoball.verify.output.series import read_series
 
-from twoball.progress import INTERVAL, Reporter, is_quiet, set_quiet
+from twoball._common.progress import INTERVAL, Reporter, is_quiet, set_quiet
 
 ROOT = Path(__file__).resolve().parents[1]
 LINE = re.compile(r"twoball: (?P<name>[\w -]+): (?P<text>.*) \((?P<seconds>\d+) s\)")
@@ -174,7 +174,7 @@ def test_progress_lines_in_a_log_and_none_when_quiet(tmp_path, name):
 
 def test_verify_steps_counts_the_progress_calls(tmp_path):
     import twoball
-    from twoball.reports import verify_steps
+    from twoball._studies import verify_steps
 
     said: list[str] = []
     twoball.verify(fast=True, progress=said.append, out=tmp_path / "report")

@@ -17,11 +17,11 @@ import meshio
 import numpy as np
 import pytest
 import scipy
-from twoball.verify.cli.main import main
 from twoball.verify.output.report_files import PROVENANCE, result_files
 
 import twoball
-from twoball import provenance
+from twoball._common import provenance
+from twoball.cli.main import main
 
 KEYS = {"twoball", "versions", "platform", "generated", "command", "call", "case"}
 

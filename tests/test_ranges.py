@@ -1,11 +1,11 @@
-"""The one list syntax (twoball.ranges), checked against values written out by hand."""
+"""The one list syntax (twoball._common.ranges), checked against values written out by hand."""
 
 import numpy as np
 import pytest
-from twoball.modal.errors import ParameterError
-from twoball.verify.cli.main import main
 
-from twoball.ranges import join_negative_values, parse_values
+from twoball._common.errors import ParameterError
+from twoball._common.ranges import join_negative_values, parse_values
+from twoball.cli.main import main
 
 
 @pytest.mark.parametrize(

@@ -9,7 +9,9 @@ import sys
 import imageio.v3 as iio
 import numpy as np
 import pytest
-from twoball.fem_membrane.render import (
+from twoball.modal.parameters import preset
+from twoball.verify.output.fields import ball_model, ball_scene, liftoff_frame
+from twoball.verify.output.render import (
     BallScene,
     check_size,
     check_warp,
@@ -18,10 +20,9 @@ from twoball.fem_membrane.render import (
     round_size,
     surface_triangles,
 )
-from twoball.modal.errors import ParameterError
-from twoball.modal.parameters import preset
-from twoball.verify.cli.main import main
-from twoball.verify.output.fields import ball_model, ball_scene, liftoff_frame
+
+from twoball._common.errors import ParameterError
+from twoball.cli.main import main
 
 WHITE = 255
 

@@ -7,7 +7,6 @@ import os
 import numpy as np
 import pytest
 from twoball.modal.parameters import preset
-from twoball.verify.cli.main import main
 from twoball.verify.reproduce import driver as rep
 from twoball.verify.reproduce.cem.fig11 import _fit_damping
 from twoball.verify.reproduce.cem.fig12 import OptimumTask, fig12_base, main_branch
@@ -21,6 +20,8 @@ from twoball.verify.reproduce.common import (
     series_for,
 )
 from twoball.verify.sweeps.parallel import Runner
+
+from twoball.cli.main import main
 
 
 def context(tmp_path):

@@ -2,7 +2,7 @@
 
 Wall times are measured in benchmarks/bench_startup.py, never asserted here.  These
 tests pin the cause instead: which heavy libraries a command loads.  Each command
-runs through ``twoball.verify.cli.main.main`` in a child ``python -c`` started in
+runs through ``twoball.cli.main.main`` in a child ``python -c`` started in
 the repository root, so the checkout's code is the one imported; the child reports
 ``sys.modules`` after the command has finished.
 """
@@ -19,11 +19,12 @@ import pytest
 import scipy
 from scipy.linalg import eigvalsh_tridiagonal
 from scipy.optimize import brentq
-from twoball.modal.errors import ParameterError
 from twoball.modal.initial import _energy_shape, phi_a_from_v0, v0_from_phi_a
 from twoball.modal.legendre import _DENSE_JACOBI_MAX, _gauss_legendre
 from twoball.modal.parameters import preset
 from twoball.modal.report import legendre_liftoff
+
+from twoball._common.errors import ParameterError
 
 ROOT = Path(__file__).resolve().parent.parent
 
@@ -37,7 +38,7 @@ with contextlib.redirect_stdout(stdout):
     if argv is None:
         import twoball
     else:
-        from twoball.verify.cli.main import main
+        from twoball.cli.main import main
         try:
             status = main(argv)
         except SystemExit as exit:

@@ -9,7 +9,6 @@ from dataclasses import replace
 import numpy as np
 import pytest
 from numpy.polynomial import legendre as npleg
-from twoball.modal.errors import ParameterError
 from twoball.modal.filters import SpectralFilter
 from twoball.modal.legendre import legendre_series
 from twoball.modal.parameters import PRESETS, wave_speed_from_pressure
@@ -20,10 +19,11 @@ from twoball.modal.stiffness import (
     stiffen,
     stiffness_from_si,
 )
-from twoball.verify.cli.main import main
 
 import twoball
 from twoball import Case
+from twoball._common.errors import ParameterError
+from twoball.cli.main import main
 
 # today's results (main at d34289e, `twoball liftoff --json ...`), bit for bit
 MAIN = {

@@ -19,7 +19,8 @@ from pathlib import Path
 
 import pytest
 import validation_table as table
-from twoball.verify.cli.main import COMMANDS, full_parser
+
+from twoball.cli.main import COMMANDS, full_parser
 
 ROOT = Path(__file__).resolve().parents[1]
 CHILD = Path(__file__).with_name("validation_child.py")
@@ -159,8 +160,8 @@ def test_the_base_lines_run(tmp_path: Path) -> None:
 @pytest.mark.parametrize("flag", ["--phi-a", "--radius", "--wave-speed", "--v0", "--t-end"])
 def test_api_and_cli_share_the_message(flag: str) -> None:
     """The CLI prints the API's ParameterError with the flag in place of the parameter name."""
-    from twoball.modal.errors import ParameterError
-    from twoball.verify.cli.flags import FLAGS, cli_message
+    from twoball._common.errors import ParameterError
+    from twoball.cli.flags import FLAGS, cli_message
 
     name = next(k for k, v in FLAGS.items() if v == flag)
     error = ParameterError(name, "a number in [1, 2]", 3.0)

@@ -22,9 +22,9 @@ import pytest
 import validation_table as table
 from twoball.modal import icm
 from twoball.modal.stiffness import flexural_rigidity
-from twoball.verify.cli.flags import FLAGS
 
 import twoball
+from twoball.cli.flags import FLAGS
 
 CPU_LIMIT_S = 3.0
 
@@ -96,7 +96,7 @@ CALLS: dict[str, dict[str, Callable[[Any, Path], Any]]] = {
         "converge": lambda v, tmp: twoball.converge(
             CASE, study="modes", modes_list="30,60,120", t_end=v, out=tmp / "c"
         ),
-        "verify": lambda v, tmp: twoball.reports.verify(CASE, fast=True, t_end=v, out=tmp / "r"),
+        "verify": lambda v, tmp: twoball._studies.verify(CASE, fast=True, t_end=v, out=tmp / "r"),
     },
     "level": {
         "liftoff": lambda v, _: twoball.liftoff(CASE, backend="fem", level=v),
@@ -210,7 +210,7 @@ def call_refused(name: str, entry: str, value: Any, tmp: Path) -> str | None:
 
 def test_every_numeric_flag_has_api_calls() -> None:
     """Each numeric option of the CLI is tried through the API (names through FLAGS)."""
-    from twoball.verify.cli.main import full_parser
+    from twoball.cli.main import full_parser
 
     flags = {f for fl in table.numeric_options(full_parser()).values() for f in fl}
     covered = {FLAGS[name] for name in CALLS}
@@ -252,7 +252,7 @@ EXTRA: list[tuple[str, Callable[[Path], Any]]] = [
     ("levels", lambda tmp: twoball.converge(CASE, study="modes", levels="1:2", out=tmp / "c")),
     ("modes_list", lambda tmp: twoball.converge(CASE, study="h", modes_list="30,60,120")),
     ("levels", lambda tmp: twoball.converge(CASE, study="h", levels="0:1", out=tmp / "c")),
-    ("fast", lambda tmp: twoball.reports.verify(CASE, fast=True, thorough=True)),
+    ("fast", lambda tmp: twoball._studies.verify(CASE, fast=True, thorough=True)),
     ("workers", lambda _: twoball.sweep({"damping": [0.1]}, CASE, workers=2, scheduler="x:1")),
     ("fps", lambda tmp: twoball.render(tmp / "x.png", CASE, level=1, fps=10)),
     ("frames", lambda tmp: twoball.render(tmp / "x.png", CASE, level=1, frames=5)),
@@ -294,7 +294,7 @@ EXTRA: list[tuple[str, Callable[[Path], Any]]] = [
             lambda tmp, p=path: twoball.render(_under(tmp, p), CASE, level=1),
             lambda tmp, p=path: twoball.export(_under(tmp, p[:-4] + ".vtu"), CASE, level=1),
             lambda tmp, p=path: twoball.converge(CASE, study="modes", out=_under(tmp, p[:-4])),
-            lambda tmp, p=path: twoball.reports.verify(CASE, fast=True, out=_under(tmp, p[:-4])),
+            lambda tmp, p=path: twoball._studies.verify(CASE, fast=True, out=_under(tmp, p[:-4])),
         )
     ],
     *[

@@ -10,8 +10,9 @@ from twoball.verify.checks.alpha import decay_band
 from twoball.verify.checks.config import config
 from twoball.verify.checks.results import Check, bounded
 from twoball.verify.checks.run import run_verify
-from twoball.verify.cli.main import main
 from twoball.verify.output.report_files import write_report_dir
+
+from twoball.cli.main import main
 
 FILES = {
     "report.md",
@@ -148,8 +149,9 @@ def test_default_verify_passes(capsys, tmp_path):
 
 
 def test_out_refuses_a_folder_that_is_not_a_report(tmp_path):
-    from twoball.modal.errors import ParameterError
     from twoball.verify.output.report_files import MARKER, check_output_dir, write_report_dir
+
+    from twoball._common.errors import ParameterError
 
     foreign = tmp_path / "home"
     foreign.mkdir()

@@ -1,4 +1,4 @@
-"""Run command lines through ``twoball.verify.cli.main.main`` in this one interpreter.
+"""Run command lines through ``twoball.cli.main.main`` in this one interpreter.
 
 Usage: ``python validation_child.py CASES.json RESULTS.json``; each case is
 ``{"argv": [...], "folder": "..."}``; the command runs with its folder as the
@@ -49,7 +49,7 @@ def left_in(folder: str, seeded: set[str]) -> list[str]:
 def main() -> None:
     cases = json.load(open(sys.argv[1]))
     warnings.simplefilter("default")  # every warning shows on stderr (one-line check)
-    from twoball.verify.cli.main import main as twoball_main
+    from twoball.cli.main import main as twoball_main
 
     signal.signal(signal.SIGPROF, _alarm)
     results = []

@@ -1,7 +1,7 @@
 """The table of invalid command lines of issue 11, generated from the parser.
 
 Every numeric option of every subcommand (read from
-:func:`twoball.verify.cli.main.full_parser`, so an option added later is in the
+:func:`twoball.cli.main.full_parser`, so an option added later is in the
 table too) gets each value of :data:`BAD_NUMBERS` that lies outside its valid
 range (:data:`RANGES`, which must name every numeric option), every path option
 gets an empty, an over-long and three unwritable paths, and

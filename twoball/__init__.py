@@ -22,8 +22,9 @@ from __future__ import annotations
 
 import importlib as _importlib
 import os as _os
+import types as _types
 
-from twoball._lazy import attach as _attach
+from twoball._common.lazy import attach as _attach
 from twoball._version import __version__
 
 # In a source checkout the parts (modal/, fem_membrane/, verify/) sit beside this
@@ -32,36 +33,64 @@ _HERE = _os.path.dirname(__file__)
 if not _os.path.isdir(_os.path.join(_HERE, "modal")):
     __path__.append(_os.path.dirname(_HERE))  # noqa: F821 -- the package's own __path__
 
+from twoball import verify  # noqa: E402 -- a light package; made callable below
+
 _NAMES: dict[str, str] = {
-    "Case": ".modal.parameters",
-    "LiftoffReport": ".modal.report",
-    "ParameterError": ".modal.errors",
-    "NumericalError": ".modal.errors",
-    "MeshOptions": ".mesh_options",
-    "liftoff": ".solvers",
-    "sweep": ".solvers",
-    "SweepResult": ".solvers",
-    "converge": ".reports",
-    "export": ".files",
-    "render": ".files",
-    "plot": ".files",
-    "report": ".provenance",
-    "Report": ".provenance",
+    "Case": "twoball.modal.parameters",
+    "LiftoffReport": "twoball.modal.report",
+    "ParameterError": "twoball._common.errors",
+    "NumericalError": "twoball._common.errors",
+    "MeshOptions": "twoball.fem_membrane.options",
+    "liftoff": "twoball._liftoff",
+    "sweep": "twoball._sweep",
+    "SweepResult": "twoball._sweep",
+    "converge": "twoball._studies",
+    "export": "twoball._files",
+    "render": "twoball._files",
+    "plot": "twoball._files",
+    "ExportResult": "twoball._files",
+    "RenderResult": "twoball._files",
+    "PlotResult": "twoball._files",
+    "report": "twoball._common.provenance",
+    "Report": "twoball._common.provenance",
+    "Reporter": "twoball._common.progress",
 }
-# ``verify`` is the subpackage twoball.verify, callable as twoball.reports.verify (the
-# import system would replace a function of that name by the subpackage anyway).
-_SUBMODULES = ("fem", "verify", "provenance", "progress")
 _getattr, _dir = _attach(__name__, _NAMES)
 
 
+class _VerifyPackage(_types.ModuleType):
+    """The subpackage :mod:`twoball.verify`, callable as the verb :func:`twoball.verify`.
+
+    A function and a subpackage cannot share the name ``twoball.verify``: the
+    import system sets the attribute to the subpackage whenever one of its
+    modules is imported.  So the subpackage itself is made callable here.
+    """
+
+    def __call__(self, *args: object, **kwargs: object) -> object:
+        from twoball._studies import verify as run_verify
+
+        return run_verify(*args, **kwargs)
+
+    @property
+    def __signature__(self) -> object:
+        import inspect
+
+        from twoball._studies import verify as run_verify
+
+        return inspect.signature(run_verify)
+
+
+verify.__class__ = _VerifyPackage
+
+
 def __getattr__(name: str) -> object:
-    if name in _SUBMODULES:
-        return _importlib.import_module(f".{name}", __name__)
+    if name == "fem":
+        return _importlib.import_module("twoball.fem")
     return _getattr(name)
 
 
 def __dir__() -> list[str]:
-    return sorted([*_dir(), *_SUBMODULES, "__version__"])
+    return sorted([*_dir(), "fem", "verify", "__version__"])
 
 
-__all__ = ["__version__", *_NAMES, *_SUBMODULES]
+__all__ = ["__version__", "fem", "verify", *_NAMES]

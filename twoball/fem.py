@@ -11,11 +11,11 @@ import time as clock
 from numbers import Integral
 from typing import Any
 
-from twoball.mesh_options import MeshOptions
-from twoball.modal.errors import ParameterError
+from twoball._common.errors import ParameterError
+from twoball._common.progress import Step, silent
+from twoball.fem_membrane.options import MeshOptions
 from twoball.modal.parameters import Case
 from twoball.modal.report import LiftoffReport
-from twoball.progress import Step, silent
 
 __all__ = ["eigen", "solve"]
 
@@ -48,7 +48,7 @@ def solve(
         Mesh kind (default ``sphere``), or the user's sphere: a file in any
         format meshio reads, a ``meshio.Mesh`` or a ``MeshTri`` (any radius and
         centre; it is scaled to the unit sphere), see
-        :class:`twoball.mesh_options.MeshOptions`.
+        :class:`twoball.fem_membrane.options.MeshOptions`.
     level : int, optional
         Sphere refinement level >= 0 (default 3); not with ``axisym`` or a file.
     elements : int, optional
@@ -76,7 +76,7 @@ def solve(
     t_end : float, optional
         Modelled window [s] (default 4 pi / c).
     progress : callable, optional
-        Called with a short text as each stage starts (:class:`twoball.progress.Reporter`).
+        Called with a short text as each stage starts (:class:`twoball._common.progress.Reporter`).
 
     Returns
     -------
@@ -107,7 +107,7 @@ def solve(
 
         dt_scaled = check_dt_in_window(dt, case.scalings.time, t_end_dimensionless(case, t_end))
     if spec.kind != "file":  # the budget in the user's units (the model layer checks again)
-        from twoball.budget import check_fem
+        from twoball._common.budget import check_fem
 
         check_fem(
             spec.kind,
@@ -182,7 +182,7 @@ def solve(
     )
     from dataclasses import replace
 
-    from twoball.provenance import block
+    from twoball._common.provenance import block
 
     arguments = {
         "mesh": mesh,
@@ -217,9 +217,9 @@ def eigen(
     Mesh arguments as in :func:`solve`; one row per eigenvalue (``index``, ``l``,
     ``value``, ``exact``, ``relative_error``, ``multiplicity``,
     ``expected_multiplicity``), dimensionless.  ``progress`` is called with a short
-    text as the solve starts (:class:`twoball.progress.Reporter`).
+    text as the solve starts (:class:`twoball._common.progress.Reporter`).
     """
-    from twoball.budget import check, fem_dofs, fem_estimate, options
+    from twoball._common.budget import check, fem_dofs, fem_estimate, options
     from twoball.fem_membrane.eigen import eigen_table
 
     spec = MeshOptions.resolve(

@@ -14,7 +14,8 @@ import math
 
 import numpy as np
 from numpy.polynomial.legendre import leggauss, legvander
-from twoball.modal.errors import ParameterError
+
+from twoball._common.errors import ParameterError
 
 #: Default contact radius as a fraction of R (docs/contact.rst, "The contact radius").
 DEFAULT_RADIUS_FRACTION = 0.1

@@ -23,8 +23,9 @@ from dataclasses import dataclass, field
 import numpy as np
 from scipy.linalg import expm
 from twoball.modal.contact.system import ContactSystem
-from twoball.modal.errors import NumericalError, ParameterError
 from twoball.modal.roots import bracketed_roots
+
+from twoball._common.errors import NumericalError, ParameterError
 
 TIME_TOLERANCE = 1e-12
 MAX_EVENTS = 10000

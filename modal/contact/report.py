@@ -17,13 +17,14 @@ import numpy as np
 from twoball.modal.contact.caps import DEFAULT_RADIUS_FRACTION, cap_angle, legendre_cap_averages
 from twoball.modal.contact.events import ContactHistory, integrate
 from twoball.modal.contact.system import ContactSystem
-from twoball.modal.errors import ParameterError
 from twoball.modal.filters import SpectralFilter
 from twoball.modal.legendre import legendre_series
 from twoball.modal.liftoff import find_liftoff
 from twoball.modal.parameters import FROM_V0, Case
 from twoball.modal.report import t_end_dimensionless
 from twoball.modal.series import ModalSeries
+
+from twoball._common.errors import ParameterError
 
 ENERGY_OPTIONS: tuple[str, ...] = ("ball", "both")
 MAX_MASS_RATIO = 100.0

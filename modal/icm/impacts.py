@@ -8,7 +8,6 @@ restitution (eqs. (2.3)-(2.5)).  SI units; velocities positive upwards.
 from __future__ import annotations
 
 import numpy as np
-from twoball.modal.errors import ParameterError
 from twoball.modal.icm.inputs import (
     check_drop_height,
     check_dx,
@@ -17,6 +16,8 @@ from twoball.modal.icm.inputs import (
     check_restitution,
 )
 from twoball.modal.parameters import STANDARD_GRAVITY
+
+from twoball._common.errors import ParameterError
 
 
 def impact_velocity(drop_height: float, g: float = STANDARD_GRAVITY) -> float:

@@ -1,13 +1,13 @@
 """Input checks of the independent collision model: one line naming the flag and its range.
 
 Every check returns the value as a float or raises
-:class:`~twoball.modal.errors.ParameterError` with the command-line flag
+:class:`~twoball._common.errors.ParameterError` with the command-line flag
 (``--mu``, ``--e2``, ``--e12``, ``--dx``, ``--drop-height``, ``--g``).
 """
 
 from __future__ import annotations
 
-from twoball.modal.errors import ParameterError, real_number
+from twoball._common.errors import ParameterError, real_number
 
 
 def _as_float(name: str, valid: str, value: object) -> float:

@@ -124,7 +124,7 @@ class VerifyResult:
     reference: ConvergedReference
     seconds: float = 0.0
     notes: list[str] = field(default_factory=list)
-    provenance: dict[str, Any] | None = None  # set by twoball.verify (twoball.provenance)
+    provenance: dict[str, Any] | None = None  # set by twoball.verify (twoball._common.provenance)
 
     @property
     def passed(self) -> bool:

@@ -26,18 +26,18 @@ from dataclasses import dataclass, field, replace
 from typing import Any
 
 import numpy as np
-from twoball.fem_membrane.export import TimeSeries
 from twoball.modal.contact.report import (
     MAX_MASS_RATIO,
     check_contact_options,
     membrane_case,
 )
 from twoball.modal.contact.states import ModalStates, modal_states
-from twoball.modal.errors import ParameterError, refuse_given
 from twoball.modal.parameters import Case
 from twoball.verify.output.fields import Backend, BallModel, build_mesh, node_polar_angles
+from twoball.verify.output.series import TimeSeries
 
-from twoball.progress import Step, silent
+from twoball._common.errors import ParameterError, refuse_given
+from twoball._common.progress import Step, silent
 
 #: Per-frame field data of an export with a body of finite mass (name: unit).
 FRAME_FIELDS: dict[str, str] = {
@@ -272,10 +272,10 @@ def contact_scene(model: CoupledModel, times_s: np.ndarray, backend: str) -> Any
     """The scene of :func:`~twoball.verify.output.fields.ball_scene` with the body's contact.
 
     The membrane is the coupled field, the body at its height ``s(t)``; the
-    caption marks the frames in contact (:class:`twoball.fem_membrane.render_body.ContactScene`).
+    caption marks the frames in contact (:class:`twoball.verify.output.render.ContactScene`).
     """
-    from twoball.fem_membrane.render_body import ContactScene
     from twoball.verify.output.fields import ball_scene
+    from twoball.verify.output.render import ContactScene
 
     scene = ball_scene(model, times_s, backend)
     report = model.contact(backend)
@@ -322,18 +322,17 @@ def model_of(
     field_mesh: Any,
     **options: Any,
 ) -> BallModel:
-    """:func:`twoball.field_model.ball_model_of` without a body; the coupled model with one.
+    """:func:`twoball.verify.output.fields.ball_model_of` without a body; the coupled model with one.
 
-    ``field_mesh`` is the :class:`twoball.field_model.FieldMesh` of the options;
+    ``field_mesh`` is the :class:`twoball.verify.output.fields.FieldMesh` of the options;
     ``options`` are those of ``ball_model_of`` (initial, sigma, recontact,
     t_end, progress, route), checked the same way.  A body of finite mass is
     solved on generated meshes (icosphere or ring, isoparametric); a mesh file or
     the exact geometry with it is refused.
     """
+    from twoball.fem_membrane.options import FILE
     from twoball.modal.report import t_end_dimensionless
-
-    from twoball.field_model import ball_model_of, check_initial
-    from twoball.mesh_options import FILE
+    from twoball.verify.output.fields import ball_model_of, check_initial
 
     if contact is None:
         return ball_model_of(case, backends, field_mesh, **options)

@@ -11,9 +11,10 @@ from collections.abc import Sequence
 from typing import TYPE_CHECKING
 
 import numpy as np
-from twoball.modal.errors import ParameterError
 from twoball.modal.parameters import Case
 from twoball.modal.report import t_end_dimensionless
+
+from twoball._common.errors import ParameterError
 
 if TYPE_CHECKING:
     from twoball.verify.output.fields import BallModel
@@ -36,7 +37,7 @@ def parse_times(text: str, flag: str = "--times") -> tuple[float, ...]:
 
     Each must be a finite number >= 0; they are returned sorted, without duplicates.
     """
-    from twoball.ranges import SYNTAX, parse_values
+    from twoball._common.ranges import SYNTAX, parse_values
 
     valid = "times >= 0 in seconds, e.g. 0,0.005,0.01 or 0:0.01:11"
     values = parse_values(text, flag, valid=valid)

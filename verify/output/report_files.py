@@ -1,7 +1,7 @@
 """Report directories written all at once: Markdown, JSON, CSV and PNG files.
 
 A report directory (``twoball verify --out DIR``, ``twoball converge --out DIR``)
-is written through :func:`twoball.staging.staged_folder`: into a scratch folder
+is written through :func:`twoball._common.staging.staged_folder`: into a scratch folder
 beside ``DIR``, then exchanged with ``DIR`` in one step.  A failed or
 interrupted run leaves the previous report untouched and no scratch; a folder
 that holds anything twoball did not write is refused, never emptied.
@@ -23,7 +23,7 @@ from twoball.verify.checks.results import VerifyResult
 from twoball.verify.studies.quantities import QuantityResult
 from twoball.verify.studies.result import StudyResult
 
-from twoball.staging import MARKER as MARKER  # re-exported: the marker of report folders
+from twoball._common.staging import MARKER as MARKER  # re-exported: the marker of report folders
 
 Writer = Callable[[Path], None]
 PROVENANCE = "provenance.json"  # run times and dates: the one file that differs between runs
@@ -31,12 +31,12 @@ PROVENANCE = "provenance.json"  # run times and dates: the one file that differs
 
 # --------------------------------------------------------------------------- directories
 def check_output_dir(path: str | os.PathLike[str], flag: str = "--out") -> Path:
-    """Validate a report directory before any work is done (:func:`twoball.staging.check_folder`).
+    """Validate a report directory before any work is done (:func:`twoball._common.staging.check_folder`).
 
     ``path`` may be missing, empty or an earlier twoball output (only the files
     its marker lists); anything else raises ParameterError naming ``flag``.
     """
-    from twoball.staging import check_folder
+    from twoball._common.staging import check_folder
 
     return check_folder(path, flag)
 
@@ -63,7 +63,7 @@ def write_report_dir(
     Path
         ``out``.
     """
-    from twoball.staging import staged_folder
+    from twoball._common.staging import staged_folder
 
     with staged_folder(out, writer=writer) as scratch:
         for name, write in writers.items():
@@ -102,14 +102,14 @@ def result_files(
 ) -> dict[str, str]:
     """``results.json`` (byte-identical for the same inputs) and ``provenance.json``.
 
-    ``data["provenance"]`` (:func:`twoball.provenance.block`, made here if
+    ``data["provenance"]`` (:func:`twoball._common.provenance.block`, made here if
     missing) is split: ``results.json`` keeps what is the same for the same
     inputs (versions, platform, case); ``provenance.json`` holds the whole
     block (with the UTC time, the command line and the call) and what else
     differs from run to run: run times (every ``seconds`` entry, at its place in
     the results).
     """
-    from twoball.provenance import block, stable
+    from twoball._common.provenance import block, stable
 
     data = dict(data)
     full = data.pop("provenance", None) or block()

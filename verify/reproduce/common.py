@@ -27,7 +27,7 @@ from twoball.modal.report import LiftoffReport, report_liftoff
 from twoball.modal.series import ModalSeries
 from twoball.verify.sweeps.parallel import Runner
 
-from twoball.progress import TaskHook
+from twoball._common.progress import TaskHook
 
 #: Above this many Gauss points the coefficients come from the exact recurrence instead:
 #: numpy's ``leggauss`` is a dense O(m^3) eigenproblem (0.3 s at m = 1000, 16 s at 3800),
@@ -324,7 +324,7 @@ class Context:
 
     directory: Path
     runner: Runner
-    progress: TaskHook = lambda label, total: _ignore  # twoball.progress.Reporter.task
+    progress: TaskHook = lambda label, total: _ignore  # twoball._common.progress.Reporter.task
 
     def path(self, name: str) -> Path:
         """A file in the output directory."""

@@ -3,7 +3,7 @@
 The parts (see :data:`PARTS`) each write their PNG figures and return a section of
 the report; :func:`reproduce` runs the selected parts into a scratch folder and
 puts it in place of the output folder only when everything has been written
-(:func:`twoball.staging.staged_folder`), so a failed or interrupted run leaves no
+(:func:`twoball._common.staging.staged_folder`), so a failed or interrupted run leaves no
 partial output.  The output folder is recognised by twoball's marker file and
 its list of files, never by a file name: a folder holding anything else is
 refused.  ``reproduction.json`` is byte-identical for the same inputs; the
@@ -21,14 +21,14 @@ from datetime import UTC, datetime
 from pathlib import Path
 from typing import Any
 
-from twoball.modal.errors import ParameterError
 from twoball.verify.reproduce import cem as reproduce_cem
 from twoball.verify.reproduce import contact as reproduce_contact
 from twoball.verify.reproduce import icm as reproduce_icm
 from twoball.verify.reproduce.common import Context, Section, comparison_table
 from twoball.verify.sweeps.parallel import Runner
 
-from twoball.progress import TaskHook
+from twoball._common.errors import ParameterError
+from twoball._common.progress import TaskHook
 
 #: Part name -> function(Context) -> Section, in report order.
 PARTS: dict[str, Callable[[Context], Section]] = {
@@ -60,12 +60,12 @@ def parse_only(text: str | None) -> list[str]:
 
 
 def check_output(out: str | os.PathLike) -> Path:
-    """The output folder, checked before any work (:func:`twoball.staging.check_folder`).
+    """The output folder, checked before any work (:func:`twoball._common.staging.check_folder`).
 
     It may be missing, empty, or an earlier twoball output holding only the
     files its marker lists; anything else raises ParameterError naming ``--out``.
     """
-    from twoball.staging import check_folder
+    from twoball._common.staging import check_folder
 
     return check_folder(out, "out")
 
@@ -81,12 +81,12 @@ def reproduce(
 
     Returns the output directory and the sections.  Nothing is written to ``out``
     unless every part succeeded.  ``progress(label, total)`` starts a counted task
-    and returns its ``update(done)``: :meth:`twoball.progress.Reporter.task`.
+    and returns its ``update(done)``: :meth:`twoball._common.progress.Reporter.task`.
     """
     from twoball.verify.output.report_files import result_files
 
-    from twoball.provenance import block
-    from twoball.staging import staged_folder
+    from twoball._common.provenance import block
+    from twoball._common.staging import staged_folder
 
     target = check_output(out)
     names = list(PARTS) if only is None else list(only)

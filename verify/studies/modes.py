@@ -9,7 +9,6 @@ import time
 from collections.abc import Sequence
 from typing import Any
 
-from twoball.modal.errors import ParameterError
 from twoball.modal.filters import FilterKind
 from twoball.modal.liftoff import Horizon
 from twoball.modal.parameters import Case
@@ -29,6 +28,8 @@ from twoball.verify.studies.reference import (
 from twoball.verify.studies.result import Progress, StudyResult, case_settings, quiet, si
 from twoball.verify.studies.trajectory import TrajectoryNorm
 
+from twoball._common.errors import ParameterError
+
 DEFAULT_MODES: tuple[int, ...] = (30, 60, 120, 240, 480)
 MODES_BANDS: dict[str, OrderBand | None] = {
     # sigma = 1 - (pi omega_n / omega_N)^2 / 6 + ... (Lanczos) or 1 - (omega_n/omega_N)^2 / 6
@@ -40,11 +41,11 @@ MODES_BANDS: dict[str, OrderBand | None] = {
 
 
 def parse_modes(text: str) -> tuple[int, ...]:
-    """``"30,60,120,240"`` (or a range, :mod:`twoball.ranges`) -> increasing mode counts.
+    """``"30,60,120,240"`` (or a range, :mod:`twoball._common.ranges`) -> increasing mode counts.
 
     At least 3 and at most 16 counts, each >= 1, strictly increasing.
     """
-    from twoball.ranges import parse_values
+    from twoball._common.ranges import parse_values
 
     valid = "increasing integers >= 1, 3 to 16 of them, e.g. 30,60,120,240"
     values = parse_values(text, "modes_list", integer=True, valid=valid)

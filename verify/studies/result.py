@@ -13,8 +13,10 @@ from typing import Any
 from twoball.modal.parameters import Case
 from twoball.verify.studies.quantities import QuantityResult
 
-from twoball.progress import Step as Progress  # the one progress mechanism (twoball.progress)
-from twoball.progress import silent as quiet
+from twoball._common.progress import (
+    Step as Progress,  # the one progress mechanism (twoball._common.progress)
+)
+from twoball._common.progress import silent as quiet
 
 STUDIES: tuple[str, ...] = ("h", "order", "modes", "dt")
 __all__ = ["STUDIES", "Progress", "StudyResult", "case_settings", "quiet", "si"]
@@ -45,7 +47,7 @@ class StudyResult:
     settings : dict
         The case and options used.
     provenance : dict, optional
-        Versions, command line or call, UTC time, case (:mod:`twoball.provenance`).
+        Versions, command line or call, UTC time, case (:mod:`twoball._common.provenance`).
     """
 
     study: str

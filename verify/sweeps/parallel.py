@@ -37,7 +37,7 @@ from dataclasses import dataclass
 from numbers import Integral
 from typing import Any
 
-from twoball.modal.errors import ParameterError
+from twoball._common.errors import ParameterError
 
 #: Maps with fewer items than this run in the calling process even when workers
 #: are available: shipping them costs more than solving them (a solve is ~3-5 ms).
@@ -188,7 +188,7 @@ class Runner:
                 initializer=_worker_init,
                 initargs=(os.getpid(),),
             )
-            from twoball.signals import pause
+            from twoball._common.signals import pause
 
             try:
                 # start every worker now, before a progress bar starts its thread
@@ -290,7 +290,7 @@ class Runner:
 
 def _terminate(pool: ProcessPoolExecutor) -> None:
     """End the pool's workers now (SIGTERM, then SIGKILL after 2 s) and reap them."""
-    from twoball.signals import deferred_signals
+    from twoball._common.signals import deferred_signals
 
     with deferred_signals():
         processes = list((getattr(pool, "_processes", None) or {}).values())

@@ -17,10 +17,11 @@ from pathlib import Path
 from typing import Any
 
 import numpy as np
-from twoball.modal.errors import ParameterError
 from twoball.modal.parameters import Case
 from twoball.modal.report import LiftoffReport, legendre_liftoff
 from twoball.verify.sweeps.parallel import Runner
+
+from twoball._common.errors import ParameterError
 
 # CLI name -> Case field; v0, c and R re-derive phi_a from eq. (3.7) (Case.derive).
 SWEEP_PARAMETERS: dict[str, str] = {
@@ -45,13 +46,13 @@ PARAMETER_LABELS: dict[str, str] = {
 
 
 def parse_range(text: str, name: str = "--values") -> np.ndarray:
-    """The values of ``text`` in the one list syntax (:mod:`twoball.ranges`).
+    """The values of ``text`` in the one list syntax (:mod:`twoball._common.ranges`).
 
     ``START:STOP:COUNT`` gives ``COUNT`` evenly spaced values from START to STOP
     inclusive; ``v1,v2,...`` the values as written.
     """
-    from twoball.budget import check_count
-    from twoball.ranges import parse_values
+    from twoball._common.budget import check_count
+    from twoball._common.ranges import parse_values
 
     if isinstance(text, str) and text.count(":") == 2:  # the budget before building the list
         try:
@@ -262,7 +263,7 @@ def plot_sweep(grid: SweepGrid, points: list[SweepPoint], target: str | os.PathL
 
     The format follows the suffix (``.png``, ``.pdf``, ``.svg``, ...).  The path
     was checked before the sweep by :func:`check_plot_path`; the file is
-    replaced whole or not at all (:func:`twoball.staging.staged_file`).
+    replaced whole or not at all (:func:`twoball._common.staging.staged_file`).
     """
     from twoball.verify.output.figures import REPORT_DPI, save_figure
     from twoball.verify.output.figures.sweep import sweep_figure
@@ -274,7 +275,7 @@ def check_plot_path(path: str, flag: str = "--plot") -> Path:
     """A figure path (any format matplotlib writes, not a folder or link) in a writable folder."""
     from twoball.verify.output.figures import figure_format
 
-    from twoball.staging import check_file
+    from twoball._common.staging import check_file
 
     figure_format(path, flag)
     return check_file(path, flag)

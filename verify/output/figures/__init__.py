@@ -16,7 +16,7 @@ Every ``*_figure`` function returns a :class:`matplotlib.figure.Figure` (no
 pyplot, no global state, Agg canvas: no window, any thread), drawn in the style
 of :mod:`.style`; :func:`save_figure` writes one in any format matplotlib
 writes (PDF, SVG, EPS, PNG, ...; chosen by the file suffix) through
-:func:`twoball.staging.staged_file`, so a file is replaced whole or not at all.
+:func:`twoball._common.staging.staged_file`, so a file is replaced whole or not at all.
 matplotlib is imported only by these modules.
 """
 
@@ -56,7 +56,7 @@ def figure_format(path: str | os.PathLike[str], flag: str = "out") -> str:
     ParameterError
         Naming ``flag`` if the suffix is not a format matplotlib writes.
     """
-    from twoball.modal.errors import ParameterError
+    from twoball._common.errors import ParameterError
 
     suffix = Path(path).suffix.lower().lstrip(".")
     formats = figure_formats()
@@ -68,7 +68,7 @@ def figure_format(path: str | os.PathLike[str], flag: str = "out") -> str:
 
 def check_dpi(dpi: float | None, flag: str = "dpi") -> float:
     """``dpi`` checked against :data:`DPI_RANGE`; None gives :data:`DPI`."""
-    from twoball.modal.errors import ParameterError
+    from twoball._common.errors import ParameterError
 
     if dpi is None:
         return float(DPI)
@@ -104,7 +104,7 @@ def save_figure(
     path : path-like
         Output file; ``.pdf``, ``.svg``, ``.eps``, ``.png``, ... (any format
         matplotlib writes).  Written beside, then renamed into place
-        (:mod:`twoball.staging`).
+        (:mod:`twoball._common.staging`).
     flag, dpi_flag : str
         Names of the file and resolution parameters in error messages.
     dpi : float, optional
@@ -124,7 +124,7 @@ def save_figure(
     import matplotlib
     from twoball.verify.output.figures.style import STYLE
 
-    from twoball.staging import staged_file
+    from twoball._common.staging import staged_file
 
     out = Path(path).expanduser()
     kind = figure_format(out, flag)

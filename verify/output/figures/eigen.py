@@ -8,9 +8,10 @@ from dataclasses import dataclass
 from typing import TYPE_CHECKING
 
 import numpy as np
-from twoball.modal.errors import ParameterError
 from twoball.verify.output.figures import new_figure
 from twoball.verify.output.figures.style import chunks, label, styled
+
+from twoball._common.errors import ParameterError
 
 if TYPE_CHECKING:
     from matplotlib.figure import Figure

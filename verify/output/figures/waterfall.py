@@ -6,10 +6,11 @@ import math
 from typing import TYPE_CHECKING, Any
 
 import numpy as np
-from twoball.modal.errors import ParameterError
 from twoball.verify.output.fields import BallModel, node_polar_angles
 from twoball.verify.output.figures import LABELS, new_figure
 from twoball.verify.output.figures.style import STACKED, difference_unit, label, styled
+
+from twoball._common.errors import ParameterError
 
 if TYPE_CHECKING:
     from matplotlib.figure import Figure

@@ -4,7 +4,7 @@ Every expensive path (the closed-form series, the finite-element mesh and eigen
 solve, generalized-alpha stepping, sweeps, worker pools, frames) asks for an
 :class:`Estimate` from the small formulas below and passes it to
 :meth:`Budget.check` *before* it allocates anything.  Above the limit it raises
-:class:`BudgetError` (a :class:`~twoball.modal.errors.ParameterError`, so the
+:class:`BudgetError` (a :class:`~twoball._common.errors.ParameterError`, so the
 command line prints one line and exits with status 2)::
 
     --modes 100000 needs ~15 GiB of memory; limit 11.7 GiB (set --max-memory)
@@ -55,7 +55,7 @@ from collections.abc import Iterator
 from contextlib import contextmanager
 from dataclasses import dataclass
 
-from twoball.modal.errors import ParameterError
+from twoball._common.errors import ParameterError
 
 KiB, MiB, GiB, TiB = 2**10, 2**20, 2**30, 2**40
 DEFAULT_MEMORY_SHARE = 0.5  # of physical memory

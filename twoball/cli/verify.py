@@ -10,9 +10,10 @@ import sys
 from pathlib import Path
 
 from rich.table import Table
+
+from twoball.cli.case_options import add_case_options, case_from_options
+from twoball.cli.console import console, print_notes
 from twoball.verify.checks.results import VerifyResult
-from twoball.verify.cli.case_options import add_case_options, case_from_options
-from twoball.verify.cli.console import console, print_notes
 from twoball.verify.output.report_files import json_text
 
 DEFAULT_OUT = "twoball-report"
@@ -67,7 +68,7 @@ def print_result(result: VerifyResult, out: Path) -> None:
 
 def run(args: argparse.Namespace) -> int:
     """Run ``twoball verify``: :func:`twoball.verify` with the options, report in ``--out``."""
-    from twoball.reports import verify
+    from twoball._studies import verify
 
     case = case_from_options(args)
     print_notes([case.phi_a_note] if case.phi_a_note else [])
@@ -79,8 +80,8 @@ def run(args: argparse.Namespace) -> int:
         "t_end": args.t_end,
         "out": args.out,
     }
-    from twoball.progress import Reporter
-    from twoball.reports import verify_steps
+    from twoball._common.progress import Reporter
+    from twoball._studies import verify_steps
 
     steps = verify_steps(args.thorough, args.fast)
     with Reporter("verify", total=steps) as progress:

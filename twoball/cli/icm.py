@@ -5,11 +5,10 @@ from __future__ import annotations
 import argparse
 from dataclasses import asdict
 
+from twoball._common.errors import ParameterError
+from twoball._common.provenance import attach, block
+from twoball.cli.console import Table, console, print_json
 from twoball.modal import icm
-from twoball.modal.errors import ParameterError
-from twoball.verify.cli.console import Table, console, print_json
-
-from twoball.provenance import attach, block
 
 VALID_RANGES = {
     "--mu": "a number in [0, 1e+06]",

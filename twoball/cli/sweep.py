@@ -4,9 +4,10 @@ from __future__ import annotations
 
 import argparse
 
-from twoball.modal.errors import ParameterError
-from twoball.verify.cli.case_options import add_case_options, case_from_options
-from twoball.verify.cli.console import (
+from twoball._common.errors import ParameterError
+from twoball._common.provenance import attach
+from twoball.cli.case_options import add_case_options, case_from_options
+from twoball.cli.console import (
     Table,
     console,
     number,
@@ -24,8 +25,6 @@ from twoball.verify.sweeps.sweeps import (
     make_grid,
     plot_sweep,
 )
-
-from twoball.provenance import attach
 
 VALID_RANGES = dict(PARALLEL_RANGES)
 
@@ -72,7 +71,7 @@ def print_sweep(grid: SweepGrid, points: list[SweepPoint]) -> None:
 
 def run(args: argparse.Namespace) -> int:
     """Run ``twoball sweep``: :func:`twoball.sweep` with the options' grid and case."""
-    from twoball.solvers import sweep
+    from twoball._sweep import sweep
 
     grid = make_grid(args.param, args.values)
     workers = check_workers(args.workers) if not args.scheduler else args.workers
@@ -94,7 +93,7 @@ def run(args: argparse.Namespace) -> int:
     }
     if args.contact_radius is not None:
         options["contact_radius"] = args.contact_radius
-    from twoball.progress import QUICK, Reporter
+    from twoball._common.progress import QUICK, Reporter
 
     total = 1
     for n in grid.shape:

@@ -21,7 +21,7 @@ import math
 import re
 from collections.abc import Sequence
 
-from twoball.modal.errors import ParameterError
+from twoball._common.errors import ParameterError
 
 __all__ = ["SYNTAX", "join_negative_values", "parse_values"]
 

@@ -7,20 +7,20 @@ from __future__ import annotations
 
 import argparse
 
-from twoball.fem_membrane.export import FORMATS
-from twoball.verify.cli.case_options import add_case_options, case_from_options
-from twoball.verify.cli.console import console, key_value_table, number, print_notes, print_warnings
-from twoball.verify.cli.contact_options import VALID_RANGES as CONTACT_RANGES
-from twoball.verify.cli.contact_options import add_contact_options, contact_arguments
-from twoball.verify.cli.mesh_options import (
+from twoball.cli.case_options import add_case_options, case_from_options
+from twoball.cli.console import console, key_value_table, number, print_notes, print_warnings
+from twoball.cli.contact_options import VALID_RANGES as CONTACT_RANGES
+from twoball.cli.contact_options import add_contact_options, contact_arguments
+from twoball.cli.mesh_options import (
     SPHERE_KINDS,
     add_mesh_options,
     add_route_option,
     mesh_arguments,
     route_arguments,
 )
-from twoball.verify.cli.mesh_options import VALID_RANGES as MESH_RANGES
+from twoball.cli.mesh_options import VALID_RANGES as MESH_RANGES
 from twoball.verify.output.fields import DEFAULT_FRAMES, MAX_FRAMES, parse_times
+from twoball.verify.output.series import FORMATS
 
 VALID_RANGES: dict[str, str] = {
     **MESH_RANGES,
@@ -54,10 +54,10 @@ def add_frame_options(parser: argparse.ArgumentParser, default: int) -> None:
 
 def run(args: argparse.Namespace) -> int:
     """Run ``twoball export``."""
-    from twoball.files import export
+    from twoball._files import export
 
     times = None if args.times is None else parse_times(args.times)
-    from twoball.progress import Reporter
+    from twoball._common.progress import Reporter
 
     with Reporter("export") as progress:
         result = export(

@@ -5,7 +5,7 @@ from __future__ import annotations
 import argparse
 import shlex
 
-from twoball.verify.cli.console import console
+from twoball.cli.console import console
 from twoball.verify.reproduce.driver import (
     DEFAULT_OUT,
     PARTS,
@@ -25,7 +25,7 @@ def run(args: argparse.Namespace) -> int:
     names = parse_only(args.only)
     workers = check_workers(args.workers) if not args.scheduler else args.workers
     check_output(args.out)  # fail before any work
-    from twoball.progress import Reporter
+    from twoball._common.progress import Reporter
 
     with Runner(workers, args.scheduler) as runner:  # the pool starts before the bar's thread
         with Reporter("reproduce") as bar:

@@ -22,13 +22,13 @@ import errno
 import math
 import os
 from collections.abc import Callable, Iterator
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from pathlib import Path
 
 import numpy as np
-from twoball.modal.errors import ParameterError
 
-from twoball.staging import staged_file
+from twoball._common.errors import ParameterError
+from twoball._common.staging import staged_file
 
 IMAGE_KINDS: tuple[str, ...] = (".png", ".gif", ".mp4")
 DEFAULT_SIZE = (640, 480)
@@ -371,7 +371,7 @@ def _write_png(target: Path, images: Iterator[np.ndarray]) -> int:
 
 
 def _write_gif(target: Path, images: Iterator[np.ndarray], fps: float) -> int:
-    from twoball.fem_membrane.palette import gif_bytes
+    from twoball.verify.output.palette import gif_bytes
 
     frames = np.stack(list(images))
     # encoded in memory, then written by Python: a full disk is one OSError
@@ -507,3 +507,43 @@ def _counted(images: Iterator[np.ndarray], progress: Callable[[int], None]) -> I
             progress(k)
     finally:
         images.close()  # type: ignore[attr-defined]
+
+
+@dataclass(frozen=True)
+class ContactScene(BallScene):
+    """A scene with a body of finite mass (SI).
+
+    Parameters
+    ----------
+    contact : ndarray of bool, shape (F,)
+        True in the frames where the body is on the membrane.
+    impacts : ndarray, shape (I,)
+        Times [s] of the body's impacts on the membrane.
+    mass_ratio : float
+        ``mu = m1 / m2`` of the body.
+
+    The other parameters are those of :class:`BallScene`; ``body`` is the
+    body's height ``s(t)`` [m] and ``t_liftoff`` the final separation [s].
+    """
+
+    contact: np.ndarray = field(default_factory=lambda: np.zeros(0, dtype=bool))
+    impacts: np.ndarray = field(default_factory=lambda: np.zeros(0))
+    mass_ratio: float = 0.0
+
+    def __post_init__(self) -> None:
+        super().__post_init__()
+        contact = np.atleast_1d(np.asarray(self.contact, dtype=bool))
+        if contact.shape != self.times.shape:
+            raise ValueError("contact must have one flag per frame, shape (F,)")
+        object.__setattr__(self, "contact", contact)
+        object.__setattr__(self, "impacts", np.atleast_1d(np.asarray(self.impacts, dtype=float)))
+
+    def caption(self, k: int, warp: float) -> str:
+        """Time; the body in contact or in flight and its impacts so far; lift-off; warp."""
+        t = float(self.times[k])
+        text = f"t = {t * 1e3:6.2f} ms\nmu = {self.mass_ratio:g}"
+        text += "\nbody IN CONTACT" if self.contact[k] else "\nbody in flight"
+        text += f"\nimpacts so far: {int(np.sum(self.impacts <= t + 1e-12))}"
+        if self.t_liftoff is not None:
+            text += f"\nlift-off {self.t_liftoff * 1e3:.2f} ms"
+        return text + (f"\nwarp x{warp:.3g}" if warp != 1.0 else "")

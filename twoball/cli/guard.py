@@ -1,7 +1,7 @@
 """How a command ends when it is interrupted or cannot write: one line, a fixed exit status.
 
 * SIGINT -> ``twoball: interrupted``, exit 130; SIGTERM -> the same line, exit 143
-  (:func:`twoball.staging.raise_on_signals` turns both into an exception, so the
+  (:func:`twoball._common.staging.raise_on_signals` turns both into an exception, so the
   writers' clean-up runs and no traceback is printed).
 * An :class:`OSError` (full disk, read-only file system, no permission, name too
   long, ...) -> ``twoball: error: cannot write PATH: REASON``, exit 2 when the
@@ -20,7 +20,7 @@ import sys
 from collections.abc import Callable
 from typing import Any
 
-from twoball.signals import raise_on_signals
+from twoball._common.signals import raise_on_signals
 
 EXIT_USAGE = 2
 EXIT_NUMERICAL = 3
@@ -68,7 +68,7 @@ def guarded(command: Callable[..., int], *args: Any) -> int:
 def describe(error: OSError) -> str:
     """``cannot write PATH: REASON``; an error naming no path came from standard output.
 
-    Every file twoball writes goes through :mod:`twoball.staging`, which names
+    Every file twoball writes goes through :mod:`twoball._common.staging`, which names
     the user's path in its errors; what is left unnamed is the console.
     """
     reason = error.strerror or str(error)

@@ -10,9 +10,10 @@ import sys
 from pathlib import Path
 
 from rich.table import Table
-from twoball.modal.errors import ParameterError
-from twoball.verify.cli.case_options import add_case_options, case_from_options
-from twoball.verify.cli.console import console, print_notes
+
+from twoball._common.errors import ParameterError
+from twoball.cli.case_options import add_case_options, case_from_options
+from twoball.cli.console import console, print_notes
 from twoball.verify.output.report_files import json_text, study_summary_rows
 from twoball.verify.studies.result import STUDIES, StudyResult
 
@@ -39,7 +40,7 @@ def print_study(study: StudyResult, out: Path) -> None:
 
 def run(args: argparse.Namespace) -> int:
     """Run ``twoball converge``: :func:`twoball.converge` with the options, report in ``--out``."""
-    from twoball.reports import converge
+    from twoball._studies import converge
 
     args.study = chosen_study(args.study, args.study_option)
     out = args.out if args.out is not None else f"twoball-converge-{args.study}"
@@ -59,7 +60,7 @@ def run(args: argparse.Namespace) -> int:
         raise ParameterError("modes", "left out with study modes (use --modes-list)", args.modes)
     case = case_from_options(args)
     print_notes([case.phi_a_note] if case.phi_a_note else [])
-    from twoball.progress import Reporter
+    from twoball._common.progress import Reporter
 
     with Reporter(f"converge {args.study}") as progress:
         study = converge(case, progress=progress, **options)

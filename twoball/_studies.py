@@ -9,9 +9,9 @@ from __future__ import annotations
 import os
 from typing import Any
 
-from twoball.modal.errors import ParameterError
+from twoball._common.errors import ParameterError
+from twoball._common.progress import Step, silent
 from twoball.modal.parameters import Case
-from twoball.progress import Step, silent
 
 __all__ = ["converge", "parse_levels", "verify", "verify_steps"]
 
@@ -23,7 +23,7 @@ def parse_levels(text: str, mesh: str, study: str = "h") -> tuple[int, ...]:
     0.01 / 2^level) have their own bounds.  At least two levels, each one more
     than the last (a refinement ratio of 2 between neighbours).
     """
-    from twoball.ranges import parse_values
+    from twoball._common.ranges import parse_values
     from twoball.verify.studies.fem_runs import LEVEL_LIMITS
     from twoball.verify.studies.time_step import DT_LEVEL_LIMITS
 
@@ -76,7 +76,7 @@ def converge(
     out : path, optional
         Report directory to write (an earlier report there is replaced).
     progress : callable
-        Called with a short text as each step starts (:class:`twoball.progress.Reporter`).
+        Called with a short text as each step starts (:class:`twoball._common.progress.Reporter`).
 
     Returns
     -------
@@ -148,7 +148,7 @@ def converge(
         result = run_order_study(case, mesh=mesh, levels=level_list, geometry=geometry, **common)
     else:
         result = run_dt_study(case, mesh=mesh, order=order, levels=level_list, **common)
-    from twoball.provenance import block
+    from twoball._common.provenance import block
 
     arguments = {"study": study, "mesh": mesh, "order": order, "levels": levels}
     arguments |= {"modes_list": modes_list, "sigma": sigma, "recontact": recontact}
@@ -187,7 +187,7 @@ def verify(
     out : path, optional
         Report directory to write (report.md, results.json, CSV, PNG).
     progress : callable, optional
-        Called with a short text as each step starts (:class:`twoball.progress.Reporter`;
+        Called with a short text as each step starts (:class:`twoball._common.progress.Reporter`;
         :func:`verify_steps` counts the calls).
 
     Returns
@@ -211,7 +211,7 @@ def verify(
     configuration = config("fast" if fast else ("thorough" if thorough else "default"))
     say = progress or silent
     result = run_verify(case, sigma, recontact, t_end, configuration, say)
-    from twoball.provenance import block
+    from twoball._common.provenance import block
 
     arguments = {"thorough": thorough, "fast": fast, "sigma": sigma, "recontact": recontact}
     result.provenance = block(case, "twoball.verify", {**arguments, "t_end": t_end, "out": out})

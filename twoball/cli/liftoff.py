@@ -7,9 +7,8 @@ from __future__ import annotations
 
 import argparse
 
-from twoball.modal.report import LiftoffReport
-from twoball.verify.cli.case_options import add_case_options, case_from_options
-from twoball.verify.cli.console import (
+from twoball.cli.case_options import add_case_options, case_from_options
+from twoball.cli.console import (
     console,
     key_value_table,
     number,
@@ -17,15 +16,16 @@ from twoball.verify.cli.console import (
     print_notes,
     print_warnings,
 )
-from twoball.verify.cli.contact_options import VALID_RANGES as CONTACT_RANGES
-from twoball.verify.cli.contact_options import add_contact_options, contact_arguments
-from twoball.verify.cli.mesh_options import VALID_RANGES as MESH_RANGES
-from twoball.verify.cli.mesh_options import (
+from twoball.cli.contact_options import VALID_RANGES as CONTACT_RANGES
+from twoball.cli.contact_options import add_contact_options, contact_arguments
+from twoball.cli.mesh_options import VALID_RANGES as MESH_RANGES
+from twoball.cli.mesh_options import (
     add_mesh_options,
     add_time_options,
     mesh_arguments,
     time_arguments,
 )
+from twoball.modal.report import LiftoffReport
 
 __all__ = ["VALID_RANGES", "contact_arguments", "register", "run"]
 
@@ -118,8 +118,8 @@ def contact_rows(report) -> list[tuple[str, str]]:
 
 def solve_from_options(args: argparse.Namespace) -> LiftoffReport:
     """Call :func:`twoball.liftoff` with the case, model, mesh and time options."""
-    from twoball.progress import QUICK, Reporter
-    from twoball.solvers import liftoff
+    from twoball._common.progress import QUICK, Reporter
+    from twoball._liftoff import liftoff
 
     options = {
         "backend": args.backend,
@@ -141,7 +141,7 @@ def run(args: argparse.Namespace) -> int:
     """Run ``twoball liftoff``."""
     plot = None
     if args.plot is not None:
-        from twoball.modal.errors import ParameterError
+        from twoball._common.errors import ParameterError
         from twoball.verify.sweeps.sweeps import check_plot_path
 
         if args.mass_ratio is None:

@@ -7,24 +7,24 @@ from __future__ import annotations
 
 import argparse
 
-from twoball.modal.errors import ParameterError
-from twoball.verify.cli.case_options import (
+from twoball._common.errors import ParameterError
+from twoball.cli.case_options import (
     add_case_options,
     apply_limits,
     case_from_options,
     case_options_given,
 )
-from twoball.verify.cli.console import console, key_value_table, print_notes, print_warnings
-from twoball.verify.cli.contact_options import VALID_RANGES as CONTACT_RANGES
-from twoball.verify.cli.contact_options import add_contact_options, contact_arguments
-from twoball.verify.cli.mesh_options import (
+from twoball.cli.console import console, key_value_table, print_notes, print_warnings
+from twoball.cli.contact_options import VALID_RANGES as CONTACT_RANGES
+from twoball.cli.contact_options import add_contact_options, contact_arguments
+from twoball.cli.mesh_options import (
     SPHERE_KINDS,
     add_mesh_options,
     add_route_option,
     mesh_arguments,
     route_arguments,
 )
-from twoball.verify.cli.mesh_options import VALID_RANGES as MESH_RANGES
+from twoball.cli.mesh_options import VALID_RANGES as MESH_RANGES
 from twoball.verify.output.fields import BACKENDS
 from twoball.verify.output.figures import DPI, DPI_RANGE
 from twoball.verify.output.figures.waterfall import WATERFALL_INSTANTS
@@ -40,7 +40,7 @@ VALID_RANGES: dict[str, str] = {
 
 def parse_list(text: str, flag: str, valid: str, allowed: set[int] | None = None) -> list[int]:
     """Integers in the one list syntax (e.g. ``--levels 2,3`` or ``--levels 1:3``)."""
-    from twoball.ranges import parse_values
+    from twoball._common.ranges import parse_values
 
     values = parse_values(text, flag, integer=True, valid=valid)
     if any(v < 0 for v in values) or (allowed and any(v not in allowed for v in values)):
@@ -58,8 +58,8 @@ def parse_backends(text: str) -> tuple[str, ...]:
 
 def run(args: argparse.Namespace) -> int:
     """Run ``twoball plot``: :func:`twoball.plot` with the options."""
-    from twoball.files import plot
-    from twoball.progress import Reporter
+    from twoball._common.progress import Reporter
+    from twoball._files import plot
 
     options = {**mesh_arguments(args), **route_arguments(args), **contact_arguments(args)}
     levels = None

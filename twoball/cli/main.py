@@ -1,12 +1,12 @@
 """The ``twoball`` command line: SI units in and out, one-line errors, exit status 2.
 
-Each subcommand lives in its own module ``twoball.verify.cli.<name>`` with a
+Each subcommand lives in its own module ``twoball.cli.<name>`` with a
 ``register(parser)`` function that adds its options and a ``run(args)`` that
 does the work.  Only the chosen subcommand's module is imported, so
 ``twoball --help`` loads no numerical library at all.  This module turns
-:class:`~twoball.modal.errors.ParameterError` into a one-line message with exit
+:class:`~twoball._common.errors.ParameterError` into a one-line message with exit
 status 2 (naming the flag through the one table of
-:mod:`twoball.verify.cli.flags`) and :class:`~twoball.modal.errors.NumericalError`
+:mod:`twoball.cli.flags`) and :class:`~twoball._common.errors.NumericalError`
 into one with exit status 3.
 """
 
@@ -25,7 +25,7 @@ from twoball._version import __version__
 EXIT_USAGE = 2
 EXIT_NUMERICAL = 3
 
-# name -> one-line help; the module is twoball.verify.cli.<name>.
+# name -> one-line help; the module is twoball.cli.<name>.
 COMMANDS: dict[str, str] = {
     "verify": "check every backend against the closed form; write a report directory",
     "liftoff": "lift-off time and velocity for one case",
@@ -45,7 +45,7 @@ QUIET_HELP = "no progress lines or bars on standard error (warnings and errors s
 
 def command_module(name: str) -> ModuleType:
     """The module of subcommand ``name`` (imported on demand)."""
-    return importlib.import_module(f"twoball.verify.cli.{name}")
+    return importlib.import_module(f"twoball.cli.{name}")
 
 
 class _Parser(argparse.ArgumentParser):
@@ -66,7 +66,7 @@ class _Parser(argparse.ArgumentParser):
 
 def valid_ranges(modules: Sequence[ModuleType]) -> dict[str, str]:
     """Valid range of every numeric flag of ``modules`` (with the shared case options)."""
-    from twoball.verify.cli.case_options import VALID_RANGES as CASE_RANGES
+    from twoball.cli.case_options import VALID_RANGES as CASE_RANGES
 
     ranges = dict(CASE_RANGES)
     for module in modules:
@@ -138,9 +138,9 @@ def main(argv: Sequence[str] | None = None) -> int:
     SIGINT/SIGTERM end it with exit status 130/143 and the line ``twoball:
     interrupted``; an OSError while writing gives one line naming the path and
     exit status 2 (3 if the cause is not the user's path); see
-    :mod:`twoball.verify.cli.guard`.
+    :mod:`twoball.cli.guard`.
     """
-    from twoball.verify.cli.guard import guarded
+    from twoball.cli.guard import guarded
 
     return guarded(_main, argv)
 
@@ -152,22 +152,22 @@ def _main(argv: Sequence[str] | None = None) -> int:
     if not argv:
         parser.print_help()
         return 0
-    from twoball.ranges import join_negative_values
+    from twoball._common.ranges import join_negative_values
 
     argv = join_negative_values(argv, value_options(parser))
     args = parser.parse_args(argv)
     if args.command is None:
         fail("choose a command: " + ", ".join(COMMANDS))
-    from twoball import progress, provenance
+    from twoball._common import progress, provenance
 
     progress.set_quiet(args.quiet)
     provenance.set_command(argv)  # every JSON and file this run writes names it
-    from twoball.modal.errors import NumericalError, ParameterError
+    from twoball._common.errors import NumericalError, ParameterError
 
     try:
         return int(args.run(args))
     except ParameterError as error:
-        from twoball.verify.cli.flags import cli_message
+        from twoball.cli.flags import cli_message
 
         fail(cli_message(error, args))
     except NumericalError as error:

@@ -7,24 +7,23 @@ from __future__ import annotations
 
 import argparse
 
-from twoball.fem_membrane.render import DEFAULT_SIZE, check_warp
-from twoball.modal.errors import ParameterError
-from twoball.verify.cli.case_options import add_case_options, case_from_options
-from twoball.verify.cli.console import console, key_value_table, print_notes, print_warnings
-from twoball.verify.cli.contact_options import VALID_RANGES as CONTACT_RANGES
-from twoball.verify.cli.contact_options import add_contact_options, contact_arguments
-from twoball.verify.cli.export import add_backend_option
-from twoball.verify.cli.mesh_options import (
+from twoball._common.errors import ParameterError
+from twoball._files import DEFAULT_ANIMATION_FRAMES
+from twoball.cli.case_options import add_case_options, case_from_options
+from twoball.cli.console import console, key_value_table, print_notes, print_warnings
+from twoball.cli.contact_options import VALID_RANGES as CONTACT_RANGES
+from twoball.cli.contact_options import add_contact_options, contact_arguments
+from twoball.cli.export import add_backend_option
+from twoball.cli.mesh_options import (
     SPHERE_KINDS,
     add_mesh_options,
     add_route_option,
     mesh_arguments,
     route_arguments,
 )
-from twoball.verify.cli.mesh_options import VALID_RANGES as MESH_RANGES
+from twoball.cli.mesh_options import VALID_RANGES as MESH_RANGES
 from twoball.verify.output.fields import MAX_FRAMES
-
-from twoball.files import DEFAULT_ANIMATION_FRAMES
+from twoball.verify.output.render import DEFAULT_SIZE, check_warp
 
 VALID_RANGES: dict[str, str] = {
     **MESH_RANGES,
@@ -48,8 +47,8 @@ def parse_warp(text: str | None) -> float | None:
 
 def run(args: argparse.Namespace) -> int:
     """Run ``twoball render``: :func:`twoball.render` with the options."""
-    from twoball.files import render
-    from twoball.progress import Reporter
+    from twoball._common.progress import Reporter
+    from twoball._files import render
 
     with Reporter("render") as progress:
         result = render(

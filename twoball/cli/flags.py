@@ -1,7 +1,7 @@
 """The one table from parameter names (Python API, model layer) to command-line flags.
 
 The model layer and :mod:`twoball`'s public functions raise
-:class:`~twoball.modal.errors.ParameterError` naming their parameters
+:class:`~twoball._common.errors.ParameterError` naming their parameters
 (``damping``, ``phi_a``, ``level``); the command line prints the flag the user
 typed instead (``--damping``, ``--phi-a``, ``--level``).  Names not in the
 table (already a flag, or internal) are printed as they are.
@@ -11,7 +11,7 @@ from __future__ import annotations
 
 from argparse import Namespace
 
-from twoball.modal.errors import ParameterError
+from twoball._common.errors import ParameterError
 
 FLAGS: dict[str, str] = {
     # case (SI)

@@ -3,7 +3,7 @@
 :func:`raise_on_signals` turns both signals into :class:`Interrupted` (exit
 status 128 + signal number: 130, 143), so every ``finally`` runs and scratch is
 removed; :func:`deferred_signals` holds them back while a sequence of renames
-commits output (see :mod:`twoball.staging`) and raises afterwards.
+commits output (see :mod:`twoball._common.staging`) and raises afterwards.
 
 Testing hook: with ``TWOBALL_TEST_PAUSE=STAGE`` in the environment,
 :func:`pause` prints ``twoball-test-pause: STAGE`` on standard error at that

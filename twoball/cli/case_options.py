@@ -5,7 +5,7 @@ from __future__ import annotations
 import argparse
 import math
 
-from twoball.modal.errors import ParameterError
+from twoball._common.errors import ParameterError
 from twoball.modal.filters import FILTER_KINDS
 from twoball.modal.liftoff import HORIZONS
 from twoball.modal.parameters import STANDARD_GRAVITY, Case
@@ -127,7 +127,7 @@ def case_options_given(args: argparse.Namespace) -> bool:
 
 def apply_limits(args: argparse.Namespace) -> None:
     """Set the resource limits of ``--max-memory`` and ``--max-time`` for this run."""
-    from twoball.budget import Budget, set_budget
+    from twoball._common.budget import Budget, set_budget
 
     set_budget(Budget.from_options(args.max_memory, args.max_time))
 

@@ -3,7 +3,7 @@
 Every subcommand that takes a mesh (``liftoff --backend fem``, ``eigen``,
 ``export``, ``render``, ``plot``) adds its options here and hands them, unchanged
 and None when not given, to the public function, whose
-:class:`twoball.mesh_options.MeshOptions` supplies the defaults and refuses an
+:class:`twoball.fem_membrane.options.MeshOptions` supplies the defaults and refuses an
 option that does not apply (``--level`` with ``--mesh axisym``, ``--elements``
 on a sphere, ``--dt`` with ``--scheme modal``, any of them with ``--backend legendre``).
 """
@@ -14,7 +14,7 @@ import argparse
 from pathlib import Path
 from typing import Any
 
-from twoball.mesh_options import (
+from twoball.fem_membrane.options import (
     DEFAULT_ELEMENTS,
     DEFAULT_LEVEL,
     DEFAULT_ORDER,

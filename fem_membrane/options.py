@@ -22,7 +22,7 @@ from numbers import Integral
 from pathlib import Path
 from typing import Any
 
-from twoball.modal.errors import ParameterError
+from twoball._common.errors import ParameterError
 
 #: Mesh kinds: icosphere, sphere with a ring of edges at phi_a, axisymmetric line.
 MESH_KINDS: tuple[str, ...] = ("sphere", "ring", "axisym")

@@ -1,7 +1,7 @@
 """``twoball.export``, ``twoball.render`` and ``twoball.plot``: the fields on the sphere as files.
 
 Each solves the case with the requested backend(s) on a sphere mesh (the one
-definition of mesh options, :class:`twoball.mesh_options.MeshOptions`), writes
+definition of mesh options, :class:`twoball.fem_membrane.options.MeshOptions`), writes
 to ``out`` and returns a small result object with ``as_dict()``.
 """
 
@@ -10,10 +10,17 @@ from __future__ import annotations
 import json
 import os
 from collections.abc import Sequence
-from dataclasses import replace
+from dataclasses import dataclass, field, replace
+from pathlib import Path
 from typing import Any
 
-from twoball.field_model import (
+from twoball._common.errors import ParameterError
+from twoball._common.progress import Step, silent
+from twoball._common.provenance import block
+from twoball._common.staging import check_path_type
+from twoball.modal.parameters import Case
+from twoball.modal.report import LiftoffReport
+from twoball.verify.output.fields import (
     FIELD_BACKENDS,
     FieldMesh,
     check_backend,
@@ -24,13 +31,6 @@ from twoball.field_model import (
     field_mesh,
     field_warnings,
 )
-from twoball.file_results import ExportResult, PlotResult, RenderResult
-from twoball.modal.errors import ParameterError
-from twoball.modal.parameters import Case
-from twoball.modal.report import LiftoffReport
-from twoball.progress import Step, silent
-from twoball.provenance import block
-from twoball.staging import check_path_type
 
 __all__ = ["ExportResult", "PlotResult", "RenderResult", "export", "plot", "render"]
 
@@ -100,7 +100,7 @@ def export(
     sigma, recontact, t_end
         As in :func:`twoball.liftoff`.
     progress : callable, optional
-        Called with a short text as each stage starts (:class:`twoball.progress.Reporter`).
+        Called with a short text as each stage starts (:class:`twoball._common.progress.Reporter`).
     route : {"auto", "full", "krylov"}
         FE mode shapes: every eigenpair below the cutoff (``full``), the Ritz pairs
         of the rational Krylov route converged on the whole field (``krylov``), or
@@ -111,14 +111,13 @@ def export(
         eigen route), each frame gets field data ``s_m`` [m], ``s_t_m_s`` [m/s] and
         ``contact`` (1/0), and the text ``contact_events`` lists every event (JSON, SI).
 
-    Every file carries the case and :mod:`twoball.provenance` (VTU string field
+    Every file carries the case and :mod:`twoball._common.provenance` (VTU string field
     data ``provenance`` and ``case``, XDMF grid attributes); field names end in
     their unit (``u_m``, ``u_t_m_s``, ``u_tt_m_s2``, ...).
     """
     arguments = dict(locals())  # the call, for the provenance
     check_path_type(out)
-    from twoball.fem_membrane.export import series_format, write_series
-    from twoball.staging import check_file
+    from twoball._common.staging import check_file
     from twoball.verify.output.contact_fields import contact_options, contact_series, model_of
     from twoball.verify.output.fields import (
         DEFAULT_FRAMES,
@@ -129,6 +128,7 @@ def export(
         liftoff_frame,
         window_s,
     )
+    from twoball.verify.output.series import series_format, write_series
 
     case = Case.preset("basketball") if case is None else case
     fmt = series_format(out, format)
@@ -248,7 +248,11 @@ def render(
     check_path_type(out)
     import numpy as np
 
-    from twoball.fem_membrane.render import (
+    from twoball._common.staging import check_file
+    from twoball.verify.output.contact_fields import contact_options, contact_scene, model_of
+    from twoball.verify.output.fields import ball_scene, check_frames, check_times, liftoff_frame
+    from twoball.verify.output.fields import window_s as window
+    from twoball.verify.output.render import (
         DEFAULT_SIZE,
         check_size,
         check_warp,
@@ -256,10 +260,6 @@ def render(
         render_scene,
         round_size,
     )
-    from twoball.staging import check_file
-    from twoball.verify.output.contact_fields import contact_options, contact_scene, model_of
-    from twoball.verify.output.fields import ball_scene, check_frames, check_times, liftoff_frame
-    from twoball.verify.output.fields import window_s as window
 
     case = Case.preset("basketball") if case is None else case
     kind = image_kind(out)
@@ -282,7 +282,7 @@ def render(
     )
     times = None
     if time is not None:
-        from twoball.modal.errors import real_number
+        from twoball._common.errors import real_number
 
         valid = "a time >= 0 in seconds within the modelled window"
         times = check_times(window(case, t_end), [real_number("time", time, valid)], "time")
@@ -391,7 +391,7 @@ def plot(
     """
     arguments = dict(locals())  # the call, for the provenance
     check_path_type(out)
-    from twoball.staging import check_file
+    from twoball._common.staging import check_file
     from twoball.verify.output.contact_fields import model_of, plot_contact
     from twoball.verify.output.figures import PLOT_KINDS, check_dpi, figure_format, save_figure
     from twoball.verify.output.figures.contact_pole import contact_pole_figure
@@ -499,3 +499,84 @@ def plot(
 def mesh_block(field: FieldMesh) -> dict[str, object]:
     """``mesh_file`` for a provenance block: the user's file (path, radius, centre, pole)."""
     return {} if field.source is None else {"mesh_file": field.source}
+
+
+@dataclass(frozen=True)
+class ExportResult:
+    """Files written by :func:`export` and what they hold (SI)."""
+
+    files: list[Path]
+    format: str
+    times_s: list[float]
+    nodes: int
+    cells: int
+    cell_type: str
+    point_data: list[str]
+    report: LiftoffReport
+    warnings: list[str] = field(default_factory=list)
+    provenance: dict[str, Any] | None = None
+
+    def as_dict(self) -> dict[str, Any]:
+        """JSON-ready summary with the lift-off of the exported backend."""
+        return {
+            "provenance": self.provenance,
+            "warnings": self.warnings,
+            "files": [str(f) for f in self.files],
+            "format": self.format,
+            "times_s": self.times_s,
+            "nodes": self.nodes,
+            "cells": self.cells,
+            "cell_type": self.cell_type,
+            "point_data": self.point_data,
+            "liftoff": self.report.as_dict(),
+        }
+
+
+@dataclass(frozen=True)
+class RenderResult:
+    """The picture or animation written by :func:`render`."""
+
+    file: Path
+    times_s: list[float]
+    size: tuple[int, int]
+    warp: float
+    backend: str
+    report: LiftoffReport
+    warnings: list[str] = field(default_factory=list)
+    provenance: dict[str, Any] | None = None
+
+    def as_dict(self) -> dict[str, Any]:
+        """JSON-ready summary."""
+        return {
+            "provenance": self.provenance,
+            "warnings": self.warnings,
+            "file": str(self.file),
+            "times_s": self.times_s,
+            "size": list(self.size),
+            "warp": self.warp,
+            "backend": self.backend,
+            "liftoff": self.report.as_dict(),
+        }
+
+
+@dataclass(frozen=True)
+class PlotResult:
+    """The PNG written by :func:`plot`, with one line per curve family."""
+
+    file: Path
+    kind: str
+    rows: list[tuple[str, str]] = field(default_factory=list)
+    reports: dict[str, LiftoffReport] = field(default_factory=dict)
+    warnings: list[str] = field(default_factory=list)
+    provenance: dict[str, Any] | None = None
+
+    def as_dict(self) -> dict[str, Any]:
+        """JSON-ready summary."""
+        return {
+            "provenance": self.provenance,
+            "warnings": self.warnings,
+            "file": str(self.file),
+            "kind": self.kind,
+            "rows": [list(r) for r in self.rows],
+            "liftoff": {name: r.as_dict() for name, r in self.reports.items()},
+        }

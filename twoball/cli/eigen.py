@@ -4,9 +4,9 @@ from __future__ import annotations
 
 import argparse
 
-from twoball.verify.cli.console import console, print_json
-from twoball.verify.cli.mesh_options import VALID_RANGES as MESH_RANGES
-from twoball.verify.cli.mesh_options import add_mesh_options, mesh_arguments
+from twoball.cli.console import console, print_json
+from twoball.cli.mesh_options import VALID_RANGES as MESH_RANGES
+from twoball.cli.mesh_options import add_mesh_options, mesh_arguments
 
 VALID_RANGES = {**MESH_RANGES, "--count": "an integer >= 1"}
 
@@ -17,10 +17,10 @@ def run(args: argparse.Namespace) -> int:
     """Run ``twoball eigen``."""
     from rich.table import Table
 
+    from twoball._common.progress import QUICK, Reporter
+    from twoball._common.provenance import attach, block
     from twoball.fem import eigen
-    from twoball.mesh_options import MeshOptions
-    from twoball.progress import QUICK, Reporter
-    from twoball.provenance import attach, block
+    from twoball.fem_membrane.options import MeshOptions
 
     options = mesh_arguments(args)
     with Reporter("eigen", delay=QUICK) as progress:

@@ -23,12 +23,12 @@ Folders twoball writes carry one marker file, :data:`MARKER`: JSON naming the
 writer and listing every file it wrote.  An existing target folder is replaced
 only if it is empty or holds the marker and nothing but the files it lists; any
 other entry (a user's file, a symbolic link) makes :func:`check_folder` raise
-:class:`~twoball.modal.errors.ParameterError` naming ``--out`` and the entry.
+:class:`~twoball._common.errors.ParameterError` naming ``--out`` and the entry.
 A target that is a symbolic link is refused, never followed.
 
 Scratch entries are named ``.NAME.twoball-scratch-PID-TOKEN`` and removed on
-every exit path: exceptions and, through :func:`twoball.signals.raise_on_signals` (which turns
-SIGINT and SIGTERM into :class:`~twoball.signals.Interrupted`), signals; commits and clean-ups
+every exit path: exceptions and, through :func:`twoball._common.signals.raise_on_signals` (which turns
+SIGINT and SIGTERM into :class:`~twoball._common.signals.Interrupted`), signals; commits and clean-ups
 run with signals held back (:func:`deferred_signals`).  Scratch left by a killed
 (SIGKILL) process is swept by the next run that writes the same target, once
 its process id is gone.
@@ -58,7 +58,7 @@ import sys
 from collections.abc import Callable, Iterator, Sequence
 from pathlib import Path
 
-from twoball.signals import deferred_signals, pause, sigterm_raises
+from twoball._common.signals import deferred_signals, pause, sigterm_raises
 
 MARKER = ".twoball-output"
 #: Marker of report folders written by twoball before 0.x; such a folder is
@@ -84,7 +84,7 @@ _NAME_KEEP = 180  # characters of the target's name kept in a scratch name (NAME
 
 # --------------------------------------------------------------------------- errors
 def _parameter_error(param: str, valid: str, got: object) -> Exception:
-    from twoball.modal.errors import ParameterError
+    from twoball._common.errors import ParameterError
 
     return ParameterError(param, valid, got)
 
@@ -134,7 +134,7 @@ def _usable_target(path: str | os.PathLike[str], param: str, valid: str) -> Path
 def check_path_type(path: object, param: str = "out") -> str | os.PathLike[str]:
     """``path`` itself if it is a str or os.PathLike (else ParameterError naming ``param``)."""
     if isinstance(path, bool) or not isinstance(path, str | os.PathLike):
-        from twoball.modal.errors import ParameterError
+        from twoball._common.errors import ParameterError
 
         shown = path if isinstance(path, int | float) else type(path).__name__
         raise ParameterError(param, "a file path (str or os.PathLike)", shown)

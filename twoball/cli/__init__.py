@@ -1,0 +1,1 @@
+"""twoball.cli -- the command line."""

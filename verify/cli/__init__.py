@@ -1,1 +1,0 @@
-"""twoball.verify.cli -- the command line."""
