@@ -124,26 +124,20 @@ def fem_contact_model(
 
 def fem_contact_solution(
     case: Any,
-    mass_ratio: float,
-    contact_radius: float | None = None,
+    body: Any,
+    mesh: Any = None,
     *,
     sigma: str = "lanczos",
-    restitution: float = 0.0,
-    energy: str = "ball",
     t_end_s: float | None = None,
-    mesh: str | None = None,
-    level: int | None = None,
-    elements: int | None = None,
-    order: int | None = None,
-    initial: str = "projection",
 ) -> tuple[Any, Any]:
     """The finite-element modal model (full eigen route) and its contact report (SI).
 
-    The same options and the same shared solver as
-    :func:`twoball.modal.contact.report.legendre_contact`; ``mesh`` is ``sphere``
-    (default, level 3), ``ring`` or ``axisym`` (default 400 elements).  The model
-    holds the eigenvectors the contact solver moved (fields of
-    :mod:`twoball.fem_membrane.contact_fields`).
+    The same body (:class:`~twoball.modal.contact.body.Body`) and the same
+    shared solver as :func:`twoball.modal.contact.report.legendre_contact`;
+    ``mesh`` a :class:`~twoball.fem_membrane.options.MeshOptions` (or a kind
+    name): ``sphere`` (default, level 3), ``ring`` or ``axisym`` (default 400
+    elements), no mesh file.  The model holds the eigenvectors the contact
+    solver moved (fields of :mod:`twoball.fem_membrane.contact_fields`).
     """
     from twoball.fem_membrane.options import MeshOptions
     from twoball.modal.contact.caps import cap_angle
@@ -153,10 +147,12 @@ def fem_contact_solution(
 
     from twoball._common.budget import check_fem
 
-    radius = check_contact_options(case, mass_ratio, contact_radius, restitution, energy)
-    spec = MeshOptions.resolve(mesh, level=level, elements=elements, order=order, files=False)
+    radius = check_contact_options(case, body)
+    spec = MeshOptions.of(mesh).require(files=False)
+    if spec.geometry != "isoparametric":
+        raise ParameterError("geometry", "isoparametric with a body of finite mass", spec.geometry)
     check_fem(spec.kind, spec.level, spec.elements, spec.order, case.modes, "full")
-    membrane = membrane_case(case, float(mass_ratio), energy)
+    membrane = membrane_case(case, body.mass_ratio, body.energy)
     theta = cap_angle(radius, case.radius)
     model, contact, info = fem_contact_model(
         membrane.phi_a,
@@ -167,12 +163,64 @@ def fem_contact_solution(
         level=spec.level,
         elements=spec.elements,
         order=spec.order,
-        initial=initial,
+        initial=spec.initial or "projection",
     )
     report = solve_contact(
         case, model.series, contact,
-        mass_ratio=float(mass_ratio), contact_radius_m=radius, restitution=float(restitution),
-        energy=energy, backend="fem", sigma=sigma, t_end=t_end_dimensionless(case, t_end_s),
+        mass_ratio=body.mass_ratio, contact_radius_m=radius, restitution=body.restitution,
+        energy=body.energy, backend="fem", sigma=sigma, t_end=t_end_dimensionless(case, t_end_s),
         membrane=membrane, extra={"cap_angle_rad": theta, **info},
     )  # fmt: skip
     return model, report
+
+
+def fem_contact_fields(
+    case: Any,
+    body: Any,
+    mesh: Any = None,
+    *,
+    sigma: str = "lanczos",
+    t_end_s: float | None = None,
+) -> tuple[Any, Any, Any, Any]:
+    """The node mesh, the mode shapes at its nodes and the contact report (SI).
+
+    Exports and pictures of the membrane under a body of finite mass need the
+    mode shapes at the nodes *and* the contact solver's modal state on the same
+    modes; both come from the one eigen solve of :func:`fem_contact_solution`
+    (the full route), so the drawn field ``u = sum_k q_k phi_k`` is exactly the
+    one the contact solver moved (eq. (C1) of docs/contact.rst).
+
+    Parameters
+    ----------
+    case : Case
+        The impact (SI).
+    body : Body
+        The upper body.
+    mesh : MeshOptions or {"sphere", "ring"}
+        Icosphere, or ring sphere with a ring at the membrane's phi_a.
+    sigma : str
+        Spectral filter of eq. (3.16).
+    t_end_s : float or None
+        Modelled window [s] (default 4 pi / c).
+
+    Returns
+    -------
+    nodes : SphereMesh
+        Unit sphere whose nodes are the degrees of freedom (as
+        :func:`twoball.verify.output.fields.fem_nodal_series`).
+    shapes : ndarray, shape (K, P)
+        M-orthonormal eigenvectors at the nodes, one row per mode of the report's system.
+    series : ModalSeries
+        The free membrane's filtered modal series on these modes (eq. (3.16)).
+    report : ContactReport
+        The contact solution on these modes (``report.system``, ``report.history``).
+    """
+    from twoball.fem_membrane.options import MeshOptions
+    from twoball.fem_membrane.space import dof_mesh
+
+    spec = MeshOptions.of(mesh)
+    model, report = fem_contact_solution(case, body, spec, sigma=sigma, t_end_s=t_end_s)
+    kind = "icosphere" if spec.kind == "sphere" else "ring sphere"
+    ring = report.membrane.phi_a if spec.kind == "ring" else None
+    nodes = dof_mesh(model.space.basis, f"{kind} level {spec.level}, P{model.space.order}", ring)
+    return nodes, model.pairs.vectors.T, model.series, report

@@ -7,10 +7,11 @@
     damped oscillators of the modal series exactly; modes beyond the cutoff are
     undamped (they are not excited by the filtered initial data).
 ``rayleigh``
-    ``C = alpha M + beta K``, sparse, fitted to ratio D at two frequencies.  A
-    mode of frequency omega then has the effective ratio
-    ``zeta(omega) = alpha / (2 omega) + beta omega / 2``: exact at the two
-    fitting frequencies, smaller between them, larger outside.
+    ``C = alpha M + beta K``, sparse, of a :class:`~twoball.modal.damping.Rayleigh`
+    law (given, or fitted to ratio D at two frequencies).  A mode of frequency
+    omega then has the effective ratio ``zeta(omega) = alpha / (2 omega) +
+    beta omega / 2``: with a fit, exact at the two fitting frequencies, smaller
+    between them, larger outside.
 
 Dimensionless.
 """
@@ -23,11 +24,9 @@ from dataclasses import dataclass
 import numpy as np
 import scipy.sparse as sp
 from twoball.fem_membrane.eigen import Eigenpairs
+from twoball.modal.damping import Rayleigh
 from twoball.modal.series import check_damping
 
-from twoball._common.errors import ParameterError
-
-RAYLEIGH_LOW = math.sqrt(2.0)  # default lower fitting frequency: omega_1 of the sphere
 ZERO_FREQUENCY = 1e-3  # below this a computed frequency is the constant mode (omega = 0)
 
 
@@ -50,50 +49,17 @@ class ModalDamping:
         return self.basis @ (self.rates * (self.basis.T @ v))
 
 
-@dataclass(frozen=True)
-class RayleighDamping:
-    """``C = alpha M + beta K`` fitted to ratio D at ``omega_low`` and ``omega_high``."""
+def rayleigh_matrix(law: Rayleigh, mass: sp.spmatrix, stiffness: sp.spmatrix) -> sp.csr_matrix:
+    """The sparse damping matrix ``alpha M + beta K`` of a Rayleigh law."""
+    return (law.alpha * mass + law.beta * stiffness).tocsr()
 
-    alpha: float
-    beta: float
-    omega_low: float
-    omega_high: float
-    ratio: float
 
-    @classmethod
-    def fit(
-        cls, ratio: float, omega_low: float = RAYLEIGH_LOW, omega_high: float = 1.0
-    ) -> RayleighDamping:
-        """Solve ``zeta(omega_low) = zeta(omega_high) = D`` for alpha and beta.
-
-        ``alpha = 2 D w1 w2 / (w1 + w2)``, ``beta = 2 D / (w1 + w2)``.
-        """
-        ratio = check_damping(ratio)
-        low, high = float(omega_low), float(omega_high)
-        if not (math.isfinite(low) and math.isfinite(high) and 0.0 < low < high):
-            raise ParameterError(
-                "rayleigh_frequencies", "two finite frequencies 0 < w1 < w2", (low, high)
-            )
-        alpha = 2.0 * ratio * low * high / (low + high)
-        beta = 2.0 * ratio / (low + high)
-        return cls(alpha, beta, low, high, ratio)
-
-    def matrix(self, mass: sp.spmatrix, stiffness: sp.spmatrix) -> sp.csr_matrix:
-        """The sparse damping matrix ``alpha M + beta K``."""
-        return (self.alpha * mass + self.beta * stiffness).tocsr()
-
-    def effective_ratio(self, omega: np.ndarray) -> np.ndarray:
-        """``zeta(omega) = alpha / (2 omega) + beta omega / 2`` (inf at omega = 0)."""
-        omega = np.asarray(omega, dtype=float)
-        with np.errstate(divide="ignore"):
-            return self.alpha / (2.0 * omega) + 0.5 * self.beta * omega
-
-    def table(self, omega: np.ndarray) -> list[dict[str, float]]:
-        """One row per mode except the constant one: index, omega, ratio zeta, zeta / D."""
-        omega = np.asarray(omega, dtype=float)
-        rows = []
-        for k in np.flatnonzero(omega > ZERO_FREQUENCY):
-            zeta = float(self.effective_ratio(omega[k]))
-            relative = zeta / self.ratio if self.ratio > 0 else math.inf
-            rows.append({"mode": int(k), "omega": float(omega[k]), "zeta": zeta, "ratio": relative})
-        return rows
+def rayleigh_table(law: Rayleigh, omega: np.ndarray, ratio: float) -> list[dict[str, float]]:
+    """One row per mode except the constant one: index, omega, ratio zeta, zeta / D."""
+    omega = np.asarray(omega, dtype=float)
+    rows = []
+    for k in np.flatnonzero(omega > ZERO_FREQUENCY):
+        zeta = float(law.ratios(omega[k]))
+        relative = zeta / ratio if ratio > 0 else math.inf
+        rows.append({"mode": int(k), "omega": float(omega[k]), "zeta": zeta, "ratio": relative})
+    return rows

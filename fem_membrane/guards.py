@@ -116,7 +116,8 @@ def time_step_warnings(
     return [
         f"time step too coarse: omega_max dt = {omega_max * dt:.3g} gives a "
         f"{min(error, 9.99):.0%} frequency error of the highest retained mode (limit "
-        f"{FREQUENCY_ERROR:.0%}); use --dt <= {largest * time_unit_s:.3g} s or omit --dt"
+        f"{FREQUENCY_ERROR:.0%}); use a time step dt <= {largest * time_unit_s:.3g} s "
+        "or the default"
     ]
 
 
@@ -169,14 +170,14 @@ def mesh_warnings(
     if error is None or error <= EIGENVALUE_ERROR:
         return []
     size = (
-        f"--elements {400 if elements is None else elements}"
+        f"{400 if elements is None else elements} elements"
         if mesh == "axisym"
-        else f"--level {3 if level is None else level}"
+        else f"level {3 if level is None else level}"
     )
     return [
         f"mesh under-resolves the retained modes: estimated eigenvalue error "
         f"{min(error, 9.99):.0%} at degree l = {degree} (P{order}, {size}; limit "
-        f"{EIGENVALUE_ERROR:.0%}); refine the mesh or raise --order"
+        f"{EIGENVALUE_ERROR:.0%}); refine the mesh or raise the element order"
     ]
 
 

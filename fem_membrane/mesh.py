@@ -445,21 +445,6 @@ def write_mesh(path: str | Path, mesh: SphereMesh) -> None:
     meshio.write(str(path), meshio.Mesh(mesh.points, [(kind, mesh.cells)]))
 
 
-def read_mesh(path: str | Path, ring: float | None = None) -> SphereMesh:
-    """Read a sphere mesh with meshio (``triangle`` or ``triangle6`` cells) onto the unit sphere.
-
-    A thin wrapper of :func:`twoball.fem_membrane.mesh_input.load_sphere_mesh`:
-    the surface is checked (closed, one piece, spherical, consistently oriented),
-    scaled from any radius and centre to the unit sphere with the pole on +z,
-    and its nodes numbered vertices first.  ``ring`` marks a latitude made of
-    mesh edges (see :func:`ring_sphere`).  Points are read by meshio, never
-    through ``skfem.MeshTri.load``, which keeps only x and y.
-    """
-    from twoball.fem_membrane.mesh_input import load_sphere_mesh
-
-    return replace(load_sphere_mesh(path).mesh, ring=ring)
-
-
 def min_angle(mesh: SphereMesh) -> float:
     """Smallest interior angle of the flat triangles [rad] (a shape-regularity measure)."""
     p = mesh.points[mesh.triangles]

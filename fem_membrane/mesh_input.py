@@ -386,3 +386,17 @@ def describe(result: MeshInput, name: str) -> str:
         ignored = ", ".join(f"{n} {t}" for t, n in sorted(result.ignored_cells.items()))
         parts.append(f"ignored cells: {ignored}")
     return "; ".join(parts)
+
+
+def read_mesh(path: str | Path, ring: float | None = None) -> SphereMesh:
+    """Read a sphere mesh with meshio (``triangle`` or ``triangle6`` cells) onto the unit sphere.
+
+    A thin wrapper of :func:`load_sphere_mesh`:
+    the surface is checked (closed, one piece, spherical, consistently oriented),
+    scaled from any radius and centre to the unit sphere with the pole on +z,
+    and its nodes numbered vertices first.  ``ring`` marks a latitude made of
+    mesh edges (see :func:`twoball.fem_membrane.mesh.ring_sphere`).  Points are read by meshio,
+    never
+    through ``skfem.MeshTri.load``, which keeps only x and y.
+    """
+    return replace(load_sphere_mesh(path).mesh, ring=ring)

@@ -35,6 +35,9 @@ ORDERS: tuple[int, ...] = (1, 2, 3, 4)
 GEOMETRIES: tuple[str, ...] = ("isoparametric", "exact")
 DEFAULT_GEOMETRY = "isoparametric"
 FILE = "file"  # the kind of a user's mesh (path, meshio.Mesh, scikit-fem MeshTri)
+#: Finite-element representation of F, eq. (3.10): L2 projection or nodal interpolation.
+INITIAL_METHODS: tuple[str, ...] = ("projection", "interpolation")
+DEFAULT_INITIAL = "projection"
 
 
 def _integer(name: str, value: object, low: int, valid: str) -> int:
@@ -45,36 +48,157 @@ def _integer(name: str, value: object, low: int, valid: str) -> int:
 
 @dataclass(frozen=True)
 class MeshOptions:
-    """A validated choice of finite-element mesh (dimensionless, unit sphere).
+    """A finite-element mesh choice (dimensionless, unit sphere), validated when built.
 
-    Attributes
+    Parameters
     ----------
-    kind : {"sphere", "ring", "axisym", "file"}
-        Icosphere, ring sphere (edges along phi = phi_a), the line x = cos(phi),
-        or the user's mesh (``source``).
-    level : int or None
-        Sphere refinement level >= 0 (None on the axisymmetric line and files).
-    elements : int or None
-        Line elements >= 2 of ``axisym`` (None on the spheres).
-    order : {1, 2, 3, 4} or None
-        Element and geometry order (None for a file: the file's own).
-    source : path, meshio.Mesh or scikit-fem mesh, optional
-        The user's mesh (kind ``file``).
-    pole : (float, float, float) or "X,Y,Z", optional
-        Pole direction in the frame of ``source`` (default +z).
+    kind : {"sphere", "ring", "axisym", "file"}, optional
+        Icosphere (default), sphere with a ring of edges along phi = phi_a, the
+        axisymmetric line x = cos(phi), or the user's mesh (``file``; implied
+        when ``file`` is given).
+    level : int, optional
+        Sphere refinement level >= 0 (default 3); not on the line or a file.
+    elements : int, optional
+        Elements >= 2 of the line ``axisym`` (default 400); not on a sphere.
+    order : {1, 2, 3, 4}, optional
+        Element and geometry order (default 2; a file: its own).
+    file : path, meshio.Mesh or scikit-fem MeshTri, optional
+        The user's sphere: a file in any format meshio reads (any radius and
+        centre, 3- or 6-node triangles), a ``meshio.Mesh`` or a ``MeshTri``.
+    pole : (x, y, z) or "X,Y,Z", optional
+        Pole direction in the frame of ``file`` (default +z); a file only.
     geometry : {"isoparametric", "exact"}
-        Discrete sphere: the Lagrange interpolant of order ``order`` through the
-        nodes, or the exact sphere (radial projection of the flat triangles;
-        sphere and file meshes only).
+        The order-p interpolant through the nodes (default), or the sphere
+        itself (radial projection of the flat triangles; not on the ring
+        sphere, whose ring edges follow phi_a, nor on the line, exact already).
+    initial : {"projection", "interpolation"}, optional
+        Finite-element representation of the initial displacement, eq. (3.10):
+        Galerkin L2 projection (default) or nodal interpolation.
+
+    Raises
+    ------
+    ParameterError
+        Naming the field and its valid range, or the field that does not apply.
+
+    Examples
+    --------
+    >>> import twoball
+    >>> twoball.MeshOptions("sphere", level=3).label
+    'sphere L3 P2'
+    >>> twoball.MeshOptions("axisym").elements
+    400
+    >>> twoball.MeshOptions(kind="bogus")
+    Traceback (most recent call last):
+    ...
+    twoball.ParameterError: mesh must be one of sphere, ring, axisym or a mesh file, got 'bogus'
     """
 
-    kind: str = "sphere"
-    level: int | None = DEFAULT_LEVEL
+    kind: str | None = None
+    level: int | None = None
     elements: int | None = None
-    order: int | None = DEFAULT_ORDER
-    source: Any = None
+    order: int | None = None
+    file: Any = None
     pole: Any = None
     geometry: str = DEFAULT_GEOMETRY
+    initial: str | None = None
+
+    def __post_init__(self) -> None:
+        order, geometry, level, elements = self.order, self.geometry, self.level, self.elements
+        if order is not None and (
+            isinstance(order, bool) or not isinstance(order, Integral) or order not in ORDERS
+        ):
+            raise ParameterError("order", "1, 2, 3 or 4", order)
+        if geometry not in GEOMETRIES:
+            raise ParameterError("geometry", "one of " + ", ".join(GEOMETRIES), geometry)
+        if self.initial is not None and self.initial not in INITIAL_METHODS:
+            raise ParameterError("initial", "one of " + ", ".join(INITIAL_METHODS), self.initial)
+        kind = self.kind
+        if kind is None:
+            kind = FILE if self.file is not None else "sphere"
+        if kind not in (*MESH_KINDS, FILE):
+            raise ParameterError(
+                "mesh", "one of " + ", ".join(MESH_KINDS) + " or a mesh file", kind
+            )
+        if kind == FILE:
+            if self.file is None:
+                raise ParameterError("file", "a mesh file (path, meshio.Mesh or MeshTri)", None)
+            for name, value in (("level", level), ("elements", elements)):
+                if value is not None:
+                    raise ParameterError(name, "left out with a mesh file (its own size)", value)
+            self._set(kind=FILE, order=None if order is None else int(order))
+            return
+        if self.file is not None:
+            raise ParameterError("file", f"left out with mesh {kind}", self.file)
+        if self.pole is not None:
+            raise ParameterError("pole", "left out unless the mesh is a file", self.pole)
+        if geometry == "exact" and kind != "sphere":
+            why = "its ring edges follow phi_a" if kind == "ring" else "its line is exact"
+            raise ParameterError("geometry", f"isoparametric with mesh {kind} ({why})", geometry)
+        order = DEFAULT_ORDER if order is None else int(order)
+        if kind == "axisym":
+            if level is not None:
+                raise ParameterError(
+                    "level", "left out with mesh axisym (its size is elements)", level
+                )
+            size = DEFAULT_ELEMENTS if elements is None else elements
+            self._set(
+                kind=kind, order=order, elements=_integer("elements", size, 2, "an integer >= 2")
+            )
+            return
+        if elements is not None:
+            raise ParameterError(
+                "elements", f"left out with mesh {kind} (its size is level)", elements
+            )
+        size = DEFAULT_LEVEL if level is None else level
+        self._set(kind=kind, order=order, level=_integer("level", size, 0, "an integer >= 0"))
+
+    def _set(self, **values: Any) -> None:
+        for name, value in values.items():
+            object.__setattr__(self, name, value)
+
+    @classmethod
+    def of(cls, mesh: Any = None, **fields: Any) -> MeshOptions:
+        """``mesh`` as options: a :class:`MeshOptions`, a kind name or the user's mesh.
+
+        ``fields`` (level, elements, order, pole, geometry, initial; None: not
+        given) complete a kind name or a mesh file; with a :class:`MeshOptions`
+        they are refused (it is complete).
+        """
+        given = {k: v for k, v in fields.items() if v is not None}
+        if isinstance(mesh, cls):
+            for name, value in given.items():
+                raise ParameterError(name, "left out with a MeshOptions (set it there)", value)
+            return mesh
+        if _is_source(mesh):
+            return cls(FILE, file=mesh, **given)
+        return cls(mesh, **given)
+
+    def require(self, kinds: tuple[str, ...] = MESH_KINDS, *, files: bool = True) -> MeshOptions:
+        """Refuse a kind the caller cannot use (export and render need a sphere); return self."""
+        if self.kind == FILE and not files:
+            raise ParameterError("mesh", "one of " + ", ".join(kinds) + " here", self.label)
+        if self.kind != FILE and self.kind not in kinds:
+            valid = "one of " + ", ".join(kinds) + (" or a mesh file" if files else "")
+            raise ParameterError("mesh", valid, self.kind)
+        return self
+
+    def as_dict(self) -> dict[str, Any]:
+        """The options for JSON and provenance (a file as its path)."""
+        if self.file is None or isinstance(self.file, (str, os.PathLike)):
+            file = None if self.file is None else os.fspath(self.file)
+        else:
+            file = type(self.file).__name__
+        pole = self.pole if self.pole is None or isinstance(self.pole, str) else list(self.pole)
+        return {
+            "kind": self.kind,
+            "level": self.level,
+            "elements": self.elements,
+            "order": self.order,
+            "file": file,
+            "pole": pole,
+            "geometry": self.geometry,
+            "initial": self.initial,
+        }
 
     @classmethod
     def resolve(
@@ -89,69 +213,10 @@ class MeshOptions:
         kinds: tuple[str, ...] = MESH_KINDS,
         files: bool = True,
     ) -> MeshOptions:
-        """Check the options against each other and fill in the defaults.
-
-        Parameters
-        ----------
-        mesh : str, path, meshio.Mesh or scikit-fem mesh, optional
-            Mesh kind among ``kinds`` (default ``sphere``), or the user's sphere
-            mesh: a file path (str or Path), a ``meshio.Mesh`` or a ``MeshTri``.
-        level : int, optional
-            Sphere refinement level >= 0 (default 3); refused with ``axisym`` and files.
-        elements : int, optional
-            Elements >= 2 of ``axisym`` (default 400); refused on a sphere.
-        order : int, optional
-            1, 2, 3 or 4 (default 2; a file: its own order).
-        pole : (x, y, z) or "X,Y,Z", optional
-            Pole direction of a mesh file (default +z); refused with a kind name.
-        geometry : {"isoparametric", "exact"}, optional
-            Default isoparametric; ``exact`` is refused on the ring sphere (its
-            ring edges follow the latitude phi_a) and the axisymmetric line
-            (straight, exact already).
-        kinds : tuple of str
-            The kinds the caller can use (export and render need a sphere).
-        files : bool
-            Whether the caller takes the user's meshes.
-        """
-        if order is not None and (
-            isinstance(order, bool) or not isinstance(order, Integral) or order not in ORDERS
-        ):
-            raise ParameterError("order", "1, 2, 3 or 4", order)
-        geometry = DEFAULT_GEOMETRY if geometry is None else geometry
-        if geometry not in GEOMETRIES:
-            raise ParameterError("geometry", "one of " + ", ".join(GEOMETRIES), geometry)
-        if _is_source(mesh):
-            if not files:
-                raise ParameterError("mesh", "one of " + ", ".join(kinds) + " here", str(mesh))
-            for name, value in (("level", level), ("elements", elements)):
-                if value is not None:
-                    raise ParameterError(name, "left out with a mesh file (its own size)", value)
-            order = None if order is None else int(order)
-            return cls(FILE, None, None, order, mesh, pole, geometry)
-        kind = "sphere" if mesh is None else mesh
-        if kind not in kinds:
-            valid = "one of " + ", ".join(kinds)
-            raise ParameterError("mesh", valid + (" or a mesh file" if files else ""), mesh)
-        if pole is not None:
-            raise ParameterError("pole", "left out unless the mesh is a file", pole)
-        order = DEFAULT_ORDER if order is None else order
-        if geometry == "exact" and kind != "sphere":
-            why = "its ring edges follow phi_a" if kind == "ring" else "its line is exact"
-            raise ParameterError("geometry", f"isoparametric with mesh {kind} ({why})", geometry)
-        if kind == "axisym":
-            if level is not None:
-                raise ParameterError(
-                    "level", "left out with mesh axisym (its size is elements)", level
-                )
-            size = DEFAULT_ELEMENTS if elements is None else elements
-            return cls(kind, None, _integer("elements", size, 2, "an integer >= 2"), int(order))
-        if elements is not None:
-            raise ParameterError(
-                "elements", f"left out with mesh {kind} (its size is level)", elements
-            )
-        size = DEFAULT_LEVEL if level is None else level
-        level = _integer("level", size, 0, "an integer >= 0")
-        return cls(kind, level, None, int(order), geometry=geometry)
+        """:meth:`of` with the loose fields, then :meth:`require` (``kinds``, ``files``)."""
+        fields = {"level": level, "elements": elements, "order": order, "pole": pole}
+        spec = cls.of(mesh, geometry=geometry, **fields)
+        return spec.require(kinds, files=files)
 
     @property
     def label(self) -> str:
@@ -161,7 +226,7 @@ class MeshOptions:
         """
         exact = " exact" if self.geometry == "exact" else ""
         if self.kind == FILE:
-            name = self.source if isinstance(self.source, (str, os.PathLike)) else "mesh"
+            name = self.file if isinstance(self.file, (str, os.PathLike)) else "mesh"
             order = "" if self.order is None else f" P{self.order}"
             return f"file {Path(name).name}{order}{exact}"
         size = f"L{self.level}" if self.elements is None else f"{self.elements}"
@@ -173,7 +238,7 @@ class MeshOptions:
             return None
         from twoball.fem_membrane.mesh_input import load_sphere_mesh
 
-        return load_sphere_mesh(self.source, pole=self.pole, order=self.order)
+        return load_sphere_mesh(self.file, pole=self.pole, order=self.order)
 
 
 def _is_source(mesh: Any) -> bool:

@@ -34,7 +34,7 @@ from twoball.fem_membrane.checks import (
     check_rho_inf,
     check_t_end,
 )
-from twoball.fem_membrane.damping import RAYLEIGH_LOW, ModalDamping, RayleighDamping
+from twoball.fem_membrane.damping import ModalDamping, rayleigh_matrix, rayleigh_table
 from twoball.fem_membrane.eigen import Eigenpairs, eigenpairs
 from twoball.fem_membrane.initial import initial_moments
 from twoball.fem_membrane.krylov import ROUTES, choose_route, krylov_modal_series
@@ -42,6 +42,7 @@ from twoball.fem_membrane.mesh import SphereMesh
 from twoball.fem_membrane.modal import filtered_displacement, modal_series
 from twoball.fem_membrane.ritz_field import field_times
 from twoball.fem_membrane.space import Discretisation
+from twoball.modal.damping import RAYLEIGH_LOW, Rayleigh
 from twoball.modal.filters import FilterKind, SpectralFilter
 from twoball.modal.initial import _check_phi_a
 from twoball.modal.liftoff import DEFAULT_T_END, PoleMotion, SampledPoleMotion
@@ -154,12 +155,15 @@ def modal_model(
     return ModalModel(space, pairs, moments, series, seconds, krylov, stiffness)
 
 
-def rayleigh_damping(
-    model: ModalModel, frequencies: tuple[float, float] | None = None
-) -> RayleighDamping:
-    """Rayleigh damping fitted to D at ``frequencies`` (default sqrt(2) and omega_N)."""
-    low, high = (RAYLEIGH_LOW, model.filter.omega_n) if frequencies is None else frequencies
-    return RayleighDamping.fit(model.series.damping, low, high)
+def rayleigh_damping(model: ModalModel, law: Rayleigh | None = None) -> tuple[Rayleigh, Any]:
+    """The Rayleigh law ``law``, or one fitted to D at sqrt(2) and omega_N; and the frequencies.
+
+    Returns the law and its fitting frequencies ``(low, high)`` (None for a given law).
+    """
+    if law is not None and not law.fitted:
+        return law, None
+    low, high = RAYLEIGH_LOW, model.filter.omega_n
+    return Rayleigh.fit(model.series.damping, low, high), (low, high)
 
 
 def alpha_motion(
@@ -169,7 +173,7 @@ def alpha_motion(
     dt: float | None = None,
     rho_inf: float = 1.0,
     t_end: float = DEFAULT_T_END,
-    rayleigh_frequencies: tuple[float, float] | None = None,
+    rayleigh: Rayleigh | None = None,
 ) -> tuple[SampledPoleMotion, dict[str, Any]]:
     """Generalized-alpha stepping from the filtered initial displacement.
 
@@ -196,15 +200,15 @@ def alpha_motion(
     elif model.stiffness is not None:
         raise ParameterError("damping_model", "modal with bending or gas", damping_model)
     else:
-        rayleigh = rayleigh_damping(model, rayleigh_frequencies)
-        damping = rayleigh.matrix(space.mass, space.stiffness)
+        law, fitted = rayleigh_damping(model, rayleigh)
+        damping = rayleigh_matrix(law, space.mass, space.stiffness)
         retained = series.omega[series.retained]
         info["rayleigh"] = {
-            "alpha": rayleigh.alpha,
-            "beta": rayleigh.beta,
-            "omega_low": rayleigh.omega_low,
-            "omega_high": rayleigh.omega_high,
-            "table": rayleigh.table(retained),
+            "alpha": law.alpha,
+            "beta": law.beta,
+            "omega_low": None if fitted is None else fitted[0],
+            "omega_high": None if fitted is None else fitted[1],
+            "table": rayleigh_table(law, retained, series.damping),
         }
     start = clock.perf_counter()
     if model.stiffness is not None:
@@ -240,7 +244,7 @@ def fem_pole_motion(
     rho_inf: float = 1.0,
     t_end: float = DEFAULT_T_END,
     initial: str = "projection",
-    rayleigh_frequencies: tuple[float, float] | None = None,
+    rayleigh: Rayleigh | None = None,
     route: str = "auto",
     geometry: str = "isoparametric",
     stiffness: Stiffness | None = None,
@@ -283,7 +287,7 @@ def fem_pole_motion(
         always uses the full eigenpairs.
     damping_model : {"modal", "rayleigh"}
         ``alpha`` only: ratio D on every computed mode (low rank), or Rayleigh
-        ``C = a M + b K`` fitted at ``rayleigh_frequencies`` (default sqrt(2)
+        ``C = a M + b K`` of ``rayleigh`` (default: fitted at sqrt(2)
         and omega_N) (``--damping-model``).
     dt : float, optional
         Time step > 0 (``--dt``); default ``omega_cut dt <= 0.2``.
@@ -294,8 +298,9 @@ def fem_pole_motion(
         End of the stepped window (``--t-end``), default 4 pi.
     initial : {"projection", "interpolation"}
         Galerkin L2 projection of F, or nodal interpolation (``--initial``).
-    rayleigh_frequencies : (float, float), optional
-        The two frequencies where the Rayleigh ratio equals D.
+    rayleigh : Rayleigh, optional
+        The law of ``damping_model="rayleigh"``; None or fitted: fitted to D at
+        sqrt(2) and omega_N.
     stiffness : Stiffness, optional
         Bending and gas (:mod:`twoball.fem_membrane.shell`); None: the membrane.
 
@@ -370,7 +375,7 @@ def fem_pole_motion(
         dt=dt,
         rho_inf=rho_inf,
         t_end=t_end,
-        rayleigh_frequencies=rayleigh_frequencies,
+        rayleigh=rayleigh,
     )
     info["seconds"]["stepping"] = extra.pop("seconds_stepping")
     info.update(extra)

@@ -154,7 +154,8 @@ def truncation_warnings(block: Truncation, backend: str = "legendre") -> list[st
             f"{block.modes} truncation and discretisation (mesh, time step) together"
         ]
     return [
-        f"N = {block.modes} truncation: t_l {t_text}, v_l {v_text} from {converged}; raise --modes"
+        f"N = {block.modes} truncation: t_l {t_text}, v_l {v_text} from {converged}; "
+        "raise the number of modes N"
     ]
 
 
@@ -172,14 +173,14 @@ def window_warnings(case: Case, result: LiftoffResult) -> list[str]:
         warnings.append(
             f"window too short for the re-contact check: it ends {after * 1e3:.3g} ms after "
             f"lift-off, before the wave returns to the pole (2 pi / c = {refocus * 1e3:.3g} ms); "
-            f"lengthen --t-end (now {t_end_ms:.4g} ms) to at least "
+            f"lengthen the window t_end (now {t_end_ms:.4g} ms) to at least "
             f"{(result.t * scale.time + refocus) * 1e3:.4g} ms"
         )
     if after > apex:
         warnings.append(
             f"the body is falling back at the end of the window (apex v_l / g = "
             f"{apex * 1e3:.3g} ms after lift-off, window {after * 1e3:.3g} ms): its "
-            "re-contact lies beyond --t-end and was not checked"
+            "re-contact lies beyond the window t_end and was not checked"
         )
     return warnings
 

@@ -63,7 +63,7 @@ _check_phi_a = check_phi_a  # the name the finite-element modules import
 
 def _scale(radius: float, wave_speed: float) -> tuple[float, float]:
     """R and c checked (as :class:`~twoball.modal.parameters.Case` does)."""
-    from twoball.modal.parameters import check_radius, check_wave_speed
+    from twoball.modal.scalings import check_radius, check_wave_speed
 
     return check_radius(radius), check_wave_speed(wave_speed)
 
@@ -115,7 +115,7 @@ def phi_a_from_v0(v0: float, radius: float, wave_speed: float, gas: float = 0.0)
     ``gas`` (``omega_0^2`` of :mod:`twoball.modal.stiffness`, default 0) adds the
     energy of the compressed gas to the balance (3.6) (:func:`gas_energy_shape`).
     """
-    from twoball.modal.parameters import check_v0
+    from twoball.modal.scalings import check_v0
 
     speed = check_v0(v0)
     radius, wave_speed = _scale(radius, wave_speed)

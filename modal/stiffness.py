@@ -135,8 +135,8 @@ def stiffness_from_si(
     if pressure is None:
         raise ParameterError(
             "pressure",
-            "given with bending or gas: it sets the tension T = P R / 2 (command line: "
-            "--pressure with --mass, or a preset that has one: tennis, volleyball)",
+            "given with bending or gas: it sets the tension T = P R / 2 (Case.from_pressure, "
+            "or a preset that has one: tennis, volleyball)",
             None,
         )
     if not (math.isfinite(pressure) and pressure > 0):

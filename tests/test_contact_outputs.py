@@ -18,7 +18,7 @@ import numpy as np
 import pytest
 from twoball.modal.contact.trajectory import sample
 from twoball.modal.parameters import preset
-from twoball.verify.output.contact_fields import (
+from twoball.verify.output.fields import (
     contact_options,
     contact_scene,
     coupled_model,

@@ -10,12 +10,12 @@ import meshio
 import numpy as np
 import pytest
 import pyvista as pv
-from twoball.verify.output import series as export
 from twoball.fem_membrane.initial import initial_load
 from twoball.fem_membrane.space import sphere_space
 from twoball.modal.filters import SpectralFilter
 from twoball.modal.legendre import displacement, legendre_series
 from twoball.modal.parameters import preset
+from twoball.verify.output import series as export
 from twoball.verify.output.fields import ball_model, field_series, frame_times
 from twoball.verify.output.series import TimeSeries, read_series, write_series
 

@@ -16,8 +16,7 @@ import pytest
 from twoball.modal.filters import SpectralFilter
 from twoball.modal.legendre import displacement, legendre_series
 from twoball.modal.parameters import preset
-from twoball.verify.output.contact_fields import contact_options, coupled_model
-from twoball.verify.output.fields import ball_model
+from twoball.verify.output.fields import ball_model, contact_options, coupled_model
 from twoball.verify.output.figures.contact_pole import contact_pole_figure
 from twoball.verify.output.figures.eigen import (
     EigenErrors,

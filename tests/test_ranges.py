@@ -4,8 +4,8 @@ import numpy as np
 import pytest
 
 from twoball._common.errors import ParameterError
-from twoball._common.ranges import join_negative_values, parse_values
-from twoball.cli.main import main
+from twoball._common.ranges import parse_values
+from twoball.cli.main import join_negative_values, main
 
 
 @pytest.mark.parametrize(

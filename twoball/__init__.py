@@ -35,12 +35,19 @@ if not _os.path.isdir(_os.path.join(_HERE, "modal")):
 
 from twoball import verify  # noqa: E402 -- a light package; made callable below
 
-_NAMES: dict[str, str] = {
+_NAMES: dict[str, str | tuple[str, str]] = {
     "Case": "twoball.modal.parameters",
     "LiftoffReport": "twoball.modal.report",
     "ParameterError": "twoball._common.errors",
     "NumericalError": "twoball._common.errors",
     "MeshOptions": "twoball.fem_membrane.options",
+    "Stepping": "twoball.modal.stepping",
+    "Body": "twoball.modal.contact.body",
+    "ModalRatio": "twoball.modal.damping",
+    "Rayleigh": "twoball.modal.damping",
+    "RenderOptions": "twoball.verify.output.options",
+    "PlotOptions": "twoball.verify.output.options",
+    "ContactReport": "twoball.modal.contact.report",
     "liftoff": "twoball._liftoff",
     "sweep": "twoball._sweep",
     "SweepResult": "twoball._sweep",
@@ -51,6 +58,11 @@ _NAMES: dict[str, str] = {
     "ExportResult": "twoball._files",
     "RenderResult": "twoball._files",
     "PlotResult": "twoball._files",
+    "icm": ("twoball.modal.icm.model", "icm"),
+    "ICMResult": "twoball.modal.icm.model",
+    "table1": ("twoball.modal.icm.table1", "table1_check"),
+    "reproduce": "twoball._reproduce",
+    "Reproduction": "twoball._reproduce",
     "report": "twoball._common.provenance",
     "Report": "twoball._common.provenance",
     "Reporter": "twoball._common.progress",

@@ -1,8 +1,9 @@
 """``twoball.export``, ``twoball.render`` and ``twoball.plot``: the fields on the sphere as files.
 
-Each solves the case with the requested backend(s) on a sphere mesh (the one
-definition of mesh options, :class:`twoball.fem_membrane.options.MeshOptions`), writes
-to ``out`` and returns a small result object with ``as_dict()``.
+Each solves the case with the requested backend(s) on a sphere mesh
+(:class:`~twoball.MeshOptions`) through the one builder of the solved ball,
+:func:`twoball.verify.output.fields.ball_model`, writes to ``out`` and returns
+a small result object with ``as_dict()``.
 """
 
 from __future__ import annotations
@@ -14,23 +15,13 @@ from dataclasses import dataclass, field, replace
 from pathlib import Path
 from typing import Any
 
+from twoball._bundles import bundles
 from twoball._common.errors import ParameterError
 from twoball._common.progress import Step, silent
 from twoball._common.provenance import block
 from twoball._common.staging import check_path_type
 from twoball.modal.parameters import Case
 from twoball.modal.report import LiftoffReport
-from twoball.verify.output.fields import (
-    FIELD_BACKENDS,
-    FieldMesh,
-    check_backend,
-    check_fps,
-    check_frame_budget,
-    check_initial,
-    eigen_sizes,
-    field_mesh,
-    field_warnings,
-)
 
 __all__ = ["ExportResult", "PlotResult", "RenderResult", "export", "plot", "render"]
 
@@ -38,29 +29,66 @@ DEFAULT_ANIMATION_FRAMES = 60
 DEFAULT_FPS = 20.0
 
 
+def _case(case: Case | None) -> Case:
+    case = Case.preset("basketball") if case is None else case
+    if not isinstance(case, Case):
+        raise ParameterError("case", "a twoball.Case", type(case).__name__)
+    return case
+
+
+def _field_bundles(verb: str, mesh: Any, stepping: Any, body: Any, old: dict[str, Any]) -> Any:
+    """The bundles of a field verb: mesh, stepping (window and route only) and body."""
+    times = old.pop("times", None)
+    given = bundles(verb, mesh=mesh, stepping=stepping, body=body, old=old,
+                    takes=("mesh", "stepping", "body"))  # fmt: skip
+    if given.stepping is not None:
+        given.stepping.refuse("with field outputs (modal superposition)", "scheme", "dt")
+    return given, times
+
+
+def _window(given: Any) -> tuple[float | None, str]:
+    stepping = given.stepping
+    if stepping is None:
+        return None, "auto"
+    return stepping.t_end, stepping.route or "auto"
+
+
+def _frames(frames: Any, legacy_times: Any) -> tuple[int | None, Sequence[float] | None]:
+    """``frames`` as a count or as times [s] (the old ``times`` keyword folded in)."""
+    if legacy_times is not None:
+        import warnings
+
+        warnings.warn(
+            "the keyword times is deprecated; pass the frame times as frames=[...]",
+            DeprecationWarning,
+            stacklevel=3,
+        )
+        if frames is not None:
+            raise ParameterError("frames", "left out when times are given", frames)
+        frames = legacy_times
+    if frames is None:
+        return None, None
+    if isinstance(frames, (str, bytes)):
+        raise ParameterError("frames", "a frame count or a list of times [s]", frames)
+    if isinstance(frames, Sequence) or hasattr(frames, "__array__"):
+        return None, frames
+    return frames, None
+
+
 def export(
     out: str | os.PathLike[str],
     case: Case | None = None,
     *,
     backend: str = "fem",
-    format: str | None = None,
-    frames: int | None = None,
-    times: Sequence[float] | None = None,
     mesh: Any = None,
-    level: int | None = None,
-    order: int | None = None,
-    pole: Sequence[float] | str | None = None,
-    geometry: str | None = None,
-    initial: str | None = None,
+    stepping: Any = None,
+    body: Any = None,
+    frames: int | Sequence[float] | None = None,
+    format: str | None = None,
     sigma: str = "lanczos",
     recontact: str = "window",
-    t_end: float | None = None,
     progress: Step | None = None,
-    route: str = "auto",
-    mass_ratio: float | None = None,
-    contact_radius: float | None = None,
-    restitution: float | None = None,
-    energy: str | None = None,
+    **deprecated: Any,
 ) -> ExportResult:
     """Write u, u_t, u_tt (SI) of both backends on the sphere mesh over time.
 
@@ -72,99 +100,94 @@ def export(
         The impact (default the basketball preset).
     backend : {"fem", "legendre"}
         Which solver's u, u_t, u_tt and lift-off are the main fields.
+    mesh : MeshOptions, {"sphere", "ring"} or the user's mesh, optional
+        The sphere (default the level-3 P2 icosphere; orders 1 and 2), or the
+        user's sphere: a file any format meshio reads, of any radius, centre
+        and length unit, 3- or 6-node triangles, checked as by
+        :func:`twoball.liftoff` (a broken or non-spherical mesh raises
+        :class:`~twoball.ParameterError` naming ``mesh``).  The fields are in SI
+        in the case's frame: nodes at R times the unit sphere, the pole on +z;
+        the file's radius, centre, pole and path are in the file's metadata
+        (field data ``mesh_file_*``, text ``mesh_file``) and provenance.
+    stepping : Stepping, optional
+        The window ``t_end`` [s] (default 4 pi / c) and the finite elements'
+        eigen ``route``: every pair below the cutoff (``full``), the Ritz pairs
+        of the rational Krylov route converged on the whole field (``krylov``),
+        or Krylov from 2000 unknowns on (``auto``, default).
+    body : Body, optional
+        An upper body of finite mass (docs/contact.rst): the fields are the
+        membrane coupled to it (full eigen route), each frame gets field data
+        ``s_m`` [m], ``s_t_m_s`` [m/s] and ``contact`` (1/0), and the text
+        ``contact_events`` lists every event (JSON, SI).
+    frames : int or sequence of float, optional
+        A count of frames evenly spaced over [0, t_end] (default 25, plus the
+        lift-off), or the frame times [s].
     format : {"xdmf", "pvd", "vtu"}, optional
         Default from the suffix of ``out``.
-    frames : int, optional
-        Frames evenly spaced over [0, t_end] (default 25, plus the lift-off).
-    times : sequence of float, optional
-        Frame times [s] instead of ``frames``.
-    mesh : {"sphere", "ring"}, path, meshio.Mesh or scikit-fem mesh, optional
-        Sphere mesh kind (default ``sphere``), or the user's sphere: a file any
-        format meshio reads, of any radius, centre and length unit, 3- or
-        6-node triangles, checked as by :func:`twoball.liftoff` (a broken or
-        non-spherical mesh raises :class:`ParameterError` naming ``mesh``).
-        The fields are in SI in the case's frame: nodes at R times the unit
-        sphere, the pole on +z; the file's radius, centre, pole and path are in
-        the file's metadata (field data ``mesh_file_*``, text ``mesh_file``)
-        and provenance (``mesh_file``).
-    level, order
-        Level of a generated sphere (default 3; not with a file) and element
-        order 1 or 2 (default 2; a file: its own, a 6-node file is order 2).
-    pole : (x, y, z) or "X,Y,Z", optional
-        Pole direction in the file's frame (default +z); a mesh file only.
-    geometry : {"isoparametric", "exact"}, optional
-        Discrete sphere of the finite elements (default isoparametric); ``exact``
-        on the icosphere and files only.
-    initial : {"projection", "interpolation"}, optional
-        FE representation of the initial displacement, eq. (3.10) (default projection).
-    sigma, recontact, t_end
+    sigma, recontact
         As in :func:`twoball.liftoff`.
     progress : callable, optional
-        Called with a short text as each stage starts (:class:`twoball._common.progress.Reporter`).
-    route : {"auto", "full", "krylov"}
-        FE mode shapes: every eigenpair below the cutoff (``full``), the Ritz pairs
-        of the rational Krylov route converged on the whole field (``krylov``), or
-        Krylov from 2000 unknowns on (``auto``, default; sphere P2 level 3 has 2562).
-    mass_ratio, contact_radius, restitution, energy : optional
-        An upper body of finite mass (docs/contact.rst; ``mass_ratio`` in (0, 100],
-        ``contact_radius`` [m]): the fields are the membrane coupled to it (full
-        eigen route), each frame gets field data ``s_m`` [m], ``s_t_m_s`` [m/s] and
-        ``contact`` (1/0), and the text ``contact_events`` lists every event (JSON, SI).
+        Called with a short text as each stage starts (:class:`~twoball.Reporter`).
+    **deprecated
+        The keywords of version 0.2, with a :class:`DeprecationWarning`.
 
-    Every file carries the case and :mod:`twoball._common.provenance` (VTU string field
-    data ``provenance`` and ``case``, XDMF grid attributes); field names end in
-    their unit (``u_m``, ``u_t_m_s``, ``u_tt_m_s2``, ...).
+    Every file carries the case and the provenance; field names end in their
+    unit (``u_m``, ``u_t_m_s``, ``u_tt_m_s2``, ...).
+
+    Examples
+    --------
+    >>> import tempfile, pathlib, twoball
+    >>> folder = pathlib.Path(tempfile.mkdtemp())
+    >>> mesh = twoball.MeshOptions("sphere", level=1)
+    >>> result = twoball.export(folder / "ball.xdmf", mesh=mesh, frames=3)
+    >>> [f.name for f in result.files], result.point_data[:3]
+    (['ball.xdmf', 'ball.h5'], ['u_m', 'u_t_m_s', 'u_tt_m_s2'])
     """
-    arguments = dict(locals())  # the call, for the provenance
-    check_path_type(out)
     from twoball._common.staging import check_file
-    from twoball.verify.output.contact_fields import contact_options, contact_series, model_of
     from twoball.verify.output.fields import (
+        BACKENDS,
         DEFAULT_FRAMES,
+        ball_model,
+        check_backend,
+        check_frame_budget,
         check_frames,
         check_times,
+        contact_series,
+        field_mesh,
         field_series,
+        field_warnings,
         frame_times,
         liftoff_frame,
         window_s,
     )
     from twoball.verify.output.series import series_format, write_series
 
-    case = Case.preset("basketball") if case is None else case
+    check_path_type(out)
+    given, legacy_times = _field_bundles("twoball.export", mesh, stepping, body, deprecated)
+    case = _case(case)
     fmt = series_format(out, format)
     target = check_file(out)
     check_backend(backend)
-    field = field_mesh(mesh, level, order, pole, geometry, cells=True, load=False)
-    contact = contact_options(
-        case, mass_ratio, contact_radius, restitution, energy, recontact=recontact, route=route
-    )
-    if frames is not None and times is not None:
-        raise ParameterError("frames", "left out when times are given", frames)
+    t_end, route = _window(given)
+    field = field_mesh(given.mesh, cells=True, load=False)
+    frames, times = _frames(frames, legacy_times)
     if times is not None:
-        times = check_times(window_s(case, t_end), times)
+        times = check_times(window_s(case, t_end), times, "frames")
     frames = None if frames is None else check_frames(frames)
     if fmt == "vtu" and frames is not None and frames != 1:
         raise ParameterError("frames", "1 for a single .vtu file (or give one time)", frames)
     if fmt == "vtu" and times is not None and len(times) != 1:
-        raise ParameterError("times", "exactly one time for a single .vtu file", list(times))
-    field = field_mesh(mesh, level, order, pole, geometry, cells=True)  # reads a file
+        raise ParameterError("frames", "exactly one time for a single .vtu file", list(times))
+    field = field_mesh(given.mesh, cells=True)  # reads a file
     if times is not None:
-        check_frame_budget(case, len(times), "times", field)
+        check_frame_budget(case, len(times), "frames", field)
     else:
         check_frame_budget(case, frames or DEFAULT_FRAMES, "frames", field)
     say = progress or silent
-    model = model_of(
-        case,
-        FIELD_BACKENDS,
-        contact,
-        field,
-        initial=initial,
-        sigma=sigma,
-        recontact=recontact,
-        t_end=t_end,
-        progress=progress,
-        route=route,
-    )
+    model = ball_model(
+        case, field, backends=BACKENDS, body=given.body, sigma=sigma, recontact=recontact,
+        t_end_s=t_end, route=route, progress=say,
+    )  # fmt: skip
     if fmt == "vtu" and times is None and frames is None:
         selected = liftoff_frame(model, backend)
     elif fmt == "vtu" and frames == 1:
@@ -173,7 +196,9 @@ def export(
         selected = frame_times(model, frames, times, backend)
     say(f"fields at {len(selected)} frames")
     series = field_series(model, selected, backend)
-    series = series if contact is None else contact_series(series, model, backend)
+    series = series if given.body is None else contact_series(series, model, backend)
+    arguments = {"out": out, "backend": backend, "frames": _shown(frames, times), "format": fmt}
+    arguments |= {"sigma": sigma, "recontact": recontact, **given.as_dict()}
     provenance = block(case, "twoball.export", arguments) | mesh_block(field)
     series = replace(series, text={**series.text, "provenance": json.dumps(provenance)})
     say(f"writing {target}")
@@ -192,136 +217,160 @@ def export(
     )
 
 
+def _shown(frames: int | None, times: Any) -> Any:
+    return frames if times is None else [float(t) for t in times]
+
+
 def render(
     out: str | os.PathLike[str],
     case: Case | None = None,
     *,
     backend: str = "fem",
-    time: float | None = None,
-    frames: int | None = None,
-    warp: float | None = None,
-    size: tuple[int, int] | str | None = None,
-    fps: float | None = None,
     mesh: Any = None,
-    level: int | None = None,
-    order: int | None = None,
-    pole: Sequence[float] | str | None = None,
-    geometry: str | None = None,
-    initial: str | None = None,
+    stepping: Any = None,
+    body: Any = None,
+    frames: int | Sequence[float] | None = None,
+    view: Any = None,
     sigma: str = "lanczos",
     recontact: str = "window",
-    t_end: float | None = None,
     progress: Step | None = None,
-    route: str = "auto",
-    mass_ratio: float | None = None,
-    contact_radius: float | None = None,
-    restitution: float | None = None,
-    energy: str | None = None,
+    **deprecated: Any,
 ) -> RenderResult:
     """Off-screen picture (``.png``) or animation (``.gif``, ``.mp4``) of the bouncing ball.
 
     Parameters
     ----------
     out : path
-        ``FILE.png`` (one instant: ``time`` [s], default the lift-off), ``.gif`` or ``.mp4``.
+        ``FILE.png`` (one instant, default the lift-off), ``.gif`` or ``.mp4``.
     case : Case, optional
         The impact (default the basketball preset).
     backend : {"fem", "legendre"}
         Which solver's displacement is drawn.
-    time : float, optional
-        Instant [s] of a PNG.
-    frames : int, optional
-        Frames of an animation over [0, t_end] (default 60).
-    warp : float, optional
-        Displacement magnification (default automatic: largest displacement at 15 % of R).
-    size : (int, int) or "WxH", optional
-        Image size in pixels (MP4: rounded up to multiples of 16).
-    fps : float, optional
-        Frames per second of an animation, in [0.001, 1000] (default 20); not with ``.png``.
-    mesh, level, order, pole, geometry, initial, sigma, recontact, t_end, progress, route
-        As in :func:`export` (``initial`` needs ``backend="fem"``).
-    mass_ratio, contact_radius, restitution, energy : optional
-        An upper body of finite mass: drawn at its height s(t) over the coupled
-        membrane, the caption saying when it is in contact (as in :func:`export`).
+    mesh, stepping, body
+        As in :func:`export` (``mesh.initial`` needs ``backend="fem"``); with a
+        body it is drawn at its height s(t) over the coupled membrane, the
+        caption saying when it is in contact.
+    frames : int or sequence of float, optional
+        A PNG: one time [s] in a sequence (default the lift-off).  An
+        animation: a count of frames over [0, t_end] (default 60), or the
+        frame times [s].
+    view : RenderOptions, optional
+        Warp, image size and frames per second (:class:`~twoball.RenderOptions`).
+    sigma, recontact, progress
+        As in :func:`export`.
+    **deprecated
+        The keywords of version 0.2 (``time``, ``warp``, ``size``, ``fps``,
+        ``level``, ...), with a :class:`DeprecationWarning`.
+
+    Examples
+    --------
+    >>> import tempfile, pathlib, twoball
+    >>> out = pathlib.Path(tempfile.mkdtemp()) / "ball.png"
+    >>> mesh = twoball.MeshOptions("sphere", level=1)
+    >>> result = twoball.render(out, mesh=mesh, view=twoball.RenderOptions(size="320x240"))
+    >>> result.file.name, result.size
+    ('ball.png', (320, 240))
     """
-    arguments = dict(locals())  # the call, for the provenance
-    check_path_type(out)
     import numpy as np
 
     from twoball._common.staging import check_file
-    from twoball.verify.output.contact_fields import contact_options, contact_scene, model_of
-    from twoball.verify.output.fields import ball_scene, check_frames, check_times, liftoff_frame
-    from twoball.verify.output.fields import window_s as window
-    from twoball.verify.output.render import (
-        DEFAULT_SIZE,
-        check_size,
-        check_warp,
-        image_kind,
-        render_scene,
-        round_size,
+    from twoball.verify.output.fields import (
+        ball_model,
+        ball_scene,
+        check_backend,
+        check_frame_budget,
+        check_frames,
+        check_times,
+        contact_scene,
+        field_mesh,
+        field_warnings,
+        liftoff_frame,
+        window_s,
     )
+    from twoball.verify.output.options import RenderOptions
+    from twoball.verify.output.render import DEFAULT_SIZE, image_kind, render_scene, round_size
 
-    case = Case.preset("basketball") if case is None else case
-    kind = image_kind(out)
-    target = check_file(out)
-    size = check_size(DEFAULT_SIZE if size is None else size)
-    warp = check_warp(warp)
-    check_backend(backend)
-    if kind == ".png" and fps is not None:
-        raise ParameterError("fps", "used with .gif or .mp4 only", fps)
-    fps = DEFAULT_FPS if fps is None else check_fps(fps)
-    check_initial(initial, (backend,))
-    if kind == ".png" and frames is not None:
-        raise ParameterError("frames", "used with .gif or .mp4 only (use time for .png)", frames)
-    if kind != ".png" and time is not None:
-        raise ParameterError("time", "used with .png only (use frames for animations)", time)
-    frames = None if frames is None else check_frames(frames)
-    field = field_mesh(mesh, level, order, pole, geometry, cells=True, load=False)
-    contact = contact_options(
-        case, mass_ratio, contact_radius, restitution, energy, recontact=recontact, route=route
-    )
-    times = None
+    check_path_type(out)
+    time = deprecated.pop("time", None)
+    legacy_view = {k: deprecated.pop(k) for k in ("warp", "size", "fps") if k in deprecated}
+    given, legacy_times = _field_bundles("twoball.render", mesh, stepping, body, deprecated)
+    if time is not None or any(v is not None for v in legacy_view.values()):
+        import warnings
+
+        warnings.warn(
+            "twoball.render: time, warp, size and fps are deprecated; pass frames=[time] "
+            "and view=RenderOptions(...)",
+            DeprecationWarning,
+            stacklevel=2,
+        )
     if time is not None:
+        if frames is not None or legacy_times is not None:
+            raise ParameterError("time", "left out with frames", time)
         from twoball._common.errors import real_number
 
-        valid = "a time >= 0 in seconds within the modelled window"
-        times = check_times(window(case, t_end), [real_number("time", time, valid)], "time")
-    field = field_mesh(mesh, level, order, pole, geometry, cells=True)  # reads a file
+        frames = [real_number("time", time, "a time >= 0 in seconds within the modelled window")]
+    if any(v is not None for v in legacy_view.values()):
+        if view is not None:
+            raise ParameterError("view", "left out with warp, size or fps", view)
+        view = RenderOptions(**legacy_view)
+    view = RenderOptions() if view is None else view
+    if not isinstance(view, RenderOptions):
+        raise ParameterError("view", "a twoball.RenderOptions", type(view).__name__)
+    case = _case(case)
+    kind = image_kind(out)
+    target = check_file(out)
+    size = DEFAULT_SIZE if view.size is None else view.size
+    check_backend(backend)
+    if kind == ".png" and view.fps is not None:
+        raise ParameterError("fps", "used with .gif or .mp4 only", view.fps)
+    fps = DEFAULT_FPS if view.fps is None else view.fps
+    t_end, route = _window(given)
+    if given.mesh is not None and given.mesh.initial is not None and backend != "fem":
+        raise ParameterError(
+            "initial", "left out without the fem backend (it sets the FE initial state)",
+            given.mesh.initial,
+        )  # fmt: skip
+    count, times = _frames(frames, legacy_times)
+    if kind == ".png" and count is not None:
+        raise ParameterError(
+            "frames", "one time [s] in a list with .png (a count: .gif or .mp4)", count
+        )
+    if kind == ".png" and times is not None and len(times) != 1:
+        raise ParameterError("frames", "exactly one time [s] with .png", list(times))
+    count = None if count is None else check_frames(count)
+    field = field_mesh(given.mesh, cells=True, load=False)
+    if times is not None:
+        times = check_times(window_s(case, t_end), times, "frames")
+    field = field_mesh(given.mesh, cells=True)  # reads a file
     if kind != ".png":
-        count = DEFAULT_ANIMATION_FRAMES if frames is None else frames
-        check_frame_budget(case, count, "frames", field)
+        number = len(times) if times is not None else count or DEFAULT_ANIMATION_FRAMES
+        check_frame_budget(case, number, "frames", field)
     say = progress or silent
-    model = model_of(
-        case,
-        (backend,),
-        contact,
-        field,
-        initial=initial,
-        sigma=sigma,
-        recontact=recontact,
-        t_end=t_end,
-        progress=progress,
-        route=route,
-    )
+    model = ball_model(
+        case, field, backends=(backend,), body=given.body, sigma=sigma, recontact=recontact,
+        t_end_s=t_end, route=route, progress=say,
+    )  # fmt: skip
     if kind == ".png":
         times = liftoff_frame(model, backend) if times is None else times
-    else:
-        count = DEFAULT_ANIMATION_FRAMES if frames is None else frames
-        times = np.linspace(0.0, model.t_end_s, count)
-    scene = (ball_scene if contact is None else contact_scene)(model, times, backend)
+    elif times is None:
+        times = np.linspace(0.0, model.t_end_s, count or DEFAULT_ANIMATION_FRAMES)
+    scene = (ball_scene if given.body is None else contact_scene)(model, times, backend)
     say(f"drawing {len(times)} frame(s) into {target}")
     drawn = None if len(times) < 2 else lambda k: say(f"frame {k}/{len(times)} into {target}")
-    render_scene(target, scene, warp=warp, size=size, fps=fps, progress=drawn)
+    render_scene(target, scene, warp=view.warp, size=size, fps=fps, progress=drawn)
     shown = round_size(size) if kind == ".mp4" else size
+    arguments = {"out": out, "backend": backend, "frames": _shown(count, times)}
+    arguments |= {"view": view.as_dict(), "sigma": sigma, "recontact": recontact}
     return RenderResult(
         file=target,
         times_s=[float(t) for t in times],
         size=tuple(shown),
-        warp=float(scene.auto_warp() if warp is None else warp),
+        warp=float(scene.auto_warp() if view.warp is None else view.warp),
         backend=backend,
         report=model.backend(backend).report,
         warnings=field_warnings(model, backend, field),
-        provenance=block(case, "twoball.render", arguments) | mesh_block(field),
+        provenance=block(case, "twoball.render", {**arguments, **given.as_dict()})
+        | mesh_block(field),
     )
 
 
@@ -331,26 +380,14 @@ def plot(
     case: Case | None = None,
     *,
     backends: Sequence[str] | None = None,
-    instants: int | None = None,
-    levels: Sequence[int] | None = None,
-    orders: Sequence[int] | None = None,
-    max_degree: int | None = None,
     mesh: Any = None,
-    level: int | None = None,
-    order: int | None = None,
-    pole: Sequence[float] | str | None = None,
-    geometry: str | None = None,
-    initial: str | None = None,
+    stepping: Any = None,
+    body: Any = None,
+    figure: Any = None,
     sigma: str | None = None,
     recontact: str | None = None,
-    t_end: float | None = None,
     progress: Step | None = None,
-    route: str = "auto",
-    dpi: float | None = None,
-    mass_ratio: float | None = None,
-    contact_radius: float | None = None,
-    restitution: float | None = None,
-    energy: str | None = None,
+    **deprecated: Any,
 ) -> PlotResult:
     """Figures: ``waterfall`` of u(phi) (Fig. 6), ``pole`` motion, FE ``eigen`` errors.
 
@@ -365,119 +402,134 @@ def plot(
         The impact (default the basketball preset); refused by ``eigen``.
     backends : sequence of {"fem", "legendre"}, optional
         Solvers drawn by ``waterfall`` and ``pole`` (default both).
-    instants : int, optional
-        Curves of the waterfall (default 24, as in Fig. 6), >= 2; ``waterfall`` only.
-    levels, orders, max_degree
-        ``eigen`` only: mesh levels (default 1, 2, 3), element orders (default 1,
-        2) and the largest degree l.
-    mesh, level, order, pole, geometry, initial, sigma, recontact, t_end
-        As in :func:`export` (``waterfall`` and ``pole`` only; defaults as there;
-        a mesh file too).
-    progress, route
-        As in :func:`export` (``route`` not with ``eigen``).
-    dpi : float, optional
-        Resolution of raster formats (PNG, ...) [dots per inch], 50 to 1200;
-        default 300.
-    mass_ratio, contact_radius, restitution, energy : optional
+    mesh, stepping : optional
+        As in :func:`export` (``waterfall`` and ``pole`` only; a mesh file too).
+    body : Body, optional
         ``pole`` only: an upper body of finite mass; the panels show the cap
         average of the coupled membrane with the body's path s(t), every impact
-        and separation marked (as in :func:`export`).
+        and separation marked.
+    figure : PlotOptions, optional
+        Resolution, waterfall instants, eigenvalue meshes and degree
+        (:class:`~twoball.PlotOptions`).
+    sigma, recontact, progress
+        As in :func:`export` (not with ``eigen``).
+    **deprecated
+        The keywords of version 0.2 (``dpi``, ``instants``, ``levels``,
+        ``orders``, ``max_degree``, ``level``, ...), with a :class:`DeprecationWarning`.
 
     Every argument that the chosen ``kind`` does not use is refused
-    (:class:`ParameterError`), never ignored.  ``pole`` with both backends
-    puts a panel of the difference finite elements minus closed form under
-    each quantity; ``waterfall`` with both stacks that difference at the nodes
-    beside the waterfall.
+    (:class:`~twoball.ParameterError`), never ignored.  ``pole`` with both
+    backends puts a panel of the difference finite elements minus closed form
+    under each quantity; ``waterfall`` with both stacks that difference at the
+    nodes beside the waterfall.
+
+    Examples
+    --------
+    >>> import tempfile, pathlib, twoball
+    >>> out = pathlib.Path(tempfile.mkdtemp()) / "pole.svg"
+    >>> mesh = twoball.MeshOptions("sphere", level=1)
+    >>> result = twoball.plot("pole", out, mesh=mesh, backends=["legendre"])
+    >>> result.file.name, result.rows[0][0]
+    ('pole.svg', 'lift-off (legendre)')
     """
-    arguments = dict(locals())  # the call, for the provenance
-    check_path_type(out)
     from twoball._common.staging import check_file
-    from twoball.verify.output.contact_fields import model_of, plot_contact
-    from twoball.verify.output.figures import PLOT_KINDS, check_dpi, figure_format, save_figure
+    from twoball.verify.output.fields import (
+        BACKENDS,
+        ball_model,
+        check_field_body,
+        check_frame_budget,
+        eigen_sizes,
+        field_mesh,
+        field_warnings,
+    )
+    from twoball.verify.output.figures import PLOT_KINDS, figure_format, save_figure
     from twoball.verify.output.figures.contact_pole import contact_pole_figure
     from twoball.verify.output.figures.eigen import eigen_figure, eigen_table
     from twoball.verify.output.figures.pole import pole_figure
     from twoball.verify.output.figures.waterfall import WATERFALL_INSTANTS, waterfall_figure
+    from twoball.verify.output.options import PlotOptions
 
+    check_path_type(out)
+    legacy = {k: deprecated.pop(k) for k in tuple(deprecated) if k in PLOT_OPTION_KEYS}
+    given, _ = _field_bundles("twoball.plot", mesh, stepping, body, deprecated)
+    if any(v is not None for v in legacy.values()):
+        import warnings
+
+        warnings.warn(
+            "twoball.plot: " + ", ".join(sorted(legacy)) + " are deprecated; pass "
+            "figure=PlotOptions(...)",
+            DeprecationWarning,
+            stacklevel=2,
+        )
+        if figure is not None:
+            raise ParameterError("figure", "left out with " + ", ".join(sorted(legacy)), figure)
+        figure = PlotOptions(**legacy)
+    figure = PlotOptions() if figure is None else figure
+    if not isinstance(figure, PlotOptions):
+        raise ParameterError("figure", "a twoball.PlotOptions", type(figure).__name__)
     if kind not in PLOT_KINDS:
         raise ParameterError("kind", "one of " + ", ".join(PLOT_KINDS), kind)
     figure_format(out, "out")
-    dpi = check_dpi(dpi, "dpi")
     target = check_file(out)
-    contact = plot_contact(
-        kind, case, mass_ratio, contact_radius, restitution, energy,
-        recontact=recontact, route=route,
-    )  # fmt: skip
+    t_end, route = _window(given)
+    if given.body is not None and kind != "pole":
+        raise ParameterError(
+            "mass_ratio", f"left out with kind {kind} (pole only)", given.body.mass_ratio
+        )
     rows: list[tuple[str, str]] = []
     reports: dict[str, LiftoffReport] = {}
     warnings: list[str] = []
+    field = None
+    say = progress or silent
     if kind == "eigen":
-        for name, value in (
-            ("case", case),
-            ("backends", backends),
-            ("instants", instants),
-            ("mesh", mesh),
-            ("pole", pole),
-            ("geometry", geometry),
-            ("level", level),
-            ("order", order),
-            ("initial", initial),
-            ("sigma", sigma),
-            ("recontact", recontact),
-            ("t_end", t_end),
-        ):
+        refused = {"case": case, "backends": backends, "mesh": given.mesh, "sigma": sigma}
+        refused |= {"recontact": recontact, "instants": figure.instants}
+        refused |= {"stepping": given.stepping}
+        for name, value in refused.items():
             if value is not None:
-                shown = type(value).__name__ if name == "case" else value
-                shown = os.fspath(shown) if isinstance(shown, os.PathLike) else shown
+                shown = type(value).__name__ if name in ("case", "stepping") else value
+                shown = shown.label if hasattr(shown, "label") else shown
                 raise ParameterError(name, "left out with kind eigen (use levels, orders)", shown)
-        if route != "auto":
-            raise ParameterError("route", "left out with kind eigen", route)
-        levels, orders = eigen_sizes(levels, orders, max_degree)
-        say = progress or silent
+        levels, orders = eigen_sizes(figure.levels, figure.orders, figure.max_degree)
         tables = []
         for od in orders:
             for lv in levels:
                 say(f"eigenvalues of sphere L{lv} P{od}")
-                tables.append(eigen_table(lv, od, max_degree))
-        figure = eigen_figure(tables)
+                tables.append(eigen_table(lv, od, figure.max_degree))
+        drawn = eigen_figure(tables)
         rows += [(t.label, f"l <= {t.degrees[-1]}, worst {t.errors[1:].max():.2e}") for t in tables]
     else:
-        for name, value in (("levels", levels), ("orders", orders), ("max_degree", max_degree)):
-            if value is not None:
-                raise ParameterError(name, f"left out with kind {kind} (eigen only)", value)
-        if kind == "pole" and instants is not None:
-            raise ParameterError("instants", "left out with kind pole (waterfall only)", instants)
+        for name in ("levels", "orders", "max_degree"):
+            if getattr(figure, name) is not None:
+                raise ParameterError(
+                    name, f"left out with kind {kind} (eigen only)", getattr(figure, name)
+                )
+        if kind == "pole" and figure.instants is not None:
+            raise ParameterError(
+                "instants", "left out with kind pole (waterfall only)", figure.instants
+            )
+        case = _case(case)
         sigma = "lanczos" if sigma is None else sigma
         recontact = "window" if recontact is None else recontact
-        backends = FIELD_BACKENDS if backends is None else backends
-        instants = WATERFALL_INSTANTS if instants is None else instants
-        if isinstance(instants, bool) or not isinstance(instants, int) or instants < 2:
-            raise ParameterError("instants", "an integer >= 2", instants)
+        backends = BACKENDS if backends is None else backends
+        instants = WATERFALL_INSTANTS if figure.instants is None else figure.instants
         chosen = tuple(dict.fromkeys(backends))
-        if not chosen or any(b not in FIELD_BACKENDS for b in chosen):
+        if not chosen or any(b not in BACKENDS for b in chosen):
             raise ParameterError("backends", "a list of fem, legendre", list(backends))
-        field = field_mesh(mesh, level, order, pole, geometry)  # reads a file
-        check_frame_budget(
-            Case.preset("basketball") if case is None else case, instants, "instants", field
-        )
-        model = model_of(
-            Case.preset("basketball") if case is None else case,
-            chosen,
-            contact,
-            field,
-            initial=initial,
-            sigma=sigma,
-            recontact=recontact,
-            t_end=t_end,
-            progress=progress,
-            route=route,
-        )
-        if contact is not None:
-            figure = contact_pole_figure(model)
+        field = field_mesh(given.mesh)  # reads a file
+        if given.body is not None:
+            check_field_body(case, given.body, field, recontact=recontact, route=route)
+        check_frame_budget(case, instants, "instants", field)
+        model = ball_model(
+            case, field, backends=chosen, body=given.body, sigma=sigma, recontact=recontact,
+            t_end_s=t_end, route=route, progress=say,
+        )  # fmt: skip
+        if given.body is not None:
+            drawn = contact_pole_figure(model)
         elif kind == "waterfall":
-            figure = waterfall_figure(model, instants)
+            drawn = waterfall_figure(model, instants)
         else:
-            figure = pole_figure(model)
+            drawn = pole_figure(model)
         for name, solved in model.backends.items():
             report = solved.report
             reports[name] = report
@@ -487,16 +539,41 @@ def plot(
             else:
                 text = "no lift-off"
             rows.append((f"lift-off ({name})", text))
-    (progress or silent)(f"writing {target}")
-    save_figure(figure, target, "out", dpi, "dpi")
-    used = None if kind == "eigen" else Case.preset("basketball") if case is None else case
-    provenance = block(used, "twoball.plot", arguments)
-    if kind != "eigen":
+    say(f"writing {target}")
+    save_figure(drawn, target, "out", figure.dpi, "dpi")
+    arguments = {"kind": kind, "out": out, "backends": backends, "sigma": sigma}
+    arguments |= {"recontact": recontact, "figure": figure.as_dict(), **given.as_dict()}
+    provenance = block(None if kind == "eigen" else case, "twoball.plot", arguments)
+    if field is not None:
         provenance |= mesh_block(field)
     return PlotResult(target, kind, rows, reports, warnings, provenance)
 
 
-def mesh_block(field: FieldMesh) -> dict[str, object]:
+def check_figure_path(path: str | os.PathLike[str], name: str = "out") -> Path:
+    """A figure path (any format matplotlib writes, not a folder or link) in a writable folder."""
+    from twoball._common.staging import check_file
+    from twoball.verify.output.figures import figure_format
+
+    check_path_type(path, name)
+    figure_format(path, name)
+    return check_file(path, name)
+
+
+def save_report_figure(report: Any, path: str | os.PathLike[str], name: str = "out") -> Path:
+    """Draw a finite-mass lift-off (the body's path over the cap, every event) into ``path``."""
+    from twoball.verify.output.figures import save_figure
+    from twoball.verify.output.figures.contact import contact_figure
+
+    if getattr(report, "history", None) is None:
+        raise ParameterError(name, "given with a body of mass ratio > 0", os.fspath(path))
+    return save_figure(contact_figure(report), path, name)
+
+
+#: The old keywords of :func:`plot` that :class:`~twoball.PlotOptions` holds now.
+PLOT_OPTION_KEYS = ("dpi", "instants", "levels", "orders", "max_degree")
+
+
+def mesh_block(field: Any) -> dict[str, object]:
     """``mesh_file`` for a provenance block: the user's file (path, radius, centre, pole)."""
     return {} if field.source is None else {"mesh_file": field.source}
 

@@ -1,17 +1,18 @@
 """``twoball.liftoff``: the lift-off of one case, in SI.
 
-The command line (``twoball liftoff``) calls exactly this
-function, so the same inputs give bit-identical numbers in Python and in a shell.
+The command line (``twoball liftoff``) calls exactly this function, so the same
+inputs give bit-identical numbers in Python and in a shell.
 """
 
 from __future__ import annotations
 
+import os
 from dataclasses import replace
 from typing import Any
 
-from twoball._common.errors import ParameterError, refuse_given
+from twoball._bundles import bundles, with_damping
+from twoball._common.errors import ParameterError
 from twoball._common.progress import Step
-from twoball.fem_membrane.options import refuse_mesh_options
 from twoball.modal.parameters import Case
 from twoball.modal.report import LiftoffReport
 
@@ -24,24 +25,14 @@ def liftoff(
     case: Case | None = None,
     *,
     backend: str = "legendre",
+    mesh: Any = None,
+    stepping: Any = None,
+    body: Any = None,
+    damping: Any = None,
     sigma: str = "lanczos",
     recontact: str = "window",
-    t_end: float | None = None,
-    mesh: Any = None,
-    level: int | None = None,
-    elements: int | None = None,
-    order: int | None = None,
-    pole: Any = None,
-    geometry: str | None = None,
-    scheme: str | None = None,
-    dt: float | None = None,
-    route: str | None = None,
-    damping_model: str | None = None,
     progress: Step | None = None,
-    mass_ratio: float | None = None,
-    contact_radius: float | None = None,
-    restitution: float | None = None,
-    energy: str | None = None,
+    **deprecated: Any,
 ) -> LiftoffReport | Any:
     """Lift-off time and velocity of the body on the ball, in SI.
 
@@ -51,136 +42,122 @@ def liftoff(
         The impact; default ``Case.preset("basketball")``.
     backend : {"legendre", "fem"}
         Closed-form Legendre series, eqs. (3.12)-(3.16), or finite elements
-        (:func:`twoball.fem.solve`, which takes the mesh and time options).
+        (:func:`twoball.fem.solve`).
+    mesh : MeshOptions, kind name or the user's mesh, optional
+        Finite elements only: :class:`~twoball.MeshOptions`, a kind name
+        (``"sphere"``, ``"ring"``, ``"axisym"``) or the user's sphere (a file
+        path, ``meshio.Mesh`` or ``MeshTri``); default the level-3 P2 icosphere.
+    stepping : Stepping, optional
+        The window ``t_end`` [s] (default 4 pi / c) and, finite elements only,
+        the scheme, step and eigen route (:class:`~twoball.Stepping`).
+    body : Body, optional
+        An upper body of finite mass in unilateral contact (docs/contact.rst,
+        :class:`~twoball.Body`); default the massless body of the paper.
+    damping : ModalRatio or Rayleigh, optional
+        The damping law (default the paper's ratio D of the case on every mode,
+        eq. (3.14)); :class:`~twoball.Rayleigh` needs finite-element time stepping.
     sigma : {"lanczos", "printed", "none"}
         Spectral filter, eq. (3.16).
     recontact : {"window", "paper"}
         Re-contact horizon of criterion (ii), §3(a).
-    t_end : float, optional
-        Modelled window [s] (default 4 pi / c).
-    mesh, level, elements, order, pole, geometry, scheme, dt, route, damping_model
-        Finite-element options (see :func:`twoball.fem.solve`; ``mesh`` may be a
-        kind name or the user's mesh: a file path, ``meshio.Mesh`` or ``MeshTri``);
-        refused with ``backend="legendre"``.
     progress : callable, optional
         Called with a short text as each stage of a finite-element solve starts
-        (a :class:`twoball._common.progress.Reporter`, for instance).
-    mass_ratio : float, optional
-        ``mu = m1 / m2`` of an upper body of finite mass in unilateral contact
-        (docs/contact.rst); None (default): the massless body of the paper.  0 is
-        the massless criteria on the cap-averaged motion.
-    contact_radius : float, optional
-        Radius a [m] of the contact cap (default R/10); only with ``mass_ratio``.
-    restitution : float, optional
-        Newton's coefficient at re-contact, in [0, 1] (default 0); only with ``mass_ratio``.
-    energy : {"ball", "both"}, optional
-        Energy at t = 0: eq. (3.6) for the lower ball alone, or with the upper
-        body's kinetic energy; only with ``mass_ratio``.
+        (a :class:`~twoball.Reporter`, for instance).
+    **deprecated
+        The keywords of version 0.2 (``t_end``, ``level``, ``mass_ratio``, ...),
+        folded into the bundles above with a :class:`DeprecationWarning`.
 
     Returns
     -------
     LiftoffReport
         ``t_liftoff_s``, ``v_liftoff_m_s``, ``ratio``, ``case`` (with
-        ``phi_a_source``), ``notes``; ``as_dict()`` for JSON.  With ``mass_ratio``
-        a :class:`~twoball.modal.contact.report.ContactReport` (the same
-        properties, plus every contact event).
+        ``phi_a_source``), ``notes``, ``warnings``; ``as_dict()`` for JSON.  With
+        ``body`` a ContactReport (the same properties, plus every contact event).
+
+    Examples
+    --------
+    >>> import twoball
+    >>> report = twoball.liftoff(twoball.Case.preset("basketball"))
+    >>> round(report.t_liftoff_s * 1e3, 4), round(report.v_liftoff_m_s, 4)
+    (9.8825, 3.8322)
+    >>> fe = twoball.liftoff(backend="fem", mesh=twoball.MeshOptions("axisym"))
+    >>> abs(fe.t_liftoff_s / report.t_liftoff_s - 1) < 1e-3
+    True
+    >>> twoball.liftoff(body=twoball.Body(mass_ratio=0.1)).lifted
+    True
     """
+    given = bundles(
+        "twoball.liftoff", mesh=mesh, stepping=stepping, body=body, damping=damping,
+        old=deprecated,
+    )  # fmt: skip
     case = Case.preset("basketball") if case is None else case
     if not isinstance(case, Case):
         raise ParameterError("case", "a twoball.Case", type(case).__name__)
-    if mass_ratio is not None:
-        from twoball._common.provenance import block
-
-        restitution = 0.0 if restitution is None else restitution
-        energy = "ball" if energy is None else energy
-        contact = _contact_liftoff(
-            case, backend, sigma, recontact, t_end, mass_ratio, contact_radius,
-            restitution, energy, mesh=mesh, level=level, elements=elements, order=order,
-            pole=pole, scheme=scheme, dt=dt, route=route, damping_model=damping_model,
-        )  # fmt: skip
-        arguments = {
-            "backend": backend,
-            "mass_ratio": mass_ratio,
-            "contact_radius": contact_radius,
-            "restitution": restitution,
-            "energy": energy,
-        }
-        return replace(contact, provenance=block(case, "twoball.liftoff", arguments))
-    refuse_given(
-        "given only with mass_ratio",
-        contact_radius=contact_radius,
-        restitution=restitution,
-        energy=energy,
-    )
-    fem_options = {
-        "mesh": mesh,
-        "level": level,
-        "elements": elements,
-        "order": order,
-        "pole": pole,
-        "geometry": geometry,
-        "scheme": scheme,
-        "dt": dt,
-        "route": route,
-        "damping_model": damping_model,
-    }
-    options = {"backend": backend, "sigma": sigma, "recontact": recontact, "t_end": t_end}
-    if backend == "fem":
+    if backend not in BACKENDS:
+        raise ParameterError("backend", "one of " + ", ".join(BACKENDS), backend)
+    case = with_damping(case, given.damping)
+    stepping = given.stepping
+    t_end = None if stepping is None else stepping.t_end
+    if given.body is not None:
+        report = _contact_liftoff(case, backend, given, sigma, recontact)
+    elif backend == "fem":
         from twoball.fem import solve
 
         report = solve(
-            case, sigma=sigma, recontact=recontact, t_end=t_end, progress=progress, **fem_options
-        )
-    elif backend != "legendre":
-        raise ParameterError("backend", "one of " + ", ".join(BACKENDS), backend)
+            case, mesh=given.mesh, stepping=stepping, damping=given.damping, sigma=sigma,
+            recontact=recontact, progress=progress,
+        )  # fmt: skip
     else:
-        refuse_mesh_options("with backend legendre (no mesh, no time steps)", **fem_options)
+        _refuse_fem_options(given)
         from twoball.modal.report import legendre_liftoff
 
         report = legendre_liftoff(case, sigma, recontact, t_end)
     from twoball._common.provenance import block
 
-    arguments = {**options, **{k: v for k, v in fem_options.items() if v is not None}}
+    arguments = {"backend": backend, "sigma": sigma, "recontact": recontact, **given.as_dict()}
     return replace(report, provenance=block(case, "twoball.liftoff", arguments))
 
 
-def _contact_liftoff(
-    case: Case,
-    backend: str,
-    sigma: str,
-    recontact: str,
-    t_end: float | None,
-    mass_ratio: float,
-    contact_radius: float | None,
-    restitution: float,
-    energy: str,
-    **fem_options: Any,
-) -> Any:
-    """The finite-mass body (issue 13): the shared contact solver on a backend's modes."""
+def _refuse_fem_options(given: Any, why: str = "with backend legendre") -> None:
+    """Refuse the mesh, the time steps and a Rayleigh law on the closed form."""
+    from twoball.modal.damping import Rayleigh
+
+    if given.mesh is not None:
+        shown = given.mesh.label if hasattr(given.mesh, "label") else given.mesh
+        raise ParameterError("mesh", f"left out {why} (no mesh)", os.fspath(shown))
+    if given.stepping is not None:
+        given.stepping.refuse(f"{why} (no time steps)", "scheme", "dt", "route")
+    if isinstance(given.damping, Rayleigh):
+        valid = "a ModalRatio on the closed form (Rayleigh: backend fem with scheme alpha)"
+        raise ParameterError("damping", valid, given.damping.as_dict())
+
+
+def _contact_liftoff(case: Case, backend: str, given: Any, sigma: str, recontact: str) -> Any:
+    """The finite-mass body: the shared contact solver on a backend's modes."""
     if recontact != "window":
         raise ParameterError(
             "recontact", "window with mass_ratio (events are simulated)", recontact
         )
     if backend == "fem":
-        for name in ("pole", "scheme", "dt", "route", "damping_model"):
-            if fem_options[name] is not None:
-                raise ParameterError(
-                    name, "left out with mass_ratio (modal route only)", fem_options[name]
-                )
-        from twoball.fem_membrane.contact import fem_contact_solution
+        from twoball.modal.damping import Rayleigh
 
-        _, report = fem_contact_solution(
-            case, mass_ratio, contact_radius, sigma=sigma, restitution=restitution,
-            energy=energy, t_end_s=t_end, mesh=fem_options["mesh"], level=fem_options["level"],
-            elements=fem_options["elements"], order=fem_options["order"],
-        )  # fmt: skip
+        if given.stepping is not None:
+            given.stepping.refuse("with mass_ratio (modal route only)", "scheme", "dt", "route")
+        if isinstance(given.damping, Rayleigh):
+            raise ParameterError("damping", "a ModalRatio with mass_ratio", "rayleigh")
+        from twoball.fem_membrane.contact import fem_contact_solution
+        from twoball.fem_membrane.options import MeshOptions
+
+        mesh = MeshOptions.of(given.mesh)
+        if mesh.pole is not None:
+            raise ParameterError("pole", "left out with mass_ratio (no mesh file)", mesh.pole)
+        _, report = fem_contact_solution(case, given.body, mesh, sigma=sigma, t_end_s=_t_end(given))
         return report
-    if backend != "legendre":
-        raise ParameterError("backend", "one of " + ", ".join(BACKENDS), backend)
-    refuse_mesh_options("with backend legendre (no mesh, no time steps)", **fem_options)
+    _refuse_fem_options(given)
     from twoball.modal.contact.report import legendre_contact
 
-    return legendre_contact(
-        case, mass_ratio, contact_radius, sigma=sigma, restitution=restitution,
-        energy=energy, t_end_s=t_end,
-    )  # fmt: skip
+    return legendre_contact(case, given.body, sigma=sigma, t_end_s=_t_end(given))
+
+
+def _t_end(given: Any) -> float | None:
+    return None if given.stepping is None else given.stepping.t_end

@@ -232,3 +232,10 @@ def verify_steps(thorough: bool = False, fast: bool = False, out: bool = True) -
     pair = c.energy_pair if c.energy_band is not None else None
     energy = [spec for spec in (pair or ()) if spec not in solved]
     return 2 + len(c.fem) + len(c.krylov) + len(c.alpha) + len(energy) + int(out)
+
+
+def summary_rows(study: Any) -> tuple[list[str], list[list[str]]]:
+    """Header and rows of a study's one-line-per-quantity summary (as in its ``report.md``)."""
+    from twoball.verify.output.report_files import study_summary_rows
+
+    return study_summary_rows(study)

@@ -7,10 +7,13 @@ inputs give bit-identical numbers in Python and in a shell.
 from __future__ import annotations
 
 import math
+import os
 from collections.abc import Callable, Mapping, Sequence
 from dataclasses import dataclass, field
+from pathlib import Path
 from typing import Any
 
+from twoball._bundles import bundles
 from twoball._common.errors import ParameterError
 from twoball.modal.parameters import Case
 
@@ -37,6 +40,20 @@ class SweepResult:
     shape: tuple[int, ...]
     points: list[Any]
     provenance: dict[str, Any] | None = field(default=None, compare=False, repr=False)
+    values: tuple[Any, ...] = field(default=(), compare=False, repr=False)
+
+    def plot(self, out: str | os.PathLike[str]) -> Path:
+        """Write the figure of the sweep: v_l/|v0| and t_l against the parameter, or heat maps.
+
+        ``out``'s suffix chooses the format (``.png``, ``.pdf``, ``.svg``, ...).
+        """
+        from twoball._files import check_figure_path
+        from twoball.verify.output.figures.sweep import plot_sweep
+        from twoball.verify.sweeps.sweeps import SweepGrid
+
+        target = check_figure_path(out, "out")
+        grid = SweepGrid(self.parameters, tuple(self.values))
+        return plot_sweep(grid, self.points, target)
 
     def as_dict(self) -> dict[str, Any]:
         """JSON-ready: parameters, shape, the points (SI) and the provenance."""
@@ -56,13 +73,14 @@ def sweep(
     values: Mapping[str, Sequence[float]],
     case: Case | None = None,
     *,
+    stepping: Any = None,
+    body: Any = None,
     sigma: str = "lanczos",
     recontact: str = "window",
-    t_end: float | None = None,
     workers: int | None = None,
     scheduler: str | None = None,
     progress: Callable[[int], None] | None = None,
-    contact_radius: float | None = None,
+    **deprecated: Any,
 ) -> SweepResult:
     """Closed-form lift-off over one parameter or a grid of two (Fig. 11(b), Fig. 12).
 
@@ -70,26 +88,39 @@ def sweep(
     ----------
     values : mapping
         ``{"v0": [2.0, 4.0, 8.0]}`` or two entries for a grid; keys among
-        ``damping``, ``v0``, ``wave_speed``, ``radius``, ``modes``.  v0, c and R
-        re-apply the phi_a rule of :class:`~twoball.modal.parameters.Case`.
+        ``damping``, ``v0``, ``wave_speed``, ``radius``, ``modes``,
+        ``mass_ratio``, ``bending``.  v0, c and R re-apply the phi_a rule of
+        :class:`~twoball.Case`.
     case : Case, optional
         The base case (default the basketball preset).
-    sigma, recontact, t_end
-        As in :func:`liftoff` (``t_end`` in seconds).
+    stepping : Stepping, optional
+        The window ``t_end`` [s] of every point (no time steps: the closed form).
+    body : Body, optional
+        An upper body of finite mass on every point (docs/contact.rst); a
+        ``mass_ratio`` sweep takes its other fields from it (default: contact
+        radius R/10, no restitution, the ball's energy).
+    sigma, recontact
+        As in :func:`~twoball.liftoff`.
     workers : int, optional
         Local processes (default 1: serial; the numbers do not depend on it);
         refused with ``scheduler``.
     scheduler : str, optional
         Address of a dask.distributed scheduler.
     progress : callable, optional
-        Called with the number of points done (e.g. :meth:`twoball._common.progress.Reporter.update`).
-    contact_radius : float, optional
-        Contact cap radius a [m] of a ``mass_ratio`` sweep (default R/10): the
-        points then run the finite-mass contact solver (docs/contact.rst).
+        Called with the number of points done (e.g. :meth:`twoball.Reporter.update`).
+    **deprecated
+        ``t_end`` and ``contact_radius`` of version 0.2, with a :class:`DeprecationWarning`.
 
     Returns
     -------
     SweepResult
+
+    Examples
+    --------
+    >>> import twoball
+    >>> result = twoball.sweep({"damping": [0.1, 0.13, 0.2]})
+    >>> [round(p.ratio, 3) for p in result.points]
+    [1.142, 0.935, 0.628]
     """
     import numpy as np
 
@@ -98,21 +129,43 @@ def sweep(
     from twoball.verify.sweeps.parallel import MIN_PARALLEL_ITEMS, Runner, check_workers
     from twoball.verify.sweeps.sweeps import SWEEP_PARAMETERS, SweepGrid, SweepSolver, run_sweep
 
+    legacy_radius = deprecated.pop("contact_radius", None)
+    given = bundles(
+        "twoball.sweep", stepping=stepping, body=body, old=deprecated, takes=("stepping", "body")
+    )
     case = Case.preset("basketball") if case is None else case
     if not isinstance(case, Case):
         raise ParameterError("case", "a twoball.Case", type(case).__name__)
+    if given.stepping is not None:
+        given.stepping.refuse(
+            "in a sweep (the closed form: no time steps)", "scheme", "dt", "route"
+        )
+    t_end = None if given.stepping is None else given.stepping.t_end
+    body = given.body
+    if legacy_radius is not None:
+        import warnings
+
+        warnings.warn(
+            "twoball.sweep: contact_radius is deprecated; pass body=Body(0, contact_radius=...)",
+            DeprecationWarning,
+            stacklevel=2,
+        )
+        if body is not None:
+            raise ParameterError("contact_radius", "left out with body (set it there)", None)
+        if "mass_ratio" not in values and "mass-ratio" not in values:
+            valid = "given only with a mass_ratio sweep"
+            raise ParameterError("contact_radius", valid, legacy_radius)
+        from twoball.modal.contact.body import Body
+
+        body = Body(0.0, contact_radius=legacy_radius)
     if scheduler and workers is not None:
         raise ParameterError("workers", "left out with scheduler (the cluster decides)", workers)
     workers = 1 if workers is None and not scheduler else workers
     if workers is not None:
         check_workers(workers)  # its type and range, before the budget compares it
-    call = {
-        "sigma": sigma,
-        "recontact": recontact,
-        "t_end": t_end,
-        "workers": workers,
-        "scheduler": scheduler,
-    }
+    call = {"sigma": sigma, "recontact": recontact, "workers": workers, "scheduler": scheduler}
+    call |= {"stepping": given.stepping, "body": body}
+    call = {k: v.as_dict() if hasattr(v, "as_dict") else v for k, v in call.items()}
     if not isinstance(values, Mapping) or not 1 <= len(values) <= 2:
         raise ParameterError("values", "a mapping of one or two parameters to values", values)
     parameters = tuple(_sweep_name(k) for k in values)
@@ -135,22 +188,25 @@ def sweep(
     workers = None if scheduler else check_workers(workers)
     if len(cases) < MIN_PARALLEL_ITEMS and not scheduler:
         workers = 1  # would run in process anyway; do not start a pool
-    if contact_radius is not None and "mass-ratio" not in parameters:
-        raise ParameterError("contact_radius", "given only with a mass_ratio sweep", contact_radius)
-    if "mass-ratio" in parameters:
+    if "mass-ratio" in parameters or body is not None:
+        from dataclasses import replace
+
+        from twoball.modal.contact.body import Body
         from twoball.modal.contact.report import check_contact_options
 
-        for mu in arrays[parameters.index("mass-ratio")]:
-            check_contact_options(case, float(mu), contact_radius, 0.0, "ball")
+        template = Body(0.0) if body is None else body
+        swept = parameters.index("mass-ratio") if "mass-ratio" in parameters else None
+        for mu in [template.mass_ratio] if swept is None else arrays[swept]:
+            check_contact_options(case, replace(template, mass_ratio=float(mu)))
         if recontact != "window":
             raise ParameterError("recontact", "window with mass_ratio", recontact)
-    if contact_radius is None:
-        solver = SweepSolver(sigma, recontact, t_end)
+        solver = SweepSolver(sigma, recontact, t_end, body=template)
     else:
-        solver = SweepSolver(sigma, recontact, t_end, contact_radius=contact_radius)
+        solver = SweepSolver(sigma, recontact, t_end)
     with Runner(workers, scheduler) as runner:
         points = run_sweep(cases, solver, progress, runner=runner, indices=grid.indices())
     from twoball._common.provenance import block
 
     arguments = {"values": {k: arrays[i] for i, k in enumerate(values)}, **call}
-    return SweepResult(parameters, grid.shape, points, block(case, "twoball.sweep", arguments))
+    provenance = block(case, "twoball.sweep", arguments)
+    return SweepResult(parameters, grid.shape, points, provenance, tuple(arrays))

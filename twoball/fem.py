@@ -11,6 +11,7 @@ import time as clock
 from numbers import Integral
 from typing import Any
 
+from twoball._bundles import bundles
 from twoball._common.errors import ParameterError
 from twoball._common.progress import Step, silent
 from twoball.fem_membrane.options import MeshOptions
@@ -24,19 +25,12 @@ def solve(
     case: Case | None = None,
     *,
     mesh: Any = None,
-    level: int | None = None,
-    elements: int | None = None,
-    order: int | None = None,
-    pole: Any = None,
-    geometry: str | None = None,
-    scheme: str | None = None,
-    dt: float | None = None,
-    route: str | None = None,
-    damping_model: str | None = None,
+    stepping: Any = None,
+    damping: Any = None,
     sigma: str = "lanczos",
     recontact: str = "window",
-    t_end: float | None = None,
     progress: Step | None = None,
+    **deprecated: Any,
 ) -> LiftoffReport:
     """Lift-off from the finite-element membrane, eq. (3.9), with criteria (i)-(ii) of §3(a).
 
@@ -44,63 +38,68 @@ def solve(
     ----------
     case : Case, optional
         The impact (SI); default the basketball preset.
-    mesh : {"sphere", "ring", "axisym"}, path, meshio.Mesh or scikit-fem mesh, optional
-        Mesh kind (default ``sphere``), or the user's sphere: a file in any
-        format meshio reads, a ``meshio.Mesh`` or a ``MeshTri`` (any radius and
-        centre; it is scaled to the unit sphere), see
-        :class:`twoball.fem_membrane.options.MeshOptions`.
-    level : int, optional
-        Sphere refinement level >= 0 (default 3); not with ``axisym`` or a file.
-    elements : int, optional
-        Elements >= 2 of ``axisym`` (default 400); not with a sphere.
-    order : {1, 2, 3, 4}, optional
-        Element and geometry order (default 2; a file: its own).
-    pole : (x, y, z) or "X,Y,Z", optional
-        Pole direction of a mesh file, in its frame (default +z).
-    geometry : {"isoparametric", "exact"}, optional
-        Discrete sphere: the order-p interpolant through the nodes (default),
-        or the exact sphere (radial projection of the flat triangles; not on
-        the ring sphere or the axisymmetric line).
-    scheme : {"modal", "alpha"}, optional
-        Modal superposition, eqs. (3.14)-(3.16) (default), or generalized-alpha stepping.
-    dt : float, optional
-        Time step [s] of ``scheme="alpha"`` (default: omega_cut dt = 0.2); refused with modal.
-    route : {"auto", "full", "krylov"}, optional
-        Eigen route of ``scheme="modal"`` (default auto); ``alpha`` needs the full pairs.
-    damping_model : {"modal", "rayleigh"}, optional
-        ``alpha`` only: one ratio D per mode (default) or Rayleigh damping.
+    mesh : MeshOptions, kind name or the user's mesh, optional
+        :class:`~twoball.MeshOptions` (default the level-3 P2 icosphere), a kind
+        name, or the user's sphere: a file in any format meshio reads, a
+        ``meshio.Mesh`` or a ``MeshTri`` (any radius and centre; it is scaled to
+        the unit sphere).
+    stepping : Stepping, optional
+        Window ``t_end`` [s] (default 4 pi / c), ``scheme`` (modal superposition,
+        eqs. (3.14)-(3.16), or generalized-alpha), its step ``dt`` [s] (default
+        omega_cut dt = 0.2) and the eigen ``route`` of modal superposition.
+    damping : ModalRatio or Rayleigh, optional
+        The damping law: the case's ratio D on every mode (default), or
+        Rayleigh damping ``C = alpha M + beta K`` (generalized-alpha only;
+        ``Rayleigh()`` fits it to D at sqrt(2) and the filter's cutoff).
     sigma : {"lanczos", "printed", "none"}
         Spectral filter, eq. (3.16).
     recontact : {"window", "paper"}
         Re-contact horizon of criterion (ii), §3(a).
-    t_end : float, optional
-        Modelled window [s] (default 4 pi / c).
     progress : callable, optional
-        Called with a short text as each stage starts (:class:`twoball._common.progress.Reporter`).
+        Called with a short text as each stage starts (:class:`~twoball.Reporter`).
+    **deprecated
+        The keywords of version 0.2 (``level``, ``dt``, ``damping_model``, ...),
+        with a :class:`DeprecationWarning`.
 
     Returns
     -------
     LiftoffReport
         ``backend == "fem"``; ``extra`` holds DOFs, modes used, mesh, route, time scheme.
+
+    Examples
+    --------
+    >>> import twoball
+    >>> report = twoball.fem.solve(mesh=twoball.MeshOptions("axisym", elements=200))
+    >>> report.backend, report.extra["dofs"]
+    ('fem', 401)
+    >>> round(report.t_liftoff_s * 1e3, 2)
+    9.88
     """
+    from twoball.modal.damping import Rayleigh
+    from twoball.modal.stepping import Stepping
+
+    given = bundles(
+        "twoball.fem.solve", mesh=mesh, stepping=stepping, damping=damping, old=deprecated,
+        takes=("mesh", "stepping", "damping"),
+    )  # fmt: skip
+    case = Case.preset("basketball") if case is None else case
+    if not isinstance(case, Case):
+        raise ParameterError("case", "a twoball.Case", type(case).__name__)
+    spec = MeshOptions.of(given.mesh)
+    step = given.stepping or Stepping()
+    scheme, dt, route, t_end = step.scheme or "modal", step.dt, step.route, step.t_end
+    rayleigh = isinstance(given.damping, Rayleigh)
+    if rayleigh and scheme != "alpha":
+        raise ParameterError(
+            "damping", "a ModalRatio with scheme modal (one ratio D per mode)", "rayleigh"
+        )
+    from twoball._bundles import with_damping
+
+    case = with_damping(case, given.damping)
     from twoball.fem_membrane.solve import fem_pole_motion
     from twoball.modal.filters import SpectralFilter
     from twoball.modal.report import report_liftoff, t_end_dimensionless
 
-    case = Case.preset("basketball") if case is None else case
-    spec = MeshOptions.resolve(
-        mesh, level=level, elements=elements, order=order, pole=pole, geometry=geometry
-    )
-    scheme = "modal" if scheme is None else scheme
-    if scheme == "modal":
-        if dt is not None:
-            raise ParameterError("dt", "left out with scheme modal (no time steps)", dt)
-        if damping_model not in (None, "modal"):
-            raise ParameterError(
-                "damping_model", "modal with scheme modal (one ratio D per mode)", damping_model
-            )
-    elif scheme == "alpha" and route not in (None, "full", "auto"):
-        raise ParameterError("route", "full or auto with scheme alpha", route)
     dt_scaled = None
     if dt is not None:
         from twoball.fem_membrane.checks import check_dt_in_window
@@ -134,11 +133,13 @@ def solve(
         elements=spec.elements,
         order=spec.order if loaded is None else None,
         scheme=scheme,
-        damping_model="modal" if damping_model is None else damping_model,
+        damping_model="rayleigh" if rayleigh else "modal",
+        rayleigh=given.damping if rayleigh and not given.damping.fitted else None,
         dt=dt_scaled,
         t_end=t_end_dimensionless(case, t_end),
         route="auto" if route is None else route,
         geometry=spec.geometry,
+        initial=spec.initial or "projection",
         stiffness=case.stiffness if case.stiff else None,
     )
     extra: dict[str, Any] = {
@@ -184,47 +185,50 @@ def solve(
 
     from twoball._common.provenance import block
 
-    arguments = {
-        "mesh": mesh,
-        "level": level,
-        "elements": elements,
-        "order": order,
-        "pole": pole,
-        "scheme": scheme,
-        "dt": dt,
-        "route": route,
-        "damping_model": damping_model,
-        "sigma": sigma,
-        "recontact": recontact,
-        "t_end": t_end,
-    }
+    arguments = {"sigma": sigma, "recontact": recontact, **given.as_dict()}
     return replace(report, provenance=block(case, "twoball.fem.solve", arguments))
 
 
 def eigen(
-    *,
     mesh: Any = None,
-    level: int | None = None,
-    elements: int | None = None,
-    order: int | None = None,
-    pole: Any = None,
-    geometry: str | None = None,
+    *,
     count: int = 25,
     progress: Step | None = None,
+    **deprecated: Any,
 ) -> list[dict[str, float | int]]:
     """The lowest ``count`` nonzero eigenvalues of -Laplace-Beltrami beside l (l + 1), eq. (3.11).
 
-    Mesh arguments as in :func:`solve`; one row per eigenvalue (``index``, ``l``,
-    ``value``, ``exact``, ``relative_error``, ``multiplicity``,
-    ``expected_multiplicity``), dimensionless.  ``progress`` is called with a short
-    text as the solve starts (:class:`twoball._common.progress.Reporter`).
+    Parameters
+    ----------
+    mesh : MeshOptions, kind name or the user's mesh, optional
+        As in :func:`solve` (default the level-3 P2 icosphere).
+    count : int
+        Nonzero eigenvalues listed, >= 1.
+    progress : callable, optional
+        Called with a short text as the solve starts (:class:`~twoball.Reporter`).
+    **deprecated
+        The mesh keywords of version 0.2 (``level``, ``order``, ...), with a
+        :class:`DeprecationWarning`.
+
+    Returns
+    -------
+    list of dict
+        One row per eigenvalue (``index``, ``l``, ``value``, ``exact``,
+        ``relative_error``, ``multiplicity``, ``expected_multiplicity``),
+        dimensionless.
+
+    Examples
+    --------
+    >>> import twoball
+    >>> rows = twoball.fem.eigen(twoball.MeshOptions("axisym", elements=100), count=3)
+    >>> [(row["l"], row["exact"]) for row in rows]
+    [(1, 2.0), (2, 6.0), (3, 12.0)]
     """
+    given = bundles("twoball.fem.eigen", mesh=mesh, old=deprecated, takes=("mesh",))
     from twoball._common.budget import check, fem_dofs, fem_estimate, options
     from twoball.fem_membrane.eigen import eigen_table
 
-    spec = MeshOptions.resolve(
-        mesh, level=level, elements=elements, order=order, pole=pole, geometry=geometry
-    )
+    spec = MeshOptions.of(given.mesh)
     if isinstance(count, bool) or not isinstance(count, Integral) or count < 1:
         raise ParameterError("count", "an integer >= 1", count)
     if spec.kind != "file":  # refuse absurd meshes before building them

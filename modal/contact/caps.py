@@ -17,9 +17,6 @@ from numpy.polynomial.legendre import leggauss, legvander
 
 from twoball._common.errors import ParameterError
 
-#: Default contact radius as a fraction of R (docs/contact.rst, "The contact radius").
-DEFAULT_RADIUS_FRACTION = 0.1
-
 
 def cap_angle(contact_radius: float, radius: float) -> float:
     """Half-angle ``theta = arcsin(a / R)`` [rad] of a cap of radius a [m] on radius R [m]."""

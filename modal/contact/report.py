@@ -14,7 +14,8 @@ from dataclasses import dataclass, field
 from typing import Any
 
 import numpy as np
-from twoball.modal.contact.caps import DEFAULT_RADIUS_FRACTION, cap_angle, legendre_cap_averages
+from twoball.modal.contact.body import Body
+from twoball.modal.contact.caps import cap_angle, legendre_cap_averages
 from twoball.modal.contact.events import ContactHistory, integrate
 from twoball.modal.contact.system import ContactSystem
 from twoball.modal.filters import SpectralFilter
@@ -26,35 +27,17 @@ from twoball.modal.series import ModalSeries
 
 from twoball._common.errors import ParameterError
 
-ENERGY_OPTIONS: tuple[str, ...] = ("ball", "both")
-MAX_MASS_RATIO = 100.0
 
-
-def check_contact_options(
-    case: Case, mass_ratio: float, contact_radius: float | None, restitution: float, energy: str
-) -> float:
-    """Validate the contact options; return the contact radius [m] (default R/10)."""
-    if isinstance(mass_ratio, bool) or not isinstance(mass_ratio, (int, float)):
-        raise ParameterError("mass_ratio", f"a number in [0, {MAX_MASS_RATIO:g}]", mass_ratio)
-    if not (math.isfinite(mass_ratio) and 0.0 <= mass_ratio <= MAX_MASS_RATIO):
-        raise ParameterError("mass_ratio", f"a number in [0, {MAX_MASS_RATIO:g}]", mass_ratio)
-    if isinstance(restitution, bool) or not (
-        isinstance(restitution, (int, float)) and 0.0 <= restitution <= 1.0
-    ):
-        raise ParameterError("restitution", "a number in [0, 1]", restitution)
-    if energy not in ENERGY_OPTIONS:
-        raise ParameterError("energy", "one of " + ", ".join(ENERGY_OPTIONS), energy)
+def check_contact_options(case: Case, body: Body) -> float:
+    """Check ``body`` against ``case``; return the contact radius [m] (default R/10)."""
+    if not isinstance(body, Body):
+        raise ParameterError("body", "a twoball.Body", type(body).__name__)
     if case.stiff:  # the contact system is built on the membrane's modes (eq. (3.11)) only
         valid = "left out with bending or gas (the contact model has the membrane's modes only)"
-        raise ParameterError("mass_ratio", valid, mass_ratio)
-    if contact_radius is None:
-        return DEFAULT_RADIUS_FRACTION * case.radius
-    if isinstance(contact_radius, bool) or not isinstance(contact_radius, (int, float)):
-        raise ParameterError(
-            "contact_radius", f"in (0, R) = (0, {case.radius:g}) m", contact_radius
-        )
-    cap_angle(contact_radius, case.radius)
-    return float(contact_radius)
+        raise ParameterError("mass_ratio", valid, body.mass_ratio)
+    radius = body.radius_m(case.radius)
+    cap_angle(radius, case.radius)
+    return radius
 
 
 def membrane_case(case: Case, mass_ratio: float, energy: str) -> Case:
@@ -275,12 +258,9 @@ def solve_contact(
 
 def legendre_contact(
     case: Case,
-    mass_ratio: float,
-    contact_radius: float | None = None,
+    body: Body,
     *,
     sigma: str = "lanczos",
-    restitution: float = 0.0,
-    energy: str = "ball",
     t_end_s: float | None = None,
     samples_per_period: int = 32,
 ) -> ContactReport:
@@ -290,22 +270,16 @@ def legendre_contact(
     ----------
     case : Case
         The impact (SI).
-    mass_ratio : float
-        ``mu = m1 / m2`` in [0, 100]; 0 is the massless mode (criteria (i)-(ii)).
-    contact_radius : float, optional
-        Radius a [m] of the contact cap, in (0, R); default R/10.
+    body : Body
+        The upper body: mass ratio (0 is the massless mode, criteria (i)-(ii)),
+        contact radius, restitution, energy at t = 0 (see :func:`membrane_case`).
     sigma : {"lanczos", "printed", "none"}
         Spectral filter of the initial values, eq. (3.16).
-    restitution : float
-        Newton's coefficient e in [0, 1] at re-contact (default 0, inelastic).
-    energy : {"ball", "both"}
-        Energy at t = 0: eq. (3.6) for the lower ball alone, or with the upper
-        body's kinetic energy (see :func:`membrane_case`).
     t_end_s : float, optional
         Modelled window [s] (default 4 pi / c).
     """
-    radius = check_contact_options(case, mass_ratio, contact_radius, restitution, energy)
-    mass_ratio = float(mass_ratio)
+    radius = check_contact_options(case, body)
+    mass_ratio, restitution, energy = body.mass_ratio, body.restitution, body.energy
     membrane = membrane_case(case, mass_ratio, energy)
     series = legendre_series(membrane.phi_a, case.damping, SpectralFilter(sigma, case.modes))
     theta = cap_angle(radius, case.radius)

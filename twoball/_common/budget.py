@@ -119,7 +119,7 @@ def physical_memory() -> int | None:
         return None
 
 
-def parse_bytes(text: str | float, option: str = "--max-memory") -> int:
+def parse_bytes(text: str | float, option: str = "max_memory") -> int:
     """A memory size: a number of bytes or with a unit (``12GiB``, ``500MB``, ``2e9``)."""
     match = re.fullmatch(r"\s*([0-9.eE+-]+)\s*([a-zA-Z]*)\s*", str(text))
     valid = "a size > 0 such as 12GiB, 500MB or 2e9 (bytes)"
@@ -134,7 +134,7 @@ def parse_bytes(text: str | float, option: str = "--max-memory") -> int:
     return int(value)
 
 
-def parse_seconds(text: str | float, option: str = "--max-time") -> float:
+def parse_seconds(text: str | float, option: str = "max_time") -> float:
     """A duration: seconds or with a unit (``3600``, ``90min``, ``2h``)."""
     match = re.fullmatch(r"\s*([0-9.eE+-]+)\s*([a-zA-Z]*)\s*", str(text))
     valid = "a duration > 0 such as 3600, 90min or 2h"
@@ -219,19 +219,19 @@ class Budget:
     def check(self, option: str, estimate: Estimate) -> Estimate:
         """Raise :class:`BudgetError` naming ``option`` if ``estimate`` exceeds a limit.
 
-        ``option`` is how the user asked for the work, e.g. ``"--modes 100000"``.
+        ``option`` is how the user asked for the work, e.g. ``"modes 100000"``.
         """
         if not (estimate.memory <= self.max_memory):
             raise BudgetError(
-                option.split()[0] if option else "--max-memory",
+                option.split()[0] if option else "max_memory",
                 f"{option} needs ~{format_bytes(estimate.memory)} of memory; "
-                f"limit {format_bytes(self.max_memory)} (set --max-memory)",
+                f"limit {format_bytes(self.max_memory)} (raise the memory limit, max_memory)",
             )
         if not (estimate.seconds <= self.max_seconds):
             raise BudgetError(
-                option.split()[0] if option else "--max-time",
+                option.split()[0] if option else "max_time",
                 f"{option} needs ~{format_seconds(estimate.seconds)}; "
-                f"limit {format_seconds(self.max_seconds)} (set --max-time)",
+                f"limit {format_seconds(self.max_seconds)} (raise the time limit, max_time)",
             )
         return estimate
 
@@ -383,12 +383,12 @@ def check_workers(workers: int | None) -> None:
     cores = os.cpu_count() or 1
     if workers > MAX_WORKERS_PER_CORE * cores:
         raise ParameterError(
-            "--workers",
+            "workers",
             f"an integer in [1, {MAX_WORKERS_PER_CORE * cores}] "
             f"({MAX_WORKERS_PER_CORE} per core, {cores} cores)",
             workers,
         )
-    check(f"--workers {workers}", Estimate(BASE_MEMORY + workers * WORKER_MEMORY, 0.0))
+    check(f"workers {workers}", Estimate(BASE_MEMORY + workers * WORKER_MEMORY, 0.0))
 
 
 def frames_estimate(
@@ -447,9 +447,9 @@ def check_fem(
     step = dt if dt is not None else step_accuracy / omega_cut
     pairs = (modes + 1) ** 2 if dimension == 2 else modes + 1
     if dt is None:
-        option = "--scheme alpha"
+        option = "scheme alpha"
     elif time_unit_s is None:
-        option = f"--dt (dt c = {dt:.3g})"
+        option = f"dt (dt c = {dt:.3g})"
     else:
         option = options(dt=dt * time_unit_s)
     return check(option, estimate + alpha_estimate(dofs, pairs, t_end, step))
@@ -470,7 +470,7 @@ def check_sweep(
     if reference:
         per_point = per_point + reference_estimate(t_end)
     estimate = sweep_estimate(points, per_point, cores if workers is None else workers)
-    return check(f"--values ({points} points)", estimate)
+    return check(f"values ({points} points)", estimate)
 
 
 def check_count(option: str, count: float, bytes_each: float = 8.0) -> Estimate:

@@ -29,9 +29,17 @@ class ParameterError(ValueError):
             text += f", got {got!r}"
         super().__init__(text)
 
+    def __reduce__(self) -> tuple[type, tuple[str, str, object]]:
+        """Pickled with its three fields (process pools send errors back)."""
+        return (type(self), (self.name, self.valid, self.got))
+
 
 class NumericalError(RuntimeError):
     """A computation produced NaN/inf or did not converge; never passed on silently."""
+
+
+# Public as twoball.ParameterError and twoball.NumericalError: tracebacks and reprs say so.
+ParameterError.__module__ = NumericalError.__module__ = "twoball"
 
 
 def real_number(name: str, value: object, valid: str) -> float:

@@ -11,7 +11,7 @@ from collections.abc import Callable
 
 
 def attach(
-    package: str, names: dict[str, str]
+    package: str, names: dict[str, str | tuple[str, str]]
 ) -> tuple[Callable[[str], object], Callable[[], list[str]]]:
     """``__getattr__`` and ``__dir__`` for ``package``, mapping each name to its module.
 
@@ -20,7 +20,9 @@ def attach(
     package : str
         The package's ``__name__``.
     names : dict
-        Public name -> module path relative to ``package`` (for example ``".parameters"``).
+        Public name -> module path (absolute, or relative to ``package`` such as
+        ``".parameters"``), or -> ``(module, attribute)`` when the name differs
+        from the attribute's name in its module.
     """
 
     def __getattr__(name: str) -> object:
@@ -28,7 +30,8 @@ def attach(
             module = names[name]
         except KeyError:
             raise AttributeError(f"module {package!r} has no attribute {name!r}") from None
-        value = getattr(importlib.import_module(module, package), name)
+        module, attribute = module if isinstance(module, tuple) else (module, name)
+        value = getattr(importlib.import_module(module, package), attribute)
         globals_of_package = importlib.import_module(package).__dict__
         globals_of_package[name] = value  # later look-ups are plain attribute reads
         return value

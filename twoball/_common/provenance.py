@@ -24,12 +24,9 @@ from collections.abc import Mapping, Sequence
 from dataclasses import dataclass
 from datetime import UTC, datetime
 from pathlib import PurePath
-from typing import TYPE_CHECKING, Any
+from typing import Any
 
 from twoball._version import __version__
-
-if TYPE_CHECKING:
-    from twoball.modal.parameters import Case
 
 __all__ = [
     "PACKAGES",
@@ -128,7 +125,7 @@ def platform_info() -> dict[str, Any]:
     }
 
 
-def case_block(case: Case | None) -> dict[str, Any] | None:
+def case_block(case: Any) -> dict[str, Any] | None:
     """The case in SI with the unit in every key (``radius_m``, ``phi_a_rad``, ...).
 
     :meth:`twoball.Case.as_dict`, the one SI form of a case (bending and gas keys
@@ -157,7 +154,7 @@ def _plain(value: Any) -> Any:
 
 
 def block(
-    case: Case | None = None,
+    case: Any = None,
     call: str | None = None,
     arguments: Mapping[str, Any] | None = None,
 ) -> dict[str, Any]:

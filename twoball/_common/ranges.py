@@ -11,25 +11,21 @@ everywhere:
   STOP (``2:5`` gives ``2, 3, 4, 5``).
 
 On the command line a value that starts with ``-`` is taken as the option's
-value, not as a new option (``--values -1:1:3`` works; see
-:func:`join_negative_values`).
+value, not as a new option (:func:`twoball.cli.main.join_negative_values`).
 """
 
 from __future__ import annotations
 
 import math
-import re
 from collections.abc import Sequence
 
 from twoball._common.errors import ParameterError
 
-__all__ = ["SYNTAX", "join_negative_values", "parse_values"]
+__all__ = ["SYNTAX", "parse_values"]
 
 SYNTAX = "v1,v2,... or START:STOP:COUNT"
 INTEGER_SYNTAX = "v1,v2,... or START:STOP[:COUNT]"
 MAX_VALUES = 1_000_000  # a list longer than this is a typo, not a study
-
-_NEGATIVE_VALUE = re.compile(r"-(\d|\.\d|inf|nan)", re.IGNORECASE)
 
 
 def parse_values(
@@ -118,25 +114,3 @@ def _finish(
             raise ParameterError(name, expected + ", whole numbers", text)
         return tuple(int(round(v)) for v in values)
     return tuple(values)
-
-
-def join_negative_values(argv: Sequence[str], value_options: set[str]) -> list[str]:
-    """``["--values", "-1:1:3"]`` -> ``["--values=-1:1:3"]`` for options that take a value.
-
-    argparse reads a word that starts with ``-`` as an option unless it is a
-    plain negative number, so ranges and lists starting below zero (and values
-    such as ``-1e-3``) are joined to their option here, before parsing.
-    """
-    out: list[str] = []
-    words = list(argv)
-    k = 0
-    while k < len(words):
-        word = words[k]
-        nxt = words[k + 1] if k + 1 < len(words) else None
-        if word in value_options and nxt is not None and _NEGATIVE_VALUE.match(nxt):
-            out.append(f"{word}={nxt}")
-            k += 2
-            continue
-        out.append(word)
-        k += 1
-    return out

@@ -27,8 +27,9 @@ other entry (a user's file, a symbolic link) makes :func:`check_folder` raise
 A target that is a symbolic link is refused, never followed.
 
 Scratch entries are named ``.NAME.twoball-scratch-PID-TOKEN`` and removed on
-every exit path: exceptions and, through :func:`twoball._common.signals.raise_on_signals` (which turns
-SIGINT and SIGTERM into :class:`~twoball._common.signals.Interrupted`), signals; commits and clean-ups
+every exit path: exceptions and, through
+:func:`twoball._common.signals.raise_on_signals` (which turns SIGINT and SIGTERM
+into :class:`~twoball._common.signals.Interrupted`), signals; commits and clean-ups
 run with signals held back (:func:`deferred_signals`).  Scratch left by a killed
 (SIGKILL) process is swept by the next run that writes the same target, once
 its process id is gone.

@@ -8,21 +8,24 @@ from __future__ import annotations
 import argparse
 import sys
 from pathlib import Path
+from typing import Any
 
 from rich.table import Table
 
+from twoball import _choices
 from twoball._common.errors import ParameterError
+from twoball._common.strict_json import json_text
 from twoball.cli.case_options import add_case_options, case_from_options
 from twoball.cli.console import console, print_notes
-from twoball.verify.output.report_files import json_text, study_summary_rows
-from twoball.verify.studies.result import STUDIES, StudyResult
 
 MESHES = ("sphere", "axisym")
 
 
-def print_study(study: StudyResult, out: Path) -> None:
+def print_study(study: Any, out: Path) -> None:
     """The summary table, the notes and where the files went."""
-    header, rows = study_summary_rows(study)
+    from twoball._studies import summary_rows
+
+    header, rows = summary_rows(study)
     table = Table(title=f"converge {study.study}: {study.title}")
     for name in header:
         table.add_column(name, justify="right" if name != "quantity" else "left")
@@ -40,7 +43,7 @@ def print_study(study: StudyResult, out: Path) -> None:
 
 def run(args: argparse.Namespace) -> int:
     """Run ``twoball converge``: :func:`twoball.converge` with the options, report in ``--out``."""
-    from twoball._studies import converge
+    import twoball
 
     args.study = chosen_study(args.study, args.study_option)
     out = args.out if args.out is not None else f"twoball-converge-{args.study}"
@@ -63,7 +66,7 @@ def run(args: argparse.Namespace) -> int:
     from twoball._common.progress import Reporter
 
     with Reporter(f"converge {args.study}") as progress:
-        study = converge(case, progress=progress, **options)
+        study = twoball.converge(case, progress=progress, **options)
     target = Path(out).expanduser()
     if args.json:
         data = study.as_dict()
@@ -80,7 +83,7 @@ def chosen_study(positional: str | None, option: str | None) -> str:
         raise ParameterError("study", "given once, as STUDY or --study", f"{positional}, {option}")
     study = positional if positional is not None else option
     if study is None:
-        raise ParameterError("study", "one of " + ", ".join(STUDIES), "none")
+        raise ParameterError("study", "one of " + ", ".join(_choices.STUDIES), "none")
     return study
 
 
@@ -96,14 +99,14 @@ def register(parser: argparse.ArgumentParser) -> None:
         "study",
         metavar="STUDY",
         nargs="?",
-        choices=STUDIES,
+        choices=_choices.STUDIES,
         help="h: mesh refinement; order: P1 to P4 at equal DOFs; modes: Legendre N; dt: time step",
     )
     parser.add_argument(
         "--study",
         dest="study_option",
         metavar="STUDY",
-        choices=STUDIES,
+        choices=_choices.STUDIES,
         help="the same as the positional STUDY (twoball converge --study order)",
     )
     parser.add_argument(

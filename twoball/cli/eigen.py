@@ -5,30 +5,28 @@ from __future__ import annotations
 import argparse
 
 from twoball.cli.console import console, print_json
-from twoball.cli.mesh_options import VALID_RANGES as MESH_RANGES
-from twoball.cli.mesh_options import add_mesh_options, mesh_arguments
+from twoball.cli.mesh_options import add_mesh_options, mesh_options
+from twoball.cli.values import integer
 
-VALID_RANGES = {**MESH_RANGES, "--count": "an integer >= 1"}
-
-__all__ = ["VALID_RANGES", "register", "run"]
+__all__ = ["register", "run"]
 
 
 def run(args: argparse.Namespace) -> int:
     """Run ``twoball eigen``."""
     from rich.table import Table
 
+    import twoball
     from twoball._common.progress import QUICK, Reporter
     from twoball._common.provenance import attach, block
-    from twoball.fem import eigen
-    from twoball.fem_membrane.options import MeshOptions
 
-    options = mesh_arguments(args)
+    mesh = mesh_options(args)
     with Reporter("eigen", delay=QUICK) as progress:
-        rows = eigen(**options, count=args.count, progress=progress)
+        rows = twoball.fem.eigen(mesh, count=args.count, progress=progress)
+    spec = twoball.MeshOptions() if mesh is None else mesh
     if args.json:
-        print_json(attach(rows, block(None, "twoball.fem.eigen", {**options, "count": args.count})))
+        arguments = {"mesh": spec.as_dict(), "count": args.count}
+        print_json(attach(rows, block(None, "twoball.fem.eigen", arguments)))
         return 0
-    spec = MeshOptions.resolve(**options)
     table = Table(title=f"Eigenvalues of -Laplace-Beltrami: {spec.label}")
     names = ("#", "l", "lambda (FE)", "l(l+1)", "rel. error", "cluster", "expected", "residual")
     for name in names:
@@ -57,7 +55,7 @@ def register(parser: argparse.ArgumentParser) -> None:
     """The options of ``twoball eigen``."""
     add_mesh_options(parser, geometry=True)
     parser.add_argument(
-        "--count", type=int, default=25, help="nonzero eigenvalues listed (default 25)"
+        "--count", type=integer, default=25, help="nonzero eigenvalues listed (default 25)"
     )
     parser.add_argument(
         "--json",

@@ -7,26 +7,19 @@ from __future__ import annotations
 
 import argparse
 
+from twoball import _choices
 from twoball.cli.case_options import add_case_options, case_from_options
 from twoball.cli.console import console, key_value_table, number, print_notes, print_warnings
-from twoball.cli.contact_options import VALID_RANGES as CONTACT_RANGES
-from twoball.cli.contact_options import add_contact_options, contact_arguments
+from twoball.cli.contact_options import add_contact_options, body_options
 from twoball.cli.mesh_options import (
-    SPHERE_KINDS,
     add_mesh_options,
     add_route_option,
-    mesh_arguments,
-    route_arguments,
+    mesh_options,
+    stepping_options,
 )
-from twoball.cli.mesh_options import VALID_RANGES as MESH_RANGES
-from twoball.verify.output.fields import DEFAULT_FRAMES, MAX_FRAMES, parse_times
-from twoball.verify.output.series import FORMATS
+from twoball.cli.values import integer
 
-VALID_RANGES: dict[str, str] = {
-    **MESH_RANGES,
-    **CONTACT_RANGES,
-    "--frames": f"an integer in [1, {MAX_FRAMES}]",
-}
+__all__ = ["add_backend_option", "add_frame_options", "register", "run"]
 
 
 def add_backend_option(parser: argparse.ArgumentParser) -> None:
@@ -43,7 +36,7 @@ def add_frame_options(parser: argparse.ArgumentParser, default: int) -> None:
     group = parser.add_mutually_exclusive_group()
     group.add_argument(
         "--frames",
-        type=int,
+        type=integer,
         metavar="K",
         help=f"K frames evenly spaced over [0, t_end] (default {default}; plus the lift-off)",
     )
@@ -54,25 +47,22 @@ def add_frame_options(parser: argparse.ArgumentParser, default: int) -> None:
 
 def run(args: argparse.Namespace) -> int:
     """Run ``twoball export``."""
-    from twoball._files import export
-
-    times = None if args.times is None else parse_times(args.times)
+    import twoball
     from twoball._common.progress import Reporter
 
+    frames = args.frames if args.times is None else _choices.parse_times(args.times)
     with Reporter("export") as progress:
-        result = export(
+        result = twoball.export(
             args.out,
             case_from_options(args),
             backend=args.backend,
+            mesh=mesh_options(args),
+            stepping=stepping_options(args),
+            body=body_options(args),
+            frames=frames,
             format=args.format,
-            frames=args.frames,
-            times=times,
             sigma=args.sigma,
             recontact=args.recontact,
-            t_end=args.t_end,
-            **mesh_arguments(args),
-            **route_arguments(args),
-            **contact_arguments(args),
             progress=progress,
         )
     files, report, selected = result.files, result.report, result.times_s
@@ -102,16 +92,16 @@ def register(parser: argparse.ArgumentParser) -> None:
         "displacement vector u n, and u_fem, u_legendre, u_diff; lift-off in field data."
     )
     add_case_options(parser)
-    add_mesh_options(parser, SPHERE_KINDS, initial=True, geometry=True)
+    add_mesh_options(parser, _choices.SPHERE_KINDS, initial=True, geometry=True)
     parser.set_defaults(initial=None)  # the API's default (projection)
     add_route_option(parser)
     add_backend_option(parser)
     parser.add_argument(
         "--format",
         help="xdmf (with NAME.h5), pvd (frames in NAME_frames-ID/) or vtu (one frame); "
-        "default: from the suffix of --out (" + ", ".join(FORMATS) + ")",
+        "default: from the suffix of --out (" + ", ".join(_choices.FORMATS) + ")",
     )
-    add_frame_options(parser, DEFAULT_FRAMES)
+    add_frame_options(parser, _choices.DEFAULT_FRAMES)
     parser.add_argument("--out", required=True, metavar="PATH", help="main output file")
     add_contact_options(
         parser, "m1/m2 in (0, 100]: the membrane coupled to the body, its path in field data"

@@ -57,6 +57,7 @@ FLAGS: dict[str, str] = {
     "initial": "--initial",
     "count": "--count",
     "mesh_file": "--mesh-file",
+    "file": "--mesh-file",
     "pole": "--pole",
     "geometry": "--geometry",
     # sweeps, studies, reports
@@ -70,6 +71,9 @@ FLAGS: dict[str, str] = {
     "modes_list": "--modes-list",
     "thorough": "--thorough",
     "fast": "--fast",
+    # resource limits
+    "max_memory": "--max-memory",
+    "max_time": "--max-time",
     # files and pictures
     "out": "--out",
     "dpi": "--dpi",
@@ -102,6 +106,12 @@ def flag_of(name: str, args: Namespace | None = None) -> str:
     """
     if name == "mesh" and getattr(args, "mesh_file", None) is not None:
         return "--mesh-file"
+    if name == "damping" and getattr(args, "damping_model", None) is not None:
+        return "--damping-model"  # the law the option chose
+    if name == "frames" and getattr(args, "times", None) is not None:
+        return "--times"
+    if name == "frames" and getattr(args, "time", None) is not None:
+        return "--time"
     if name == "case" and args is not None:  # the case came from the first case option given
         for option in ("preset", "radius", "wave_speed", "pressure", "mass", "v0", "phi_a"):
             if getattr(args, option, None) not in (None, "basketball"):

@@ -5,18 +5,13 @@ from __future__ import annotations
 import argparse
 from dataclasses import asdict
 
+import twoball
 from twoball._common.errors import ParameterError
 from twoball._common.provenance import attach, block
 from twoball.cli.console import Table, console, print_json
-from twoball.modal import icm
+from twoball.cli.values import number
 
-VALID_RANGES = {
-    "--mu": "a number in [0, 1e+06]",
-    "--e2": "a number in [0, 1]",
-    "--e12": "a number in [0, 1]",
-    "--dx": "a number in [0, 1e+06] [m]",
-    "--drop-height": "a number in (0, 1e+06] [m]",
-}
+__all__ = ["register", "run"]
 
 
 def run(args: argparse.Namespace) -> int:
@@ -28,7 +23,7 @@ def run(args: argparse.Namespace) -> int:
                 raise ParameterError(
                     flag, "left out with --table1 (its rows fix them)", getattr(args, flag)
                 )
-        checks = icm.table1_check()
+        checks = twoball.table1()
         if args.json:
             rows = [
                 {
@@ -42,7 +37,7 @@ def run(args: argparse.Namespace) -> int:
                 }
                 for c in checks
             ]
-            print_json(attach(rows, block(None, "twoball.modal.icm.table1_check")))
+            print_json(attach(rows, block(None, "twoball.table1")))
             return 0
         from rich import box
 
@@ -79,14 +74,12 @@ def run(args: argparse.Namespace) -> int:
         if differs:
             out.print("Why: docs, page 'Independent collision model', 'Table 1 recomputed'.")
         return 0
-    missing = [
-        f for f, v in (("--mu", args.mu), ("--e2", args.e2), ("--e12", args.e12)) if v is None
-    ]
+    missing = [f for f, v in (("mu", args.mu), ("e2", args.e2), ("e12", args.e12)) if v is None]
     if missing:
         raise ParameterError(missing[0], "given (or use --table1)")
     if (args.dx is None) != (args.drop_height is None) and args.dx not in (None, 0.0):
-        raise ParameterError("--drop-height", "given with --dx")
-    result = icm.icm(
+        raise ParameterError("drop_height", "given with --dx")
+    result = twoball.icm(
         args.mu,
         args.e2,
         args.e12,
@@ -96,7 +89,7 @@ def run(args: argparse.Namespace) -> int:
     if args.json:
         arguments = {"mu": args.mu, "e2": args.e2, "e12": args.e12}
         arguments |= {"dx": args.dx, "drop_height": args.drop_height}
-        print_json(attach(result.as_dict(), block(None, "twoball.modal.icm.icm", arguments)))
+        print_json(attach(result.as_dict(), block(None, "twoball.icm", arguments)))
         return 0
     table = Table(title="Independent collision model (§2)")
     table.add_column("quantity")
@@ -117,11 +110,11 @@ def run(args: argparse.Namespace) -> int:
 
 def register(parser: argparse.ArgumentParser) -> None:
     """The options of ``twoball icm``."""
-    parser.add_argument("--mu", type=float, help="mass ratio m1/m2 >= 0")
-    parser.add_argument("--e2", type=float, help="restitution lower ball-floor in [0, 1]")
-    parser.add_argument("--e12", type=float, help="restitution between the balls in [0, 1]")
-    parser.add_argument("--dx", type=float, help="initial separation [m] (default 0)")
-    parser.add_argument("--drop-height", type=float, help="drop height x2 - r2 [m] (default 1)")
+    parser.add_argument("--mu", type=number, help="mass ratio m1/m2 >= 0")
+    parser.add_argument("--e2", type=number, help="restitution lower ball-floor in [0, 1]")
+    parser.add_argument("--e12", type=number, help="restitution between the balls in [0, 1]")
+    parser.add_argument("--dx", type=number, help="initial separation [m] (default 0)")
+    parser.add_argument("--drop-height", type=number, help="drop height x2 - r2 [m] (default 1)")
     parser.add_argument(
         "--table1", action="store_true", help="recompute Table 1 beside the printed values"
     )

@@ -7,6 +7,7 @@ from __future__ import annotations
 
 import argparse
 
+import twoball
 from twoball.cli.case_options import add_case_options, case_from_options
 from twoball.cli.console import (
     console,
@@ -16,20 +17,16 @@ from twoball.cli.console import (
     print_notes,
     print_warnings,
 )
-from twoball.cli.contact_options import VALID_RANGES as CONTACT_RANGES
-from twoball.cli.contact_options import add_contact_options, contact_arguments
-from twoball.cli.mesh_options import VALID_RANGES as MESH_RANGES
+from twoball.cli.contact_options import add_contact_options, body_options
 from twoball.cli.mesh_options import (
     add_mesh_options,
     add_time_options,
-    mesh_arguments,
-    time_arguments,
+    damping_options,
+    mesh_options,
+    stepping_options,
 )
-from twoball.modal.report import LiftoffReport
 
-__all__ = ["VALID_RANGES", "contact_arguments", "register", "run"]
-
-VALID_RANGES: dict[str, str] = {**MESH_RANGES, **CONTACT_RANGES}
+__all__ = ["liftoff_rows", "register", "run"]
 
 
 def _stiffness_rows(case) -> list[tuple[str, str]]:
@@ -45,7 +42,7 @@ def _stiffness_rows(case) -> list[tuple[str, str]]:
     ]
 
 
-def liftoff_rows(report: LiftoffReport) -> list[tuple[str, str]]:
+def liftoff_rows(report: twoball.LiftoffReport) -> list[tuple[str, str]]:
     """The human-readable rows of a lift-off report (SI)."""
     case = report.case
     rows = [
@@ -79,7 +76,7 @@ def liftoff_rows(report: LiftoffReport) -> list[tuple[str, str]]:
     return rows
 
 
-def print_liftoff(report: LiftoffReport) -> None:
+def print_liftoff(report: twoball.LiftoffReport) -> None:
     """Print a lift-off report as a table."""
     title = f"Lift-off ({report.backend}, sigma={report.sigma}, re-contact={report.recontact})"
     console().print(key_value_table(title, liftoff_rows(report)))
@@ -116,43 +113,40 @@ def contact_rows(report) -> list[tuple[str, str]]:
     return rows
 
 
-def solve_from_options(args: argparse.Namespace) -> LiftoffReport:
-    """Call :func:`twoball.liftoff` with the case, model, mesh and time options."""
+def solve_from_options(args: argparse.Namespace) -> twoball.LiftoffReport:
+    """Call :func:`twoball.liftoff` with the case, model, mesh, time and body options."""
     from twoball._common.progress import QUICK, Reporter
-    from twoball._liftoff import liftoff
 
     options = {
         "backend": args.backend,
         "sigma": args.sigma,
         "recontact": args.recontact,
-        "t_end": args.t_end,
-        **mesh_arguments(args),
-        **time_arguments(args),
-        **contact_arguments(args),
+        "mesh": mesh_options(args),
+        "stepping": stepping_options(args),
+        "body": body_options(args),
+        "damping": damping_options(args),
     }
     case = case_from_options(args)
     if args.backend != "fem":  # the closed form takes milliseconds
-        return liftoff(case, **options)
+        return twoball.liftoff(case, **options)
     with Reporter("liftoff", delay=QUICK) as progress:
-        return liftoff(case, progress=progress, **options)
+        return twoball.liftoff(case, progress=progress, **options)
 
 
 def run(args: argparse.Namespace) -> int:
     """Run ``twoball liftoff``."""
+    from twoball._files import check_figure_path, save_report_figure
+
     plot = None
     if args.plot is not None:
-        from twoball._common.errors import ParameterError
-        from twoball.verify.sweeps.sweeps import check_plot_path
-
-        if args.mass_ratio is None:
-            raise ParameterError("plot", "given only with --mass-ratio", args.plot)
-        plot = check_plot_path(args.plot)
+        body = body_options(args)
+        if body is None or body.mass_ratio == 0.0:
+            valid = "given only with a mass ratio > 0 (the body's path is drawn)"
+            raise twoball.ParameterError("plot", valid, args.plot)
+        plot = check_figure_path(args.plot, "plot")
     report = solve_from_options(args)
-    if plot is not None and report.history is not None:
-        from twoball.verify.output.figures import save_figure
-        from twoball.verify.output.figures.contact import contact_figure
-
-        save_figure(contact_figure(report), plot, "--plot")
+    if plot is not None:
+        save_report_figure(report, plot, "plot")
     print_notes(report.notes)
     print_warnings(report.warnings)
     if args.json:

@@ -22,6 +22,7 @@ from typing import NoReturn
 
 from twoball._version import __version__
 
+_NEGATIVE_VALUE = re.compile(r"-(\d|\.\d|inf|nan)", re.IGNORECASE)
 EXIT_USAGE = 2
 EXIT_NUMERICAL = 3
 
@@ -53,25 +54,10 @@ class _Parser(argparse.ArgumentParser):
 
     def error(self, message: str) -> NoReturn:
         bad_type = re.fullmatch(r"argument (--[\w-]+): invalid \w+ value: (.*)", message)
-        if bad_type:
+        if bad_type:  # every numeric option leaves its range to the API; this is a fallback
             flag, got = bad_type.groups()
-            valid = valid_ranges(self.modules).get(
-                flag, "a number" if "float" in message else "an integer"
-            )
-            fail(f"{flag} must be {valid}, got {got}")
+            fail(f"{flag} must be {'a number' if 'float' in message else 'an integer'}, got {got}")
         fail(message)
-
-    modules: tuple[ModuleType, ...] = ()
-
-
-def valid_ranges(modules: Sequence[ModuleType]) -> dict[str, str]:
-    """Valid range of every numeric flag of ``modules`` (with the shared case options)."""
-    from twoball.cli.case_options import VALID_RANGES as CASE_RANGES
-
-    ranges = dict(CASE_RANGES)
-    for module in modules:
-        ranges.update(getattr(module, "VALID_RANGES", {}))
-    return ranges
 
 
 def fail(message: str, status: int = EXIT_USAGE) -> NoReturn:
@@ -102,7 +88,6 @@ def build_parser(chosen: str | None = None) -> argparse.ArgumentParser:
         )
         if chosen in (name, "*"):
             module = command_module(name)
-            command.modules = (module,)
             module.register(command)
     return parser
 
@@ -122,6 +107,28 @@ def value_options(parser: argparse.ArgumentParser) -> set[str]:
         elif action.option_strings and action.nargs is None:
             found.update(action.option_strings)
     return found
+
+
+def join_negative_values(argv: Sequence[str], value_options: set[str]) -> list[str]:
+    """``["--values", "-1:1:3"]`` -> ``["--values=-1:1:3"]`` for options that take a value.
+
+    argparse reads a word that starts with ``-`` as an option unless it is a
+    plain negative number, so ranges and lists starting below zero (and values
+    such as ``-1e-3``) are joined to their option here, before parsing.
+    """
+    out: list[str] = []
+    words = list(argv)
+    k = 0
+    while k < len(words):
+        word = words[k]
+        nxt = words[k + 1] if k + 1 < len(words) else None
+        if word in value_options and nxt is not None and _NEGATIVE_VALUE.match(nxt):
+            out.append(f"{word}={nxt}")
+            k += 2
+            continue
+        out.append(word)
+        k += 1
+    return out
 
 
 def chosen_command(argv: Sequence[str]) -> str | None:
@@ -152,8 +159,6 @@ def _main(argv: Sequence[str] | None = None) -> int:
     if not argv:
         parser.print_help()
         return 0
-    from twoball._common.ranges import join_negative_values
-
     argv = join_negative_values(argv, value_options(parser))
     args = parser.parse_args(argv)
     if args.command is None:

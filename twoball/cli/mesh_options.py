@@ -12,22 +12,11 @@ from __future__ import annotations
 
 import argparse
 from pathlib import Path
-from typing import Any
 
-from twoball.fem_membrane.options import (
-    DEFAULT_ELEMENTS,
-    DEFAULT_LEVEL,
-    DEFAULT_ORDER,
-    MESH_KINDS,
-    SPHERE_KINDS,
-)
+import twoball
+from twoball import _choices
+from twoball.cli.values import integer, number
 
-VALID_RANGES: dict[str, str] = {
-    "--level": "an integer >= 0",
-    "--elements": "an integer >= 2",
-    "--order": "1, 2, 3 or 4",
-    "--dt": "a time step > 0 [s]",
-}
 _KIND_HELP = {
     "sphere": "sphere (icosphere)",
     "ring": "ring (latitude rows, one at phi_a)",
@@ -37,7 +26,7 @@ _KIND_HELP = {
 
 def add_mesh_options(
     parser: argparse.ArgumentParser,
-    kinds: tuple[str, ...] = MESH_KINDS,
+    kinds: tuple[str, ...] | None = None,
     *,
     initial: bool = False,
     files: bool = True,
@@ -50,6 +39,7 @@ def add_mesh_options(
     exists if ``axisym`` is a kind, ``--mesh-file`` and ``--pole`` if ``files``,
     ``--geometry`` if ``geometry``.
     """
+    kinds = _choices.MESH_KINDS if kinds is None else kinds
     group = parser.add_argument_group("finite-element mesh")
     which = group.add_mutually_exclusive_group()
     which.add_argument(
@@ -70,18 +60,20 @@ def add_mesh_options(
         )
     sizes = group.add_mutually_exclusive_group()
     sizes.add_argument(
-        "--level", type=int, help=f"sphere refinement level >= 0 (default {DEFAULT_LEVEL})"
+        "--level",
+        type=integer,
+        help=f"sphere refinement level >= 0 (default {_choices.DEFAULT_LEVEL})",
     )
     if "axisym" in kinds:
         sizes.add_argument(
             "--elements",
-            type=int,
-            help=f"axisymmetric line elements >= 2 (default {DEFAULT_ELEMENTS})",
+            type=integer,
+            help=f"axisymmetric line elements >= 2 (default {_choices.DEFAULT_ELEMENTS})",
         )
     group.add_argument(
         "--order",
-        type=int,
-        help=f"element and geometry order 1, 2, 3 or 4 (default {DEFAULT_ORDER})",
+        type=integer,
+        help=f"element and geometry order 1, 2, 3 or 4 (default {_choices.DEFAULT_ORDER})",
     )
     if geometry:
         group.add_argument(
@@ -110,11 +102,6 @@ def add_route_option(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("--route", help=ROUTE_HELP)
 
 
-def route_arguments(args: argparse.Namespace) -> dict[str, Any]:
-    """``route`` for the API when ``--route`` was given (else the API's default)."""
-    return {} if getattr(args, "route", None) is None else {"route": args.route}
-
-
 def add_time_options(parser: argparse.ArgumentParser) -> None:
     """``--scheme``, ``--damping-model``, ``--dt``, ``--route`` of the finite-element lift-off."""
     group = parser.add_argument_group("finite-element time integration")
@@ -127,7 +114,7 @@ def add_time_options(parser: argparse.ArgumentParser) -> None:
     )
     group.add_argument(
         "--dt",
-        type=float,
+        type=number,
         metavar="SECONDS",
         help="alpha only: time step [s] (default: omega_cut dt = 0.2)",
     )
@@ -138,28 +125,45 @@ def add_time_options(parser: argparse.ArgumentParser) -> None:
     )
 
 
-def mesh_arguments(args: argparse.Namespace) -> dict[str, Any]:
-    """The mesh options given on the command line, as keyword arguments of the API.
+def mesh_options(args: argparse.Namespace) -> twoball.MeshOptions | None:
+    """The mesh options given on the command line as :class:`~twoball.MeshOptions` (or None).
 
-    ``--mesh-file PATH`` becomes ``mesh=Path(PATH)`` (a path, never a kind name).
+    ``--mesh-file PATH`` becomes ``MeshOptions(file=Path(PATH))`` (a path,
+    never a kind name).
     """
-    names = ("mesh", "level", "elements", "order", "pole", "geometry", "initial")
-    options = {n: getattr(args, n) for n in names if hasattr(args, n)}
-    if getattr(args, "mesh_file", None) is not None:
-        options["mesh"] = Path(args.mesh_file)
-    return options
+    names = ("level", "elements", "order", "pole", "geometry", "initial")
+    fields = {n: getattr(args, n) for n in names if getattr(args, n, None) is not None}
+    kind = getattr(args, "mesh", None)
+    path = getattr(args, "mesh_file", None)
+    if kind is None and path is None and not fields:
+        return None
+    if path is not None:
+        return twoball.MeshOptions(file=Path(path), **fields)
+    return twoball.MeshOptions(kind, **fields)
 
 
-def time_arguments(args: argparse.Namespace) -> dict[str, Any]:
-    """The time options given on the command line, as keyword arguments of the API."""
-    return {n: getattr(args, n) for n in ("scheme", "dt", "route", "damping_model")}
+def stepping_options(args: argparse.Namespace) -> twoball.Stepping | None:
+    """``--t-end``, ``--scheme``, ``--dt``, ``--route`` as :class:`~twoball.Stepping` or None."""
+    names = ("t_end", "dt", "scheme", "route")
+    fields = {n: getattr(args, n) for n in names if getattr(args, n, None) is not None}
+    return twoball.Stepping(**fields) if fields else None
+
+
+def damping_options(args: argparse.Namespace) -> twoball.ModalRatio | twoball.Rayleigh | None:
+    """``--damping-model`` as a damping law: ``rayleigh`` fitted to D, ``modal`` the paper's."""
+    law = getattr(args, "damping_model", None)
+    if law is None or law == "modal":
+        return None
+    if law == "rayleigh":
+        return twoball.Rayleigh()
+    raise twoball.ParameterError("damping_model", "one of modal, rayleigh", law)
 
 
 __all__ = [
-    "SPHERE_KINDS",
-    "VALID_RANGES",
     "add_mesh_options",
+    "add_route_option",
     "add_time_options",
-    "mesh_arguments",
-    "time_arguments",
+    "damping_options",
+    "mesh_options",
+    "stepping_options",
 ]

@@ -7,6 +7,8 @@ from __future__ import annotations
 
 import argparse
 
+import twoball
+from twoball import _choices
 from twoball._common.errors import ParameterError
 from twoball.cli.case_options import (
     add_case_options,
@@ -15,27 +17,16 @@ from twoball.cli.case_options import (
     case_options_given,
 )
 from twoball.cli.console import console, key_value_table, print_notes, print_warnings
-from twoball.cli.contact_options import VALID_RANGES as CONTACT_RANGES
-from twoball.cli.contact_options import add_contact_options, contact_arguments
+from twoball.cli.contact_options import add_contact_options, body_options
 from twoball.cli.mesh_options import (
-    SPHERE_KINDS,
     add_mesh_options,
     add_route_option,
-    mesh_arguments,
-    route_arguments,
+    mesh_options,
+    stepping_options,
 )
-from twoball.cli.mesh_options import VALID_RANGES as MESH_RANGES
-from twoball.verify.output.fields import BACKENDS
-from twoball.verify.output.figures import DPI, DPI_RANGE
-from twoball.verify.output.figures.waterfall import WATERFALL_INSTANTS
+from twoball.cli.values import integer, number
 
-VALID_RANGES: dict[str, str] = {
-    **MESH_RANGES,
-    **CONTACT_RANGES,
-    "--instants": "an integer >= 2",
-    "--max-degree": "an integer >= 1",
-    "--dpi": f"a number of dots per inch in [{DPI_RANGE[0]}, {DPI_RANGE[1]}]",
-}
+__all__ = ["register", "run"]
 
 
 def parse_list(text: str, flag: str, valid: str, allowed: set[int] | None = None) -> list[int]:
@@ -51,23 +42,21 @@ def parse_list(text: str, flag: str, valid: str, allowed: set[int] | None = None
 def parse_backends(text: str) -> tuple[str, ...]:
     """``--backend``: one of fem, legendre, or both comma-separated."""
     names = tuple(dict.fromkeys(p.strip() for p in str(text).split(",")))
-    if not names or any(n not in BACKENDS for n in names):
-        raise ParameterError("--backend", "fem, legendre or fem,legendre", text)
+    if not names or any(n not in _choices.FIELD_BACKENDS for n in names):
+        raise ParameterError("backends", "fem, legendre or fem,legendre", text)
     return names
 
 
 def run(args: argparse.Namespace) -> int:
     """Run ``twoball plot``: :func:`twoball.plot` with the options."""
     from twoball._common.progress import Reporter
-    from twoball._files import plot
 
-    options = {**mesh_arguments(args), **route_arguments(args), **contact_arguments(args)}
     levels = None
     if args.levels is not None:
-        levels = parse_list(args.levels, "--levels", "comma-separated levels >= 0, e.g. 1,2")
+        levels = parse_list(args.levels, "levels", "comma-separated levels >= 0, e.g. 1,2")
     orders = None
     if args.orders is not None:
-        orders = parse_list(args.orders, "--orders", "comma-separated orders 1 to 4", {1, 2, 3, 4})
+        orders = parse_list(args.orders, "orders", "comma-separated orders 1 to 4", {1, 2, 3, 4})
     if args.kind == "eigen":  # no case: every case option given is passed on and refused
         apply_limits(args)
         case = case_from_options(args) if case_options_given(args) else None
@@ -76,21 +65,24 @@ def run(args: argparse.Namespace) -> int:
         case = case_from_options(args)
         steps = 2
     with Reporter(f"plot {args.kind}", total=steps) as progress:
-        result = plot(
+        result = twoball.plot(
             args.kind,
             args.out,
             case,
             backends=None if args.backend is None else parse_backends(args.backend),
-            instants=args.instants,
-            levels=levels,
-            orders=orders,
-            max_degree=args.max_degree,
+            mesh=mesh_options(args),
+            stepping=stepping_options(args),
+            body=body_options(args),
+            figure=twoball.PlotOptions(
+                dpi=args.dpi,
+                instants=args.instants,
+                levels=levels,
+                orders=orders,
+                max_degree=args.max_degree,
+            ),
             sigma=args.sigma,
             recontact=args.recontact,
-            t_end=args.t_end,
             progress=progress,
-            dpi=args.dpi,
-            **options,
         )
     rows = [("file", str(result.file)), ("plot", result.kind), *result.rows]
     if result.reports:
@@ -112,7 +104,7 @@ def register(parser: argparse.ArgumentParser) -> None:
     )
     parser.add_argument("kind", metavar="KIND", help="waterfall, pole or eigen")
     add_case_options(parser)
-    add_mesh_options(parser, SPHERE_KINDS, initial=True, geometry=True)
+    add_mesh_options(parser, _choices.SPHERE_KINDS, initial=True, geometry=True)
     # None when not given: the API fills in the defaults and refuses what the kind does not use
     parser.set_defaults(sigma=None, recontact=None, initial=None)
     add_route_option(parser)
@@ -121,13 +113,13 @@ def register(parser: argparse.ArgumentParser) -> None:
     )
     parser.add_argument(
         "--instants",
-        type=int,
-        help=f"curves of the waterfall (default {WATERFALL_INSTANTS})",
+        type=integer,
+        help=f"curves of the waterfall (default {_choices.WATERFALL_INSTANTS})",
     )
     parser.add_argument("--levels", help="eigen: mesh levels (default 1,2,3)")
     parser.add_argument("--orders", help="eigen: element orders (default 1,2)")
     parser.add_argument(
-        "--max-degree", type=int, help="eigen: largest degree l (default: half the unknowns)"
+        "--max-degree", type=integer, help="eigen: largest degree l (default: half the unknowns)"
     )
     parser.add_argument(
         "--out",
@@ -137,9 +129,9 @@ def register(parser: argparse.ArgumentParser) -> None:
     )
     parser.add_argument(
         "--dpi",
-        type=float,
+        type=number,
         help=f"resolution of raster formats (.png, ...) in dots per inch, "
-        f"{DPI_RANGE[0]} to {DPI_RANGE[1]} (default {DPI})",
+        f"50 to 1200 (default {_choices.DPI})",
     )
     add_contact_options(
         parser, "pole: m1/m2 in (0, 100], the cap and the body's path with every event"

@@ -7,65 +7,41 @@ from __future__ import annotations
 
 import argparse
 
-from twoball._common.errors import ParameterError
-from twoball._files import DEFAULT_ANIMATION_FRAMES
+import twoball
+from twoball import _choices
 from twoball.cli.case_options import add_case_options, case_from_options
 from twoball.cli.console import console, key_value_table, print_notes, print_warnings
-from twoball.cli.contact_options import VALID_RANGES as CONTACT_RANGES
-from twoball.cli.contact_options import add_contact_options, contact_arguments
+from twoball.cli.contact_options import add_contact_options, body_options
 from twoball.cli.export import add_backend_option
 from twoball.cli.mesh_options import (
-    SPHERE_KINDS,
     add_mesh_options,
     add_route_option,
-    mesh_arguments,
-    route_arguments,
+    mesh_options,
+    stepping_options,
 )
-from twoball.cli.mesh_options import VALID_RANGES as MESH_RANGES
-from twoball.verify.output.fields import MAX_FRAMES
-from twoball.verify.output.render import DEFAULT_SIZE, check_warp
+from twoball.cli.values import integer, number
 
-VALID_RANGES: dict[str, str] = {
-    **MESH_RANGES,
-    **CONTACT_RANGES,
-    "--time": "a time >= 0 in seconds within the modelled window",
-    "--frames": f"an integer in [1, {MAX_FRAMES}]",
-    "--fps": "a number in [0.001, 1000]",
-}
-
-
-def parse_warp(text: str | None) -> float | None:
-    """``--warp``: ``auto`` (None) or a finite number >= 0."""
-    if text is None or str(text).strip().lower() == "auto":
-        return None
-    try:
-        value = float(text)
-    except ValueError:
-        raise ParameterError("--warp", "a finite number >= 0 or auto", text) from None
-    return check_warp(value)
+__all__ = ["register", "run"]
 
 
 def run(args: argparse.Namespace) -> int:
     """Run ``twoball render``: :func:`twoball.render` with the options."""
     from twoball._common.progress import Reporter
-    from twoball._files import render
 
+    frames = args.frames if args.time is None else [args.time]
+    view = twoball.RenderOptions(warp=args.warp, size=args.size, fps=args.fps)
     with Reporter("render") as progress:
-        result = render(
+        result = twoball.render(
             args.out,
             case_from_options(args),
             backend=args.backend,
-            time=args.time,
-            frames=args.frames,
-            warp=parse_warp(args.warp),
-            size=args.size,
-            fps=args.fps,
+            mesh=mesh_options(args),
+            stepping=stepping_options(args),
+            body=body_options(args),
+            frames=frames,
+            view=view,
             sigma=args.sigma,
             recontact=args.recontact,
-            t_end=args.t_end,
-            **mesh_arguments(args),
-            **route_arguments(args),
-            **contact_arguments(args),
             progress=progress,
         )
     times = result.times_s
@@ -91,22 +67,24 @@ def register(parser: argparse.ArgumentParser) -> None:
         "and coloured by u [mm], the upper body on the pole and in free flight after lift-off."
     )
     add_case_options(parser)
-    add_mesh_options(parser, SPHERE_KINDS, initial=True, geometry=True)
+    add_mesh_options(parser, _choices.SPHERE_KINDS, initial=True, geometry=True)
     add_route_option(parser)
     add_backend_option(parser)
     parser.add_argument("--out", required=True, metavar="FILE", help="FILE.png, .gif or .mp4")
     group = parser.add_mutually_exclusive_group()
     group.add_argument(
-        "--time", type=float, metavar="SECONDS", help="instant of a PNG (default: the lift-off)"
+        "--time", type=number, metavar="SECONDS", help="instant of a PNG (default: the lift-off)"
     )
     group.add_argument(
         "--frames",
-        type=int,
+        type=integer,
         metavar="K",
-        help=f"frames of an animation over [0, t_end] (default {DEFAULT_ANIMATION_FRAMES})",
+        help="frames of an animation over [0, t_end] "
+        f"(default {_choices.DEFAULT_ANIMATION_FRAMES})",
     )
     parser.add_argument(
         "--warp",
+        type=number,
         default="auto",
         metavar="SCALE",
         help="displacement magnification; auto (default): the largest displacement drawn "
@@ -114,12 +92,12 @@ def register(parser: argparse.ArgumentParser) -> None:
     )
     parser.add_argument(
         "--size",
-        default=f"{DEFAULT_SIZE[0]}x{DEFAULT_SIZE[1]}",
+        default=f"{_choices.DEFAULT_SIZE[0]}x{_choices.DEFAULT_SIZE[1]}",
         metavar="WxH",
         help="image size in pixels (MP4: rounded up to multiples of 16)",
     )
     parser.add_argument(
-        "--fps", type=float, help="frames per second of a .gif or .mp4 (default 20)"
+        "--fps", type=number, help="frames per second of a .gif or .mp4 (default 20)"
     )
     parser.set_defaults(initial=None)  # the API's default; refused with --backend legendre
     add_contact_options(

@@ -5,43 +5,33 @@ from __future__ import annotations
 import argparse
 import shlex
 
+from twoball import _choices
 from twoball.cli.console import console
-from twoball.verify.reproduce.driver import (
-    DEFAULT_OUT,
-    PARTS,
-    REPORT,
-    check_output,
-    parse_only,
-)
-from twoball.verify.reproduce.driver import reproduce as run_reproduction
-from twoball.verify.sweeps.parallel import VALID_RANGES as PARALLEL_RANGES
-from twoball.verify.sweeps.parallel import Runner, check_workers
+from twoball.cli.values import integer
 
-VALID_RANGES = dict(PARALLEL_RANGES)
+__all__ = ["register", "run"]
 
 
 def run(args: argparse.Namespace) -> int:
     """Run ``twoball reproduce``."""
-    names = parse_only(args.only)
-    workers = check_workers(args.workers) if not args.scheduler else args.workers
-    check_output(args.out)  # fail before any work
+    import twoball
     from twoball._common.progress import Reporter
 
-    with Runner(workers, args.scheduler) as runner:  # the pool starts before the bar's thread
-        with Reporter("reproduce") as bar:
-            target, sections = run_reproduction(
-                args.out, names, runner, bar.task, command_line(args)
-            )
+    with Reporter("reproduce") as bar:
+        done = twoball.reproduce(
+            args.out, only=args.only, workers=args.workers, scheduler=args.scheduler,
+            progress=bar.task, command=command_line(args),
+        )  # fmt: skip
     out = console()
-    out.print(f"wrote {target / REPORT} and {sum(len(s.figures) for s in sections)} figures")
-    for s in sections:
+    out.print(f"wrote {done.directory / _choices.REPRODUCTION_REPORT} and {done.figures} figures")
+    for s in done.sections:
         out.print(f"  {s.key:<11} {s.seconds:6.1f} s  {len(s.comparisons):3d} numbers compared")
     return 0
 
 
 def command_line(args: argparse.Namespace) -> str:
     """The options of this run, spelled as a command (for the report's header)."""
-    words = ["twoball", "reproduce", "--out", args.out]
+    words = ["twoball", "reproduce", "--out", args.out or _choices.REPRODUCTION_DIR]
     for flag, value in (("--only", args.only), ("--workers", args.workers)):
         if value is not None:
             words += [flag, str(value)]
@@ -60,18 +50,18 @@ def register(parser: argparse.ArgumentParser) -> None:
     )
     parser.add_argument(
         "--out",
-        default=DEFAULT_OUT,
+        default=None,
         metavar="DIR",
-        help=f"output directory (default ./{DEFAULT_OUT}); its parent must exist",
+        help=f"output directory (default ./{_choices.REPRODUCTION_DIR}); its parent must exist",
     )
     parser.add_argument(
         "--only",
         metavar="PARTS",
-        help="comma-separated subset of: " + ",".join(PARTS),
+        help="comma-separated subset of: " + ",".join(_choices.REPRODUCTION_PARTS),
     )
     parser.add_argument(
         "--workers",
-        type=int,
+        type=integer,
         metavar="N",
         help="local worker processes for the sweeps (default: all cores; 1 = serial)",
     )

@@ -3,7 +3,9 @@
 from __future__ import annotations
 
 import argparse
+from typing import Any
 
+from twoball import _choices
 from twoball._common.errors import ParameterError
 from twoball._common.provenance import attach
 from twoball.cli.case_options import add_case_options, case_from_options
@@ -15,23 +17,15 @@ from twoball.cli.console import (
     print_notes,
     print_warnings,
 )
-from twoball.verify.sweeps.parallel import VALID_RANGES as PARALLEL_RANGES
-from twoball.verify.sweeps.parallel import check_workers
-from twoball.verify.sweeps.sweeps import (
-    SWEEP_PARAMETERS,
-    SweepGrid,
-    SweepPoint,
-    check_plot_path,
-    make_grid,
-    plot_sweep,
-)
+from twoball.cli.contact_options import add_contact_options, body_options
+from twoball.cli.values import integer
 
-VALID_RANGES = dict(PARALLEL_RANGES)
+__all__ = ["register", "run"]
 
 
-def print_sweep(grid: SweepGrid, points: list[SweepPoint]) -> None:
+def print_sweep(grid: Any, points: list[Any]) -> None:
     """Print one row per grid point (an ``error`` column appears only if a point failed)."""
-    fields = [SWEEP_PARAMETERS[p] for p in grid.parameters]
+    fields = [_choices.SWEEP_PARAMETERS[p] for p in grid.parameters]
     shape = " x ".join(str(n) for n in grid.shape)
     title = f"Sweep of {' x '.join(grid.parameters)} ({shape} values)"
     table = Table(title=title)
@@ -71,40 +65,37 @@ def print_sweep(grid: SweepGrid, points: list[SweepPoint]) -> None:
 
 def run(args: argparse.Namespace) -> int:
     """Run ``twoball sweep``: :func:`twoball.sweep` with the options' grid and case."""
-    from twoball._sweep import sweep
+    import twoball
+    from twoball._files import check_figure_path
 
-    grid = make_grid(args.param, args.values)
-    workers = check_workers(args.workers) if not args.scheduler else args.workers
+    grid = _choices.make_grid(args.param, args.values)
     for name in grid.parameters:  # the swept parameter's base value would be replaced
-        field = SWEEP_PARAMETERS[name]
+        field = _choices.SWEEP_PARAMETERS[name]
         if getattr(args, field, None) is not None:
             raise ParameterError(
                 field, f"left out when --param {name} is swept", getattr(args, field)
             )
-    plot = None if args.plot is None else check_plot_path(args.plot)
+    plot = None if args.plot is None else check_figure_path(args.plot, "plot")
     base = case_from_options(args)
     values = dict(zip(grid.parameters, grid.values, strict=True))
-    options = {
-        "sigma": args.sigma,
-        "recontact": args.recontact,
-        "t_end": args.t_end,
-        "workers": workers,
-        "scheduler": args.scheduler,
-    }
-    if args.contact_radius is not None:
-        options["contact_radius"] = args.contact_radius
+    body = _sweep_body(args, grid.parameters)
+    stepping = None if args.t_end is None else twoball.Stepping(t_end=args.t_end)
     from twoball._common.progress import QUICK, Reporter
 
     total = 1
     for n in grid.shape:
         total *= n
     with Reporter(f"sweep {' x '.join(grid.parameters)}", total=total, delay=QUICK) as bar:
-        result = sweep(values, base, progress=bar.update, **options)
+        result = twoball.sweep(
+            values, base, stepping=stepping, body=body, sigma=args.sigma,
+            recontact=args.recontact, workers=args.workers, scheduler=args.scheduler,
+            progress=bar.update,
+        )  # fmt: skip
     points = result.points
     print_notes(sweep_notes(points))
     print_warnings(sweep_warnings(points))
     if plot is not None:
-        plot_sweep(grid, points, plot)
+        result.plot(plot)
     if args.json:
         print_json(attach([p.as_dict() for p in points], result.provenance))
     else:
@@ -114,7 +105,18 @@ def run(args: argparse.Namespace) -> int:
     return 0
 
 
-def sweep_notes(points: list[SweepPoint]) -> list[str]:
+def _sweep_body(args: argparse.Namespace, parameters: tuple[str, ...]) -> Any:
+    """The upper body of the sweep: ``--mass-ratio`` (or the swept one) and its companions."""
+    import twoball
+
+    if "mass-ratio" not in parameters:
+        return body_options(args)
+    given = {n: getattr(args, n) for n in ("contact_radius", "restitution", "energy")}
+    given = {n: v for n, v in given.items() if v is not None}
+    return twoball.Body(0.0, **given) if given else None
+
+
+def sweep_notes(points: list[Any]) -> list[str]:
     """One note for the whole sweep: at how many points eq. (3.7) replaced a preset's phi_a."""
     notes = [p.report.notes[0] for p in points if p.report is not None and p.report.notes]
     if len(notes) <= 1:
@@ -123,7 +125,7 @@ def sweep_notes(points: list[SweepPoint]) -> list[str]:
     return [f"phi_a from eq. (3.7) at {len(notes)} of {len(points)} points; {why}"]
 
 
-def sweep_warnings(points: list[SweepPoint]) -> list[str]:
+def sweep_warnings(points: list[Any]) -> list[str]:
     """One warning for the whole sweep: how many points carry accuracy warnings, the first."""
     flagged = [p for p in points if p.report is not None and p.report.warnings]
     if not flagged:
@@ -147,7 +149,7 @@ def register(parser: argparse.ArgumentParser) -> None:
         "--param",
         required=True,
         action="append",
-        choices=tuple(SWEEP_PARAMETERS),
+        choices=tuple(_choices.SWEEP_PARAMETERS),
         help="swept parameter; give twice for a 2-D grid",
     )
     parser.add_argument(
@@ -166,7 +168,7 @@ def register(parser: argparse.ArgumentParser) -> None:
     run_group = parser.add_argument_group("execution")
     run_group.add_argument(
         "--workers",
-        type=int,
+        type=integer,
         metavar="N",
         help="local worker processes (default: all cores; 1 = strictly serial)",
     )
@@ -176,11 +178,8 @@ def register(parser: argparse.ArgumentParser) -> None:
         help="run on an existing dask.distributed scheduler (needs the 'dask' extra)",
     )
     add_case_options(parser)
-    parser.add_argument(
-        "--contact-radius",
-        type=float,
-        metavar="A",
-        help="with --param mass-ratio: contact cap radius a [m] (default R/10)",
+    add_contact_options(
+        parser, "m1/m2 in [0, 100] on every point (or --param mass-ratio and its values)"
     )
     parser.add_argument(
         "--json",

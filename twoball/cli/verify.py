@@ -8,13 +8,13 @@ from __future__ import annotations
 import argparse
 import sys
 from pathlib import Path
+from typing import Any
 
 from rich.table import Table
 
+from twoball._common.strict_json import json_text
 from twoball.cli.case_options import add_case_options, case_from_options
 from twoball.cli.console import console, print_notes
-from twoball.verify.checks.results import VerifyResult
-from twoball.verify.output.report_files import json_text
 
 DEFAULT_OUT = "twoball-report"
 
@@ -23,7 +23,7 @@ def _pct(value: float | None) -> str:
     return "-" if value is None else f"{value:+.2e}"
 
 
-def print_result(result: VerifyResult, out: Path) -> None:
+def print_result(result: Any, out: Path) -> None:
     """The run table, the checks and the verdict."""
     out_console = console(wide=True)
     runs = Table(title=f"twoball verify ({result.config.name}): runs")

@@ -28,22 +28,15 @@ from typing import Any, Literal
 
 import numpy as np
 from twoball.fem_membrane.mesh import SphereMesh, elevate, flatten, sphere_mesh
-from twoball.fem_membrane.options import FILE, SPHERE_KINDS, MeshOptions
+from twoball.fem_membrane.options import DEFAULT_INITIAL, FILE, SPHERE_KINDS, MeshOptions
+from twoball.modal.contact.body import MAX_MASS_RATIO, Body
+from twoball.modal.contact.report import check_contact_options, membrane_case
+from twoball.modal.contact.states import ModalStates, modal_states
 from twoball.modal.filters import SpectralFilter
 from twoball.modal.legendre import legendre_series, legendre_shapes
 from twoball.modal.parameters import Case
 from twoball.modal.report import LiftoffReport, report_liftoff, t_end_dimensionless
 from twoball.modal.series import ModalSeries
-from twoball.verify.output.field_times import (  # noqa: F401 -- their home before
-    DEFAULT_FRAMES,
-    MAX_FRAMES,
-    check_frames,
-    check_times,
-    frame_times,
-    liftoff_frame,
-    parse_times,
-    window_s,
-)
 from twoball.verify.output.render import BallScene
 from twoball.verify.output.series import TimeSeries
 
@@ -52,7 +45,6 @@ from twoball._common.progress import Step, silent
 
 BackendName = Literal["fem", "legendre"]
 BACKENDS: tuple[str, ...] = ("fem", "legendre")
-MESH_KINDS: tuple[str, ...] = ("sphere", "ring")
 #: A generated mesh kind, or the user's mesh (unit sphere, pole on +z; from a file).
 MeshChoice = str | SphereMesh
 
@@ -129,7 +121,7 @@ class BallModel:
     def backend(self, name: str) -> Backend:
         """The backend called ``name`` (ParameterError naming ``--backend`` if absent)."""
         if name not in self.backends:
-            raise ParameterError("--backend", "one of " + ", ".join(self.backends), name)
+            raise ParameterError("backend", "one of " + ", ".join(self.backends), name)
         return self.backends[name]
 
     def nodal(self, name: str, times_s: np.ndarray, derivative: int = 0) -> np.ndarray:
@@ -186,8 +178,8 @@ def build_mesh(
         order = kind.order if order is None else order
         base = flatten(kind) if geometry == "exact" else kind
         return elevate(base, order) if order > 1 else flatten(base)
-    if kind not in MESH_KINDS:
-        raise ParameterError("--mesh", "one of " + ", ".join(MESH_KINDS), kind)
+    if kind not in SPHERE_KINDS:
+        raise ParameterError("mesh", "one of " + ", ".join(SPHERE_KINDS), kind)
     return sphere_mesh(int(level or 0), int(order or 2), case.phi_a if kind == "ring" else None)
 
 
@@ -257,8 +249,8 @@ def fem_nodal_series(
     from twoball.modal.liftoff import DEFAULT_T_END
 
     own = isinstance(mesh, SphereMesh)
-    if not own and mesh not in MESH_KINDS:
-        raise ParameterError("--mesh", "one of " + ", ".join(MESH_KINDS), mesh)
+    if not own and mesh not in SPHERE_KINDS:
+        raise ParameterError("mesh", "one of " + ", ".join(SPHERE_KINDS), mesh)
     model = modal_model(
         case.phi_a,
         case.damping,
@@ -321,66 +313,103 @@ def fem_backend(
     return nodes, Backend("fem", series, shapes, report, details)
 
 
+def solve_backends(
+    case: Case,
+    field: FieldMesh,
+    backends: Sequence[str],
+    *,
+    sigma: str,
+    recontact: str,
+    t_end: float,
+    route: str,
+) -> BallModel:
+    """``case`` solved by ``backends`` on the sphere mesh ``field`` (no upper body).
+
+    The finite elements (when asked) give the mesh whose nodes carry the
+    fields (:func:`fem_backend`); the closed form is evaluated at those nodes,
+    or at the generated mesh's nodes without finite elements.
+    """
+    spec = field.spec
+    initial = spec.initial or DEFAULT_INITIAL
+    solved: dict[str, Backend] = {}
+    if "fem" in backends:
+        unit_mesh, solved["fem"] = fem_backend(
+            case, spec.level, field.order, field.mesh, sigma, recontact, t_end, initial, route,
+            spec.geometry,
+        )  # fmt: skip
+    else:
+        unit_mesh = build_mesh(case, spec.level, field.order, field.mesh, spec.geometry)
+    if "legendre" in backends:
+        solved["legendre"] = legendre_backend(case, unit_mesh, sigma, recontact, t_end)
+    return BallModel(case, unit_mesh, solved, t_end, sigma, recontact, source=field.source)
+
+
 def ball_model(
     case: Case,
-    level: int | None = 3,
-    order: int | None = 2,
+    field: FieldMesh | None = None,
     *,
-    mesh: MeshChoice = "sphere",
+    backends: Sequence[str] = BACKENDS,
+    body: Any = None,
     sigma: str = "lanczos",
     recontact: str = "window",
     t_end_s: float | None = None,
-    backends: Sequence[str] = BACKENDS,
-    initial: str = "projection",
     route: str = "auto",
-    geometry: str = "isoparametric",
+    progress: Step | None = None,
 ) -> BallModel:
-    """Solve ``case`` with the requested backends on a sphere mesh of ``level``/``order``.
+    """The solved ball behind every field output (files, pictures, plots): the one builder.
 
     Parameters
     ----------
     case : Case
         The impact (SI).
-    level, order : int
-        Mesh refinement (``--level``) and element order 1 or 2 (``--order``);
-        with the user's mesh ``level`` is None and ``order`` None keeps its own.
-    mesh : {"sphere", "ring"} or SphereMesh
-        Icosphere, or ring sphere with mesh edges along phi = phi_a (``--mesh``),
-        or the user's mesh on the unit sphere with its pole on +z
-        (:func:`twoball.fem_membrane.mesh_input.load_sphere_mesh`).
+    field : FieldMesh, optional
+        The sphere mesh (:func:`field_mesh`; default the level-3 P2 icosphere).
+    backends : sequence of {"fem", "legendre"}
+        Which solvers to run; the closed form is cheap, the FE eigenproblem is not.
+    body : Body, optional
+        An upper body of finite mass: the fields are then the membrane coupled
+        to it (:func:`twoball.verify.output.fields.coupled_model`).
     sigma, recontact : str
         Spectral filter (eq. (3.16)) and re-contact horizon (§3(a)(ii)).
     t_end_s : float, optional
         Modelled window [s] (default 4 pi / c).
-    backends : sequence of {"fem", "legendre"}
-        Which solvers to run; the closed form is cheap, the FE eigenproblem is not.
-    initial : {"projection", "interpolation"}
-        How the FE backend represents the initial displacement (3.10) (``--initial``).
     route : {"auto", "full", "krylov"}
         FE mode shapes from every eigenpair (``full``), from the Ritz pairs of the
         rational Krylov route (``krylov``), or Krylov from 2000 unknowns (``auto``).
-    geometry : {"isoparametric", "exact"}
-        Discrete sphere of the FE backend (``--geometry``; exact: the icosphere
-        and the user's mesh only).
+    progress : callable, optional
+        Called with a short text as the solve starts.
 
     Returns
     -------
     BallModel
+        A :class:`~twoball.verify.output.fields.CoupledModel` with a body.
     """
-    t_end = t_end_dimensionless(case, t_end_s)
+    from twoball.modal.stepping import ROUTES
+
+    field = field_mesh(MeshOptions()) if field is None else field
     for name in backends:
         if name not in BACKENDS:
-            raise ParameterError("--backend", "one of " + ", ".join(BACKENDS), name)
-    solved: dict[str, Backend] = {}
-    if "fem" in backends:
-        unit_mesh, solved["fem"] = fem_backend(
-            case, level, order, mesh, sigma, recontact, t_end, initial, route, geometry
+            raise ParameterError("backend", "one of " + ", ".join(BACKENDS), name)
+    if route not in ROUTES:
+        raise ParameterError("route", "one of " + ", ".join(ROUTES), route)
+    if field.spec.initial is not None and "fem" not in backends:
+        raise ParameterError(
+            "initial", "left out without the fem backend (it sets the FE initial state)",
+            field.spec.initial,
+        )  # fmt: skip
+    t_end = t_end_dimensionless(case, t_end_s)  # checked before any progress line
+    say = progress or silent
+    if body is not None:
+        check_field_body(case, body, field, recontact=recontact, route=route)
+        return coupled_model(
+            case, backends, body, field.spec, sigma=sigma, t_end_s=t_end_s, progress=say
         )
-    else:
-        unit_mesh = build_mesh(case, level, order, mesh, geometry)
-    if "legendre" in backends:
-        solved["legendre"] = legendre_backend(case, unit_mesh, sigma, recontact, t_end)
-    return BallModel(case, unit_mesh, solved, t_end, sigma, recontact)
+    if field.spec.kind == FILE and field.loaded is None:
+        field = replace(field, loaded=field.spec.load())
+    say(f"solving {' and '.join(backends)} on {field.spec.label}")
+    return solve_backends(
+        case, field, tuple(backends), sigma=sigma, recontact=recontact, t_end=t_end, route=route
+    )
 
 
 # --------------------------------------------------------------------------- products
@@ -504,14 +533,12 @@ def ball_scene(model: BallModel, times_s: np.ndarray, backend: str = "fem") -> B
     )
 
 
-FIELD_BACKENDS: tuple[str, ...] = ("fem", "legendre")
-INITIAL_METHODS: tuple[str, ...] = ("projection", "interpolation")
 FPS_RANGE = (1e-3, 1e3)  # frames per second of an animation
 
 
 def check_backend(backend: str) -> str:
-    if backend not in FIELD_BACKENDS:
-        raise ParameterError("backend", "one of " + ", ".join(FIELD_BACKENDS), backend)
+    if backend not in BACKENDS:
+        raise ParameterError("backend", "one of " + ", ".join(BACKENDS), backend)
     return backend
 
 
@@ -551,46 +578,32 @@ class FieldMesh:
         """
         if self.loaded is None:
             return None
-        given = self.spec.source
+        given = self.spec.file
         path = os.path.abspath(given) if isinstance(given, (str, os.PathLike)) else None
         head = {"path": path, "length_unit": "the file's", "geometry": self.spec.geometry}
         return head | self.loaded.as_dict()
 
 
-def field_mesh(
-    mesh: Any,
-    level: int | None,
-    order: int | None,
-    pole: Any = None,
-    geometry: str | None = None,
-    *,
-    cells: bool = False,
-    load: bool = True,
-) -> FieldMesh:
-    """Check the mesh options of a field command and read the user's mesh file.
+def field_mesh(mesh: Any = None, *, cells: bool = False, load: bool = True) -> FieldMesh:
+    """Check the sphere mesh of a field output and read the user's mesh file.
 
     Parameters
     ----------
-    mesh : {"sphere", "ring"}, path, meshio.Mesh or scikit-fem mesh, optional
-        A sphere kind (default ``sphere``), or the user's sphere (any radius,
-        centre and length unit, 3- or 6-node triangles).
-    level, order, pole, geometry
-        As in :meth:`MeshOptions.resolve` (``level`` refused with a file,
-        ``pole`` without one, ``geometry="exact"`` on the ring sphere).
+    mesh : MeshOptions, {"sphere", "ring"}, path, meshio.Mesh or MeshTri, optional
+        A sphere (default the level-3 P2 icosphere), or the user's sphere (any
+        radius, centre and length unit, 3- or 6-node triangles).
     cells : bool
         The fields become VTK cells (files, pictures): orders 1 and 2 only.
     load : bool
         Read the file now; False checks the options only (the file is then
-        read by :func:`ball_model_of`, or by calling this again).
+        read by :func:`ball_model`).
 
     Raises
     ------
     ParameterError
         Naming the option, or ``mesh`` for a file that is not one closed sphere.
     """
-    spec = MeshOptions.resolve(
-        mesh, level=level, order=order, pole=pole, geometry=geometry, kinds=SPHERE_KINDS
-    )
+    spec = MeshOptions.of(mesh).require(SPHERE_KINDS)
     if cells and spec.order is not None and spec.order > 2:  # VTK cells stop at quadratic
         raise ParameterError("order", "1 or 2 for field files and pictures", spec.order)
     return FieldMesh(spec, spec.load() if load and spec.kind == FILE else None)
@@ -609,19 +622,6 @@ def field_warnings(model: Any, backend: str, field: FieldMesh) -> list[str]:
         spec, series = field.spec, model.backend(backend).series
         warnings += mesh_warnings(spec.kind, spec.level, None, spec.order, series.filter)
     return warnings
-
-
-def check_initial(initial: str | None, backends: Sequence[str]) -> str:
-    """``initial`` (default projection); refused when no finite-element backend is solved."""
-    if initial is None:
-        return "projection"
-    if "fem" not in backends:
-        raise ParameterError(
-            "initial", "left out without the fem backend (it sets the FE initial state)", initial
-        )
-    if initial not in INITIAL_METHODS:
-        raise ParameterError("initial", "one of " + ", ".join(INITIAL_METHODS), initial)
-    return initial
 
 
 def check_fps(fps: object) -> float:
@@ -679,45 +679,283 @@ def check_frame_budget(case: Case, count: int, name: str, field: FieldMesh) -> N
     )
 
 
-def ball_model_of(
+DEFAULT_FRAMES = 25
+MAX_FRAMES = 2000
+
+
+def check_frames(frames: object, name: str = "frames") -> int:
+    """Number of frames: an integer in [1, 2000]."""
+    if isinstance(frames, bool) or not isinstance(frames, int | np.integer):
+        raise ParameterError(name, f"an integer in [1, {MAX_FRAMES}]", frames)
+    if not (1 <= int(frames) <= MAX_FRAMES):
+        raise ParameterError(name, f"an integer in [1, {MAX_FRAMES}]", frames)
+    return int(frames)
+
+
+def parse_times(text: str, name: str = "times") -> tuple[float, ...]:
+    """Times [s] in the one list syntax: ``0,0.005,0.01`` or ``0:0.01:3``.
+
+    Each must be a finite number >= 0; they are returned sorted, without duplicates.
+    """
+    from twoball._common.ranges import SYNTAX, parse_values
+
+    valid = "times >= 0 in seconds, e.g. 0,0.005,0.01 or 0:0.01:11"
+    values = parse_values(text, name, valid=valid)
+    if any(v < 0 for v in values):
+        raise ParameterError(name, f"{SYNTAX} ({valid})", text)
+    return tuple(sorted(set(values)))
+
+
+def window_s(case: Case, t_end_s: float | None = None) -> float:
+    """The modelled window [s]: ``t_end_s``, or 4 pi / c by default."""
+    return t_end_dimensionless(case, t_end_s) * case.scalings.time
+
+
+def check_times(end: float, times_s: Sequence[float], name: str = "times") -> np.ndarray:
+    """``times_s`` [s] as a sorted array, each inside the modelled window [0, ``end``]."""
+    times = np.asarray(sorted({float(t) for t in times_s}), dtype=float)
+    if times.size == 0 or np.any(~np.isfinite(times)) or times.min() < 0 or times.max() > end:
+        raise ParameterError(
+            name, f"times in [0, {end:.6g}] s (the modelled window)", list(times_s)
+        )
+    return times
+
+
+def frame_times(
+    model: BallModel,
+    frames: int | None = None,
+    times_s: Sequence[float] | None = None,
+    backend: str = "fem",
+    include_liftoff: bool = True,
+) -> np.ndarray:
+    """Frame times [s]: given ``times_s``, or ``frames`` evenly spaced over [0, t_end].
+
+    With ``frames`` (default 25) the lift-off time of ``backend`` is added as an
+    extra frame when ``include_liftoff`` is set and the body lifts off.
+    """
+    if times_s is not None:
+        return check_times(model.t_end_s, times_s)
+    count = DEFAULT_FRAMES if frames is None else check_frames(frames)
+    times = np.linspace(0.0, model.t_end_s, count) if count > 1 else np.array([0.0])
+    report = model.backend(backend).report
+    if include_liftoff and report.result.lifted:
+        times = np.union1d(times, [report.t_liftoff_s])
+    return times
+
+
+def liftoff_frame(model: BallModel, backend: str = "fem") -> np.ndarray:
+    """The lift-off time [s] of ``backend`` as a one-frame array (t = 0 if no lift-off)."""
+    report = model.backend(backend).report
+    return np.array([report.t_liftoff_s if report.result.lifted else 0.0])
+
+
+#: Per-frame field data of an export with a body of finite mass (name: unit).
+FRAME_FIELDS: dict[str, str] = {
+    "s_m": "the body's height above the undeformed pole [m]",
+    "s_t_m_s": "the body's velocity [m/s]",
+    "contact": "1 while the body is on the membrane, 0 in flight",
+}
+
+
+def check_field_body(
+    case: Case, body: Body, field: Any, *, recontact: str | None = None, route: str = "auto"
+) -> None:
+    """Refuse what the fields of a body of finite mass cannot be computed with.
+
+    The checks of :func:`~twoball.modal.contact.report.check_contact_options`
+    (the radius against R; no bending or gas), ``mass_ratio > 0`` (0, the
+    massless criteria, has no body to draw), the ``window`` re-contact horizon
+    (events are simulated), a route giving every eigenpair (``auto`` or
+    ``full``: the field is rebuilt from the modes), a generated, isoparametric
+    mesh (``field``: a :class:`~twoball.verify.output.fields.FieldMesh`).
+    """
+    from twoball.fem_membrane.options import FILE
+
+    check_contact_options(case, body)
+    if body.mass_ratio == 0.0:
+        valid = f"in (0, {MAX_MASS_RATIO:g}] for fields and plots (0 has no body to draw)"
+        raise ParameterError("mass_ratio", valid, body.mass_ratio)
+    if recontact not in (None, "window"):
+        valid = "window with mass_ratio (events are simulated)"
+        raise ParameterError("recontact", valid, recontact)
+    if route not in ("auto", "full"):
+        raise ParameterError("route", "auto or full with mass_ratio (every eigenpair)", route)
+    spec = field.spec
+    if spec.kind == FILE:
+        valid = "a generated mesh (sphere or ring) with mass_ratio, not a mesh file"
+        path = isinstance(spec.file, str | os.PathLike)
+        raise ParameterError("mesh", valid, os.fspath(spec.file) if path else "a mesh object")
+    if spec.geometry != "isoparametric":
+        raise ParameterError("geometry", "isoparametric with mass_ratio", spec.geometry)
+
+
+@dataclass(frozen=True)
+class CoupledModel(BallModel):
+    """A :class:`BallModel` whose fields are the membrane coupled to the body.
+
+    Each backend's ``report`` is its :class:`~twoball.modal.contact.report.ContactReport`
+    (``system`` and ``history`` of the contact solver), ``shapes`` its modes at
+    the mesh nodes, one row per mode of ``report.system``.
+    """
+
+    _states: dict = field(default_factory=dict, init=False, compare=False, repr=False)
+
+    def contact(self, name: str) -> Any:
+        """The contact report of backend ``name``."""
+        return self.backend(name).report
+
+    def states(self, name: str, times_s: np.ndarray) -> ModalStates:
+        """Modal state of backend ``name`` at ``times_s`` [s] (dimensionless values).
+
+        Computed once per backend and times (matrix exponentials are the cost of an
+        export: measured 21 of 24 s at level 2 before this was kept).
+        """
+        t = np.atleast_1d(np.asarray(times_s, dtype=float)) / self.case.scalings.time
+        key = (name, t.tobytes())  # u, u_t, u_tt, the body and the caption share one solve
+        if key not in self._states:
+            report = self.contact(name)
+            self._states[key] = modal_states(report.system, report.history, t)
+        return self._states[key]
+
+    def nodal(self, name: str, times_s: np.ndarray, derivative: int = 0) -> np.ndarray:
+        """Coupled u [m], u_t [m/s] or u_tt [m/s^2] at the nodes, shape (T, P).
+
+        ``u = sum_k q_k phi_k`` with ``q`` from the contact solver: eq. (C1) with
+        the contact force while the body is on.
+        """
+        scale = self.case.scalings
+        unit = (scale.length, scale.velocity, scale.acceleration)[derivative]
+        modal = self.states(name, times_s).modal(derivative)
+        return modal @ self.backend(name).shapes * unit
+
+    def body_height(self, name: str, times_s: np.ndarray) -> np.ndarray:
+        """The body's height s [m] above the undeformed pole (the contact solution)."""
+        return self.states(name, times_s).body_height * self.case.scalings.length
+
+    def motion(self, name: str, times_s: np.ndarray) -> dict[str, np.ndarray]:
+        """Cap-averaged membrane and body at ``times_s`` [s], in SI.
+
+        Keys: ``cap_m``, ``cap_t_m_s``, ``cap_tt_m_s2`` (``b . q`` and its
+        derivatives, the cap average of eq. (C3)), ``s_m``, ``s_t_m_s``,
+        ``s_tt_m_s2`` (the body), ``contact`` (bool).
+        """
+        scale = self.case.scalings
+        states = self.states(name, times_s)
+        b = self.contact(name).system.contact
+        return {
+            "cap_m": states.modal(0) @ b * scale.length,
+            "cap_t_m_s": states.modal(1) @ b * scale.velocity,
+            "cap_tt_m_s2": states.modal(2) @ b * scale.acceleration,
+            "s_m": states.body_height * scale.length,
+            "s_t_m_s": states.body_velocity * scale.velocity,
+            "s_tt_m_s2": states.body_acceleration * scale.acceleration,
+            "contact": states.contact,
+        }
+
+
+def coupled_model(
     case: Case,
     backends: Sequence[str],
-    field: FieldMesh,
+    body: Body,
+    mesh: Any,
     *,
-    initial: str | None,
-    sigma: str,
-    recontact: str,
-    t_end: float | None,
+    sigma: str = "lanczos",
+    t_end_s: float | None = None,
     progress: Step | None = None,
-    route: str = "auto",
-) -> Any:
-    """Solve ``case`` with ``backends`` on the sphere mesh ``field`` (see ``BallModel``).
+) -> CoupledModel:
+    """Solve the contact problem with ``backends`` and put their modes on one sphere mesh.
 
-    On the user's mesh the model's ``source`` holds the file's path, radius,
-    centre and pole (:attr:`FieldMesh.source`).
+    ``fem``: :func:`twoball.fem_membrane.contact.fem_contact_fields` (full
+    eigen route on the mesh of the :class:`~twoball.fem_membrane.options.MeshOptions`
+    ``mesh``); its nodes carry the fields.  ``legendre``:
+    :func:`twoball.modal.contact.report.legendre_contact` with ``P_n(cos phi)``
+    at the same nodes (or at the generated mesh's nodes).
     """
-    from twoball.fem_membrane.krylov import ROUTES
-
-    if route not in ROUTES:
-        raise ParameterError("route", "one of " + ", ".join(ROUTES), route)
-    initial = check_initial(initial, backends)
+    from twoball.modal.contact.report import legendre_contact
+    from twoball.modal.filters import SpectralFilter
+    from twoball.modal.legendre import legendre_series, legendre_shapes
     from twoball.modal.report import t_end_dimensionless
 
-    t_end_dimensionless(case, t_end)  # the window is checked before any progress line
-    if field.spec.kind == FILE and field.loaded is None:
-        field = replace(field, loaded=field.spec.load())
-    (progress or silent)(f"solving {' and '.join(backends)} on {field.spec.label}")
-    model = ball_model(
-        case,
-        field.spec.level,
-        field.order,
-        mesh=field.mesh,
-        geometry=field.spec.geometry,
-        sigma=sigma,
-        recontact=recontact,
-        t_end_s=t_end,
-        backends=tuple(backends),
-        initial=initial,
-        route=route,
-    )
-    return replace(model, source=field.source)
+    t_end = t_end_dimensionless(case, t_end_s)
+    say = progress or silent
+    solved: dict[str, Backend] = {}
+    mu = body.mass_ratio
+    if "fem" in backends:
+        from twoball.fem_membrane.contact import fem_contact_fields
+
+        say(f"contact of a body of mass ratio {mu:g} on the finite elements")
+        nodes, shapes, series, report = fem_contact_fields(
+            case, body, mesh, sigma=sigma, t_end_s=t_end_s
+        )
+        details = {k: float(v) for k, v in report.extra.items() if isinstance(v, (int, float))}
+        solved["fem"] = Backend("fem", series, shapes, report, details)
+    else:
+        membrane = membrane_case(case, mu, body.energy)
+        nodes = build_mesh(membrane, mesh.level, mesh.order, mesh.kind)
+    if "legendre" in backends:
+        say(f"contact of a body of mass ratio {mu:g} on the closed form")
+        report = legendre_contact(case, body, sigma=sigma, t_end_s=t_end_s)
+        membrane = report.membrane or case
+        series = legendre_series(membrane.phi_a, case.damping, SpectralFilter(sigma, case.modes))
+        shapes = legendre_shapes(node_polar_angles(nodes), case.modes)
+        solved["legendre"] = Backend("legendre", series, shapes, report, {"modes": case.modes})
+    return CoupledModel(case, nodes, solved, t_end, sigma, "window")
+
+
+def contact_series(series: TimeSeries, model: CoupledModel, backend: str) -> TimeSeries:
+    """``series`` with the body's path of ``backend`` and its events (SI).
+
+    Frame data (:data:`FRAME_FIELDS`): ``s_m`` [m], ``s_t_m_s`` [m/s],
+    ``contact`` (1 or 0).  Field data: ``mass_ratio``, ``contact_radius_m`` [m],
+    ``restitution``, ``impacts``, ``events``.  Texts ``upper_body`` (the options and
+    the frame data's units) and ``contact_events``: the JSON
+    list of :meth:`~twoball.modal.contact.report.ContactReport.events_si`
+    (``kind``, ``t_s``, ``height_m``, ``velocity_m_s``, ``impulse_N_s`` and
+    ``energy_loss_J`` per kg of membrane mass).
+    """
+    report = model.contact(backend)
+    motion = model.motion(backend, series.times)
+    frame_data = {
+        "s_m": motion["s_m"],
+        "s_t_m_s": motion["s_t_m_s"],
+        "contact": motion["contact"].astype(float),
+    }
+    field_data = {
+        **series.field_data,
+        "mass_ratio": report.mass_ratio,
+        "contact_radius_m": report.contact_radius_m,
+        "restitution": report.restitution,
+        "impacts": float(len(report.history.impacts)),
+        "events": float(len(report.history.events)),
+    }
+    described = "; ".join(f"{name}: {text}" for name, text in FRAME_FIELDS.items())
+    text = {
+        **series.text,
+        "contact_events": json.dumps(report.events_si()),
+        "upper_body": (
+            f"upper body of mass ratio {report.mass_ratio:g} ({backend}), contact radius "
+            f"{report.contact_radius_m:g} m, restitution {report.restitution:g}, energy "
+            f"{report.energy}; the membrane is coupled to it (docs/contact.rst); per frame "
+            f"{described}; contact_events: JSON list of the events (SI)"
+        ),
+    }
+    return replace(series, field_data=field_data, text=text, frame_data=frame_data)
+
+
+def contact_scene(model: CoupledModel, times_s: np.ndarray, backend: str) -> Any:
+    """The scene of :func:`~twoball.verify.output.fields.ball_scene` with the body's contact.
+
+    The membrane is the coupled field, the body at its height ``s(t)``; the
+    caption marks the frames in contact (:class:`twoball.verify.output.render.ContactScene`).
+    """
+    from twoball.verify.output.render import ContactScene
+
+    scene = ball_scene(model, times_s, backend)
+    report = model.contact(backend)
+    impacts = [e["t_s"] for e in report.events_si() if e["kind"] == "impact"]
+    return ContactScene(
+        scene.points, scene.cells, scene.times, scene.u, scene.body, scene.radius,
+        scene.t_liftoff, f"{scene.label}, mu = {report.mass_ratio:g}",
+        contact=model.states(backend, scene.times).contact, impacts=np.array(impacts),
+        mass_ratio=report.mass_ratio,
+    )  # fmt: skip

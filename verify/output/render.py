@@ -109,7 +109,7 @@ class BallScene:
 
 
 # --------------------------------------------------------------------------- options
-def check_size(size: tuple[int, int] | str, flag: str = "--size") -> tuple[int, int]:
+def check_size(size: tuple[int, int] | str, flag: str = "size") -> tuple[int, int]:
     """Image size ``(width, height)`` in pixels from a tuple or a ``WxH`` string."""
     valid = f"WIDTHxHEIGHT in pixels, each an integer in [16, {MAX_SIZE}]"
     if isinstance(size, str):
@@ -135,7 +135,7 @@ def round_size(size: tuple[int, int], block: int = MACRO_BLOCK) -> tuple[int, in
     return tuple(int(math.ceil(s / block) * block) for s in size)  # type: ignore[return-value]
 
 
-def check_warp(warp: float | None, flag: str = "--warp") -> float | None:
+def check_warp(warp: float | None, flag: str = "warp") -> float | None:
     """A warp factor: None (automatic) or a finite number >= 0."""
     if warp is None:
         return None

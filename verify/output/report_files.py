@@ -11,7 +11,6 @@ from __future__ import annotations
 
 import csv
 import io
-import json
 import math
 import os
 from collections.abc import Callable, Iterable, Mapping, Sequence
@@ -24,14 +23,15 @@ from twoball.verify.studies.quantities import QuantityResult
 from twoball.verify.studies.result import StudyResult
 
 from twoball._common.staging import MARKER as MARKER  # re-exported: the marker of report folders
+from twoball._common.strict_json import json_text
 
 Writer = Callable[[Path], None]
 PROVENANCE = "provenance.json"  # run times and dates: the one file that differs between runs
 
 
 # --------------------------------------------------------------------------- directories
-def check_output_dir(path: str | os.PathLike[str], flag: str = "--out") -> Path:
-    """Validate a report directory before any work is done (:func:`twoball._common.staging.check_folder`).
+def check_output_dir(path: str | os.PathLike[str], flag: str = "out") -> Path:
+    """Validate a report directory before any work is done.
 
     ``path`` may be missing, empty or an earlier twoball output (only the files
     its marker lists); anything else raises ParameterError naming ``flag``.
@@ -120,29 +120,6 @@ def result_files(
 
 
 # --------------------------------------------------------------------------- file writers
-def clean_json(value: Any) -> Any:
-    """Replace NaN/inf by None and numpy scalars/arrays by Python values (strict JSON)."""
-    if isinstance(value, dict):
-        return {str(k): clean_json(v) for k, v in value.items()}
-    if isinstance(value, (list, tuple)):
-        return [clean_json(v) for v in value]
-    if isinstance(value, np.ndarray):
-        return clean_json(value.tolist())
-    if isinstance(value, np.bool_):
-        return bool(value)
-    if isinstance(value, (np.integer,)):
-        return int(value)
-    if isinstance(value, (float, np.floating)):
-        value = float(value)
-        return value if math.isfinite(value) else None
-    return value
-
-
-def json_text(data: Any) -> str:
-    """Strict JSON (two-space indent, NaN as null) with a trailing newline."""
-    return json.dumps(clean_json(data), indent=2, allow_nan=False) + "\n"
-
-
 def text_writer(text: str) -> Writer:
     """A writer of a fixed text (UTF-8)."""
 

@@ -55,7 +55,7 @@ def parse_only(text: str | None) -> list[str]:
     names = [t.strip() for t in text.split(",") if t.strip()]
     unknown = [n for n in names if n not in PARTS]
     if not names or unknown:
-        raise ParameterError("--only", "a comma-separated subset of " + ",".join(PARTS), text)
+        raise ParameterError("only", "a comma-separated subset of " + ",".join(PARTS), text)
     return [p for p in PARTS if p in names]
 
 

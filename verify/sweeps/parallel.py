@@ -47,7 +47,7 @@ MAX_CHUNK = 32
 #: Chunks aimed at per worker (load balance and progress granularity).
 CHUNKS_PER_WORKER = 8
 
-VALID_RANGES = {"--workers": "an integer >= 1"}
+VALID_RANGES = {"workers": "an integer >= 1"}
 #: How long to try reaching a Dask scheduler before giving up (``--scheduler``).
 CONNECT_TIMEOUT = "10s"
 
@@ -98,7 +98,7 @@ def check_workers(workers: int | None) -> int:
     if workers is None:
         return default_workers()
     if isinstance(workers, bool) or not isinstance(workers, Integral) or workers < 1:
-        raise ParameterError("--workers", VALID_RANGES["--workers"], workers)
+        raise ParameterError("workers", VALID_RANGES["workers"], workers)
     return int(workers)
 
 
@@ -152,7 +152,7 @@ class Runner:
     def __init__(self, workers: int | None = None, scheduler: str | None = None) -> None:
         if scheduler and workers is not None:
             raise ParameterError(
-                "--workers", "left out with --scheduler (the cluster decides)", workers
+                "workers", "left out with scheduler (the cluster decides)", workers
             )
         self.workers = check_workers(workers)
         self.scheduler = scheduler
@@ -318,13 +318,13 @@ def _connect(address: str | None) -> Any:
         from distributed import Client
     except ImportError:
         raise ParameterError(
-            "--scheduler", "used with dask installed (pip install 'twoball[dask]')", address
+            "scheduler", "used with dask installed (pip install 'twoball[dask]')", address
         ) from None
     try:
         return Client(address, timeout=CONNECT_TIMEOUT, set_as_default=False)
     except (OSError, TimeoutError, ValueError) as exc:
         raise ParameterError(
-            "--scheduler",
+            "scheduler",
             f"the address of a running dask.distributed scheduler ({type(exc).__name__})",
             address,
         ) from None

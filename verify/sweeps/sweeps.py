@@ -10,10 +10,8 @@ with ``error`` set, next to its parameters.
 from __future__ import annotations
 
 import math
-import os
 from collections.abc import Callable, Iterable, Sequence
 from dataclasses import dataclass
-from pathlib import Path
 from typing import Any
 
 import numpy as np
@@ -45,7 +43,7 @@ PARAMETER_LABELS: dict[str, str] = {
 }
 
 
-def parse_range(text: str, name: str = "--values") -> np.ndarray:
+def parse_range(text: str, name: str = "values") -> np.ndarray:
     """The values of ``text`` in the one list syntax (:mod:`twoball._common.ranges`).
 
     ``START:STOP:COUNT`` gives ``COUNT`` evenly spaced values from START to STOP
@@ -67,14 +65,14 @@ def parse_range(text: str, name: str = "--values") -> np.ndarray:
 def _field_value(field: str, value: float) -> float | int:
     if field == "modes":
         if float(value) != round(float(value)):
-            raise ParameterError("--values", "whole numbers for --param modes", value)
+            raise ParameterError("values", "whole numbers for param modes", value)
         return int(round(float(value)))
     return float(value)
 
 
 def _check_parameter(parameter: str) -> str:
     if parameter not in SWEEP_PARAMETERS:
-        raise ParameterError("--param", "one of " + ", ".join(SWEEP_PARAMETERS), parameter)
+        raise ParameterError("param", "one of " + ", ".join(SWEEP_PARAMETERS), parameter)
     return SWEEP_PARAMETERS[parameter]
 
 
@@ -128,15 +126,15 @@ def make_grid(parameters: Sequence[str], values: Sequence[str]) -> SweepGrid:
     parameters = list(parameters or [])
     values = list(values or [])
     if not 1 <= len(parameters) <= 2:
-        raise ParameterError("--param", "given once (1-D sweep) or twice (grid)", len(parameters))
+        raise ParameterError("param", "given once (1-D sweep) or twice (grid)", len(parameters))
     if len(values) != len(parameters):
         raise ParameterError(
-            "--values",
-            f"given once per --param ({len(parameters)} times here), in the same order",
+            "values",
+            f"given once per param ({len(parameters)} times here), in the same order",
             values,
         )
     if len(set(parameters)) != len(parameters):
-        raise ParameterError("--param", "two different parameters for a grid", parameters)
+        raise ParameterError("param", "two different parameters for a grid", parameters)
     for p in parameters:
         _check_parameter(p)
     arrays = tuple(parse_range(v) for v in values)
@@ -153,17 +151,21 @@ class SweepSolver:
     #: the converged-series reference of the truncation guard (10 ms-1 s a point: off)
     reference: bool = False
 
-    #: contact options of a ``mass-ratio`` sweep (:mod:`twoball.modal.contact`)
-    contact_radius: float | None = None
+    #: the upper body of finite mass (:class:`~twoball.modal.contact.body.Body`) on
+    #: every point; a ``mass-ratio`` point replaces its mass ratio
+    body: Any = None
 
     def __call__(self, case: Case) -> LiftoffReport:
-        if hasattr(case, "mass_ratio"):
+        if hasattr(case, "mass_ratio") or self.body is not None:
+            from dataclasses import replace
+
             from twoball.modal.contact.report import legendre_contact
 
-            return legendre_contact(
-                case.case, case.mass_ratio, self.contact_radius, sigma=self.sigma,
-                t_end_s=self.t_end_s,
-            )  # fmt: skip
+            body, plain = self.body, case
+            if hasattr(case, "mass_ratio"):
+                plain = case.case
+                body = replace(body, mass_ratio=case.mass_ratio)
+            return legendre_contact(plain, body, sigma=self.sigma, t_end_s=self.t_end_s)
         return legendre_liftoff(
             case, self.sigma, self.recontact, self.t_end_s, reference=self.reference
         )
@@ -253,29 +255,3 @@ def run_sweep(
         SweepPoint(index, case, o.value if o.ok else None, o.error)
         for index, case, o in zip(indices, cases, outcomes, strict=True)
     ]
-
-
-# --- plots -------------------------------------------------------------------
-
-
-def plot_sweep(grid: SweepGrid, points: list[SweepPoint], target: str | os.PathLike[str]) -> Path:
-    """Write :func:`~twoball.verify.output.figures.sweep.sweep_figure` to ``target``.
-
-    The format follows the suffix (``.png``, ``.pdf``, ``.svg``, ...).  The path
-    was checked before the sweep by :func:`check_plot_path`; the file is
-    replaced whole or not at all (:func:`twoball._common.staging.staged_file`).
-    """
-    from twoball.verify.output.figures import REPORT_DPI, save_figure
-    from twoball.verify.output.figures.sweep import sweep_figure
-
-    return save_figure(sweep_figure(grid, points), target, "--plot", dpi=REPORT_DPI)
-
-
-def check_plot_path(path: str, flag: str = "--plot") -> Path:
-    """A figure path (any format matplotlib writes, not a folder or link) in a writable folder."""
-    from twoball.verify.output.figures import figure_format
-
-    from twoball._common.staging import check_file
-
-    figure_format(path, flag)
-    return check_file(path, flag)

@@ -91,9 +91,9 @@ def new_figure(width: float, height: float) -> Any:
 def save_figure(
     figure: Any,
     path: str | os.PathLike[str],
-    flag: str = "--out",
+    flag: str = "out",
     dpi: float | None = None,
-    dpi_flag: str = "--dpi",
+    dpi_flag: str = "dpi",
 ) -> Path:
     """Write ``figure`` to ``path`` in the format of its suffix, atomically.
 

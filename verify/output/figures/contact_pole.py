@@ -14,7 +14,7 @@ from __future__ import annotations
 from typing import TYPE_CHECKING, Any
 
 import numpy as np
-from twoball.verify.output.contact_fields import CoupledModel
+from twoball.verify.output.fields import CoupledModel
 from twoball.verify.output.figures import LABELS, new_figure
 from twoball.verify.output.figures.pole import _clip_acceleration, _draw_differences
 from twoball.verify.output.figures.style import (
@@ -52,7 +52,7 @@ def contact_pole_figure(model: CoupledModel, samples: int = 2500) -> Figure:
     ----------
     model : CoupledModel
         The contact solution of one or both backends
-        (:func:`twoball.verify.output.contact_fields.coupled_model`).
+        (:func:`twoball.verify.output.fields.coupled_model`).
     samples : int
         Times over the window.
 

@@ -53,10 +53,10 @@ def eigen_table(level: int, order: int, max_degree: int | None = None) -> EigenT
     if max_degree is None:
         max_degree = min(30, int(math.isqrt(n // 2)) - 1)
     if isinstance(max_degree, bool) or int(max_degree) != max_degree or max_degree < 1:
-        raise ParameterError("--max-degree", "an integer >= 1", max_degree)
+        raise ParameterError("max_degree", "an integer >= 1", max_degree)
     if (max_degree + 1) ** 2 > n:
         raise ParameterError(
-            "--max-degree", f"at most {math.isqrt(n) - 1} on this mesh ({n} unknowns)", max_degree
+            "max_degree", f"at most {math.isqrt(n) - 1} on this mesh ({n} unknowns)", max_degree
         )
     values = lowest_eigenpairs(space.stiffness, space.mass, (max_degree + 1) ** 2).values
     degrees = np.arange(max_degree + 1)

@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+import os
+from pathlib import Path
 from typing import TYPE_CHECKING
 
 import numpy as np
@@ -61,3 +63,14 @@ def sweep_figure(grid: SweepGrid, points: list[SweepPoint]) -> Figure:
     title = "Closed-form lift-off sweep" + (f" ({errors} points failed)" if errors else "")
     fig.suptitle(title)
     return fig
+
+
+def plot_sweep(grid: SweepGrid, points: list[SweepPoint], target: str | os.PathLike[str]) -> Path:
+    """Write :func:`sweep_figure` to ``target`` (checked before the sweep).
+
+    The format follows the suffix (``.png``, ``.pdf``, ``.svg``, ...); the file
+    is replaced whole or not at all (:func:`twoball._common.staging.staged_file`).
+    """
+    from twoball.verify.output.figures import REPORT_DPI, save_figure
+
+    return save_figure(sweep_figure(grid, points), target, "plot", dpi=REPORT_DPI)

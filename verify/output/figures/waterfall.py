@@ -21,7 +21,7 @@ WATERFALL_INSTANTS = 24  # as in Fig. 6
 def waterfall_times(model: BallModel, instants: int = WATERFALL_INSTANTS) -> np.ndarray:
     """``instants`` evenly spaced times [s] over the modelled window [0, t_end]."""
     if isinstance(instants, bool) or not isinstance(instants, int | np.integer) or instants < 2:
-        raise ParameterError("--instants", "an integer >= 2", instants)
+        raise ParameterError("instants", "an integer >= 2", instants)
     return np.linspace(0.0, model.t_end_s, int(instants))
 
 
@@ -73,13 +73,13 @@ def waterfall_figure(
     if "fem" in model.backends:
         curves["fem"] = (node_polar_angles(model.mesh), model.nodal("fem", times, 0))
     if not curves:
-        raise ParameterError("--backend", "at least one of fem, legendre")
+        raise ParameterError("backends", "at least one of fem, legendre")
     values = np.concatenate([u[1:].ravel() for _, u in curves.values()]) * 1e3
     if offset_mm is None:
         spread = float(np.percentile(np.abs(values), 99.5)) if values.size else 1.0
         offset_mm = 1.5 * spread if spread > 0 else 1.0
     if not (math.isfinite(offset_mm) and offset_mm > 0):
-        raise ParameterError("--offset", "a number > 0 [mm]", offset_mm)
+        raise ParameterError("offset", "a number > 0 [mm]", offset_mm)
     colours = _colours(len(times))
     for k, t in enumerate(times):
         shift = k * offset_mm

@@ -1,0 +1,165 @@
+"""Damping laws: one object per law, giving the damping ratio of a mode of frequency omega.
+
+Dimensionless (frequencies in units of c).  A law is shared by every backend:
+the closed form and finite-element modal superposition damp mode n by its
+ratio ``zeta(omega_n)``; finite-element time stepping builds its damping
+operator from the same law (:mod:`twoball.fem_membrane.damping`).
+
+:class:`ModalRatio`
+    One ratio D for every mode, eq. (3.14): the paper's law.  As an operator
+    ``2 D sqrt(-Delta_s) d/dt`` it is non-local (M. H. Scott, "Be careful with
+    modal damping", 2019; Kelly, McGough & Meerschaert, JASA 124, 2008).
+:class:`Rayleigh`
+    ``C = alpha M + beta K`` (mass- and stiffness-proportional, local and
+    causal): ``zeta(omega) = alpha / (2 omega) + beta omega / 2``.  Without
+    ``alpha`` and ``beta`` it is fitted to the case's ratio D at omega_1 =
+    sqrt(2) and at the spectral filter's cutoff, by the solver that knows it.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+from typing import Any
+
+from twoball._common.errors import ParameterError, real_number
+
+__all__ = ["DAMPING_LAWS", "ModalRatio", "Rayleigh", "damping_law"]
+
+#: Lower fitting frequency of a fitted Rayleigh law: omega_1 of the sphere.
+RAYLEIGH_LOW = math.sqrt(2.0)
+
+
+@dataclass(frozen=True)
+class ModalRatio:
+    """The paper's modal damping: ratio ``ratio`` on every mode, eq. (3.14).
+
+    Parameters
+    ----------
+    ratio : float
+        Damping ratio D in [0, 1).
+
+    Examples
+    --------
+    >>> import twoball
+    >>> law = twoball.ModalRatio(0.13)
+    >>> law.as_dict()
+    {'law': 'modal', 'ratio': 0.13}
+    >>> twoball.ModalRatio(1.5)
+    Traceback (most recent call last):
+    ...
+    twoball.ParameterError: damping must be in [0, 1), got 1.5
+    """
+
+    ratio: float
+
+    name = "modal"
+
+    def __post_init__(self) -> None:
+        value = real_number("damping", self.ratio, "in [0, 1)")
+        if not 0.0 <= value < 1.0:
+            raise ParameterError("damping", "in [0, 1)", self.ratio)
+        object.__setattr__(self, "ratio", value)
+
+    def ratios(self, omega: Any) -> Any:
+        """``zeta`` of modes of frequencies ``omega`` (array-like): ``D`` everywhere."""
+        import numpy as np
+
+        return np.full(np.shape(omega), self.ratio)
+
+    def as_dict(self) -> dict[str, Any]:
+        """``{"law": "modal", "ratio": D}``."""
+        return {"law": self.name, "ratio": self.ratio}
+
+
+@dataclass(frozen=True)
+class Rayleigh:
+    """Rayleigh (Kelvin-Voigt) damping ``C = alpha M + beta K``, dimensionless.
+
+    Parameters
+    ----------
+    alpha : float, optional
+        Mass-proportional coefficient >= 0, in units of c.
+    beta : float, optional
+        Stiffness-proportional coefficient >= 0, in units of 1/c.
+
+    Give both, or neither: then the solver fits them so that the ratio equals
+    the case's D at omega_1 = sqrt(2) and at its spectral filter's cutoff.
+
+    Examples
+    --------
+    >>> import twoball
+    >>> law = twoball.Rayleigh(alpha=0.1, beta=0.01)
+    >>> round(float(law.ratios(2.0)), 6)
+    0.035
+    >>> twoball.Rayleigh.fit(0.13, 2**0.5, 30.0).alpha > 0
+    True
+    """
+
+    alpha: float | None = None
+    beta: float | None = None
+
+    name = "rayleigh"
+
+    def __post_init__(self) -> None:
+        if (self.alpha is None) != (self.beta is None):
+            given = "alpha" if self.beta is None else "beta"
+            raise ParameterError(
+                given, "given together with the other (or neither: fitted to D)", None
+            )
+        for field in ("alpha", "beta"):
+            value = getattr(self, field)
+            if value is not None:
+                number = real_number(field, value, "a finite number >= 0")
+                if number < 0.0:
+                    raise ParameterError(field, "a finite number >= 0", value)
+                object.__setattr__(self, field, number)
+
+    @property
+    def fitted(self) -> bool:
+        """True when alpha and beta are left to the solver (fitted to D)."""
+        return self.alpha is None
+
+    @classmethod
+    def fit(cls, ratio: float, omega_low: float, omega_high: float) -> Rayleigh:
+        """The law whose ratio is ``ratio`` at ``omega_low`` and ``omega_high``.
+
+        ``alpha = 2 D w1 w2 / (w1 + w2)``, ``beta = 2 D / (w1 + w2)``.
+        """
+        ratio = ModalRatio(ratio).ratio
+        low, high = float(omega_low), float(omega_high)
+        if not (math.isfinite(low) and math.isfinite(high) and 0.0 < low < high):
+            raise ParameterError(
+                "rayleigh_frequencies", "two finite frequencies 0 < w1 < w2", (low, high)
+            )
+        return cls(2.0 * ratio * low * high / (low + high), 2.0 * ratio / (low + high))
+
+    def ratios(self, omega: Any) -> Any:
+        """``zeta(omega) = alpha / (2 omega) + beta omega / 2`` (inf at omega = 0)."""
+        import numpy as np
+
+        if self.fitted:
+            raise ParameterError("damping", "a Rayleigh law with alpha and beta here", self)
+        omega = np.asarray(omega, dtype=float)
+        with np.errstate(divide="ignore"):
+            return self.alpha / (2.0 * omega) + 0.5 * self.beta * omega
+
+    def as_dict(self) -> dict[str, Any]:
+        """``{"law": "rayleigh", "alpha": ..., "beta": ...}`` (None: fitted to D)."""
+        return {"law": self.name, "alpha": self.alpha, "beta": self.beta}
+
+
+#: The laws by name (the command line's choices).
+DAMPING_LAWS: dict[str, type] = {ModalRatio.name: ModalRatio, Rayleigh.name: Rayleigh}
+
+
+def damping_law(law: Any, ratio: float) -> ModalRatio | Rayleigh:
+    """``law`` as a law object: None is the paper's :class:`ModalRatio` with ``ratio``.
+
+    Raises :class:`ParameterError` naming ``damping`` for anything else.
+    """
+    if law is None:
+        return ModalRatio(ratio)
+    if isinstance(law, (ModalRatio, Rayleigh)):
+        return law
+    raise ParameterError("damping", "a twoball.ModalRatio or twoball.Rayleigh", law)

@@ -1,0 +1,133 @@
+"""The option bundles of the public verbs, and the keyword spellings they replace.
+
+Every verb takes its options as small validated objects: the mesh as
+:class:`~twoball.MeshOptions` (or a kind name, or the user's mesh), the time
+options as :class:`~twoball.Stepping`, an upper body as :class:`~twoball.Body`
+and the damping law as :class:`~twoball.ModalRatio` or :class:`~twoball.Rayleigh`.
+The loose keywords of version 0.2 (``level=3``, ``t_end=0.02``,
+``mass_ratio=0.1``, ``damping_model="rayleigh"``, ...) are still taken for one
+release, with a :class:`DeprecationWarning`, and turned into those objects here.
+"""
+
+from __future__ import annotations
+
+import warnings
+from typing import Any
+
+from twoball._common.errors import ParameterError
+
+__all__ = ["Bundles", "bundles", "with_damping"]
+
+MESH_KEYS = ("level", "elements", "order", "pole", "geometry", "initial")
+STEPPING_KEYS = ("t_end", "dt", "scheme", "route")
+BODY_KEYS = ("mass_ratio", "contact_radius", "restitution", "energy")
+OLD_KEYS = (*MESH_KEYS, *STEPPING_KEYS, *BODY_KEYS, "damping_model")
+
+
+class Bundles:
+    """The mesh, stepping, body and damping of one call, each None when not given."""
+
+    __slots__ = ("body", "damping", "mesh", "stepping")
+
+    def __init__(self, mesh: Any, stepping: Any, body: Any, damping: Any) -> None:
+        self.mesh, self.stepping, self.body, self.damping = mesh, stepping, body, damping
+
+    def as_dict(self) -> dict[str, Any]:
+        """Each given bundle's ``as_dict()`` (a mesh kind name as it is), for provenance."""
+        out: dict[str, Any] = {}
+        for name in ("mesh", "stepping", "body", "damping"):
+            value = getattr(self, name)
+            if value is not None:
+                out[name] = value.as_dict() if hasattr(value, "as_dict") else value
+        return out
+
+
+def bundles(
+    verb: str,
+    *,
+    mesh: Any = None,
+    stepping: Any = None,
+    body: Any = None,
+    damping: Any = None,
+    old: dict[str, Any] | None = None,
+    takes: tuple[str, ...] = ("mesh", "stepping", "body", "damping"),
+) -> Bundles:
+    """Check the bundles' types and fold the old keywords ``old`` into them.
+
+    Parameters
+    ----------
+    verb : str
+        The verb's name, for the warning (``twoball.liftoff``).
+    mesh, stepping, body, damping
+        As the verb received them.
+    old : dict, optional
+        Keywords outside the signature: each of :data:`OLD_KEYS` is folded in
+        with a :class:`DeprecationWarning`; any other is a ``TypeError``, as
+        Python gives for an unknown keyword.
+    takes : tuple of str
+        The bundles this verb has (an old keyword of another is unknown).
+    """
+    from twoball.fem_membrane.options import MeshOptions
+    from twoball.modal.contact.body import Body
+    from twoball.modal.damping import ModalRatio, Rayleigh
+    from twoball.modal.stepping import Stepping
+
+    old = {k: v for k, v in (old or {}).items()}
+    known = {
+        "mesh": MESH_KEYS,
+        "stepping": STEPPING_KEYS,
+        "body": BODY_KEYS,
+        "damping": ("damping_model",),
+    }
+    allowed = {k for bundle in takes for k in known[bundle]}
+    for key in old:
+        if key not in allowed:
+            raise TypeError(f"{verb}() got an unexpected keyword argument {key!r}")
+    given = {k: v for k, v in old.items() if v is not None}
+    if given:
+        warnings.warn(
+            f"{verb}: the keywords {', '.join(sorted(given))} are deprecated; pass "
+            "mesh=MeshOptions(...), stepping=Stepping(...), body=Body(...) or "
+            "damping=ModalRatio(...)/Rayleigh(...) instead",
+            DeprecationWarning,
+            stacklevel=3,
+        )
+    fields = {k: old.get(k) for k in MESH_KEYS}
+    if any(v is not None for v in fields.values()) or (mesh is not None and "mesh" in takes):
+        mesh = MeshOptions.of(mesh, **fields)
+    step = {k: old[k] for k in STEPPING_KEYS if old.get(k) is not None}
+    if step:
+        if stepping is not None:
+            raise ParameterError(next(iter(step)), "left out with stepping (set it there)", None)
+        stepping = Stepping(**step)
+    if stepping is not None and not isinstance(stepping, Stepping):
+        raise ParameterError("stepping", "a twoball.Stepping", type(stepping).__name__)
+    mass = {k: old[k] for k in BODY_KEYS if old.get(k) is not None}
+    if mass:
+        if body is not None:
+            raise ParameterError(next(iter(mass)), "left out with body (set it there)", None)
+        if "mass_ratio" not in mass:
+            key = next(iter(mass))
+            raise ParameterError(key, "given only with mass_ratio", mass[key])
+        body = Body(**mass)
+    if body is not None and not isinstance(body, Body):
+        raise ParameterError("body", "a twoball.Body", type(body).__name__)
+    model = old.get("damping_model")
+    if model is not None:
+        if damping is not None:
+            raise ParameterError("damping_model", "left out with damping (set it there)", model)
+        if model not in ("modal", "rayleigh"):
+            raise ParameterError("damping_model", "one of modal, rayleigh", model)
+        damping = Rayleigh() if model == "rayleigh" else None
+    if damping is not None and not isinstance(damping, (ModalRatio, Rayleigh)):
+        raise ParameterError("damping", "a twoball.ModalRatio or twoball.Rayleigh", damping)
+    return Bundles(mesh, stepping, body, damping)
+
+
+def with_damping(case: Any, law: Any) -> Any:
+    """``case`` with the paper's ratio of a :class:`ModalRatio` law (else as it is)."""
+    from twoball.modal.damping import ModalRatio
+
+    if isinstance(law, ModalRatio) and law.ratio != case.damping:
+        return case.derive(damping=law.ratio)
+    return case

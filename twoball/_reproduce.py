@@ -1,0 +1,105 @@
+"""``twoball.reproduce``: the paper's figures and numbers recomputed, in one directory."""
+
+from __future__ import annotations
+
+import os
+from collections.abc import Callable, Sequence
+from dataclasses import dataclass, field
+from pathlib import Path
+from typing import Any
+
+__all__ = ["Reproduction", "reproduce"]
+
+
+@dataclass(frozen=True)
+class Reproduction:
+    """What :func:`reproduce` wrote: the directory and one section per part.
+
+    Attributes
+    ----------
+    directory : Path
+        The output directory (``reproduction.md``, ``reproduction.json``, figures).
+    sections : list
+        One per part, in report order: ``key``, ``title``, ``figures``,
+        ``comparisons`` (paper value, ours, difference), ``seconds``.
+    """
+
+    directory: Path
+    sections: list[Any] = field(default_factory=list)
+
+    @property
+    def figures(self) -> int:
+        """How many figures were written."""
+        return sum(len(s.figures) for s in self.sections)
+
+    def as_dict(self) -> dict[str, Any]:
+        """The directory and, per part, its figure and comparison counts and run time."""
+        return {
+            "directory": str(self.directory),
+            "sections": [
+                {
+                    "key": s.key,
+                    "figures": len(s.figures),
+                    "comparisons": len(s.comparisons),
+                    "seconds": s.seconds,
+                }
+                for s in self.sections
+            ],
+        }
+
+
+def reproduce(
+    out: str | os.PathLike[str] | None = None,
+    *,
+    only: str | Sequence[str] | None = None,
+    workers: int | None = None,
+    scheduler: str | None = None,
+    progress: Callable[[str, int], Callable[[int], None]] | None = None,
+    command: str = "twoball reproduce",
+) -> Reproduction:
+    """Recompute the paper's figures, tables and thresholds beside ours, into ``out``.
+
+    Parameters
+    ----------
+    out : path, optional
+        Output directory (default ``./twoball-reproduction``); its parent must
+        exist, and an existing one must be empty or an earlier reproduction.  It
+        is replaced only when everything is written.
+    only : str or sequence of str, optional
+        A subset of the parts (``"table1,fig11"`` or a list); default all.
+    workers : int, optional
+        Local worker processes for the sweeps (default: all cores; 1 = serial).
+    scheduler : str, optional
+        Address of a dask.distributed scheduler for the sweeps (not with ``workers``).
+    progress : callable, optional
+        ``progress(label, total)`` starts a counted task and returns its
+        ``update(done)`` (:meth:`twoball.Reporter.task`).
+    command : str
+        How the run is named in the report's header.
+
+    Returns
+    -------
+    Reproduction
+
+    Examples
+    --------
+    >>> import tempfile, pathlib, twoball
+    >>> folder = pathlib.Path(tempfile.mkdtemp()) / "paper"
+    >>> done = twoball.reproduce(folder, only="table1", workers=1)
+    >>> (done.directory / "reproduction.md").exists(), done.sections[0].key
+    (True, 'table1')
+    """
+    from twoball.verify.reproduce.driver import DEFAULT_OUT, check_output, parse_only
+    from twoball.verify.reproduce.driver import reproduce as run_reproduction
+    from twoball.verify.sweeps.parallel import Runner, check_workers
+
+    if only is not None and not isinstance(only, str):
+        only = ",".join(str(part) for part in only)
+    names = parse_only(only)
+    if not scheduler:
+        workers = check_workers(workers)
+    out = DEFAULT_OUT if out is None else out
+    check_output(out)  # fail before any work
+    with Runner(workers, scheduler) as runner:
+        target, sections = run_reproduction(out, names, runner, progress, command)
+    return Reproduction(target, sections)

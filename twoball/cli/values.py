@@ -1,0 +1,27 @@
+"""Argument types of the command line that leave every range check to the API.
+
+``--radius abc`` or ``--level 2.5`` reach the public function as they were
+typed (a string, a float), and the option object or model that owns the
+parameter refuses them with its one message naming the valid range; so no
+range is written twice.
+"""
+
+from __future__ import annotations
+
+__all__ = ["integer", "number"]
+
+
+def number(text: str) -> float | str:
+    """``text`` as a float if it reads as one, else the text itself."""
+    try:
+        return float(text)
+    except ValueError:
+        return text
+
+
+def integer(text: str) -> int | float | str:
+    """``text`` as an int if it reads as one, else as :func:`number`."""
+    try:
+        return int(text)
+    except ValueError:
+        return number(text)
