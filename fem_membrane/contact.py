@@ -139,13 +139,12 @@ def fem_contact_solution(
     elements), no mesh file.  The model holds the eigenvectors the contact
     solver moved (fields of :mod:`twoball.fem_membrane.contact_fields`).
     """
+    from twoball.fem_membrane.cost import check_fem
     from twoball.fem_membrane.options import MeshOptions
     from twoball.modal.contact.caps import cap_angle
     from twoball.modal.contact.report import check_contact_options, membrane_case, solve_contact
     from twoball.modal.filters import SpectralFilter
     from twoball.modal.report import t_end_dimensionless
-
-    from twoball._common.budget import check_fem
 
     radius = check_contact_options(case, body)
     spec = MeshOptions.of(mesh).require(files=False)

@@ -34,6 +34,7 @@ from twoball.fem_membrane.checks import (
     check_rho_inf,
     check_t_end,
 )
+from twoball.fem_membrane.cost import check_fem
 from twoball.fem_membrane.damping import ModalDamping, rayleigh_matrix, rayleigh_table
 from twoball.fem_membrane.eigen import Eigenpairs, eigenpairs
 from twoball.fem_membrane.initial import initial_moments
@@ -49,7 +50,6 @@ from twoball.modal.liftoff import DEFAULT_T_END, PoleMotion, SampledPoleMotion
 from twoball.modal.series import ModalSeries, check_damping
 from twoball.modal.stiffness import Stiffness
 
-from twoball._common.budget import check_fem
 from twoball._common.errors import ParameterError
 
 STEP_ACCURACY = 0.2  # automatic dt: omega_cut * dt <= 0.2

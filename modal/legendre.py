@@ -22,7 +22,7 @@ from twoball.modal.stiffness import Stiffness
 
 from twoball._common.errors import NumericalError, ParameterError
 
-_MAX_QUADRATURE = 20000
+MAX_QUADRATURE = 20000
 
 
 _DENSE_JACOBI_MAX = 256  # up to this many points numpy's dense eigvalsh is as fast as scipy's
@@ -88,7 +88,7 @@ def quadrature_points(modes: int, phi_a: float) -> int:
     half = (1.0 + xa) / 2.0
     xi = 1.0 + (-xa) / half  # pole position in the interval's reference coordinate
     rho = xi + math.sqrt(xi * xi - 1.0)
-    return min(_MAX_QUADRATURE, modes + math.ceil(24.0 / math.log(rho)) + 8)
+    return min(MAX_QUADRATURE, modes + math.ceil(24.0 / math.log(rho)) + 8)
 
 
 def legendre_coefficients(phi_a: float, modes: int) -> np.ndarray:

@@ -197,7 +197,7 @@ def legendre_liftoff(
     reference: bool = True,
 ) -> LiftoffReport:
     """Lift-off of the closed-form CEM, eqs. (3.12)-(3.16) with criteria (i)-(ii) of §3(a)."""
-    from twoball._common.budget import check_series
+    from twoball.modal.cost import check_series
 
     check_series(case.modes, t_end_dimensionless(case, t_end_s), t_end_s)
     series = legendre_series(

@@ -128,8 +128,8 @@ def _refuse_fem_options(given: Any, why: str = "with backend legendre") -> None:
     if given.stepping is not None:
         given.stepping.refuse(f"{why} (no time steps)", "scheme", "dt", "route")
     if isinstance(given.damping, Rayleigh):
-        valid = "a ModalRatio on the closed form (Rayleigh: backend fem with scheme alpha)"
-        raise ParameterError("damping", valid, given.damping.as_dict())
+        valid = "the paper's modal ratio on the closed form (Rayleigh: fem with scheme alpha)"
+        raise ParameterError("damping", valid, "rayleigh")
 
 
 def _contact_liftoff(case: Case, backend: str, given: Any, sigma: str, recontact: str) -> Any:

@@ -124,8 +124,8 @@ def sweep(
     """
     import numpy as np
 
-    from twoball._common.budget import check_sweep
     from twoball.modal.report import t_end_dimensionless
+    from twoball.verify.sweeps.cost import check_sweep
     from twoball.verify.sweeps.parallel import MIN_PARALLEL_ITEMS, Runner, check_workers
     from twoball.verify.sweeps.sweeps import SWEEP_PARAMETERS, SweepGrid, SweepSolver, run_sweep
 

@@ -106,7 +106,7 @@ def solve(
 
         dt_scaled = check_dt_in_window(dt, case.scalings.time, t_end_dimensionless(case, t_end))
     if spec.kind != "file":  # the budget in the user's units (the model layer checks again)
-        from twoball._common.budget import check_fem
+        from twoball.fem_membrane.cost import check_fem
 
         check_fem(
             spec.kind,
@@ -225,7 +225,8 @@ def eigen(
     [(1, 2.0), (2, 6.0), (3, 12.0)]
     """
     given = bundles("twoball.fem.eigen", mesh=mesh, old=deprecated, takes=("mesh",))
-    from twoball._common.budget import check, fem_dofs, fem_estimate, options
+    from twoball._common.budget import check, options
+    from twoball.fem_membrane.cost import fem_dofs, fem_estimate
     from twoball.fem_membrane.eigen import eigen_table
 
     spec = MeshOptions.of(given.mesh)
