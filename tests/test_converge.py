@@ -4,9 +4,9 @@ import json
 
 import numpy as np
 import pytest
+from twoball.modal.converged import converged_legendre
 from twoball.modal.parameters import preset
 from twoball.verify.studies.modes import parse_modes, run_modes_study
-from twoball.verify.studies.reference import converged_legendre
 from twoball.verify.studies.refinement import run_h_study, run_order_study
 from twoball.verify.studies.time_step import run_dt_study
 

@@ -39,8 +39,9 @@ def _case(case: Case | None) -> Case:
 def _field_bundles(verb: str, mesh: Any, stepping: Any, body: Any, old: dict[str, Any]) -> Any:
     """The bundles of a field verb: mesh, stepping (window and route only) and body."""
     times = old.pop("times", None)
-    given = bundles(verb, mesh=mesh, stepping=stepping, body=body, old=old,
-                    takes=("mesh", "stepping", "body"))  # fmt: skip
+    given = bundles(
+        verb, mesh=mesh, stepping=stepping, body=body, old=old, takes=("mesh", "stepping", "body")
+    )
     if given.stepping is not None:
         given.stepping.refuse("with field outputs (modal superposition)", "scheme", "dt")
     return given, times
@@ -185,9 +186,16 @@ def export(
         check_frame_budget(case, frames or DEFAULT_FRAMES, "frames", field)
     say = progress or silent
     model = ball_model(
-        case, field, backends=BACKENDS, body=given.body, sigma=sigma, recontact=recontact,
-        t_end_s=t_end, route=route, progress=say,
-    )  # fmt: skip
+        case,
+        field,
+        backends=BACKENDS,
+        body=given.body,
+        sigma=sigma,
+        recontact=recontact,
+        t_end_s=t_end,
+        route=route,
+        progress=say,
+    )
     if fmt == "vtu" and times is None and frames is None:
         selected = liftoff_frame(model, backend)
     elif fmt == "vtu" and frames == 1:
@@ -327,9 +335,10 @@ def render(
     t_end, route = _window(given)
     if given.mesh is not None and given.mesh.initial is not None and backend != "fem":
         raise ParameterError(
-            "initial", "left out without the fem backend (it sets the FE initial state)",
+            "initial",
+            "left out without the fem backend (it sets the FE initial state)",
             given.mesh.initial,
-        )  # fmt: skip
+        )
     count, times = _frames(frames, legacy_times)
     if kind == ".png" and count is not None:
         raise ParameterError(
@@ -347,9 +356,16 @@ def render(
         check_frame_budget(case, number, "frames", field)
     say = progress or silent
     model = ball_model(
-        case, field, backends=(backend,), body=given.body, sigma=sigma, recontact=recontact,
-        t_end_s=t_end, route=route, progress=say,
-    )  # fmt: skip
+        case,
+        field,
+        backends=(backend,),
+        body=given.body,
+        sigma=sigma,
+        recontact=recontact,
+        t_end_s=t_end,
+        route=route,
+        progress=say,
+    )
     if kind == ".png":
         times = liftoff_frame(model, backend) if times is None else times
     elif times is None:
@@ -521,9 +537,16 @@ def plot(
             check_field_body(case, given.body, field, recontact=recontact, route=route)
         check_frame_budget(case, instants, "instants", field)
         model = ball_model(
-            case, field, backends=chosen, body=given.body, sigma=sigma, recontact=recontact,
-            t_end_s=t_end, route=route, progress=say,
-        )  # fmt: skip
+            case,
+            field,
+            backends=chosen,
+            body=given.body,
+            sigma=sigma,
+            recontact=recontact,
+            t_end_s=t_end,
+            route=route,
+            progress=say,
+        )
         if given.body is not None:
             drawn = contact_pole_figure(model)
         elif kind == "waterfall":

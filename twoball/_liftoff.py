@@ -87,9 +87,13 @@ def liftoff(
     True
     """
     given = bundles(
-        "twoball.liftoff", mesh=mesh, stepping=stepping, body=body, damping=damping,
+        "twoball.liftoff",
+        mesh=mesh,
+        stepping=stepping,
+        body=body,
+        damping=damping,
         old=deprecated,
-    )  # fmt: skip
+    )
     case = Case.preset("basketball") if case is None else case
     if not isinstance(case, Case):
         raise ParameterError("case", "a twoball.Case", type(case).__name__)
@@ -104,9 +108,14 @@ def liftoff(
         from twoball.fem import solve
 
         report = solve(
-            case, mesh=given.mesh, stepping=stepping, damping=given.damping, sigma=sigma,
-            recontact=recontact, progress=progress,
-        )  # fmt: skip
+            case,
+            mesh=given.mesh,
+            stepping=stepping,
+            damping=given.damping,
+            sigma=sigma,
+            recontact=recontact,
+            progress=progress,
+        )
     else:
         _refuse_fem_options(given)
         from twoball.modal.report import legendre_liftoff

@@ -79,9 +79,13 @@ def solve(
     from twoball.modal.stepping import Stepping
 
     given = bundles(
-        "twoball.fem.solve", mesh=mesh, stepping=stepping, damping=damping, old=deprecated,
+        "twoball.fem.solve",
+        mesh=mesh,
+        stepping=stepping,
+        damping=damping,
+        old=deprecated,
         takes=("mesh", "stepping", "damping"),
-    )  # fmt: skip
+    )
     case = Case.preset("basketball") if case is None else case
     if not isinstance(case, Case):
         raise ParameterError("case", "a twoball.Case", type(case).__name__)

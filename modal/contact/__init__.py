@@ -1,4 +1,4 @@
-"""A rigid upper body of finite mass in unilateral contact with the membrane (issue 13).
+"""A rigid upper body of finite mass in unilateral contact with the membrane.
 
 One solver for every backend: :class:`~twoball.modal.contact.system.ContactSystem`
 is built from any :class:`~twoball.modal.series.ModalSeries` and the modes' cap

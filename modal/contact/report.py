@@ -250,10 +250,20 @@ def solve_contact(
         history = integrate(system, t_end, restitution, samples_per_period)
         result = None
     return ContactReport(
-        case, mass_ratio, contact_radius_m, restitution, energy, backend, sigma,
-        history, result, dict(extra or {}), (), membrane,
+        case,
+        mass_ratio,
+        contact_radius_m,
+        restitution,
+        energy,
+        backend,
+        sigma,
+        history,
+        result,
+        dict(extra or {}),
+        (),
+        membrane,
         None if mass_ratio == 0.0 else system,
-    )  # fmt: skip
+    )
 
 
 def legendre_contact(
@@ -285,9 +295,17 @@ def legendre_contact(
     theta = cap_angle(radius, case.radius)
     contact = legendre_cap_averages(theta, case.modes)
     return solve_contact(
-        case, series, contact,
-        mass_ratio=mass_ratio, contact_radius_m=radius, restitution=float(restitution),
-        energy=energy, backend="legendre", sigma=sigma,
-        t_end=t_end_dimensionless(case, t_end_s), membrane=membrane,
-        extra={"cap_angle_rad": theta}, samples_per_period=samples_per_period,
-    )  # fmt: skip
+        case,
+        series,
+        contact,
+        mass_ratio=mass_ratio,
+        contact_radius_m=radius,
+        restitution=float(restitution),
+        energy=energy,
+        backend="legendre",
+        sigma=sigma,
+        t_end=t_end_dimensionless(case, t_end_s),
+        membrane=membrane,
+        extra={"cap_angle_rad": theta},
+        samples_per_period=samples_per_period,
+    )

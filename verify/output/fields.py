@@ -335,9 +335,17 @@ def solve_backends(
     solved: dict[str, Backend] = {}
     if "fem" in backends:
         unit_mesh, solved["fem"] = fem_backend(
-            case, spec.level, field.order, field.mesh, sigma, recontact, t_end, initial, route,
+            case,
+            spec.level,
+            field.order,
+            field.mesh,
+            sigma,
+            recontact,
+            t_end,
+            initial,
+            route,
             spec.geometry,
-        )  # fmt: skip
+        )
     else:
         unit_mesh = build_mesh(case, spec.level, field.order, field.mesh, spec.geometry)
     if "legendre" in backends:
@@ -395,9 +403,10 @@ def ball_model(
         raise ParameterError("route", "one of " + ", ".join(ROUTES), route)
     if field.spec.initial is not None and "fem" not in backends:
         raise ParameterError(
-            "initial", "left out without the fem backend (it sets the FE initial state)",
+            "initial",
+            "left out without the fem backend (it sets the FE initial state)",
             field.spec.initial,
-        )  # fmt: skip
+        )
     t_end = t_end_dimensionless(case, t_end_s)  # checked before any progress line
     say = progress or silent
     if body is not None:
@@ -809,7 +818,7 @@ class CoupledModel(BallModel):
         """Modal state of backend ``name`` at ``times_s`` [s] (dimensionless values).
 
         Computed once per backend and times (matrix exponentials are the cost of an
-        export: measured 21 of 24 s at level 2 before this was kept).
+        export: measured 21 of 24 s at level 2).
         """
         t = np.atleast_1d(np.asarray(times_s, dtype=float)) / self.case.scalings.time
         key = (name, t.tobytes())  # u, u_t, u_tt, the body and the caption share one solve
@@ -955,11 +964,18 @@ def contact_scene(model: CoupledModel, times_s: np.ndarray, backend: str) -> Any
     report = model.contact(backend)
     impacts = [e["t_s"] for e in report.events_si() if e["kind"] == "impact"]
     return ContactScene(
-        scene.points, scene.cells, scene.times, scene.u, scene.body, scene.radius,
-        scene.t_liftoff, f"{scene.label}, mu = {report.mass_ratio:g}",
-        contact=model.states(backend, scene.times).contact, impacts=np.array(impacts),
+        scene.points,
+        scene.cells,
+        scene.times,
+        scene.u,
+        scene.body,
+        scene.radius,
+        scene.t_liftoff,
+        f"{scene.label}, mu = {report.mass_ratio:g}",
+        contact=model.states(backend, scene.times).contact,
+        impacts=np.array(impacts),
         mass_ratio=report.mass_ratio,
-    )  # fmt: skip
+    )
 
 
 # --------------------------------------------------------------------------- cost

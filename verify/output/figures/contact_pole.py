@@ -116,14 +116,22 @@ def _draw_backend(
     keys = (("cap_m", "s_m"), ("cap_t_m_s", "s_t_m_s"), ("cap_tt_m_s2", None))
     for axis, (cap, body), (_, _, factor) in zip(axes, keys, QUANTITIES, strict=True):
         axis.plot(
-            ms, motion[cap] * factor, _CAP_STYLE.get(name, "-"), color=colour,
+            ms,
+            motion[cap] * factor,
+            _CAP_STYLE.get(name, "-"),
+            color=colour,
             label=f"cap average, {short}",
-        )  # fmt: skip
+        )
         if body is not None:
             axis.plot(
-                ms, motion[body] * factor, _BODY_STYLE.get(name, ":"), color=colour,
-                linewidth=1.5, label=f"body, {short}", gid=f"{BODY_GID}-{name}",
-            )  # fmt: skip
+                ms,
+                motion[body] * factor,
+                _BODY_STYLE.get(name, ":"),
+                color=colour,
+                linewidth=1.5,
+                label=f"body, {short}",
+                gid=f"{BODY_GID}-{name}",
+            )
     events = report.events_si()
     for kind, marker in EVENT_MARKERS.items():
         chosen = [e for e in events if e["kind"] == kind]
@@ -131,17 +139,29 @@ def _draw_backend(
         for axis, key, factor in ((axes[0], "height_m", 1e3), (axes[1], "velocity_m_s", 1.0)):
             values = np.array([e[key] * factor for e in chosen])
             axis.plot(
-                t, values, marker, linestyle="none", color=colour, markersize=6,
-                markeredgecolor="black", markeredgewidth=0.5, gid=f"{EVENT_GID}-{kind}-{name}",
-            )  # fmt: skip
+                t,
+                values,
+                marker,
+                linestyle="none",
+                color=colour,
+                markersize=6,
+                markeredgecolor="black",
+                markeredgewidth=0.5,
+                gid=f"{EVENT_GID}-{kind}-{name}",
+            )
     if report.lifted:
         t_l = report.t_liftoff_s * 1e3
         final = report.history.displacement * report.case.scalings.length
         for axis, value in ((axes[0], final * 1e3), (axes[1], report.v_liftoff_m_s)):
             axis.plot(
-                t_l, value, LIFTOFF_MARKER, markersize=10, markerfacecolor="none",
-                markeredgecolor=colour, markeredgewidth=1.2,
-            )  # fmt: skip
+                t_l,
+                value,
+                LIFTOFF_MARKER,
+                markersize=10,
+                markerfacecolor="none",
+                markeredgecolor=colour,
+                markeredgewidth=1.2,
+            )
         for axis in axes:
             axis.axvline(t_l, color=colour, linewidth=0.7, linestyle="--")
         axes[0].annotate(
@@ -159,6 +179,14 @@ def _event_legend(axis: Any) -> None:
     for kind, marker in EVENT_MARKERS.items():
         axis.plot([], [], marker, ls="none", color="0.5", markeredgecolor="black", label=kind)
     axis.plot(
-        [], [], LIFTOFF_MARKER, markerfacecolor="none", markeredgecolor="0.3", markersize=8,
-        linestyle="--", color="0.4", linewidth=0.7, label="lift-off (final separation)",
-    )  # fmt: skip
+        [],
+        [],
+        LIFTOFF_MARKER,
+        markerfacecolor="none",
+        markeredgecolor="0.3",
+        markersize=8,
+        linestyle="--",
+        color="0.4",
+        linewidth=0.7,
+        label="lift-off (final separation)",
+    )

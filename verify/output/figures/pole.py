@@ -242,10 +242,12 @@ def pole_motion_figure(
                     (
                         _pretty(trace.label),
                         {**style, "linewidth": 0.9},
-                        [(np.asarray(a) - np.asarray(b)) * unit
-                         for a, b, unit in zip(state, ref_state, si, strict=True)],
+                        [
+                            (np.asarray(a) - np.asarray(b)) * unit
+                            for a, b, unit in zip(state, ref_state, si, strict=True)
+                        ],
                     )
-                )  # fmt: skip
+                )
         for axis, (symbol, unit, _) in zip(axes, QUANTITIES, strict=True):
             axis.set_ylabel(label(symbol, unit))
         axes[2].axhline(-case.g, color=REFERENCE_COLOUR, linewidth=0.8, linestyle=":", label="$-g$")
