@@ -45,7 +45,7 @@ from twoball.fem_membrane.ritz_field import field_times
 from twoball.fem_membrane.space import Discretisation
 from twoball.modal.damping import RAYLEIGH_LOW, Rayleigh
 from twoball.modal.filters import FilterKind, SpectralFilter
-from twoball.modal.initial import _check_phi_a
+from twoball.modal.initial import check_phi_a
 from twoball.modal.liftoff import DEFAULT_T_END, PoleMotion, SampledPoleMotion
 from twoball.modal.series import ModalSeries, check_damping
 from twoball.modal.stiffness import Stiffness
@@ -119,7 +119,7 @@ def modal_model(
     (:func:`twoball.fem_membrane.shell.stiff_series`); ``pairs`` then hold the
     stiffened eigenvalues.
     """
-    phi_a = _check_phi_a(phi_a)
+    phi_a = check_phi_a(phi_a)
     damping = check_damping(damping)
     filter = as_filter(filter)
     initial = check_choice("initial", initial, INITIAL_METHODS)

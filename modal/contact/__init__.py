@@ -6,3 +6,5 @@ averages; :func:`~twoball.modal.contact.events.integrate` runs the event-driven
 scheme on the closed-form modal motion.  Dimensionless inside; SI in
 :mod:`twoball.modal.contact.report`.
 """
+
+__all__ = ["body", "caps", "events", "report", "states", "system", "trajectory"]

@@ -16,7 +16,7 @@ from typing import TYPE_CHECKING, Any
 import numpy as np
 from twoball.verify.output.fields import CoupledModel
 from twoball.verify.output.figures import LABELS, new_figure
-from twoball.verify.output.figures.pole import _clip_acceleration, _draw_differences
+from twoball.verify.output.figures.pole import clip_acceleration, draw_differences
 from twoball.verify.output.figures.style import (
     LIFTOFF_MARKER,
     REFERENCE_COLOUR,
@@ -76,9 +76,7 @@ def contact_pole_figure(model: CoupledModel, samples: int = 2500) -> Figure:
     for k, (name, motion) in enumerate(motions.items()):
         _draw_backend(axes, ms, name, motion, model.contact(name), f"C{k}", k)
     axes[2].axhline(-case.g, color=REFERENCE_COLOUR, linewidth=0.8, linestyle=":", label="$-g$")
-    _clip_acceleration(
-        axes[2], np.concatenate([m["cap_tt_m_s2"] for m in motions.values()]), case.g
-    )
+    clip_acceleration(axes[2], np.concatenate([m["cap_tt_m_s2"] for m in motions.values()]), case.g)
     for axis, (symbol, unit, _) in zip(axes, QUANTITIES, strict=True):
         axis.set_ylabel(label(symbol, unit))
     _event_legend(axes[1])
@@ -89,7 +87,7 @@ def contact_pole_figure(model: CoupledModel, samples: int = 2500) -> Figure:
         fem, ref = motions["fem"], motions["legendre"]
         cap = [fem[k] - ref[k] for k in ("cap_m", "cap_t_m_s", "cap_tt_m_s2")]
         body = [fem[k] - ref[k] for k in ("s_m", "s_t_m_s", "s_tt_m_s2")]
-        _draw_differences(
+        draw_differences(
             grid[1::2],
             ms,
             [
