@@ -97,6 +97,16 @@ class Case:
         the user's own measurements (phi_a then given or from eq. (3.7)).
     phi_a_source : str, optional
         Set by the class: ``"given"``, ``"measured (<preset>)"`` or ``"eq. (3.7)"``.
+
+    Examples
+    --------
+    >>> import twoball
+    >>> case = twoball.Case.preset("basketball")
+    >>> case.radius, case.wave_speed, case.v0, case.phi_a, case.phi_a_source
+    (0.12, 320.0, 4.1, 2.6, 'measured (basketball)')
+    >>> slower = case.derive(v0=3.0)  # phi_a follows eq. (3.7) at the new speed
+    >>> round(slower.phi_a, 4), slower.phi_a_source
+    (2.6719, 'eq. (3.7)')
     """
 
     radius: float = 0.12

@@ -43,6 +43,15 @@ class LiftoffReport:
     provenance : dict, optional
         Versions, command line or API call, UTC time and case
         (:func:`twoball._common.provenance.block`); set by the public API.
+
+    Examples
+    --------
+    >>> import twoball
+    >>> report = twoball.liftoff()
+    >>> report.lifted, round(report.ratio, 4), report.backend
+    (True, 0.9347, 'legendre')
+    >>> sorted(report.as_dict())[:4]
+    ['backend', 'before_floor_departure', 'damping', 'floor_time_estimate']
     """
 
     case: Case
@@ -60,6 +69,11 @@ class LiftoffReport:
         phi_a was chosen, when eq. (3.7) departs from a preset's measured angle."""
         note = self.case.phi_a_note
         return [note] if note else []
+
+    @property
+    def lifted(self) -> bool:
+        """Whether the body lifts off within the modelled window."""
+        return bool(self.result.lifted)
 
     @property
     def t_liftoff_s(self) -> float | None:

@@ -603,7 +603,16 @@ def mesh_block(field: Any) -> dict[str, object]:
 
 @dataclass(frozen=True)
 class ExportResult:
-    """Files written by :func:`export` and what they hold (SI)."""
+    """Files written by :func:`export` and what they hold (SI).
+
+    Examples
+    --------
+    >>> import tempfile, pathlib, twoball
+    >>> out = pathlib.Path(tempfile.mkdtemp()) / "ball.vtu"
+    >>> result = twoball.export(out, mesh=twoball.MeshOptions("sphere", level=1))
+    >>> result.format, result.nodes, result.cell_type, len(result.times_s)
+    ('vtu', 162, 'triangle6', 1)
+    """
 
     files: list[Path]
     format: str
@@ -634,7 +643,16 @@ class ExportResult:
 
 @dataclass(frozen=True)
 class RenderResult:
-    """The picture or animation written by :func:`render`."""
+    """The picture or animation written by :func:`render`.
+
+    Examples
+    --------
+    >>> import tempfile, pathlib, twoball
+    >>> out = pathlib.Path(tempfile.mkdtemp()) / "ball.png"
+    >>> result = twoball.render(out, mesh=twoball.MeshOptions("sphere", level=1), frames=[0.005])
+    >>> result.times_s, result.backend
+    ([0.005], 'fem')
+    """
 
     file: Path
     times_s: list[float]
@@ -661,7 +679,17 @@ class RenderResult:
 
 @dataclass(frozen=True)
 class PlotResult:
-    """The PNG written by :func:`plot`, with one line per curve family."""
+    """The PNG written by :func:`plot`, with one line per curve family.
+
+    Examples
+    --------
+    >>> import tempfile, pathlib, twoball
+    >>> out = pathlib.Path(tempfile.mkdtemp()) / "eigen.png"
+    >>> figure = twoball.PlotOptions(levels=[1], orders=[1], dpi=72)
+    >>> result = twoball.plot("eigen", out, figure=figure)
+    >>> result.kind, result.rows[0][0]
+    ('eigen', 'P1, level 1 (42 unknowns)')
+    """
 
     file: Path
     kind: str

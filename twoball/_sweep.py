@@ -34,6 +34,13 @@ class SweepResult:
         One per grid point: ``index``, ``case``, ``report`` (or ``error``).
     provenance : dict
         Versions, command line or call, UTC time, base case (:mod:`twoball._common.provenance`).
+
+    Examples
+    --------
+    >>> import twoball
+    >>> result = twoball.sweep({"v0": [3.0, 4.1]})
+    >>> result.parameters, result.shape, [p.case.phi_a_source for p in result.points]
+    (('v0',), (2,), ['eq. (3.7)', 'measured (basketball)'])
     """
 
     parameters: tuple[str, ...]
@@ -120,7 +127,7 @@ def sweep(
     >>> import twoball
     >>> result = twoball.sweep({"damping": [0.1, 0.13, 0.2]})
     >>> [round(p.ratio, 3) for p in result.points]
-    [1.142, 0.935, 0.628]
+    [1.354, 0.935, 0.417]
     """
     import numpy as np
 

@@ -226,7 +226,7 @@ def eigen(
     >>> import twoball
     >>> rows = twoball.fem.eigen(twoball.MeshOptions("axisym", elements=100), count=3)
     >>> [(row["l"], row["exact"]) for row in rows]
-    [(1, 2.0), (2, 6.0), (3, 12.0)]
+    [(0, 0.0), (1, 2.0), (2, 6.0), (3, 12.0)]
     """
     given = bundles("twoball.fem.eigen", mesh=mesh, old=deprecated, takes=("mesh",))
     from twoball._common.budget import check, options

@@ -58,6 +58,15 @@ class ContactReport:
 
     ``history`` is the dimensionless event history (None in the massless mode,
     where ``massless`` holds the criteria's :class:`LiftoffResult`).
+
+    Examples
+    --------
+    >>> import twoball
+    >>> report = twoball.liftoff(body=twoball.Body(mass_ratio=0.1))
+    >>> [event["kind"] for event in report.events_si()][:3]
+    ['separation', 'impact', 'separation']
+    >>> report.lifted, round(report.ratio, 3)
+    (True, 0.104)
     """
 
     case: Case

@@ -96,6 +96,15 @@ class Reporter:
         Print nothing unless the work lasts longer than this [s].
     enabled : bool, optional
         Default: not :func:`is_quiet`.
+
+    Examples
+    --------
+    >>> import twoball
+    >>> with twoball.Reporter("demo", enabled=False) as progress:
+    ...     progress("first step")
+    ...     progress("second step")
+    >>> progress._count
+    2
     """
 
     def __init__(
