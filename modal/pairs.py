@@ -25,9 +25,10 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
-from .errors import ParameterError
-from .icm.table1 import TABLE1, Table1Row
-from .presets import MEASURED, Measured
+from twoball.modal.icm.table1 import TABLE1, Table1Row
+from twoball.modal.presets import MEASURED, Measured
+
+from twoball._common.errors import ParameterError
 
 
 @dataclass(frozen=True)

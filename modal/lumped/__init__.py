@@ -28,13 +28,13 @@ from __future__ import annotations
 
 from collections.abc import Callable
 
-from ..pairs import Pair
-from .bartz import Bartz2020
-from .hertz import HertzViscoelastic
-from .icm_baseline import ICMBaseline
-from .result import ContactEvent, EnergyBudget, LumpedResult
-from .solver import simulate
-from .spring_dashpot import TwoSpringDashpot
+from twoball.modal.lumped.bartz import Bartz2020
+from twoball.modal.lumped.hertz import HertzViscoelastic
+from twoball.modal.lumped.icm_baseline import ICMBaseline
+from twoball.modal.lumped.result import ContactEvent, EnergyBudget, LumpedResult
+from twoball.modal.lumped.solver import simulate
+from twoball.modal.lumped.spring_dashpot import TwoSpringDashpot
+from twoball.modal.pairs import Pair
 
 #: Each lumped model built from a Table 1 pair, by name.
 MODELS: dict[

@@ -7,10 +7,10 @@ and falling at the same speed.
 
 from __future__ import annotations
 
-from ..errors import ParameterError, bounded
-from ..icm import impact_velocity
-from ..parameters import STANDARD_GRAVITY
-from ..scalings import V0_MAX
+from twoball.modal.icm import impact_velocity
+from twoball.modal.scalings import STANDARD_GRAVITY, V0_MAX
+
+from twoball._common.errors import ParameterError, bounded
 
 #: Largest gap [m]: far beyond any drop tower, far from overflow.
 DX_MAX = 1e3

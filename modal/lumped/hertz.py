@@ -26,17 +26,17 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
-from ..errors import ParameterError, bounded
-from ..pairs import Pair
-from ..parameters import STANDARD_GRAVITY
-from ..scalings import MASS_RANGE
-from .drop import check_gap, check_gravity, impact_speed
-from .fitting import fit_hertz
-from .laws import DAMPING_EXPONENTS, HertzLaw
-from .pair_inputs import pair_contacts
-from .result import LumpedResult
-from .solver import simulate
-from .spring_dashpot import DURATION_RANGE
+from twoball.modal.lumped.drop import check_gap, check_gravity, impact_speed
+from twoball.modal.lumped.fitting import fit_hertz
+from twoball.modal.lumped.laws import DAMPING_EXPONENTS, HertzLaw
+from twoball.modal.lumped.pair_inputs import pair_contacts
+from twoball.modal.lumped.result import LumpedResult
+from twoball.modal.lumped.solver import simulate
+from twoball.modal.lumped.spring_dashpot import DURATION_RANGE
+from twoball.modal.pairs import Pair
+from twoball.modal.scalings import MASS_RANGE, STANDARD_GRAVITY
+
+from twoball._common.errors import ParameterError, bounded
 
 #: Impact speed at which Table 1's pairs were measured and the presets' ``|v0|`` [m/s]
 #: (basketball drops from x2 = 0.92 m, §4(b)).

@@ -20,7 +20,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
-from ..errors import ParameterError, bounded
+from twoball._common.errors import ParameterError, bounded
 
 #: Hertz exponents of the dissipative term ``c delta^p d(delta)/dt``: Tsuji et al.
 #: (1992) use p = 1/4 (restitution independent of the impact speed); Kuwabara &

@@ -21,8 +21,9 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 
-from ..errors import ParameterError
-from ..pairs import Pair
+from twoball.modal.pairs import Pair
+
+from twoball._common.errors import ParameterError
 
 
 @dataclass(frozen=True)

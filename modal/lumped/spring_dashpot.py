@@ -18,16 +18,16 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
-from ..errors import bounded
-from ..pairs import Pair
-from ..parameters import STANDARD_GRAVITY
-from ..scalings import MASS_RANGE
-from .drop import check_gap, check_gravity, impact_speed
-from .fitting import check_linear_e, fit_linear
-from .laws import LinearLaw
-from .pair_inputs import pair_contacts
-from .result import LumpedResult
-from .solver import simulate
+from twoball.modal.lumped.drop import check_gap, check_gravity, impact_speed
+from twoball.modal.lumped.fitting import check_linear_e, fit_linear
+from twoball.modal.lumped.laws import LinearLaw
+from twoball.modal.lumped.pair_inputs import pair_contacts
+from twoball.modal.lumped.result import LumpedResult
+from twoball.modal.lumped.solver import simulate
+from twoball.modal.pairs import Pair
+from twoball.modal.scalings import MASS_RANGE, STANDARD_GRAVITY
+
+from twoball._common.errors import bounded
 
 DURATION_RANGE = (1e-9, 1e3)  # s
 
