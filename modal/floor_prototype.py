@@ -95,7 +95,7 @@ class FloorModel:
             raise ParameterError("gamma", "a finite number >= 0", self.gamma)
         if self.points is not None and (not isinstance(self.points, int) or self.points < 2):
             raise ParameterError("points", "an integer >= 2", self.points)
-        if self.omega_squared[1] <= 0.0:
+        if self.operator == "pressurised" and self.omega_squared[1] <= 0.0:
             raise ParameterError(
                 "gas", "large enough that omega_0^2 > 0 on the pressurised operator", self.gas
             )
@@ -413,45 +413,57 @@ class RestResult:
         Total floor force of the last step (impulse over step length).
     weight : float
         gamma (m2 = 1).
-    contact_area : float
-        ``2 pi (1 + cos phi_e)`` with phi_e the contact edge (:func:`contact_edge`), units R^2.
+    contact_area : tuple of float
+        ``(inner, outer)``: the polar caps ``2 pi (1 - cos psi)`` through the
+        outermost point in contact and through the next point out (units R^2);
+        the contact set of the discrete solution lies between them.
     pressure_area : float
         ``m2 g / P`` in units R^2: ``2 pi gamma`` (P = 2T/R).
     residual_speed : float
         Largest |velocity| at the end.
+    contact_points : int
+        Points carrying a force.
+    wall_s : float
     """
 
     floor_force: float
     weight: float
-    contact_area: float
+    contact_area: tuple[float, float]
     pressure_area: float
     residual_speed: float
     contact_points: int
     wall_s: float
 
 
-def settle(model: FloorModel, dt: float = 0.05, t_end: float = 60.0) -> RestResult:
+def settle(model: FloorModel, dt: float = 0.2, t_end: float = 800.0) -> RestResult:
     """Put the ball at rest on the floor (Z = 1, touching) and let it settle under gravity.
 
-    ``model.damping`` (or its Rayleigh damping) must be > 0 for the motion to die out.
+    ``model.damping`` (or its Rayleigh damping) must be > 0 for the motion to die
+    out; with D = 0.9 the residual speed falls by e every ~13 time units.
     """
     setup = floor_setup(model)
     v0 = np.zeros_like(setup.v0)
-    stepper = MoreauJean(setup.problem, dt, velocity_tolerance=1e-15, zeno_velocity=1e-12)
+    speed = model.gamma / math.sqrt(model.omega_squared[2])  # sag speed scale
+    stepper = MoreauJean(setup.problem, dt, zeno_velocity=1e-4 * speed)
     start = time.perf_counter()
     tr = stepper.run(setup.q0, v0, t_end, keep_states=False)
     wall = time.perf_counter() - start
     h = tr.t[-1] - tr.t[-2]
     last = tr.impulse[-1]
-    gap = setup.problem.gap(tr.q_final)
-    edge = contact_edge(setup.phi, gap, last > 0.0)
+    inside = np.flatnonzero(last > 0.0)
+    i = int(inside.min()) if inside.size else setup.phi.size
+    psi_in = math.pi - setup.phi[i] if inside.size else 0.0
+    psi_out = math.pi - setup.phi[i - 1]
     return RestResult(
         floor_force=float(last.sum() / h),
         weight=model.gamma,
-        contact_area=2.0 * math.pi * (1.0 + math.cos(edge)),
+        contact_area=(
+            2.0 * math.pi * (1.0 - math.cos(psi_in)),
+            2.0 * math.pi * (1.0 - math.cos(psi_out)),
+        ),
         pressure_area=2.0 * math.pi * model.gamma,
         residual_speed=float(np.max(np.abs(tr.v_final))),
-        contact_points=int(np.count_nonzero(last > 0.0)),
+        contact_points=int(inside.size),
         wall_s=wall,
     )
 

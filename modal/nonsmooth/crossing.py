@@ -10,9 +10,6 @@ by the secant method on the gap it actually produces.
 from __future__ import annotations
 
 import numpy as np
-from scipy.optimize import brentq
-
-_SAMPLES = 16  # sub-intervals searched for the first sign change of the interpolant
 
 
 def hermite_gap(
@@ -31,22 +28,25 @@ def first_crossing(h: float, g0: float, u0: float, g1: float, u1: float) -> floa
     """First s in (0, h] where the Hermite gap falls from >= 0 to below 0.
 
     ``g1 < 0`` is required (the gap ends the step negative).  A start slightly
-    below zero (within rounding of a contact just left) counts as zero.
-    Returns ``h`` if no sign change is resolved on the sample grid.
+    below zero (within rounding of a contact just left) counts as zero.  The
+    cubic's real roots are computed in closed form (``numpy.roots``), so a
+    brief excursion above zero of a constraint leaving at ``g0 = 0`` is found
+    however short it is.
     """
     g0 = max(g0, 0.0)
-    grid = np.linspace(0.0, h, _SAMPLES + 1)
-    values = hermite_gap(grid, h, g0, u0, g1, u1)
-    below = np.flatnonzero(values[1:] < 0.0) + 1
-    for k in below:
-        if values[k - 1] >= 0.0:
-            lo, hi = grid[k - 1], grid[k]
-            if values[k - 1] == 0.0:
-                return float(lo) if lo > 0.0 else float(hi) * 1e-3
-            return float(
-                brentq(lambda s: float(hermite_gap(s, h, g0, u0, g1, u1)), lo, hi, xtol=1e-15 * h)
-            )
-    return h
+    c2 = (3.0 * (g1 - g0) / h - 2.0 * u0 - u1) / h
+    c3 = (2.0 * (g0 - g1) / h + u0 + u1) / (h * h)
+    if g0 == 0.0:
+        # p(s) = s (u0 + c2 s + c3 s^2): the crossing is a root of the quadratic
+        roots = np.roots([c3, c2, u0]) if u0 > 0.0 else np.array([0.0])
+    else:
+        roots = np.roots([c3, c2, u0, g0])
+    real = np.real(roots[np.abs(np.imag(roots)) <= 1e-12 * h])
+    inside = np.sort(real[(real > 0.0) & (real <= h)])
+    for r in inside:
+        if hermite_gap(min(r * (1.0 + 1e-9) + 1e-15 * h, h), h, g0, u0, g1, u1) < 0.0:
+            return float(r)
+    return float(inside[0]) if inside.size else h
 
 
 def hermite_rate(

@@ -15,24 +15,34 @@ Delassus matrix ``G W^-1 G^T`` (:mod:`twoball.modal.nonsmooth.lcp`).
 Two variants (``localise``):
 
 ``localise=True`` (default)
-    Impacts are separated from the smooth motion.  A constraint whose gap
-    would become negative inside a step is *localised*: the step is shortened
-    (cubic Hermite estimate, then regula falsi on the scheme's own gap) so
-    that it ends with that gap at zero.  At the start of the next step Newton's
-    law (N3) is applied as an instantaneous impact, an LCP with the Delassus
-    matrix ``G M^-1 G^T`` over every constraint in contact::
+    Impacts are separated from the smooth motion.
 
-        M (v+ - v-) = G^T P_imp,   0 <= P_imp ⊥ U+ + e U- >= 0            (MJ4)
+    * Touches are *localised*: when a free constraint's gap would end the step
+      below zero, the step is shortened so that it ends with that gap at zero
+      (cubic Hermite estimate of the crossing, then regula falsi on the gap the
+      scheme itself produces).
+    * At the start of each step Newton's law (N3) acts as an instantaneous
+      impact on every constraint in contact, an LCP with the Delassus matrix
+      ``G M^-1 G^T``::
 
-    and the step's own LCP (MJ3) acts only on constraints in contact that are
-    not moving away (``U+ <= 0``).  With theta = 1/2 the step then does no
-    contact work (P > 0 only where U0 = U1 = 0), so the energy identity is
+          M (v+ - v-) = G^T P_imp,   0 <= P_imp ⊥ U+ + e U- >= 0          (MJ4)
 
-        E_{n+1} - E_n = -h v_mid^T C v_mid + (impact work of (MJ4)),      (MJ5)
+    * The step's LCP holds the constraints in contact that do not move away
+      faster than the Zeno speed v_Z, with ``U1 + max(U0, 0) >= 0`` in place of
+      (MJ3): a constraint held while leaving slowly stays at its level.
+      Arrivals and departures slower than v_Z are no impacts; without this
+      rule two neighbouring constraints coupled through the Delassus matrix
+      lift each other in turn, an endless (Zeno) chain of re-touches.
 
-    with ``v_mid = (v0 + v1)/2`` and impact work ``1/2 P_imp . (U+ + U-) =
-    -1/2 (1 - e) P_imp . U- <= 0``: exact for any h, and no energy is lost at
-    e = 1.  The trapezoidal rule between events is second order.
+    With theta = 1/2 the energy identity is exact for any h::
+
+        E_{n+1} - E_n = -h v_mid^T C v_mid + W_imp + W_step               (MJ5)
+
+    with ``v_mid = (v0 + v1)/2``, the impact work ``W_imp = 1/2 P_imp . (U+ +
+    U-) = -1/2 (1 - e) P_imp . U- <= 0`` (0 at e = 1) and the step's contact
+    work ``W_step = 1/2 P . (U0 + U1)``, which vanishes but for arrivals slower
+    than v_Z (then ``|W_step| <= P v_Z / 2``).  The trapezoidal rule between
+    events is second order.
 
 ``localise=False``
     The classical scheme: the constraints with predicted gap
@@ -398,17 +408,14 @@ class MoreauJean:
         touching = self._impacts(state, record)
         state.arrived = np.zeros(m, dtype=bool)
         U0 = p.normal_velocity(state.v)
-        # in contact and not leaving faster than the Zeno speed: held by the step's
-        # LCP (a slower departure that the elastic forces reverse within the step
-        # would otherwise start a Zeno chain of re-touches)
-        active = touching & (np.abs(U0) <= max(self.velocity_tolerance, self.zeno_velocity))
-        active |= touching & (U0 < 0.0)
+        # in contact and not moving away faster than the Zeno speed: held by the
+        # step's LCP (a slower departure that the elastic forces reverse within
+        # the step would otherwise start a Zeno chain of re-touches)
+        active = touching & (U0 <= max(self.velocity_tolerance, self.zeno_velocity))
         q1, v1, impulse = self._smooth(state.q, state.v, h, active, state.carried)
         gap0, gap1 = p.gap(state.q), p.gap(q1)
-        # a gap ending the step below -h * zeno_velocity is localised; a shallower
-        # one is left to the impact at the start of the next step (a Zeno chain of
-        # re-touches would otherwise take infinitely many steps)
-        # (a gap already below zero, by such a shallow arrival, counts from its level)
+        # a free gap is localised when it ends below its level: 0, or its start
+        # value if rounding or a slow arrival left it slightly below zero
         level = np.minimum(gap0, 0.0)
         crossing = ~active & (gap1 - level < -self.gap_tolerance)
         if crossing.any():
@@ -447,7 +454,16 @@ class MoreauJean:
             )
             j = int(candidates[int(np.argmin(times))])
             s = float(times.min())
-            s, (q1, v1, impulse) = self._root(state, active, j, level[j], s, h, (gap0[j], gap1[j]))
+            found = self._root(state, active, j, level[j], s, h, (gap0[j], gap1[j]))
+            if found is None:  # leaves and returns within rounding: held in this step
+                active = active.copy()
+                active[j] = True
+                q1, v1, impulse = self._smooth(state.q, state.v, h, active, state.carried)
+                crossing = ~active & (p.gap(q1) - level < -self.gap_tolerance)
+                if not crossing.any():
+                    return h, q1, v1, impulse, np.zeros(p.count, dtype=bool)
+                continue
+            s, (q1, v1, impulse) = found
             h = s
             gap_h = p.gap(q1) - level
             crossing = ~active & (gap_h < -self.gap_tolerance)
@@ -468,7 +484,7 @@ class MoreauJean:
         guess: float,
         h: float,
         gaps: tuple[float, float],
-    ) -> tuple[float, tuple[np.ndarray, np.ndarray, np.ndarray]]:
+    ) -> tuple[float, tuple[np.ndarray, np.ndarray, np.ndarray]] | None:
         """Step length in (0, h) at which the scheme's own gap j reaches ``level``.
 
         ``gaps`` are the gap minus ``level`` at the step's start (>= 0) and at its
@@ -476,7 +492,9 @@ class MoreauJean:
         the gap above ``level`` at its left end is formed from the guess (halving
         towards the start when the constraint starts at its level and moves away),
         then the Illinois variant of regula falsi (Dowell & Jarratt 1971, BIT
-        11:168) narrows it until ``|gap - level| <= gap_tolerance``.
+        11:168) narrows it until ``|gap - level| <= gap_tolerance``.  None when
+        the gap never rises above its level by more than rounding (a departure
+        too slow to resolve: the caller holds the constraint instead).
         """
         p = self.problem
         tol = self.gap_tolerance
@@ -501,9 +519,7 @@ class MoreauJean:
                 while fa <= 0.0:
                     b, fb, a = a, fa, 0.5 * a
                     if a < 1e-14 * h:
-                        raise NumericalError(
-                            f"localisation: no bracket for constraint {j} at t = {state.t:.6g}"
-                        )
+                        return None  # the departure is below rounding: hold the constraint
                     fa, _ = f(a)
         side = 0
         for _ in range(_ROOT_ITERATIONS):

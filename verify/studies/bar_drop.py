@@ -305,11 +305,14 @@ def run_bar(
 
 
 BAR_BANDS = {
-    # observed orders in h = dt / courant (NOTES-core.md, bar table); a wave with
-    # jumps in velocity and stress: below first order in L2, force in L1 order 1/2
-    "displacement": OrderBand(0.75, 0.25, 0.25),
-    "force_l1": OrderBand(0.5, 0.2, 0.2),
-    "impulse": OrderBand(1.0, 0.25, 0.25),
+    # least-squares orders in h over 40 to 320 elements at dt = h (measured:
+    # clamped 0.668, 0.716, 0.659; free 0.683, 0.742, 0.664; NOTES-core.md).  The
+    # solution's velocity and stress jump, so no order-2 rate is reachable; the
+    # force in L1(0, T) is the least regular (0.4 at dt = h/2: the consistent
+    # mass lets the contact force oscillate).
+    "displacement": OrderBand(2.0 / 3.0, 0.12, 0.13),
+    "force_l1": OrderBand(0.75, 0.15, 0.15),
+    "impulse": OrderBand(2.0 / 3.0, 0.12, 0.13),
 }
 
 
