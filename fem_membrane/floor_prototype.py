@@ -8,8 +8,9 @@ m2 = 4 pi rho R^2 as in :mod:`twoball.modal.floor_prototype`.
 * The n = 1 content of u is the rigid translation, carried by Z: it is removed
   by the linear constraint ``c^T u = 0`` with ``c = M x`` (the first moment
   ``int u cos(phi) dS``), eliminated at the north-pole node (``u = B w``; B is
-  the identity with one dense row, so ``B^T M B`` stays sparse but for one row
-  and column).
+  the identity with one dense row; ``B^T M B`` then holds the dense rank-one
+  term ``c c^T``, so the reduced matrices are stored densely -- fine on the line,
+  a sphere mesh would need the constraint as a multiplier or a low-rank update).
 * Pressurised operator: ``K - 2 M`` (omega^2 = n(n+1) - 2 on P_n) plus the gas
   ``gas m m^T`` with ``m = M 1`` (the mean of u), exactly as on the modes.
 * Damping: the modal ratio D as the dense matrix ``C = M V diag(2 D omega) V^T M``
@@ -119,23 +120,26 @@ def axisym_floor_setup(model: AxisymFloorModel) -> AxisymFloorSetup:
     Kr = (B.T @ K @ B).tocsr()
     if model.gas:
         mb = B.T @ ones
-        Kr = (Kr + model.gas * sp.csr_matrix(np.outer(mb, mb))).tocsr()
+        Kr = Kr + model.gas * sp.csr_matrix(np.outer(mb, mb))
+    # the elimination adds the dense rank-one terms c c^T (and the gas m m^T): the
+    # reduced matrices are dense, and a dense Cholesky factorisation beats SuperLU
     size = n  # Z + (n - 1) reduced coordinates
-    Mfull = sp.block_diag([sp.csr_matrix([[1.0]]), Mr], format="csr")
-    Kfull = sp.block_diag([sp.csr_matrix((1, 1)), Kr], format="csr")
+    Mr, Kr = Mr.toarray(), Kr.toarray()
+    Mfull = np.zeros((size, size))
+    Mfull[0, 0] = 1.0
+    Mfull[1:, 1:] = Mr
+    Kfull = np.zeros((size, size))
+    Kfull[1:, 1:] = Kr
+    Cfull = np.zeros((size, size))
     if model.rayleigh is not None:
         alpha, beta = model.rayleigh
-        Cfull = sp.block_diag([sp.csr_matrix((1, 1)), alpha * Mr + beta * Kr], format="csr")
+        Cfull[1:, 1:] = alpha * Mr + beta * Kr
     elif model.damping > 0.0:
-        w2, V = sla.eigh(Kr.toarray(), Mr.toarray())
+        w2, V = sla.eigh(Kr, Mr)
         omega = np.sqrt(np.clip(w2, 0.0, None))
         MV = Mr @ V
         Cr = (MV * (2.0 * model.damping * omega)) @ MV.T
-        Cfull = np.zeros((size, size))
         Cfull[1:, 1:] = 0.5 * (Cr + Cr.T)
-        Mfull, Kfull = Mfull.toarray(), Kfull.toarray()
-    else:
-        Cfull = None
     floor = np.flatnonzero(x < 0.0)
     floor = floor[np.argsort(-x[floor])]  # ascending phi
     phi = np.arccos(x[floor])
