@@ -61,7 +61,8 @@ class FloorModel:
         of the modal ratio (then ``damping`` must be 0).
     points : int
         Floor points, equally spaced in phi on [pi/2, pi], the pole included;
-        default ``modes`` (twice the modes' resolution pi/N).
+        default ``modes // 2`` (spacing pi/N, the modes' own resolution: more
+        points make neighbouring rows of G nearly dependent).
     v0 : float
         Impact speed ``|v0| / (R c)`` > 0.
     gamma : float
@@ -121,7 +122,7 @@ class FloorModel:
     @property
     def phi(self) -> np.ndarray:
         """Polar angles of the floor points [rad], ascending to pi."""
-        count = self.modes if self.points is None else self.points
+        count = max(self.modes // 2, 2) if self.points is None else self.points
         return np.linspace(0.5 * math.pi, math.pi, count + 1)[1:]
 
 

@@ -1,10 +1,10 @@
-"""Where a gap first reaches zero inside a step: cubic Hermite interpolation and secant.
+"""Where a gap first reaches zero inside a step: the cubic Hermite interpolant.
 
 A step of the integrator from ``t`` to ``t + h`` gives each gap and its rate at
 both ends; the cubic Hermite interpolant of these four numbers is accurate to
 O(h^4) on a smooth motion (de Boor 1978, ch. IV), so its first root is a fourth-
 order estimate of the touch time.  The integrator then refines the step length
-by the secant method on the gap it actually produces.
+by regula falsi on the gap it actually produces.
 """
 
 from __future__ import annotations

@@ -73,7 +73,7 @@ from .problem import ContactProblem
 
 _MAX_LOCALISATIONS = 64  # shortened sub-steps inside one step (a guard)
 _ROOT_ITERATIONS = 60  # Illinois iterations of one localisation (a guard)
-ZENO_FRACTION = 1e-4  # arrivals slower than this times the initial normal speed: not localised
+ZENO_FRACTION = 1e-4  # Zeno speed over the largest initial normal speed
 
 
 @dataclass(frozen=True)
@@ -213,10 +213,9 @@ class MoreauJean:
         A normal velocity at most this is "not moving away" (default 1e-13 times
         the largest initial normal velocity, at least 1e-15).
     zeno_velocity : float, optional
-        Arrivals slower than this are not localised: the step ends with the gap
-        slightly negative (by at most ``h`` times this) and the impact is applied
-        at the start of the next step, which ends Zeno chains of re-touches
-        (default :data:`ZENO_FRACTION` times the largest initial normal speed).
+        Arrivals and departures slower than this are no impacts: the step's LCP
+        holds the constraint, which ends Zeno chains of re-touches (default
+        :data:`ZENO_FRACTION` times the largest initial normal speed).
     """
 
     def __init__(
