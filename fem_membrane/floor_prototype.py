@@ -30,7 +30,7 @@ import numpy as np
 import scipy.linalg as sla
 import scipy.sparse as sp
 from skfem import Basis, ElementLineP1, ElementLineP2, MeshLine1, asm
-from twoball.modal.errors import ParameterError
+from twoball.fem_membrane.forms import axisym_mass, axisym_stiffness
 from twoball.modal.floor_prototype import (
     BASKETBALL_GAMMA,
     BASKETBALL_GAS,
@@ -42,7 +42,7 @@ from twoball.modal.floor_prototype import (
 )
 from twoball.modal.nonsmooth import ContactProblem
 
-from .forms import axisym_mass, axisym_stiffness
+from twoball._common.errors import ParameterError
 
 SPHERE = 4.0 * math.pi  # the forms integrate over the unit sphere; m2 = 4 pi rho R^2
 

@@ -30,9 +30,9 @@ from dataclasses import dataclass, field
 
 import numpy as np
 from numpy.polynomial.legendre import legvander
+from twoball.modal.nonsmooth import ContactProblem, MoreauJean, Trajectory
 
-from .errors import ParameterError
-from .nonsmooth import ContactProblem, MoreauJean, Trajectory
+from twoball._common.errors import ParameterError
 
 OPERATORS = ("paper", "pressurised")
 

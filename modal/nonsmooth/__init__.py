@@ -36,9 +36,15 @@ points' effective masses shrink with the resolution.  Restitution 1 conserves
 the mechanical energy exactly but makes the points rattle.
 """
 
-from .lcp import LCPSolution, solve_lcp
-from .moreau_jean import ContactEvent, MoreauJean, StepperState, StepRecord, Trajectory
-from .problem import ContactProblem
+from twoball.modal.nonsmooth.lcp import LCPSolution, solve_lcp
+from twoball.modal.nonsmooth.moreau_jean import (
+    ContactEvent,
+    MoreauJean,
+    StepperState,
+    StepRecord,
+    Trajectory,
+)
+from twoball.modal.nonsmooth.problem import ContactProblem
 
 __all__ = [
     "ContactEvent",

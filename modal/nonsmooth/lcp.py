@@ -26,7 +26,7 @@ from dataclasses import dataclass
 import numpy as np
 from scipy.optimize import nnls
 
-from ..errors import NumericalError
+from twoball._common.errors import NumericalError
 
 _MAX_PIVOTS = 200  # block pivots before the NNLS fallback (finite for SPD D; a guard)
 _SLACK = 3  # Júdice-Pires: block pivots allowed without progress before Murty's rule

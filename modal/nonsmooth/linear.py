@@ -16,7 +16,7 @@ import scipy.linalg as sla
 import scipy.sparse as sp
 import scipy.sparse.linalg as spla
 
-from ..errors import ParameterError
+from twoball._common.errors import ParameterError
 
 MatrixLike = np.ndarray | sp.spmatrix | sp.sparray
 """A 1-D array (the diagonal), a 2-D array, or a scipy sparse matrix."""
@@ -87,7 +87,7 @@ def as_operator(name: str, matrix: MatrixLike | None, size: int | None = None) -
     Parameters
     ----------
     name : str
-        Parameter name for :class:`~twoball.modal.errors.ParameterError`.
+        Parameter name for :class:`~twoball._common.errors.ParameterError`.
     matrix : array_like, sparse matrix or None
         1-D: the diagonal; 2-D: the full matrix; sparse: kept sparse (CSR).
     size : int, optional

@@ -14,9 +14,8 @@ from collections.abc import Callable, Sequence
 
 import numpy as np
 from twoball.modal.floor_prototype import DropResult, FloorModel, drop, settle
-
-from .bar_drop import bar_study
-from .orders import least_squares_order
+from twoball.verify.studies.bar_drop import bar_study
+from twoball.verify.studies.orders import least_squares_order
 
 FIELDS = ("contact_time", "e2", "phi_a_max", "flattening_max", "energy_lost_impacts")
 RAYLEIGH = (0.47273, 0.011818)  # zeta = alpha/(2 omega) + beta omega/2 = 0.13 at omega = 2, 20
