@@ -4,7 +4,8 @@ One validated bundle, :class:`Stepping`, in SI (seconds).  Which fields act
 depends on the solver: the window acts everywhere; ``scheme``, ``dt`` and
 ``route`` choose how the finite elements advance in time (modal superposition,
 eqs. (3.14)-(3.16), on the ``full`` or ``krylov`` eigen route, or
-generalized-alpha stepping with step ``dt``).  A field that does not act where
+generalized-alpha stepping with step ``dt``); the drop on the floor
+(``twoball.bounce``) always steps with Moreau-Jean's scheme, whose step is ``dt``.  A field that does not act where
 it is given is refused by the verb that receives it.
 """
 
@@ -18,8 +19,10 @@ from twoball._common.errors import ParameterError, real_number
 
 __all__ = ["ROUTES", "SCHEMES", "Stepping"]
 
-#: Time schemes: modal superposition (closed form in time) or generalized-alpha steps.
-SCHEMES: tuple[str, ...] = ("modal", "alpha")
+#: Time schemes: modal superposition (closed form in time) or generalized-alpha steps
+#: (the lift-off on finite elements), Moreau-Jean steps with contact (the drop on the
+#: floor, :mod:`twoball.modal.nonsmooth`).
+SCHEMES: tuple[str, ...] = ("modal", "alpha", "moreau-jean")
 #: Eigen routes of modal superposition on finite elements: every pair below the
 #: cutoff, the rational Krylov route, or Krylov from 2000 unknowns on.
 ROUTES: tuple[str, ...] = ("full", "krylov", "auto")
@@ -36,11 +39,13 @@ class Stepping:
         slowest membrane mode); its upper and lower bounds depend on c and are
         checked by the solve.
     dt : float, optional
-        Time step [s] of generalized-alpha (default omega_cut dt = 0.2); only
-        with ``scheme="alpha"``.
-    scheme : {"modal", "alpha"}, optional
+        Time step [s] of generalized-alpha (default omega_cut dt = 0.2) or of
+        the drop's Moreau-Jean steps; not with scheme ``modal`` (the default of
+        the lift-off).
+    scheme : {"modal", "alpha", "moreau-jean"}, optional
         Modal superposition (default) or generalized-alpha stepping (finite
-        elements only).
+        elements only) for the lift-off; ``moreau-jean`` for the drop on the
+        floor (its only scheme, the default there).
     route : {"auto", "full", "krylov"}, optional
         Eigen route of modal superposition on finite elements (default
         ``auto``); ``alpha`` needs the full eigenpairs.

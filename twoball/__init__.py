@@ -14,6 +14,8 @@ Public names: :class:`Case`, :func:`liftoff`, :func:`sweep`, :mod:`fem`
 (``fem.solve``, ``fem.eigen``), :func:`converge`, :func:`verify`,
 :func:`export`, :func:`render`, :func:`plot`, :class:`LiftoffReport`,
 :class:`MeshOptions`, :class:`ParameterError`, :class:`NumericalError`,
+:func:`bounce` (the lower ball dropped on the floor, with :class:`Drop` and
+:class:`BounceReport`),
 :func:`report` (versions and platform), :mod:`provenance`, :mod:`progress`,
 ``__version__``.  The command line ``twoball`` is a thin layer over these.
 """
@@ -49,6 +51,9 @@ _NAMES: dict[str, str | tuple[str, str]] = {
     "PlotOptions": "twoball.verify.output.options",
     "ContactReport": "twoball.modal.contact.report",
     "liftoff": "twoball._liftoff",
+    "bounce": "twoball._bounce",
+    "Drop": "twoball.modal.floor.options",
+    "BounceReport": "twoball.modal.floor.report",
     "sweep": "twoball._sweep",
     "SweepResult": "twoball._sweep",
     "converge": "twoball._studies",

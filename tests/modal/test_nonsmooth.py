@@ -236,96 +236,7 @@ def test_theta_above_half_dissipates_numerically():
     assert np.all(np.diff(tr.balance) <= 1e-14 * tr.kinetic[0])
 
 
-# --- the ball dropped on the floor (modal and axisymmetric finite elements) -------------------
-
-from twoball.modal.floor_prototype import FloorModel, drop, settle  # noqa: E402
-
-
-@pytest.mark.parametrize(
-    "model",
-    [
-        FloorModel(modes=20, points=10, damping=0.13),
-        FloorModel(modes=20, points=10, damping=0.0),
-        FloorModel(modes=20, points=10, operator="paper", damping=0.13),
-        FloorModel(modes=20, points=10, rayleigh=(0.47, 0.012)),
-    ],
-    ids=["pressurised-D", "pressurised-undamped", "paper", "rayleigh"],
-)
-def test_floor_impulse_and_energy_balance(model):
-    """Floor impulse = m2 (v2 + |v0|) + weight impulse to 1e-10; energy books close to rounding."""
-    r = drop(model, 0.02)
-    assert r.impulse_balance < 1e-10
-    assert r.energy_error < 1e-12
-    assert 0.0 < r.e2 < 1.0
-    assert r.energy_lost_impacts > 0.0
-    # contact time of the order of pi (pressure x area spring) and flattening of v0 (units R)
-    assert math.pi < r.contact_time < 2.0 * math.pi
-    assert model.v0 < r.flattening_max < 2.0 * model.v0
-    if model.damping == 0.0 and model.rayleigh is None:
-        assert r.energy_damped == 0.0
-        # what the floor did not take is in the flight and the vibration
-        assert r.e2**2 + r.final_vibration + r.energy_lost_impacts == pytest.approx(1.0, abs=0.05)
-
-
-def test_floor_time_step_orders():
-    """Second order in dt for the flattening and the impact loss (N = 20; reference dt/8)."""
-    model = FloorModel(modes=20, points=10, damping=0.13)
-    ref = drop(model, 0.00125)
-    steps = (0.04, 0.02, 0.01)
-    runs = [drop(model, dt) for dt in steps]
-    for name in ("flattening_max", "energy_lost_impacts"):
-        errors = [abs(getattr(r, name) - getattr(ref, name)) for r in runs]
-        order = least_squares_order(steps, errors).order
-        assert OrderBand(2.0, 0.35, 0.35).contains(order), (name, order)
-    assert abs(runs[-1].e2 - ref.e2) < 1e-5
-    assert abs(runs[-1].contact_time - ref.contact_time) < 1e-4
-
-
-def test_floor_modes_order_of_restitution():
-    """e2 converges in N at order 2: ``log2`` of successive differences over N = 20, 40, 80."""
-    values = [drop(FloorModel(modes=n, points=n // 2, damping=0.13), 0.02).e2 for n in (20, 40, 80)]
-    order = math.log2((values[1] - values[0]) / (values[2] - values[1]))
-    assert OrderBand(2.0, 0.35, 0.35).contains(order), order
-
-
-def test_paper_operator_without_gas_keeps_the_energy_in_the_breathing_mode():
-    """omega_0 = 0: the floor's push shrinks the ball for good, and it does not bounce."""
-    r = drop(FloorModel(modes=20, points=10, operator="paper", gas=0.0, damping=0.13), 0.02)
-    assert r.impulse_balance < 1e-10
-    assert r.e2 < 0.1
-    assert r.final_vibration > 0.5
-
-
-def test_resting_ball_carries_its_weight():
-    """Settled under gravity with damping: the floor force equals the weight."""
-    r = settle(FloorModel(modes=60, points=30, damping=0.9))
-    assert r.residual_speed < 1e-12
-    assert r.floor_force == pytest.approx(r.weight, rel=1e-9)
-
-
-@pytest.mark.slow
-@pytest.mark.parametrize("modes", [240, 360, 480])
-def test_resting_contact_brackets_pressure_times_area(modes):
-    """The contact set lies between the caps through the last point in contact and the next
-    point out; from N = 240 on that bracket holds m2 g / P (pressure x area), and it narrows
-    like 1/N."""
-    r = settle(FloorModel(modes=modes, points=modes // 2, damping=0.9))
-    assert r.floor_force == pytest.approx(r.weight, rel=1e-9)
-    inner, outer = r.contact_area
-    assert inner <= r.pressure_area <= outer
-    assert outer - inner < 0.8 * r.pressure_area * 240 / modes
-
-
-def test_finite_elements_agree_with_modes():
-    """Axisymmetric P2 (E = 20) against Legendre modes (N = 40): same node spacing pi/40."""
-    from twoball.fem_membrane.floor_prototype import AxisymFloorModel, axisym_drop
-
-    fe = axisym_drop(AxisymFloorModel(elements=20, damping=0.13), 0.02)
-    modal = drop(FloorModel(modes=40, points=20, damping=0.13), 0.02)
-    assert fe.impulse_balance < 1e-10 and fe.energy_error < 1e-10
-    assert fe.e2 == pytest.approx(modal.e2, rel=1e-3)
-    assert fe.contact_time == pytest.approx(modal.contact_time, rel=3e-3)
-    assert fe.flattening_max == pytest.approx(modal.flattening_max, rel=2e-3)
+# --- a body on top of the membrane (the floor's tests: tests/modal/test_floor.py) -------------
 
 
 def test_rigid_body_on_top_matches_the_event_driven_solver():
@@ -334,7 +245,7 @@ def test_rigid_body_on_top_matches_the_event_driven_solver():
     :mod:`twoball.modal.contact` (same modes, one constraint ``s - b . q >= 0``)."""
     from twoball.modal.contact.events import integrate
     from twoball.modal.contact.system import ContactSystem
-    from twoball.modal.floor_prototype import lift_off_time
+    from twoball.modal.floor.measure import contact_intervals
     from twoball.modal.legendre import legendre_series
 
     gamma = 7.98e-4
@@ -354,7 +265,7 @@ def test_rigid_body_on_top_matches_the_event_driven_solver():
     )
     q0 = np.append(system.initial, b @ system.initial)
     tr = MoreauJean(problem, 0.0025).run(q0, np.zeros(q0.size), 6.0)
-    t_l, _ = lift_off_time(tr.t, tr.impulse - tr.impact_impulse, tr.impact_impulse)
+    t_l = contact_intervals(tr.t, tr.impulse.sum(axis=1), 0.0025)[-1].end
     velocity = tr.v_final[-1] + gamma * (tr.t[-1] - t_l)  # free flight after lift-off
     assert history.lifted
     assert velocity == pytest.approx(history.velocity, rel=2e-4)

@@ -94,6 +94,9 @@ FLAGS: dict[str, str] = {
     "e12": "--e12",
     "dx": "--dx",
     "drop_height": "--drop-height",
+    # the drop on the floor
+    "membrane": "--membrane",
+    "floor_restitution": "--floor-restitution",
 }
 
 

@@ -1,0 +1,118 @@
+"""The lower ball on the floor with axisymmetric finite elements, in their own modes.
+
+Dimensionless (R, 1/c, m2).  The membrane's radial displacement lives on the
+line ``x = cos(phi)`` (Lagrange P1 to P4, vertices equally spaced in phi); the
+forms are those of :mod:`twoball.fem_membrane.forms` over the whole sphere,
+divided by 4 pi so that the mass unit is m2 = 4 pi rho R^2.  The floor touches
+the nodes of the lower hemisphere (``x < 0``): the node of polar angle phi_i is
+at height ``Z + (1 + u_i) x_i``, as for the Legendre points
+(:mod:`twoball.modal.floor.system`).
+
+The contact core is handed the finite-element equations in the basis of their
+own eigenvectors: ``K V = M V diag(lambda_h)`` over the whole space (dense,
+``V^T M V = I``), so M, K and C are diagonal and every step costs what a
+Legendre step costs.  This is a change of coordinates, exact to rounding:
+
+* the membrane operator, bending and gas map each Laplace-Beltrami eigenvalue
+  lambda_h (:class:`~twoball.modal.floor.ball.BallSpectrum`): ``K - s M``,
+  ``(1 - 2 beta) K + beta K M^-1 K`` (:mod:`twoball.fem_membrane.shell`) and
+  ``gas m m^T`` (``m = M 1``) are all diagonal in V, the last on the constant
+  vector only;
+* the damping law is ``C = M V diag(d_k) V^T M`` with ``d_k = 2 zeta_k
+  omega_k`` of the law (the modal ratio), which for Rayleigh's law is ``alpha M
+  + beta K`` exactly;
+* the degree-1 content of u (the centre's offset, carried by Z) is the
+  eigenvector ``x`` itself: on the line, ``x = cos(phi)`` lies in the space and
+  ``K x = 2 M x`` holds exactly (integration by parts of ``(1 - x^2) x'``), so
+  leaving that one eigenvector out imposes ``x^T M u = 0``.
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+import scipy.linalg as sla
+from skfem import Basis, MeshLine1, asm
+from twoball.fem_membrane.axisym import LINE_ELEMENTS
+from twoball.fem_membrane.forms import axisym_mass, axisym_stiffness
+from twoball.modal.damping import ModalRatio, Rayleigh
+from twoball.modal.floor.ball import BallSpectrum, ModalBall, mode_decay
+
+from twoball._common.errors import NumericalError, ParameterError
+
+__all__ = ["axisym_ball", "axisym_matrices"]
+
+SPHERE = 4.0 * math.pi  # the forms integrate over the unit sphere; m2 = 4 pi rho R^2
+
+
+def axisym_matrices(elements: int, order: int) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """Dense K, M (divided by 4 pi) and the node positions x = cos(phi) of every DOF.
+
+    Vertices equally spaced in phi on [0, pi]; Lagrange elements of ``order``.
+    """
+    if isinstance(elements, bool) or not isinstance(elements, int) or elements < 2:
+        raise ParameterError("elements", "an integer >= 2", elements)
+    if order not in LINE_ELEMENTS:
+        raise ParameterError("order", "1, 2, 3 or 4", order)
+    phi = np.linspace(0.0, math.pi, elements + 1)
+    x = np.cos(phi)[::-1].copy()
+    x[0], x[-1] = -1.0, 1.0
+    if elements % 2 == 0:
+        x[elements // 2] = 0.0
+    basis = Basis(MeshLine1.init_tensor(x), LINE_ELEMENTS[order](), intorder=2 * order + 2)
+    K = asm(axisym_stiffness, basis).toarray() / SPHERE
+    M = asm(axisym_mass, basis).toarray() / SPHERE
+    return 0.5 * (K + K.T), 0.5 * (M + M.T), basis.doflocs[0].copy()
+
+
+def axisym_ball(
+    elements: int, order: int, spectrum: BallSpectrum, law: ModalRatio | Rayleigh
+) -> ModalBall:
+    """The finite-element ball in its eigenvectors, with the floor at its lower nodes.
+
+    Parameters
+    ----------
+    elements : int
+        Line elements (>= 2), equally spaced in phi.
+    order : {1, 2, 3, 4}
+        Lagrange order.
+    spectrum : BallSpectrum
+        Membrane operator, bending, gas: omega_k^2 from each lambda_h.
+    law : ModalRatio or Rayleigh
+        The damping law (dimensionless, fitted already).
+
+    Returns
+    -------
+    ModalBall
+        Modes: every eigenvector but the degree-1 one (unit masses); floor
+        points: the nodes with ``x < 0``, ascending in phi.
+    """
+    K, M, x = axisym_matrices(elements, order)
+    laplace, V = sla.eigh(K, M)
+    first = int(np.argmin(np.abs(laplace - 2.0)))
+    moment = V[:, first] @ (M @ x) / math.sqrt(x @ M @ x)
+    if abs(laplace[first] - 2.0) > 1e-8 or abs(abs(moment) - 1.0) > 1e-8:
+        raise NumericalError(
+            f"axisym_ball: the degree-1 eigenvector is not x (lambda = {laplace[first]:.3g})"
+        )
+    keep = np.delete(np.arange(laplace.size), first)
+    laplace, V = laplace[keep], V[:, keep]
+    laplace[np.abs(laplace) < 1e-9] = 0.0  # the constant vector: K 1 = 0 to rounding
+    if np.count_nonzero(laplace == 0.0) != 1 or laplace.min() < 0.0:
+        raise NumericalError("axisym_ball: the constant mode is not isolated")
+    floor = np.flatnonzero(x < 0.0)
+    floor = floor[np.argsort(-x[floor])]  # ascending phi, the south pole last
+    top = int(np.argmax(x))
+    w2 = spectrum.omega_squared(laplace)
+    return ModalBall(
+        masses=np.ones(laplace.size),
+        omega_squared=w2,
+        gas_squared=spectrum.gas_squared(laplace),
+        decay=mode_decay(law, w2),
+        phi=np.arccos(np.clip(x[floor], -1.0, 1.0)),
+        shapes=V[floor, :],
+        top=V[top, :],
+        laplace=laplace,
+        label=f"axisym {elements} P{order}",
+    )

@@ -1,0 +1,32 @@
+"""The lower ball dropped on a rigid floor (dimensionless: R, 1/c, m2).
+
+:mod:`~twoball.modal.floor.ball` describes the ball in modal coordinates (the
+Legendre modes here, the finite elements in :mod:`twoball.fem_membrane.floor`),
+:mod:`~twoball.modal.floor.system` assembles the contact problem with the
+centre's height and the floor's points, :mod:`~twoball.modal.floor.drop` runs
+one drop on the contact core and :mod:`~twoball.modal.floor.measure` defines its
+measures; :mod:`~twoball.modal.floor.options` and
+:mod:`~twoball.modal.floor.report` are its SI edge.  Names load on first use.
+"""
+
+from twoball._common.lazy import attach
+
+_NAMES = {
+    "BallSpectrum": "twoball.modal.floor.ball",
+    "ModalBall": "twoball.modal.floor.ball",
+    "legendre_ball": "twoball.modal.floor.ball",
+    "mode_decay": "twoball.modal.floor.ball",
+    "DropResult": "twoball.modal.floor.drop",
+    "DropSettings": "twoball.modal.floor.drop",
+    "FloorEvent": "twoball.modal.floor.drop",
+    "run_drop": "twoball.modal.floor.drop",
+    "FloorSystem": "twoball.modal.floor.system",
+    "floor_system": "twoball.modal.floor.system",
+    "Drop": "twoball.modal.floor.options",
+    "BounceReport": "twoball.modal.floor.report",
+    "RestResult": "twoball.modal.floor.settle",
+    "settle": "twoball.modal.floor.settle",
+    "restitution_only": "twoball.modal.floor.restitution",
+}
+__getattr__, __dir__ = attach(__name__, _NAMES)
+__all__ = sorted(_NAMES)

@@ -1,0 +1,254 @@
+"""The lower ball in modal coordinates, with the points where it may touch the floor.
+
+Dimensionless: length R, time 1/c, mass m2 = 4 pi rho R^2.  Both backends hand
+the contact core the same description (:class:`ModalBall`): the radial
+displacement is ``u = sum_k a_k phi_k`` over modes of mass ``m_k = int phi_k^2
+dS / (4 pi)``, stiffness ``m_k omega_k^2`` and damping ``m_k d_k`` (the decay
+``d_k = 2 zeta_k omega_k`` of the damping law), and ``shapes[i, k] = phi_k(phi_i)``
+at the floor points.
+
+* Legendre modes (:func:`legendre_ball`): ``phi_k = P_n(cos phi)``, ``m_n = 1 /
+  (2n + 1)``, the floor points equally spaced in phi on ``(pi/2, pi]``.
+* Finite elements (:func:`twoball.fem_membrane.floor.axisym_ball`): the
+  M-orthonormal eigenvectors of the whole finite-element space (``m_k = 1``), the
+  floor points at the nodes of the lower hemisphere.  A change of coordinates,
+  exact to rounding: the contact core integrates the finite-element equations.
+
+The rigid translation is carried by the centre's height Z, so the degree-1
+content of u (``int u cos(phi) dS``, the centre of mass's offset) is left out:
+a translation is carried once.  :class:`BallSpectrum` gives the frequencies of
+the membrane operator, bending and the enclosed gas from the Laplace-Beltrami
+eigenvalue of each mode, and :func:`mode_decay` each mode's damping from the law.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field
+
+import numpy as np
+from numpy.polynomial.legendre import legvander
+from twoball.modal.damping import ModalRatio, Rayleigh
+from twoball.modal.stiffness import Stiffness
+
+from twoball._common.errors import NumericalError, ParameterError
+
+__all__ = [
+    "MEMBRANES",
+    "BallSpectrum",
+    "ModalBall",
+    "floor_angles",
+    "legendre_ball",
+    "mode_decay",
+]
+
+#: Membrane operators: ``omega^2 = lambda - s`` on a Laplace-Beltrami eigenvalue lambda.
+MEMBRANES: dict[str, float] = {"paper": 0.0, "pressurised": 2.0}
+#: Laplace-Beltrami eigenvalue below which a mode is the constant one (n = 0).
+CONSTANT_MODE = 1e-6
+
+
+@dataclass(frozen=True)
+class BallSpectrum:
+    """omega^2 of the ball's modes from their Laplace-Beltrami eigenvalues (dimensionless).
+
+    ``paper`` (eq. (3.1)): ``omega^2 = lambda (1 + beta (lambda - 2))``;
+    ``pressurised`` (the second variation of ``T dA - P dV`` at ``P = 2 T / R``):
+    ``(lambda - 2)(1 + beta lambda)``; on Legendre degree n, ``lambda = n (n + 1)``.
+    The enclosed gas stiffens the constant mode only: ``omega_0^2 = gas - s`` with
+    s = 0 (paper) or 2 (pressurised) (:mod:`twoball.modal.stiffness`).
+
+    Parameters
+    ----------
+    stiffness : Stiffness
+        Bending ratio beta and gas term ``6 kappa P_abs / P``.
+    membrane : {"paper", "pressurised"}
+        The membrane operator.
+    """
+
+    stiffness: Stiffness = field(default_factory=Stiffness)
+    membrane: str = "paper"
+
+    def __post_init__(self) -> None:
+        if self.membrane not in MEMBRANES:
+            raise ParameterError("membrane", "one of " + ", ".join(MEMBRANES), self.membrane)
+        if not isinstance(self.stiffness, Stiffness):
+            raise ParameterError("stiffness", "a Stiffness", type(self.stiffness).__name__)
+
+    @property
+    def shift(self) -> float:
+        """s of ``omega^2 = lambda - s``: 0 (paper) or 2 (pressurised)."""
+        return MEMBRANES[self.membrane]
+
+    @property
+    def breathing(self) -> float:
+        """omega_0^2 of the constant mode: ``gas - s``."""
+        return self.stiffness.gas - self.shift
+
+    def omega_squared(self, laplace: np.ndarray) -> np.ndarray:
+        """omega^2 of modes of Laplace-Beltrami eigenvalues ``laplace`` (the constant one too)."""
+        lam = np.asarray(laplace, dtype=float)
+        beta = self.stiffness.beta
+        if self.shift:
+            out = (lam - self.shift) * (1.0 + beta * lam)
+        else:
+            out = lam * (1.0 + beta * (lam - 2.0))
+        return np.where(np.abs(lam) < CONSTANT_MODE, self.breathing, out)
+
+    def gas_squared(self, laplace: np.ndarray) -> np.ndarray:
+        """The gas's share of omega^2: ``gas`` on the constant mode, 0 elsewhere."""
+        lam = np.asarray(laplace, dtype=float)
+        return np.where(np.abs(lam) < CONSTANT_MODE, self.stiffness.gas, 0.0)
+
+    def as_dict(self) -> dict[str, float | str]:
+        """``membrane``, ``beta`` and omega_0^2 (``omega0_squared``)."""
+        return {
+            "membrane": self.membrane,
+            "beta": self.stiffness.beta,
+            "omega0_squared": self.breathing,
+        }
+
+
+def mode_decay(law: ModalRatio | Rayleigh, omega_squared: np.ndarray) -> np.ndarray:
+    """``d_k = 2 zeta_k omega_k`` of each mode under the damping law (dimensionless).
+
+    :class:`~twoball.modal.damping.ModalRatio`: ``2 D omega`` (eq. (3.14));
+    :class:`~twoball.modal.damping.Rayleigh`: ``alpha + beta omega^2``, which is
+    ``C = alpha M + beta K`` exactly in the modes of K.  A mode of ``omega^2 <= 0``
+    (a free motion) has ``2 D omega = 0`` under the modal ratio.
+    """
+    w2 = np.asarray(omega_squared, dtype=float)
+    if isinstance(law, ModalRatio):
+        return 2.0 * law.ratio * np.sqrt(np.clip(w2, 0.0, None))
+    if isinstance(law, Rayleigh):
+        if law.fitted:
+            raise ParameterError("damping", "a Rayleigh law with alpha and beta here", law)
+        return law.alpha + law.beta * w2
+    raise ParameterError("damping", "a ModalRatio or Rayleigh", law)
+
+
+@dataclass(frozen=True, eq=False)
+class ModalBall:
+    """The membrane in modal coordinates and its floor points (dimensionless).
+
+    Attributes
+    ----------
+    masses : ndarray, shape (K,)
+        ``m_k`` in units of m2.
+    omega_squared : ndarray, shape (K,)
+        omega_k^2 (membrane operator, bending and gas), units c^2.
+    gas_squared : ndarray, shape (K,)
+        The gas's share of omega_k^2 (for the energy books).
+    decay : ndarray, shape (K,)
+        ``2 zeta_k omega_k``, units c.
+    phi : ndarray, shape (P,)
+        Polar angles of the floor points [rad], ascending, in ``(pi/2, pi]``.
+    shapes : ndarray, shape (P, K)
+        Mode k at floor point i.
+    top : ndarray, shape (K,)
+        Mode values at the north pole (phi = 0), where an upper body rests.
+    laplace : ndarray, shape (K,)
+        Laplace-Beltrami eigenvalue of each mode (``n (n + 1)`` or the FE one).
+    label : str
+        ``"legendre N = 128"``, ``"axisym 64 P2"``, ...
+    """
+
+    masses: np.ndarray
+    omega_squared: np.ndarray
+    gas_squared: np.ndarray
+    decay: np.ndarray
+    phi: np.ndarray
+    shapes: np.ndarray
+    top: np.ndarray
+    laplace: np.ndarray
+    label: str = ""
+
+    def __post_init__(self) -> None:
+        k = self.masses.size
+        for name in ("omega_squared", "gas_squared", "decay", "top", "laplace"):
+            if getattr(self, name).shape != (k,):
+                raise NumericalError(f"ModalBall: {name} has the wrong shape")
+        if self.shapes.shape != (self.phi.size, k):
+            raise NumericalError("ModalBall: shapes must be (points, modes)")
+        if np.any(self.masses <= 0) or np.any(self.decay < 0):
+            raise NumericalError("ModalBall: masses must be > 0 and decays >= 0")
+        if np.any(np.diff(self.phi) <= 0) or self.phi[0] <= 0.5 * math.pi:
+            raise NumericalError("ModalBall: floor points must ascend in (pi/2, pi]")
+
+    @property
+    def modes(self) -> int:
+        """Number of modal coordinates K."""
+        return int(self.masses.size)
+
+    @property
+    def points(self) -> int:
+        """Number of floor points P."""
+        return int(self.phi.size)
+
+    @property
+    def stable(self) -> bool:
+        """True when every mode has omega^2 > 0 (no free drift of the shape)."""
+        return bool(np.all(self.omega_squared > 0.0))
+
+    def amplitude_bound(self) -> np.ndarray:
+        """``b_i``: ``|u(phi_i)| <= b_i sqrt(2 E)`` for a membrane energy E (inf if unstable).
+
+        Cauchy-Schwarz on ``u_i = sum_k S_ik a_k`` with ``E >= 1/2 sum m_k omega_k^2
+        a_k^2``: ``b_i^2 = sum_k S_ik^2 / (m_k omega_k^2)``.
+        """
+        if not self.stable:
+            return np.full(self.points, math.inf)
+        return np.sqrt((self.shapes**2) @ (1.0 / (self.masses * self.omega_squared)))
+
+
+def floor_angles(count: int) -> np.ndarray:
+    """``count`` polar angles equally spaced on ``(pi/2, pi]``, the south pole last [rad]."""
+    return np.linspace(0.5 * math.pi, math.pi, count + 1)[1:]
+
+
+def legendre_ball(
+    modes: int,
+    spectrum: BallSpectrum,
+    law: ModalRatio | Rayleigh,
+    points: int | None = None,
+    *,
+    anchored: bool = False,
+) -> ModalBall:
+    """Legendre modes n = 0, 2, 3, ..., N and the floor points (dimensionless).
+
+    Parameters
+    ----------
+    modes : int
+        Highest degree N >= 2.
+    spectrum : BallSpectrum
+        Membrane operator, bending and gas: ``omega_n^2`` from ``lambda = n (n + 1)``.
+    law : ModalRatio or Rayleigh
+        The damping law (dimensionless; a fitted Rayleigh law must be fitted already).
+    points : int, optional
+        Floor points (default N/2: spacing pi/N, the modes' own resolution).
+    anchored : bool
+        Keep degree 1 as a mode of the membrane about a fixed centre (omega_1^2 =
+        2 on the paper's operator, 0 on the pressurised one): the paper's
+        restitution-only model.  The drop leaves it out (Z carries it).
+    """
+    if isinstance(modes, bool) or not isinstance(modes, int) or modes < 2:
+        raise ParameterError("modes", "an integer >= 2", modes)
+    count = max(modes // 2, 2) if points is None else points
+    if isinstance(count, bool) or not isinstance(count, int) or count < 1:
+        raise ParameterError("points", "an integer >= 1", points)
+    n = np.arange(modes + 1) if anchored else np.concatenate([[0], np.arange(2, modes + 1)])
+    laplace = n * (n + 1.0)
+    w2 = spectrum.omega_squared(laplace)
+    phi = floor_angles(count)
+    shapes = legvander(np.cos(phi), modes)[:, n]
+    return ModalBall(
+        masses=1.0 / (2.0 * n + 1.0),
+        omega_squared=w2,
+        gas_squared=spectrum.gas_squared(laplace),
+        decay=mode_decay(law, w2),
+        phi=phi,
+        shapes=shapes,
+        top=np.ones(n.size),
+        laplace=laplace,
+        label=f"legendre N = {modes}",
+    )

@@ -1,0 +1,101 @@
+"""How the lower ball is dropped on the floor: the option object of ``twoball.bounce`` (SI).
+
+No numerical library is imported here.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import asdict, dataclass
+from numbers import Integral
+from typing import Any
+
+from twoball._common.errors import ParameterError, real_number
+
+__all__ = ["DEFAULT_MODES", "GAS_LAWS", "MEMBRANE_KINDS", "Drop"]
+
+#: Legendre degree N of the drop on the closed-form modes (floor points N/2).
+DEFAULT_MODES = 96
+MODES_RANGE = (8, 2000)
+GAS_LAWS: tuple[str, ...] = ("none", "isothermal", "adiabatic")
+MEMBRANE_KINDS: tuple[str, ...] = ("paper", "pressurised")
+
+
+@dataclass(frozen=True)
+class Drop:
+    """One drop of the lower ball on a rigid floor, validated when built (SI).
+
+    Parameters
+    ----------
+    drop_height : float, optional
+        Height H [m] > 0 of the ball's lowest point above the floor at release
+        (as in ``twoball icm``): the impact speed is ``|v0| = sqrt(2 g H)``, eq.
+        (2.1), in place of the case's ``v0``.
+    gas : {"none", "isothermal", "adiabatic"}, optional
+        The enclosed gas (:mod:`twoball.modal.stiffness`); default the case's own,
+        else ``adiabatic`` at the case's excess pressure and ambient pressure:
+        the drop needs a breathing mode that springs back.
+    floor_restitution : float
+        Newton's coefficient e in [0, 1] at every floor point (default 0: the
+        floor stops the arriving membrane; 1 keeps the mechanical energy).
+    modes : int, optional
+        Legendre degree N of the closed-form backend (default
+        :data:`DEFAULT_MODES`; floor points N/2); the finite elements take their
+        mesh instead.
+    membrane : {"paper", "pressurised"}
+        The membrane operator: the paper's ``n (n + 1)`` or the one consistent
+        with the pressure, ``(n - 1)(n + 2)`` (needs a gas).
+
+    Examples
+    --------
+    >>> import twoball
+    >>> twoball.Drop(drop_height=0.857).as_dict()["drop_height"]
+    0.857
+    >>> twoball.Drop(drop_height=-1.0)
+    Traceback (most recent call last):
+    ...
+    twoball.ParameterError: drop_height must be a height > 0 [m] of the lowest point above the floor, got -1.0
+    """
+
+    drop_height: float | None = None
+    gas: str | None = None
+    floor_restitution: float = 0.0
+    modes: int | None = None
+    membrane: str = "paper"
+
+    VALID = {  # noqa: RUF012 -- a class constant, not a field
+        "drop_height": "a height > 0 [m] of the lowest point above the floor",
+        "gas": "one of " + ", ".join(GAS_LAWS),
+        "floor_restitution": "in [0, 1]",
+        "modes": f"an integer in [{MODES_RANGE[0]}, {MODES_RANGE[1]}]",
+        "membrane": "one of " + ", ".join(MEMBRANE_KINDS),
+    }
+
+    def __post_init__(self) -> None:
+        if self.drop_height is not None:
+            height = real_number("drop_height", self.drop_height, self.VALID["drop_height"])
+            if not (height > 0.0 and math.isfinite(height) and height <= 1e6):
+                raise ParameterError("drop_height", self.VALID["drop_height"], self.drop_height)
+            object.__setattr__(self, "drop_height", height)
+        if self.gas is not None and self.gas not in GAS_LAWS:
+            raise ParameterError("gas", self.VALID["gas"], self.gas)
+        valid = self.VALID["floor_restitution"]
+        e = real_number("floor_restitution", self.floor_restitution, valid)
+        if not 0.0 <= e <= 1.0:
+            raise ParameterError("floor_restitution", valid, self.floor_restitution)
+        object.__setattr__(self, "floor_restitution", e)
+        if self.modes is not None:
+            low, high = MODES_RANGE
+            if (
+                isinstance(self.modes, bool)
+                or not isinstance(self.modes, Integral)
+                or not low <= int(self.modes) <= high
+            ):
+                raise ParameterError("modes", self.VALID["modes"], self.modes)
+            object.__setattr__(self, "modes", int(self.modes))
+        if self.membrane not in MEMBRANE_KINDS:
+            raise ParameterError("membrane", self.VALID["membrane"], self.membrane)
+
+    def as_dict(self) -> dict[str, Any]:
+        """The fields as given (None: the default), for JSON and provenance."""
+        return asdict(self)

@@ -1,0 +1,199 @@
+"""``twoball bounce``: one drop of the lower ball on a rigid floor (SI in and out).
+
+A thin layer over :func:`twoball.bounce`: the options become its case, its
+:class:`~twoball.Drop`, its mesh and its time step.
+"""
+
+from __future__ import annotations
+
+import argparse
+from copy import copy
+from typing import Any
+
+import twoball
+from twoball._common.errors import ParameterError
+from twoball.cli.case_options import add_case_options, case_from_options
+from twoball.cli.console import (
+    console,
+    key_value_table,
+    number,
+    print_json,
+    print_notes,
+    print_warnings,
+)
+from twoball.cli.mesh_options import damping_options
+from twoball.cli.values import integer, number as numeric
+
+__all__ = [
+    "add_drop_options",
+    "bounce_rows",
+    "bounce_from_options",
+    "drop_case",
+    "drop_options",
+    "register",
+    "run",
+]
+
+
+def add_drop_options(parser: argparse.ArgumentParser) -> None:
+    """The drop's own options: height, membrane, floor restitution, resolution, time step."""
+    group = parser.add_argument_group("the drop on the floor")
+    group.add_argument(
+        "--drop-height",
+        type=numeric,
+        metavar="H",
+        help="height [m] of the lowest point above the floor at release: |v0| = sqrt(2 g H), "
+        "eq. (2.1) (instead of --v0)",
+    )
+    group.add_argument(
+        "--membrane",
+        metavar="KIND",
+        help="membrane operator: paper (n(n+1), default) or pressurised ((n-1)(n+2), "
+        "consistent with T = P R / 2; needs a gas)",
+    )
+    group.add_argument(
+        "--floor-restitution",
+        type=numeric,
+        metavar="E",
+        help="Newton's e at every floor point in [0, 1] (default 0; 1 keeps the energy)",
+    )
+    group.add_argument(
+        "--damping-model", help="modal (the ratio D on every mode, default) or rayleigh (causal)"
+    )
+    group.add_argument(
+        "--dt",
+        type=numeric,
+        metavar="SECONDS",
+        help="time step [s] of the Moreau-Jean steps (default 0.01 / c)",
+    )
+    mesh = parser.add_argument_group("finite-element mesh (--backend fem)")
+    mesh.add_argument("--mesh", help="axisym (the line x = cos phi; default)")
+    mesh.add_argument("--elements", type=integer, help="axisymmetric line elements (default 48)")
+    mesh.add_argument("--order", type=integer, help="element order 1, 2, 3 or 4 (default 2)")
+
+
+def drop_case(args: argparse.Namespace) -> twoball.Case:
+    """The case of the options; ``--gas`` and ``--modes`` go to the drop instead."""
+    if args.drop_height is not None and args.v0 is not None:
+        raise ParameterError("drop_height", "given alone, not with --v0", args.drop_height)
+    for name, default in (("sigma", "lanczos"), ("recontact", "window")):
+        if getattr(args, name, default) != default:
+            raise ParameterError(name, "left out for the drop (no lift-off criteria)", args.sigma)
+    case_args = copy(args)
+    case_args.gas = None
+    case_args.modes = None
+    return case_from_options(case_args)
+
+
+def drop_options(args: argparse.Namespace) -> twoball.Drop:
+    """``--drop-height``, ``--gas``, ``--floor-restitution``, ``--modes``, ``--membrane``."""
+    fields: dict[str, Any] = {
+        "drop_height": args.drop_height,
+        "gas": args.gas,
+        "modes": args.modes,
+    }
+    if args.floor_restitution is not None:
+        fields["floor_restitution"] = args.floor_restitution
+    if args.membrane is not None:
+        fields["membrane"] = args.membrane
+    return twoball.Drop(**{k: v for k, v in fields.items() if v is not None})
+
+
+def _mesh(args: argparse.Namespace) -> twoball.MeshOptions | None:
+    """``--mesh``, ``--elements``, ``--order`` as mesh options (the line ``axisym`` by default)."""
+    fields = {n: getattr(args, n) for n in ("elements", "order") if getattr(args, n) is not None}
+    if args.mesh is None and not fields:
+        return None
+    if args.backend != "fem":
+        name, value = ("mesh", args.mesh) if args.mesh is not None else next(iter(fields.items()))
+        valid = "left out with backend legendre (no mesh: --modes sets its resolution)"
+        raise ParameterError(name, valid, value)
+    return twoball.MeshOptions(args.mesh or "axisym", **fields)
+
+
+def _stepping(args: argparse.Namespace) -> twoball.Stepping | None:
+    fields: dict[str, Any] = {}
+    if args.t_end is not None:
+        fields["t_end"] = args.t_end
+    if args.dt is not None:
+        fields.update(dt=args.dt, scheme="moreau-jean")
+    return twoball.Stepping(**fields) if fields else None
+
+
+def bounce_from_options(args: argparse.Namespace) -> twoball.BounceReport:
+    """Call :func:`twoball.bounce` with the options."""
+    case = drop_case(args)
+    return twoball.bounce(
+        case,
+        drop_options(args),
+        backend=args.backend,
+        mesh=_mesh(args),
+        stepping=_stepping(args),
+        damping=damping_options(args),
+    )
+
+
+def bounce_rows(report: twoball.BounceReport) -> list[tuple[str, str]]:
+    """The human-readable rows of a drop (SI)."""
+    case, model = report.case, report.model
+    pa = report.comparisons()["pressure_area"]
+    rows = [
+        ("R [m]", f"{case.radius:g}"),
+        ("c [1/s]", f"{case.wave_speed:g}"),
+        ("|v0| [m/s]", f"{case.v0:g}"),
+        ("P [Pa], m2 [kg]", f"{report.pressure:g}, {report.mass_kg:.4g}"),
+        ("membrane, gas", f"{model['membrane']}, {model['gas']}"),
+        ("omega_0^2 (units c^2)", f"{model['omega0_squared']:.4g}"),
+        ("damping", ", ".join(f"{k} {v:g}" for k, v in model["damping"].items() if k != "law")),
+        ("resolution", f"{model['resolution']} ({model['floor_points']} floor points)"),
+        ("dt [s]", f"{model['dt_s']:.4g}"),
+        ("left the floor", "yes" if report.left_floor else "no"),
+        ("contact time [ms]", number(report.contact_time_s, 1e3)),
+        ("  pressure x area pi/c [ms]", number(pa["contact_time_s"], 1e3)),
+        ("v2 [m/s]", number(report.v2_m_s)),
+        ("e2 = v2/|v0|", number(report.e2)),
+        ("phi_a,max [rad]", number(report.phi_a_max_rad)),
+        ("  pressure x area [rad]", number(pa["phi_a_max_rad"])),
+        ("flattening max [mm]", number(report.flattening_max_m, 1e3)),
+        ("  pressure x area |v0|/c [mm]", number(pa["flattening_max_m"], 1e3)),
+        ("t max compression [ms]", number(report.t_max_compression_s, 1e3)),
+        ("floor impulse [N s]", number(report.floor_impulse_N_s)),
+    ]
+    energy = report.energy_J
+    rows += [
+        ("energy lost at impacts [J]", f"{energy['lost_impacts']:.4g}"),
+        ("energy damped [J]", f"{energy['dissipated_damping']:.4g}"),
+        ("vibration after leaving [J]", f"{energy['vibration_after_leaving']:.4g}"),
+    ]
+    for event in report.events:
+        rows.append(
+            (
+                f"{event['kind']} [ms]",
+                f"{event['t_s'] * 1e3:.4f} (v = {event['velocity_m_s']:+.4f} m/s)",
+            )
+        )
+    return rows
+
+
+def run(args: argparse.Namespace) -> int:
+    """Run ``twoball bounce``."""
+    report = bounce_from_options(args)
+    print_notes(list(report.notes))
+    print_warnings(report.warnings)
+    if args.json:
+        print_json(report.as_dict())
+    else:
+        title = f"Drop on the floor ({report.backend})"
+        console().print(key_value_table(title, bounce_rows(report)))
+    return 0
+
+
+def register(parser: argparse.ArgumentParser) -> None:
+    """The options of ``twoball bounce``."""
+    parser.add_argument(
+        "--backend", default="legendre", help="legendre (Legendre modes, default) or fem"
+    )
+    add_case_options(parser)
+    add_drop_options(parser)
+    parser.add_argument("--json", action="store_true", help="print one JSON object")
+    parser.set_defaults(run=run)
