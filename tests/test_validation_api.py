@@ -84,7 +84,10 @@ CALLS: dict[str, dict[str, Callable[[Any, Path], Any]]] = {
         ).modal.initial.initial_displacement([3.0], v),
     },
     "damping": {"Case": lambda v, _: twoball.Case(damping=v)},
-    "modes": {"Case": lambda v, _: twoball.Case(modes=v)},
+    "modes": {
+        "Case": lambda v, _: twoball.Case(modes=v),
+        "Drop": lambda v, _: twoball.Drop(modes=v),
+    },
     "g": {"Case": lambda v, _: twoball.Case(g=v)},
     "t_end": {
         "liftoff": lambda v, _: twoball.liftoff(CASE, t_end=v),
@@ -108,6 +111,9 @@ CALLS: dict[str, dict[str, Callable[[Any, Path], Any]]] = {
     },
     "elements": {
         "fem.solve": lambda v, _: twoball.fem.solve(CASE, mesh="axisym", elements=v),
+        "bounce": lambda v, _: twoball.bounce(
+            CASE, backend="fem", mesh=twoball.MeshOptions("axisym", elements=v)
+        ),
         "fem.eigen": lambda v, _: twoball.fem.eigen(mesh="axisym", elements=v),
     },
     "order": {
@@ -121,6 +127,9 @@ CALLS: dict[str, dict[str, Callable[[Any, Path], Any]]] = {
         "liftoff": lambda v, _: twoball.liftoff(
             CASE, backend="fem", mesh="axisym", scheme="alpha", dt=v
         ),
+        "bounce": lambda v, _: twoball.bounce(
+            CASE, stepping=twoball.Stepping(scheme="moreau-jean", dt=v)
+        ),
     },
     "count": {"fem.eigen": lambda v, _: twoball.fem.eigen(level=1, count=v)},
     "workers": {"sweep": lambda v, _: twoball.sweep({"damping": [0.1, 0.2]}, CASE, workers=v)},
@@ -128,7 +137,11 @@ CALLS: dict[str, dict[str, Callable[[Any, Path], Any]]] = {
     "e2": {"icm": lambda v, _: icm.icm(0.5, v, 0.9)},
     "e12": {"icm": lambda v, _: icm.icm(0.5, 0.8, v)},
     "dx": {"icm": lambda v, _: icm.icm(0.5, 0.8, 0.9, dx=v, drop_height=1.0)},
-    "drop_height": {"icm": lambda v, _: icm.icm(0.5, 0.8, 0.9, drop_height=v)},
+    "drop_height": {
+        "icm": lambda v, _: icm.icm(0.5, 0.8, 0.9, drop_height=v),
+        "Drop": lambda v, _: twoball.Drop(drop_height=v),
+    },
+    "floor_restitution": {"Drop": lambda v, _: twoball.Drop(floor_restitution=v)},
     "frames": {
         "export": lambda v, tmp: twoball.export(tmp / "x.pvd", CASE, level=1, frames=v),
         "render": lambda v, tmp: twoball.render(tmp / "x.gif", CASE, level=1, frames=v),

@@ -94,6 +94,7 @@ RANGES: dict[str, Range] = {
     "--thickness": Range(0.0, 1.0, low_open=True),
     "--poisson": Range(0.0, 0.5),
     "--atmosphere": Range(0.0, 1e12),
+    "--floor-restitution": Range(0.0, 1.0),
 }
 #: Values that a range accepts but the model refuses anyway, per option.
 ALSO_BAD: dict[str, tuple[str, ...]] = {
@@ -106,6 +107,7 @@ ALSO_BAD: dict[str, tuple[str, ...]] = {
 #: A valid, cheap command line of each subcommand; ``{tmp}`` is the case's folder.
 BASE: dict[str, list[str]] = {
     "liftoff": ["liftoff", "--json"],
+    "bounce": ["bounce", "--modes", "16", "--json"],
     "eigen": ["eigen", "--json"],
     "sweep": ["sweep", "--param", "damping", "--values", "0:0.5:3", "--json"],
     "icm": ["icm", "--mu", "0.5", "--e2", "0.8", "--e12", "0.9", "--json"],
@@ -149,6 +151,9 @@ CONTEXT: dict[tuple[str, str], list[str]] = {
         "0.003",
     ],
     ("liftoff", "--atmosphere"): ["--preset", "tennis"],
+    ("bounce", "--elements"): ["--backend", "fem"],
+    ("bounce", "--order"): ["--backend", "fem"],
+    ("bounce", "--modes"): [],
 }
 #: Options the base line already gives (a bad value replaces the base's).
 PATH_OPTIONS = ("--out", "--plot", "--mesh-file")
@@ -322,6 +327,17 @@ NOT_APPLICABLE: list[tuple[str, list[str]]] = [
     ("--radius", ["sweep", "--param", "radius", "--values", "1e-308:1:3"]),
     ("--modes", ["sweep", "--param", "modes", "--values", "0:30:3"]),
     ("--t-end", ["sweep", "--param", "damping", "--values", "0:0.5:3", "--t-end", "0"]),
+    # the drop on the floor: a floor option with a model that cannot use it
+    ("--gas", ["bounce", "--gas", "none", "--membrane", "pressurised"]),
+    ("--drop-height", ["bounce", "--v0", "3", "--drop-height", "1"]),
+    ("--drop-height", ["bounce", "--drop-height", "-0.5"]),
+    ("--drop-height", ["liftoff", "--drop-height", "1"]),
+    ("--floor-restitution", ["liftoff", "--floor-restitution", "1"]),
+    ("--elements", ["bounce", "--elements", "20"]),
+    ("--mesh", ["bounce", "--backend", "fem", "--mesh", "sphere"]),
+    ("--modes", ["bounce", "--backend", "fem", "--modes", "20"]),
+    ("--sigma", ["bounce", "--sigma", "none"]),
+    ("--recontact", ["bounce", "--recontact", "paper"]),
     # the collision model
     *[
         (flag, ["icm", "--table1", flag, "0.5"])

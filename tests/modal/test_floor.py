@@ -1,0 +1,273 @@
+"""The lower ball on the floor, Legendre modes: geometry, books, orders, limits.
+
+Independent values: the height of a material point by elementary geometry, the
+momentum balance of the centre, the energy books of the contact core, the
+weight carried at rest, pressure x area's contact area, the closed-form
+lift-off of the paper (restitution-only special case), synthetic curves with a
+known end or edge, and observed orders in bands (too high fails too).
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+import pytest
+from numpy.polynomial.legendre import legval
+from twoball.modal.damping import ModalRatio, Rayleigh
+from twoball.modal.floor.ball import BallSpectrum, legendre_ball, mode_decay
+from twoball.modal.floor.drop import DropSettings, run_drop
+from twoball.modal.floor.measure import (
+    contact_edge,
+    contact_intervals,
+    hermite_peak,
+    separation_time,
+    smoothed_minimum,
+)
+from twoball.modal.floor.restitution import restitution_only
+from twoball.modal.floor.settle import settle
+from twoball.modal.floor.system import floor_system
+from twoball.modal.nonsmooth import MoreauJean
+from twoball.modal.stiffness import Stiffness
+from twoball.verify.studies.orders import OrderBand
+
+V0 = 4.1 / (0.12 * 320.0)  # the basketball at 4.1 m/s, units R c
+GAMMA = 9.81 / (0.12 * 320.0**2)
+GAS = 6.0 * 1.4 * (77.2e3 + 101325.0) / 77.2e3  # adiabatic, 6 kappa P_abs / P
+PRESSURISED = BallSpectrum(Stiffness(gas=GAS), "pressurised")
+PAPER_GAS = BallSpectrum(Stiffness(gas=GAS), "paper")
+
+
+def _drop(modes=20, spectrum=PRESSURISED, law=ModalRatio(0.13), dt=0.02, e=0.0, t_end=30.0):
+    system = floor_system(legendre_ball(modes, spectrum, law), GAMMA, e)
+    return run_drop(system, DropSettings(V0, GAMMA, dt, t_end))
+
+
+# --- the model ----------------------------------------------------------------------------
+
+
+def test_spectrum_of_both_operators_bending_and_gas():
+    n = np.arange(6)
+    lam = n * (n + 1.0)
+    paper = BallSpectrum(Stiffness(beta=0.1, gas=5.0), "paper").omega_squared(lam)
+    assert paper[0] == 5.0  # the gas alone holds the breathing mode
+    np.testing.assert_allclose(paper[1:], (lam * (1 + 0.1 * (lam - 2)))[1:], rtol=1e-15)
+    np.testing.assert_allclose(  # the paper's own Stiffness gives the same frequencies
+        paper, Stiffness(beta=0.1, gas=5.0).legendre_omega(n) ** 2, rtol=1e-14
+    )
+    pressed = BallSpectrum(Stiffness(gas=5.0), "pressurised").omega_squared(lam)
+    np.testing.assert_array_equal(pressed, [3.0, 0.0, 4.0, 10.0, 18.0, 28.0])  # (n-1)(n+2)
+
+
+def test_decay_of_each_law_is_its_ratio():
+    w2 = np.array([4.0, 10.0, 400.0])
+    np.testing.assert_allclose(mode_decay(ModalRatio(0.13), w2), 2 * 0.13 * np.sqrt(w2))
+    law = Rayleigh(0.47, 0.012)
+    np.testing.assert_allclose(mode_decay(law, w2), 2 * law.ratios(np.sqrt(w2)) * np.sqrt(w2))
+
+
+def test_legendre_ball_leaves_degree_one_to_the_centre():
+    ball = legendre_ball(12, PRESSURISED, ModalRatio(0.1))
+    assert ball.modes == 12 and ball.points == 6  # n = 0, 2..12; floor points N/2
+    np.testing.assert_allclose(ball.laplace, [0, *(n * (n + 1) for n in range(2, 13))])
+    np.testing.assert_allclose(ball.masses, 1.0 / (2.0 * np.array([0, *range(2, 13)]) + 1.0))
+    assert ball.phi[-1] == math.pi and ball.phi[0] > math.pi / 2
+    np.testing.assert_allclose(ball.shapes[:, 1], legval(np.cos(ball.phi), [0, 0, 1]))
+    anchored = legendre_ball(12, PRESSURISED, ModalRatio(0.1), anchored=True)
+    assert anchored.modes == 13 and anchored.omega_squared[1] == 0.0  # (1 - 1)(1 + 2)
+
+
+def test_floor_gap_is_the_height_of_the_material_point():
+    """g_i = Z + (1 + u(phi_i)) cos(phi_i): the point at radius 1 + u along its ray."""
+    system = floor_system(legendre_ball(8, PAPER_GAS, ModalRatio(0.0)), GAMMA)
+    rng = np.random.default_rng(1)
+    q = np.concatenate([[1.3], 0.01 * rng.normal(size=system.ball.modes)])
+    degrees = np.array([0, *range(2, 9)])
+    for i, phi in enumerate(system.ball.phi):
+        coefficients = np.zeros(9)
+        coefficients[degrees] = q[1:]
+        u = legval(math.cos(phi), coefficients)
+        height = 1.3 + (1.0 + u) * math.cos(phi)  # geometry, not the assembled rows
+        assert system.floor_gaps(q)[i] == pytest.approx(height, abs=1e-15)
+
+
+# --- one drop: momentum and energy books ------------------------------------------------------
+
+
+@pytest.mark.parametrize(
+    ("spectrum", "law", "e"),
+    [
+        (PRESSURISED, ModalRatio(0.13), 0.0),
+        (PRESSURISED, ModalRatio(0.0), 0.0),
+        (PAPER_GAS, ModalRatio(0.13), 0.0),
+        (PRESSURISED, Rayleigh(0.47273, 0.011818), 0.0),
+        (PRESSURISED, ModalRatio(0.0), 1.0),
+    ],
+    ids=["pressurised-D", "undamped", "paper-gas", "rayleigh", "restitution-1"],
+)
+def test_floor_impulse_is_the_change_of_momentum_and_the_books_close(spectrum, law, e):
+    """J = m2 (v2 + |v0|) + m2 g t_c to 1e-10; E + works = E0 to rounding."""
+    r = _drop(spectrum=spectrum, law=law, e=e)
+    assert r.left and r.stop == "flight"
+    assert r.impulse == pytest.approx(r.v2 + V0 + GAMMA * r.contact_time, rel=1e-10)
+    assert r.impulse_balance < 1e-10
+    kinetic0 = 0.5 * V0**2
+    assert r.energy["balance"] < 1e-12 * kinetic0
+    parts = ("rigid_kinetic", "membrane_kinetic", "membrane_elastic", "gas", "gravity")
+    books = sum(r.energy[k] for k in parts) - r.energy["damped"] - r.energy["impacts"]
+    books -= r.energy["contact"]
+    assert books == pytest.approx(r.energy["initial"], abs=1e-12 * kinetic0)
+    assert 0.0 < r.e2 < 1.0
+    assert math.pi < r.contact_time < 2.0 * math.pi  # of the order of pressure x area's pi
+    assert V0 < r.flattening_max < 2.0 * V0  # pressure x area flattens by v0 (units R)
+    if e == 1.0:  # Newton's e = 1 loses nothing at impacts: the mechanical energy is kept
+        assert abs(r.energy["impacts"]) < 1e-13 * kinetic0
+    else:
+        assert r.energy["impacts"] < 0.0
+    if law == ModalRatio(0.0):
+        assert r.energy["damped"] == 0.0
+
+
+def test_no_contact_after_the_stop():
+    """The stop's energy bound holds: continued to the apex, the ball never touches again."""
+    r = _drop()
+    tr, system = r.trajectory, r.system
+    apex = tr.t[-1] + tr.v_final[0] / GAMMA
+    rest = MoreauJean(system.problem, 0.1).run(tr.q_final, tr.v_final, apex, t0=tr.t[-1])
+    assert not rest.impulse.any()
+    assert system.floor_gaps(rest.q).min() > 0.0
+
+
+def test_paper_operator_without_gas_does_not_bounce():
+    """omega_0 = 0: the floor's push shrinks the ball for good (the run ends at the window)."""
+    paper = BallSpectrum(Stiffness(), "paper")
+    r = _drop(spectrum=paper, t_end=20.0)
+    assert not r.left and r.stop == "window" and r.e2 is None
+    assert r.energy["vibration"] > 0.5 * 0.5 * V0**2
+
+
+# --- convergence ------------------------------------------------------------------------------
+
+
+def test_time_step_order_of_flattening_and_impact_loss():
+    """Second order in dt (N = 20; errors against dt/16): flattening, impact loss, t_c."""
+    ref = _drop(dt=0.00125)
+    steps = (0.02, 0.01, 0.005)
+    runs = [_drop(dt=dt) for dt in steps]
+    for name in ("flattening_max", "impacts"):
+        values = [r.flattening_max if name == "flattening_max" else r.energy[name] for r in runs]
+        exact = ref.flattening_max if name == "flattening_max" else ref.energy[name]
+        errors = np.abs(np.array(values) - exact)
+        order = np.polyfit(np.log(steps), np.log(errors), 1)[0]
+        assert OrderBand(2.0, 0.4, 0.4).contains(order), (name, order)
+    assert abs(runs[-1].contact_time - ref.contact_time) < 2e-4 * ref.contact_time
+    assert abs(runs[-1].e2 - ref.e2) < 1e-5
+
+
+def test_modes_order_of_restitution():
+    """e2 converges at order 2 in 1/N (N = 16, 32, 64; successive differences)."""
+    v = [_drop(modes=n, dt=0.01).e2 for n in (16, 32, 64)]
+    order = math.log2((v[1] - v[0]) / (v[2] - v[1]))
+    assert OrderBand(2.0, 0.5, 0.5).contains(order), order
+
+
+@pytest.mark.slow
+def test_modes_orders_of_contact_time_and_flattening():
+    """N = 32, 64, 128 (dt = 0.005): t_c at order ~1 (the last floor point's tail), the
+    flattening at ~1.5 (pre-asymptotic: 2.4 from N = 64 to 256), e2 at 2."""
+    runs = [_drop(modes=n, dt=0.005) for n in (32, 64, 128)]
+    for name, band in (
+        ("contact_time", OrderBand(1.0, 0.5, 0.6)),
+        ("flattening_max", OrderBand(1.8, 0.6, 0.8)),
+        ("e2", OrderBand(2.0, 0.5, 0.5)),
+    ):
+        v = [getattr(r, name) for r in runs]
+        order = math.log2((v[1] - v[0]) / (v[2] - v[1]))
+        assert band.contains(order), (name, order)
+
+
+# --- at rest on the floor ---------------------------------------------------------------------
+
+
+def test_resting_ball_carries_its_weight():
+    r = settle(floor_system(legendre_ball(60, PRESSURISED, ModalRatio(0.9)), GAMMA))
+    assert r.residual_speed < 1e-12
+    assert r.floor_force == pytest.approx(r.weight, rel=1e-9)
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize("modes", [240, 360, 480])
+def test_resting_contact_brackets_pressure_times_area(modes):
+    """The caps through the last point in contact and the next one out hold m2 g / P from
+    N = 240 on, and the bracket narrows like 1/N."""
+    r = settle(floor_system(legendre_ball(modes, PRESSURISED, ModalRatio(0.9)), GAMMA))
+    assert r.floor_force == pytest.approx(r.weight, rel=1e-9)
+    inner, outer = r.contact_area
+    assert inner <= r.pressure_area <= outer
+    assert outer - inner < 0.8 * r.pressure_area * 240 / modes
+
+
+# --- the restitution-only model as a special case ---------------------------------------------
+
+
+def test_restitution_only_reproduces_the_closed_form_lift_off():
+    """Started at (3.10) without floor or weight, the paper's operator with its degree-1 mode
+    gives the closed-form lift-off of eq. (3.16) (Lanczos, N = 30) at second order in dt."""
+    import twoball
+
+    case = twoball.Case.preset("basketball")
+    exact = twoball.liftoff(case).result
+    paper = BallSpectrum(Stiffness(), "paper")
+    errors = []
+    for dt in (0.01, 0.005):
+        run = restitution_only(paper, ModalRatio(0.13), 30, case.phi_a, case.gamma, dt).result
+        errors.append((abs(run.t - exact.t), abs(run.velocity - exact.velocity)))
+    assert errors[-1][0] < 2e-4 and errors[-1][1] < 3e-5
+    assert 3.0 < errors[0][0] / errors[1][0] < 5.0  # second order
+    assert 3.0 < errors[0][1] / errors[1][1] < 5.0
+
+
+def test_restitution_only_pressurised_centre_or_mode_is_the_same():
+    """omega_1 = 0: the degree-1 content kept as a mode or carried by Z gives one motion."""
+    runs = [
+        restitution_only(PRESSURISED, ModalRatio(0.13), 30, 2.6, GAMMA, 0.01, anchored=a)
+        for a in (True, False)
+    ]
+    t = np.linspace(0.0, 12.0, 50)
+    np.testing.assert_allclose(runs[0].motion.pole(t).u, runs[1].motion.pole(t).u, atol=1e-13)
+    assert runs[0].result.t == pytest.approx(runs[1].result.t, abs=1e-12)
+
+
+# --- the measures on curves with known answers ------------------------------------------------
+
+
+def test_separation_time_of_a_force_falling_linearly():
+    """F = 2 (t_e - t) on a grid: sqrt of the remaining impulse is linear -> t_e exactly."""
+    t_e = 1.2345
+    t = np.arange(0.0, 1.4, 0.1)
+    cumulative = np.minimum(t, t_e) * 2 * t_e - np.minimum(t, t_e) ** 2
+    last = int(np.searchsorted(t, t_e)) - 1
+    assert separation_time(t, cumulative, last, 0.1) == pytest.approx(t_e, abs=1e-12)
+    impulses = np.diff(cumulative)
+    (interval,) = contact_intervals(t, impulses, 0.1)
+    assert interval.start == 0.0 and interval.end == pytest.approx(t_e, abs=1e-12)
+
+
+def test_contact_edge_of_a_tangential_gap():
+    """gap = a (phi_e - phi)^2 outside the contact: the edge between the points is found."""
+    phi = np.linspace(math.pi / 2, math.pi, 41)[1:]
+    edge = 2.71
+    gap = np.where(phi < edge, 0.3 * (edge - phi) ** 2, 0.0)
+    assert contact_edge(phi, gap, 1e-14) == pytest.approx(edge, abs=1e-12)
+    assert contact_edge(phi, np.ones_like(phi), 1e-14) == math.pi  # no contact
+
+
+def test_smoothed_minimum_and_hermite_peak():
+    t = np.linspace(0.0, 2.0, 2001)
+    values = (t - 1.2) ** 2
+    values[600] = -5.0  # one isolated dip is averaged away
+    low, when = smoothed_minimum(t, values, 0.2)
+    assert low == pytest.approx(0.1**2 / 3, rel=1e-3) and when == pytest.approx(1.2, abs=1e-3)
+    coarse = np.linspace(0.0, 3.0, 7)
+    peak, at = hermite_peak(coarse, np.sin(coarse), np.cos(coarse))
+    assert peak == pytest.approx(1.0, abs=2e-4) and at == pytest.approx(math.pi / 2, abs=2e-2)
