@@ -5,8 +5,9 @@ depends on the solver: the window acts everywhere; ``scheme``, ``dt`` and
 ``route`` choose how the finite elements advance in time (modal superposition,
 eqs. (3.14)-(3.16), on the ``full`` or ``krylov`` eigen route, or
 generalized-alpha stepping with step ``dt``); the drop on the floor
-(``twoball.bounce``) always steps with Moreau-Jean's scheme, whose step is ``dt``.  A field that does not act where
-it is given is refused by the verb that receives it.
+(``twoball.bounce``) always steps with Moreau-Jean's scheme, whose step is
+``dt``.  A field that does not act where it is given is refused by the verb
+that receives it.
 """
 
 from __future__ import annotations

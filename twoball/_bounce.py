@@ -23,12 +23,12 @@ if TYPE_CHECKING:
 __all__ = ["BACKENDS", "DEFAULT_DT", "DEFAULT_ELEMENTS", "DEFAULT_WINDOW", "bounce"]
 
 BACKENDS: tuple[str, ...] = ("legendre", "fem")
-#: Time step in units of 1/c (the basketball: 31 microseconds).
-DEFAULT_DT = 0.01
+#: Time step in units of 1/c (the basketball: 15.6 microseconds).
+DEFAULT_DT = 0.005
 #: Window in units of 1/c: ten pressure x area contact times pi / c.
 DEFAULT_WINDOW = 10.0 * math.pi
-#: Axisymmetric elements of the finite-element drop (P2: node spacing pi / 96, as N = 96).
-DEFAULT_ELEMENTS = 48
+#: Axisymmetric elements of the finite-element drop (P2: node spacing pi / 192, as N = 192).
+DEFAULT_ELEMENTS = 96
 #: Largest time step in units of 1/c (a twentieth of the pressure x area contact time).
 MAX_DT = math.pi / 20.0
 #: Fewest floor points across the largest contact before the result is flagged.
@@ -62,14 +62,14 @@ def bounce(
     drop : Drop, optional
         Drop height, gas, floor restitution, Legendre degree N, membrane
         operator (:class:`~twoball.Drop`; default: the case's ``|v0|``, the
-        adiabatic gas, e = 0, N = 96, the paper's operator).
+        adiabatic gas, e = 0, N = 192, the paper's operator).
     backend : {"legendre", "fem"}
-        Legendre modes (floor points N/2 equally spaced in phi) or axisymmetric
+        Legendre modes (floor points at the Gauss-Radau nodes) or axisymmetric
         finite elements (floor points at the nodes).
     mesh : MeshOptions or "axisym", optional
-        Finite elements only: the line ``axisym`` (default 48 elements, P2).
+        Finite elements only: the line ``axisym`` (default 96 elements, P2).
     stepping : Stepping, optional
-        ``dt`` [s] (default 0.01 / c) with ``scheme="moreau-jean"`` (the only
+        ``dt`` [s] (default 0.005 / c) with ``scheme="moreau-jean"`` (the only
         scheme of the drop), and the window ``t_end`` [s] (default 10 pi / c).
     damping : ModalRatio or Rayleigh, optional
         The damping law (default the case's ratio D on every mode, eq. (3.14));
@@ -88,7 +88,7 @@ def bounce(
     >>> import twoball
     >>> report = twoball.bounce(drop=twoball.Drop(modes=16))
     >>> round(report.contact_time_s * 1e3, 1), round(report.e2, 2)
-    (14.5, 0.88)
+    (14.6, 0.88)
     >>> weight = report.mass_kg * 9.81 * report.contact_time_s  # the impulse balance
     >>> change = report.mass_kg * (report.v2_m_s + 4.1)
     >>> abs(report.floor_impulse_N_s - change - weight) < 1e-12
@@ -111,12 +111,11 @@ def bounce(
         raise ParameterError("drop", "a twoball.Drop", type(drop).__name__)
     if backend not in BACKENDS:
         raise ParameterError("backend", "one of " + ", ".join(BACKENDS), backend)
-    case = _impact(case, drop)
-    notes: list[str] = []
-    warnings: list[str] = []
-    pressure = _pressure(case, notes)
-    spectrum, gas = _spectrum(case, drop, pressure, warnings)
-    law = _law(case, given.damping)
+    from twoball.modal.floor.model import resolve_drop
+
+    model_in = resolve_drop(case, drop, given.damping)
+    case, spectrum, law = model_in.case, model_in.spectrum, model_in.law
+    warnings = list(model_in.warnings)
     step = given.stepping if given.stepping is not None else Stepping()
     dt, t_end = _times(case, step)
     ball, resolution = _ball(case, drop, backend, given.mesh, spectrum, law, dt, t_end)
@@ -132,7 +131,7 @@ def bounce(
         "floor_points": ball.points,
         "modes": ball.modes,
         **spectrum.as_dict(),
-        "gas": gas,
+        "gas": model_in.gas,
         "damping": law.as_dict(),
         "floor_restitution": drop.floor_restitution,
         "scheme": "moreau-jean",
@@ -145,91 +144,10 @@ def bounce(
     from twoball.modal.floor.report import BounceReport
 
     report = BounceReport(
-        case, drop, result, backend, model, pressure, tuple(warnings), tuple(notes)
+        case, drop, result, backend, model, model_in.pressure, tuple(warnings), model_in.notes
     )
     arguments = {"drop": drop.as_dict(), "backend": backend, **given.as_dict()}
     return replace(report, provenance=block(case, "twoball.bounce", arguments))
-
-
-def _impact(case: Case, drop: Drop) -> Case:
-    """The case at the drop's impact speed ``sqrt(2 g H)``, eq. (2.1), if a height is given."""
-    if drop.drop_height is None:
-        return case
-    speed = math.sqrt(2.0 * case.g * drop.drop_height)
-    try:
-        return case.derive(v0=speed)
-    except ParameterError:
-        raise ParameterError(
-            "drop_height",
-            "a height > 0 [m] whose impact speed sqrt(2 g H) the model can take",
-            drop.drop_height,
-        ) from None
-
-
-def _pressure(case: Case, notes: list[str]) -> float:
-    """Excess pressure P [Pa]: the case's, else its preset's measured one."""
-    if case.pressure is not None:
-        return float(case.pressure)
-    from twoball.modal.presets import MEASURED
-
-    measured = MEASURED.get(case.preset_name or "")
-    if measured is None or measured.pressure is None:
-        raise ParameterError(
-            "pressure",
-            "given for the drop (its tension T = P R / 2 sets the ball's mass 2 pi R P / c^2 "
-            "and the gas): Case.from_pressure, or a preset",
-            None,
-        )
-    mass = 2.0 * math.pi * case.radius * measured.pressure / case.wave_speed**2
-    notes.append(
-        f"P = {measured.pressure:g} Pa, the {case.preset_name} preset's measured excess "
-        f"pressure: m2 = 2 pi R P / c^2 = {mass:.4g} kg"
-    )
-    return float(measured.pressure)
-
-
-def _spectrum(case: Case, drop: Drop, pressure: float, warnings: list[str]) -> tuple[Any, str]:
-    """The ball's spectrum (membrane operator, bending, gas) and the gas law used.
-
-    The one place where the drop reads the membrane operator and the gas.
-    """
-    from twoball.modal.floor.ball import BallSpectrum
-    from twoball.modal.stiffness import stiffness_from_si
-
-    gas = drop.gas or (case.gas if case.gas != "none" else "adiabatic")
-    if drop.membrane == "pressurised" and gas == "none":
-        raise ParameterError(
-            "gas",
-            "isothermal or adiabatic with the pressurised membrane (without gas its breathing "
-            "mode has omega_0^2 = -2: unstable)",
-            gas,
-        )
-    stiffness = stiffness_from_si(
-        radius=case.radius,
-        pressure=pressure,
-        bending=case.bending,
-        gas=gas,
-        atmosphere=case.atmosphere,
-    )
-    if gas == "none":
-        warnings.append(
-            "no gas on the paper's membrane: the breathing mode has omega_0 = 0, so the "
-            "floor's push shrinks the mean radius for good and the ball hardly bounces "
-            "(use the gas: isothermal or adiabatic)"
-        )
-    return BallSpectrum(stiffness, drop.membrane), gas
-
-
-def _law(case: Case, damping: Any) -> Any:
-    """The damping law in units of c (a fitted Rayleigh law fitted here)."""
-    from twoball.modal.damping import RAYLEIGH_LOW, ModalRatio, Rayleigh
-
-    if damping is None:
-        return ModalRatio(case.damping)
-    if isinstance(damping, Rayleigh) and damping.fitted:
-        high = math.sqrt(case.modes * (case.modes + 1.0))
-        return Rayleigh.fit(case.damping, RAYLEIGH_LOW, high)
-    return damping
 
 
 def _times(case: Case, step: Any) -> tuple[float, float]:

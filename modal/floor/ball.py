@@ -8,7 +8,8 @@ dS / (4 pi)``, stiffness ``m_k omega_k^2`` and damping ``m_k d_k`` (the decay
 at the floor points.
 
 * Legendre modes (:func:`legendre_ball`): ``phi_k = P_n(cos phi)``, ``m_n = 1 /
-  (2n + 1)``, the floor points equally spaced in phi on ``(pi/2, pi]``.
+  (2n + 1)``, the floor points at the Gauss-Radau nodes of degree N + 1 on the
+  lower hemisphere (:func:`floor_angles`; the south pole is one).
 * Finite elements (:func:`twoball.fem_membrane.floor.axisym_ball`): the
   M-orthonormal eigenvectors of the whole finite-element space (``m_k = 1``), the
   floor points at the nodes of the lower hemisphere.  A change of coordinates,
@@ -201,20 +202,37 @@ class ModalBall:
         return np.sqrt((self.shapes**2) @ (1.0 / (self.masses * self.omega_squared)))
 
 
-def floor_angles(count: int) -> np.ndarray:
-    """``count`` polar angles equally spaced on ``(pi/2, pi]``, the south pole last [rad]."""
-    return np.linspace(0.5 * math.pi, math.pi, count + 1)[1:]
+def floor_angles(modes: int) -> np.ndarray:
+    """Polar angles [rad] of the floor points of N Legendre modes: Gauss-Radau nodes, ascending.
+
+    The N + 1 nodes of the Gauss-Radau rule on [-1, 1] with the node x = -1 (the
+    south pole) are exact for polynomials of degree 2N, so the modes are
+    discretely orthogonal on them: ``sum_k w_k P_m(x_k) P_n(x_k) = 2 delta_mn /
+    (2n + 1)`` for m, n <= N.  The floor's Delassus matrix ``G M^-1 G^T`` is then
+    diagonal, ``2 x_k^2 / w_k``, up to the smooth rank-two terms of the centre
+    (+1) and of the missing degree 1 (``-3 x_i^2 x_j^2``): each point carries the
+    mass of its own quadrature cell, and an impulse at one point does not pull
+    its neighbours onto the floor (with equally spaced points it does, through
+    the alternating side lobes of the truncated series, and they rattle).  The
+    nodes with ``x < 0`` are kept (about N / 2, nearly equally spaced in phi,
+    spacing ~ pi / N); the interior ones are the zeros of the Jacobi polynomial
+    ``P_N^(0, 1)`` (Golub-Welsch, :func:`scipy.special.roots_jacobi`).
+    """
+    from scipy.special import roots_jacobi
+
+    interior, _ = roots_jacobi(int(modes), 0.0, 1.0)
+    x = np.concatenate([[-1.0], interior[interior < 0.0]])
+    return np.sort(np.arccos(np.clip(x, -1.0, 1.0)))
 
 
 def legendre_ball(
     modes: int,
     spectrum: BallSpectrum,
     law: ModalRatio | Rayleigh,
-    points: int | None = None,
     *,
     anchored: bool = False,
 ) -> ModalBall:
-    """Legendre modes n = 0, 2, 3, ..., N and the floor points (dimensionless).
+    """Legendre modes n = 0, 2, 3, ..., N and the floor points at the Gauss-Radau nodes.
 
     Parameters
     ----------
@@ -224,8 +242,6 @@ def legendre_ball(
         Membrane operator, bending and gas: ``omega_n^2`` from ``lambda = n (n + 1)``.
     law : ModalRatio or Rayleigh
         The damping law (dimensionless; a fitted Rayleigh law must be fitted already).
-    points : int, optional
-        Floor points (default N/2: spacing pi/N, the modes' own resolution).
     anchored : bool
         Keep degree 1 as a mode of the membrane about a fixed centre (omega_1^2 =
         2 on the paper's operator, 0 on the pressurised one): the paper's
@@ -233,13 +249,10 @@ def legendre_ball(
     """
     if isinstance(modes, bool) or not isinstance(modes, int) or modes < 2:
         raise ParameterError("modes", "an integer >= 2", modes)
-    count = max(modes // 2, 2) if points is None else points
-    if isinstance(count, bool) or not isinstance(count, int) or count < 1:
-        raise ParameterError("points", "an integer >= 1", points)
     n = np.arange(modes + 1) if anchored else np.concatenate([[0], np.arange(2, modes + 1)])
     laplace = n * (n + 1.0)
     w2 = spectrum.omega_squared(laplace)
-    phi = floor_angles(count)
+    phi = floor_angles(modes)
     shapes = legvander(np.cos(phi), modes)[:, n]
     return ModalBall(
         masses=1.0 / (2.0 * n + 1.0),

@@ -105,9 +105,7 @@ def separation_time(t: np.ndarray, cumulative: np.ndarray, last: int, dt: float)
     return float(min(max(estimate, t[last]), late))
 
 
-def contact_intervals(
-    t: np.ndarray, impulses: np.ndarray, dt: float
-) -> list[ContactInterval]:
+def contact_intervals(t: np.ndarray, impulses: np.ndarray, dt: float) -> list[ContactInterval]:
     """The stretches of contact of a run: maximal runs of steps with floor impulse.
 
     ``impulses[k]`` is the total floor impulse of step k (impacts at ``t[k]``

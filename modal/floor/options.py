@@ -14,8 +14,9 @@ from twoball._common.errors import ParameterError, real_number
 
 __all__ = ["DEFAULT_MODES", "GAS_LAWS", "MEMBRANE_KINDS", "Drop"]
 
-#: Legendre degree N of the drop on the closed-form modes (floor points N/2).
-DEFAULT_MODES = 96
+#: Legendre degree N of the drop on the closed-form modes (floor points at its ~N/2
+#: Gauss-Radau nodes on the lower hemisphere).
+DEFAULT_MODES = 192
 MODES_RANGE = (8, 2000)
 GAS_LAWS: tuple[str, ...] = ("none", "isothermal", "adiabatic")
 MEMBRANE_KINDS: tuple[str, ...] = ("paper", "pressurised")
@@ -40,8 +41,8 @@ class Drop:
         floor stops the arriving membrane; 1 keeps the mechanical energy).
     modes : int, optional
         Legendre degree N of the closed-form backend (default
-        :data:`DEFAULT_MODES`; floor points N/2); the finite elements take their
-        mesh instead.
+        :data:`DEFAULT_MODES`; the floor points are its Gauss-Radau nodes on the
+        lower hemisphere, about N/2); the finite elements take their mesh instead.
     membrane : {"paper", "pressurised"}
         The membrane operator: the paper's ``n (n + 1)`` or the one consistent
         with the pressure, ``(n - 1)(n + 2)`` (needs a gas).
@@ -51,10 +52,10 @@ class Drop:
     >>> import twoball
     >>> twoball.Drop(drop_height=0.857).as_dict()["drop_height"]
     0.857
-    >>> twoball.Drop(drop_height=-1.0)
+    >>> twoball.Drop(drop_height=-1.0)  # doctest: +ELLIPSIS
     Traceback (most recent call last):
     ...
-    twoball.ParameterError: drop_height must be a height > 0 [m] of the lowest point above the floor, got -1.0
+    twoball.ParameterError: drop_height must be a height > 0 [m] ... got -1.0
     """
 
     drop_height: float | None = None

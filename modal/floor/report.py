@@ -28,7 +28,9 @@ MEASURED_COMPRESSION = 3.07e-3
 
 
 def pressure_area(v0: float, radius: float, wave_speed: float) -> dict[str, float]:
-    """The pressure x area spring of a ball on the floor, in SI (Cross 1999; Hubbard & Stronge 2001).
+    """The pressure x area spring of a ball on the floor, in SI.
+
+    Cross 1999, Am. J. Phys. 67 222; Hubbard & Stronge 2001, Sports Eng. 4 49.
 
     The floor force ``F = P pi (2 R x)`` for a flattening x is a spring ``k = 2 pi
     R P`` with ``k / m2 = c^2``: contact time ``pi / c``, largest flattening
@@ -184,9 +186,10 @@ class BounceReport:
 
     def comparisons(self) -> dict[str, Any]:
         """The drop beside eq. (3.7), pressure x area and the measurements (SI)."""
-        from twoball._common.errors import ParameterError
         from twoball.modal.initial import phi_a_from_v0
         from twoball.modal.presets import MEASURED
+
+        from twoball._common.errors import ParameterError
 
         case = self.case
         try:

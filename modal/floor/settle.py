@@ -17,6 +17,7 @@ import time
 from dataclasses import dataclass
 
 import numpy as np
+from twoball.modal.floor.measure import contact_edge
 from twoball.modal.floor.system import FloorSystem
 from twoball.modal.nonsmooth import MoreauJean
 
@@ -36,6 +37,9 @@ class RestResult:
     contact_area : tuple of float
         ``(inner, outer)``: the caps ``2 pi (1 - cos psi)`` through the outermost
         point in contact and through the next point out (units R^2).
+    edge_area : float
+        The cap through the contact edge estimated between the points
+        (:func:`~twoball.modal.floor.measure.contact_edge`), units R^2.
     pressure_area : float
         ``m2 g / P = 2 pi gamma`` in units R^2.
     residual_speed : float
@@ -48,6 +52,7 @@ class RestResult:
     floor_force: float
     weight: float
     contact_area: tuple[float, float]
+    edge_area: float
     pressure_area: float
     residual_speed: float
     contact_points: int
@@ -76,6 +81,8 @@ def settle(system: FloorSystem, dt: float = 0.2, t_end: float = 800.0) -> RestRe
     i = int(inside.min()) if inside.size else phi.size
     psi_in = math.pi - phi[i] if inside.size else 0.0
     psi_out = math.pi - phi[i - 1]
+    gaps = system.floor_gaps(tr.q_final)
+    psi_edge = math.pi - contact_edge(phi, gaps, 1e-10)
     return RestResult(
         floor_force=float(last.sum() / h),
         weight=gamma,
@@ -83,6 +90,7 @@ def settle(system: FloorSystem, dt: float = 0.2, t_end: float = 800.0) -> RestRe
             2.0 * math.pi * (1.0 - math.cos(psi_in)),
             2.0 * math.pi * (1.0 - math.cos(psi_out)),
         ),
+        edge_area=2.0 * math.pi * (1.0 - math.cos(psi_edge)),
         pressure_area=2.0 * math.pi * gamma,
         residual_speed=float(np.max(np.abs(tr.v_final))),
         contact_points=int(inside.size),

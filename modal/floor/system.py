@@ -66,7 +66,7 @@ class FloorSystem:
         return slice(0, self.ball.points)
 
     def falling(self, v0: float, height: float = 1.0) -> tuple[np.ndarray, np.ndarray]:
-        """Undeformed state with the centre at ``height`` (1: the south pole touching), falling at v0."""
+        """Undeformed state, the centre at ``height`` (1: the pole touching), falling at v0."""
         q = np.zeros(self.problem.dofs)
         v = np.zeros(self.problem.dofs)
         q[self.centre] = height

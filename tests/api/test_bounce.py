@@ -113,7 +113,7 @@ def test_bad_input_is_refused_naming_the_parameter(name, call):
 
 
 def test_both_backends_agree_at_their_defaults():
-    """Basketball at 4.1 m/s: Legendre N = 96 and axisymmetric P2 E = 48 (the same floor
+    """Basketball at 4.1 m/s: Legendre N = 192 and axisymmetric P2 E = 96 (the same floor
     point spacing) agree on t_c, e2 and phi_a,max to 1e-3."""
     modal = twoball.bounce()
     fe = twoball.bounce(backend="fem")

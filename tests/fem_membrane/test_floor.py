@@ -31,7 +31,10 @@ GAS = 6.0 * 1.4 * (77.2e3 + 101325.0) / 77.2e3
 PRESSURISED = BallSpectrum(Stiffness(gas=GAS), "pressurised")
 
 
-def _fe_drop(elements, law=ModalRatio(0.13), dt=0.02, order=2):
+MODAL = ModalRatio(0.13)
+
+
+def _fe_drop(elements, law=MODAL, dt=0.02, order=2):
     ball = axisym_ball(elements, order, PRESSURISED, law)
     return run_drop(floor_system(ball, GAMMA), DropSettings(V0, GAMMA, dt, 30.0))
 
@@ -110,7 +113,7 @@ def test_elements_agree_with_legendre_modes():
     assert fe.impulse_balance < 1e-10 and fe.energy["balance"] < 1e-12
     assert fe.e2 == pytest.approx(modal.e2, rel=1e-3)
     assert fe.contact_time == pytest.approx(modal.contact_time, rel=3e-3)
-    assert fe.phi_a_max == pytest.approx(modal.phi_a_max, rel=1e-3)
+    assert fe.phi_a_max == pytest.approx(modal.phi_a_max, rel=2e-3)
     assert fe.flattening_max == pytest.approx(modal.flattening_max, rel=2e-3)
 
 

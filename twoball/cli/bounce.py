@@ -22,7 +22,8 @@ from twoball.cli.console import (
     print_warnings,
 )
 from twoball.cli.mesh_options import damping_options
-from twoball.cli.values import integer, number as numeric
+from twoball.cli.values import integer
+from twoball.cli.values import number as numeric
 
 __all__ = [
     "add_drop_options",
@@ -64,11 +65,11 @@ def add_drop_options(parser: argparse.ArgumentParser) -> None:
         "--dt",
         type=numeric,
         metavar="SECONDS",
-        help="time step [s] of the Moreau-Jean steps (default 0.01 / c)",
+        help="time step [s] of the Moreau-Jean steps (default 0.005 / c)",
     )
     mesh = parser.add_argument_group("finite-element mesh (--backend fem)")
     mesh.add_argument("--mesh", help="axisym (the line x = cos phi; default)")
-    mesh.add_argument("--elements", type=integer, help="axisymmetric line elements (default 48)")
+    mesh.add_argument("--elements", type=integer, help="axisymmetric line elements (default 96)")
     mesh.add_argument("--order", type=integer, help="element order 1, 2, 3 or 4 (default 2)")
 
 
