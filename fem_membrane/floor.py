@@ -105,6 +105,14 @@ def axisym_ball(
     floor = floor[np.argsort(-x[floor])]  # ascending phi, the south pole last
     top = int(np.argmax(x))
     w2 = spectrum.omega_squared(laplace)
+    order_x = np.argsort(x)
+    sorted_x, sorted_v = x[order_x], V[order_x]
+
+    def sampler(angles: np.ndarray) -> np.ndarray:
+        """The modes at any polar angles: piecewise linear between the nodes (pictures)."""
+        where = np.cos(angles)
+        return np.column_stack([np.interp(where, sorted_x, col) for col in sorted_v.T])
+
     return ModalBall(
         masses=np.ones(laplace.size),
         omega_squared=w2,
@@ -115,4 +123,5 @@ def axisym_ball(
         top=V[top, :],
         laplace=laplace,
         label=f"axisym {elements} P{order}",
+        sampler=sampler,
     )

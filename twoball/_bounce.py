@@ -10,6 +10,9 @@ hemisphere, the contact core) is in :mod:`twoball.modal.floor` and
 from __future__ import annotations
 
 import math
+import os
+from dataclasses import dataclass, field, replace
+from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
 from twoball._bundles import bundles
@@ -18,9 +21,18 @@ from twoball.modal.floor.options import DEFAULT_MODES, Drop
 from twoball.modal.parameters import Case
 
 if TYPE_CHECKING:
-    from twoball.modal.floor.report import BounceReport
+    from twoball.modal.floor.drop import DropResult
 
-__all__ = ["BACKENDS", "DEFAULT_DT", "DEFAULT_ELEMENTS", "DEFAULT_WINDOW", "bounce"]
+__all__ = [
+    "BACKENDS",
+    "BounceSweep",
+    "DEFAULT_DT",
+    "DEFAULT_ELEMENTS",
+    "DEFAULT_WINDOW",
+    "BounceReport",
+    "bounce",
+    "bounce_sweep",
+]
 
 BACKENDS: tuple[str, ...] = ("legendre", "fem")
 #: Time step in units of 1/c (the basketball: 15.6 microseconds).
@@ -138,10 +150,7 @@ def bounce(
         "dt_s": dt / case.wave_speed,
         "t_end_s": t_end / case.wave_speed,
     }
-    from dataclasses import replace
-
     from twoball._common.provenance import block
-    from twoball.modal.floor.report import BounceReport
 
     report = BounceReport(
         case, drop, result, backend, model, model_in.pressure, tuple(warnings), model_in.notes
@@ -238,3 +247,386 @@ def _warnings(result: Any, ball: Any, dt: float) -> list[str]:
             "take a smaller dt for 1e-3"
         )
     return out
+
+
+def _pressure_area(case: Case) -> dict[str, float]:
+    from twoball.modal.floor.references import pressure_area
+
+    return pressure_area(case.v0, case.radius, case.wave_speed)
+
+
+@dataclass(frozen=True)
+class BounceReport:
+    """One drop of the lower ball on the floor, in SI (seconds, metres, m/s, N s, J).
+
+    Attributes
+    ----------
+    case : Case
+        The ball and its impact speed ``|v0|`` (``drop.drop_height`` already applied).
+    drop : Drop
+        The drop's options as given.
+    result : DropResult
+        The dimensionless drop (length R, time 1/c, mass m2).
+    backend : str
+        ``legendre`` or ``fem``.
+    model : dict
+        The model that ran: resolution, membrane operator, gas, omega_0^2, beta,
+        damping law, floor restitution, time step and window (SI).
+    pressure : float
+        Excess pressure P [Pa] behind the tension ``T = P R / 2`` and the mass.
+    warnings : tuple of str
+        What the reader must know to trust the numbers.
+    notes : tuple of str
+        Remarks (where a value came from).
+    provenance : dict, optional
+        Versions, command line or call, UTC time and case.
+
+    Examples
+    --------
+    >>> import tempfile, pathlib, twoball
+    >>> report = twoball.bounce(drop=twoball.Drop(modes=16))
+    >>> report.left_floor, 0.8 < report.e2 < 1.0
+    (True, True)
+    >>> folder = pathlib.Path(tempfile.mkdtemp())
+    >>> report.plot(folder / "drop.svg").name
+    'drop.svg'
+    >>> [p.name for p in report.export(folder / "drop.xdmf", frames=3)]
+    ['drop.xdmf', 'drop.h5']
+    """
+
+    case: Case
+    drop: Drop
+    result: DropResult
+    backend: str
+    model: dict[str, Any]
+    pressure: float
+    warnings: tuple[str, ...] = ()
+    notes: tuple[str, ...] = ()
+    provenance: dict[str, Any] | None = field(default=None, compare=False, repr=False)
+
+    # --- units -------------------------------------------------------------------------
+    @property
+    def mass_kg(self) -> float:
+        """The ball's mass ``m2 = 2 pi R P / c^2`` [kg]."""
+        return 2.0 * math.pi * self.case.radius * self.pressure / self.case.wave_speed**2
+
+    def _time(self, value: float | None) -> float | None:
+        return None if value is None else value / self.case.wave_speed
+
+    def _speed(self, value: float | None) -> float | None:
+        return None if value is None else value * self.case.scalings.velocity
+
+    @property
+    def _energy_unit(self) -> float:
+        return self.mass_kg * self.case.scalings.velocity**2
+
+    # --- the measured quantities ------------------------------------------------------
+    @property
+    def left_floor(self) -> bool:
+        """The ball left the floor and moves up within the window."""
+        return self.result.left
+
+    @property
+    def contact_time_s(self) -> float | None:
+        """First touch to leaving the floor [s] (None if it has not left)."""
+        return self._time(self.result.contact_time)
+
+    @property
+    def v2_m_s(self) -> float | None:
+        """The centre's velocity on leaving [m/s], upward positive."""
+        return self._speed(self.result.v2)
+
+    @property
+    def e2(self) -> float | None:
+        """``v2 / |v0|``, the coefficient of restitution of the drop."""
+        return self.result.e2
+
+    @property
+    def phi_a_max_rad(self) -> float:
+        """Contact angle of the largest contact [rad] (the contact is ``phi >= phi_a``)."""
+        return self.result.phi_a_max
+
+    @property
+    def flattening_max_m(self) -> float:
+        """Largest drop of the centre below R while in contact [m]."""
+        return self.result.flattening_max * self.case.radius
+
+    @property
+    def t_max_compression_s(self) -> float:
+        """When the centre is lowest [s] after the first touch."""
+        return self.result.t_max_compression / self.case.wave_speed
+
+    @property
+    def floor_impulse_N_s(self) -> float:
+        """Total impulse of the floor on the ball [N s]."""
+        return self.result.impulse * self.mass_kg * self.case.scalings.velocity
+
+    @property
+    def energy_J(self) -> dict[str, float]:
+        """The energy books [J]; see :meth:`as_dict`."""
+        unit = self._energy_unit
+        e = self.result.energy
+        final = {
+            key: e[key] * unit
+            for key in ("rigid_kinetic", "membrane_kinetic", "membrane_elastic", "gas")
+        }
+        return {
+            "initial_kinetic": 0.5 * self.result.settings.v0**2 * unit,
+            "final_rigid_kinetic": final["rigid_kinetic"],
+            "final_membrane_kinetic": final["membrane_kinetic"],
+            "final_membrane_elastic": final["membrane_elastic"],
+            "final_gas": final["gas"],
+            "gravity_gained": (e["gravity"] - self.result.settings.gamma) * unit,
+            "dissipated_damping": -e["damped"] * unit,
+            "lost_impacts": -e["impacts"] * unit,
+            "held_arrivals": -e["contact"] * unit,
+            "vibration_after_leaving": e["vibration"] * unit,
+            "balance_error": e["balance"] * unit,
+        }
+
+    @property
+    def events(self) -> list[dict[str, Any]]:
+        """Every touch and separation of the floor: kind, time [s], centre velocity [m/s]."""
+        return [
+            {
+                "kind": ev.kind,
+                "t_s": ev.t / self.case.wave_speed,
+                "velocity_m_s": ev.velocity * self.case.scalings.velocity,
+                "floor_points": ev.points,
+            }
+            for ev in self.result.events
+        ]
+
+    def comparisons(self) -> dict[str, Any]:
+        """The drop beside eq. (3.7), pressure x area and the measurements (SI)."""
+        from twoball.modal.floor.references import MEASURED_COMPRESSION, TABLE1_E2
+        from twoball.modal.initial import phi_a_from_v0
+        from twoball.modal.presets import MEASURED
+
+        case = self.case
+        try:
+            eq37 = phi_a_from_v0(case.v0, case.radius, case.wave_speed)
+        except ParameterError:  # beyond the largest speed eq. (3.7) can store
+            eq37 = None
+        out: dict[str, Any] = {
+            "phi_a_eq_3_7_rad": eq37,
+            "pressure_area": _pressure_area(case),
+            "measured_compression_m": MEASURED_COMPRESSION * case.v0,
+        }
+        measured = MEASURED.get(case.preset_name or "")
+        if measured is not None and measured.phi_a is not None and case.at_measured_point:
+            out["table2_phi_a_rad"] = measured.phi_a
+        if case.preset_name in TABLE1_E2:
+            out["table1_e2"] = list(TABLE1_E2[case.preset_name])
+        return out
+
+    def as_dict(self) -> dict[str, Any]:
+        """JSON-ready dictionary (SI; keys end in their unit)."""
+        r = self.result
+        data: dict[str, Any] = {
+            "left_floor": r.left,
+            "stop": r.stop,
+            "contact_time_s": self.contact_time_s,
+            "v2_m_s": self.v2_m_s,
+            "e2": self.e2,
+            "phi_a_max_rad": r.phi_a_max,
+            "phi_a_extreme_rad": r.phi_a_extreme,
+            "t_phi_a_max_s": r.t_phi_a_max / self.case.wave_speed,
+            "flattening_max_m": self.flattening_max_m,
+            "t_max_compression_s": self.t_max_compression_s,
+            "floor_impulse_N_s": self.floor_impulse_N_s,
+            "impulse_balance": None if math.isnan(r.impulse_balance) else r.impulse_balance,
+            "events": self.events,
+            "point_events": r.point_events,
+            "energy_J": self.energy_J,
+            "v0_m_s": self.case.v0,
+            "drop_height_m": self.drop.drop_height,
+            "mass_kg": self.mass_kg,
+            "pressure_Pa": self.pressure,
+            "backend": self.backend,
+            "model": dict(self.model),
+            "comparisons": self.comparisons(),
+            "steps": r.steps,
+            "wall_s": r.wall_s,
+            "notes": list(self.notes),
+            "warnings": list(self.warnings),
+        }
+        if self.provenance is not None:
+            data["provenance"] = self.provenance
+        return data
+
+    # --- files ------------------------------------------------------------------------
+    def plot(self, out: str | os.PathLike[str], *, dpi: float | None = None) -> Path:
+        """Figure of the drop: floor force, contact angle, centre height, energy books.
+
+        ``out``'s suffix chooses the format (``.png``, ``.pdf``, ``.svg``, ...).
+        """
+        from twoball.verify.output.figures import save_figure
+        from twoball.verify.output.figures.bounce import drop_figure
+
+        title = f"{self.backend}, {self.model['membrane']} membrane"
+        figure = drop_figure(self.result, self.case, self.mass_kg, title)
+        return save_figure(figure, out, "plot", dpi)
+
+    def _mesh_and_times(self, mesh: Any, frames: int) -> tuple[Any, Any]:
+        from twoball.fem_membrane.mesh import sphere_mesh
+        from twoball.fem_membrane.options import MeshOptions
+        from twoball.verify.output.drop_fields import drop_frames
+        from twoball.verify.output.fields import check_frames
+
+        spec = MeshOptions.of(mesh).require(("sphere",), files=False)
+        if spec.order > 2:
+            raise ParameterError("order", "1 or 2 for field files and pictures", spec.order)
+        count = check_frames(frames)
+        return sphere_mesh(spec.level, spec.order, None), drop_frames(self.result, count, self.case)
+
+    def export(
+        self,
+        out: str | os.PathLike[str],
+        *,
+        mesh: Any = None,
+        frames: int = 40,
+        format: str | None = None,
+    ) -> list[Path]:
+        """Write the drop on a sphere mesh: XDMF (+ HDF5), PVD (+ VTUs) or one VTU frame.
+
+        Point data ``u_m``, ``displacement_m`` (the centre's fall and the
+        membrane's flattening: warp by it), ``height_m``; frame data ``Z_m``,
+        ``floor_force_N``; every field in SI (:mod:`twoball.verify.output.drop_fields`).
+        ``mesh``: a sphere (default the level-3 P2 icosphere); ``frames``
+        instants from the first touch to the end of the run.
+        """
+        import json
+
+        from twoball.verify.output.drop_fields import drop_series
+        from twoball.verify.output.series import write_series
+
+        sphere, times = self._mesh_and_times(mesh, frames)
+        series = drop_series(self.result, self.case, sphere, times, self.mass_kg, self._text)
+        if self.provenance is not None:
+            series = replace(
+                series, text={**series.text, "provenance": json.dumps(self.provenance)}
+            )
+        return write_series(out, series, format)
+
+    def render(
+        self,
+        out: str | os.PathLike[str],
+        *,
+        mesh: Any = None,
+        frames: int = 40,
+        warp: float | None = None,
+        size: Any = None,
+        fps: float = 20.0,
+    ) -> Path:
+        """Picture (``.png``: the largest compression) or animation (``.gif``, ``.mp4``).
+
+        The membrane's displacement from the centre, coloured, in the centre's
+        frame: the bottom flattens on the floor and springs back; the caption
+        gives the time, the floor force, the centre's height above R and
+        whether the ball is on the floor.
+        """
+        from twoball.verify.output.drop_fields import drop_scene
+        from twoball.verify.output.render import DEFAULT_SIZE, render_scene
+
+        sphere, times = self._mesh_and_times(mesh, frames)
+        if Path(out).suffix.lower() == ".png":  # one picture: the largest compression
+            times = times[:1] * 0.0 + self.t_max_compression_s
+        scene = drop_scene(self.result, self.case, sphere, times, self.mass_kg, self._text)
+        return render_scene(out, scene, warp=warp, size=size or DEFAULT_SIZE, fps=fps)
+
+    @property
+    def _text(self) -> str:
+        c = self.case
+        return (
+            f"twoball bounce ({self.backend}, {self.model['resolution']}): R = {c.radius:g} m, "
+            f"c = {c.wave_speed:g} 1/s, v0 = {c.v0:g} m/s, membrane {self.model['membrane']}, "
+            f"gas {self.model['gas']}"
+        )
+
+
+@dataclass(frozen=True)
+class BounceSweep:
+    """Drops over one parameter (``v0`` or ``drop-height``), in SI.
+
+    Attributes
+    ----------
+    parameter : str
+        ``v0`` or ``drop-height``.
+    values : tuple of float
+        Its values (m/s or m).
+    reports : list of BounceReport or None
+        One drop per value (None where it failed; ``errors`` says why).
+    errors : list of str or None
+    provenance : dict
+
+    Examples
+    --------
+    >>> import twoball
+    >>> result = twoball.sweep({"v0": [2.0, 4.1]}, drop=twoball.Drop(modes=32))
+    >>> [round(r.flattening_max_m * 1e3, 1) for r in result.reports]
+    [11.0, 18.7]
+    """
+
+    parameter: str
+    values: tuple[float, ...]
+    reports: list[Any]
+    errors: list[str | None]
+    provenance: dict[str, Any] | None = field(default=None, compare=False, repr=False)
+
+    def as_dict(self) -> dict[str, Any]:
+        """JSON-ready: the parameter and one drop per value (SI), with the provenance."""
+        points = []
+        for value, report, error in zip(self.values, self.reports, self.errors, strict=True):
+            data = {"parameter": self.parameter, "value": value, "error": error}
+            if report is not None:
+                data |= {k: v for k, v in report.as_dict().items() if k != "provenance"}
+            points.append(data)
+        return {"parameter": self.parameter, "points": points, "provenance": self.provenance}
+
+    def plot(self, out: str | os.PathLike[str], *, dpi: float | None = None) -> Path:
+        """phi_a,max and the flattening against |v0|, with eq. (3.7), pressure x area and the
+        measurements (Table 2; 3.07 mm per m/s)."""
+        from twoball.verify.output.figures import save_figure
+        from twoball.verify.output.figures.bounce import speeds_figure
+
+        done = [r for r in self.reports if r is not None]
+        if not done:
+            raise ParameterError("values", "at least one drop that ran, to plot", None)
+        rows = [(r.case.v0, r.phi_a_max_rad, r.flattening_max_m) for r in done]
+        return save_figure(speeds_figure(rows, done[0].case), out, "plot", dpi)
+
+
+def bounce_sweep(
+    values: Any, case: Case | None, drop: Drop, *, stepping: Any = None, progress: Any = None
+) -> BounceSweep:
+    """Drops over ``values`` (``{"v0": [...]}`` or ``{"drop_height": [...]}``), in SI."""
+    from twoball._common.errors import NumericalError
+    from twoball._common.provenance import block
+    from twoball.verify.sweeps.bounce import bounce_points, bounce_values
+
+    case = Case.preset("basketball") if case is None else case
+    if not isinstance(case, Case):
+        raise ParameterError("case", "a twoball.Case", type(case).__name__)
+    if not isinstance(drop, Drop):
+        raise ParameterError("drop", "a twoball.Drop", type(drop).__name__)
+    if not hasattr(values, "items") or not values:
+        raise ParameterError("values", "a mapping of v0 or drop_height to values", values)
+    parameter, array = bounce_values(list(values), list(values.values()))
+    points = bounce_points(case, drop, parameter, array)
+    reports: list[Any] = []
+    errors: list[str | None] = []
+    for k, (point_case, point_drop) in enumerate(points, start=1):
+        try:
+            reports.append(bounce(point_case, point_drop, stepping=stepping))
+            errors.append(None)
+        except (ParameterError, NumericalError) as error:
+            reports.append(None)
+            errors.append(str(error))
+        if progress is not None:
+            progress(k)
+    arguments = {"values": {parameter: array}, "drop": drop.as_dict()}
+    if stepping is not None:
+        arguments["stepping"] = stepping.as_dict()
+    provenance = block(case, "twoball.sweep", arguments)
+    return BounceSweep(parameter, tuple(float(v) for v in array), reports, errors, provenance)

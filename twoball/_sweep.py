@@ -87,8 +87,9 @@ def sweep(
     workers: int | None = None,
     scheduler: str | None = None,
     progress: Callable[[int], None] | None = None,
+    drop: Any = None,
     **deprecated: Any,
-) -> SweepResult:
+) -> SweepResult | Any:
     """Closed-form lift-off over one parameter or a grid of two (Fig. 11(b), Fig. 12).
 
     Parameters
@@ -115,6 +116,10 @@ def sweep(
         Address of a dask.distributed scheduler.
     progress : callable, optional
         Called with the number of points done (e.g. :meth:`twoball.Reporter.update`).
+    drop : Drop, optional
+        Sweep the drop on the floor instead (:func:`twoball.bounce` at every
+        point, with these options): one parameter, ``v0`` or ``drop_height``;
+        returns a :class:`~twoball.BounceSweep`.
     **deprecated
         ``t_end`` and ``contact_radius`` of version 0.2, with a :class:`DeprecationWarning`.
 
@@ -129,6 +134,15 @@ def sweep(
     >>> [round(p.ratio, 3) for p in result.points]
     [1.354, 0.935, 0.417]
     """
+    if drop is not None:
+        from twoball._bounce import bounce_sweep
+
+        if deprecated or body is not None or workers is not None or scheduler is not None:
+            given = ("body", body), ("workers", workers), ("scheduler", scheduler)
+            name, value = next(((n, v) for n, v in given if v is not None), (None, None))
+            name = name or next(iter(deprecated))
+            raise ParameterError(name, "left out in a sweep of the drop", value)
+        return bounce_sweep(values, case, drop, stepping=stepping, progress=progress)
     import numpy as np
 
     from twoball.modal.report import t_end_dimensionless

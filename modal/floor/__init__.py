@@ -5,8 +5,8 @@ Legendre modes here, the finite elements in :mod:`twoball.fem_membrane.floor`),
 :mod:`~twoball.modal.floor.system` assembles the contact problem with the
 centre's height and the floor's points, :mod:`~twoball.modal.floor.drop` runs
 one drop on the contact core and :mod:`~twoball.modal.floor.measure` defines its
-measures; :mod:`~twoball.modal.floor.options` and
-:mod:`~twoball.modal.floor.report` are its SI edge.  Names load on first use.
+measures; :mod:`~twoball.modal.floor.options`, :mod:`~twoball.modal.floor.model` and
+:mod:`~twoball.modal.floor.references` are its SI edge.  Names load on first use.
 """
 
 from twoball._common.lazy import attach
@@ -23,7 +23,7 @@ _NAMES = {
     "FloorSystem": "twoball.modal.floor.system",
     "floor_system": "twoball.modal.floor.system",
     "Drop": "twoball.modal.floor.options",
-    "BounceReport": "twoball.modal.floor.report",
+    "pressure_area": "twoball.modal.floor.references",
     "RestResult": "twoball.modal.floor.settle",
     "settle": "twoball.modal.floor.settle",
     "restitution_only": "twoball.modal.floor.restitution",

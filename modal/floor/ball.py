@@ -25,6 +25,7 @@ eigenvalue of each mode, and :func:`mode_decay` each mode's damping from the law
 from __future__ import annotations
 
 import math
+from collections.abc import Callable
 from dataclasses import dataclass, field
 
 import numpy as np
@@ -152,6 +153,10 @@ class ModalBall:
         Laplace-Beltrami eigenvalue of each mode (``n (n + 1)`` or the FE one).
     label : str
         ``"legendre N = 128"``, ``"axisym 64 P2"``, ...
+    sampler : callable, optional
+        ``sampler(phi) -> (len(phi), K)``: every mode at any polar angles (for
+        fields and pictures); the Legendre polynomials, or the finite-element
+        interpolant.
     """
 
     masses: np.ndarray
@@ -163,6 +168,7 @@ class ModalBall:
     top: np.ndarray
     laplace: np.ndarray
     label: str = ""
+    sampler: Callable[[np.ndarray], np.ndarray] | None = field(default=None, repr=False)
 
     def __post_init__(self) -> None:
         k = self.masses.size
@@ -190,6 +196,12 @@ class ModalBall:
     def stable(self) -> bool:
         """True when every mode has omega^2 > 0 (no free drift of the shape)."""
         return bool(np.all(self.omega_squared > 0.0))
+
+    def modes_at(self, phi: np.ndarray) -> np.ndarray:
+        """Every mode at the polar angles ``phi`` [rad], shape (len(phi), K)."""
+        if self.sampler is None:
+            raise NumericalError(f"ModalBall {self.label!r}: no sampler of the modes")
+        return self.sampler(np.asarray(phi, dtype=float).reshape(-1))
 
     def amplitude_bound(self) -> np.ndarray:
         """``b_i``: ``|u(phi_i)| <= b_i sqrt(2 E)`` for a membrane energy E (inf if unstable).
@@ -264,4 +276,5 @@ def legendre_ball(
         top=np.ones(n.size),
         laplace=laplace,
         label=f"legendre N = {modes}",
+        sampler=lambda angles: legvander(np.cos(angles), modes)[:, n],
     )

@@ -178,7 +178,12 @@ def bounce_rows(report: twoball.BounceReport) -> list[tuple[str, str]]:
 
 def run(args: argparse.Namespace) -> int:
     """Run ``twoball bounce``."""
+    from twoball._files import check_figure_path
+
+    plot = None if args.plot is None else check_figure_path(args.plot, "plot")
     report = bounce_from_options(args)
+    if plot is not None:
+        report.plot(plot)
     print_notes(list(report.notes))
     print_warnings(report.warnings)
     if args.json:
@@ -196,5 +201,11 @@ def register(parser: argparse.ArgumentParser) -> None:
     )
     add_case_options(parser)
     add_drop_options(parser)
+    parser.add_argument(
+        "--plot",
+        metavar="FILE",
+        help="also write the drop's figure (.png, .pdf, .svg, ...): floor force, contact "
+        "angle, the centre's height and the energy books against time",
+    )
     parser.add_argument("--json", action="store_true", help="print one JSON object")
     parser.set_defaults(run=run)

@@ -19,6 +19,7 @@ from twoball.cli.console import (
 )
 from twoball.cli.contact_options import add_contact_options, body_options
 from twoball.cli.values import integer
+from twoball.cli.values import number as number_value
 
 __all__ = ["register", "run"]
 
@@ -68,6 +69,17 @@ def run(args: argparse.Namespace) -> int:
     import twoball
     from twoball._files import check_figure_path
 
+    if args.bounce:
+        return _run_bounce(args)
+    for name, given in (
+        ("membrane", args.membrane),
+        ("floor_restitution", args.floor_restitution),
+    ):
+        if given is not None:
+            raise ParameterError(name, "left out without --bounce (a sweep of the drop)", given)
+    if "drop-height" in args.param:
+        valid = "a parameter of the lift-off (drop-height needs --bounce, a sweep of the drop)"
+        raise ParameterError("param", valid, "drop-height")
     grid = _choices.make_grid(args.param, args.values)
     for name in grid.parameters:  # the swept parameter's base value would be replaced
         field = _choices.SWEEP_PARAMETERS[name]
@@ -108,6 +120,62 @@ def run(args: argparse.Namespace) -> int:
         print_sweep(grid, points)
         if plot is not None:
             console().print(f"plot written to {plot}")
+    return 0
+
+
+def _run_bounce(args: argparse.Namespace) -> int:
+    """``twoball sweep --bounce``: one drop on the floor per impact speed or drop height."""
+    import twoball
+    from twoball._files import check_figure_path
+    from twoball.cli.bounce import drop_case
+
+    for name in ("mass_ratio", "contact_radius", "restitution", "energy", "workers"):
+        if getattr(args, name, None) is not None:
+            raise ParameterError(name, "left out with --bounce", getattr(args, name))
+    for name in args.param:
+        field = {"v0": "v0", "drop-height": "drop_height"}.get(name)
+        if field == "v0" and args.v0 is not None:
+            raise ParameterError("v0", "left out when --param v0 is swept", args.v0)
+    plot = None if args.plot is None else check_figure_path(args.plot, "plot")
+    args.drop_height = None
+    case = drop_case(args)
+    fields: dict[str, Any] = {"gas": args.gas, "modes": args.modes}
+    if args.membrane is not None:
+        fields["membrane"] = args.membrane
+    if args.floor_restitution is not None:
+        fields["floor_restitution"] = args.floor_restitution
+    drop = twoball.Drop(**{k: v for k, v in fields.items() if v is not None})
+    if len(args.values) != len(args.param):
+        raise ParameterError("values", "given once per param, in the same order", args.values)
+    pairs = zip(args.param, args.values, strict=True)
+    values = {name.replace("-", "_"): text for name, text in pairs}
+    stepping = None if args.t_end is None else twoball.Stepping(t_end=args.t_end)
+    from twoball._common.progress import QUICK, Reporter
+
+    with Reporter("sweep of the drop", delay=QUICK) as bar:
+        result = twoball.sweep(values, case, stepping=stepping, drop=drop, progress=bar.update)
+    if plot is not None:
+        result.plot(plot)
+    if args.json:
+        data = result.as_dict()
+        print_json(attach(data["points"], result.provenance))
+        return 0
+    table = Table(title=f"Drops on the floor against {result.parameter}")
+    for column in (result.parameter, "|v0| [m/s]", "t_c [ms]", "e2", "phi_a,max", "flat. [mm]"):
+        table.add_column(column, justify="right")
+    for value, report, error in zip(result.values, result.reports, result.errors, strict=True):
+        if report is None:
+            table.add_row(f"{value:g}", "-", "-", "-", "-", error or "")
+            continue
+        table.add_row(
+            f"{value:g}",
+            f"{report.case.v0:.4g}",
+            number(report.contact_time_s, 1e3),
+            number(report.e2),
+            number(report.phi_a_max_rad),
+            number(report.flattening_max_m, 1e3, 3),
+        )
+    console().print(table)
     return 0
 
 
@@ -155,8 +223,23 @@ def register(parser: argparse.ArgumentParser) -> None:
         "--param",
         required=True,
         action="append",
-        choices=tuple(_choices.SWEEP_PARAMETERS),
-        help="swept parameter; give twice for a 2-D grid",
+        choices=(*_choices.SWEEP_PARAMETERS, "drop-height"),
+        help="swept parameter; give twice for a 2-D grid (--bounce: v0 or drop-height, once)",
+    )
+    parser.add_argument(
+        "--bounce",
+        action="store_true",
+        help="sweep the drop of the lower ball on the floor (twoball bounce) instead of the "
+        "lift-off",
+    )
+    parser.add_argument(
+        "--membrane", metavar="KIND", help="--bounce: membrane operator, paper or pressurised"
+    )
+    parser.add_argument(
+        "--floor-restitution",
+        type=number_value,
+        metavar="E",
+        help="--bounce: Newton's e at every floor point in [0, 1] (default 0)",
     )
     parser.add_argument(
         "--values",

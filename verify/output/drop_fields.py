@@ -1,0 +1,128 @@
+"""The drop on the floor as a field on a sphere mesh, in SI, for files and pictures.
+
+The drop's trajectory (:class:`~twoball.modal.floor.drop.DropResult`) holds the
+centre's height Z and the membrane's modal amplitudes at every step; here they
+are read at the nodes of a sphere mesh (:mod:`twoball.fem_membrane.mesh`, the
+pole on +z) at chosen instants and written through the field machinery of
+:mod:`twoball.verify.output.series` (XDMF, PVD, VTU) and
+:mod:`twoball.verify.output.render` (PNG, GIF, MP4).  Point data:
+
+``u_m``
+    The radial displacement from the centre [m] (the flattening shows at the bottom).
+``displacement_m``
+    The whole motion from the ball resting undeformed with its pole on the
+    floor: ``(Z - R) e_z + u n`` [m] (shape (F, P, 3)); ParaView's "Warp By
+    Vector" draws the ball falling, flattening and leaving.
+``height_m``
+    Each node's height above the floor [m] (0 where it touches).
+
+Frame data: ``Z_m`` (the centre's height) and ``floor_force_N``.
+"""
+
+from __future__ import annotations
+
+import json
+from dataclasses import dataclass
+from typing import Any
+
+import numpy as np
+from twoball.fem_membrane.mesh import SphereMesh
+from twoball.modal.floor.drop import DropResult
+from twoball.modal.parameters import Case
+from twoball.verify.output.render import BallScene
+from twoball.verify.output.series import TimeSeries
+
+__all__ = ["DropScene", "drop_frames", "drop_scene", "drop_series"]
+
+
+def drop_frames(result: DropResult, count: int, case: Case) -> np.ndarray:
+    """``count`` instants [s] equally spaced from the first touch to the end of the run."""
+    end = float(result.trajectory.t[-1]) / case.wave_speed
+    return np.linspace(0.0, end, int(count))
+
+
+def _states(result: DropResult, times_s: np.ndarray, case: Case) -> tuple[np.ndarray, ...]:
+    """Z and the modal amplitudes at ``times_s`` (linear between step ends), and the force."""
+    tr = result.trajectory
+    t = np.asarray(times_s, dtype=float) * case.wave_speed
+    q = np.column_stack([np.interp(t, tr.t, tr.q[:, j]) for j in range(tr.q.shape[1])])
+    mid, force = result.force
+    f = np.interp(t, mid, force, left=0.0, right=0.0)
+    return q[:, 0], q[:, 1:], f
+
+
+def drop_series(
+    result: DropResult, case: Case, mesh: SphereMesh, times_s: np.ndarray, mass: float, text: str
+) -> TimeSeries:
+    """The drop at the nodes of ``mesh`` (unit sphere) at ``times_s`` [s], in SI."""
+    ball = result.system.ball
+    points = np.asarray(mesh.points, dtype=float)
+    normal = points / np.linalg.norm(points, axis=1, keepdims=True)
+    phi = np.arccos(np.clip(normal[:, 2], -1.0, 1.0))
+    shapes = ball.modes_at(phi)
+    z, a, force = _states(result, times_s, case)
+    u = a @ shapes.T  # (F, P), units R
+    radius = case.radius
+    lift = (z - 1.0)[:, None, None] * np.array([0.0, 0.0, 1.0])[None, None, :]
+    displacement = (lift + u[:, :, None] * normal[None, :, :]) * radius
+    height = (z[:, None] + (1.0 + u) * normal[None, :, 2]) * radius
+    force_unit = mass * radius * case.wave_speed**2
+    return TimeSeries(
+        points * radius,
+        mesh.cells,
+        np.asarray(times_s, dtype=float),
+        {"u_m": u * radius, "displacement_m": displacement, "height_m": height},
+        {
+            "contact_time_s": np.nan
+            if result.contact_time is None
+            else result.contact_time / case.wave_speed,
+            "e2": np.nan if result.e2 is None else result.e2,
+            "phi_a_max_rad": result.phi_a_max,
+        },
+        {"case": text, "mesh": json.dumps({"label": ball.label})},
+        {"Z_m": z * radius, "floor_force_N": force * force_unit},
+    )
+
+
+@dataclass(frozen=True)
+class DropScene(BallScene):
+    """A picture of the drop: the membrane's flattening in the centre's frame (SI).
+
+    ``u`` is the radial displacement from the centre, ``body`` the top's, and
+    ``t_liftoff`` the separation from the floor; ``floor_force`` (F,) [N] and
+    ``centre`` (F,) the centre's height above R [m] go into the caption.
+    """
+
+    floor_force: np.ndarray = None  # type: ignore[assignment]
+    centre: np.ndarray = None  # type: ignore[assignment]
+
+    def caption(self, k: int, warp: float) -> str:
+        """Time, the floor force, the centre's height, contact or flight, warp."""
+        t = float(self.times[k])
+        text = f"t = {t * 1e3:6.2f} ms\nfloor force {self.floor_force[k]:7.1f} N"
+        text += f"\nZ - R = {self.centre[k] * 1e3:+6.2f} mm"
+        if self.t_liftoff is not None:
+            text += "\nleft the floor" if t >= self.t_liftoff else "\non the floor"
+        return text + (f"\nwarp x{warp:.3g}" if warp != 1.0 else "")
+
+
+def drop_scene(
+    result: DropResult, case: Case, mesh: SphereMesh, times_s: np.ndarray, mass: float, label: str
+) -> Any:
+    """What :func:`twoball.verify.output.render.render_scene` draws of the drop (SI)."""
+    series = drop_series(result, case, mesh, times_s, mass, label)
+    u = series.point_data["u_m"]
+    top = int(np.argmax(np.asarray(mesh.points)[:, 2]))
+    t_left = None if result.contact_time is None else result.contact_time / case.wave_speed
+    return DropScene(
+        series.points,
+        series.cells,
+        series.times,
+        u,
+        u[:, top],
+        case.radius,
+        t_left,
+        label,
+        floor_force=series.frame_data["floor_force_N"],
+        centre=series.frame_data["Z_m"] - case.radius,
+    )
