@@ -5,6 +5,7 @@ from __future__ import annotations
 import json
 import math
 
+import numpy as np
 import pytest
 
 import twoball
@@ -134,3 +135,42 @@ def test_both_backends_agree_pressurised_and_causal():
         for name in ("contact_time_s", "e2", "phi_a_max_rad"):
             a, b = getattr(modal, name), getattr(fe, name)
             assert abs(a / b - 1.0) < 1e-3, (drop, damping, name, a, b)
+
+
+def test_figure_fields_and_pictures_of_the_drop(tmp_path):
+    """plot, export (XDMF/PVD/VTU through the field machinery) and render of one drop."""
+    from twoball.verify.output.series import read_series
+
+    report = twoball.bounce(drop=QUICK)
+    assert report.plot(tmp_path / "drop.svg").stat().st_size > 1000
+    files = report.export(tmp_path / "drop.pvd", frames=4, mesh=twoball.MeshOptions(level=1))
+    series = read_series(files[0])
+    assert len(series) == 4 and series.times[0] == 0.0
+    height = series.point_data["height_m"]
+    # the floor holds its points; between them the coarse field (N = 16) may dip a little
+    assert height.min() > -0.01 * 0.12
+    centre = series.frame_data["Z_m"]
+    assert centre[0] == pytest.approx(0.12, rel=1e-12)  # undeformed, the pole touching
+    # the whole motion: the centre's fall plus the radial displacement
+    top = int(np.argmax(series.points[:, 2]))
+    lift = series.point_data["displacement_m"][:, top, 2]
+    np.testing.assert_allclose(lift, centre - 0.12 + series.point_data["u_m"][:, top], atol=1e-12)
+    one = report.export(tmp_path / "drop.vtu", frames=1, mesh=twoball.MeshOptions(level=1))
+    assert one[0].name == "drop.vtu"
+    picture = report.render(tmp_path / "drop.png", mesh=twoball.MeshOptions(level=1))
+    assert picture.stat().st_size > 1000
+
+
+def test_sweep_of_the_drop():
+    """twoball.sweep with a Drop: one drop per speed; the flattening grows with |v0|."""
+    result = twoball.sweep({"v0": [2.0, 4.1]}, drop=QUICK)
+    assert result.parameter == "v0" and result.errors == [None, None]
+    low, high = result.reports
+    assert low.flattening_max_m < high.flattening_max_m and low.e2 > high.e2
+    heights = twoball.sweep({"drop_height": [0.5]}, drop=QUICK)
+    assert heights.reports[0].case.v0 == pytest.approx(math.sqrt(2 * 9.81 * 0.5))
+    data = result.as_dict()
+    assert [p["value"] for p in data["points"]] == [2.0, 4.1] and data["provenance"]
+    with pytest.raises(twoball.ParameterError) as caught:
+        twoball.sweep({"damping": [0.1]}, drop=QUICK)
+    assert caught.value.name == "param"

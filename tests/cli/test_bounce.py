@@ -69,3 +69,43 @@ def test_bad_input_is_one_line_exit_2(capsys, argv, flag):
     lines = err.strip().splitlines()
     assert stop.value.code == 2 and len(lines) == 1, err
     assert lines[0].startswith(f"twoball: error: {flag}") and "Traceback" not in err
+
+
+def test_sweep_of_the_drop_and_figures(capsys, tmp_path):
+    out = tmp_path / "speeds.png"
+    code, stdout, _ = run(
+        capsys,
+        "sweep",
+        "--bounce",
+        "--param",
+        "v0",
+        "--values",
+        "2,4.1",
+        "--modes",
+        "16",
+        "--plot",
+        str(out),
+        "--json",
+    )
+    data = json.loads(stdout)
+    assert code == 0 and len(data["results"]) == 2 and out.stat().st_size > 1000
+    assert data["results"][1]["e2"] < data["results"][0]["e2"]
+    figure = tmp_path / "drop.pdf"
+    code, _, _ = run(capsys, "bounce", "--modes", "16", "--plot", str(figure))
+    assert code == 0 and figure.stat().st_size > 1000
+
+
+@pytest.mark.parametrize(
+    ("argv", "flag"),
+    [
+        (["sweep", "--param", "drop-height", "--values", "1,2"], "--param"),
+        (["sweep", "--param", "v0", "--values", "1,2", "--membrane", "paper"], "--membrane"),
+        (["sweep", "--bounce", "--param", "damping", "--values", "0.1"], "--param"),
+        (["bounce", "--plot", "drop.bogus"], "--plot"),
+    ],
+)
+def test_sweep_and_plot_refusals(capsys, argv, flag):
+    with pytest.raises(SystemExit) as stop:
+        main(argv)
+    err = capsys.readouterr().err
+    assert stop.value.code == 2 and err.startswith(f"twoball: error: {flag}"), err

@@ -14,7 +14,8 @@ pole on +z) at chosen instants and written through the field machinery of
     floor: ``(Z - R) e_z + u n`` [m] (shape (F, P, 3)); ParaView's "Warp By
     Vector" draws the ball falling, flattening and leaving.
 ``height_m``
-    Each node's height above the floor [m] (0 where it touches).
+    Each node's height above the floor [m]: >= 0 at the floor points; a node
+    between them may dip below by the resolution's error.
 
 Frame data: ``Z_m`` (the centre's height) and ``floor_force_N``.
 """
