@@ -95,7 +95,9 @@ def solve(
     rayleigh = isinstance(given.damping, Rayleigh)
     if rayleigh and scheme != "alpha":
         raise ParameterError(
-            "damping", "a ModalRatio with scheme modal (one ratio D per mode)", "rayleigh"
+            "damping",
+            "the paper's modal ratio with scheme modal (Rayleigh: scheme alpha)",
+            "rayleigh",
         )
     from twoball._bundles import with_damping
 

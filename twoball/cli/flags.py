@@ -132,12 +132,11 @@ def cli_message(error: ParameterError, args: Namespace | None = None) -> str:
     text = " ".join(str(error).split())  # one line
     from twoball._common.budget import BudgetError
 
-    if isinstance(error, BudgetError):  # "modes 100000 t_end 2 needs ...": every name a flag
-        words = text.split(" ")
-        return " ".join(
-            flag_of(w.rstrip(")"), args) + w[len(w.rstrip(")")) :] if w.rstrip(")") in FLAGS else w
-            for w in words
-        )
+    if isinstance(error, BudgetError):  # "modes 100000 t_end 2 needs ...": the names asked for
+        asked, _, rest = text.partition(" needs ")
+        words = [flag_of(w, args) if w in FLAGS else w for w in asked.split(" ")]
+        rest = rest.replace("max_memory)", "--max-memory)").replace("max_time)", "--max-time)")
+        return " ".join(words) + (" needs " + rest if rest else "")
     name = str(error.name)
     if text.startswith(name):
         return flag_of(name, args) + text[len(name) :]
