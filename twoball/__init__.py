@@ -13,7 +13,8 @@ each name below imports its module on first use::
 Public names: :class:`Case`, :func:`liftoff`, :func:`sweep`, :mod:`fem`
 (``fem.solve``, ``fem.eigen``), :func:`converge`, :func:`verify`,
 :func:`export`, :func:`render`, :func:`plot`, :class:`LiftoffReport`,
-:class:`MeshOptions`, :class:`ParameterError`, :class:`NumericalError`,
+:class:`MeshOptions`, :class:`Membrane`, :class:`ModalRatio`, :class:`Rayleigh`,
+:class:`ParameterError`, :class:`NumericalError`,
 :func:`report` (versions and platform), :mod:`provenance`, :mod:`progress`,
 ``__version__``.  The command line ``twoball`` is a thin layer over these.
 """
@@ -45,6 +46,7 @@ _NAMES: dict[str, str | tuple[str, str]] = {
     "Body": "twoball.modal.contact.body",
     "ModalRatio": "twoball.modal.damping",
     "Rayleigh": "twoball.modal.damping",
+    "Membrane": "twoball.modal.membrane",
     "RenderOptions": "twoball.verify.output.options",
     "PlotOptions": "twoball.verify.output.options",
     "ContactReport": "twoball.modal.contact.report",
