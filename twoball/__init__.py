@@ -15,7 +15,7 @@ Public names (``twoball.__all__``): the verbs :func:`liftoff`, :func:`sweep`,
 :func:`converge`, :func:`verify`, :func:`reproduce`, :func:`icm`,
 :func:`table1`, :func:`report`; the case and the option and model objects
 :class:`Case`, :class:`MeshOptions`, :class:`Stepping`, :class:`Body`,
-:class:`ModalRatio`, :class:`Rayleigh`, :class:`RenderOptions`,
+:class:`Membrane`, :class:`ModalRatio`, :class:`Rayleigh`, :class:`RenderOptions`,
 :class:`PlotOptions`; the results; :class:`Reporter` (progress),
 :class:`ParameterError`, :class:`NumericalError`, ``__version__``.  The
 command line ``twoball`` is a thin layer over these.
@@ -48,6 +48,7 @@ _NAMES: dict[str, str | tuple[str, str]] = {
     "Body": "twoball.modal.contact.body",
     "ModalRatio": "twoball.modal.damping",
     "Rayleigh": "twoball.modal.damping",
+    "Membrane": "twoball.modal.membrane",
     "RenderOptions": "twoball.verify.output.options",
     "PlotOptions": "twoball.verify.output.options",
     "ContactReport": "twoball.modal.contact.report",

@@ -405,12 +405,15 @@ def plot(
     progress: Step | None = None,
     **deprecated: Any,
 ) -> PlotResult:
-    """Figures: ``waterfall`` of u(phi) (Fig. 6), ``pole`` motion, FE ``eigen`` errors.
+    """Figures: ``waterfall`` (Fig. 6), ``pole`` motion, FE ``eigen`` errors, ``precursor``.
 
     Parameters
     ----------
-    kind : {"waterfall", "pole", "eigen"}
-        The figure.
+    kind : {"waterfall", "pole", "eigen", "precursor"}
+        The figure.  ``precursor``: the pole's displacement under the case's
+        damping law beside the other law matched to it and the undamped
+        membrane, with the motion before the wave front ``phi_a / c`` (closed
+        form; :mod:`twoball.verify.output.figures.precursor`).
     out : path
         Output file; its suffix chooses the format: any format matplotlib
         writes (``.pdf``, ``.svg``, ``.eps``, ``.png``, ...).
@@ -497,7 +500,39 @@ def plot(
     warnings: list[str] = []
     field = None
     say = progress or silent
-    if kind == "eigen":
+    if kind == "precursor":
+        from twoball.modal.report import t_end_dimensionless
+        from twoball.verify.output.figures.precursor import (
+            law_curves,
+            precursor_figure,
+            precursor_rows,
+        )
+
+        refused = {"backends": backends, "mesh": given.mesh, "instants": figure.instants}
+        refused |= {"levels": figure.levels, "orders": figure.orders}
+        refused |= {"max_degree": figure.max_degree}
+        for name, value in refused.items():
+            if value is not None:
+                shown = value.label if hasattr(value, "label") else value
+                valid = "left out with kind precursor (the closed form only)"
+                raise ParameterError(name, valid, shown)
+        if given.body is not None:
+            raise ParameterError(
+                "mass_ratio",
+                "left out with kind precursor (a massless body)",
+                given.body.mass_ratio,
+            )
+        if given.stepping is not None:
+            given.stepping.refuse("with kind precursor (the closed form)", "route")
+        case = _case(case)
+        sigma = "lanczos" if sigma is None else sigma
+        recontact = "window" if recontact is None else recontact
+        window = t_end_dimensionless(case, t_end)
+        say("the closed form under each damping law")
+        curves = law_curves(case, sigma, recontact, window)
+        drawn = precursor_figure(case, curves, window)
+        rows += precursor_rows(case, curves)
+    elif kind == "eigen":
         refused = {"case": case, "backends": backends, "mesh": given.mesh, "sigma": sigma}
         refused |= {"recontact": recontact, "instants": figure.instants}
         refused |= {"stepping": given.stepping}

@@ -88,7 +88,11 @@ class ContactSystem:
         """The contact system on a backend's :class:`ModalSeries` (every mode, filtered start).
 
         Modes the filter drops start at rest but are still forced by the contact.
+        The damping is the paper's ratio D (``2 D omega`` per mode): a series
+        under another law is refused.
         """
+        if not isinstance(series.damping, float):
+            raise ParameterError("damping", "the modal ratio D with a body of finite mass", "law")
         return cls(
             omega=series.omega,
             masses=series.mode_norms,

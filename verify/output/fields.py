@@ -189,7 +189,7 @@ def legendre_backend(
 ) -> Backend:
     """The closed form of eq. (3.16) with its Legendre modes at the nodes of ``mesh``."""
     series = legendre_series(
-        case.phi_a, case.damping, SpectralFilter(sigma, case.modes), stiffness=case.stiffness
+        case.phi_a, case.damping_law, SpectralFilter(sigma, case.modes), stiffness=case.stiffness
     )
     shapes = legendre_shapes(node_polar_angles(mesh), case.modes)
     report = report_liftoff(
@@ -443,6 +443,12 @@ def series_metadata(model: BallModel, backend: str) -> dict[str, float]:
         "mesh_order": float(model.mesh.order),
         "nodes": float(len(model.mesh.points)),
     }
+    if case.membrane.pressurised:  # omega^2 = lambda - s (docs/pressurised.rst)
+        data["membrane_shift"] = case.membrane.shift
+    if case.rayleigh is not None:  # the law that replaces D, in SI
+        law = case.rayleigh_dict()
+        data["rayleigh_alpha_1_s"] = float(law["alpha_1_s"])
+        data["rayleigh_beta_s"] = float(law["beta_s"])
     if model.source is not None:  # the user's file: its own unit and frame
         data["mesh_file_radius"] = float(model.source["radius"])
         centre, pole = model.source["center"], model.source["pole"]
@@ -516,9 +522,20 @@ def case_text(model: BallModel, backend: str) -> str:
     return (
         f"twoball {backend}: R = {c.radius:g} m, c = {c.wave_speed:g} 1/s, v0 = {c.v0:g} m/s, "
         f"phi_a = {c.phi_a:.6g} rad ({c.phi_a_source}), D = {c.damping:g}, N = {c.modes}, "
-        f"g = {c.g:g} m/s^2; fields u_m [m], u_t_m_s [m/s], u_tt_m_s2 [m/s^2], "
-        "displacement_m [m]; time [s]"
+        f"g = {c.g:g} m/s^2; {_model_text(c)}fields u_m [m], u_t_m_s [m/s], "
+        "u_tt_m_s2 [m/s^2], displacement_m [m]; time [s]"
     )
+
+
+def _model_text(case: Case) -> str:
+    """The membrane operator and damping law when not the paper's ('' otherwise)."""
+    parts = []
+    if case.membrane.pressurised:
+        parts.append("membrane pressurised, omega^2 = (n - 1)(n + 2)")
+    if case.rayleigh is not None:
+        law = case.rayleigh_dict()
+        parts.append(f"Rayleigh alpha = {law['alpha_1_s']:.6g} 1/s, beta = {law['beta_s']:.6g} s")
+    return "".join(part + "; " for part in parts)
 
 
 def ball_scene(model: BallModel, times_s: np.ndarray, backend: str = "fem") -> BallScene:
