@@ -161,13 +161,14 @@ def export(
         liftoff_frame,
         window_s,
     )
-    from twoball.verify.output.series import series_format, write_series
+    from twoball.verify.output.series import check_side_entries, series_format, write_series
 
     check_path_type(out)
     given, legacy_times = _field_bundles("twoball.export", mesh, stepping, body, deprecated)
     case = _case(case)
     fmt = series_format(out, format)
     target = check_file(out)
+    check_side_entries(target, fmt)
     check_backend(backend)
     t_end, route = _window(given)
     field = field_mesh(given.mesh, cells=True, load=False)
