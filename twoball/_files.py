@@ -100,7 +100,12 @@ def export(
     case : Case, optional
         The impact (default the basketball preset).
     backend : {"fem", "legendre"}
-        Which solver's u, u_t, u_tt and lift-off are the main fields.
+        Which solver's u, u_t, u_tt and lift-off are the main fields.  ``fem``
+        (default) also solves the closed form for the comparison fields
+        ``u_legendre_m`` and ``u_diff_m``; ``legendre`` solves the closed form
+        alone (no finite elements: ``u_legendre_m``, no ``u_fem_m``/``u_diff_m``),
+        and refuses the finite elements' options (``stepping.route``,
+        ``mesh.initial``).
     mesh : MeshOptions, {"sphere", "ring"} or the user's mesh, optional
         The sphere (default the level-3 P2 icosphere; orders 1 and 2), or the
         user's sphere: a file any format meshio reads, of any radius, centre
@@ -171,6 +176,9 @@ def export(
     check_side_entries(target, fmt)
     check_backend(backend)
     t_end, route = _window(given)
+    solved = BACKENDS if backend == "fem" else (backend,)  # the closed form needs no FE solve
+    if "fem" not in solved and route != "auto":
+        raise ParameterError("route", "left out with backend legendre (no finite elements)", route)
     field = field_mesh(given.mesh, cells=True, load=False)
     frames, times = _frames(frames, legacy_times)
     if times is not None:
@@ -189,7 +197,7 @@ def export(
     model = ball_model(
         case,
         field,
-        backends=BACKENDS,
+        backends=solved,
         body=given.body,
         sigma=sigma,
         recontact=recontact,
