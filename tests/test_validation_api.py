@@ -311,6 +311,12 @@ EXTRA: list[tuple[str, Callable[[Path], Any]]] = [
     ("levels", lambda tmp: twoball.plot("eigen", tmp / "p.png", levels=[-1])),
     ("orders", lambda tmp: twoball.plot("eigen", tmp / "p.png", orders=[7])),
     ("frames", lambda tmp: twoball.export(tmp / "x.vtu", CASE, level=1, frames=5)),
+    (
+        "route",
+        lambda tmp: twoball.export(
+            tmp / "x.vtu", CASE, backend="legendre", stepping=twoball.Stepping(route="full")
+        ),
+    ),
     # mesh files of the field commands
     ("pole", lambda tmp: twoball.export(tmp / "x.vtu", CASE, level=1, pole=(0, 0, 1))),
     ("pole", lambda tmp: twoball.render(tmp / "x.png", CASE, pole="0,0,1")),

@@ -365,6 +365,20 @@ NOT_APPLICABLE: list[tuple[str, list[str]]] = [
     ("--times", ["export", "--level", "1", "--times", "nan", "--out", "{tmp}/x.pvd"]),
     ("--times", ["export", "--level", "1", "--times", "", "--out", "{tmp}/x.pvd"]),
     ("--format", ["export", "--level", "1", "--format", "bogus", "--out", "{tmp}/x.vtu"]),
+    (
+        "--route",
+        [
+            "export",
+            "--level",
+            "1",
+            "--backend",
+            "legendre",
+            "--route",
+            "full",
+            "--out",
+            "{tmp}/x.vtu",
+        ],
+    ),
     ("--mesh", ["export", "--mesh", "axisym", "--out", "{tmp}/x.vtu"]),
     # mesh files of the field commands: --pole needs one, --level does not apply to one,
     # the exact geometry not to the ring sphere, the eigen plot takes generated meshes only

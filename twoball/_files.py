@@ -100,7 +100,12 @@ def export(
     case : Case, optional
         The impact (default the basketball preset).
     backend : {"fem", "legendre"}
-        Which solver's u, u_t, u_tt and lift-off are the main fields.
+        Which solver's u, u_t, u_tt and lift-off are the main fields.  ``fem``
+        (default) also solves the closed form for the comparison fields
+        ``u_legendre_m`` and ``u_diff_m``; ``legendre`` solves the closed form
+        alone (no finite elements: ``u_legendre_m``, no ``u_fem_m``/``u_diff_m``),
+        and refuses the finite elements' options (``stepping.route``,
+        ``mesh.initial``).
     mesh : MeshOptions, {"sphere", "ring"} or the user's mesh, optional
         The sphere (default the level-3 P2 icosphere; orders 1 and 2), or the
         user's sphere: a file any format meshio reads, of any radius, centre
@@ -161,15 +166,19 @@ def export(
         liftoff_frame,
         window_s,
     )
-    from twoball.verify.output.series import series_format, write_series
+    from twoball.verify.output.series import check_side_entries, series_format, write_series
 
     check_path_type(out)
     given, legacy_times = _field_bundles("twoball.export", mesh, stepping, body, deprecated)
     case = _case(case)
     fmt = series_format(out, format)
     target = check_file(out)
+    check_side_entries(target, fmt)
     check_backend(backend)
     t_end, route = _window(given)
+    solved = BACKENDS if backend == "fem" else (backend,)  # the closed form needs no FE solve
+    if "fem" not in solved and route != "auto":
+        raise ParameterError("route", "left out with backend legendre (no finite elements)", route)
     field = field_mesh(given.mesh, cells=True, load=False)
     frames, times = _frames(frames, legacy_times)
     if times is not None:
@@ -188,7 +197,7 @@ def export(
     model = ball_model(
         case,
         field,
-        backends=BACKENDS,
+        backends=solved,
         body=given.body,
         sigma=sigma,
         recontact=recontact,

@@ -353,6 +353,15 @@ def solve_backends(
     return BallModel(case, unit_mesh, solved, t_end, sigma, recontact, source=field.source)
 
 
+#: How progress lines name what a backend solves.
+SOLVED_TEXT = {"fem": "the finite elements (fem)", "legendre": "the closed form (legendre)"}
+
+
+def solved_text(backends: Sequence[str]) -> str:
+    """``the finite elements (fem) and the closed form (legendre)``: what is solved."""
+    return " and ".join(SOLVED_TEXT[name] for name in backends)
+
+
 def ball_model(
     case: Case,
     field: FieldMesh | None = None,
@@ -416,7 +425,7 @@ def ball_model(
         )
     if field.spec.kind == FILE and field.loaded is None:
         field = replace(field, loaded=field.spec.load())
-    say(f"solving {' and '.join(backends)} on {field.spec.label}")
+    say(f"solving {solved_text(backends)} on {field.spec.label}")
     return solve_backends(
         case, field, tuple(backends), sigma=sigma, recontact=recontact, t_end=t_end, route=route
     )
