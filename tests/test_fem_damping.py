@@ -81,6 +81,10 @@ def test_rayleigh_stepping_equals_the_sum_of_modes_with_their_own_ratios():
     assert np.all((orders > 1.8) & (orders < 2.2)), orders
 
 
-def test_rayleigh_needs_time_stepping():
-    with pytest.raises(ParameterError, match="damping_model"):
-        fem_pole_motion(PHI_A, DAMPING, mesh="axisym", elements=20, damping_model="rayleigh")
+def test_rayleigh_runs_on_modal_superposition_too():
+    """Each mode with its own ratio (docs/pressurised.rst): no time stepping needed."""
+    series, info = fem_pole_motion(
+        PHI_A, DAMPING, mesh="axisym", elements=20, damping_model="rayleigh"
+    )
+    assert info["damping_model"] == "rayleigh" and info["time_scheme"] == "modal"
+    assert series.damping.alpha == info["rayleigh"]["alpha"]

@@ -253,6 +253,45 @@ EXTRA: list[tuple[str, Callable[[Path], Any]]] = [
     ("e2", lambda _: icm.icm(0.5, True, 0.9)),
     ("case", lambda _: twoball.liftoff("basketball")),
     ("case", lambda _: twoball.sweep({"damping": [0.1]}, "basketball")),
+    # the membrane operator and the damping law (docs/pressurised.rst)
+    ("membrane", lambda _: twoball.Case(membrane="flat")),
+    ("gas", lambda _: twoball.Case(membrane="pressurised")),
+    ("membrane", lambda _: twoball.Membrane("flat")),
+    ("membrane", lambda _: twoball.fem.eigen(membrane="flat")),
+    ("alpha", lambda _: twoball.Rayleigh(-1.0, 0.0)),
+    ("beta", lambda _: twoball.Rayleigh(0.0, -1.0)),
+    ("rayleigh", lambda _: twoball.Case(rayleigh=(1.0, 0.0))),
+    (
+        "rayleigh",
+        lambda _: twoball.liftoff(damping=twoball.Rayleigh(1.0, 0.0), body=twoball.Body(0.1)),
+    ),
+    (
+        "damping",
+        lambda _: twoball.liftoff(
+            twoball.Case(rayleigh=twoball.Rayleigh(1.0, 0.0)), damping=twoball.ModalRatio(0.2)
+        ),
+    ),
+    (
+        "membrane",
+        lambda tmp: twoball.converge(
+            twoball.Case(pressure=77200.0, gas="adiabatic", membrane="pressurised"),
+            study="modes",
+            out=tmp / "c",
+        ),
+    ),
+    (
+        "rayleigh",
+        lambda tmp: twoball._studies.verify(
+            twoball.Case(rayleigh=twoball.Rayleigh()), fast=True, out=tmp / "r"
+        ),
+    ),
+    ("backends", lambda tmp: twoball.plot("precursor", tmp / "p.png", CASE, backends=["fem"])),
+    (
+        "param",
+        lambda _: twoball.sweep(
+            {"damping": [0.1, 0.2]}, twoball.Case(rayleigh=twoball.Rayleigh(1.0, 0.0))
+        ),
+    ),
     # options that do not apply
     ("level", lambda _: twoball.liftoff(CASE, level=3)),
     ("mesh", lambda _: twoball.liftoff(CASE, mesh="sphere")),
@@ -285,6 +324,12 @@ EXTRA: list[tuple[str, Callable[[Path], Any]]] = [
     ("levels", lambda tmp: twoball.plot("eigen", tmp / "p.png", levels=[-1])),
     ("orders", lambda tmp: twoball.plot("eigen", tmp / "p.png", orders=[7])),
     ("frames", lambda tmp: twoball.export(tmp / "x.vtu", CASE, level=1, frames=5)),
+    (
+        "route",
+        lambda tmp: twoball.export(
+            tmp / "x.vtu", CASE, backend="legendre", stepping=twoball.Stepping(route="full")
+        ),
+    ),
     # mesh files of the field commands
     ("pole", lambda tmp: twoball.export(tmp / "x.vtu", CASE, level=1, pole=(0, 0, 1))),
     ("pole", lambda tmp: twoball.render(tmp / "x.png", CASE, pole="0,0,1")),
