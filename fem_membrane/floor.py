@@ -14,7 +14,7 @@ own eigenvectors: ``K V = M V diag(lambda_h)`` over the whole space (dense,
 Legendre step costs.  This is a change of coordinates, exact to rounding:
 
 * the membrane operator, bending and gas map each Laplace-Beltrami eigenvalue
-  lambda_h (:class:`~twoball.modal.floor.ball.BallSpectrum`): ``K - s M``,
+  lambda_h (:class:`~twoball.modal.stiffness.Stiffness`): ``K - s M``,
   ``(1 - 2 beta) K + beta K M^-1 K`` (:mod:`twoball.fem_membrane.shell`) and
   ``gas m m^T`` (``m = M 1``) are all diagonal in V, the last on the constant
   vector only;
@@ -37,7 +37,8 @@ from skfem import Basis, MeshLine1, asm
 from twoball.fem_membrane.axisym import LINE_ELEMENTS
 from twoball.fem_membrane.forms import axisym_mass, axisym_stiffness
 from twoball.modal.damping import ModalRatio, Rayleigh
-from twoball.modal.floor.ball import BallSpectrum, ModalBall, mode_decay
+from twoball.modal.floor.ball import ModalBall, mode_decay, mode_spectrum
+from twoball.modal.stiffness import Stiffness
 
 from twoball._common.errors import NumericalError, ParameterError
 
@@ -67,7 +68,7 @@ def axisym_matrices(elements: int, order: int) -> tuple[np.ndarray, np.ndarray, 
 
 
 def axisym_ball(
-    elements: int, order: int, spectrum: BallSpectrum, law: ModalRatio | Rayleigh
+    elements: int, order: int, spectrum: Stiffness, law: ModalRatio | Rayleigh
 ) -> ModalBall:
     """The finite-element ball in its eigenvectors, with the floor at its lower nodes.
 
@@ -77,8 +78,10 @@ def axisym_ball(
         Line elements (>= 2), equally spaced in phi.
     order : {1, 2, 3, 4}
         Lagrange order.
-    spectrum : BallSpectrum
-        Membrane operator, bending, gas: omega_k^2 from each lambda_h.
+    spectrum : Stiffness
+        Membrane operator, bending, gas: omega_k^2 from each lambda_h
+        (:func:`~twoball.modal.floor.ball.mode_spectrum`; the discrete area
+        ``1^T M 1 / 4 pi`` is 1 on the line, so the gas needs no correction).
     law : ModalRatio or Rayleigh
         The damping law (dimensionless, fitted already).
 
@@ -104,7 +107,7 @@ def axisym_ball(
     floor = np.flatnonzero(x < 0.0)
     floor = floor[np.argsort(-x[floor])]  # ascending phi, the south pole last
     top = int(np.argmax(x))
-    w2 = spectrum.omega_squared(laplace)
+    w2, gas2 = mode_spectrum(spectrum, laplace)
     order_x = np.argsort(x)
     sorted_x, sorted_v = x[order_x], V[order_x]
 
@@ -116,7 +119,7 @@ def axisym_ball(
     return ModalBall(
         masses=np.ones(laplace.size),
         omega_squared=w2,
-        gas_squared=spectrum.gas_squared(laplace),
+        gas_squared=gas2,
         decay=mode_decay(law, w2),
         phi=np.arccos(np.clip(x[floor], -1.0, 1.0)),
         shapes=V[floor, :],

@@ -12,7 +12,7 @@ measures; :mod:`~twoball.modal.floor.options`, :mod:`~twoball.modal.floor.model`
 from twoball._common.lazy import attach
 
 _NAMES = {
-    "BallSpectrum": "twoball.modal.floor.ball",
+    "mode_spectrum": "twoball.modal.floor.ball",
     "ModalBall": "twoball.modal.floor.ball",
     "legendre_ball": "twoball.modal.floor.ball",
     "mode_decay": "twoball.modal.floor.ball",

@@ -17,9 +17,10 @@ at the floor points.
 
 The rigid translation is carried by the centre's height Z, so the degree-1
 content of u (``int u cos(phi) dS``, the centre of mass's offset) is left out:
-a translation is carried once.  :class:`BallSpectrum` gives the frequencies of
-the membrane operator, bending and the enclosed gas from the Laplace-Beltrami
-eigenvalue of each mode, and :func:`mode_decay` each mode's damping from the law.
+a translation is carried once.  :func:`mode_spectrum` reads each mode's
+frequency from the ball's :class:`~twoball.modal.stiffness.Stiffness` (membrane
+operator, bending, enclosed gas) by its Laplace-Beltrami eigenvalue, and
+:func:`mode_decay` its damping from the law.
 """
 
 from __future__ import annotations
@@ -36,97 +37,42 @@ from twoball.modal.stiffness import Stiffness
 from twoball._common.errors import NumericalError, ParameterError
 
 __all__ = [
-    "MEMBRANES",
-    "BallSpectrum",
     "ModalBall",
     "floor_angles",
     "legendre_ball",
     "mode_decay",
+    "mode_spectrum",
 ]
 
-#: Membrane operators: ``omega^2 = lambda - s`` on a Laplace-Beltrami eigenvalue lambda.
-MEMBRANES: dict[str, float] = {"paper": 0.0, "pressurised": 2.0}
 #: Laplace-Beltrami eigenvalue below which a mode is the constant one (n = 0).
 CONSTANT_MODE = 1e-6
 
 
-@dataclass(frozen=True)
-class BallSpectrum:
-    """omega^2 of the ball's modes from their Laplace-Beltrami eigenvalues (dimensionless).
+def mode_spectrum(stiffness: Stiffness, laplace: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """omega^2 of modes of Laplace-Beltrami eigenvalues ``laplace``, and the gas's share.
 
-    ``paper`` (eq. (3.1)): ``omega^2 = lambda (1 + beta (lambda - 2))``;
-    ``pressurised`` (the second variation of ``T dA - P dV`` at ``P = 2 T / R``):
-    ``(lambda - 2)(1 + beta lambda)``; on Legendre degree n, ``lambda = n (n + 1)``.
-    The enclosed gas stiffens the constant mode only: ``omega_0^2 = gas - s`` with
-    s = 0 (paper) or 2 (pressurised) (:mod:`twoball.modal.stiffness`).
-
-    Parameters
-    ----------
-    stiffness : Stiffness
-        Bending ratio beta and gas term ``6 kappa P_abs / P``.
-    membrane : {"paper", "pressurised"}
-        The membrane operator.
+    Read from the ball's :class:`~twoball.modal.stiffness.Stiffness` (membrane
+    operator, bending, gas): :meth:`~twoball.modal.stiffness.Stiffness.omega_squared`
+    for the vibrating modes, :attr:`~twoball.modal.stiffness.Stiffness.breathing`
+    (``gas - s``) for the constant one, whose gas share is ``gas``.
     """
-
-    stiffness: Stiffness = field(default_factory=Stiffness)
-    membrane: str = "paper"
-
-    def __post_init__(self) -> None:
-        if self.membrane not in MEMBRANES:
-            raise ParameterError("membrane", "one of " + ", ".join(MEMBRANES), self.membrane)
-        if not isinstance(self.stiffness, Stiffness):
-            raise ParameterError("stiffness", "a Stiffness", type(self.stiffness).__name__)
-
-    @property
-    def shift(self) -> float:
-        """s of ``omega^2 = lambda - s``: 0 (paper) or 2 (pressurised)."""
-        return MEMBRANES[self.membrane]
-
-    @property
-    def breathing(self) -> float:
-        """omega_0^2 of the constant mode: ``gas - s``."""
-        return self.stiffness.gas - self.shift
-
-    def omega_squared(self, laplace: np.ndarray) -> np.ndarray:
-        """omega^2 of modes of Laplace-Beltrami eigenvalues ``laplace`` (the constant one too)."""
-        lam = np.asarray(laplace, dtype=float)
-        beta = self.stiffness.beta
-        if self.shift:
-            out = (lam - self.shift) * (1.0 + beta * lam)
-        else:
-            out = lam * (1.0 + beta * (lam - 2.0))
-        return np.where(np.abs(lam) < CONSTANT_MODE, self.breathing, out)
-
-    def gas_squared(self, laplace: np.ndarray) -> np.ndarray:
-        """The gas's share of omega^2: ``gas`` on the constant mode, 0 elsewhere."""
-        lam = np.asarray(laplace, dtype=float)
-        return np.where(np.abs(lam) < CONSTANT_MODE, self.stiffness.gas, 0.0)
-
-    def as_dict(self) -> dict[str, float | str]:
-        """``membrane``, ``beta`` and omega_0^2 (``omega0_squared``)."""
-        return {
-            "membrane": self.membrane,
-            "beta": self.stiffness.beta,
-            "omega0_squared": self.breathing,
-        }
+    lam = np.asarray(laplace, dtype=float)
+    constant = np.abs(lam) < CONSTANT_MODE
+    w2 = np.where(constant, stiffness.breathing, stiffness.omega_squared(lam))
+    return w2, np.where(constant, stiffness.gas, 0.0)
 
 
 def mode_decay(law: ModalRatio | Rayleigh, omega_squared: np.ndarray) -> np.ndarray:
-    """``d_k = 2 zeta_k omega_k`` of each mode under the damping law (dimensionless).
+    """``d_k = 2 zeta_k omega_k`` of each mode: the law's :meth:`decay` (units c).
 
-    :class:`~twoball.modal.damping.ModalRatio`: ``2 D omega`` (eq. (3.14));
-    :class:`~twoball.modal.damping.Rayleigh`: ``alpha + beta omega^2``, which is
-    ``C = alpha M + beta K`` exactly in the modes of K.  A mode of ``omega^2 <= 0``
-    (a free motion) has ``2 D omega = 0`` under the modal ratio.
+    :class:`~twoball.modal.damping.Rayleigh`'s ``alpha + beta omega^2`` is ``C =
+    alpha M + beta K`` exactly in the modes of K.  A mode of ``omega^2 <= 0`` (a
+    free motion) has ``2 D omega = 0`` under the modal ratio.
     """
+    if not isinstance(law, (ModalRatio, Rayleigh)):
+        raise ParameterError("damping", "a ModalRatio or Rayleigh", law)
     w2 = np.asarray(omega_squared, dtype=float)
-    if isinstance(law, ModalRatio):
-        return 2.0 * law.ratio * np.sqrt(np.clip(w2, 0.0, None))
-    if isinstance(law, Rayleigh):
-        if law.fitted:
-            raise ParameterError("damping", "a Rayleigh law with alpha and beta here", law)
-        return law.alpha + law.beta * w2
-    raise ParameterError("damping", "a ModalRatio or Rayleigh", law)
+    return np.asarray(law.decay(np.sqrt(np.clip(w2, 0.0, None))), dtype=float)
 
 
 @dataclass(frozen=True, eq=False)
@@ -239,7 +185,7 @@ def floor_angles(modes: int) -> np.ndarray:
 
 def legendre_ball(
     modes: int,
-    spectrum: BallSpectrum,
+    spectrum: Stiffness,
     law: ModalRatio | Rayleigh,
     *,
     anchored: bool = False,
@@ -250,7 +196,7 @@ def legendre_ball(
     ----------
     modes : int
         Highest degree N >= 2.
-    spectrum : BallSpectrum
+    spectrum : Stiffness
         Membrane operator, bending and gas: ``omega_n^2`` from ``lambda = n (n + 1)``.
     law : ModalRatio or Rayleigh
         The damping law (dimensionless; a fitted Rayleigh law must be fitted already).
@@ -263,13 +209,13 @@ def legendre_ball(
         raise ParameterError("modes", "an integer >= 2", modes)
     n = np.arange(modes + 1) if anchored else np.concatenate([[0], np.arange(2, modes + 1)])
     laplace = n * (n + 1.0)
-    w2 = spectrum.omega_squared(laplace)
+    w2, gas2 = mode_spectrum(spectrum, laplace)
     phi = floor_angles(modes)
     shapes = legvander(np.cos(phi), modes)[:, n]
     return ModalBall(
         masses=1.0 / (2.0 * n + 1.0),
         omega_squared=w2,
-        gas_squared=spectrum.gas_squared(laplace),
+        gas_squared=gas2,
         decay=mode_decay(law, w2),
         phi=phi,
         shapes=shapes,

@@ -8,13 +8,14 @@ studies (:mod:`twoball.verify.studies.floor`) both start here.
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from typing import Any
 
-from twoball.modal.damping import RAYLEIGH_LOW, ModalRatio, Rayleigh
-from twoball.modal.floor.ball import BallSpectrum
+from twoball.modal.damping import ModalRatio, Rayleigh
 from twoball.modal.floor.options import Drop
+from twoball.modal.membrane import Membrane
 from twoball.modal.parameters import Case
+from twoball.modal.stiffness import Stiffness
 
 from twoball._common.errors import ParameterError
 
@@ -28,17 +29,19 @@ class DropModel:
     Attributes
     ----------
     case : Case
-        The ball at the drop's impact speed ``|v0|`` (SI).
+        The ball as it drops (SI): the impact speed ``|v0|``, the excess
+        pressure, the gas and the membrane operator in use.
     drop : Drop
         The options as given.
     pressure : float
         Excess pressure P [Pa] (the case's, else its preset's measured one).
     gas : str
         The gas law used.
-    spectrum : BallSpectrum
-        Membrane operator, bending and gas (dimensionless).
+    spectrum : Stiffness
+        Membrane operator, bending and gas (dimensionless): ``case.stiffness``.
     law : ModalRatio or Rayleigh
-        The damping law in units of c (a fitted Rayleigh law fitted).
+        The damping law in units of c: ``case.damping_law`` (a fitted Rayleigh
+        law fitted at :meth:`~twoball.modal.stiffness.Stiffness.fit_band`).
     notes, warnings : tuple of str
     """
 
@@ -46,7 +49,7 @@ class DropModel:
     drop: Drop
     pressure: float
     gas: str
-    spectrum: BallSpectrum
+    spectrum: Stiffness
     law: ModalRatio | Rayleigh
     notes: tuple[str, ...] = ()
     warnings: tuple[str, ...] = ()
@@ -70,6 +73,13 @@ class DropModel:
 def resolve_drop(case: Case, drop: Drop, damping: Any = None) -> DropModel:
     """The drop of ``case`` with ``drop``'s options and the damping law ``damping``.
 
+    The case as it drops: the drop's impact speed, the excess pressure (the
+    case's, else its preset's measured one), the gas (the drop's, else the
+    case's, else adiabatic), the membrane operator (the drop's, else the
+    case's) and the damping law (``damping``, else the case's).  Its
+    :attr:`~twoball.Case.stiffness` and :attr:`~twoball.Case.damping_law` are
+    the spectrum and the law the solvers take.
+
     Raises
     ------
     ParameterError
@@ -80,9 +90,34 @@ def resolve_drop(case: Case, drop: Drop, damping: Any = None) -> DropModel:
     warnings: list[str] = []
     case = _impact(case, drop)
     pressure = _pressure(case, notes)
-    spectrum, gas = _spectrum(case, drop, pressure, warnings)
+    gas = drop.gas or (case.gas if case.gas != "none" else "adiabatic")
+    membrane = case.membrane if drop.membrane is None else Membrane.of(drop.membrane)
+    law = _law(damping)
+    ball = replace(
+        case,
+        pressure=pressure,
+        gas=gas,
+        membrane=membrane,
+        rayleigh=law if isinstance(law, Rayleigh) else case.rayleigh,
+        damping=law.ratio if isinstance(law, ModalRatio) else case.damping,
+        phi_a=None,
+        phi_a_source=None,
+    )
+    if gas == "none":
+        warnings.append(
+            "no gas on the paper's membrane: the breathing mode has omega_0 = 0, so the "
+            "floor's push shrinks the mean radius for good and the ball hardly bounces "
+            "(use the gas: isothermal or adiabatic)"
+        )
     return DropModel(
-        case, drop, pressure, gas, spectrum, _law(case, damping), tuple(notes), tuple(warnings)
+        ball,
+        drop,
+        pressure,
+        gas,
+        ball.stiffness,
+        ball.damping_law,
+        tuple(notes),
+        tuple(warnings),
     )
 
 
@@ -123,43 +158,8 @@ def _pressure(case: Case, notes: list[str]) -> float:
     return float(measured.pressure)
 
 
-def _spectrum(
-    case: Case, drop: Drop, pressure: float, warnings: list[str]
-) -> tuple[BallSpectrum, str]:
-    """The ball's spectrum (membrane operator, bending, gas) and the gas law used."""
-    from twoball.modal.stiffness import stiffness_from_si
-
-    gas = drop.gas or (case.gas if case.gas != "none" else "adiabatic")
-    if drop.membrane == "pressurised" and gas == "none":
-        raise ParameterError(
-            "gas",
-            "isothermal or adiabatic with the pressurised membrane (without gas its breathing "
-            "mode has omega_0^2 = -2: unstable)",
-            gas,
-        )
-    stiffness = stiffness_from_si(
-        radius=case.radius,
-        pressure=pressure,
-        bending=case.bending,
-        gas=gas,
-        atmosphere=case.atmosphere,
-    )
-    if gas == "none":
-        warnings.append(
-            "no gas on the paper's membrane: the breathing mode has omega_0 = 0, so the "
-            "floor's push shrinks the mean radius for good and the ball hardly bounces "
-            "(use the gas: isothermal or adiabatic)"
-        )
-    return BallSpectrum(stiffness, drop.membrane), gas
-
-
-def _law(case: Case, damping: Any) -> ModalRatio | Rayleigh:
-    """The damping law in units of c (``Rayleigh()`` fitted to D at sqrt(2) and omega_N)."""
-    if damping is None:
-        return ModalRatio(case.damping)
-    if isinstance(damping, Rayleigh) and damping.fitted:
-        high = math.sqrt(case.modes * (case.modes + 1.0))
-        return Rayleigh.fit(case.damping, RAYLEIGH_LOW, high)
-    if not isinstance(damping, (ModalRatio, Rayleigh)):
-        raise ParameterError("damping", "a twoball.ModalRatio or twoball.Rayleigh", damping)
-    return damping
+def _law(damping: Any) -> ModalRatio | Rayleigh | None:
+    """The damping law as given (None: the case's own)."""
+    if damping is None or isinstance(damping, (ModalRatio, Rayleigh)):
+        return damping
+    raise ParameterError("damping", "a twoball.ModalRatio or twoball.Rayleigh", damping)

@@ -12,14 +12,13 @@ from typing import Any
 
 from twoball._common.errors import ParameterError, real_number
 
-__all__ = ["DEFAULT_MODES", "GAS_LAWS", "MEMBRANE_KINDS", "Drop"]
+__all__ = ["DEFAULT_MODES", "GAS_LAWS", "Drop"]
 
 #: Legendre degree N of the drop on the closed-form modes (floor points at its ~N/2
 #: Gauss-Radau nodes on the lower hemisphere).
 DEFAULT_MODES = 192
 MODES_RANGE = (8, 2000)
 GAS_LAWS: tuple[str, ...] = ("none", "isothermal", "adiabatic")
-MEMBRANE_KINDS: tuple[str, ...] = ("paper", "pressurised")
 
 
 @dataclass(frozen=True)
@@ -43,9 +42,10 @@ class Drop:
         Legendre degree N of the closed-form backend (default
         :data:`DEFAULT_MODES`; the floor points are its Gauss-Radau nodes on the
         lower hemisphere, about N/2); the finite elements take their mesh instead.
-    membrane : {"paper", "pressurised"}
-        The membrane operator: the paper's ``n (n + 1)`` or the one consistent
-        with the pressure, ``(n - 1)(n + 2)`` (needs a gas).
+    membrane : Membrane or {"paper", "pressurised"}, optional
+        The membrane operator of the drop (:class:`~twoball.Membrane`); default
+        the case's.  Given here, the pressurised operator can be asked of a
+        case that has no gas yet (the drop supplies it).
 
     Examples
     --------
@@ -62,14 +62,13 @@ class Drop:
     gas: str | None = None
     floor_restitution: float = 0.0
     modes: int | None = None
-    membrane: str = "paper"
+    membrane: Any = None
 
     VALID = {  # noqa: RUF012 -- a class constant, not a field
         "drop_height": "a height > 0 [m] of the lowest point above the floor",
         "gas": "one of " + ", ".join(GAS_LAWS),
         "floor_restitution": "in [0, 1]",
         "modes": f"an integer in [{MODES_RANGE[0]}, {MODES_RANGE[1]}]",
-        "membrane": "one of " + ", ".join(MEMBRANE_KINDS),
     }
 
     def __post_init__(self) -> None:
@@ -94,9 +93,13 @@ class Drop:
             ):
                 raise ParameterError("modes", self.VALID["modes"], self.modes)
             object.__setattr__(self, "modes", int(self.modes))
-        if self.membrane not in MEMBRANE_KINDS:
-            raise ParameterError("membrane", self.VALID["membrane"], self.membrane)
+        if self.membrane is not None:
+            from twoball.modal.membrane import Membrane
+
+            object.__setattr__(self, "membrane", Membrane.of(self.membrane))
 
     def as_dict(self) -> dict[str, Any]:
         """The fields as given (None: the default), for JSON and provenance."""
-        return asdict(self)
+        out = asdict(self)
+        out["membrane"] = None if self.membrane is None else self.membrane.kind
+        return out

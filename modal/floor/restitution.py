@@ -29,10 +29,11 @@ from dataclasses import dataclass
 import numpy as np
 from twoball.modal.damping import ModalRatio, Rayleigh
 from twoball.modal.filters import FilterKind, SpectralFilter, legendre_frequency
-from twoball.modal.floor.ball import BallSpectrum, legendre_ball
+from twoball.modal.floor.ball import legendre_ball
 from twoball.modal.legendre import legendre_coefficients
 from twoball.modal.liftoff import DEFAULT_T_END, LiftoffResult, SampledPoleMotion, find_liftoff
 from twoball.modal.nonsmooth import ContactProblem, MoreauJean
+from twoball.modal.stiffness import Stiffness
 
 __all__ = ["RestitutionRun", "restitution_only"]
 
@@ -54,7 +55,7 @@ class RestitutionRun:
 
 
 def restitution_only(
-    spectrum: BallSpectrum,
+    spectrum: Stiffness,
     law: ModalRatio | Rayleigh,
     modes: int,
     phi_a: float,

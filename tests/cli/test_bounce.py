@@ -99,7 +99,10 @@ def test_sweep_of_the_drop_and_figures(capsys, tmp_path):
     ("argv", "flag"),
     [
         (["sweep", "--param", "drop-height", "--values", "1,2"], "--param"),
-        (["sweep", "--param", "v0", "--values", "1,2", "--membrane", "paper"], "--membrane"),
+        (
+            ["sweep", "--param", "v0", "--values", "1,2", "--floor-restitution", "1"],
+            "--floor-restitution",
+        ),
         (["sweep", "--bounce", "--param", "damping", "--values", "0.1"], "--param"),
         (["bounce", "--plot", "drop.bogus"], "--plot"),
     ],

@@ -16,7 +16,7 @@ import scipy.linalg as sla
 import scipy.sparse as sp
 from twoball.fem_membrane.floor import axisym_ball, axisym_matrices
 from twoball.modal.damping import ModalRatio, Rayleigh
-from twoball.modal.floor.ball import BallSpectrum, legendre_ball
+from twoball.modal.floor.ball import legendre_ball
 from twoball.modal.floor.drop import DropSettings, run_drop
 from twoball.modal.floor.measure import contact_intervals
 from twoball.modal.floor.settle import settle
@@ -28,7 +28,7 @@ from twoball.verify.studies.orders import OrderBand
 V0 = 4.1 / (0.12 * 320.0)
 GAMMA = 9.81 / (0.12 * 320.0**2)
 GAS = 6.0 * 1.4 * (77.2e3 + 101325.0) / 77.2e3
-PRESSURISED = BallSpectrum(Stiffness(gas=GAS), "pressurised")
+PRESSURISED = Stiffness(gas=GAS, membrane="pressurised")
 
 
 MODAL = ModalRatio(0.13)
@@ -41,7 +41,7 @@ def _fe_drop(elements, law=MODAL, dt=0.02, order=2):
 
 def test_eigenvalues_and_the_degree_one_vector():
     """lambda_h -> l (l + 1) at order 2p; the degree-1 vector x is left out exactly."""
-    paper = BallSpectrum(Stiffness(), "paper")
+    paper = Stiffness()
     exact = np.array([0, 6, 12, 20, 30, 42])
     errors = []
     for elements in (20, 40):

@@ -15,7 +15,7 @@ import numpy as np
 import pytest
 from numpy.polynomial.legendre import legval
 from twoball.modal.damping import ModalRatio, Rayleigh
-from twoball.modal.floor.ball import BallSpectrum, legendre_ball, mode_decay
+from twoball.modal.floor.ball import legendre_ball, mode_decay, mode_spectrum
 from twoball.modal.floor.drop import DropSettings, run_drop
 from twoball.modal.floor.measure import (
     contact_edge,
@@ -34,8 +34,8 @@ from twoball.verify.studies.orders import OrderBand
 V0 = 4.1 / (0.12 * 320.0)  # the basketball at 4.1 m/s, units R c
 GAMMA = 9.81 / (0.12 * 320.0**2)
 GAS = 6.0 * 1.4 * (77.2e3 + 101325.0) / 77.2e3  # adiabatic, 6 kappa P_abs / P
-PRESSURISED = BallSpectrum(Stiffness(gas=GAS), "pressurised")
-PAPER_GAS = BallSpectrum(Stiffness(gas=GAS), "paper")
+PRESSURISED = Stiffness(gas=GAS, membrane="pressurised")
+PAPER_GAS = Stiffness(gas=GAS, membrane="paper")
 
 
 MODAL = ModalRatio(0.13)
@@ -50,15 +50,15 @@ def _drop(modes=20, spectrum=PRESSURISED, law=MODAL, dt=0.02, e=0.0, t_end=30.0)
 
 
 def test_spectrum_of_both_operators_bending_and_gas():
+    """The drop reads the ball's Stiffness: (n - 1)(n + 2) or n (n + 1), bending, gas."""
     n = np.arange(6)
     lam = n * (n + 1.0)
-    paper = BallSpectrum(Stiffness(beta=0.1, gas=5.0), "paper").omega_squared(lam)
-    assert paper[0] == 5.0  # the gas alone holds the breathing mode
+    stiff = Stiffness(beta=0.1, gas=5.0)
+    paper, share = mode_spectrum(stiff, lam)
+    assert paper[0] == 5.0 and share.tolist() == [5.0, 0, 0, 0, 0, 0]
     np.testing.assert_allclose(paper[1:], (lam * (1 + 0.1 * (lam - 2)))[1:], rtol=1e-15)
-    np.testing.assert_allclose(  # the paper's own Stiffness gives the same frequencies
-        paper, Stiffness(beta=0.1, gas=5.0).legendre_omega(n) ** 2, rtol=1e-14
-    )
-    pressed = BallSpectrum(Stiffness(gas=5.0), "pressurised").omega_squared(lam)
+    np.testing.assert_allclose(paper, stiff.legendre_omega(n) ** 2, rtol=1e-14)
+    pressed, _ = mode_spectrum(Stiffness(gas=5.0, membrane="pressurised"), lam)
     np.testing.assert_array_equal(pressed, [3.0, 0.0, 4.0, 10.0, 18.0, 28.0])  # (n-1)(n+2)
 
 
@@ -158,7 +158,7 @@ def test_no_contact_after_the_stop():
 
 def test_paper_operator_without_gas_does_not_bounce():
     """omega_0 = 0: the floor's push shrinks the ball for good (the run ends at the window)."""
-    paper = BallSpectrum(Stiffness(), "paper")
+    paper = Stiffness()
     r = _drop(spectrum=paper, t_end=20.0)
     assert not r.left and r.stop == "window" and r.e2 is None
     assert r.energy["vibration"] > 0.5 * 0.5 * V0**2
@@ -242,7 +242,7 @@ def test_restitution_only_reproduces_the_closed_form_lift_off():
 
     case = twoball.Case.preset("basketball")
     exact = twoball.liftoff(case).result
-    paper = BallSpectrum(Stiffness(), "paper")
+    paper = Stiffness()
     errors = []
     for dt in (0.01, 0.005):
         run = restitution_only(paper, ModalRatio(0.13), 30, case.phi_a, case.gamma, dt).result

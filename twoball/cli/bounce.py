@@ -47,12 +47,6 @@ def add_drop_options(parser: argparse.ArgumentParser) -> None:
         "eq. (2.1) (instead of --v0)",
     )
     group.add_argument(
-        "--membrane",
-        metavar="KIND",
-        help="membrane operator: paper (n(n+1), default) or pressurised ((n-1)(n+2), "
-        "consistent with T = P R / 2; needs a gas)",
-    )
-    group.add_argument(
         "--floor-restitution",
         type=numeric,
         metavar="E",
@@ -74,7 +68,12 @@ def add_drop_options(parser: argparse.ArgumentParser) -> None:
 
 
 def drop_case(args: argparse.Namespace) -> twoball.Case:
-    """The case of the options; ``--gas`` and ``--modes`` go to the drop instead."""
+    """The case of the options; ``--gas``, ``--membrane`` and ``--modes`` go to the drop.
+
+    The drop supplies the gas (adiabatic by default) and the pressure (the
+    preset's), which the case alone would need before it took the pressurised
+    membrane; ``--modes`` is the drop's Legendre degree, not the case's filter.
+    """
     if args.drop_height is not None and args.v0 is not None:
         raise ParameterError("drop_height", "given alone, not with --v0", args.drop_height)
     for name, default in (("sigma", "lanczos"), ("recontact", "window")):
@@ -83,6 +82,7 @@ def drop_case(args: argparse.Namespace) -> twoball.Case:
     case_args = copy(args)
     case_args.gas = None
     case_args.modes = None
+    case_args.membrane = None
     return case_from_options(case_args)
 
 

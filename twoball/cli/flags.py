@@ -99,7 +99,6 @@ FLAGS: dict[str, str] = {
     "dx": "--dx",
     "drop_height": "--drop-height",
     # the drop on the floor
-    "membrane": "--membrane",
     "floor_restitution": "--floor-restitution",
 }
 

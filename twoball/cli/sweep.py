@@ -71,12 +71,9 @@ def run(args: argparse.Namespace) -> int:
 
     if args.bounce:
         return _run_bounce(args)
-    for name, given in (
-        ("membrane", args.membrane),
-        ("floor_restitution", args.floor_restitution),
-    ):
-        if given is not None:
-            raise ParameterError(name, "left out without --bounce (a sweep of the drop)", given)
+    if args.floor_restitution is not None:
+        valid = "left out without --bounce (a sweep of the drop)"
+        raise ParameterError("floor_restitution", valid, args.floor_restitution)
     if "drop-height" in args.param:
         valid = "a parameter of the lift-off (drop-height needs --bounce, a sweep of the drop)"
         raise ParameterError("param", valid, "drop-height")
@@ -231,9 +228,6 @@ def register(parser: argparse.ArgumentParser) -> None:
         action="store_true",
         help="sweep the drop of the lower ball on the floor (twoball bounce) instead of the "
         "lift-off",
-    )
-    parser.add_argument(
-        "--membrane", metavar="KIND", help="--bounce: membrane operator, paper or pressurised"
     )
     parser.add_argument(
         "--floor-restitution",

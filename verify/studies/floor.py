@@ -18,7 +18,7 @@ from dataclasses import dataclass
 import numpy as np
 from twoball.fem_membrane.floor import axisym_ball
 from twoball.modal.damping import ModalRatio, Rayleigh
-from twoball.modal.floor.ball import BallSpectrum, legendre_ball
+from twoball.modal.floor.ball import legendre_ball
 from twoball.modal.floor.drop import DropResult, DropSettings, run_drop
 from twoball.modal.floor.model import DropModel, resolve_drop
 from twoball.modal.floor.options import Drop
@@ -288,7 +288,7 @@ def special_case_table(steps: Sequence[float] = (0.02, 0.01, 0.005, 0.0025)) -> 
 
     case = Case.preset("basketball")
     exact = legendre_liftoff(case).result
-    paper = BallSpectrum(Stiffness(), "paper")
+    paper = Stiffness()
     lines = [
         f"closed form (Lanczos, N = 30): t_l = {exact.t:.7f}, v_l = {exact.velocity:.7f}",
         "",
