@@ -73,8 +73,8 @@ def bounce(
         none) sets the mass ``m2 = 2 pi R P / c^2`` and the gas.
     drop : Drop, optional
         Drop height, gas, floor restitution, Legendre degree N, membrane
-        operator (:class:`~twoball.Drop`; default: the case's ``|v0|``, the
-        adiabatic gas, e = 0, N = 192, the paper's operator).
+        operator (:class:`~twoball.Drop`; default: the case's ``|v0|``, its gas
+        or else the adiabatic gas, e = 0, N = 192, the case's operator).
     backend : {"legendre", "fem"}
         Legendre modes (floor points at the Gauss-Radau nodes) or axisymmetric
         finite elements (floor points at the nodes).
@@ -84,9 +84,10 @@ def bounce(
         ``dt`` [s] (default 0.005 / c) with ``scheme="moreau-jean"`` (the only
         scheme of the drop), and the window ``t_end`` [s] (default 10 pi / c).
     damping : ModalRatio or Rayleigh, optional
-        The damping law (default the case's ratio D on every mode, eq. (3.14));
-        ``Rayleigh()`` is fitted to D at sqrt(2) and sqrt(N (N + 1)), N the
-        case's modes.
+        The damping law (default the case's own: its ratio D on every mode, eq.
+        (3.14), or its ``rayleigh``); ``Rayleigh()`` is fitted to D as
+        :attr:`twoball.Case.damping_law` fits it; Rayleigh's alpha [1/s] and
+        beta [s] are SI.
 
     Returns
     -------
