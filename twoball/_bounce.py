@@ -74,7 +74,7 @@ def bounce(
     drop : Drop, optional
         Drop height, gas, floor restitution, Legendre degree N, membrane
         operator (:class:`~twoball.Drop`; default: the case's ``|v0|``, its gas
-        or else the adiabatic gas, e = 0, N = 192, the case's operator).
+        or else the adiabatic gas, e = 0, N = 192, the pressurised operator).
     backend : {"legendre", "fem"}
         Legendre modes (floor points at the Gauss-Radau nodes) or axisymmetric
         finite elements (floor points at the nodes).
@@ -101,7 +101,7 @@ def bounce(
     >>> import twoball
     >>> report = twoball.bounce(drop=twoball.Drop(modes=16))
     >>> round(report.contact_time_s * 1e3, 1), round(report.e2, 2)
-    (14.6, 0.88)
+    (16.3, 0.87)
     >>> weight = report.mass_kg * 9.81 * report.contact_time_s  # the impulse balance
     >>> change = report.mass_kg * (report.v2_m_s + 4.1)
     >>> abs(report.floor_impulse_N_s - change - weight) < 1e-12
@@ -126,6 +126,7 @@ def bounce(
         raise ParameterError("backend", "one of " + ", ".join(BACKENDS), backend)
     from twoball.modal.floor.model import resolve_drop
 
+    given_phi_a = case.phi_a if case.phi_a_source == "given" else None
     model_in = resolve_drop(case, drop, given.damping)
     case, spectrum, law = model_in.case, model_in.spectrum, model_in.law
     warnings = list(model_in.warnings)
@@ -153,8 +154,14 @@ def bounce(
     }
     from twoball._common.provenance import block
 
+    notes = model_in.notes
+    if given_phi_a is not None:
+        notes += (
+            f"the case's phi_a = {given_phi_a:g} rad is not used: the drop computes "
+            "the contact angle (phi_a_max_rad)",
+        )
     report = BounceReport(
-        case, drop, result, backend, model, model_in.pressure, tuple(warnings), model_in.notes
+        case, drop, result, backend, model, model_in.pressure, tuple(warnings), notes
     )
     arguments = {"drop": drop.as_dict(), "backend": backend, **given.as_dict()}
     return replace(report, provenance=block(case, "twoball.bounce", arguments))
@@ -566,7 +573,7 @@ class BounceSweep:
     >>> import twoball
     >>> result = twoball.sweep({"v0": [2.0, 4.1]}, drop=twoball.Drop(modes=32))
     >>> [round(r.flattening_max_m * 1e3, 1) for r in result.reports]
-    [11.0, 18.7]
+    [12.0, 20.5]
     """
 
     parameter: str

@@ -76,7 +76,8 @@ def resolve_drop(case: Case, drop: Drop, damping: Any = None) -> DropModel:
     The case as it drops: the drop's impact speed, the excess pressure (the
     case's, else its preset's measured one), the gas (the drop's, else the
     case's, else adiabatic), the membrane operator (the drop's, else the
-    case's) and the damping law (``damping``, else the case's).  Its
+    pressurised one: with the centre free, degree 1 must be a free translation)
+    and the damping law (``damping``, else the case's).  Its
     :attr:`~twoball.Case.stiffness` and :attr:`~twoball.Case.damping_law` are
     the spectrum and the law the solvers take.
 
@@ -91,7 +92,8 @@ def resolve_drop(case: Case, drop: Drop, damping: Any = None) -> DropModel:
     case = _impact(case, drop)
     pressure = _pressure(case, notes)
     gas = drop.gas or (case.gas if case.gas != "none" else "adiabatic")
-    membrane = case.membrane if drop.membrane is None else Membrane.of(drop.membrane)
+    # a free centre needs the operator whose degree 1 is a free translation
+    membrane = Membrane("pressurised") if drop.membrane is None else Membrane.of(drop.membrane)
     law = _law(damping)
     ball = replace(
         case,

@@ -44,8 +44,11 @@ class Drop:
         lower hemisphere, about N/2); the finite elements take their mesh instead.
     membrane : Membrane or {"paper", "pressurised"}, optional
         The membrane operator of the drop (:class:`~twoball.Membrane`); default
-        the case's.  Given here, the pressurised operator can be asked of a
-        case that has no gas yet (the drop supplies it).
+        ``pressurised``, the operator whose degree 1 is a free translation, as
+        the drop's free centre needs (the case's own ``membrane`` field is the
+        operator of the lift-off verbs).  ``paper`` takes the paper's n(n + 1)
+        for degrees n != 1 (its spring on degree 1 has nothing to act on: the
+        translation is the centre's).
 
     Examples
     --------

@@ -74,7 +74,7 @@ def test_restitution_one_keeps_the_mechanical_energy():
 
 
 def test_paper_membrane_without_gas_is_warned_pressurised_refused():
-    report = twoball.bounce(drop=twoball.Drop(modes=16, gas="none"))
+    report = twoball.bounce(drop=twoball.Drop(modes=16, gas="none", membrane="paper"))
     assert any("omega_0 = 0" in w for w in report.warnings)
     with pytest.raises(twoball.ParameterError, match="^gas must be isothermal or adiabatic"):
         twoball.bounce(drop=twoball.Drop(gas="none", membrane="pressurised"))

@@ -67,6 +67,22 @@ def add_drop_options(parser: argparse.ArgumentParser) -> None:
     mesh.add_argument("--order", type=integer, help="element order 1, 2, 3 or 4 (default 2)")
 
 
+#: Help of shared case options where the drop reads them differently.
+DROP_HELP = {
+    "--modes": "Legendre degree N of the drop (default 192; floor points at its Gauss-Radau "
+    "nodes on the lower hemisphere)",
+    "--membrane": "membrane operator: pressurised ((n-1)(n+2), default: degree 1 a free "
+    "translation) or paper (n(n+1) for n != 1)",
+    "--phi-a": "refused: the contact angle is an output of the drop (phi_a_max_rad)",
+    "--sigma": "refused: no spectral filter (the drop's modes are not filtered)",
+    "--recontact": "refused: no lift-off criteria in a drop",
+}
+
+
+def _action(parser: argparse.ArgumentParser, flag: str) -> argparse.Action:
+    return next(a for a in parser._actions if flag in a.option_strings)
+
+
 def drop_case(args: argparse.Namespace) -> twoball.Case:
     """The case of the options; ``--gas``, ``--membrane`` and ``--modes`` go to the drop.
 
@@ -74,6 +90,10 @@ def drop_case(args: argparse.Namespace) -> twoball.Case:
     preset's), which the case alone would need before it took the pressurised
     membrane; ``--modes`` is the drop's Legendre degree, not the case's filter.
     """
+    if args.phi_a is not None:
+        raise ParameterError(
+            "phi_a", "left out for the drop (the contact angle is its output)", args.phi_a
+        )
     if args.drop_height is not None and args.v0 is not None:
         raise ParameterError("drop_height", "given alone, not with --v0", args.drop_height)
     for name, default in (("sigma", "lanczos"), ("recontact", "window")):
@@ -201,6 +221,8 @@ def register(parser: argparse.ArgumentParser) -> None:
     )
     add_case_options(parser)
     add_drop_options(parser)
+    for flag, text in DROP_HELP.items():  # the shared case options, as the drop reads them
+        _action(parser, flag).help = text
     parser.add_argument(
         "--plot",
         metavar="FILE",
