@@ -71,7 +71,7 @@ def main() -> None:
             f"legendre_liftoff(preset('basketball').derive(modes={modes}))\n"
         )
         estimate = budget.series_estimate(modes, 4 * math.pi) + budget.reference_estimate(
-            4 * math.pi
+            4 * math.pi, modes
         )
         rows.append((f"series N = {modes}", estimate, *measure(code)))
     for level, order in [(3, 2)] if quick else [(4, 1), (3, 2)]:
