@@ -32,6 +32,27 @@ Re-contact window (§3(a)(ii))
     warning.  Basketball default: 29.4 ms after t_l > 19.6 ms, apex at 390 ms:
     quiet; ``--t-end 0.005``: lift-off at 0.48 ms, 4.5 ms of window < 19.6 ms and
     the apex (1.1 ms) passed: warned.
+
+Inputs far from any ball (unit and sign slips)
+    SI is read as typed; a value far outside any ball is most likely a unit
+    slip, and it is said, with the value probably meant.  R outside
+    :data:`BALL_RADIUS` (2 mm to 2 m: a bead to a push ball): ``--radius 120``
+    (meant mm) is a 120 m ball, warned "did you mean 0.12 m (120 mm)?".  ``|v0|``
+    above :data:`IMPACT_SPEED` (100 m/s, beyond the fastest ball sports).  A window
+    in which nothing could lift off: longer than the flight ``2 |v0| / g`` of a
+    body leaving at the impact speed, with the whole window as the re-contact
+    horizon, every lift-off falls back inside it and is rejected (``--t-end 5``,
+    meant ms: 0.84 s of flight for the basketball; "did you mean 5 ms?"); shorter
+    than ``pi / c``, near which the membrane's wave lifts the body, nothing lifted
+    off yet (``--t-end 0.001``: 1 ms < 9.8 ms).  These two only when nothing lifted
+    off -- except that on a membrane the pole stays still until the wave front
+    from the contact edge arrives (unit wave speed, eq. (3.9)) at ``phi_a / c``,
+    so a lift-off in a window shorter than that (8.1 ms for the basketball) is
+    said to be a truncation artefact.  A negative v0 is the paper's signed
+    velocity (Fig. 6: v0 = -4.1 m/s, downwards): it is accepted as the impact
+    speed ``|v0|`` with a note (:attr:`twoball.modal.parameters.Case.v0_note`),
+    since only ``v0^2`` enters eq. (3.6)-(3.7) and an upward velocity would be no
+    impact at all.
 """
 
 from __future__ import annotations
@@ -44,6 +65,8 @@ from twoball.modal.liftoff import LiftoffResult
 from twoball.modal.parameters import Case
 
 TRUNCATION_WARNING = 0.05  # relative difference of t_l or v_l from the converged series
+BALL_RADIUS = (2e-3, 2.0)  # m: a 4 mm bead to a 4 m push ball
+IMPACT_SPEED = 100.0  # m/s: above the fastest ball sports (golf, jai alai ~80 m/s)
 REFOCUS_PERIOD = 2.0 * math.pi  # dimensionless: the wave is back at the pole after 2 pi / c
 
 
@@ -233,6 +256,73 @@ def window_warnings(case: Case, result: LiftoffResult) -> list[str]:
             "re-contact lies beyond the window t_end and was not checked"
         )
     return warnings
+
+
+def _inside(value: float, bounds: tuple[float, float]) -> bool:
+    return bounds[0] <= value <= bounds[1]
+
+
+def case_warnings(case: Case) -> list[str]:
+    """R or ``|v0|`` far outside any ball, with the value probably meant (module docstring)."""
+    warnings = []
+    radius = case.radius
+    if not _inside(radius, BALL_RADIUS):
+        size = "larger" if radius > BALL_RADIUS[1] else "smaller"
+        meant = [
+            f"{radius * factor:g} m ({radius:g} {unit})"
+            for factor, unit in ((1e-3, "mm"), (1e-2, "cm"))
+            if _inside(radius * factor, BALL_RADIUS)
+        ]
+        guess = f"; did you mean {' or '.join(meant)}?" if meant else ""
+        warnings.append(
+            f"R = {radius:g} m is far {size} than any ball ({BALL_RADIUS[0]:g} to "
+            f"{BALL_RADIUS[1]:g} m; lengths are in metres){guess}"
+        )
+    if case.v0 > IMPACT_SPEED:
+        meant = case.v0 * 1e-3
+        warnings.append(
+            f"|v0| = {case.v0:g} m/s is far faster than any ball's impact (up to "
+            f"{IMPACT_SPEED:g} m/s; speeds are in m/s); did you mean {meant:g} m/s "
+            f"({case.v0:g} mm/s)?"
+        )
+    return warnings
+
+
+def span_warnings(case: Case, result: LiftoffResult) -> list[str]:
+    """A window in which nothing could lift off: longer than the flight, or shorter than
+    the wave's transit to the pole (module docstring)."""
+    scale = case.scalings
+    t_end = result.t_end * scale.time  # [s]
+    flight = 2.0 * case.v0 / case.g  # [s]: a body leaving at |v0| is back after this
+    transit = math.pi * scale.time  # [s]: pi / c, the membrane's lift-off ~ there
+    front = case.phi_a * scale.time  # [s]: the membrane's wave front reaches the pole
+    if not result.lifted and result.horizon == "window" and t_end >= flight:
+        return [
+            f"the window t_end = {t_end:g} s is {t_end * case.wave_speed:.3g} / c "
+            f"({t_end / (2 * math.pi * scale.time):.3g} wave periods 2 pi / c): a body lifted "
+            f"at up to |v0| = {case.v0:g} m/s falls back onto the ball within it "
+            f"(2 |v0| / g = {flight:.3g} s), so every lift-off is rejected as a re-contact; "
+            f"did you mean {t_end:g} ms (t_end = {t_end * 1e-3:g} s)?"
+        ]
+    membrane = not case.stiff
+    early = membrane and t_end < front  # the pole has not moved yet (unit wave speed)
+    if not (early or (not result.lifted and t_end < transit)):
+        return []
+    why = (
+        f"the wave front from the contact edge arrives at phi_a / c = {front * 1e3:.3g} ms"
+        if membrane
+        else "sooner with bending or gas"
+    )
+    consequence = (
+        "a lift-off found in it is an artefact of the truncation"
+        if result.lifted
+        else "nothing can lift off in it"
+    )
+    return [
+        f"the window ends at {t_end * 1e3:.3g} ms, before the wave reaches the pole "
+        f"(~pi / c = {transit * 1e3:.3g} ms; {why}): {consequence}; lengthen the window "
+        f"t_end (default 4 pi / c = {4 * transit * 1e3:.3g} ms)"
+    ]
 
 
 def liftoff_guards(

@@ -66,9 +66,9 @@ class LiftoffReport:
     @property
     def notes(self) -> list[str]:
         """Remarks the reader must see (the CLI prints them on standard error): how
-        phi_a was chosen, when eq. (3.7) departs from a preset's measured angle."""
-        note = self.case.phi_a_note
-        return [note] if note else []
+        phi_a was chosen, when eq. (3.7) departs from a preset's measured angle, and
+        how a negative v0 was read (:attr:`Case.notes`)."""
+        return self.case.notes
 
     @property
     def lifted(self) -> bool:
@@ -191,8 +191,9 @@ def report_liftoff(
         motion, case.gamma, t_end=t_end_dimensionless(case, t_end_s), horizon=recontact
     )
     extra, notes = dict(extra or {}), list(warnings)
-    from twoball.modal.guards import liftoff_guards, window_warnings
+    from twoball.modal.guards import case_warnings, liftoff_guards, span_warnings, window_warnings
 
+    notes = case_warnings(case) + span_warnings(case, result) + notes
     if reference:
         found, block = liftoff_guards(case, result, backend, sigma)
         notes += found

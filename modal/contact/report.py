@@ -121,9 +121,8 @@ class ContactReport:
 
     @property
     def notes(self) -> list[str]:
-        """How phi_a was chosen (as for the massless lift-off)."""
-        note = (self.membrane or self.case).phi_a_note
-        return [note] if note else []
+        """How phi_a was chosen and a negative v0 read (as for the massless lift-off)."""
+        return (self.membrane or self.case).notes
 
     def trajectory_si(self, samples: int = 600) -> dict[str, Any]:
         """Body and cap-averaged membrane on ``samples`` times over the window (SI).

@@ -62,7 +62,7 @@ def run(args: argparse.Namespace) -> int:
     if args.study == "modes" and args.modes is not None:
         raise ParameterError("modes", "left out with study modes (use --modes-list)", args.modes)
     case = case_from_options(args)
-    print_notes([case.phi_a_note] if case.phi_a_note else [])
+    print_notes(case.notes)
     from twoball._common.progress import Reporter
 
     with Reporter(f"converge {args.study}") as progress:

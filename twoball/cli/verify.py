@@ -71,7 +71,7 @@ def run(args: argparse.Namespace) -> int:
     from twoball._studies import verify
 
     case = case_from_options(args)
-    print_notes([case.phi_a_note] if case.phi_a_note else [])
+    print_notes(case.notes)
     options = {
         "thorough": args.thorough,
         "fast": args.fast,
