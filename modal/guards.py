@@ -296,7 +296,8 @@ def span_warnings(case: Case, result: LiftoffResult) -> list[str]:
     flight = 2.0 * case.v0 / case.g  # [s]: a body leaving at |v0| is back after this
     transit = math.pi * scale.time  # [s]: pi / c, the membrane's lift-off ~ there
     front = case.phi_a * scale.time  # [s]: the membrane's wave front reaches the pole
-    if not result.lifted and result.horizon == "window" and t_end >= flight:
+    horizon = getattr(result, "horizon", "window")  # a contact history: the whole window
+    if not result.lifted and horizon == "window" and t_end >= flight:
         return [
             f"the window t_end = {t_end:g} s is {t_end * case.wave_speed:.3g} / c "
             f"({t_end / (2 * math.pi * scale.time):.3g} wave periods 2 pi / c): a body lifted "

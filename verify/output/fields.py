@@ -635,7 +635,7 @@ def field_warnings(model: Any, backend: str, field: FieldMesh) -> list[str]:
         else:
             surface = (field.loaded.mesh.points, field.loaded.mesh.cells)
             warnings += mesh_warnings("sphere", None, None, field.order, series.filter, surface)
-    return warnings
+    return list(dict.fromkeys(warnings))  # a contact report has the mesh's already
 
 
 def check_fps(fps: object) -> float:

@@ -166,7 +166,9 @@ class SweepSolver:
             if hasattr(case, "mass_ratio"):
                 plain = case.case
                 body = replace(body, mass_ratio=case.mass_ratio)
-            return legendre_contact(plain, body, sigma=self.sigma, t_end_s=self.t_end_s)
+            return legendre_contact(
+                plain, body, sigma=self.sigma, t_end_s=self.t_end_s, reference=self.reference
+            )
         return legendre_liftoff(
             case, self.sigma, self.recontact, self.t_end_s, reference=self.reference
         )
