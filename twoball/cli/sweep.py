@@ -103,7 +103,8 @@ def run(args: argparse.Namespace) -> int:
     if plot is not None:
         result.plot(plot)
     if args.json:
-        print_json(attach([p.as_dict() for p in points], result.provenance))
+        results = {"results": [p.as_dict() for p in points], "phi_a_rule": result.phi_a_rule}
+        print_json(attach(results, result.provenance))
     else:
         print_sweep(grid, points)
         if plot is not None:

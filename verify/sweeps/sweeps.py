@@ -5,6 +5,15 @@ slowest), solved by :class:`SweepSolver` through a :class:`twoball.verify.sweeps
 so the same code runs serially, on local processes or on a Dask cluster, with
 identical numbers.  A point whose solve raises is kept as a :class:`SweepPoint`
 with ``error`` set, next to its parameters.
+
+One rule for phi_a in one sweep.  A preset's measured phi_a holds only at its
+own R, c and ``|v0|`` (:class:`~twoball.modal.parameters.Case`); a sweep of v0,
+c or R passing through that point would take the measured angle there and eq.
+(3.7) beside it -- a dip of the curve made by the rule, not the physics
+(basketball: 2.6 rad measured against 2.62 rad from eq. (3.7) at 4.1 m/s).  So
+every point of such a sweep takes eq. (3.7); a sweep of anything else keeps the
+base case's phi_a at every point.  :func:`phi_a_rule` says which, in the JSON
+and on the figure.
 """
 
 from __future__ import annotations
@@ -15,7 +24,7 @@ from dataclasses import dataclass
 from typing import Any
 
 import numpy as np
-from twoball.modal.parameters import Case
+from twoball.modal.parameters import FROM_V0, Case
 from twoball.modal.report import LiftoffReport, legendre_liftoff
 from twoball.verify.sweeps.parallel import Runner
 
@@ -77,10 +86,31 @@ def _check_parameter(parameter: str) -> str:
     return SWEEP_PARAMETERS[parameter]
 
 
+#: Case fields whose change re-applies the phi_a rule (eq. (3.7) away from a preset's point).
+PHI_A_FIELDS = ("v0", "wave_speed", "radius")
+
+
+def _one_rule(fields: Iterable[str]) -> dict[str, str]:
+    """``phi_a="eq. (3.7)"`` when a field of the phi_a rule is swept (module docstring)."""
+    return {"phi_a": FROM_V0} if set(fields) & set(PHI_A_FIELDS) else {}
+
+
 def sweep_cases(base: Case, parameter: str, values: Iterable[float]) -> list[Case]:
-    """The cases of a sweep: ``base`` with one parameter varied (phi_a per eq. (3.7))."""
+    """The cases of a sweep: ``base`` with one parameter varied (one phi_a rule, module doc)."""
     field = _check_parameter(parameter)
-    return [base.derive(**{field: _field_value(field, value)}) for value in values]
+    rule = _one_rule([field])
+    return [base.derive(**{field: _field_value(field, value)}, **rule) for value in values]
+
+
+def phi_a_rule(cases: Sequence[Any]) -> str:
+    """How phi_a was chosen at the points: ``eq. (3.7) at every point`` or the one value."""
+    sources = {c.phi_a_source for c in cases}
+    if sources == {FROM_V0}:
+        return "eq. (3.7) at every point (from |v0|, R, c)"
+    angles = {c.phi_a for c in cases}
+    if len(angles) == 1 and len(sources) == 1:
+        return f"{angles.pop():.6g} rad at every point ({sources.pop()})"
+    return "mixed: " + ", ".join(sorted(str(s) for s in sources))
 
 
 @dataclass(frozen=True)
@@ -100,14 +130,20 @@ class SweepGrid:
         return [tuple(int(i) for i in k) for k in np.ndindex(*self.shape)]
 
     def cases(self, base: Case) -> list[Case]:
-        """One case per grid point, in :meth:`indices` order; v0, c, R re-derive phi_a."""
+        """One case per grid point, in :meth:`indices` order.
+
+        A sweep of v0, c or R takes phi_a from eq. (3.7) at every point, the
+        preset's own point included; any other keeps the base case's phi_a
+        (one rule per sweep, module docstring).
+        """
         fields = [_check_parameter(p) for p in self.parameters]
+        rule = _one_rule(fields)
         out = []
         for index in self.indices():
             changes = {
                 f: _field_value(f, self.values[axis][i])
                 for axis, (f, i) in enumerate(zip(fields, index, strict=True))
-            }
+            } | rule
             mass_ratio = changes.pop("mass_ratio", None)
             case = base.derive(**changes) if changes else base
             if mass_ratio is not None:
