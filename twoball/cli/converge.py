@@ -129,7 +129,8 @@ def register(parser: argparse.ArgumentParser) -> None:
         "--levels",
         metavar="LIST",
         help="consecutive refinement levels, e.g. 2:5 or 2,3,4,5 (sphere: icosphere "
-        "level; axisym: 25 * 2^level elements; dt: dt = dt0 / 2^level)",
+        "level; axisym: 25 * 2^level elements; dt: c dt = 0.01 / 2^level, i.e. "
+        "31.25 us / 2^level for c = 320 1/s)",
     )
     parser.add_argument(
         "--modes-list",
