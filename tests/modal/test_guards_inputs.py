@@ -91,3 +91,11 @@ def test_sweep_points_carry_the_warning() -> None:
     first, second = (p.report for p in result.points)
     assert not [w for w in first.warnings if w.startswith("R = ")]
     assert [w for w in second.warnings if w.startswith("R = 120 m")]
+
+
+def test_converge_says_it_too() -> None:
+    slip = twoball.Case.preset("basketball", radius=120.0)
+    study = twoball.converge(slip, study="modes", modes_list="30,60,120")
+    assert [w for w in study.warnings if w.startswith("R = 120 m")]
+    assert study.as_dict()["warnings"] == study.warnings
+    assert twoball.converge(study="modes", modes_list="30,60,120").warnings == []

@@ -16,7 +16,7 @@ from twoball import _choices
 from twoball._common.errors import ParameterError
 from twoball._common.strict_json import json_text
 from twoball.cli.case_options import add_case_options, case_from_options
-from twoball.cli.console import console, print_notes
+from twoball.cli.console import console, print_notes, print_warnings
 
 MESHES = ("sphere", "axisym")
 
@@ -67,6 +67,7 @@ def run(args: argparse.Namespace) -> int:
 
     with Reporter(f"converge {args.study}") as progress:
         study = twoball.converge(case, progress=progress, **options)
+    print_warnings(study.warnings)
     target = Path(out).expanduser()
     if args.json:
         data = study.as_dict()

@@ -68,6 +68,8 @@ class StudyResult:
     settings: dict[str, Any] = field(default_factory=dict)
     seconds: float = 0.0
     provenance: dict[str, Any] | None = None
+    #: inputs far from any ball (:func:`twoball.modal.guards.case_warnings`)
+    warnings: list[str] = field(default_factory=list)
 
     @property
     def passed(self) -> bool:
@@ -84,6 +86,7 @@ class StudyResult:
             "seconds": self.seconds,
             "settings": self.settings,
             "notes": self.notes,
+            "warnings": self.warnings,
             "runs": self.runs,
             "quantities": [q.as_dict() for q in self.quantities],
             "provenance": self.provenance,
