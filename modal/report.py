@@ -185,7 +185,8 @@ def report_liftoff(
     (:mod:`twoball.modal.guards`) add the re-contact window's and, with
     ``reference``, the ``truncation`` block: the converged series beside the
     N-result (~10 ms for the basketball, up to ~1 s for D -> 0, where the series
-    converges slowly).
+    converges slowly); then the inputs far from any ball and the windows in which
+    nothing can lift off (:func:`twoball.modal.guards.case_warnings`, ``span_warnings``).
     """
     result = find_liftoff(
         motion, case.gamma, t_end=t_end_dimensionless(case, t_end_s), horizon=recontact
@@ -193,13 +194,13 @@ def report_liftoff(
     extra, notes = dict(extra or {}), list(warnings)
     from twoball.modal.guards import case_warnings, liftoff_guards, span_warnings, window_warnings
 
-    notes = case_warnings(case) + span_warnings(case, result) + notes
     if reference:
         found, block = liftoff_guards(case, result, backend, sigma)
         notes += found
         extra["truncation"] = block.as_dict()
     else:
         notes += window_warnings(case, result)
+    notes += case_warnings(case) + span_warnings(case, result)
     return LiftoffReport(case, result, backend, sigma, recontact, extra, tuple(notes))
 
 
