@@ -39,6 +39,7 @@ __all__ = [
 SECONDS_PER_TERM = 40e-9  # one complex exp-multiply-add of the series evaluation
 SAMPLES_PER_PERIOD = 16  # of the bracketing grid (twoball.modal.liftoff.bracketing_grid)
 DECAYED = 40.0  # D omega t beyond which a mode no longer counts (exp(-40) ~ 4e-18)
+TRACK_WIDTH = 0.16  # the followed root's window, 5 % of t_l ~ pi (the basketball's)
 
 
 def legendre_omega(modes: int) -> float:
@@ -116,7 +117,8 @@ def reference_estimate(
     :func:`twoball.modal.converged.converged_legendre` from N0 = max(N, 30): the
     filtered lift-off at 2 N0 and 4 N0 (each blockwise, :func:`decaying_work`;
     the one at N0 is the result itself), then the unfiltered series followed at
-    its root (a few thousand samples of the modes not yet decayed: small).
+    its root (a few thousand samples of the modes not yet decayed: small, except
+    for D = 0, where every mode is summed there for four doublings).
     """
     start = max(int(modes), 30)
     memory = seconds = 0.0
@@ -124,6 +126,12 @@ def reference_estimate(
         samples, work = decaying_work(_omegas(n, stiffness), damping, t_end)
         memory = max(memory, 24.0 * CHUNK * (n + 1) + 48.0 * samples)
         seconds += SECONDS_PER_TERM * work
+    if damping == 0.0:  # nothing decays: the root is followed with every mode, 4 doublings
+        for n in (2 * start, 4 * start, 8 * start, 16 * start):  # (the changes stop shrinking)
+            if n > 3840:
+                break
+            samples = max(2001.0, 40 * TRACK_WIDTH * float(_omegas(n, stiffness)[-1]))
+            seconds += SECONDS_PER_TERM * samples * (n + 1)
     return Estimate(BASE_MEMORY + memory, seconds)
 
 
