@@ -304,6 +304,12 @@ def span_warnings(case: Case, result: LiftoffResult) -> list[str]:
             f"at up to |v0| = {case.v0:g} m/s falls back onto the ball within it "
             f"(2 |v0| / g = {flight:.3g} s), so every lift-off is rejected as a re-contact; "
             f"did you mean {t_end:g} ms (t_end = {t_end * 1e-3:g} s)?"
+            + (
+                f" (that window too would end before the wave reaches the pole, ~pi / c = "
+                f"{transit * 1e3:.3g} ms; the default is 4 pi / c = {4 * transit * 1e3:.3g} ms)"
+                if t_end * 1e-3 < transit
+                else ""
+            )
         ]
     membrane = not case.stiff
     early = membrane and t_end < front  # the pole has not moved yet (unit wave speed)
