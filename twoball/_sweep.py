@@ -226,6 +226,12 @@ def sweep(
         solver = SweepSolver(sigma, recontact, t_end)
     with Runner(workers, scheduler) as runner:
         points = run_sweep(cases, solver, progress, runner=runner, indices=grid.indices())
+    from dataclasses import replace as with_rule
+
+    from twoball.verify.sweeps.sweeps import phi_a_rule
+
+    rule = phi_a_rule(cases)  # one rule per sweep: said beside every point
+    points = [with_rule(p, phi_a_rule=rule) for p in points]
     from twoball._common.provenance import block
 
     arguments = {"values": {k: arrays[i] for i, k in enumerate(values)}, **call}

@@ -41,7 +41,8 @@ def test_other_sweeps_keep_the_base_angle() -> None:
 def test_json_and_figure_say_the_rule(capsys) -> None:
     assert main(["sweep", "--param", "v0", "--values", "4,4.1", "--json"]) == 0
     data = json.loads(capsys.readouterr().out)
-    assert data["phi_a_rule"].startswith("eq. (3.7) at every point")
+    assert set(data) == {"results", "provenance"}  # the one shape of every JSON output
+    assert all(p["phi_a_rule"].startswith("eq. (3.7) at every point") for p in data["results"])
     result = twoball.sweep({"wave_speed": [300.0, 320.0]})
     grid = SweepGrid(result.parameters, tuple(result.values))
     figure = sweep_figure(grid, result.points)

@@ -103,8 +103,7 @@ def run(args: argparse.Namespace) -> int:
     if plot is not None:
         result.plot(plot)
     if args.json:
-        results = {"results": [p.as_dict() for p in points], "phi_a_rule": result.phi_a_rule}
-        print_json(attach(results, result.provenance))
+        print_json(attach([p.as_dict() for p in points], result.provenance))
     else:
         print_sweep(grid, points)
         if plot is not None:

@@ -218,6 +218,8 @@ class SweepPoint:
     case: Case
     report: LiftoffReport | None
     error: str | None = None
+    #: how phi_a was chosen over the whole sweep (:func:`phi_a_rule`), set by twoball.sweep
+    phi_a_rule: str | None = None
 
     @property
     def ratio(self) -> float:
@@ -238,7 +240,8 @@ class SweepPoint:
         return math.nan if v is None else v
 
     def as_dict(self) -> dict[str, Any]:
-        """JSON-ready: the report's keys (or the case's, on error), ``index`` and ``error``."""
+        """JSON-ready: the report's keys (or the case's, on error), ``index``, ``error`` and
+        the sweep's ``phi_a_rule``."""
         if self.report is not None:
             data = self.report.as_dict()
         else:
@@ -258,6 +261,8 @@ class SweepPoint:
             }
         data["index"] = list(self.index)
         data["error"] = self.error
+        if self.phi_a_rule is not None:
+            data["phi_a_rule"] = self.phi_a_rule
         return data
 
 
