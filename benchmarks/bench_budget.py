@@ -77,7 +77,7 @@ def main() -> None:
             "from twoball.modal.report import legendre_liftoff\n"
             f"legendre_liftoff(preset('basketball').derive(modes={modes}))\n"
         )
-        estimate = series_estimate(modes, 4 * math.pi) + reference_estimate(4 * math.pi)
+        estimate = series_estimate(modes, 4 * math.pi) + reference_estimate(4 * math.pi, modes)
         rows.append((f"series N = {modes}", estimate, *measure(code)))
     for level, order in [(3, 2)] if quick else [(4, 1), (3, 2)]:
         code = (

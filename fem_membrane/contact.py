@@ -184,7 +184,14 @@ def fem_contact_solution(
         membrane=membrane,
         extra={"cap_angle_rad": theta, **info},
     )
-    return model, report
+    # the mesh guard of the massless path, and the closed-form contact solution beside it
+    from twoball.fem_membrane.guards import mesh_warnings
+    from twoball.modal.contact.report import guarded
+
+    mesh_said = mesh_warnings(
+        spec.kind, spec.level, spec.elements, model.space.order, SpectralFilter(sigma, case.modes)
+    )
+    return model, guarded(report, body, t_end_s, more=mesh_said)
 
 
 def fem_contact_fields(

@@ -9,7 +9,7 @@ The scalings to the dimensionless model and the SI ranges are in
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass, replace
+from dataclasses import dataclass, field, replace
 from typing import Any
 
 from twoball.modal.damping import ModalRatio, Rayleigh
@@ -73,7 +73,9 @@ class Case:
     wave_speed : float
         Angular wave speed c [1/s], > 0, eq. (3.8).
     v0 : float
-        Impact speed [m/s]; the sign is ignored (``|v0|`` is used).
+        Impact speed [m/s]; ``|v0|`` is used.  A negative value is read as the
+        paper's signed velocity (Fig. 6: v0 = -4.1 m/s, downwards) and said in
+        :attr:`notes`; only ``v0^2`` enters eqs. (3.6)-(3.7).
     phi_a : float or None or "eq. (3.7)"
         Contact (truncation) angle [rad] in (pi/2, pi - 1e-6], eq. (3.3); None: by the
         rule above; ``"eq. (3.7)"``: from ``|v0|``, R, c by eq. (3.7) in any case.
@@ -136,12 +138,17 @@ class Case:
     atmosphere: float = ATMOSPHERE
     membrane: Membrane | str = Membrane()
     rayleigh: Rayleigh | None = None
+    #: The v0 as given when it was negative (the paper's sign: downwards), else None.
+    v0_given: float | None = field(default=None, compare=False, repr=False)
 
     def __post_init__(self) -> None:
         object.__setattr__(self, "radius", check_radius(self.radius))
         object.__setattr__(self, "wave_speed", check_wave_speed(self.wave_speed))
         object.__setattr__(self, "g", check_g(self.g))
+        given = self.v0
         object.__setattr__(self, "v0", check_v0(self.v0))
+        if given != self.v0:  # negative: kept to say how it was read
+            object.__setattr__(self, "v0_given", float(given))
         damping = _number("damping", self.damping, "in [0, 1)")
         if not (0.0 <= damping < 1.0):
             raise ParameterError("damping", "in [0, 1)", self.damping)
@@ -279,6 +286,21 @@ class Case:
         )
 
     @property
+    def v0_note(self) -> str | None:
+        """How a negative v0 was read (None for a positive one)."""
+        if self.v0_given is None:
+            return None
+        return (
+            f"v0 = {self.v0_given:g} m/s read as an impact at {self.v0:g} m/s downwards (the "
+            "paper's sign, Fig. 6: v0 < 0 falls); the model uses |v0|"
+        )
+
+    @property
+    def notes(self) -> list[str]:
+        """The remarks on how the case was read: :attr:`phi_a_note`, :attr:`v0_note`."""
+        return [note for note in (self.phi_a_note, self.v0_note) if note]
+
+    @property
     def scalings(self) -> Scalings:
         """The units of the dimensionless model for this case."""
         return Scalings(self.radius, self.wave_speed, self.g)
@@ -352,7 +374,8 @@ class Case:
         """
         if "phi_a_source" in changes:
             raise ParameterError("phi_a_source", "set by the class, not given", None)
-        known = [f for f in self.__dataclass_fields__ if f not in ("phi_a_source", "pressure")]
+        hidden = ("phi_a_source", "pressure", "v0_given")
+        known = [f for f in self.__dataclass_fields__ if f not in hidden]
         for name in changes:
             if name not in known:
                 hint = (
@@ -365,6 +388,8 @@ class Case:
         rule = ("v0", "wave_speed", "radius", "preset_name", "gas", "atmosphere", "membrane")
         if "phi_a" in changes or any(k in changes for k in rule):
             changes = {"phi_a": None, **changes, "phi_a_source": None}
+        if "v0" in changes:
+            changes["v0_given"] = None
         return replace(self, **changes)
 
     @classmethod

@@ -115,7 +115,8 @@ def test_sweep_api_equals_cli(capsys):
     cli, err = cli_json(capsys, "sweep", "--param", "v0", "--values", "2:4.1:3")
     api = twoball.sweep({"v0": np.linspace(2.0, 4.1, 3)})
     assert json.loads(json.dumps([p.as_dict() for p in api.points])) == cli
-    assert [p["phi_a_source"] for p in cli] == ["eq. (3.7)", "eq. (3.7)", "measured (basketball)"]
+    # one phi_a rule per sweep: eq. (3.7) at the preset's own 4.1 m/s as well
+    assert [p["phi_a_source"] for p in cli] == ["eq. (3.7)"] * 3
     assert "note:" in err
     data = api.as_dict()
     assert data["parameters"] == ["v0"] and data["shape"] == [3] and len(data["points"]) == 3

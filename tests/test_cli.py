@@ -46,14 +46,17 @@ def test_v0_without_phi_a_uses_eq_3_7(capsys):
 
 
 def test_preset_own_v0_keeps_the_measured_phi_a(capsys):
-    # typing the preset's own value (sign ignored) never changes the answer
+    # typing the preset's own value (negative: the paper's downward sign) never changes
+    # the answer; how the sign was read is said in a note
     _, default, err_default = run(capsys, "liftoff", "--json")
     _, typed, err = run(capsys, "liftoff", "--v0", "-4.1", "--json")
     typed, default = json.loads(typed), json.loads(default)
     assert typed.pop("provenance")["case"] == default.pop("provenance")["case"]
-    assert typed == default
+    (note,) = typed.pop("notes")
+    assert note.startswith("v0 = -4.1 m/s read as an impact at 4.1 m/s downwards")
+    assert default.pop("notes") == [] and typed == default
     assert typed["phi_a_source"] == "measured (basketball)"
-    assert err == err_default == ""
+    assert err == f"twoball: note: {note}\n" and err_default == ""
 
 
 def test_pressure_and_mass_give_the_wave_speed(capsys):

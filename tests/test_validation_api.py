@@ -355,6 +355,20 @@ EXTRA: list[tuple[str, Callable[[Path], Any]]] = [
             lambda tmp, p=path: twoball._studies.verify(CASE, fast=True, out=_under(tmp, p[:-4])),
         )
     ],
+    # a spike or dent hidden in the mean radial deviation: refused by its largest deviation
+    # and near the pole (icosphere level 5, pole node out 30 % / in 30 %; level 3, out 0.2 %)
+    *[
+        ("mesh", call)
+        for level, scale in ((5, 1.3), (5, 0.7), (3, 1.002))
+        for call in (
+            lambda _, lv=level, s=scale: twoball.fem.solve(
+                CASE, mesh=twoball.MeshOptions(file=_bumped(lv, s))
+            ),
+            lambda tmp, lv=level, s=scale: twoball.export(
+                tmp / "x.vtu", CASE, mesh=twoball.MeshOptions(file=_bumped(lv, s))
+            ),
+        )
+    ],
     *[
         ("mesh", call)
         for path in ("a" * 300 + ".msh", table.LONG_PATH + ".msh", "/proc/x/y.msh")
@@ -366,6 +380,18 @@ EXTRA: list[tuple[str, Callable[[Path], Any]]] = [
         )
     ],
 ]
+
+
+def _bumped(level: int, scale: float) -> Any:
+    """A meshio icosphere (radius 0.12 m) with its pole node's radius times ``scale``."""
+    import meshio
+    import numpy as np
+    from twoball.fem_membrane.mesh import icosphere
+
+    mesh = icosphere(level)
+    points = mesh.points.copy()
+    points[int(np.argmax(points[:, 2]))] *= scale
+    return meshio.Mesh(0.12 * points, [("triangle", mesh.cells)])
 
 
 def _under(tmp: Path, path: str) -> str:

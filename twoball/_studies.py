@@ -150,7 +150,9 @@ def converge(
     else:
         result = run_dt_study(case, mesh=mesh, order=order, levels=level_list, **common)
     from twoball._common.provenance import block
+    from twoball.modal.guards import case_warnings
 
+    result.warnings = case_warnings(case)
     arguments = {"study": study, "mesh": mesh, "order": order, "levels": levels}
     arguments |= {"modes_list": modes_list, "sigma": sigma, "recontact": recontact}
     result.provenance = block(case, "twoball.converge", {**arguments, "t_end": t_end, "out": out})
@@ -220,6 +222,9 @@ def verify(
     configuration = config("fast" if fast else ("thorough" if thorough else "default"))
     say = progress or silent
     result = run_verify(case, sigma, recontact, t_end, configuration, say)
+    from twoball.modal.guards import case_warnings
+
+    result.warnings = case_warnings(case)
     from twoball._common.provenance import block
 
     arguments = {"thorough": thorough, "fast": fast, "sigma": sigma, "recontact": recontact}

@@ -40,7 +40,9 @@ class SweepResult:
     >>> import twoball
     >>> result = twoball.sweep({"v0": [3.0, 4.1]})
     >>> result.parameters, result.shape, [p.case.phi_a_source for p in result.points]
-    (('v0',), (2,), ['eq. (3.7)', 'measured (basketball)'])
+    (('v0',), (2,), ['eq. (3.7)', 'eq. (3.7)'])
+    >>> result.phi_a_rule
+    'eq. (3.7) at every point (from |v0|, R, c)'
     """
 
     parameters: tuple[str, ...]
@@ -62,11 +64,20 @@ class SweepResult:
         grid = SweepGrid(self.parameters, tuple(self.values))
         return plot_sweep(grid, self.points, target)
 
+    @property
+    def phi_a_rule(self) -> str:
+        """How phi_a was chosen: one rule for every point (eq. (3.7) when v0, c or R is
+        swept, else the base case's angle)."""
+        from twoball.verify.sweeps.sweeps import phi_a_rule
+
+        return phi_a_rule([p.case for p in self.points])
+
     def as_dict(self) -> dict[str, Any]:
-        """JSON-ready: parameters, shape, the points (SI) and the provenance."""
+        """JSON-ready: parameters, shape, the phi_a rule, the points (SI) and the provenance."""
         return {
             "parameters": list(self.parameters),
             "shape": list(self.shape),
+            "phi_a_rule": self.phi_a_rule,
             "points": [p.as_dict() for p in self.points],
             "provenance": self.provenance,
         }
@@ -203,6 +214,9 @@ def sweep(
             raise ParameterError(f"values[{name!r}]", "a non-empty list of finite numbers", items)
         arrays.append(array)
     grid = SweepGrid(parameters, tuple(arrays))
+    if "mass-ratio" in parameters and body is not None and body.energy == "both":
+        # mu > 0 takes eq. (3.7) at |v0| sqrt(1 + mu): so does mu = 0 (one rule per sweep)
+        case = case.derive(phi_a="eq. (3.7)")
     modes = int(max(arrays[parameters.index("modes")])) if "modes" in parameters else case.modes
     check_sweep(math.prod(grid.shape), modes, t_end_dimensionless(case, t_end), workers)
     cases = grid.cases(case)
@@ -226,6 +240,12 @@ def sweep(
         solver = SweepSolver(sigma, recontact, t_end)
     with Runner(workers, scheduler) as runner:
         points = run_sweep(cases, solver, progress, runner=runner, indices=grid.indices())
+    from dataclasses import replace as with_rule
+
+    from twoball.verify.sweeps.sweeps import phi_a_rule
+
+    rule = phi_a_rule(cases)  # one rule per sweep: said beside every point
+    points = [with_rule(p, phi_a_rule=rule) for p in points]
     from twoball._common.provenance import block
 
     arguments = {"values": {k: arrays[i] for i, k in enumerate(values)}, **call}

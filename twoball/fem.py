@@ -171,13 +171,14 @@ def solve(
         extra["membrane"] = case.membrane.kind
     from twoball.fem_membrane.guards import fem_warnings
 
-    # a user's mesh has no level: its resolution is not estimated (time step still is)
+    # a user's mesh has no level: its size stands in for it
     warnings = fem_warnings(
-        info if loaded is None else {**info, "mesh_kind": None},
+        info,
         SpectralFilter(sigma, case.modes),
         level=spec.level,
         elements=spec.elements,
         time_unit_s=case.scalings.time,
+        surface=None if loaded is None else (loaded.mesh.points, loaded.mesh.cells),
     )
     say("lift-off criteria and the converged closed form beside it")
     report = report_liftoff(

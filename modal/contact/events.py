@@ -64,9 +64,11 @@ class ContactEvent:
 class ContactHistory:
     """All events on [0, t_end] and the final separation (dimensionless).
 
-    ``lifted`` is True if the body is in flight at ``t_end``; then ``t`` and
-    ``velocity`` are the time and the body's upward velocity at the last
-    separation (lift-off or rebound), ``displacement`` its height there.
+    ``lifted`` is True if the body is in flight at ``t_end`` after a last
+    separation (lift-off or rebound) with an upward velocity; then ``t`` and
+    ``velocity`` are the time and that velocity, ``displacement`` its height
+    there.  A body that separated moving down (v1 <= 0) is falling with the
+    membrane and will land again: not lifted.
     """
 
     events: tuple[ContactEvent, ...]
@@ -317,7 +319,9 @@ def integrate(
             events.append(_separation(system, t, z))
             mode = "flight"
     final = events[-1] if events and events[-1].kind == "separation" else None
-    lifted = mode == "flight" and final is not None
+    # a body that left the membrane moving down is falling with it, not lifting off
+    # (criterion (ii) of §3(a): no negative lift-off velocity); it lands again later
+    lifted = mode == "flight" and final is not None and final.velocity > 0.0
     return ContactHistory(
         tuple(events),
         t_end,

@@ -16,7 +16,7 @@ from twoball import _choices
 from twoball._common.errors import ParameterError
 from twoball._common.strict_json import json_text
 from twoball.cli.case_options import add_case_options, case_from_options
-from twoball.cli.console import console, print_notes
+from twoball.cli.console import console, print_notes, print_warnings
 
 MESHES = ("sphere", "axisym")
 
@@ -62,11 +62,12 @@ def run(args: argparse.Namespace) -> int:
     if args.study == "modes" and args.modes is not None:
         raise ParameterError("modes", "left out with study modes (use --modes-list)", args.modes)
     case = case_from_options(args)
-    print_notes([case.phi_a_note] if case.phi_a_note else [])
+    print_notes(case.notes)
     from twoball._common.progress import Reporter
 
     with Reporter(f"converge {args.study}") as progress:
         study = twoball.converge(case, progress=progress, **options)
+    print_warnings(study.warnings)
     target = Path(out).expanduser()
     if args.json:
         data = study.as_dict()
@@ -129,7 +130,8 @@ def register(parser: argparse.ArgumentParser) -> None:
         "--levels",
         metavar="LIST",
         help="consecutive refinement levels, e.g. 2:5 or 2,3,4,5 (sphere: icosphere "
-        "level; axisym: 25 * 2^level elements; dt: dt = dt0 / 2^level)",
+        "level; axisym: 25 * 2^level elements; dt: c dt = 0.01 / 2^level, i.e. "
+        "31.25 us / 2^level for c = 320 1/s)",
     )
     parser.add_argument(
         "--modes-list",

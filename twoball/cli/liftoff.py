@@ -128,6 +128,12 @@ def contact_rows(report) -> list[tuple[str, str]]:
         ("v1 [m/s]", number(report.v_liftoff_m_s)),
         ("v1 / |v0|", number(report.ratio)),
     ]
+    block = report.extra.get("truncation") or {}
+    if block.get("t_liftoff_s") is not None:
+        name = f"closed form, N = {block['reference_modes']}"
+        rows.append((f"final separation [ms], {name}", number(block["t_liftoff_s"], 1e3)))
+        rows.append((f"v1 [m/s], {name}", number(block["v_liftoff_m_s"])))
+    rows += [("warning", text) for text in report.warnings]
     return rows
 
 

@@ -188,12 +188,15 @@ def _sweep_body(args: argparse.Namespace, parameters: tuple[str, ...]) -> Any:
 
 
 def sweep_notes(points: list[Any]) -> list[str]:
-    """One note for the whole sweep: at how many points eq. (3.7) replaced a preset's phi_a."""
-    notes = [p.report.notes[0] for p in points if p.report is not None and p.report.notes]
+    """One note for the whole sweep: at how many points eq. (3.7) replaced a preset's phi_a
+    (and, once each, any other remark, e.g. how a negative v0 was read)."""
+    every = [n for p in points if p.report is not None for n in p.report.notes]
+    notes = [n for n in every if n.startswith("phi_a = ")]
+    others = list(dict.fromkeys(n for n in every if not n.startswith("phi_a = ")))
     if len(notes) <= 1:
-        return notes
+        return notes + others
     why = notes[0].split("; ", 1)[-1]
-    return [f"phi_a from eq. (3.7) at {len(notes)} of {len(points)} points; {why}"]
+    return [f"phi_a from eq. (3.7) at {len(notes)} of {len(points)} points; {why}", *others]
 
 
 def sweep_warnings(points: list[Any]) -> list[str]:

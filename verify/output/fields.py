@@ -648,16 +648,20 @@ def field_mesh(mesh: Any = None, *, cells: bool = False, load: bool = True) -> F
 def field_warnings(model: Any, backend: str, field: FieldMesh) -> list[str]:
     """Accuracy warnings of ``backend``'s fields: its lift-off's, and the FE mesh resolution.
 
-    As in :func:`twoball.liftoff`, the resolution of a user's mesh is not
-    estimated (it has no level): only its lift-off's warnings are given.
+    As in :func:`twoball.liftoff`, a user's mesh is judged by its size and
+    order (:func:`twoball.fem_membrane.guards.mesh_warnings`).
     """
     warnings = list(model.backend(backend).report.warnings)
-    if backend == "fem" and field.loaded is None:
+    if backend == "fem":
         from twoball.fem_membrane.guards import mesh_warnings
 
         spec, series = field.spec, model.backend(backend).series
-        warnings += mesh_warnings(spec.kind, spec.level, None, spec.order, series.filter)
-    return warnings
+        if field.loaded is None:
+            warnings += mesh_warnings(spec.kind, spec.level, None, spec.order, series.filter)
+        else:
+            surface = (field.loaded.mesh.points, field.loaded.mesh.cells)
+            warnings += mesh_warnings("sphere", None, None, field.order, series.filter, surface)
+    return list(dict.fromkeys(warnings))  # a contact report has the mesh's already
 
 
 def check_fps(fps: object) -> float:

@@ -53,7 +53,7 @@ def check_sweep(
     cores = os.cpu_count() or 1
     per_point = series_estimate(modes, t_end)
     if reference:
-        per_point = per_point + reference_estimate(t_end)
+        per_point = per_point + reference_estimate(t_end, modes)
     estimate = sweep_estimate(points, per_point, cores if workers is None else workers)
     return check(f"values ({points} points)", estimate)
 
