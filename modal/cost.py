@@ -41,18 +41,24 @@ def grid_samples(omega_max: float, t_end: float) -> float:
     return math.ceil(t_end * max(omega_max, 1.0) * SAMPLES_PER_PERIOD / (2.0 * math.pi)) + 1
 
 
-def series_estimate(modes: int, t_end: float, terms: int | None = None) -> Estimate:
+def series_estimate(
+    modes: int, t_end: float, terms: int | None = None, omega_max: float | None = None
+) -> Estimate:
     """The closed-form lift-off with N modes over a window ``t_end`` (dimensionless).
 
     Memory: the larger of the Gauss rule's Vandermonde matrix of eq. (3.12),
     ``8 m (N + 1)`` bytes with ``m = min(N + 50, 20000)``, and the evaluation: the
     exponential tables, ``24 min(S, 4096) K`` bytes for K retained modes, and the
     grid's u, u_t, u_tt and force, ``48 S`` bytes.  Time: ``40 ns x S x K``.  ``terms`` is K when it
-    differs from N + 1 (e.g. finite-element modes).
+    differs from N + 1 (e.g. finite-element modes); ``omega_max`` the highest
+    frequency when it is not the membrane's ``sqrt(N (N + 1))`` (a ball stiffened by
+    bending: ``omega_N ~ sqrt(beta) N^2``, :mod:`twoball.modal.stiffness`), which
+    sets the samples S.
     """
     modes = int(modes)
     kept = modes + 1 if terms is None else int(terms)
-    samples = grid_samples(legendre_omega(modes), t_end)
+    top = legendre_omega(modes) if omega_max is None else float(omega_max)
+    samples = grid_samples(top, t_end)
     points = min(modes + 50, MAX_QUADRATURE) if terms is None else 0
     # the Vandermonde matrix is freed before the evaluation starts: the larger one is the peak
     evaluation = 24.0 * min(samples, CHUNK) * kept + 48.0 * samples
@@ -60,15 +66,30 @@ def series_estimate(modes: int, t_end: float, terms: int | None = None) -> Estim
     return Estimate(memory, SECONDS_PER_TERM * samples * kept)
 
 
-def reference_estimate(t_end: float, modes: int = 240) -> Estimate:
-    """The converged-series reference of the truncation guard (N up to ~240, the window)."""
-    return series_estimate(modes, t_end)
+def reference_estimate(t_end: float, modes: int = 240, stiffness: object = None) -> Estimate:
+    """The converged-series reference of the truncation guard (N up to ~240, the window).
+
+    ``stiffness`` (a :class:`~twoball.modal.stiffness.Stiffness`) raises the highest
+    frequency of a stiffened ball.
+    """
+    return series_estimate(modes, t_end, omega_max=_top(modes, stiffness))
 
 
-def check_series(modes: int, t_end: float, t_end_s: float | None = None) -> Estimate:
+def _top(modes: int, stiffness: object) -> float | None:
+    """The highest Legendre frequency of ``modes`` under ``stiffness`` (None: the membrane's)."""
+    if stiffness is None or not getattr(stiffness, "active", False):
+        return None
+    return float(stiffness.legendre_omega(float(modes)))  # type: ignore[attr-defined]
+
+
+def check_series(
+    modes: int, t_end: float, t_end_s: float | None = None, stiffness: object = None
+) -> Estimate:
     """Refuse a closed-form lift-off (N modes, window ``t_end`` dimensionless) that cannot fit.
 
-    The truncation guard's converged reference over the same window is included.
+    The truncation guard's converged reference over the same window is included;
+    ``stiffness`` as in :func:`reference_estimate`.
     """
-    estimate = series_estimate(modes, t_end) + reference_estimate(t_end)
+    estimate = series_estimate(modes, t_end, omega_max=_top(modes, stiffness))
+    estimate = estimate + reference_estimate(t_end, stiffness=stiffness)
     return check(options(modes=int(modes), t_end=t_end_s), estimate)

@@ -213,7 +213,7 @@ def legendre_liftoff(
     """Lift-off of the closed-form CEM, eqs. (3.12)-(3.16) with criteria (i)-(ii) of §3(a)."""
     from twoball.modal.cost import check_series
 
-    check_series(case.modes, t_end_dimensionless(case, t_end_s), t_end_s)
+    check_series(case.modes, t_end_dimensionless(case, t_end_s), t_end_s, case.stiffness)
     series = legendre_series(
         case.phi_a, case.damping, SpectralFilter(sigma, case.modes), stiffness=case.stiffness
     )

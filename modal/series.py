@@ -18,6 +18,7 @@ import numpy as np
 from numpy.typing import ArrayLike
 from twoball.modal.filters import SpectralFilter
 
+from twoball._common.budget import check_deadline
 from twoball._common.errors import NumericalError, ParameterError
 
 CHUNK = 4096  # time samples evaluated at once; bounds memory for large mode counts
@@ -146,6 +147,8 @@ class ModalSeries:
         flat = times.reshape(-1)
         out = np.empty((flat.size,) + amplitudes.shape[1:])
         for start in range(0, flat.size, CHUNK):
+            if start:
+                check_deadline(f"the modal series at sample {start} of {flat.size}")
             block = _exponential_table(flat[start : start + CHUNK], rates)
             out[start : start + CHUNK] = _product(block, amplitudes).real
         if not np.all(np.isfinite(out)):

@@ -14,6 +14,7 @@ from pathlib import Path
 from typing import Any
 
 from twoball._bundles import bundles
+from twoball._common.budget import timed
 from twoball._common.errors import ParameterError
 from twoball.modal.parameters import Case
 
@@ -76,6 +77,7 @@ def _sweep_name(name: str) -> str:
     return name.replace("_", "-")
 
 
+@timed
 def sweep(
     values: Mapping[str, Sequence[float]],
     case: Case | None = None,
@@ -131,11 +133,18 @@ def sweep(
     """
     import numpy as np
 
+    from twoball._common.progress import check_progress
     from twoball.modal.report import t_end_dimensionless
     from twoball.verify.sweeps.cost import check_sweep
-    from twoball.verify.sweeps.parallel import MIN_PARALLEL_ITEMS, Runner, check_workers
+    from twoball.verify.sweeps.parallel import (
+        MIN_PARALLEL_ITEMS,
+        Runner,
+        check_scheduler,
+        check_workers,
+    )
     from twoball.verify.sweeps.sweeps import SWEEP_PARAMETERS, SweepGrid, SweepSolver, run_sweep
 
+    check_progress(progress)
     legacy_radius = deprecated.pop("contact_radius", None)
     given = bundles(
         "twoball.sweep", stepping=stepping, body=body, old=deprecated, takes=("stepping", "body")
@@ -165,8 +174,10 @@ def sweep(
         from twoball.modal.contact.body import Body
 
         body = Body(0.0, contact_radius=legacy_radius)
-    if scheduler and workers is not None:
+    if scheduler is not None and workers is not None:
         raise ParameterError("workers", "left out with scheduler (the cluster decides)", workers)
+    if scheduler is not None:
+        scheduler = check_scheduler(scheduler)
     workers = 1 if workers is None and not scheduler else workers
     if workers is not None:
         check_workers(workers)  # its type and range, before the budget compares it
@@ -184,10 +195,23 @@ def sweep(
         raise ParameterError("values", "two different parameters for a grid", list(values))
     arrays = []
     for name, items in values.items():
-        array = np.atleast_1d(np.asarray(items, dtype=float))
+        valid = f"a non-empty list of finite numbers for {name}"
+        if isinstance(items, (str, bytes)):
+            raise ParameterError("values", valid, items)
+        try:
+            array = np.atleast_1d(np.asarray(items, dtype=float))
+        except (TypeError, ValueError):
+            raise ParameterError("values", valid, items) from None
         if array.ndim != 1 or array.size < 1 or not np.all(np.isfinite(array)):
-            raise ParameterError(f"values[{name!r}]", "a non-empty list of finite numbers", items)
+            raise ParameterError("values", valid, items)
         arrays.append(array)
+    rule = [p for p in parameters if p in ("v0", "wave-speed", "radius")]
+    if rule and case.phi_a_source == "given":
+        valid = (
+            f"left out when {rule[0].replace('-', '_')} is swept (phi_a then follows |v0|, "
+            "c and R by eq. (3.7) at every point)"
+        )
+        raise ParameterError("phi_a", valid, case.phi_a)
     grid = SweepGrid(parameters, tuple(arrays))
     modes = int(max(arrays[parameters.index("modes")])) if "modes" in parameters else case.modes
     check_sweep(math.prod(grid.shape), modes, t_end_dimensionless(case, t_end), workers)

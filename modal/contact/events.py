@@ -25,11 +25,16 @@ from scipy.linalg import expm
 from twoball.modal.contact.system import ContactSystem
 from twoball.modal.roots import bracketed_roots
 
+from twoball._common.budget import check_deadline
 from twoball._common.errors import NumericalError, ParameterError
 
 TIME_TOLERANCE = 1e-12
 MAX_EVENTS = 10000
 _DENSE_EXPM_MAX = 200  # state size up to which exp(A t) is formed densely for each root step
+#: From this many states exp(A h) is formed in a forked child (:mod:`twoball._common.child`):
+#: scipy's expm held the GIL 0.9 s at a stretch for 1925 states (finite elements, N = 30),
+#: freezing the progress line and holding back Ctrl-C; the result is the same bits.
+_EXPM_CHILD = 600
 _ZENO_RATE = 1e-6  # |g'| (units R c) below which an impact is plastic: ends Zeno chains
 
 
@@ -89,7 +94,13 @@ class _Phase:
     def __init__(self, matrix: np.ndarray, step: float) -> None:
         self.matrix = matrix
         self.step = step
-        self.grid_map = expm(matrix * step)
+        if matrix.shape[0] >= _EXPM_CHILD:  # scipy's expm holds the GIL for seconds here
+            from twoball._common.child import in_child
+
+            doing = f"the contact solver's one-step propagator ({matrix.shape[0]} states)"
+            self.grid_map = in_child(expm, matrix * step, doing=doing)
+        else:
+            self.grid_map = expm(matrix * step)
 
     def at(self, z: np.ndarray, tau: np.ndarray) -> np.ndarray:
         """States at offsets ``tau`` (each in [0, step]) from ``z``.
@@ -149,6 +160,7 @@ def integrate(
     if mode == "flight":
         events.append(_separation(system, 0.0, z))
     while True:
+        check_deadline(f"the contact event loop at t = {t:.4g} of {t_end:.4g} (units 1/c)")
         phase = phases[mode]
         if mode == "contact":
             signal = force
@@ -243,7 +255,9 @@ def _separation(system: ContactSystem, t: float, z: np.ndarray) -> ContactEvent:
 
 def _advance(phase: _Phase, z: np.ndarray, duration: float) -> np.ndarray:
     steps = int(duration // phase.step)
-    for _ in range(steps):
+    for k in range(steps):
+        if k % 64 == 0:
+            check_deadline(f"the contact solver's last flight, step {k} of {steps}")
         z = phase.grid_map @ z
     rest = duration - steps * phase.step
     return phase.at(z, np.array([rest]))[0] if rest > 0 else z
@@ -264,7 +278,11 @@ def _next_event(
     rate = signal @ phase.matrix  # d/dt (signal . z) = signal . A z
     z, tau = z0, 0.0
     duration = t_end - t0
+    steps = 0
     while tau < duration:
+        steps += 1
+        if steps % 64 == 0:
+            check_deadline(f"the contact event search at t = {t0 + tau:.4g} of {t_end:.4g}")
         h = min(phase.step, duration - tau)
         z_next = phase.grid_map @ z if h == phase.step else phase.at(z, np.array([h]))[0]
         lo = max(skip - tau, 0.0)  # offset inside this step where the search begins

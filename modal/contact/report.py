@@ -242,8 +242,16 @@ def solve_contact(
     samples_per_period: int = 32,
 ) -> ContactReport:
     """Run the shared contact solver on any backend's series and cap averages."""
+    from twoball.modal.contact.cost import check_contact
+
     system = None
+    kept, top = len(series.omega), float(np.max(series.omega, initial=0.0))
     if mass_ratio == 0.0:
+        from twoball.modal.cost import series_estimate
+
+        from twoball._common.budget import check, options
+
+        check(options(modes=case.modes), series_estimate(case.modes, t_end, kept, top))
         cap_series = ModalSeries(
             series.omega,
             series.coefficients,
@@ -255,6 +263,7 @@ def solve_contact(
         result = find_liftoff(cap_series, case.gamma, t_end=t_end)
         history = None
     else:
+        check_contact(kept, top, t_end, modes=case.modes, mass_ratio=mass_ratio)
         system = ContactSystem.from_series(series, contact, mass_ratio, case.gamma)
         history = integrate(system, t_end, restitution, samples_per_period)
         result = None

@@ -722,12 +722,19 @@ def window_s(case: Case, t_end_s: float | None = None) -> float:
 
 
 def check_times(end: float, times_s: Sequence[float], name: str = "times") -> np.ndarray:
-    """``times_s`` [s] as a sorted array, each inside the modelled window [0, ``end``]."""
-    times = np.asarray(sorted({float(t) for t in times_s}), dtype=float)
+    """``times_s`` [s] as a sorted array, each inside the modelled window [0, ``end``].
+
+    Each time must be a real number (a nested list or a text is refused by name).
+    """
+    from numbers import Real
+
+    valid = f"times in [0, {end:.6g}] s (the modelled window)"
+    given = list(times_s)
+    if any(isinstance(t, bool) or not isinstance(t, Real) for t in given):
+        raise ParameterError(name, valid, given)
+    times = np.asarray(sorted({float(t) for t in given}), dtype=float)
     if times.size == 0 or np.any(~np.isfinite(times)) or times.min() < 0 or times.max() > end:
-        raise ParameterError(
-            name, f"times in [0, {end:.6g}] s (the modelled window)", list(times_s)
-        )
+        raise ParameterError(name, valid, given)
     return times
 
 

@@ -34,6 +34,7 @@ IMAGE_KINDS: tuple[str, ...] = (".png", ".gif", ".mp4")
 DEFAULT_SIZE = (640, 480)
 MACRO_BLOCK = 16  # MP4 (H.264, yuv420p) frame sizes must be multiples of this
 AUTO_WARP_SHARE = 0.15  # auto warp: the largest displacement drawn at 15 % of R
+MAX_WARP_SHARE = 1.0  # a given warp may draw the largest displacement at R at most
 BODY_SHARE = 0.2  # radius of the drawn upper body, as a share of R
 MAX_SIZE = 4096  # largest accepted image side [px]
 COLOUR_MAP = "coolwarm"  # of the displacement, drawn on the ball and in the colour bar
@@ -142,6 +143,25 @@ def check_warp(warp: float | None, flag: str = "warp") -> float | None:
     if isinstance(warp, bool) or not math.isfinite(float(warp)) or float(warp) < 0.0:
         raise ParameterError(flag, "a finite number >= 0 (or auto)", warp)
     return float(warp)
+
+
+def check_scene_warp(scene: BallScene, warp: float | None, flag: str = "warp") -> None:
+    """Refuse a warp that draws the largest displacement beyond R (the ball folds through
+    its centre and leaves the picture: ``--warp 1e308`` drew no ball at all).
+
+    Checked once the displacements are known, before anything is drawn or written.
+    """
+    if warp is None:
+        return
+    largest = float(np.abs(scene.u).max()) if scene.u.size else 0.0
+    if largest > 0.0 and float(warp) * largest > MAX_WARP_SHARE * scene.radius:
+        limit = MAX_WARP_SHARE * scene.radius / largest
+        valid = (
+            f"at most {limit:.4g} here (warp x the largest |u|, {largest * 1e3:.3g} mm, "
+            f"must stay within R = {scene.radius:g} m, or the drawn ball folds through its "
+            "centre), or auto"
+        )
+        raise ParameterError(flag, valid, warp)
 
 
 def image_kind(path: str | os.PathLike[str], flag: str = "out") -> str:
@@ -479,6 +499,7 @@ def render_scene(
     kind = image_kind(out)
     size = check_size(size)
     warp = check_warp(warp)
+    check_scene_warp(scene, warp)
     if not (math.isfinite(fps) and fps > 0):
         raise ParameterError("fps", "a finite number > 0", fps)
     if kind == ".mp4":
