@@ -73,6 +73,25 @@ class SweepResult:
         }
 
 
+def _point_cost(case: Case, grid: Any, body: Any, modes: int, window: float) -> Any:
+    """The estimate of the costliest point: the contact solver with a body, else the series
+    at the stiffest bending swept (None: the membrane's series, the sweep's default)."""
+    from twoball.modal.cost import legendre_omega, series_estimate
+
+    stiff = case
+    if "bending" in grid.parameters:
+        stiff = case.derive(bending=float(max(grid.values[grid.parameters.index("bending")])))
+    top = float(stiff.stiffness.legendre_omega(float(modes))) if stiff.stiff else None
+    masses = [0.0 if body is None else body.mass_ratio]
+    if "mass-ratio" in grid.parameters:
+        masses = list(grid.values[grid.parameters.index("mass-ratio")])
+    if max(masses) > 0.0:
+        from twoball.modal.contact.cost import contact_estimate
+
+        return contact_estimate(modes + 1, legendre_omega(modes), window)
+    return None if top is None else series_estimate(modes, window, omega_max=top)
+
+
 def _sweep_name(name: str) -> str:
     return name.replace("_", "-")
 
@@ -214,7 +233,14 @@ def sweep(
         raise ParameterError("phi_a", valid, case.phi_a)
     grid = SweepGrid(parameters, tuple(arrays))
     modes = int(max(arrays[parameters.index("modes")])) if "modes" in parameters else case.modes
-    check_sweep(math.prod(grid.shape), modes, t_end_dimensionless(case, t_end), workers)
+    window = t_end_dimensionless(case, t_end)
+    check_sweep(
+        math.prod(grid.shape),
+        modes,
+        window,
+        workers,
+        per_point=_point_cost(case, grid, body, modes, window),
+    )
     cases = grid.cases(case)
     workers = None if scheduler else check_workers(workers)
     if len(cases) < MIN_PARALLEL_ITEMS and not scheduler:

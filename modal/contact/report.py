@@ -84,6 +84,18 @@ class ContactReport:
     system: ContactSystem | None = field(default=None, repr=False, compare=False)
     provenance: dict[str, Any] | None = field(default=None, compare=False, repr=False)
 
+    def __repr__(self) -> str:
+        """The answer first, in SI: lifted, final separation [s], v1 [m/s], v1/|v0|, events."""
+        impacts = 0 if self.history is None else len(self.history.impacts)
+        events = 0 if self.history is None else len(self.history.events)
+        return (
+            f"ContactReport(lifted={self.lifted}, t_liftoff_s={self.t_liftoff_s!r}, "
+            f"v_liftoff_m_s={self.v_liftoff_m_s!r}, ratio={self.ratio!r}, "
+            f"mass_ratio={self.mass_ratio!r}, contact_radius_m={self.contact_radius_m!r}, "
+            f"restitution={self.restitution!r}, impacts={impacts}, events={events}, "
+            f"backend={self.backend!r}, sigma={self.sigma!r}, case={self.case!r})"
+        )
+
     @property
     def result(self) -> Any:
         """The dimensionless outcome: the :class:`ContactHistory` (or the massless

@@ -21,6 +21,7 @@ returns SI (m, m/s, m/s^2, s) unless its docstring says otherwise.
 from __future__ import annotations
 
 import json
+import math
 import os
 from collections.abc import Sequence
 from dataclasses import dataclass, field, replace
@@ -540,6 +541,7 @@ def ball_scene(model: BallModel, times_s: np.ndarray, backend: str = "fem") -> B
         case.radius,
         report.t_liftoff_s if report.result.lifted else None,
         label,
+        settle_time=math.pi * scale.time,  # pi / c: the flattening has crossed the ball
     )
 
 
@@ -979,6 +981,7 @@ def contact_scene(model: CoupledModel, times_s: np.ndarray, backend: str) -> Any
         scene.radius,
         scene.t_liftoff,
         f"{scene.label}, mu = {report.mass_ratio:g}",
+        settle_time=scene.settle_time,
         contact=model.states(backend, scene.times).contact,
         impacts=np.array(impacts),
         mass_ratio=report.mass_ratio,

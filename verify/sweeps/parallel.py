@@ -114,6 +114,9 @@ _ADDRESS = (
     r"(?P<host>\[[0-9A-Fa-f:.]+\]|[A-Za-z0-9](?:[A-Za-z0-9._-]*[A-Za-z0-9])?)"
     r"(?::(?P<port>[0-9]{1,5}))?"
 )
+#: Protocols of dask addresses taken as written (no TCP port to probe); ``inproc`` (a
+#: scheduler in this process, as a threads-only LocalCluster has) is looked up instead.
+_UNPROBED = ("ucx", "ws", "wss")
 #: Seconds a scheduler's port has to accept a connection before it counts as absent.
 PROBE_SECONDS = 2.0
 
@@ -131,6 +134,17 @@ def check_scheduler(address: object) -> str:
 
     if not isinstance(address, str) or not address.strip():
         raise ParameterError("scheduler", SCHEDULER_VALID, address)
+    protocol, _, rest = address.strip().partition("://")
+    if protocol == "inproc":  # a scheduler of this very process, or none
+        if not (rest and _inproc_listening(address.strip())):
+            raise ParameterError(
+                "scheduler",
+                SCHEDULER_VALID + "; no scheduler of this process listens there",
+                address,
+            )
+        return address.strip()
+    if rest and protocol in _UNPROBED and re.fullmatch(r"[\w.\[\]:/-]+", rest):
+        return address.strip()  # not TCP: dask itself connects
     match = re.fullmatch(_ADDRESS, address.strip())
     port = None if match is None or match["port"] is None else int(match["port"])
     if match is None or (port is not None and not 1 <= port <= 65535):
@@ -145,6 +159,18 @@ def check_scheduler(address: object) -> str:
             "scheduler", SCHEDULER_VALID + f"; none answers there ({reason})", address
         ) from None
     return address.strip()
+
+
+def _inproc_listening(address: str) -> bool:
+    """Whether a dask scheduler of this process listens at the ``inproc://`` ``address``."""
+    try:
+        from distributed.comm.inproc import global_manager
+    except ImportError:
+        return False
+    try:
+        return global_manager.get_listener_for(address.removeprefix("inproc://")) is not None
+    except Exception:  # noqa: BLE001 -- a malformed address: nobody listens there
+        return False
 
 
 def _start_method() -> str:
