@@ -264,10 +264,11 @@ def check_pole(pole: object) -> np.ndarray:
         raise ParameterError(POLE_FLAG, valid, pole) from None
     if values.shape != (3,) or not np.all(np.isfinite(values)):
         raise ParameterError(POLE_FLAG, valid, pole)
-    length = float(np.linalg.norm(values))
-    if length == 0.0:
+    largest = float(np.abs(values).max())
+    if largest == 0.0:
         raise ParameterError(POLE_FLAG, valid, pole)
-    return values / length
+    values = values / largest  # 1e308,1e308,1e308 would overflow the length
+    return values / float(np.linalg.norm(values))
 
 
 def rotation_to_z(direction: np.ndarray) -> np.ndarray:

@@ -104,8 +104,15 @@ def _merge_coincident(points: np.ndarray, cells: np.ndarray) -> tuple[np.ndarray
     from scipy.sparse.csgraph import connected_components
     from scipy.spatial import cKDTree
 
-    diagonal = float(np.linalg.norm(np.ptp(points, axis=0)))
-    pairs = cKDTree(points).query_pairs(MERGE_TOLERANCE * diagonal, output_type="ndarray")
+    extent = np.ptp(points, axis=0)
+    largest = float(extent.max())
+    if not largest > 0.0:
+        return cells, 0
+    # beyond 1e-50..1e50 in units of a power of two (exact): no overflow at any radius
+    scale = 1.0 if 1e-50 < largest < 1e50 else 2.0 ** round(math.log2(largest))
+    diagonal = float(np.linalg.norm(extent / scale))
+    tree = cKDTree(points / scale)
+    pairs = tree.query_pairs(MERGE_TOLERANCE * diagonal, output_type="ndarray")
     if pairs.size == 0:
         return cells, 0
     n = points.shape[0]
@@ -252,14 +259,22 @@ def check_sphere(name: str, points: np.ndarray, pole: np.ndarray | None = None) 
     :data:`MAX_RADIAL_DEVIATION`, every node at most :data:`MAX_NODE_DEVIATION`,
     every node within :data:`POLE_CAP` of the unit direction ``pole`` (in the
     points' frame, from the fitted centre; also its :data:`POLE_NEIGHBOURS`
-    nearest nodes) at most :data:`MAX_POLE_DEVIATION`.
+    nearest nodes) at most :data:`MAX_POLE_DEVIATION`.  Coordinates beyond
+    1e-50..1e50 in size are first scaled by a power of two (exact), so a ball of
+    radius 1e-200 or 1e200 (any unit) neither underflows nor overflows in the
+    squares of the fit; centre and radius come back in the file's units.
     """
-    center, radius = sphere_fit(points)
+    largest = float(np.abs(points).max())
+    if not (math.isfinite(largest) and largest > 0.0):
+        raise refuse(name, "a sphere", "nodes that fit no sphere (all at the origin)")
+    scale = 1.0 if 1e-50 < largest < 1e50 else 2.0 ** round(math.log2(largest))
+    center, radius = sphere_fit(points / scale)
     if not (math.isfinite(radius) and radius > 0.0):
         raise refuse(name, "a sphere", "nodes that fit no sphere (coplanar or degenerate)")
-    offsets = points - center
+    offsets = points / scale - center
     distance = np.linalg.norm(offsets, axis=1)
     radius = float(distance.mean())
+    center = center * scale
     deviation = np.abs(distance - radius) / radius
     angle = (
         np.zeros(len(points))
@@ -268,6 +283,7 @@ def check_sphere(name: str, points: np.ndarray, pole: np.ndarray | None = None) 
     )
     near = angle <= max(POLE_CAP, float(np.sort(angle)[min(POLE_NEIGHBOURS, len(angle)) - 1]))
     pole_deviation = float(deviation[near].max()) if pole is not None else math.nan
+    radius *= scale
     fit = SphereFit(center, radius, float(deviation.mean()), float(deviation.max()), pole_deviation)
     if fit.mean_deviation > MAX_RADIAL_DEVIATION:
         found = (
@@ -309,9 +325,9 @@ def orient_outward(
     ``known=False`` (scikit-fem meshes, whose corners are sorted by default)
     orients every triangle by its geometry instead of refusing a mix.
     """
-    corners = points[cells[:, :3]] - fit.center
+    corners = (points[cells[:, :3]] - fit.center) / fit.radius  # unit ball: no overflow
     normal = np.cross(corners[:, 1] - corners[:, 0], corners[:, 2] - corners[:, 0])
-    flat = int(np.count_nonzero(0.5 * np.linalg.norm(normal, axis=1) <= FLAT_AREA * fit.radius**2))
+    flat = int(np.count_nonzero(0.5 * np.linalg.norm(normal, axis=1) <= FLAT_AREA))
     if flat:
         raise refuse(name, "free of degenerate triangles", f"{flat} triangles of zero area")
     inward = np.einsum("ij,ij->i", normal, corners.sum(axis=1)) < 0.0

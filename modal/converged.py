@@ -26,6 +26,8 @@ from twoball.modal.parameters import Case
 from twoball.modal.roots import bracketed_roots
 from twoball.modal.series import ModalSeries
 
+from twoball._common.budget import check_deadline
+
 PAPER_MODES = 30  # the truncation used throughout the paper (§3(b))
 REFERENCE_TOLERANCE = 1e-7  # relative change of v_l that stops the doubling of N
 REFERENCE_MAX_MODES = 3840
@@ -266,6 +268,7 @@ def converged_legendre(
     changes: list[float] = []
     converged, series = False, None
     while modes < max_modes:
+        check_deadline(f"the converged reference series at N = {2 * modes}")
         modes *= 2
         series = _cheaper(unfiltered_series(case, modes), guess - width)
         found = _track_root(series, case.gamma, guess, width, min_samples)

@@ -144,7 +144,8 @@ def check_series(
 ) -> Estimate:
     """Refuse a closed-form lift-off (N modes, window ``t_end`` dimensionless) that cannot fit.
 
-    The truncation guard's converged reference over the same window is included.
+    The truncation guard's converged reference over the same window is included;
+    ``stiffness`` as in :func:`reference_estimate`.
     """
     top = float(_omegas(modes, stiffness)[-1])
     estimate = series_estimate(modes, t_end, omega_max=top) + reference_estimate(

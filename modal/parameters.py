@@ -45,6 +45,8 @@ _SAME = 1e-12  # relative: a typed value equal to the measured one to double pre
 def _measured(name: str | None) -> Measured | None:
     if name is None:
         return None
+    if not isinstance(name, str):
+        raise ParameterError("preset", "one of " + ", ".join(sorted(MEASURED)), name)
     try:
         return MEASURED[name]
     except KeyError:
@@ -170,6 +172,13 @@ class Case:
                 self, "pressure", bounded("pressure", self.pressure, *PRESSURE_RANGE, "Pa")
             )
         atmosphere = bounded("atmosphere", self.atmosphere, 0.0, PRESSURE_RANGE[1], "Pa")
+        if self.gas == "none" and atmosphere != ATMOSPHERE:  # it acts on the gas alone
+            raise ParameterError(
+                "atmosphere",
+                f"left at {ATMOSPHERE:g} Pa without a gas (it sets the enclosed gas's "
+                "pressure P + atmosphere; give gas isothermal or adiabatic)",
+                self.atmosphere,
+            )
         object.__setattr__(self, "bending", bending)
         object.__setattr__(self, "atmosphere", atmosphere)
         object.__setattr__(self, "membrane", Membrane.of(self.membrane))
@@ -223,6 +232,11 @@ class Case:
     def _resolve_phi_a(self) -> tuple[float, str]:
         """The rule for phi_a: given, else the preset's measurement, else eq. (3.7)."""
         measured = _measured(self.preset_name)
+        if self.phi_a_source is not None and (
+            not isinstance(self.phi_a_source, str) or not self._known_source(self.phi_a_source)
+        ):
+            valid = "None (set by the class), 'given', 'eq. (3.7)' or 'measured (<preset>)'"
+            raise ParameterError("phi_a_source", valid, self.phi_a_source)
         if self.phi_a is None or self.phi_a == FROM_V0:
             if (
                 self.phi_a is None
@@ -230,8 +244,14 @@ class Case:
                 and measured.phi_a is not None
                 and self.at_measured_point
             ):
-                return measured.phi_a, f"measured ({self.preset_name})"
-            return self._phi_a_from_v0(), FROM_V0
+                phi_a, source = measured.phi_a, f"measured ({self.preset_name})"
+            else:
+                phi_a, source = self._phi_a_from_v0(), FROM_V0
+            if self.phi_a_source not in (None, source):  # a source the rule did not give
+                raise ParameterError(
+                    "phi_a_source", f"None (set by the class; here {source!r})", self.phi_a_source
+                )
+            return phi_a, source
         phi_a = check_phi_a(self.phi_a)
         source = self.phi_a_source or "given"
         if source == "given":
@@ -252,6 +272,12 @@ class Case:
         return phi_a_from_v0(
             self.v0, self.radius, self.wave_speed, stiffness.gas, stiffness.membrane
         )
+
+    @staticmethod
+    def _known_source(source: str) -> bool:
+        """Whether ``source`` is one of the words the class itself writes."""
+        measured = [f"measured ({name})" for name in MEASURED]
+        return source in ("given", FROM_V0, *measured)
 
     @property
     def at_measured_point(self) -> bool:
@@ -489,6 +515,8 @@ PRESETS: dict[str, Case] = {
 
 def preset(name: str) -> Case:
     """The named preset case (basketball, tennis, volleyball); see :data:`MEASURED`."""
+    if not isinstance(name, str):
+        raise ParameterError("preset", "one of " + ", ".join(sorted(PRESETS)), name)
     try:
         return PRESETS[name]
     except KeyError:

@@ -63,6 +63,18 @@ class LiftoffReport:
     warnings: tuple[str, ...] = ()
     provenance: dict[str, Any] | None = field(default=None, compare=False, repr=False)
 
+    def __repr__(self) -> str:
+        """The answer first, in SI: lifted, t_l [s], v_l [m/s], v_l/|v0|; then how and on what.
+
+        The dimensionless :attr:`result` is left to its own repr.
+        """
+        return (
+            f"LiftoffReport(lifted={self.lifted}, t_liftoff_s={self.t_liftoff_s!r}, "
+            f"v_liftoff_m_s={self.v_liftoff_m_s!r}, ratio={self.ratio!r}, "
+            f"backend={self.backend!r}, sigma={self.sigma!r}, recontact={self.recontact!r}, "
+            f"warnings={len(self.warnings)}, case={self.case!r})"
+        )
+
     @property
     def notes(self) -> list[str]:
         """Remarks the reader must see (the CLI prints them on standard error): how

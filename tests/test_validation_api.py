@@ -394,6 +394,72 @@ def _bumped(level: int, scale: float) -> Any:
     return meshio.Mesh(0.12 * points, [("triangle", mesh.cells)])
 
 
+ONE = twoball.MeshOptions("sphere", level=1)
+#: Arguments that were ignored, accepted wrongly or raised a bare exception: now refused by name.
+NO_LONGER_IGNORED: list[tuple[str, Callable[[Path], Any]]] = [
+    ("preset", lambda _: twoball.Case.preset(["tennis"])),
+    ("phi_a_source", lambda _: twoball.Case(phi_a_source="bogus")),
+    ("phi_a_source", lambda _: twoball.Case(phi_a_source="given")),  # phi_a not given
+    ("atmosphere", lambda _: twoball.Case(atmosphere=5e4)),  # no gas: it would act on nothing
+    ("progress", lambda _: twoball.liftoff(progress="x")),
+    ("progress", lambda _: twoball.fem.solve(progress="x")),
+    ("progress", lambda _: twoball.sweep({"damping": [0.1]}, progress="x")),
+    ("progress", lambda tmp: twoball.export(tmp / "x.vtu", mesh=ONE, progress="x")),
+    ("progress", lambda tmp: twoball.render(tmp / "x.png", mesh=ONE, progress="x")),
+    ("progress", lambda tmp: twoball.plot("pole", tmp / "p.png", mesh=ONE, progress="x")),
+    ("progress", lambda tmp: twoball.converge(study="modes", progress=3, out=tmp / "c")),
+    ("progress", lambda tmp: twoball.verify(fast=True, progress="x", out=tmp / "r")),
+    ("values", lambda _: twoball.sweep({"damping": "abc"})),
+    ("values", lambda _: twoball.sweep({"damping": [[0.1, "x"]]})),
+    ("out", lambda _: twoball.converge(study="modes", out=5)),
+    ("out", lambda _: twoball.verify(fast=True, out=[1])),
+    ("frames", lambda tmp: twoball.export(tmp / "x.pvd", mesh=ONE, frames="0,1")),
+    ("frames", lambda tmp: twoball.export(tmp / "x.pvd", mesh=ONE, frames=[[0.0]])),
+    ("frames", lambda tmp: twoball.render(tmp / "x.gif", mesh=ONE, frames=[["0.001"]])),
+    (
+        "mesh",
+        lambda _: twoball.liftoff(
+            body=twoball.Body(0.1), mesh=twoball.MeshOptions(geometry="exact")
+        ),
+    ),
+    ("phi_a", lambda _: twoball.sweep({"v0": [3.0, 4.0]}, twoball.Case(phi_a=2.5))),
+    ("phi_a", lambda _: twoball.sweep({"wave_speed": [300.0]}, twoball.Case(phi_a=2.5))),
+    (
+        "recontact",
+        lambda tmp: twoball.plot("waterfall", tmp / "p.png", mesh=ONE, recontact="paper"),
+    ),
+    ("levels", lambda tmp: twoball.converge(study="h", levels="", out=tmp / "c")),
+    ("modes_list", lambda tmp: twoball.converge(study="modes", modes_list="", out=tmp / "c")),
+    ("modes_list", lambda tmp: twoball.converge(study="modes", modes_list="30,100000,1000000")),
+    ("scheduler", lambda _: twoball.sweep({"damping": [0.1]}, scheduler="")),
+    ("scheduler", lambda _: twoball.sweep({"damping": [0.1]}, scheduler="::::")),
+    ("scheduler", lambda tmp: twoball.reproduce(tmp / "rep", only="table1", scheduler="")),
+    (
+        "warp",
+        lambda tmp: twoball.render(tmp / "x.png", mesh=ONE, view=twoball.RenderOptions(warp=1e308)),
+    ),
+    ("modes", lambda tmp: twoball.verify(twoball.Case(modes=3), fast=True, out=tmp / "r")),
+    ("youngs_modulus", lambda _: flexural_rigidity(1e7, 1.0)),
+    ("modes", lambda _: twoball.liftoff(twoball.Case(modes=2000), body=twoball.Body(0.1))),
+    (
+        "modes",
+        lambda _: twoball.liftoff(twoball.Case(modes=60), backend="fem", body=twoball.Body(0.1)),
+    ),
+    ("modes", lambda _: _limited("20s", twoball.liftoff, twoball.Case.preset("tennis", modes=960))),
+]
+
+
+def _limited(max_time: str, function: Callable[..., Any], *args: Any) -> Any:
+    """``function(*args)`` under the time limit ``max_time``."""
+    from twoball._common.budget import limits
+
+    with limits(max_time=max_time):
+        return function(*args)
+
+
+EXTRA += NO_LONGER_IGNORED
+
+
 def _under(tmp: Path, path: str) -> str:
     """``path`` inside ``tmp`` unless absolute or empty."""
     return path if not path or path.startswith("/") else str(tmp / path)

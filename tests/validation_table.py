@@ -532,3 +532,59 @@ NOT_APPLICABLE: list[tuple[str, list[str]]] = [
     ("--max-time", ["liftoff", "--max-time", "soon"]),
     ("--preset", ["liftoff", "--preset", "bogus"]),
 ]
+
+#: Options that used to be ignored (or to give a traceback, or to blame another
+#: option): each is now refused in one line naming the option the user gave.
+NO_LONGER_IGNORED: list[tuple[str, list[str]]] = [
+    ("--geometry", ["liftoff", "--mass-ratio", "0.1", "--geometry", "exact"]),
+    ("--phi-a", ["sweep", "--param", "v0", "--values", "2:4:3", "--phi-a", "2.5"]),
+    ("--phi-a", ["sweep", "--param", "radius", "--values", "0.1:0.2:3", "--phi-a", "2.5"]),
+    (
+        "--pressure",
+        ["sweep", "--param", "wave-speed", "--values", "300:400:3"]
+        + ["--pressure", "77200", "--mass", "0.567"],
+    ),
+    (
+        "--pressure",
+        ["sweep", "--param", "radius", "--values", "0.1:0.2:3"]
+        + ["--pressure", "77200", "--mass", "0.567"],
+    ),
+    (
+        "--recontact",
+        ["plot", "waterfall", "--level", "1", "--recontact", "paper"] + ["--out", "{tmp}/p.png"],
+    ),
+    *[
+        ("--atmosphere", [*argv, "--atmosphere", "50000"])
+        for argv in (
+            ["liftoff"],
+            ["liftoff", "--preset", "tennis", "--gas", "none"],
+            ["sweep", "--param", "damping", "--values", "0:0.5:3"],
+            ["converge", "modes", "--out", "{tmp}/c"],
+            ["verify", "--fast", "--out", "{tmp}/r"],
+            ["export", "--level", "1", "--out", "{tmp}/x.vtu"],
+            ["render", "--level", "1", "--out", "{tmp}/x.png"],
+            ["plot", "pole", "--level", "1", "--out", "{tmp}/p.png"],
+        )
+    ],
+    ("--levels", ["converge", "h", "--levels", "", "--out", "{tmp}/c"]),
+    ("--modes-list", ["converge", "modes", "--modes-list", "", "--out", "{tmp}/c"]),
+    ("--scheduler", ["sweep", "--param", "damping", "--values", "0:0.5:3", "--scheduler", ""]),
+    ("--scheduler", ["sweep", "--param", "damping", "--values", "0:0.5:3", "--scheduler", "::::"]),
+    ("--scheduler", ["reproduce", "--only", "table1", "--scheduler", "", "--out", "{tmp}/rep"]),
+    # |u| is known once solved: refused then, after the progress line (--quiet: none)
+    ("--warp", ["render", "-q", "--level", "1", "--warp", "1e308", "--out", "{tmp}/x.png"]),
+    ("--plot", ["liftoff", "--mass-ratio", "0", "--plot", "{tmp}/x.png"]),
+    ("--youngs-modulus", ["liftoff", "--youngs-modulus", "1e7", "--thickness", "1"]),
+    ("--mesh-file", ["converge", "--study", "h", "--mesh-file", "X", "--out", "{tmp}/c"]),
+    ("--modes", ["verify", "--modes", "3", "--fast", "--out", "{tmp}/r"]),
+    (
+        "--modes-list",
+        ["converge", "--study", "modes", "--modes-list", "30,100000,1000000"]
+        + ["--out", "{tmp}/c"],
+    ),
+    ("--modes", ["liftoff", "--mass-ratio", "0.1", "--modes", "2000"]),
+    ("--modes", ["liftoff", "--mass-ratio", "0.1", "--modes", "2000", "--max-time", "30s"]),
+    ("--modes", ["liftoff", "--preset", "tennis", "--modes", "960", "--max-time", "20s"]),
+    ("--radius", ["liftoff", "--radius", "1", "--radius", "2"]),
+]
+NOT_APPLICABLE.extend(NO_LONGER_IGNORED)

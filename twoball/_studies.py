@@ -7,11 +7,16 @@ write a report directory (report.md, results.json, CSV tables, PNG plots).
 from __future__ import annotations
 
 import os
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
+from twoball._common.budget import timed
 from twoball._common.errors import ParameterError
-from twoball._common.progress import Step, silent
+from twoball._common.progress import Step, check_progress, silent
 from twoball.modal.parameters import Case
+
+if TYPE_CHECKING:
+    from twoball.verify.checks.results import VerifyResult
+    from twoball.verify.studies.result import StudyResult
 
 __all__ = ["converge", "parse_levels", "verify", "verify_steps"]
 
@@ -37,6 +42,7 @@ def parse_levels(text: str, mesh: str, study: str = "h") -> tuple[int, ...]:
     return tuple(int(v) for v in levels)
 
 
+@timed
 def converge(
     case: Case | None = None,
     *,
@@ -51,7 +57,7 @@ def converge(
     t_end: float | None = None,
     out: str | os.PathLike[str] | None = None,
     progress: Step = silent,
-) -> Any:
+) -> StudyResult:
     """A refinement study: observed orders, Richardson extrapolation and GCI.
 
     Parameters
@@ -96,6 +102,7 @@ def converge(
     from twoball.verify.studies.result import STUDIES
     from twoball.verify.studies.time_step import run_dt_study
 
+    check_progress(progress)
     case = Case.preset("basketball") if case is None else case
     if not isinstance(case, Case):
         raise ParameterError("case", "a twoball.Case", type(case).__name__)
@@ -128,10 +135,15 @@ def converge(
         if levels is not None:
             raise ParameterError("levels", "left out with study modes (use modes_list)", levels)
         mode_list = parse_modes(modes_list) if modes_list is not None else None
+        from twoball.modal.report import t_end_dimensionless
+        from twoball.verify.studies.modes import DEFAULT_MODES, check_modes_study
+
+        check_modes_study(mode_list or DEFAULT_MODES, t_end_dimensionless(case, t_end))
     else:
         if modes_list is not None:
             raise ParameterError("modes_list", "given only with study modes", modes_list)
-        level_list = parse_levels(levels or DEFAULT_LEVELS[(study, mesh, order)], mesh, study)
+        chosen = DEFAULT_LEVELS[(study, mesh, order)] if levels is None else levels
+        level_list = parse_levels(chosen, mesh, study)
     target = None
     if out is not None:
         from twoball.verify.output.report_files import check_output_dir
@@ -164,6 +176,7 @@ def converge(
     return result
 
 
+@timed
 def verify(
     case: Case | None = None,
     *,
@@ -174,7 +187,7 @@ def verify(
     t_end: float | None = None,
     out: str | os.PathLike[str] | None = None,
     progress: Step | None = None,
-) -> Any:
+) -> VerifyResult:
     """Every backend against the closed form, with PASS/FAIL per check.
 
     Parameters
@@ -208,12 +221,18 @@ def verify(
     from twoball.verify.checks.config import config
     from twoball.verify.checks.run import run_verify
 
+    check_progress(progress)
     case = Case.preset("basketball") if case is None else case
     if not isinstance(case, Case):
         raise ParameterError("case", "a twoball.Case", type(case).__name__)
     _paper_model(case, "verify")
     if thorough and fast:
         raise ParameterError("fast", "left out with thorough", fast)
+    from twoball.verify.studies.fem_runs import EIGEN_DEGREES
+
+    if case.modes < max(EIGEN_DEGREES):  # the eigenvalue checks need the modes up to l = 6
+        valid = f"at least {max(EIGEN_DEGREES)} for verify (its eigenvalue checks cover l = 1..6)"
+        raise ParameterError("modes", valid, case.modes)
     target = None
     if out is not None:
         from twoball.verify.output.report_files import check_output_dir

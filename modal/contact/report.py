@@ -118,6 +118,18 @@ class ContactReport:
     system: ContactSystem | None = field(default=None, repr=False, compare=False)
     provenance: dict[str, Any] | None = field(default=None, compare=False, repr=False)
 
+    def __repr__(self) -> str:
+        """The answer first, in SI: lifted, final separation [s], v1 [m/s], v1/|v0|, events."""
+        impacts = 0 if self.history is None else len(self.history.impacts)
+        events = 0 if self.history is None else len(self.history.events)
+        return (
+            f"ContactReport(lifted={self.lifted}, t_liftoff_s={self.t_liftoff_s!r}, "
+            f"v_liftoff_m_s={self.v_liftoff_m_s!r}, ratio={self.ratio!r}, "
+            f"mass_ratio={self.mass_ratio!r}, contact_radius_m={self.contact_radius_m!r}, "
+            f"restitution={self.restitution!r}, impacts={impacts}, events={events}, "
+            f"backend={self.backend!r}, sigma={self.sigma!r}, case={self.case!r})"
+        )
+
     @property
     def result(self) -> Any:
         """The dimensionless outcome: the :class:`ContactHistory` (or the massless
@@ -275,8 +287,16 @@ def solve_contact(
     samples_per_period: int = 32,
 ) -> ContactReport:
     """Run the shared contact solver on any backend's series and cap averages."""
+    from twoball.modal.contact.cost import check_contact
+
     system = None
+    kept, top = len(series.omega), float(np.max(series.omega, initial=0.0))
     if mass_ratio == 0.0:
+        from twoball.modal.cost import series_estimate
+
+        from twoball._common.budget import check, options
+
+        check(options(modes=case.modes), series_estimate(case.modes, t_end, kept, top))
         cap_series = ModalSeries(
             series.omega,
             series.coefficients,
@@ -288,6 +308,7 @@ def solve_contact(
         result = find_liftoff(cap_series, case.gamma, t_end=t_end)
         history = None
     else:
+        check_contact(kept, top, t_end, modes=case.modes, mass_ratio=mass_ratio)
         system = ContactSystem.from_series(series, contact, mass_ratio, case.gamma)
         history = integrate(system, t_end, restitution, samples_per_period)
         result = None

@@ -151,7 +151,7 @@ def solve_from_options(args: argparse.Namespace) -> twoball.LiftoffReport:
         "damping": damping_options(args),
     }
     case = case_from_options(args)
-    if args.backend != "fem":  # the closed form takes milliseconds
+    if args.backend != "fem" and options["body"] is None:  # the closed form: milliseconds
         return twoball.liftoff(case, **options)
     with Reporter("liftoff", delay=QUICK) as progress:
         return twoball.liftoff(case, progress=progress, **options)

@@ -21,6 +21,7 @@ returns SI (m, m/s, m/s^2, s) unless its docstring says otherwise.
 from __future__ import annotations
 
 import json
+import math
 import os
 from collections.abc import Sequence
 from dataclasses import dataclass, field, replace
@@ -566,6 +567,7 @@ def ball_scene(model: BallModel, times_s: np.ndarray, backend: str = "fem") -> B
         case.radius,
         report.t_liftoff_s if report.result.lifted else None,
         label,
+        settle_time=math.pi * scale.time,  # pi / c: the flattening has crossed the ball
     )
 
 
@@ -752,12 +754,19 @@ def window_s(case: Case, t_end_s: float | None = None) -> float:
 
 
 def check_times(end: float, times_s: Sequence[float], name: str = "times") -> np.ndarray:
-    """``times_s`` [s] as a sorted array, each inside the modelled window [0, ``end``]."""
-    times = np.asarray(sorted({float(t) for t in times_s}), dtype=float)
+    """``times_s`` [s] as a sorted array, each inside the modelled window [0, ``end``].
+
+    Each time must be a real number (a nested list or a text is refused by name).
+    """
+    from numbers import Real
+
+    valid = f"times in [0, {end:.6g}] s (the modelled window)"
+    given = list(times_s)
+    if any(isinstance(t, bool) or not isinstance(t, Real) for t in given):
+        raise ParameterError(name, valid, given)
+    times = np.asarray(sorted({float(t) for t in given}), dtype=float)
     if times.size == 0 or np.any(~np.isfinite(times)) or times.min() < 0 or times.max() > end:
-        raise ParameterError(
-            name, f"times in [0, {end:.6g}] s (the modelled window)", list(times_s)
-        )
+        raise ParameterError(name, valid, given)
     return times
 
 
@@ -1002,6 +1011,7 @@ def contact_scene(model: CoupledModel, times_s: np.ndarray, backend: str) -> Any
         scene.radius,
         scene.t_liftoff,
         f"{scene.label}, mu = {report.mass_ratio:g}",
+        settle_time=scene.settle_time,
         contact=model.states(backend, scene.times).contact,
         impacts=np.array(impacts),
         mass_ratio=report.mass_ratio,

@@ -231,6 +231,14 @@ class SweepPoint:
     #: how phi_a was chosen over the whole sweep (:func:`phi_a_rule`), set by twoball.sweep
     phi_a_rule: str | None = None
 
+    def __repr__(self) -> str:
+        """The answer first, in SI (t_l [s], v_l [m/s], v_l/|v0|), then the point's case."""
+        return (
+            f"SweepPoint(index={self.index}, t_liftoff_s={self.t_liftoff_s!r}, "
+            f"v_liftoff_m_s={self.v_liftoff_m_s!r}, ratio={self.ratio!r}, "
+            f"error={self.error!r}, case={self.case!r})"
+        )
+
     @property
     def ratio(self) -> float:
         """``v_l / |v0|``; NaN without lift-off or on error."""
