@@ -47,16 +47,15 @@ def converge(
     case: Case | None = None,
     *,
     study: str,
-    mesh: str | None = None,
-    order: int | None = None,
+    mesh: Any = None,
     levels: str | None = None,
     modes_list: str | None = None,
-    geometry: str | None = None,
+    stepping: Any = None,
     sigma: str = "lanczos",
     recontact: str = "window",
-    t_end: float | None = None,
     out: str | os.PathLike[str] | None = None,
     progress: Step = silent,
+    **deprecated: Any,
 ) -> StudyResult:
     """A refinement study: observed orders, Richardson extrapolation and GCI.
 
@@ -66,23 +65,28 @@ def converge(
         The impact (default the basketball preset).
     study : {"h", "order", "modes", "dt"}
         Mesh refinement, P1 against P2, Legendre truncation N, or time step.
-    mesh : {"sphere", "axisym"}, optional
-        Default sphere (axisym for ``dt``); not used by ``modes``.
-    order : {1, 2, 3, 4}, optional
-        Default 2, as everywhere; ``order`` runs P1 to P4 and takes none.
-    geometry : {"isoparametric", "exact"}, optional
-        Discrete sphere of ``h`` and ``order`` on the sphere (default
-        isoparametric); refused on the line and with ``modes`` and ``dt``.
+    mesh : {"sphere", "axisym"} or MeshOptions, optional
+        The mesh kind (default sphere; axisym for ``dt``; none for ``modes``),
+        or :class:`~twoball.MeshOptions` for its kind, element order (default
+        2; ``order`` runs P1 to P4 and takes none) and geometry (``exact`` on
+        the sphere with ``h`` and ``order`` only); its size is refused (the
+        ``levels`` set it).
     levels : str, optional
         ``"A:B"``; default per study and mesh.
     modes_list : str, optional
         ``modes`` study: ``"30,60,120"`` or ``"30:480"`` (doubling).
-    sigma, recontact, t_end
-        Filter, re-contact horizon and window [s], as in :func:`twoball.liftoff`.
+    stepping : Stepping, optional
+        The window ``t_end`` [s] (default 4 pi / c); no time step (``dt`` sets
+        its own steps by ``levels``).
+    sigma, recontact
+        Filter and re-contact horizon, as in :func:`twoball.liftoff`.
     out : path, optional
         Report directory to write (an earlier report there is replaced).
     progress : callable
-        Called with a short text as each step starts (:class:`twoball._common.progress.Reporter`).
+        Called with a short text as each step starts (:class:`~twoball.Reporter`).
+    **deprecated
+        ``order``, ``geometry`` and ``t_end`` of version 0.2, with a
+        :class:`DeprecationWarning`.
 
     Returns
     -------
@@ -103,6 +107,7 @@ def converge(
     from twoball.verify.studies.time_step import run_dt_study
 
     check_progress(progress)
+    mesh, order, geometry, t_end = _study_options(mesh, stepping, deprecated)
     case = Case.preset("basketball") if case is None else case
     if not isinstance(case, Case):
         raise ParameterError("case", "a twoball.Case", type(case).__name__)
@@ -295,3 +300,53 @@ def _paper_model(case: Case, what: str) -> None:
     if case.rayleigh is not None:
         valid = f"left out for {what} (they check the paper's ratio D, eq. (3.14))"
         raise ParameterError("rayleigh", valid, case.rayleigh.as_dict())
+
+
+def _study_options(
+    mesh: Any, stepping: Any, deprecated: dict[str, Any]
+) -> tuple[str | None, int | None, str | None, float | None]:
+    """Mesh kind, element order, geometry (None: not given) and window [s] of a study.
+
+    ``mesh`` is a kind name or a :class:`~twoball.MeshOptions` whose size is its
+    default (the study's ``levels`` set the sizes); the 0.2 keywords ``order``,
+    ``geometry`` and ``t_end`` are folded in with a :class:`DeprecationWarning`.
+    """
+    import warnings
+
+    from twoball.fem_membrane.options import DEFAULT_ELEMENTS, DEFAULT_LEVEL, FILE, MeshOptions
+    from twoball.modal.stepping import Stepping
+
+    unknown = set(deprecated) - {"order", "geometry", "t_end"}
+    if unknown:
+        raise TypeError(f"twoball.converge() got an unexpected keyword argument {unknown.pop()!r}")
+    given = {k: v for k, v in deprecated.items() if v is not None}
+    if given:
+        warnings.warn(
+            "twoball.converge: the keywords " + ", ".join(sorted(given)) + " are deprecated; "
+            "pass mesh=MeshOptions(kind, order=..., geometry=...) and stepping=Stepping(t_end=...)",
+            DeprecationWarning,
+            stacklevel=3,
+        )
+    order, geometry, t_end = given.get("order"), given.get("geometry"), given.get("t_end")
+    if isinstance(mesh, MeshOptions):
+        if order is not None or geometry is not None:
+            name = "order" if order is not None else "geometry"
+            raise ParameterError(name, "left out with a MeshOptions (set it there)", given[name])
+        if mesh.kind == FILE:
+            raise ParameterError("mesh", "sphere or axisym for a study (no mesh file)", mesh.label)
+        size = mesh.level if mesh.kind != "axisym" else mesh.elements
+        default = DEFAULT_LEVEL if mesh.kind != "axisym" else DEFAULT_ELEMENTS
+        if size != default:
+            valid = "a MeshOptions without its size in a study (levels set the sizes)"
+            raise ParameterError("mesh", valid, mesh.label)
+        order = mesh.order if mesh.order != 2 else None
+        geometry = mesh.geometry if mesh.geometry != "isoparametric" else None
+        mesh = mesh.kind
+    if stepping is not None:
+        if not isinstance(stepping, Stepping):
+            raise ParameterError("stepping", "a twoball.Stepping", type(stepping).__name__)
+        stepping.refuse("in a study (the study sets its own steps)", "scheme", "dt", "route")
+        if t_end is not None and stepping.t_end is not None:
+            raise ParameterError("t_end", "left out with stepping (set it there)", t_end)
+        t_end = stepping.t_end if stepping.t_end is not None else t_end
+    return mesh, order, geometry, t_end

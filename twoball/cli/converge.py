@@ -12,6 +12,7 @@ from typing import Any
 
 from rich.table import Table
 
+import twoball
 from twoball import _choices
 from twoball._common.errors import ParameterError
 from twoball._common.strict_json import json_text
@@ -49,14 +50,12 @@ def run(args: argparse.Namespace) -> int:
     out = args.out if args.out is not None else f"twoball-converge-{args.study}"
     options = {
         "study": args.study,
-        "mesh": args.mesh,
-        "order": args.order,
-        "geometry": args.geometry,
+        "mesh": _mesh(args),
         "levels": args.levels,
         "modes_list": args.modes_list,
+        "stepping": None if args.t_end is None else twoball.Stepping(t_end=args.t_end),
         "sigma": args.sigma,
         "recontact": args.recontact,
-        "t_end": args.t_end,
         "out": out,
     }
     if args.study == "modes" and args.modes is not None:
@@ -144,3 +143,18 @@ def register(parser: argparse.ArgumentParser) -> None:
     )
     parser.add_argument("--json", action="store_true", help="print the results as one JSON object")
     parser.set_defaults(run=run)
+
+
+def _mesh(args: argparse.Namespace) -> str | twoball.MeshOptions | None:
+    """``--mesh``, ``--order``, ``--geometry`` as the study's mesh (None: the study's default)."""
+    fields = {n: getattr(args, n) for n in ("order", "geometry") if getattr(args, n) is not None}
+    if not fields:
+        return args.mesh
+    if args.study == "modes":  # the Legendre series has no mesh
+        name = next(iter(fields))
+        raise ParameterError(name, "left out with study modes (no mesh)", fields[name])
+    if args.study == "order" and "order" in fields:
+        valid = "left out with study order (it compares P1 to P4)"
+        raise ParameterError("order", valid, fields["order"])
+    kind = args.mesh or ("axisym" if args.study == "dt" else "sphere")
+    return twoball.MeshOptions(kind, **fields)
