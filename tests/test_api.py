@@ -103,7 +103,7 @@ def test_fem_sphere_api_equals_cli(capsys):
     argv = ("--backend", "fem", "--mesh", "sphere", "--level", "2", "--order", "2", "--v0", "3")
     cli, _ = cli_json(capsys, "liftoff", *argv)
     case = twoball.Case.preset("basketball", v0=3.0)
-    api = twoball.fem.solve(case, mesh="sphere", level=2, order=2)
+    api = twoball.fem.solve(case, mesh=twoball.MeshOptions("sphere", level=2, order=2))
     same_numbers(api.as_dict(), cli)
     assert cli["phi_a_source"] == "eq. (3.7)" and cli["notes"]
     # the FE lift-off agrees with the closed form to its discretisation error (sphere L2 P2)
@@ -123,7 +123,7 @@ def test_sweep_api_equals_cli(capsys):
 
 def test_eigen_api_equals_cli(capsys):
     cli, _ = cli_json(capsys, "eigen", "--mesh", "axisym", "--elements", "50", "--count", "5")
-    assert twoball.fem.eigen(mesh="axisym", elements=50, count=5) == cli
+    assert twoball.fem.eigen(twoball.MeshOptions("axisym", elements=50), count=5) == cli
     # l (l + 1), eq. (3.11): P2 in x = cos(phi) holds P_1, P_2 exactly; l <= 5 to 1e-4
     assert all(r["relative_error"] < 1e-10 for r in cli[1:3])
     assert all(r["relative_error"] < 1e-4 for r in cli[3:])
@@ -148,7 +148,7 @@ def test_mesh_file_api_equals_cli(capsys, ball_file):
     argv = ("--backend", "fem", "--mesh-file", str(path), "--order", "2", "--v0", "3")
     cli, _ = cli_json(capsys, "liftoff", *argv)
     case = twoball.Case.preset("basketball", v0=3.0)
-    api = twoball.liftoff(case, backend="fem", mesh=str(path), order=2)
+    api = twoball.liftoff(case, backend="fem", mesh=twoball.MeshOptions(file=str(path), order=2))
     same_numbers(api.as_dict(), cli)
     assert cli["mesh_file"]["radius"] == pytest.approx(0.12, rel=1e-12)
     assert cli["mesh_file"]["center"] == pytest.approx([1.0, 2.0, 3.0], rel=1e-12)
@@ -158,12 +158,12 @@ def test_mesh_file_api_equals_cli(capsys, ball_file):
     from skfem import MeshTri1
 
     for source in (meshio.read(path), MeshTri1(points.T, cells.T)):
-        again = twoball.fem.solve(case, mesh=source, order=2)
+        again = twoball.fem.solve(case, mesh=twoball.MeshOptions(file=source, order=2))
         assert again.t_liftoff_s == pytest.approx(api.t_liftoff_s, rel=1e-12)
         assert again.v_liftoff_m_s == pytest.approx(api.v_liftoff_m_s, rel=1e-12)
     # second method: the generated icosphere it was written from, up to round-off of the
     # translation and scaling (a discretisation difference would be ~1e-3)
-    generated = twoball.fem.solve(case, mesh="sphere", level=2, order=2)
+    generated = twoball.fem.solve(case, mesh=twoball.MeshOptions("sphere", level=2, order=2))
     assert api.t_liftoff_s == pytest.approx(generated.t_liftoff_s, rel=1e-9)
     assert api.v_liftoff_m_s == pytest.approx(generated.v_liftoff_m_s, rel=1e-9)
 
@@ -259,12 +259,14 @@ def test_sweep_refuses_unknown_parameters():
 @pytest.mark.parametrize(
     ("call", "name"),
     [
-        (lambda: twoball.liftoff(level=2), "level"),
+        (lambda: twoball.liftoff(mesh=twoball.MeshOptions(level=2)), "mesh"),
         (lambda: twoball.liftoff(mesh="axisym"), "mesh"),
         (lambda: twoball.liftoff(backend="spectral"), "backend"),
-        (lambda: twoball.fem.solve(mesh="axisym", level=2), "level"),
-        (lambda: twoball.fem.solve(mesh="sphere", elements=100), "elements"),
-        (lambda: twoball.fem.solve(mesh="axisym", dt=1e-5), "dt"),
+        (lambda: twoball.fem.solve(mesh=twoball.MeshOptions("axisym", level=2)), "level"),
+        (lambda: twoball.fem.solve(mesh=twoball.MeshOptions("sphere", elements=100)), "elements"),
+        (lambda: twoball.fem.solve(mesh="axisym", stepping=twoball.Stepping(dt=1e-5)), "dt"),
+        (lambda: twoball.liftoff(stepping=twoball.Stepping(scheme="alpha")), "scheme"),
+        (lambda: twoball.liftoff(body=twoball.Body(-0.1)), "mass_ratio"),
         (lambda: twoball.fem.solve(mesh="cube"), "mesh"),
         (lambda: twoball.Case(damping=2.0), "damping"),
         (lambda: twoball.Case.preset("squash"), "preset"),

@@ -42,9 +42,9 @@ def test_sizes_and_durations_parse() -> None:
     assert parse_seconds("2h") == 7200.0
     assert parse_seconds("3600") == 3600.0
     for bad in ("12x", "-1GiB", "0", "nan", "GiB"):
-        with pytest.raises(ParameterError, match="--max-memory must be"):
+        with pytest.raises(ParameterError, match="^max_memory must be a size > 0"):
             parse_bytes(bad)
-    with pytest.raises(ParameterError, match="--max-time must be"):
+    with pytest.raises(ParameterError, match="^max_time must be"):
         parse_seconds("soon")
 
 
@@ -66,10 +66,13 @@ def test_refusal_message_names_option_estimate_and_limit() -> None:
     with pytest.raises(BudgetError) as caught:
         limit.check("--modes 100000", series_estimate(100000, 4 * 3.141592653589793))
     assert str(caught.value) == (
-        "--modes 100000 needs ~15 GiB of memory; limit 11.7 GiB (set --max-memory)"
+        "--modes 100000 needs ~15 GiB of memory; limit 11.7 GiB "
+        "(raise the memory limit, max_memory)"
     )
     assert isinstance(caught.value, ParameterError) and caught.value.name == "--modes"
-    with pytest.raises(BudgetError, match=r"^--dt 1e-09 needs ~.* limit 5 min \(set --max-time\)$"):
+    with pytest.raises(
+        BudgetError, match=r"^--dt 1e-09 needs ~.* limit 5 min \(raise the time limit, max_time\)$"
+    ):
         limit.check("--dt 1e-09", Estimate(GiB, 1e6))
     assert limit.check("--modes 30", Estimate(200 * MiB, 1.0)) == Estimate(200 * MiB, 1.0)
 
@@ -155,9 +158,14 @@ def test_each_absurd_size_is_refused_before_any_allocation(tmp_path: Path) -> No
         assert len(lines) == 1 and lines[0].startswith("twoball: error: "), (argv, err)
         assert "Traceback" not in err
     refused = [err for _, err in results[:-1]]
-    assert "--modes 20000 needs ~" in refused[0] and "(set --max-time)" in refused[0]
+    assert (
+        "--modes 20000 needs ~" in refused[0] and "(raise the time limit, max_time)" in refused[0]
+    )
     assert "--modes 100000 needs ~15 GiB of memory" in refused[1]
-    assert "--t-end 1e+06 needs ~" in refused[2] and "(set --max-memory)" in refused[2]
+    assert (
+        "--t-end 1e+06 needs ~" in refused[2]
+        and "(raise the memory limit, max_memory)" in refused[2]
+    )
     assert "--level 9" in refused[3] and "--level 50" in refused[4]
     assert "--dt 1e-09 needs ~" in refused[5]
     assert "(1000000 points) needs ~" in refused[6]

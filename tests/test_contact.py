@@ -25,6 +25,7 @@ from twoball.modal.parameters import Case
 from twoball.modal.series import ModalSeries
 
 import twoball
+from twoball import Body
 from twoball._common.errors import ParameterError
 
 BASKETBALL = Case.preset("basketball")
@@ -57,7 +58,7 @@ def test_cap_average_tends_to_pole_value():
 def test_massless_mode_recovers_todays_pole_result():
     """mu = 0 on a cap of a = 1e-5 m: the paper's criteria on the cap = today's pole result."""
     today = twoball.liftoff(BASKETBALL)
-    massless = twoball.liftoff(BASKETBALL, mass_ratio=0.0, contact_radius=1e-5)
+    massless = twoball.liftoff(BASKETBALL, body=Body(0.0, contact_radius=1e-5))
     assert massless.t_liftoff_s == pytest.approx(today.t_liftoff_s, rel=1e-4)
     assert massless.v_liftoff_m_s == pytest.approx(today.v_liftoff_m_s, rel=1e-4)
 
@@ -182,30 +183,40 @@ def test_liftoff_without_mass_ratio_is_unchanged():
 
 
 def test_energy_option_both_deforms_more():
-    ball = twoball.liftoff(BASKETBALL, mass_ratio=0.1)
-    both = twoball.liftoff(BASKETBALL, mass_ratio=0.1, energy="both")
+    ball = twoball.liftoff(BASKETBALL, body=Body(0.1))
+    both = twoball.liftoff(BASKETBALL, body=Body(0.1, energy="both"))
     assert both.as_dict()["phi_a_rad"] < ball.as_dict()["phi_a_rad"]  # eq. (3.7) at larger v0
 
 
+def _contact(body: Body, **kwargs):
+    return twoball.liftoff(BASKETBALL, body=body, **kwargs)
+
+
 @pytest.mark.parametrize(
-    ("kwargs", "name"),
+    ("call", "name"),
     [
-        ({"mass_ratio": -1.0}, "mass_ratio"),
-        ({"mass_ratio": float("nan")}, "mass_ratio"),
-        ({"mass_ratio": 0.1, "contact_radius": 0.2}, "contact_radius"),
-        ({"mass_ratio": 0.1, "contact_radius": 0.0}, "contact_radius"),
-        ({"mass_ratio": 0.1, "restitution": 1.5}, "restitution"),
-        ({"mass_ratio": 0.1, "energy": "all"}, "energy"),
-        ({"mass_ratio": 0.1, "backend": "spectral"}, "backend"),
-        ({"mass_ratio": 0.1, "backend": "fem", "scheme": "alpha"}, "scheme"),
-        ({"mass_ratio": 0.1, "backend": "fem", "mesh": "axisym", "level": 2}, "level"),
-        ({"mass_ratio": 0.1, "recontact": "paper"}, "recontact"),
-        ({"contact_radius": 0.01}, "contact_radius"),
+        (lambda: _contact(Body(-1.0)), "mass_ratio"),
+        (lambda: _contact(Body(float("nan"))), "mass_ratio"),
+        (lambda: _contact(Body(0.1, contact_radius=0.2)), "contact_radius"),  # a >= R = 0.12 m
+        (lambda: _contact(Body(0.1, contact_radius=0.0)), "contact_radius"),
+        (lambda: _contact(Body(0.1, restitution=1.5)), "restitution"),
+        (lambda: _contact(Body(0.1, energy="all")), "energy"),
+        (lambda: _contact(Body(0.1), backend="spectral"), "backend"),
+        (
+            lambda: _contact(Body(0.1), backend="fem", stepping=twoball.Stepping(scheme="alpha")),
+            "scheme",
+        ),
+        (
+            lambda: _contact(Body(0.1), backend="fem", mesh=twoball.MeshOptions("axisym", level=2)),
+            "level",
+        ),
+        (lambda: _contact(Body(0.1), recontact="paper"), "recontact"),
+        (lambda: _contact(Body(0.1), damping=twoball.Rayleigh()), "damping"),
     ],
 )
-def test_bad_contact_input_names_the_parameter(kwargs, name):
+def test_bad_contact_input_names_the_parameter(call, name):
     with pytest.raises(twoball.ParameterError) as info:
-        twoball.liftoff(BASKETBALL, **kwargs)
+        call()
     assert info.value.name == name
 
 
@@ -221,7 +232,7 @@ def test_cli_mass_ratio_json_matches_api():
     out = _cli("liftoff", "--mass-ratio", "0.004", "--contact-radius", "0.006", "--json")
     assert out.returncode == 0, out.stderr
     data = json.loads(out.stdout)
-    api = twoball.liftoff(BASKETBALL, mass_ratio=0.004, contact_radius=0.006)
+    api = twoball.liftoff(BASKETBALL, body=Body(0.004, contact_radius=0.006))
     assert data["v_liftoff_m_s"] == api.v_liftoff_m_s
     assert data["impacts"] == len(api.history.impacts)
 
@@ -240,7 +251,7 @@ def test_converges_in_modes_at_second_order():
     v = {}
     for modes in (30, 60, 120):
         case = BASKETBALL.derive(modes=modes)
-        v[modes] = twoball.liftoff(case, mass_ratio=0.101, contact_radius=0.012).v_liftoff_m_s
+        v[modes] = twoball.liftoff(case, body=Body(0.101, contact_radius=0.012)).v_liftoff_m_s
     order = math.log2(abs(v[60] - v[30]) / abs(v[120] - v[60]))
     assert 1.6 < order < 2.6
 
@@ -249,25 +260,24 @@ def test_event_grid_does_not_change_the_result():
     """The events are exact roots: 16, 32 or 64 grid points per period give the same v1."""
     from twoball.modal.contact.report import legendre_contact
 
-    v = [
-        legendre_contact(BASKETBALL, 0.101, 0.012, samples_per_period=n).v_liftoff_m_s
-        for n in (16, 64)
-    ]
+    body = Body(0.101, contact_radius=0.012)
+    v = [legendre_contact(BASKETBALL, body, samples_per_period=n).v_liftoff_m_s for n in (16, 64)]
     assert v[0] == pytest.approx(v[1], rel=1e-10)
 
 
 def test_mass_ratio_sweep_equals_single_runs():
-    result = twoball.sweep({"mass_ratio": [0.004, 0.101]}, BASKETBALL, contact_radius=0.03)
+    cap = Body(0.0, contact_radius=0.03)  # the other fields of every swept mass ratio
+    result = twoball.sweep({"mass_ratio": [0.004, 0.101]}, BASKETBALL, body=cap)
     for point, mu in zip(result.points, (0.004, 0.101), strict=True):
-        single = twoball.liftoff(BASKETBALL, mass_ratio=mu, contact_radius=0.03)
+        single = twoball.liftoff(BASKETBALL, body=Body(mu, contact_radius=0.03))
         assert point.v_liftoff_m_s == single.v_liftoff_m_s
         assert point.as_dict()["mass_ratio"] == mu
     with pytest.raises(twoball.ParameterError) as info:
         twoball.sweep({"mass_ratio": [-1.0]}, BASKETBALL)
     assert info.value.name == "mass_ratio"
     with pytest.raises(twoball.ParameterError) as info:
-        twoball.sweep({"damping": [0.1]}, BASKETBALL, contact_radius=0.01)
-    assert info.value.name == "contact_radius"
+        twoball.sweep({"mass_ratio": [0.1]}, BASKETBALL, body=Body(0.0, contact_radius=0.2))
+    assert info.value.name == "contact_radius"  # a >= R = 0.12 m
 
 
 def test_reproduce_contact_part(tmp_path):
@@ -281,13 +291,13 @@ def test_reproduce_contact_part(tmp_path):
     ratios = section.data["ratios"]
     assert (tmp_path / "contact_mass_ratio.png").stat().st_size > 0
     mu = section.data["mass_ratios"][-1]
-    assert ratios[-1] == twoball.liftoff(BASKETBALL, mass_ratio=mu).ratio
+    assert ratios[-1] == twoball.liftoff(BASKETBALL, body=Body(mu)).ratio
     assert all(b < a for a, b in zip(ratios, ratios[1:], strict=False))
 
 
 def test_trajectory_follows_the_events():
     """The sampled path: gap >= 0, body on the cap in contact phases, event values hit."""
-    report = twoball.liftoff(BASKETBALL, mass_ratio=0.004)
+    report = twoball.liftoff(BASKETBALL, body=Body(0.004))
     data = report.trajectory_si(400)
     gap = data["body_height_m"] - data["cap_displacement_m"]
     assert gap.min() > -1e-12 * BASKETBALL.radius
@@ -310,7 +320,8 @@ def test_cli_plot_contact_sequence(tmp_path):
     bad = _cli("liftoff", "--plot", str(tmp_path / "x.png"))
     assert bad.returncode == 2
     assert bad.stderr.strip() == (
-        f"twoball: error: --plot must be given only with --mass-ratio, got '{tmp_path / 'x.png'}'"
+        "twoball: error: --plot must be given only with a mass ratio > 0 (the body's path is "
+        f"drawn), got '{tmp_path / 'x.png'}'"
     )
 
 
@@ -318,6 +329,6 @@ def test_cli_plot_contact_sequence(tmp_path):
 def test_a_body_on_a_stiff_ball_is_refused_not_solved_as_a_membrane(mass_ratio):
     """The contact system holds the membrane's modes only: bending or gas would be dropped."""
     with pytest.raises(ParameterError, match="mass_ratio.*bending or gas"):
-        twoball.liftoff(Case.preset("tennis"), mass_ratio=mass_ratio)
+        twoball.liftoff(Case.preset("tennis"), body=Body(mass_ratio))
     with pytest.raises(ParameterError, match="mass_ratio.*bending or gas"):
         twoball.sweep({"mass_ratio": [0.01]}, Case.preset("volleyball"))

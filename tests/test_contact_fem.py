@@ -14,6 +14,7 @@ from twoball.fem_membrane.space import sphere_space
 from twoball.modal.parameters import Case
 
 import twoball
+from twoball import Body
 
 BASKETBALL = Case.preset("basketball")
 
@@ -47,10 +48,9 @@ def test_sphere_cap_functional_converges_to_the_cap_average():
 
 def test_fem_axisym_agrees_with_legendre_at_finite_mass():
     """mu = 0.1, a = R/10: axisymmetric P2 (400 elements) and Legendre v1 to 1e-4."""
-    legendre = twoball.liftoff(BASKETBALL, mass_ratio=0.1, contact_radius=0.012)
-    fem = twoball.liftoff(
-        BASKETBALL, mass_ratio=0.1, contact_radius=0.012, backend="fem", mesh="axisym"
-    )
+    body = Body(0.1, contact_radius=0.012)
+    legendre = twoball.liftoff(BASKETBALL, body=body)
+    fem = twoball.liftoff(BASKETBALL, body=body, backend="fem", mesh="axisym")
     assert fem.v_liftoff_m_s == pytest.approx(legendre.v_liftoff_m_s, rel=1e-4)
     assert fem.t_liftoff_s == pytest.approx(legendre.t_liftoff_s, rel=1e-4)
     assert len(fem.history.impacts) == len(legendre.history.impacts)
@@ -60,7 +60,7 @@ def test_fem_massless_mode_recovers_todays_fem_result():
     """mu = 0, a = 1e-5 m on the axisymmetric line = today's FE pole lift-off to 1e-4."""
     today = twoball.liftoff(BASKETBALL, backend="fem", mesh="axisym")
     cap = twoball.liftoff(
-        BASKETBALL, mass_ratio=0.0, contact_radius=1e-5, backend="fem", mesh="axisym"
+        BASKETBALL, body=Body(0.0, contact_radius=1e-5), backend="fem", mesh="axisym"
     )
     assert cap.t_liftoff_s == pytest.approx(today.t_liftoff_s, rel=1e-4)
     assert cap.v_liftoff_m_s == pytest.approx(today.v_liftoff_m_s, rel=1e-4)
@@ -69,26 +69,22 @@ def test_fem_massless_mode_recovers_todays_fem_result():
 @pytest.mark.slow
 def test_fem_sphere_agrees_with_legendre_at_finite_mass():
     """mu = 0.1, a = R/10: sphere P2 level 4 and Legendre v1 to 1e-3 (measured 8e-5)."""
-    legendre = twoball.liftoff(BASKETBALL, mass_ratio=0.1, contact_radius=0.012)
+    body = Body(0.1, contact_radius=0.012)
+    legendre = twoball.liftoff(BASKETBALL, body=body)
     fem = twoball.liftoff(
-        BASKETBALL, mass_ratio=0.1, contact_radius=0.012, backend="fem", mesh="sphere", level=4
+        BASKETBALL, body=body, backend="fem", mesh=twoball.MeshOptions("sphere", level=4)
     )
     assert fem.v_liftoff_m_s == pytest.approx(legendre.v_liftoff_m_s, rel=1e-3)
 
 
 def test_fem_axisym_converges_to_legendre_in_h():
     """mu = 0.101, a = R/10: the P2 line's v1 error falls at about h^4 (eigenvalues); band 3-5."""
-    legendre = twoball.liftoff(BASKETBALL, mass_ratio=0.101, contact_radius=0.012)
+    body = Body(0.101, contact_radius=0.012)
+    legendre = twoball.liftoff(BASKETBALL, body=body)
     errors = []
     for elements in (25, 100):
-        fem = twoball.liftoff(
-            BASKETBALL,
-            mass_ratio=0.101,
-            contact_radius=0.012,
-            backend="fem",
-            mesh="axisym",
-            elements=elements,
-        )
+        mesh = twoball.MeshOptions("axisym", elements=elements)
+        fem = twoball.liftoff(BASKETBALL, body=body, backend="fem", mesh=mesh)
         errors.append(abs(fem.v_liftoff_m_s / legendre.v_liftoff_m_s - 1))
     order = np.log2(errors[0] / errors[1]) / 2  # h / 4
     assert 3.0 < order < 5.0

@@ -18,11 +18,7 @@ import numpy as np
 import pytest
 from twoball.modal.contact.trajectory import sample
 from twoball.modal.parameters import preset
-from twoball.verify.output.fields import (
-    contact_options,
-    contact_scene,
-    coupled_model,
-)
+from twoball.verify.output.fields import contact_scene, coupled_model
 from twoball.verify.output.figures.contact_pole import BODY_GID, EVENT_GID, contact_pole_figure
 from twoball.verify.output.figures.style import curves
 from twoball.verify.output.series import read_series
@@ -38,12 +34,13 @@ SMALL_CAP = 1e-6  # m
 #: 10.37-11.86 ms), and two in the final flight.
 IN_CONTACT = (0.5e-3, 2.0e-3, 11.0e-3)
 IN_FLIGHT = (20e-3, 30e-3)
+LEVEL_1 = twoball.MeshOptions("sphere", level=1)
 
 
 @pytest.fixture(scope="module")
 def model():
-    options = contact_options(CASE, 0.004, None, None, None)
-    return coupled_model(CASE, ("fem", "legendre"), options, level=1, order=2)
+    mesh = twoball.MeshOptions("sphere", level=1, order=2)
+    return coupled_model(CASE, ("fem", "legendre"), twoball.Body(0.004), mesh)
 
 
 def _trajectory(report, times_s):
@@ -96,7 +93,9 @@ def test_cli_plot_pole_with_a_mass_ratio(tmp_path, capsys):
 
 def test_one_vtu_holds_the_lift_off(tmp_path):
     """A single VTU is the final separation: the body there is the last event's."""
-    result = twoball.export(tmp_path / "one.vtu", CASE, backend="legendre", level=1, mass_ratio=MU)
+    result = twoball.export(
+        tmp_path / "one.vtu", CASE, backend="legendre", mesh=LEVEL_1, body=twoball.Body(MU)
+    )
     series = read_series(tmp_path / "one.vtu")
     last = result.report.events_si()[-1]
     assert last["kind"] == "separation" and series.times[0] == last["t_s"]
@@ -110,8 +109,8 @@ def exported(tmp_path_factory):
     folder = tmp_path_factory.mktemp("export")
     times = sorted(IN_CONTACT + IN_FLIGHT)
     result = twoball.export(
-        folder / "x.xdmf", CASE, backend="legendre", level=1, times=times,
-        mass_ratio=MU, contact_radius=SMALL_CAP,
+        folder / "x.xdmf", CASE, backend="legendre", mesh=LEVEL_1, frames=times,
+        body=twoball.Body(MU, contact_radius=SMALL_CAP),
     )  # fmt: skip
     return result, read_series(folder / "x.xdmf"), times
 
@@ -132,7 +131,7 @@ def test_export_carries_the_body_path_and_the_events(exported):
     # the events, as the lift-off API gives them for the same body
     events = json.loads(series.text["contact_events"])
     assert events == report.events_si()
-    alone = twoball.liftoff(CASE, mass_ratio=MU, contact_radius=SMALL_CAP)
+    alone = twoball.liftoff(CASE, body=twoball.Body(MU, contact_radius=SMALL_CAP))
     assert events == alone.events_si()
     assert series.field_data["events"] == len(events)
     assert series.field_data["mass_ratio"] == MU
@@ -153,13 +152,13 @@ def test_exported_membrane_carries_the_body_while_in_contact(exported):
 def test_small_mass_approaches_the_massless_field(tmp_path):
     """Both backends' coupled fields tend to the free membrane at first order in mu."""
     times = [0.0, 2e-3, 6e-3, 12e-3]
-    common = {"backend": "legendre", "level": 1, "times": times}
+    common = {"backend": "legendre", "mesh": LEVEL_1, "frames": times}
     twoball.export(tmp_path / "free.pvd", CASE, **common)
     free = read_series(tmp_path / "free.pvd")
     assert not free.frame_data
     errors = {}
     for mu in (1e-9, 1e-6):
-        twoball.export(tmp_path / "light.pvd", CASE, mass_ratio=mu, **common)
+        twoball.export(tmp_path / "light.pvd", CASE, body=twoball.Body(mu), **common)
         light = read_series(tmp_path / "light.pvd")
         assert "s_m" in light.frame_data
         for name in ("u_fem_m", "u_legendre_m", "u_t_m_s"):
@@ -181,8 +180,9 @@ def test_render_draws_the_body_and_its_contact(model, tmp_path, monkeypatch):
     assert "IN CONTACT" in scene.caption(0, 1.0) and "in flight" in scene.caption(1, 1.0)
     out = tmp_path / "ball.png"
     result = twoball.render(
-        out, CASE, backend="legendre", level=1, time=0.2e-3, size=(320, 240), mass_ratio=0.004
-    )
+        out, CASE, backend="legendre", mesh=LEVEL_1, frames=[0.2e-3],
+        view=twoball.RenderOptions(size=(320, 240)), body=twoball.Body(0.004),
+    )  # fmt: skip
     image = iio.imread(out)
     assert image.shape[:2] == (240, 320)
     assert float(np.mean(np.any(image[..., :3] < 245, axis=-1))) > 0.1  # not blank
@@ -190,8 +190,9 @@ def test_render_draws_the_body_and_its_contact(model, tmp_path, monkeypatch):
     assert list(tmp_path.iterdir()) == [out]  # no scratch files left
     gif = tmp_path / "bounce.gif"
     twoball.render(
-        gif, CASE, backend="legendre", level=1, frames=3, size=(160, 120), mass_ratio=0.004
-    )
+        gif, CASE, backend="legendre", mesh=LEVEL_1, frames=3,
+        view=twoball.RenderOptions(size=(160, 120)), body=twoball.Body(0.004),
+    )  # fmt: skip
     assert iio.imread(gif, index=None).shape[:3] == (3, 120, 160)
 
 
@@ -219,10 +220,14 @@ def test_options_that_do_not_apply_are_refused(argv, flag, tmp_path, capsys):
 
 
 def test_cli_option_constants_match_the_model():
-    """The option group (kept light: no scipy at start-up) states the model's limits."""
-    from twoball.modal.contact import report
+    """The option group offers the model's own limits (defined once, in modal/contact/body.py)."""
+    from twoball.modal.contact import body
 
-    from twoball.cli import contact_options
+    from twoball import _choices
+    from twoball.cli.main import full_parser
 
-    assert contact_options.MAX_MASS_RATIO == report.MAX_MASS_RATIO
-    assert contact_options.ENERGY_OPTIONS == report.ENERGY_OPTIONS
+    assert _choices.MAX_MASS_RATIO is body.MAX_MASS_RATIO == 100.0
+    assert _choices.ENERGY_OPTIONS is body.ENERGY_OPTIONS == ("ball", "both")
+    (sub,) = (a for a in full_parser()._actions if hasattr(a, "choices") and a.choices)
+    energy = next(a for a in sub.choices["liftoff"]._actions if "--energy" in a.option_strings)
+    assert "ball or both" in energy.help

@@ -278,10 +278,12 @@ def test_cli_equals_api_with_the_exact_geometry(capsys):
     code = main(["liftoff", "--backend", "fem", "--level", "1", "--order", "3",
                  "--geometry", "exact", "--json"])  # fmt: skip
     cli = json.loads(capsys.readouterr().out)
-    api = solve(twoball.Case.preset("basketball"), level=1, order=3, geometry="exact").as_dict()
+    exact = twoball.MeshOptions("sphere", level=1, order=3, geometry="exact")
+    api = solve(twoball.Case.preset("basketball"), mesh=exact).as_dict()
     assert code == 0 and cli["geometry"] == "exact" and cli["order"] == 3
     assert cli["t_liftoff_s"] == api["t_liftoff_s"] and cli["v_liftoff_m_s"] == api["v_liftoff_m_s"]
-    iso = solve(twoball.Case.preset("basketball"), level=1, order=3).as_dict()
+    iso = solve(twoball.Case.preset("basketball"), mesh=twoball.MeshOptions(level=1, order=3))
+    iso = iso.as_dict()
     assert iso["geometry"] == "isoparametric" and not math.isclose(
         iso["t_liftoff_s"], api["t_liftoff_s"], rel_tol=1e-12
     )

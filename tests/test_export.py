@@ -11,12 +11,13 @@ import numpy as np
 import pytest
 import pyvista as pv
 from twoball.fem_membrane.initial import initial_load
+from twoball.fem_membrane.options import MeshOptions
 from twoball.fem_membrane.space import sphere_space
 from twoball.modal.filters import SpectralFilter
 from twoball.modal.legendre import displacement, legendre_series
 from twoball.modal.parameters import preset
 from twoball.verify.output import series as export
-from twoball.verify.output.fields import ball_model, field_series, frame_times
+from twoball.verify.output.fields import ball_model, field_mesh, field_series, frame_times
 from twoball.verify.output.series import TimeSeries, read_series, write_series
 
 from twoball._common.errors import ParameterError
@@ -28,7 +29,7 @@ FIELDS = ("u_m", "u_t_m_s", "u_tt_m_s2", "displacement_m", "u_fem_m", "u_legendr
 @pytest.fixture(scope="module", params=[(2, 1), (1, 2)], ids=["P1-level2", "P2-level1"])
 def model(request):
     level, order = request.param
-    return ball_model(preset("basketball"), level, order)
+    return ball_model(preset("basketball"), field_mesh(MeshOptions(level=level, order=order)))
 
 
 @pytest.fixture(scope="module")
@@ -373,7 +374,9 @@ def test_cli_export_unwritable_out(tmp_path, capsys):
 
 
 def test_no_liftoff_is_recorded(tmp_path):
-    model = ball_model(preset("basketball").derive(damping=0.9), 1, 1)
+    model = ball_model(
+        preset("basketball").derive(damping=0.9), field_mesh(MeshOptions(level=1, order=1))
+    )
     series = field_series(model, frame_times(model, frames=3))
     assert len(series) == 3  # no lift-off frame to add
     assert series.field_data["lifted"] == 0.0 and "t_liftoff_s" not in series.field_data

@@ -6,8 +6,8 @@ import math
 
 import numpy as np
 import pytest
-from twoball.fem_membrane.damping import RayleighDamping
 from twoball.fem_membrane.solve import alpha_motion, fem_pole_motion, modal_model
+from twoball.modal.damping import Rayleigh
 from twoball.modal.filters import SpectralFilter
 from twoball.modal.series import ModalSeries
 
@@ -17,15 +17,15 @@ PHI_A, DAMPING = 2.6, 0.13
 
 
 def test_fit_matches_the_ratio_at_both_frequencies():
-    fit = RayleighDamping.fit(DAMPING, math.sqrt(2), math.sqrt(30 * 31))
-    assert fit.effective_ratio(np.array([math.sqrt(2), math.sqrt(930)])) == pytest.approx(
+    fit = Rayleigh.fit(DAMPING, math.sqrt(2), math.sqrt(30 * 31))
+    assert fit.ratios(np.array([math.sqrt(2), math.sqrt(930)])) == pytest.approx(
         [DAMPING, DAMPING], rel=1e-14
     )
-    inside = fit.effective_ratio(np.array([3.0, 10.0, 20.0]))
+    inside = fit.ratios(np.array([3.0, 10.0, 20.0]))
     assert np.all(inside < DAMPING)  # below D between the fitting frequencies
-    assert fit.effective_ratio(np.array([60.0]))[0] > DAMPING
+    assert fit.ratios(np.array([60.0]))[0] > DAMPING
     with pytest.raises(ParameterError, match="rayleigh_frequencies"):
-        RayleighDamping.fit(DAMPING, 5.0, 2.0)
+        Rayleigh.fit(DAMPING, 5.0, 2.0)
 
 
 def test_rayleigh_runs_and_reports_effective_ratios():
@@ -56,7 +56,7 @@ def test_rayleigh_runs_and_reports_effective_ratios():
 def test_rayleigh_stepping_equals_the_sum_of_modes_with_their_own_ratios():
     model = modal_model(PHI_A, DAMPING, "lanczos", mesh="axisym", elements=60, order=2)
     series = model.series
-    fit = RayleighDamping.fit(DAMPING, math.sqrt(2), model.filter.omega_n)
+    fit = Rayleigh.fit(DAMPING, math.sqrt(2), model.filter.omega_n)
     keep = np.flatnonzero(series.retained)
     plain = SpectralFilter("none", 1000)
     modes = [
@@ -64,7 +64,7 @@ def test_rayleigh_stepping_equals_the_sum_of_modes_with_their_own_ratios():
             omega=series.omega[[k]],
             coefficients=(series.weights * series.coefficients)[[k]],
             pole_values=series.pole_values[[k]],
-            damping=float(fit.effective_ratio(series.omega[k])) if series.omega[k] > 1e-3 else 0.0,
+            damping=float(fit.ratios(series.omega[k])) if series.omega[k] > 1e-3 else 0.0,
             filter=plain,
         )
         for k in keep

@@ -10,12 +10,12 @@ from twoball.fem_membrane.mesh import (
     elevate,
     icosphere,
     min_angle,
-    read_mesh,
     ring_rows,
     ring_sphere,
     topology,
     write_mesh,
 )
+from twoball.fem_membrane.mesh_input import read_mesh
 
 PHI_A = 2.6
 

@@ -118,7 +118,8 @@ TENNIS = Case.preset("tennis")
 @pytest.mark.parametrize("route", ["full", "krylov"])
 def test_axisymmetric_p2_liftoff_agrees_with_the_closed_form(route):
     ref = twoball.liftoff(TENNIS)
-    fem = twoball.liftoff(TENNIS, backend="fem", mesh="axisym", elements=800, order=2, route=route)
+    mesh = twoball.MeshOptions("axisym", elements=800, order=2)
+    fem = twoball.liftoff(TENNIS, backend="fem", mesh=mesh, stepping=twoball.Stepping(route=route))
     assert fem.t_liftoff_s == pytest.approx(ref.t_liftoff_s, rel=1e-6)
     assert fem.v_liftoff_m_s == pytest.approx(ref.v_liftoff_m_s, rel=1e-6)
 
@@ -128,7 +129,8 @@ def test_sphere_p2_liftoff_error_falls_at_the_eigenvalue_order():
     ref = twoball.liftoff(case)
     errors = []
     for level in (3, 4):
-        fem = twoball.liftoff(case, backend="fem", mesh="sphere", level=level, order=2)
+        mesh = twoball.MeshOptions("sphere", level=level, order=2)
+        fem = twoball.liftoff(case, backend="fem", mesh=mesh)
         errors.append(
             max(
                 abs(fem.t_liftoff_s / ref.t_liftoff_s - 1.0),
@@ -145,7 +147,9 @@ def test_sphere_p2_liftoff_agrees_with_the_closed_form_krylov():
     # acceleration beta n^4 times the membrane's, so 1e-4 needs level 6 (163 842 DOFs;
     # measured 32 s wall, 2.4 GB): t_l -4.8e-5, v_l +1.5e-5 (level 5: -7.4e-4, +2.3e-4)
     ref = twoball.liftoff(TENNIS)
-    fem = twoball.liftoff(TENNIS, backend="fem", mesh="sphere", level=6, order=2, route="krylov")
+    mesh = twoball.MeshOptions("sphere", level=6, order=2)
+    krylov = twoball.Stepping(route="krylov")
+    fem = twoball.liftoff(TENNIS, backend="fem", mesh=mesh, stepping=krylov)
     assert fem.t_liftoff_s == pytest.approx(ref.t_liftoff_s, rel=1e-4)
     assert fem.v_liftoff_m_s == pytest.approx(ref.v_liftoff_m_s, rel=1e-4)
     assert abs(fem.t_liftoff_s / ref.t_liftoff_s - 1.0) > 1e-6  # a discretisation error remains
@@ -157,18 +161,22 @@ def test_sphere_p2_liftoff_agrees_with_the_closed_form_full():
     # (its 1000 pairs at level 6 would take minutes); measured 36 s CPU
     case = Case.preset("tennis", modes=12)
     ref = twoball.liftoff(case)
-    fem = twoball.liftoff(case, backend="fem", mesh="sphere", level=5, order=2, route="full")
+    mesh = twoball.MeshOptions("sphere", level=5, order=2)
+    fem = twoball.liftoff(case, backend="fem", mesh=mesh, stepping=twoball.Stepping(route="full"))
     assert fem.t_liftoff_s == pytest.approx(ref.t_liftoff_s, rel=1e-4)
     assert fem.v_liftoff_m_s == pytest.approx(ref.v_liftoff_m_s, rel=1e-4)
 
 
 def test_generalized_alpha_with_bending_and_gas_is_second_order_in_dt():
-    kw = dict(backend="fem", mesh="axisym", elements=100, order=2, t_end=1.5e-3)
-    modal = twoball.liftoff(TENNIS, route="full", **kw)
+    mesh = twoball.MeshOptions("axisym", elements=100, order=2)
+    window = 1.5e-3
+    full = twoball.Stepping(t_end=window, route="full")
+    modal = twoball.liftoff(TENNIS, backend="fem", mesh=mesh, stepping=full)
     dt = 4e-6
     errors = []
     for step in (dt, dt / 2):
-        alpha = twoball.liftoff(TENNIS, scheme="alpha", dt=step, **kw)
+        alpha = twoball.Stepping(t_end=window, scheme="alpha", dt=step)
+        alpha = twoball.liftoff(TENNIS, backend="fem", mesh=mesh, stepping=alpha)
         errors.append(abs(alpha.v_liftoff_m_s / modal.v_liftoff_m_s - 1.0))
     observed = orders(errors)[0]
     assert 1.6 < observed < 2.4, (errors, observed)

@@ -107,7 +107,8 @@ def test_cli_and_api_give_identical_arrays(files, tmp_path, capsys):
     code = main(["export", "--mesh-file", str(files["msh"]), "--pole", pole]
                 + ["--frames", "3", "--out", str(cli)])  # fmt: skip
     assert code == 0 and "Exported fields" in capsys.readouterr().out
-    twoball.export(api, CASE, mesh=files["msh"], pole=OFF_NODE_POLES[0], frames=3)
+    mesh = twoball.MeshOptions(file=files["msh"], pole=OFF_NODE_POLES[0])
+    twoball.export(api, CASE, mesh=mesh, frames=3)
     a, b = read_series(cli), read_series(api)
     assert np.array_equal(a.points, b.points) and np.array_equal(a.cells, b.cells)
     assert np.array_equal(a.times, b.times)
@@ -121,9 +122,10 @@ def test_cli_and_api_give_identical_arrays(files, tmp_path, capsys):
 def test_exact_geometry_and_pole_inside_an_element(files, tmp_path):
     """--geometry exact with the pole off every node: t_l and v_l as twoball.liftoff's."""
     pole = OFF_NODE_POLES[1]
-    fem = twoball.liftoff(CASE, backend="fem", mesh=files["vtu"], pole=pole, geometry="exact")
+    mesh = twoball.MeshOptions(file=files["vtu"], pole=pole, geometry="exact")
+    fem = twoball.liftoff(CASE, backend="fem", mesh=mesh)
     out = tmp_path / "exact.pvd"
-    result = twoball.export(out, CASE, mesh=files["vtu"], pole=pole, geometry="exact", frames=2)
+    result = twoball.export(out, CASE, mesh=mesh, frames=2)
     assert not fem.extra["mesh_file"]["pole_at_node"]
     assert result.report.t_liftoff_s == pytest.approx(fem.t_liftoff_s, rel=1e-12)
     assert result.report.v_liftoff_m_s == pytest.approx(fem.v_liftoff_m_s, rel=1e-12)
@@ -155,7 +157,7 @@ def test_warnings_of_a_file_are_those_of_its_liftoff(files, reference, tmp_path)
     """No resolution estimate for a file (as in liftoff); a generated level 1 does warn."""
     result = twoball.export(tmp_path / "x.vtu", CASE, mesh=files["msh"])
     assert result.warnings == list(reference["msh"].warnings)
-    coarse = twoball.export(tmp_path / "y.vtu", CASE, level=1, order=1)
+    coarse = twoball.export(tmp_path / "y.vtu", CASE, mesh=twoball.MeshOptions(level=1, order=1))
     assert any("under-resolves" in w for w in coarse.warnings)
 
 
@@ -164,9 +166,9 @@ def test_frame_budget_counts_the_file_nodes(files):
     small = frames_estimate(2000, 642, (CASE.modes + 1) ** 2).memory
     large = frames_estimate(2000, 2562, (CASE.modes + 1) ** 2).memory
     with limits(max_memory=(small + large) / 2):
-        check_frame_budget(CASE, 2000, "frames", field_mesh(files["vtu"], None, None))
+        check_frame_budget(CASE, 2000, "frames", field_mesh(files["vtu"]))
         with pytest.raises(BudgetError, match="frames"):
-            check_frame_budget(CASE, 2000, "frames", field_mesh(None, None, None))
+            check_frame_budget(CASE, 2000, "frames", field_mesh(None))
 
 
 COMMANDS = {
@@ -219,7 +221,9 @@ def test_refusals_that_do_not_apply(files, tmp_path, capsys):
     level = [*COMMANDS["render"], "--mesh-file", str(files["vtu"]), "--level", "2"]
     assert "--level must be left out with a mesh file" in refused(level, tmp_path / "c", capsys)
     with pytest.raises(ParameterError, match="^pole"):
-        twoball.plot("waterfall", tmp_path / "w.png", CASE, pole=(0, 0, 1))
+        twoball.plot(
+            "waterfall", tmp_path / "w.png", CASE, mesh=twoball.MeshOptions(pole=(0, 0, 1))
+        )
 
 
 @pytest.mark.parametrize("command", COMMANDS)

@@ -16,7 +16,7 @@ import pytest
 from twoball.modal.filters import SpectralFilter
 from twoball.modal.legendre import displacement, legendre_series
 from twoball.modal.parameters import preset
-from twoball.verify.output.fields import ball_model, contact_options, coupled_model
+from twoball.verify.output.fields import ball_model, coupled_model, field_mesh
 from twoball.verify.output.figures.contact_pole import contact_pole_figure
 from twoball.verify.output.figures.eigen import (
     EigenErrors,
@@ -46,6 +46,8 @@ from twoball.verify.studies.modes import run_modes_study
 from twoball.verify.studies.refinement import run_h_study
 from twoball.verify.sweeps.sweeps import SweepSolver, make_grid, run_sweep
 
+import twoball
+
 UNIT = re.compile(r"\[[^\[\]]+\]")
 #: ASCII pseudo-math the style replaces by mathtext (outside $...$).
 ASCII_MATH = re.compile(r"\^|_[a-zA-Z0-9{]|\blambda\b|\bphi\b|\bT R\b|\bmu\b|\|v0\|")
@@ -62,7 +64,7 @@ def case():
 
 @pytest.fixture(scope="module")
 def model(case):
-    return ball_model(case, 1, 1)
+    return ball_model(case, field_mesh(twoball.MeshOptions("sphere", level=1, order=1)))
 
 
 def _series(case, modes):
@@ -110,8 +112,8 @@ def every_figure(case, model, monkeypatch):
     t_end = model.t_end
     yield "plot waterfall", waterfall_figure(model, 6)
     yield "plot pole", pole_figure(model, 300)
-    body = contact_options(case, 0.004, None, None, None)
-    coupled = coupled_model(case, ("fem", "legendre"), body, level=1, order=1)
+    mesh = twoball.MeshOptions("sphere", level=1, order=1)
+    coupled = coupled_model(case, ("fem", "legendre"), twoball.Body(0.004), mesh)
     yield "plot pole with a body", contact_pole_figure(coupled, 300)
     yield "plot eigen", eigen_figure([eigen_table(lv, od, 2) for od in (1, 2) for lv in (0, 1)])
     # verify: pole.png (8 backends: split in columns), eigenvalues.png, energy.png

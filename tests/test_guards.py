@@ -69,7 +69,9 @@ def test_fem_default_is_quiet(capsys) -> None:
 def test_truncation_warns_above_five_percent() -> None:
     coarse = legendre_liftoff(preset("basketball").derive(modes=20))
     (text,) = coarse.warnings
-    assert text.startswith("N = 20 truncation: t_l ") and "raise --modes" in text
+    assert text.startswith("N = 20 truncation: t_l ") and text.endswith(
+        "; raise the number of modes N"
+    )
     assert coarse.extra["truncation"]["v_difference"] < -TRUNCATION_WARNING  # -6.3 %
     fine = legendre_liftoff(preset("basketball").derive(modes=60))
     assert fine.warnings == ()
@@ -132,7 +134,7 @@ def test_coarse_time_step_warns(capsys) -> None:
     data, lines = run_json(capsys, *argv)
     assert_printed(data, lines)
     step = [w for w in data["warnings"] if w.startswith("time step too coarse")]
-    assert len(step) == 1 and "use --dt <=" in step[0]
+    assert len(step) == 1 and "use a time step dt <=" in step[0]
     assert time_step_warnings(30.5, 0.2 / 31.0) == []  # the automatic step
 
 

@@ -22,8 +22,13 @@ from twoball.fem_membrane.eigen import eigenpairs
 from twoball.fem_membrane.initial import initial_moments
 from twoball.fem_membrane.krylov import krylov_modal_series
 from twoball.fem_membrane.locate import locate_pole, shape_functions
-from twoball.fem_membrane.mesh import SphereMesh, icosphere, read_mesh, ring_sphere
-from twoball.fem_membrane.mesh_input import MAX_RADIAL_DEVIATION, load_sphere_mesh, rotation_to_z
+from twoball.fem_membrane.mesh import SphereMesh, icosphere, ring_sphere
+from twoball.fem_membrane.mesh_input import (
+    MAX_RADIAL_DEVIATION,
+    load_sphere_mesh,
+    read_mesh,
+    rotation_to_z,
+)
 from twoball.fem_membrane.modal import modal_series
 from twoball.fem_membrane.space import pole_value, sphere_space
 from twoball.fem_membrane.surface_checks import sphere_fit

@@ -5,8 +5,9 @@ from __future__ import annotations
 import matplotlib.image as mpimg
 import numpy as np
 import pytest
+from twoball.fem_membrane.options import MeshOptions
 from twoball.modal.parameters import preset
-from twoball.verify.output.fields import ball_model
+from twoball.verify.output.fields import ball_model, field_mesh
 from twoball.verify.output.figures import save_figure
 from twoball.verify.output.figures.eigen import eigen_figure, eigen_table
 from twoball.verify.output.figures.pole import pole_figure
@@ -19,7 +20,7 @@ from twoball.cli.main import main
 
 @pytest.fixture(scope="module")
 def model():
-    return ball_model(preset("basketball"), 2, 1)
+    return ball_model(preset("basketball"), field_mesh(MeshOptions(level=2, order=1)))
 
 
 def drawn(path) -> float:
@@ -68,15 +69,22 @@ def test_waterfall_difference_stack_is_fem_minus_closed_form_at_the_nodes(model)
     assert side_low / low == pytest.approx(side_high / high)
     shift_mm = float(figure.axes[0].get_ylabel().split()[3])  # printed to 3 digits
     assert offset == pytest.approx(side_high / high * shift_mm, rel=1e-2)
-    single = waterfall_figure(ball_model(preset("basketball"), 1, 1, backends=("legendre",)), 3)
+    single = waterfall_figure(
+        ball_model(
+            preset("basketball"), field_mesh(MeshOptions(level=1, order=1)), backends=("legendre",)
+        ),
+        3,
+    )
     assert len(single.axes) == 1
 
 
 def test_waterfall_times():
-    model = ball_model(preset("basketball"), 1, 1, backends=("legendre",))
+    model = ball_model(
+        preset("basketball"), field_mesh(MeshOptions(level=1, order=1)), backends=("legendre",)
+    )
     times = waterfall_times(model)
     assert times.size == 24 and times[0] == 0 and times[-1] == pytest.approx(model.t_end_s)
-    with pytest.raises(ParameterError, match="--instants"):
+    with pytest.raises(ParameterError, match="^instants must be an integer >= 2, got 1"):
         waterfall_times(model, 1)
     assert len(waterfall_figure(model, 5).axes[0].get_lines()) >= 5
 
@@ -114,7 +122,12 @@ def test_pole_difference_panel_is_fem_minus_closed_form(model):
     np.testing.assert_allclose(shown, expected_m * factor, rtol=1e-12, atol=1e-12)
     # level 1 P1 against the closed form differs by about a millimetre somewhere
     assert 1e-4 < np.abs(expected_m).max() < 1e-2
-    single = pole_figure(ball_model(preset("basketball"), 1, 1, backends=("legendre",)), 200)
+    single = pole_figure(
+        ball_model(
+            preset("basketball"), field_mesh(MeshOptions(level=1, order=1)), backends=("legendre",)
+        ),
+        200,
+    )
     assert len(single.axes) == 3  # nothing to compare: no difference panels
 
 
@@ -129,16 +142,17 @@ def test_cli_plot_pole_vector_formats(tmp_path, capsys, suffix, head):
 
 
 def test_plot_api_dpi_sets_raster_size(tmp_path):
-    from twoball import plot
+    from twoball import PlotOptions, plot
 
     figure_inches = eigen_figure([eigen_table(0, 1, 1)]).get_size_inches()
     for dpi in (100, 200):
-        out = plot("eigen", tmp_path / f"e{dpi}.png", levels=[0], orders=[1], max_degree=1, dpi=dpi)
+        figure = PlotOptions(dpi=dpi, levels=[0], orders=[1], max_degree=1)
+        out = plot("eigen", tmp_path / f"e{dpi}.png", figure=figure)
         height, width = mpimg.imread(out.file).shape[:2]
         assert (width, height) == tuple(round(x * dpi) for x in figure_inches)
     for bad in (10, 5000, float("nan"), "300", True):
         with pytest.raises(ParameterError, match="dpi"):
-            plot("eigen", tmp_path / "bad.png", levels=[0], orders=[1], dpi=bad)
+            plot("eigen", tmp_path / "bad.png", figure=PlotOptions(dpi=bad, levels=[0], orders=[1]))
     assert not (tmp_path / "bad.png").exists()
 
 
@@ -162,7 +176,7 @@ def test_eigen_errors_decrease_with_refinement(tmp_path):
 
 
 def test_eigen_degree_limits():
-    with pytest.raises(ParameterError, match="--max-degree"):
+    with pytest.raises(ParameterError, match="^max_degree must be at most 5 on this mesh"):
         eigen_table(1, 1, 10)  # 121 eigenvalues > 42 unknowns
     assert eigen_table(1, 1, 2).degrees.tolist() == [0, 1, 2]
 

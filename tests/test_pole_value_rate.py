@@ -35,8 +35,8 @@ def relative_errors(
     case: twoball.Case, reference: twoball.LiftoffReport, order: int, level: int
 ) -> tuple[float, float]:
     """|t_l| and |v_l| errors of the exact-geometry sphere against the Legendre ``reference``."""
-    fem = twoball.liftoff(case, backend="fem", mesh="sphere", level=level, order=order,
-                          geometry="exact", route="krylov")  # fmt: skip
+    mesh = twoball.MeshOptions("sphere", level=level, order=order, geometry="exact")
+    fem = twoball.liftoff(case, backend="fem", mesh=mesh, stepping=twoball.Stepping(route="krylov"))
     return (
         abs(fem.t_liftoff_s / reference.t_liftoff_s - 1.0),
         abs(fem.v_liftoff_m_s / reference.v_liftoff_m_s - 1.0),

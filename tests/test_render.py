@@ -9,8 +9,9 @@ import sys
 import imageio.v3 as iio
 import numpy as np
 import pytest
+from twoball.fem_membrane.options import MeshOptions
 from twoball.modal.parameters import preset
-from twoball.verify.output.fields import ball_model, ball_scene, liftoff_frame
+from twoball.verify.output.fields import ball_model, ball_scene, field_mesh, liftoff_frame
 from twoball.verify.output.render import (
     BallScene,
     check_size,
@@ -29,7 +30,7 @@ WHITE = 255
 
 @pytest.fixture(scope="module")
 def model():
-    return ball_model(preset("basketball"), 2, 1)
+    return ball_model(preset("basketball"), field_mesh(MeshOptions(level=2, order=1)))
 
 
 def ball_share(image: np.ndarray) -> float:
@@ -112,7 +113,7 @@ def test_quadratic_triangles_are_split_in_four():
 
 @pytest.mark.parametrize("size", ["100", "0x100", "100x", "axb", "100x20000", "-5x100"])
 def test_bad_size(size):
-    with pytest.raises(ParameterError, match="--size"):
+    with pytest.raises(ParameterError, match="^size must be"):
         check_size(size)
 
 
@@ -121,7 +122,7 @@ def test_sizes_and_warps():
     assert round_size((321, 240)) == (336, 240)
     assert check_warp(None) is None and check_warp(0) == 0.0
     for bad in (-1.0, float("nan"), float("inf")):
-        with pytest.raises(ParameterError, match="--warp"):
+        with pytest.raises(ParameterError, match="^warp must be"):
             check_warp(bad)
 
 

@@ -51,6 +51,9 @@ def python_value(flag: str, text: str) -> Any:
 
 
 CASE = twoball.Case.preset("basketball")
+M = twoball.MeshOptions
+S = twoball.Stepping
+LEVEL_1 = M("sphere", level=1)
 #: parameter -> a function that passes the value to the public API, per entry point.
 CALLS: dict[str, dict[str, Callable[[Any, Path], Any]]] = {
     "radius": {
@@ -83,46 +86,61 @@ CALLS: dict[str, dict[str, Callable[[Any, Path], Any]]] = {
             "twoball.modal.initial"
         ).modal.initial.initial_displacement([3.0], v),
     },
-    "damping": {"Case": lambda v, _: twoball.Case(damping=v)},
+    "damping": {
+        "Case": lambda v, _: twoball.Case(damping=v),
+        "ModalRatio": lambda v, _: twoball.ModalRatio(v),
+        "liftoff": lambda v, _: twoball.liftoff(CASE, damping=twoball.ModalRatio(v)),
+    },
     "modes": {"Case": lambda v, _: twoball.Case(modes=v)},
     "g": {"Case": lambda v, _: twoball.Case(g=v)},
-    "t_end": {
-        "liftoff": lambda v, _: twoball.liftoff(CASE, t_end=v),
-        "fem.solve": lambda v, _: twoball.fem.solve(CASE, level=1, t_end=v),
-        "sweep": lambda v, _: twoball.sweep({"damping": [0.1]}, CASE, t_end=v),
-        "export": lambda v, tmp: twoball.export(tmp / "x.vtu", CASE, level=1, t_end=v),
-        "render": lambda v, tmp: twoball.render(tmp / "x.png", CASE, level=1, t_end=v),
-        "plot": lambda v, tmp: twoball.plot("pole", tmp / "p.png", CASE, level=1, t_end=v),
+    "t_end": {  # Stepping refuses t_end <= 0; the solvers the window beyond 10 s (c-dependent)
+        "liftoff": lambda v, _: twoball.liftoff(CASE, stepping=S(t_end=v)),
+        "fem.solve": lambda v, _: twoball.fem.solve(CASE, mesh=LEVEL_1, stepping=S(t_end=v)),
+        "sweep": lambda v, _: twoball.sweep({"damping": [0.1]}, CASE, stepping=S(t_end=v)),
+        "export": lambda v, tmp: twoball.export(
+            tmp / "x.vtu", CASE, mesh=LEVEL_1, stepping=S(t_end=v)
+        ),
+        "render": lambda v, tmp: twoball.render(
+            tmp / "x.png", CASE, mesh=LEVEL_1, stepping=S(t_end=v)
+        ),
+        "plot": lambda v, tmp: twoball.plot(
+            "pole", tmp / "p.png", CASE, mesh=LEVEL_1, stepping=S(t_end=v)
+        ),
         "converge": lambda v, tmp: twoball.converge(
             CASE, study="modes", modes_list="30,60,120", t_end=v, out=tmp / "c"
         ),
         "verify": lambda v, tmp: twoball._studies.verify(CASE, fast=True, t_end=v, out=tmp / "r"),
     },
     "level": {
-        "liftoff": lambda v, _: twoball.liftoff(CASE, backend="fem", level=v),
-        "fem.solve": lambda v, _: twoball.fem.solve(CASE, level=v),
-        "fem.eigen": lambda v, _: twoball.fem.eigen(level=v, count=3),
-        "export": lambda v, tmp: twoball.export(tmp / "x.vtu", CASE, level=v),
-        "render": lambda v, tmp: twoball.render(tmp / "x.png", CASE, level=v),
-        "plot": lambda v, tmp: twoball.plot("pole", tmp / "p.png", CASE, level=v),
+        "MeshOptions": lambda v, _: M("sphere", level=v),
+        "liftoff": lambda v, _: twoball.liftoff(CASE, backend="fem", mesh=M(level=v)),
+        "fem.solve": lambda v, _: twoball.fem.solve(CASE, mesh=M(level=v)),
+        "fem.eigen": lambda v, _: twoball.fem.eigen(M(level=v), count=3),
+        "export": lambda v, tmp: twoball.export(tmp / "x.vtu", CASE, mesh=M(level=v)),
+        "render": lambda v, tmp: twoball.render(tmp / "x.png", CASE, mesh=M(level=v)),
+        "plot": lambda v, tmp: twoball.plot("pole", tmp / "p.png", CASE, mesh=M(level=v)),
     },
     "elements": {
-        "fem.solve": lambda v, _: twoball.fem.solve(CASE, mesh="axisym", elements=v),
-        "fem.eigen": lambda v, _: twoball.fem.eigen(mesh="axisym", elements=v),
+        "MeshOptions": lambda v, _: M("axisym", elements=v),
+        "fem.solve": lambda v, _: twoball.fem.solve(CASE, mesh=M("axisym", elements=v)),
+        "fem.eigen": lambda v, _: twoball.fem.eigen(M("axisym", elements=v)),
     },
     "order": {
-        "fem.solve": lambda v, _: twoball.fem.solve(CASE, level=1, order=v),
-        "fem.eigen": lambda v, _: twoball.fem.eigen(level=1, order=v),
-        "export": lambda v, tmp: twoball.export(tmp / "x.vtu", CASE, level=1, order=v),
+        "MeshOptions": lambda v, _: M(level=1, order=v),
+        "fem.solve": lambda v, _: twoball.fem.solve(CASE, mesh=M(level=1, order=v)),
+        "fem.eigen": lambda v, _: twoball.fem.eigen(M(level=1, order=v)),
+        "export": lambda v, tmp: twoball.export(tmp / "x.vtu", CASE, mesh=M(level=1, order=v)),
         "converge": lambda v, tmp: twoball.converge(CASE, study="h", order=v, out=tmp / "c"),
     },
-    "dt": {
-        "fem.solve": lambda v, _: twoball.fem.solve(CASE, mesh="axisym", scheme="alpha", dt=v),
+    "dt": {  # Stepping refuses dt <= 0; the solvers a step outside [1e-7, 1e-2] s
+        "fem.solve": lambda v, _: twoball.fem.solve(
+            CASE, mesh="axisym", stepping=S(scheme="alpha", dt=v)
+        ),
         "liftoff": lambda v, _: twoball.liftoff(
-            CASE, backend="fem", mesh="axisym", scheme="alpha", dt=v
+            CASE, backend="fem", mesh="axisym", stepping=S(scheme="alpha", dt=v)
         ),
     },
-    "count": {"fem.eigen": lambda v, _: twoball.fem.eigen(level=1, count=v)},
+    "count": {"fem.eigen": lambda v, _: twoball.fem.eigen(LEVEL_1, count=v)},
     "workers": {"sweep": lambda v, _: twoball.sweep({"damping": [0.1, 0.2]}, CASE, workers=v)},
     "mu": {"icm": lambda v, _: icm.icm(v, 0.8, 0.9)},
     "e2": {"icm": lambda v, _: icm.icm(0.5, v, 0.9)},
@@ -130,44 +148,77 @@ CALLS: dict[str, dict[str, Callable[[Any, Path], Any]]] = {
     "dx": {"icm": lambda v, _: icm.icm(0.5, 0.8, 0.9, dx=v, drop_height=1.0)},
     "drop_height": {"icm": lambda v, _: icm.icm(0.5, 0.8, 0.9, drop_height=v)},
     "frames": {
-        "export": lambda v, tmp: twoball.export(tmp / "x.pvd", CASE, level=1, frames=v),
-        "render": lambda v, tmp: twoball.render(tmp / "x.gif", CASE, level=1, frames=v),
+        "export": lambda v, tmp: twoball.export(tmp / "x.pvd", CASE, mesh=LEVEL_1, frames=v),
+        "render": lambda v, tmp: twoball.render(tmp / "x.gif", CASE, mesh=LEVEL_1, frames=v),
     },
-    "time": {"render": lambda v, tmp: twoball.render(tmp / "x.png", CASE, level=1, time=v)},
-    "fps": {"render": lambda v, tmp: twoball.render(tmp / "x.gif", CASE, level=1, fps=v)},
-    "instants": {
-        "plot": lambda v, tmp: twoball.plot("waterfall", tmp / "p.png", CASE, level=1, instants=v)
+    "time": {  # the instant of a PNG is its one frame time
+        "render": lambda v, tmp: twoball.render(tmp / "x.png", CASE, mesh=LEVEL_1, frames=[v])
     },
-    "max_degree": {"plot": lambda v, tmp: twoball.plot("eigen", tmp / "p.png", max_degree=v)},
-    "dpi": {"plot": lambda v, tmp: twoball.plot("eigen", tmp / "p.png", dpi=v)},
+    "fps": {
+        "RenderOptions": lambda v, _: twoball.RenderOptions(fps=v),
+        "render": lambda v, tmp: twoball.render(
+            tmp / "x.gif", CASE, mesh=LEVEL_1, view=twoball.RenderOptions(fps=v)
+        ),
+    },
+    "warp": {
+        "RenderOptions": lambda v, _: twoball.RenderOptions(warp=v),
+        "render": lambda v, tmp: twoball.render(
+            tmp / "x.png", CASE, mesh=LEVEL_1, view=twoball.RenderOptions(warp=v)
+        ),
+    },
+    "instants": {  # PlotOptions refuses fewer than 2; the plot more than the frame cap
+        "plot": lambda v, tmp: twoball.plot(
+            "waterfall", tmp / "p.png", CASE, mesh=LEVEL_1, figure=twoball.PlotOptions(instants=v)
+        )
+    },
+    "max_degree": {
+        "PlotOptions": lambda v, _: twoball.PlotOptions(max_degree=v),
+        "plot": lambda v, tmp: twoball.plot(
+            "eigen", tmp / "p.png", figure=twoball.PlotOptions(max_degree=v)
+        ),
+    },
+    "dpi": {
+        "PlotOptions": lambda v, _: twoball.PlotOptions(dpi=v),
+        "plot": lambda v, tmp: twoball.plot(
+            "eigen", tmp / "p.png", figure=twoball.PlotOptions(dpi=v)
+        ),
+    },
     "mass_ratio": {
-        "liftoff": lambda v, _: twoball.liftoff(CASE, mass_ratio=v),
-        "export": lambda v, tmp: twoball.export(tmp / "x.vtu", CASE, level=1, mass_ratio=v),
-        "render": lambda v, tmp: twoball.render(tmp / "x.png", CASE, level=1, mass_ratio=v),
-        "plot": lambda v, tmp: twoball.plot("pole", tmp / "p.png", CASE, level=1, mass_ratio=v),
-    },
-    "contact_radius": {
-        "liftoff": lambda v, _: twoball.liftoff(CASE, mass_ratio=0.01, contact_radius=v),
+        "Body": lambda v, _: twoball.Body(v),
+        "liftoff": lambda v, _: twoball.liftoff(CASE, body=twoball.Body(v)),
         "export": lambda v, tmp: twoball.export(
-            tmp / "x.vtu", CASE, level=1, mass_ratio=0.01, contact_radius=v
+            tmp / "x.vtu", CASE, mesh=LEVEL_1, body=twoball.Body(v)
         ),
         "render": lambda v, tmp: twoball.render(
-            tmp / "x.png", CASE, level=1, mass_ratio=0.01, contact_radius=v
+            tmp / "x.png", CASE, mesh=LEVEL_1, body=twoball.Body(v)
         ),
         "plot": lambda v, tmp: twoball.plot(
-            "pole", tmp / "p.png", CASE, level=1, mass_ratio=0.01, contact_radius=v
+            "pole", tmp / "p.png", CASE, mesh=LEVEL_1, body=twoball.Body(v)
+        ),
+    },
+    "contact_radius": {  # Body refuses a <= 0; the solvers a >= R of the case
+        "liftoff": lambda v, _: twoball.liftoff(CASE, body=twoball.Body(0.01, contact_radius=v)),
+        "export": lambda v, tmp: twoball.export(
+            tmp / "x.vtu", CASE, mesh=LEVEL_1, body=twoball.Body(0.01, contact_radius=v)
+        ),
+        "render": lambda v, tmp: twoball.render(
+            tmp / "x.png", CASE, mesh=LEVEL_1, body=twoball.Body(0.01, contact_radius=v)
+        ),
+        "plot": lambda v, tmp: twoball.plot(
+            "pole", tmp / "p.png", CASE, mesh=LEVEL_1, body=twoball.Body(0.01, contact_radius=v)
         ),
     },
     "restitution": {
-        "liftoff": lambda v, _: twoball.liftoff(CASE, mass_ratio=0.01, restitution=v),
+        "Body": lambda v, _: twoball.Body(0.01, restitution=v),
+        "liftoff": lambda v, _: twoball.liftoff(CASE, body=twoball.Body(0.01, restitution=v)),
         "export": lambda v, tmp: twoball.export(
-            tmp / "x.vtu", CASE, level=1, mass_ratio=0.01, restitution=v
+            tmp / "x.vtu", CASE, mesh=LEVEL_1, body=twoball.Body(0.01, restitution=v)
         ),
         "render": lambda v, tmp: twoball.render(
-            tmp / "x.png", CASE, level=1, mass_ratio=0.01, restitution=v
+            tmp / "x.png", CASE, mesh=LEVEL_1, body=twoball.Body(0.01, restitution=v)
         ),
         "plot": lambda v, tmp: twoball.plot(
-            "pole", tmp / "p.png", CASE, level=1, mass_ratio=0.01, restitution=v
+            "pole", tmp / "p.png", CASE, mesh=LEVEL_1, body=twoball.Body(0.01, restitution=v)
         ),
     },
     "bending": {"Case": lambda v, _: twoball.Case.preset("tennis").derive(bending=v)},
@@ -176,6 +227,8 @@ CALLS: dict[str, dict[str, Callable[[Any, Path], Any]]] = {
     "thickness": {"flexural_rigidity": lambda v, _: flexural_rigidity(6e6, v)},
     "poisson": {"flexural_rigidity": lambda v, _: flexural_rigidity(6e6, 0.003, v)},
 }
+#: The API's name of a flag's value where it differs from the flag's own parameter name.
+API_NAME = {"time": "frames"}
 
 
 def api_cases() -> list[tuple[str, str, Any]]:
@@ -199,7 +252,8 @@ def call_refused(name: str, entry: str, value: Any, tmp: Path) -> str | None:
             CALLS[name][entry](value, tmp)
         return "returned"
     except twoball.ParameterError as error:
-        return None if error.name in (name, FLAGS[name]) else f"named {error.name!r}: {error}"
+        expected = API_NAME.get(name, name)
+        return None if error.name == expected else f"named {error.name!r}: {error}"
     except Ran:
         return "started the work"
     except (Exception, Warning) as error:  # noqa: BLE001 -- reported
@@ -229,6 +283,8 @@ def test_bad_values_raise_parameter_error(tmp_path: Path) -> None:
     assert sorted(p.name for p in tmp_path.iterdir()) == []  # nothing written
 
 
+R = twoball.RenderOptions
+P = twoball.PlotOptions
 EXTRA: list[tuple[str, Callable[[Path], Any]]] = [
     # values of the wrong type are refused, never stored or coerced
     ("phi_a", lambda _: twoball.Case(phi_a="2.6")),
@@ -240,59 +296,70 @@ EXTRA: list[tuple[str, Callable[[Path], Any]]] = [
     ("e2", lambda _: icm.icm(0.5, True, 0.9)),
     ("case", lambda _: twoball.liftoff("basketball")),
     ("case", lambda _: twoball.sweep({"damping": [0.1]}, "basketball")),
+    ("stepping", lambda _: twoball.liftoff(CASE, stepping=0.02)),
+    ("body", lambda _: twoball.liftoff(CASE, body=0.1)),
+    ("damping", lambda _: twoball.liftoff(CASE, damping=0.13)),
+    ("mesh", lambda _: twoball.fem.solve(CASE, mesh=3)),
+    ("view", lambda tmp: twoball.render(tmp / "x.png", CASE, mesh=LEVEL_1, view=(320, 240))),
+    ("figure", lambda tmp: twoball.plot("eigen", tmp / "p.png", figure={"dpi": 100})),
     # options that do not apply
-    ("level", lambda _: twoball.liftoff(CASE, level=3)),
+    ("mesh", lambda _: twoball.liftoff(CASE, mesh=M(level=3))),
     ("mesh", lambda _: twoball.liftoff(CASE, mesh="sphere")),
-    ("dt", lambda _: twoball.liftoff(CASE, dt=1e-5)),
-    ("level", lambda _: twoball.fem.solve(CASE, mesh="axisym", level=2)),
-    ("elements", lambda _: twoball.fem.solve(CASE, mesh="ring", elements=50)),
-    ("dt", lambda _: twoball.fem.solve(CASE, scheme="modal", dt=1e-5)),
-    ("route", lambda _: twoball.fem.solve(CASE, scheme="alpha", route="krylov")),
+    ("dt", lambda _: twoball.liftoff(CASE, stepping=S(dt=1e-5))),
+    ("scheme", lambda _: twoball.liftoff(CASE, stepping=S(scheme="alpha", dt=1e-5))),
+    ("route", lambda _: twoball.liftoff(CASE, stepping=S(route="full"))),
+    ("damping", lambda _: twoball.liftoff(CASE, damping=twoball.Rayleigh())),
+    ("damping", lambda _: twoball.fem.solve(CASE, mesh="axisym", damping=twoball.Rayleigh())),
+    ("level", lambda _: twoball.fem.solve(CASE, mesh=M("axisym", level=2))),
+    ("elements", lambda _: twoball.fem.solve(CASE, mesh=M("ring", elements=50))),
+    ("dt", lambda _: twoball.fem.solve(CASE, stepping=S(scheme="modal", dt=1e-5))),
+    ("route", lambda _: twoball.fem.solve(CASE, stepping=S(scheme="alpha", route="krylov"))),
     ("order", lambda tmp: twoball.converge(CASE, study="order", order=2, out=tmp / "c")),
     ("levels", lambda tmp: twoball.converge(CASE, study="modes", levels="1:2", out=tmp / "c")),
     ("modes_list", lambda tmp: twoball.converge(CASE, study="h", modes_list="30,60,120")),
     ("levels", lambda tmp: twoball.converge(CASE, study="h", levels="0:1", out=tmp / "c")),
     ("fast", lambda tmp: twoball._studies.verify(CASE, fast=True, thorough=True)),
     ("workers", lambda _: twoball.sweep({"damping": [0.1]}, CASE, workers=2, scheduler="x:1")),
-    ("fps", lambda tmp: twoball.render(tmp / "x.png", CASE, level=1, fps=10)),
-    ("frames", lambda tmp: twoball.render(tmp / "x.png", CASE, level=1, frames=5)),
-    ("time", lambda tmp: twoball.render(tmp / "x.gif", CASE, level=1, time=0.001)),
+    ("fps", lambda tmp: twoball.render(tmp / "x.png", CASE, mesh=LEVEL_1, view=R(fps=10))),
+    ("frames", lambda tmp: twoball.render(tmp / "x.png", CASE, mesh=LEVEL_1, frames=5)),
+    ("frames", lambda tmp: twoball.render(tmp / "x.png", CASE, frames=[0.001, 0.002])),
     (
         "initial",
         lambda tmp: twoball.render(
-            tmp / "x.png", CASE, backend="legendre", initial="interpolation"
+            tmp / "x.png", CASE, backend="legendre", mesh=M(initial="interpolation")
         ),
-    ),  # noqa: E501
+    ),
     ("case", lambda tmp: twoball.plot("eigen", tmp / "p.png", CASE)),
     ("sigma", lambda tmp: twoball.plot("eigen", tmp / "p.png", sigma="none")),
     ("backends", lambda tmp: twoball.plot("eigen", tmp / "p.png", backends=["fem"])),
-    ("levels", lambda tmp: twoball.plot("pole", tmp / "p.png", CASE, levels=[1, 2])),
-    ("max_degree", lambda tmp: twoball.plot("waterfall", tmp / "p.png", CASE, max_degree=5)),
-    ("instants", lambda tmp: twoball.plot("pole", tmp / "p.png", CASE, instants=5)),
-    ("levels", lambda tmp: twoball.plot("eigen", tmp / "p.png", levels=[-1])),
-    ("orders", lambda tmp: twoball.plot("eigen", tmp / "p.png", orders=[7])),
-    ("frames", lambda tmp: twoball.export(tmp / "x.vtu", CASE, level=1, frames=5)),
+    ("stepping", lambda tmp: twoball.plot("eigen", tmp / "p.png", stepping=S(t_end=0.01))),
+    ("levels", lambda tmp: twoball.plot("pole", tmp / "p.png", CASE, figure=P(levels=[1, 2]))),
+    ("max_degree", lambda tmp: twoball.plot("waterfall", tmp / "p.png", figure=P(max_degree=5))),
+    ("instants", lambda tmp: twoball.plot("pole", tmp / "p.png", CASE, figure=P(instants=5))),
+    ("levels", lambda tmp: twoball.plot("eigen", tmp / "p.png", figure=P(levels=[-1]))),
+    ("orders", lambda tmp: twoball.plot("eigen", tmp / "p.png", figure=P(orders=[7]))),
+    ("frames", lambda tmp: twoball.export(tmp / "x.vtu", CASE, mesh=LEVEL_1, frames=5)),
     # mesh files of the field commands
-    ("pole", lambda tmp: twoball.export(tmp / "x.vtu", CASE, level=1, pole=(0, 0, 1))),
-    ("pole", lambda tmp: twoball.render(tmp / "x.png", CASE, pole="0,0,1")),
-    ("pole", lambda tmp: twoball.plot("pole", tmp / "p.png", CASE, pole=(0, 0, 1))),
-    ("pole", lambda tmp: twoball.plot("eigen", tmp / "p.png", pole=(0, 0, 1))),
-    ("geometry", lambda tmp: twoball.export(tmp / "x.vtu", CASE, mesh="ring", geometry="exact")),
-    ("geometry", lambda tmp: twoball.render(tmp / "x.png", CASE, geometry="bogus")),
-    ("geometry", lambda tmp: twoball.plot("eigen", tmp / "p.png", geometry="exact")),
+    ("pole", lambda tmp: twoball.export(tmp / "x.vtu", CASE, mesh=M(level=1, pole=(0, 0, 1)))),
+    ("pole", lambda tmp: twoball.render(tmp / "x.png", CASE, mesh=M(pole="0,0,1"))),
+    ("pole", lambda tmp: twoball.plot("pole", tmp / "p.png", CASE, mesh=M(pole=(0, 0, 1)))),
+    ("pole", lambda tmp: twoball.plot("eigen", tmp / "p.png", mesh=M(pole=(0, 0, 1)))),
+    ("geometry", lambda tmp: twoball.export(tmp / "x.vtu", CASE, mesh=M("ring", geometry="exact"))),
+    ("geometry", lambda tmp: twoball.render(tmp / "x.png", CASE, mesh=M(geometry="bogus"))),
+    ("mesh", lambda tmp: twoball.plot("eigen", tmp / "p.png", mesh=M(geometry="exact"))),
     ("mesh", lambda tmp: twoball.plot("eigen", tmp / "p.png", mesh=tmp / "ball.msh")),
-    ("level", lambda tmp: twoball.render(tmp / "x.png", CASE, mesh=tmp / "ball.msh", level=1)),
-    ("order", lambda tmp: twoball.export(tmp / "x.vtu", CASE, level=1, order=3)),
-    ("times", lambda tmp: twoball.export(tmp / "x.pvd", CASE, level=1, times=[math.nan])),
-    ("times", lambda tmp: twoball.export(tmp / "x.pvd", CASE, level=1, times=[1.0])),
+    ("level", lambda tmp: twoball.render(tmp / "x.png", CASE, mesh=M(file=tmp / "b.msh", level=1))),
+    ("order", lambda tmp: twoball.export(tmp / "x.vtu", CASE, mesh=M(level=1, order=3))),
+    ("frames", lambda tmp: twoball.export(tmp / "x.pvd", CASE, mesh=LEVEL_1, frames=[math.nan])),
+    ("frames", lambda tmp: twoball.export(tmp / "x.pvd", CASE, mesh=LEVEL_1, frames=[1.0])),
     # paths: empty, over-long, unwritable, unreadable
     *[
         ("out", call)
         for path in ("", "a" * 300 + ".png", table.LONG_PATH + ".png", "/proc/x/y.png")
         for call in (
-            lambda tmp, p=path: twoball.plot("pole", _under(tmp, p), CASE, level=1),
-            lambda tmp, p=path: twoball.render(_under(tmp, p), CASE, level=1),
-            lambda tmp, p=path: twoball.export(_under(tmp, p[:-4] + ".vtu"), CASE, level=1),
+            lambda tmp, p=path: twoball.plot("pole", _under(tmp, p), CASE, mesh=LEVEL_1),
+            lambda tmp, p=path: twoball.render(_under(tmp, p), CASE, mesh=LEVEL_1),
+            lambda tmp, p=path: twoball.export(_under(tmp, p[:-4] + ".vtu"), CASE, mesh=LEVEL_1),
             lambda tmp, p=path: twoball.converge(CASE, study="modes", out=_under(tmp, p[:-4])),
             lambda tmp, p=path: twoball._studies.verify(CASE, fast=True, out=_under(tmp, p[:-4])),
         )
@@ -361,3 +428,97 @@ def test_extremes_inside_the_ranges_give_finite_numbers() -> None:
                     wave_speed_from_pressure(p, m, r)
         near_pi = twoball.liftoff(twoball.Case(phi_a=table.PHI_A_HIGH))
         assert near_pi.t_liftoff_s is None or math.isfinite(near_pi.t_liftoff_s)
+
+
+#: (the field named in the error, a constructor call with one bad field) for every option object.
+OBJECTS: list[tuple[str, Callable[[], Any]]] = [
+    ("mesh", lambda: M(kind="bogus")),  # the kind is the verbs' mesh argument
+    ("level", lambda: M(level=-1)),
+    ("level", lambda: M(level=1.5)),
+    ("level", lambda: M(level=True)),
+    ("level", lambda: M("axisym", level=2)),
+    ("elements", lambda: M("axisym", elements=1)),
+    ("elements", lambda: M("sphere", elements=50)),
+    ("order", lambda: M(order=0)),
+    ("order", lambda: M(order=5)),
+    ("order", lambda: M(order=2.0)),
+    ("file", lambda: M("file")),
+    ("file", lambda: M("sphere", file="ball.msh")),
+    ("level", lambda: M(file="ball.msh", level=1)),
+    ("pole", lambda: M(pole=(0, 0, 1))),
+    ("geometry", lambda: M(geometry="bogus")),
+    ("geometry", lambda: M("ring", geometry="exact")),
+    ("geometry", lambda: M("axisym", geometry="exact")),
+    ("initial", lambda: M(initial="bogus")),
+    ("t_end", lambda: S(t_end=-1)),
+    ("t_end", lambda: S(t_end=0.0)),
+    ("t_end", lambda: S(t_end=math.nan)),
+    ("t_end", lambda: S(t_end=math.inf)),
+    ("t_end", lambda: S(t_end="0.02")),
+    ("dt", lambda: S(scheme="alpha", dt=-1)),
+    ("dt", lambda: S(scheme="alpha", dt=0.0)),
+    ("dt", lambda: S(dt=1e-5)),  # modal superposition has no time step
+    ("scheme", lambda: S(scheme="x")),
+    ("route", lambda: S(route="x")),
+    ("route", lambda: S(scheme="alpha", route="krylov")),
+    ("mass_ratio", lambda: twoball.Body(-1)),
+    ("mass_ratio", lambda: twoball.Body(100.5)),
+    ("mass_ratio", lambda: twoball.Body(math.nan)),
+    ("mass_ratio", lambda: twoball.Body("0.1")),
+    ("contact_radius", lambda: twoball.Body(0.1, contact_radius=0.0)),
+    ("contact_radius", lambda: twoball.Body(0.1, contact_radius=-0.01)),
+    ("contact_radius", lambda: twoball.Body(0.1, contact_radius=math.inf)),
+    ("restitution", lambda: twoball.Body(0.1, restitution=2)),
+    ("restitution", lambda: twoball.Body(0.1, restitution=-0.1)),
+    ("energy", lambda: twoball.Body(0.1, energy="x")),
+    ("damping", lambda: twoball.ModalRatio(1.0)),  # the ratio is the case's damping D
+    ("damping", lambda: twoball.ModalRatio(-0.1)),
+    ("damping", lambda: twoball.ModalRatio(math.nan)),
+    ("alpha", lambda: twoball.Rayleigh(alpha=1)),
+    ("beta", lambda: twoball.Rayleigh(beta=1)),
+    ("alpha", lambda: twoball.Rayleigh(alpha=-1, beta=0)),
+    ("beta", lambda: twoball.Rayleigh(alpha=0, beta=math.nan)),
+    ("warp", lambda: R(warp=-1)),
+    ("warp", lambda: R(warp=math.nan)),
+    ("warp", lambda: R(warp=math.inf)),
+    ("warp", lambda: R(warp="big")),
+    ("size", lambda: R(size="0x0")),
+    ("size", lambda: R(size="big")),
+    ("size", lambda: R(size=(10, 10))),
+    ("size", lambda: R(size=(640.0, 480.0))),
+    ("fps", lambda: R(fps=0)),
+    ("fps", lambda: R(fps=1e4)),
+    ("dpi", lambda: P(dpi=10)),
+    ("dpi", lambda: P(dpi=1e5)),
+    ("instants", lambda: P(instants=1)),
+    ("instants", lambda: P(instants=2.5)),
+    ("levels", lambda: P(levels=[])),
+    ("levels", lambda: P(levels="1,2")),
+    ("levels", lambda: P(levels=[1.5])),
+    ("orders", lambda: P(orders=[True])),
+    ("max_degree", lambda: P(max_degree=0)),
+]
+
+
+@pytest.mark.parametrize(
+    ("name", "build"), OBJECTS, ids=[f"{n}-{k}" for k, (n, _) in enumerate(OBJECTS)]
+)
+def test_option_objects_refuse_a_bad_field_by_name(name: str, build: Any) -> None:
+    """Each option object refuses a bad field when built: ParameterError naming it and its range."""
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        with pytest.raises(twoball.ParameterError) as caught:
+            build()
+    assert caught.value.name == name, str(caught.value)
+    assert str(caught.value).startswith(f"{name} must be "), str(caught.value)
+
+
+def test_option_objects_keep_good_fields() -> None:
+    """The values just inside the ranges are kept (as numbers of the field's type)."""
+    assert M("axisym", elements=2).elements == 2 and M(level=0, order=4).order == 4
+    assert S(t_end=1e-3).t_end == 1e-3 and S(scheme="alpha", dt=1e-7).dt == 1e-7
+    body = twoball.Body(100, contact_radius=1e-6, restitution=1, energy="both")
+    assert (body.mass_ratio, body.restitution) == (100.0, 1.0)
+    assert twoball.ModalRatio(0).ratio == 0.0 and twoball.Rayleigh(alpha=0, beta=0).alpha == 0.0
+    assert R(warp=0, size="16x4096", fps=1e-3).size == (16, 4096)  # MAX_SIZE of the renderer
+    assert P(dpi=50, instants=2, levels=[0], orders=[1], max_degree=1).levels == (0,)

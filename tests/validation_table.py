@@ -83,6 +83,7 @@ RANGES: dict[str, Range] = {
     "--frames": Range(1, 2000, integer=True),
     "--time": Range(0.0, 4 * math.pi / 320),  # render: inside the default window
     "--fps": Range(1e-3, 1e3),
+    "--warp": Range(0.0),  # or auto
     "--instants": Range(2, 2000, integer=True),
     "--max-degree": Range(1, 10**4, integer=True),
     "--dpi": Range(50, 1200),
@@ -155,13 +156,15 @@ PATH_OPTIONS = ("--out", "--plot", "--mesh-file")
 
 
 def numeric_options(parser: argparse.ArgumentParser) -> dict[str, list[str]]:
-    """Subcommand -> its options that take a number (float or int type)."""
+    """Subcommand -> its options that take a number (:mod:`twoball.cli.values` types)."""
+    from twoball.cli.values import integer, number
+
     found: dict[str, list[str]] = {}
     for name, sub in subparsers(parser).items():
         found[name] = [
             action.option_strings[0]
             for action in sub._actions
-            if action.option_strings and action.type in (float, int)
+            if action.option_strings and action.type in (number, integer, float, int)
         ]
     return found
 
@@ -310,7 +313,8 @@ NOT_APPLICABLE: list[tuple[str, list[str]]] = [
         ["sweep", "--param", "wave-speed", "--values", "300:400:3", "--wave-speed", "300"],
     ),
     ("--values", ["sweep", "--param", "damping", "--values", "0:0.5:3", "--values", "0:1:2"]),
-    ("--param", ["sweep", "--param", "damping", "--param", "v0", "--values", "0:0.5:3"]),
+    # two swept parameters (a grid) need two value lists
+    ("--values", ["sweep", "--param", "damping", "--param", "v0", "--values", "0:0.5:3"]),
     (
         "--workers",
         ["sweep", "--param", "damping", "--values", "0:0.5:3", "--workers", "2"]
