@@ -1,6 +1,6 @@
 """Resource guards (twoball._common.budget): limits, messages, estimates against measurements.
 
-Every absurd size of issue 11 is run in one child process whose address space
+Every absurd size is run in one child process whose address space
 and CPU time are capped: had any of them started its work it would die with a
 MemoryError traceback (exit 1) or by SIGXCPU; a refusal by the guard is exit 2
 with its one-line message, i.e. it happened before the allocation.
@@ -17,6 +17,7 @@ from pathlib import Path
 
 import pytest
 
+from tests import ROOT
 from twoball._common import budget
 from twoball._common.budget import (
     Budget,
@@ -31,7 +32,72 @@ from twoball._common.budget import (
 )
 from twoball._common.errors import ParameterError
 
-ROOT = Path(__file__).resolve().parents[1]
+ABSURD = [
+    ["liftoff", "--modes", "20000"],
+    ["liftoff", "--modes", "100000"],
+    ["liftoff", "--t-end", "1e6"],
+    ["liftoff", "--backend", "fem", "--level", "9"],
+    ["liftoff", "--backend", "fem", "--level", "50"],
+    ["liftoff", "--backend", "fem", "--scheme", "alpha", "--dt", "1e-9"],
+    ["sweep", "--param", "damping", "--values", "0:0.5:1000000"],
+    ["sweep", "--param", "damping", "--values", "0:0.5:10000"]
+    + ["--param", "v0", "--values", "1:5:10000"],
+    ["sweep", "--param", "damping", "--values", "0:0.5:64", "--workers", "100"],
+    ["plot", "waterfall", "--instants", "100000", "--out", "{tmp}/w.png"],
+    ["export", "--times", "{times}", "--out", "{tmp}/x.xdmf"],
+]
+
+
+CHILD = textwrap.dedent(
+    """
+    import contextlib, io, json, resource, sys
+    resource.setrlimit(resource.RLIMIT_AS, (3 * 2**30, 3 * 2**30))
+    resource.setrlimit(resource.RLIMIT_CPU, (60, 60))
+    from twoball.cli.main import main
+    out = []
+    for argv in json.loads(sys.argv[1]):
+        err = io.StringIO()
+        with contextlib.redirect_stderr(err), contextlib.redirect_stdout(io.StringIO()):
+            try:
+                status = main(argv)
+            except SystemExit as stop:
+                status = stop.code
+        out.append([status, err.getvalue()])
+    print(json.dumps(out))
+    """
+)
+
+
+def _peak_child(code: str) -> tuple[float, float]:
+    """Peak RSS [bytes] (VmHWM) and CPU time [s] of ``code`` run in a fresh interpreter.
+
+    CPU time (user + system), not wall time: on a shared machine the wall time
+    of a single-threaded run grows with the others' load, its CPU time does not.
+    """
+    wrapper = textwrap.dedent(
+        """
+        import resource, sys
+        import numpy, scipy.sparse.linalg, skfem  # imports are not the work measured
+        def cpu():
+            usage = resource.getrusage(resource.RUSAGE_SELF)
+            return usage.ru_utime + usage.ru_stime
+        start = cpu()
+        exec(sys.argv[1])
+        used = cpu() - start
+        # VmHWM: this program's own peak; ru_maxrss keeps the forking parent's
+        # peak across exec (Linux), so a large pytest process would be measured
+        with open("/proc/self/status") as status:
+            hwm = next(int(line.split()[1]) for line in status if line.startswith("VmHWM:"))
+        print(hwm * 1024, used)
+        """
+    )
+    env = dict(os.environ, OPENBLAS_NUM_THREADS="1")
+    done = subprocess.run(
+        [sys.executable, "-c", wrapper, code], cwd=ROOT, env=env, capture_output=True, text=True
+    )
+    assert done.returncode == 0, done.stderr[-2000:]
+    peak, wall = done.stdout.split()[-2:]
+    return float(peak), float(wall)
 
 
 def test_sizes_and_durations_parse() -> None:
@@ -100,41 +166,6 @@ def test_sizes_in_closed_form_match_the_meshes() -> None:
     assert format_bytes(15.0 * GiB) == "15 GiB"
 
 
-ABSURD = [
-    ["liftoff", "--modes", "20000"],
-    ["liftoff", "--modes", "100000"],
-    ["liftoff", "--t-end", "1e6"],
-    ["liftoff", "--backend", "fem", "--level", "9"],
-    ["liftoff", "--backend", "fem", "--level", "50"],
-    ["liftoff", "--backend", "fem", "--scheme", "alpha", "--dt", "1e-9"],
-    ["sweep", "--param", "damping", "--values", "0:0.5:1000000"],
-    ["sweep", "--param", "damping", "--values", "0:0.5:10000"]
-    + ["--param", "v0", "--values", "1:5:10000"],
-    ["sweep", "--param", "damping", "--values", "0:0.5:64", "--workers", "100"],
-    ["plot", "waterfall", "--instants", "100000", "--out", "{tmp}/w.png"],
-    ["export", "--times", "{times}", "--out", "{tmp}/x.xdmf"],
-]
-
-CHILD = textwrap.dedent(
-    """
-    import contextlib, io, json, resource, sys
-    resource.setrlimit(resource.RLIMIT_AS, (3 * 2**30, 3 * 2**30))
-    resource.setrlimit(resource.RLIMIT_CPU, (60, 60))
-    from twoball.cli.main import main
-    out = []
-    for argv in json.loads(sys.argv[1]):
-        err = io.StringIO()
-        with contextlib.redirect_stderr(err), contextlib.redirect_stdout(io.StringIO()):
-            try:
-                status = main(argv)
-            except SystemExit as stop:
-                status = stop.code
-        out.append([status, err.getvalue()])
-    print(json.dumps(out))
-    """
-)
-
-
 def test_each_absurd_size_is_refused_before_any_allocation(tmp_path: Path) -> None:
     times = ",".join(f"{k * 3e-6:.6g}" for k in range(10000))
     cases = [[w.format(tmp=tmp_path, times=times) for w in argv] for argv in ABSURD]
@@ -174,38 +205,6 @@ def test_each_absurd_size_is_refused_before_any_allocation(tmp_path: Path) -> No
     assert "--instants must be an integer in [2, 2000]" in refused[9]
     assert "--times must be at most 2000 times" in refused[10]
     assert results[-1][0] == 0, results[-1][1]
-
-
-def _peak_child(code: str) -> tuple[float, float]:
-    """Peak RSS [bytes] (VmHWM) and CPU time [s] of ``code`` run in a fresh interpreter.
-
-    CPU time (user + system), not wall time: on a shared machine the wall time
-    of a single-threaded run grows with the others' load, its CPU time does not.
-    """
-    wrapper = textwrap.dedent(
-        """
-        import resource, sys
-        import numpy, scipy.sparse.linalg, skfem  # imports are not the work measured
-        def cpu():
-            usage = resource.getrusage(resource.RUSAGE_SELF)
-            return usage.ru_utime + usage.ru_stime
-        start = cpu()
-        exec(sys.argv[1])
-        used = cpu() - start
-        # VmHWM: this program's own peak; ru_maxrss keeps the forking parent's
-        # peak across exec (Linux), so a large pytest process would be measured
-        with open("/proc/self/status") as status:
-            hwm = next(int(line.split()[1]) for line in status if line.startswith("VmHWM:"))
-        print(hwm * 1024, used)
-        """
-    )
-    env = dict(os.environ, OPENBLAS_NUM_THREADS="1")
-    done = subprocess.run(
-        [sys.executable, "-c", wrapper, code], cwd=ROOT, env=env, capture_output=True, text=True
-    )
-    assert done.returncode == 0, done.stderr[-2000:]
-    peak, wall = done.stdout.split()[-2:]
-    return float(peak), float(wall)
 
 
 @pytest.mark.slow

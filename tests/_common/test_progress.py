@@ -22,9 +22,9 @@ import pytest
 from twoball.verify.output.report_files import split_provenance
 from twoball.verify.output.series import read_series
 
+from tests import ROOT
 from twoball._common.progress import INTERVAL, Reporter, is_quiet, set_quiet
 
-ROOT = Path(__file__).resolve().parents[1]
 LINE = re.compile(r"twoball: (?P<name>[\w -]+): (?P<text>.*) \((?P<seconds>\d+) s\)")
 
 
@@ -32,58 +32,6 @@ def progress_lines(err: str, name: str) -> list[str]:
     return [line for line in err.splitlines() if line.startswith(f"twoball: {name}: ")]
 
 
-# --------------------------------------------------------------------------- the reporter
-def test_lines_first_rate_limited_and_last():
-    stream = io.StringIO()
-    with Reporter("demo", total=50, stream=stream, interval=1e6) as report:
-        for k in range(50):
-            report(f"step {k}")
-    lines = stream.getvalue().splitlines()
-    # the first step at once, none of the next 49 (rate limit), then the last line
-    assert [LINE.fullmatch(line)["text"] for line in lines] == ["1/50 step 0", "done 50/50"]
-
-
-def test_a_long_step_gets_periodic_lines():
-    stream = io.StringIO()
-    with Reporter("demo", stream=stream, interval=0.05) as report:
-        report("one long step")
-        deadline = time.monotonic() + 30
-        while stream.getvalue().count("\n") < 3 and time.monotonic() < deadline:
-            time.sleep(0.05)  # the background thread prints while the step runs
-    lines = stream.getvalue().splitlines()
-    assert len(lines) >= 4 and lines[-1].startswith("twoball: demo: done (")
-    assert all(LINE.fullmatch(line)["text"] == "one long step" for line in lines[:-1])
-
-
-def test_tasks_count_and_quick_or_quiet_work_is_silent():
-    stream = io.StringIO()
-    with Reporter("demo", stream=stream, interval=1e6) as report:
-        update = report.task("solves", 8)
-        for k in range(8):
-            update(k + 1)
-    assert stream.getvalue().splitlines()[0] == "twoball: demo: solves 0/8 (0 s)"
-    quick = io.StringIO()
-    with Reporter("demo", stream=quick, delay=1e6) as report:
-        report("fast")
-    set_quiet(True)
-    try:
-        with Reporter("demo", stream=quick) as report:
-            report("anything")
-            report.task("solves", 3)(3)
-    finally:
-        set_quiet(False)
-    assert quick.getvalue() == "" and not is_quiet()
-
-
-def test_errors_leave_no_done_line():
-    stream = io.StringIO()
-    with pytest.raises(ValueError), Reporter("demo", stream=stream) as report:
-        report("about to fail")
-        raise ValueError
-    assert stream.getvalue().splitlines() == ["twoball: demo: about to fail (0 s)"]
-
-
-# --------------------------------------------------------------------------- the commands
 def start(argv: list[str], cwd: Path) -> subprocess.Popen:
     env = dict(os.environ, OPENBLAS_NUM_THREADS="1", PYTHONPATH=str(ROOT))
     return subprocess.Popen(
@@ -136,6 +84,56 @@ COMMANDS = {
 }
 
 
+def test_lines_first_rate_limited_and_last():
+    stream = io.StringIO()
+    with Reporter("demo", total=50, stream=stream, interval=1e6) as report:
+        for k in range(50):
+            report(f"step {k}")
+    lines = stream.getvalue().splitlines()
+    # the first step at once, none of the next 49 (rate limit), then the last line
+    assert [LINE.fullmatch(line)["text"] for line in lines] == ["1/50 step 0", "done 50/50"]
+
+
+def test_a_long_step_gets_periodic_lines():
+    stream = io.StringIO()
+    with Reporter("demo", stream=stream, interval=0.05) as report:
+        report("one long step")
+        deadline = time.monotonic() + 30
+        while stream.getvalue().count("\n") < 3 and time.monotonic() < deadline:
+            time.sleep(0.05)  # the background thread prints while the step runs
+    lines = stream.getvalue().splitlines()
+    assert len(lines) >= 4 and lines[-1].startswith("twoball: demo: done (")
+    assert all(LINE.fullmatch(line)["text"] == "one long step" for line in lines[:-1])
+
+
+def test_tasks_count_and_quick_or_quiet_work_is_silent():
+    stream = io.StringIO()
+    with Reporter("demo", stream=stream, interval=1e6) as report:
+        update = report.task("solves", 8)
+        for k in range(8):
+            update(k + 1)
+    assert stream.getvalue().splitlines()[0] == "twoball: demo: solves 0/8 (0 s)"
+    quick = io.StringIO()
+    with Reporter("demo", stream=quick, delay=1e6) as report:
+        report("fast")
+    set_quiet(True)
+    try:
+        with Reporter("demo", stream=quick) as report:
+            report("anything")
+            report.task("solves", 3)(3)
+    finally:
+        set_quiet(False)
+    assert quick.getvalue() == "" and not is_quiet()
+
+
+def test_errors_leave_no_done_line():
+    stream = io.StringIO()
+    with pytest.raises(ValueError), Reporter("demo", stream=stream) as report:
+        report("about to fail")
+        raise ValueError
+    assert stream.getvalue().splitlines() == ["twoball: demo: about to fail (0 s)"]
+
+
 @pytest.mark.parametrize("name", list(COMMANDS))
 def test_progress_lines_in_a_log_and_none_when_quiet(tmp_path, name):
     argv, inside, same = COMMANDS[name]
@@ -170,14 +168,3 @@ def test_progress_lines_in_a_log_and_none_when_quiet(tmp_path, name):
         drop = ("seconds", "provenance", "out")
         a, b = (split_provenance(json.loads(text), drop)[0] for text in (loud_out, quiet_out))
         assert a == b and a["passed"] is True
-
-
-def test_verify_steps_counts_the_progress_calls(tmp_path):
-    import twoball
-    from twoball._studies import verify_steps
-
-    said: list[str] = []
-    twoball.verify(fast=True, progress=said.append, out=tmp_path / "report")
-    assert len(said) == verify_steps(fast=True) and said[-1].startswith("writing ")
-    assert verify_steps(fast=True, out=False) == len(said) - 1
-    assert said[0].startswith("Legendre series N = 30")

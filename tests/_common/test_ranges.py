@@ -5,7 +5,6 @@ import pytest
 
 from twoball._common.errors import ParameterError
 from twoball._common.ranges import parse_values
-from twoball.cli.main import join_negative_values, main
 
 
 @pytest.mark.parametrize(
@@ -56,30 +55,3 @@ def test_range_matches_linspace_to_the_last_bit_at_the_ends():
 def test_refused_with_the_syntax_named(text, integer):
     with pytest.raises(ParameterError, match=r"^x must be v1,v2,\.\.\. or START:STOP"):
         parse_values(text, "x", integer=integer)
-
-
-def test_negative_values_join_their_option_only():
-    options = {"--values", "--g"}
-    assert join_negative_values(["sweep", "--values", "-1:1:3"], options) == [
-        "sweep",
-        "--values=-1:1:3",
-    ]
-    assert join_negative_values(["--g", "-1e-3"], options) == ["--g=-1e-3"]
-    assert join_negative_values(["--json", "-1"], options) == ["--json", "-1"]
-    assert join_negative_values(["--values", "--json"], options) == ["--values", "--json"]
-
-
-def test_cli_sweep_negative_start_is_a_value_not_an_option(capsys):
-    """v0 is a speed: its sign is irrelevant, so -3:-1:3 runs the same cases as 3:1:3."""
-    assert main(["sweep", "--param", "v0", "--values", "-3:-1:3", "--json"]) == 0
-    negative = capsys.readouterr().out
-    assert main(["sweep", "--param", "v0", "--values", "3,2,1", "--json"]) == 0
-    positive = capsys.readouterr().out
-    import json
-
-    def rows(text):
-        data = json.loads(text)
-        data = data["results"] if isinstance(data, dict) else data
-        return [(r["t_liftoff_s"], r["v_liftoff_m_s"]) for r in data]
-
-    assert rows(negative) == rows(positive)

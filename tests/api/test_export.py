@@ -1,46 +1,34 @@
-"""The contact sequence of a body of finite mass in plot pole, render and export (issue 13).
-
-Real runs on a small case (N = 10 Legendre modes; finite elements on the sphere
-of level 1, P2, every eigenpair below the cutoff).  The figure's body path and
-event markers, the exported per-frame body data and events, and the coupled
-membrane field are checked against the contact solver's own trajectory
-(:func:`twoball.modal.contact.trajectory.sample`, one matrix exponential per
-time), against the free flight in closed form, against the massless field and
-against the gap condition (C3) of docs/contact.rst.
-"""
+"""twoball.export: the fields of both backends in SI, a body's path, the user's mesh file."""
 
 from __future__ import annotations
 
 import json
 
-import imageio.v3 as iio
 import numpy as np
 import pytest
 from twoball.modal.contact.trajectory import sample
-from twoball.modal.parameters import preset
-from twoball.verify.output.fields import contact_scene, coupled_model
-from twoball.verify.output.figures.contact_pole import BODY_GID, EVENT_GID, contact_pole_figure
-from twoball.verify.output.figures.style import curves
+from twoball.modal.filters import SpectralFilter
+from twoball.modal.legendre import displacement, legendre_series
+from twoball.modal.parameters import Case, preset
 from twoball.verify.output.series import read_series
 
 import twoball
-from twoball.cli.main import main
+from tests.meshes import CENTER, OFF_NODE_POLES, RADIUS
+from twoball._common.errors import ParameterError
 
 CASE = preset("basketball").derive(modes=10)
 MU = 0.1
+
+
 #: A small cap, so that the cap average and the pole value agree to ~1e-9 (b_n = 1 - O(theta^2)).
 SMALL_CAP = 1e-6  # m
 #: Instants [s] inside the three contact phases of MU on SMALL_CAP (0-0.97, 1.70-2.88,
 #: 10.37-11.86 ms), and two in the final flight.
 IN_CONTACT = (0.5e-3, 2.0e-3, 11.0e-3)
 IN_FLIGHT = (20e-3, 30e-3)
+
+
 LEVEL_1 = twoball.MeshOptions("sphere", level=1)
-
-
-@pytest.fixture(scope="module")
-def model():
-    mesh = twoball.MeshOptions("sphere", level=1, order=2)
-    return coupled_model(CASE, ("fem", "legendre"), twoball.Body(0.004), mesh)
 
 
 def _trajectory(report, times_s):
@@ -50,45 +38,45 @@ def _trajectory(report, times_s):
     return data["body_height"] * scale.length, data["body_velocity"] * scale.velocity
 
 
-def test_plot_pole_draws_the_path_and_one_marker_per_event(model):
-    samples = 400
-    figure = contact_pole_figure(model, samples)
-    displacement, velocity = figure.axes[0], figure.axes[2]  # difference rows between
-    assert len(figure.axes) == 6
-    for name in ("fem", "legendre"):
-        report = model.contact(name)
-        events = report.events_si()
-        assert len(events) == len(report.history.events) >= 3
-        for axis, key, factor in ((displacement, "height_m", 1e3), (velocity, "velocity_m_s", 1.0)):
-            marks = [
-                line for line in axis.get_lines() if str(line.get_gid()).endswith(f"-{name}")
-                and str(line.get_gid()).startswith(EVENT_GID)
-            ]  # fmt: skip
-            assert sum(len(line.get_xdata()) for line in marks) == len(events)
-            for kind in ("impact", "separation"):
-                (line,) = [m for m in marks if m.get_gid() == f"{EVENT_GID}-{kind}-{name}"]
-                chosen = [e for e in events if e["kind"] == kind]
-                assert np.allclose(line.get_xdata(), [e["t_s"] * 1e3 for e in chosen])
-                assert np.allclose(line.get_ydata(), [e[key] * factor for e in chosen])
-        # the body's path is the solver's trajectory at the same times
-        (path,) = [
-            line for line in displacement.get_lines() if line.get_gid() == f"{BODY_GID}-{name}"
-        ]
-        data = report.trajectory_si(samples)
-        assert np.allclose(path.get_xdata(), data["t_s"] * 1e3, rtol=1e-12)
-        scale = np.abs(data["body_height_m"]).max()
-        assert np.abs(path.get_ydata() / 1e3 - data["body_height_m"]).max() < 1e-12 * scale
-    assert all(len(curves(a)) <= 6 for a in figure.axes)
-    labels = [t.get_text() for t in velocity.get_legend().get_texts()]
-    assert {"impact", "separation", "lift-off (final separation)"} <= set(labels)
+@pytest.fixture(scope="module")
+def exported(tmp_path_factory):
+    folder = tmp_path_factory.mktemp("export")
+    times = sorted(IN_CONTACT + IN_FLIGHT)
+    result = twoball.export(
+        folder / "x.xdmf", CASE, backend="legendre", mesh=LEVEL_1, frames=times,
+        body=twoball.Body(MU, contact_radius=SMALL_CAP),
+    )  # fmt: skip
+    return result, read_series(folder / "x.xdmf"), times
 
 
-def test_cli_plot_pole_with_a_mass_ratio(tmp_path, capsys):
-    out = tmp_path / "pole.png"
-    argv = ["plot", "pole", "--level", "1", "--modes", "10", "--mass-ratio", "0.004"]
-    assert main([*argv, "--contact-radius", "0.012", "--dpi", "60", "--out", str(out)]) == 0
-    assert iio.imread(out).shape[2] in (3, 4)
-    assert "lift-off (legendre)" in capsys.readouterr().out
+BASKETBALL = twoball.Case.preset("basketball")
+MM = 1000.0  # the .msh file is in millimetres
+
+
+def pole_at_liftoff(series, report) -> float:
+    """u_m [m] at the pole node (the point on +z) in the frame at t_l of ``report``."""
+    frame = int(np.argmin(np.abs(series.times - report.t_liftoff_s)))
+    assert series.times[frame] == pytest.approx(report.t_liftoff_s, rel=1e-12)
+    pole = int(np.argmax(series.points[:, 2]))
+    assert np.allclose(series.points[pole], [0.0, 0.0, BASKETBALL.radius], atol=1e-12)
+    return float(series.point_data["u_m"][frame, pole])
+
+
+def closed_form(points_m: np.ndarray, times_s: np.ndarray) -> np.ndarray:
+    """u [m] of eq. (3.16) at the nodes' polar angles from +z, independently of the exporter."""
+    scale = BASKETBALL.scalings
+    series = legendre_series(
+        BASKETBALL.phi_a, BASKETBALL.damping, SpectralFilter("lanczos", BASKETBALL.modes)
+    )
+    phi = np.arccos(points_m[:, 2] / np.linalg.norm(points_m, axis=1))
+    return displacement(series, times_s / scale.time, phi) * scale.length
+
+
+def test_an_output_that_is_not_a_path_is_refused_by_name(tmp_path, monkeypatch):
+    monkeypatch.chdir(tmp_path)
+    with pytest.raises(ParameterError, match=r"^out must be a file path \(str or os.PathLike\)"):
+        twoball.export(Case.preset("basketball"), "a.vtu")  # arguments swapped
+    assert not any(tmp_path.iterdir())
 
 
 def test_one_vtu_holds_the_lift_off(tmp_path):
@@ -102,17 +90,6 @@ def test_one_vtu_holds_the_lift_off(tmp_path):
     assert series.frame_data["s_m"][0] == pytest.approx(last["height_m"], rel=1e-14)
     assert series.frame_data["s_t_m_s"][0] == pytest.approx(last["velocity_m_s"], rel=1e-14)
     assert series.frame_data["contact"][0] == 0.0
-
-
-@pytest.fixture(scope="module")
-def exported(tmp_path_factory):
-    folder = tmp_path_factory.mktemp("export")
-    times = sorted(IN_CONTACT + IN_FLIGHT)
-    result = twoball.export(
-        folder / "x.xdmf", CASE, backend="legendre", mesh=LEVEL_1, frames=times,
-        body=twoball.Body(MU, contact_radius=SMALL_CAP),
-    )  # fmt: skip
-    return result, read_series(folder / "x.xdmf"), times
 
 
 def test_export_carries_the_body_path_and_the_events(exported):
@@ -171,63 +148,60 @@ def test_small_mass_approaches_the_massless_field(tmp_path):
         assert abs(order - 1.0) < 0.01, (name, order)
 
 
-def test_render_draws_the_body_and_its_contact(model, tmp_path, monkeypatch):
-    monkeypatch.setenv("VTK_DEFAULT_OPENGL_WINDOW", "vtkEGLRenderWindow")
-    times = np.array([0.2e-3, model.t_end_s])
-    scene = contact_scene(model, times, "legendre")
-    assert np.array_equal(scene.body, model.motion("legendre", times)["s_m"])
-    assert list(scene.contact) == [True, False]
-    assert "IN CONTACT" in scene.caption(0, 1.0) and "in flight" in scene.caption(1, 1.0)
-    out = tmp_path / "ball.png"
-    result = twoball.render(
-        out, CASE, backend="legendre", mesh=LEVEL_1, frames=[0.2e-3],
-        view=twoball.RenderOptions(size=(320, 240)), body=twoball.Body(0.004),
-    )  # fmt: skip
-    image = iio.imread(out)
-    assert image.shape[:2] == (240, 320)
-    assert float(np.mean(np.any(image[..., :3] < 245, axis=-1))) > 0.1  # not blank
-    assert result.report.mass_ratio == 0.004
-    assert list(tmp_path.iterdir()) == [out]  # no scratch files left
-    gif = tmp_path / "bounce.gif"
-    twoball.render(
-        gif, CASE, backend="legendre", mesh=LEVEL_1, frames=3,
-        view=twoball.RenderOptions(size=(160, 120)), body=twoball.Body(0.004),
-    )  # fmt: skip
-    assert iio.imread(gif, index=None).shape[:3] == (3, 120, 160)
+@pytest.mark.parametrize(("name", "suffix"), [("vtu", "vtu"), ("msh", "xdmf")])
+def test_export_matches_the_liftoff_on_the_same_file(
+    ball_files, ball_files_liftoff, tmp_path, name, suffix
+):
+    out = tmp_path / f"fields.{suffix}"
+    frames = None if suffix == "vtu" else 3  # a .vtu holds the lift-off frame alone
+    result = twoball.export(out, BASKETBALL, mesh=ball_files[name], frames=frames)
+    series = read_series(out)
+    fem = ball_files_liftoff[name]
+    scale = fem.case.scalings
+    # SI, in the case's frame: R times the unit sphere whatever the file's radius and unit
+    radii = np.linalg.norm(series.points, axis=1)
+    assert np.allclose(radii, BASKETBALL.radius, rtol=1e-12)
+    assert series.cells.shape[1] == (6 if name == "vtu" else 3)
+    u_pole = pole_at_liftoff(series, fem)
+    assert u_pole == pytest.approx(fem.result.displacement * scale.length, rel=1e-9, abs=1e-15)
+    assert series.field_data["t_liftoff_s"] == pytest.approx(fem.t_liftoff_s, rel=1e-12)
+    assert result.report.v_liftoff_m_s == pytest.approx(fem.v_liftoff_m_s, rel=1e-12)
+    legendre = closed_form(series.points, series.times)
+    assert np.allclose(series.point_data["u_legendre_m"], legendre, rtol=1e-10, atol=1e-14)
+    # the file's own radius, centre and pole (its unit) in the metadata and the provenance
+    unit = MM if name == "msh" else 1.0
+    assert series.field_data["mesh_file_radius"] == pytest.approx(RADIUS * unit, rel=1e-12)
+    centre = [series.field_data[f"mesh_file_center_{a}"] for a in "xyz"]
+    assert np.allclose(centre, CENTER * unit, rtol=1e-12, atol=1e-12 * unit)
+    assert [series.field_data[f"mesh_file_pole_{a}"] for a in "xyz"] == [0.0, 0.0, 1.0]
+    text = json.loads(series.text["mesh_file"])
+    assert text["path"] == str(ball_files[name].resolve()) and text["source_order"] == (
+        2 if name == "vtu" else 1
+    )
+    assert result.provenance["mesh_file"]["radius"] == pytest.approx(RADIUS * unit, rel=1e-12)
+    assert json.loads(series.text["provenance"])["mesh_file"]["path"] == text["path"]
 
 
-REFUSED = [
-    (["plot", "eigen", "--mass-ratio", "0.1"], "--mass-ratio"),
-    (["plot", "waterfall", "--mass-ratio", "0.1"], "--mass-ratio"),
-    (["plot", "pole", "--mass-ratio", "0.1", "--contact-radius", "1"], "--contact-radius"),
-    (["export", "--contact-radius", "0.01"], "--contact-radius"),
-    (["export", "--mass-ratio", "0"], "--mass-ratio"),
-    (["export", "--mass-ratio", "0.1", "--route", "krylov"], "--route"),
-    (["render", "--mass-ratio", "0.1", "--recontact", "paper"], "--recontact"),
-    (["render", "--mass-ratio", "-1"], "--mass-ratio"),
-]
+def test_exact_geometry_and_pole_inside_an_element(ball_files, tmp_path):
+    """--geometry exact with the pole off every node: t_l and v_l as twoball.liftoff's."""
+    pole = OFF_NODE_POLES[1]
+    mesh = twoball.MeshOptions(file=ball_files["vtu"], pole=pole, geometry="exact")
+    fem = twoball.liftoff(BASKETBALL, backend="fem", mesh=mesh)
+    out = tmp_path / "exact.pvd"
+    result = twoball.export(out, BASKETBALL, mesh=mesh, frames=2)
+    assert not fem.extra["mesh_file"]["pole_at_node"]
+    assert result.report.t_liftoff_s == pytest.approx(fem.t_liftoff_s, rel=1e-12)
+    assert result.report.v_liftoff_m_s == pytest.approx(fem.v_liftoff_m_s, rel=1e-12)
+    assert result.provenance["mesh_file"]["geometry"] == "exact"
+    series = read_series(out)
+    assert np.allclose(np.linalg.norm(series.points, axis=1), BASKETBALL.radius, rtol=1e-12)
 
 
-@pytest.mark.parametrize(("argv", "flag"), REFUSED)
-def test_options_that_do_not_apply_are_refused(argv, flag, tmp_path, capsys):
-    out = tmp_path / {"export": "x.xdmf", "render": "x.png", "plot": "p.png"}[argv[0]]
-    with pytest.raises(SystemExit) as stop:
-        main([*argv, "--out", str(out)])
-    assert stop.value.code == 2
-    err = capsys.readouterr().err.strip()
-    assert err.count("\n") == 0 and flag in err, err
-    assert list(tmp_path.iterdir()) == []
-
-
-def test_cli_option_constants_match_the_model():
-    """The option group offers the model's own limits (defined once, in modal/contact/body.py)."""
-    from twoball.modal.contact import body
-
-    from twoball import _choices
-    from twoball.cli.main import full_parser
-
-    assert _choices.MAX_MASS_RATIO is body.MAX_MASS_RATIO == 100.0
-    assert _choices.ENERGY_OPTIONS is body.ENERGY_OPTIONS == ("ball", "both")
-    (sub,) = (a for a in full_parser()._actions if hasattr(a, "choices") and a.choices)
-    energy = next(a for a in sub.choices["liftoff"]._actions if "--energy" in a.option_strings)
-    assert "ball or both" in energy.help
+def test_warnings_of_a_file_are_those_of_its_liftoff(ball_files, ball_files_liftoff, tmp_path):
+    """No resolution estimate for a file (as in liftoff); a generated level 1 does warn."""
+    result = twoball.export(tmp_path / "x.vtu", BASKETBALL, mesh=ball_files["msh"])
+    assert result.warnings == list(ball_files_liftoff["msh"].warnings)
+    coarse = twoball.export(
+        tmp_path / "y.vtu", BASKETBALL, mesh=twoball.MeshOptions(level=1, order=1)
+    )
+    assert any("under-resolves" in w for w in coarse.warnings)

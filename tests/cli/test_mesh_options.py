@@ -1,176 +1,19 @@
-"""export, render and plot on the user's sphere mesh (``--mesh-file``, ``--pole``, ``--geometry``).
+"""The mesh and time options of the command line (twoball/cli/mesh_options.py): refusals.
 
-References: the finite-element lift-off of :func:`twoball.liftoff` on the same
-file (the pole's displacement at lift-off and t_l), the Legendre closed form
-evaluated at the nodes' polar angles (computed here, not by the exporter), the
-file's own radius and centre, and the command line against the Python API on
-the same file (bit-identical arrays).  The meshes are written here: a P2
-icosphere of level 2 (642 nodes) on a ball of 0.12 m around an offset centre
-as ``.vtu``, and the P1 icosphere of level 2 in millimetres as gmsh ``.msh``.
+Each refusal is one line naming the flag, exit status 2, and leaves nothing written.
 """
 
 from __future__ import annotations
 
-import json
 from pathlib import Path
 
-import imageio.v3 as iio
-import numpy as np
 import pytest
-from test_mesh_input import CENTER, OFF_NODE_POLES, RADIUS, on_ball, write
-from twoball.fem_membrane.mesh import icosphere
-from twoball.modal.filters import SpectralFilter
-from twoball.modal.legendre import displacement, legendre_series
-from twoball.verify.output.fields import check_frame_budget, field_mesh
-from twoball.verify.output.series import read_series
 
 import twoball
-from twoball._common.budget import BudgetError, frames_estimate, limits
 from twoball._common.errors import ParameterError
 from twoball.cli.main import main
 
-CASE = twoball.Case.preset("basketball")
-MM = 1000.0  # the .msh file is in millimetres
-
-
-@pytest.fixture(scope="module")
-def files(tmp_path_factory) -> dict[str, Path]:
-    """``vtu``: P2 ball of 0.12 m off the origin; ``msh``: P1 ball in mm; ``hole``: broken."""
-    folder = tmp_path_factory.mktemp("meshes")
-    quadratic, flat = icosphere(2, 2), icosphere(2)
-    paths = {name: folder / f"ball.{name}" for name in ("vtu", "msh")}
-    write(paths["vtu"], on_ball(quadratic), quadratic.cells)
-    write(paths["msh"], on_ball(flat) * MM, flat.cells, file_format="gmsh22")
-    paths["hole"] = folder / "hole.vtu"
-    write(paths["hole"], on_ball(flat), flat.cells[2:])  # two triangles removed
-    return paths
-
-
-@pytest.fixture(scope="module")
-def reference(files):
-    """The finite-element lift-off on each file (twoball.liftoff, full eigen route)."""
-    return {name: twoball.liftoff(CASE, backend="fem", mesh=files[name]) for name in ("vtu", "msh")}
-
-
-def pole_at_liftoff(series, report) -> float:
-    """u_m [m] at the pole node (the point on +z) in the frame at t_l of ``report``."""
-    frame = int(np.argmin(np.abs(series.times - report.t_liftoff_s)))
-    assert series.times[frame] == pytest.approx(report.t_liftoff_s, rel=1e-12)
-    pole = int(np.argmax(series.points[:, 2]))
-    assert np.allclose(series.points[pole], [0.0, 0.0, CASE.radius], atol=1e-12)
-    return float(series.point_data["u_m"][frame, pole])
-
-
-def closed_form(points_m: np.ndarray, times_s: np.ndarray) -> np.ndarray:
-    """u [m] of eq. (3.16) at the nodes' polar angles from +z, independently of the exporter."""
-    scale = CASE.scalings
-    series = legendre_series(CASE.phi_a, CASE.damping, SpectralFilter("lanczos", CASE.modes))
-    phi = np.arccos(points_m[:, 2] / np.linalg.norm(points_m, axis=1))
-    return displacement(series, times_s / scale.time, phi) * scale.length
-
-
-@pytest.mark.parametrize(("name", "suffix"), [("vtu", "vtu"), ("msh", "xdmf")])
-def test_export_matches_the_liftoff_on_the_same_file(files, reference, tmp_path, name, suffix):
-    out = tmp_path / f"fields.{suffix}"
-    frames = None if suffix == "vtu" else 3  # a .vtu holds the lift-off frame alone
-    result = twoball.export(out, CASE, mesh=files[name], frames=frames)
-    series = read_series(out)
-    fem = reference[name]
-    scale = fem.case.scalings
-    # SI, in the case's frame: R times the unit sphere whatever the file's radius and unit
-    radii = np.linalg.norm(series.points, axis=1)
-    assert np.allclose(radii, CASE.radius, rtol=1e-12)
-    assert series.cells.shape[1] == (6 if name == "vtu" else 3)
-    u_pole = pole_at_liftoff(series, fem)
-    assert u_pole == pytest.approx(fem.result.displacement * scale.length, rel=1e-9, abs=1e-15)
-    assert series.field_data["t_liftoff_s"] == pytest.approx(fem.t_liftoff_s, rel=1e-12)
-    assert result.report.v_liftoff_m_s == pytest.approx(fem.v_liftoff_m_s, rel=1e-12)
-    legendre = closed_form(series.points, series.times)
-    assert np.allclose(series.point_data["u_legendre_m"], legendre, rtol=1e-10, atol=1e-14)
-    # the file's own radius, centre and pole (its unit) in the metadata and the provenance
-    unit = MM if name == "msh" else 1.0
-    assert series.field_data["mesh_file_radius"] == pytest.approx(RADIUS * unit, rel=1e-12)
-    centre = [series.field_data[f"mesh_file_center_{a}"] for a in "xyz"]
-    assert np.allclose(centre, CENTER * unit, rtol=1e-12, atol=1e-12 * unit)
-    assert [series.field_data[f"mesh_file_pole_{a}"] for a in "xyz"] == [0.0, 0.0, 1.0]
-    text = json.loads(series.text["mesh_file"])
-    assert text["path"] == str(files[name].resolve()) and text["source_order"] == (
-        2 if name == "vtu" else 1
-    )
-    assert result.provenance["mesh_file"]["radius"] == pytest.approx(RADIUS * unit, rel=1e-12)
-    assert json.loads(series.text["provenance"])["mesh_file"]["path"] == text["path"]
-
-
-def test_cli_and_api_give_identical_arrays(files, tmp_path, capsys):
-    cli, api = tmp_path / "cli.xdmf", tmp_path / "api.xdmf"
-    pole = ",".join(str(c) for c in OFF_NODE_POLES[0])
-    code = main(["export", "--mesh-file", str(files["msh"]), "--pole", pole]
-                + ["--frames", "3", "--out", str(cli)])  # fmt: skip
-    assert code == 0 and "Exported fields" in capsys.readouterr().out
-    mesh = twoball.MeshOptions(file=files["msh"], pole=OFF_NODE_POLES[0])
-    twoball.export(api, CASE, mesh=mesh, frames=3)
-    a, b = read_series(cli), read_series(api)
-    assert np.array_equal(a.points, b.points) and np.array_equal(a.cells, b.cells)
-    assert np.array_equal(a.times, b.times)
-    assert a.point_data.keys() == b.point_data.keys()
-    for key in a.point_data:
-        assert np.array_equal(a.point_data[key], b.point_data[key]), key
-    assert a.field_data == b.field_data
-    assert a.text["mesh_file"] == b.text["mesh_file"]
-
-
-def test_exact_geometry_and_pole_inside_an_element(files, tmp_path):
-    """--geometry exact with the pole off every node: t_l and v_l as twoball.liftoff's."""
-    pole = OFF_NODE_POLES[1]
-    mesh = twoball.MeshOptions(file=files["vtu"], pole=pole, geometry="exact")
-    fem = twoball.liftoff(CASE, backend="fem", mesh=mesh)
-    out = tmp_path / "exact.pvd"
-    result = twoball.export(out, CASE, mesh=mesh, frames=2)
-    assert not fem.extra["mesh_file"]["pole_at_node"]
-    assert result.report.t_liftoff_s == pytest.approx(fem.t_liftoff_s, rel=1e-12)
-    assert result.report.v_liftoff_m_s == pytest.approx(fem.v_liftoff_m_s, rel=1e-12)
-    assert result.provenance["mesh_file"]["geometry"] == "exact"
-    series = read_series(out)
-    assert np.allclose(np.linalg.norm(series.points, axis=1), CASE.radius, rtol=1e-12)
-
-
-def test_render_writes_a_png_of_the_file_mesh(files, tmp_path, capsys):
-    out = tmp_path / "ball.png"
-    code = main(["render", "--mesh-file", str(files["vtu"]), "--size", "160x120"]
-                + ["--out", str(out)])  # fmt: skip
-    assert code == 0 and "Rendered" in capsys.readouterr().out
-    image = iio.imread(out)
-    assert image.shape[:2] == (120, 160)
-    assert np.mean(np.any(image[..., :3] < 245, axis=-1)) > 0.05  # the ball, not a blank
-
-
-def test_plot_pole_on_the_file_mesh(files, reference, tmp_path):
-    out = tmp_path / "pole.png"
-    result = twoball.plot("pole", out, CASE, mesh=files["msh"])
-    assert out.stat().st_size > 0
-    fem = reference["msh"]
-    assert result.reports["fem"].t_liftoff_s == pytest.approx(fem.t_liftoff_s, rel=1e-12)
-    assert result.provenance["mesh_file"]["radius"] == pytest.approx(RADIUS * MM, rel=1e-12)
-
-
-def test_warnings_of_a_file_are_those_of_its_liftoff(files, reference, tmp_path):
-    """No resolution estimate for a file (as in liftoff); a generated level 1 does warn."""
-    result = twoball.export(tmp_path / "x.vtu", CASE, mesh=files["msh"])
-    assert result.warnings == list(reference["msh"].warnings)
-    coarse = twoball.export(tmp_path / "y.vtu", CASE, mesh=twoball.MeshOptions(level=1, order=1))
-    assert any("under-resolves" in w for w in coarse.warnings)
-
-
-def test_frame_budget_counts_the_file_nodes(files):
-    """2000 frames fit on the 642 nodes of the file in a budget that level 3 P2 (2562) exceeds."""
-    small = frames_estimate(2000, 642, (CASE.modes + 1) ** 2).memory
-    large = frames_estimate(2000, 2562, (CASE.modes + 1) ** 2).memory
-    with limits(max_memory=(small + large) / 2):
-        check_frame_budget(CASE, 2000, "frames", field_mesh(files["vtu"]))
-        with pytest.raises(BudgetError, match="frames"):
-            check_frame_budget(CASE, 2000, "frames", field_mesh(None))
-
-
+BASKETBALL = twoball.Case.preset("basketball")
 COMMANDS = {
     "export": ["export", "--out", "{out}/x.vtu"],
     "render": ["render", "--size", "64x48", "--out", "{out}/x.png"],
@@ -191,9 +34,95 @@ def refused(argv: list[str], out: Path, capsys) -> str:
     return lines[0]
 
 
+@pytest.mark.parametrize(
+    ("argv", "flag"),
+    [
+        (["liftoff", "--backend", "fem", "--level", "-1"], "--level"),
+        (["liftoff", "--backend", "fem", "--order", "5"], "--order"),
+        (["liftoff", "--backend", "fem", "--dt", "0"], "--dt"),
+        (["liftoff", "--backend", "fem", "--dt", "-1e-5"], "--dt"),
+        (["liftoff", "--backend", "fem", "--mesh", "axisym", "--elements", "1"], "--elements"),
+        (["liftoff", "--backend", "fem", "--mesh", "cube"], "--mesh"),
+        (["liftoff", "--backend", "fem", "--scheme", "euler"], "--scheme"),
+        (["liftoff", "--backend", "fem", "--damping-model", "viscous"], "--damping-model"),
+        (["liftoff", "--backend", "spectral"], "--backend"),
+        (["eigen", "--level", "-2"], "--level"),
+        (["eigen", "--count", "0"], "--count"),
+        (["eigen", "--order", "x"], "--order"),
+    ],
+)
+def test_fem_bad_input_is_one_line_exit_2(capsys, argv, flag):
+    with pytest.raises(SystemExit) as stop:
+        main(argv)
+    err = capsys.readouterr().err.strip().splitlines()
+    assert stop.value.code == 2 and len(err) == 1 and flag in err[0], err
+
+
+@pytest.mark.parametrize(
+    ("argv", "flag"),
+    [
+        (["liftoff", "--backend", "fem", "--mesh", "ring", "--geometry", "exact"], "--geometry"),
+        (["eigen", "--mesh", "axisym", "--geometry", "exact"], "--geometry"),
+        (["liftoff", "--geometry", "exact"], "--geometry"),
+        (["converge", "h", "--mesh", "axisym", "--geometry", "exact"], "--geometry"),
+        (["eigen", "--order", "5"], "--order"),
+    ],
+)
+def test_cli_refusals_are_one_line(capsys, argv, flag):
+    from twoball.cli.main import main
+
+    with pytest.raises(SystemExit) as stop:
+        main(argv)
+    err = capsys.readouterr().err
+    assert stop.value.code == 2 and err.startswith("twoball: error: " + flag)
+    assert err.count("\n") == 1 and "Traceback" not in err
+
+
+@pytest.mark.parametrize(
+    "argv",
+    [
+        ["export", "--out", "{tmp}/f.vtu", "--route", "bogus"],
+        ["render", "--out", "{tmp}/f.png", "--route", "eigen"],
+        ["plot", "pole", "--out", "{tmp}/f.png", "--route", "dense"],
+        ["plot", "eigen", "--out", "{tmp}/f.png", "--route", "full"],
+        ["eigen", "--level", "1", "--order", "1", "--count", "43"],
+    ],
+)
+def test_bad_route_or_count_is_one_line_exit_2(argv, tmp_path, capsys):
+    from twoball.cli.main import main
+
+    with pytest.raises(SystemExit) as stop:
+        main([a.format(tmp=tmp_path) for a in argv])
+    err = capsys.readouterr().err.strip().splitlines()
+    assert stop.value.code == 2 and len(err) == 1, err
+    flag = "--count" if "--count" in argv else "--route"
+    assert err[0].startswith("twoball: error: " + flag), err
+    assert not any(tmp_path.iterdir())  # no partial output
+
+
+@pytest.mark.parametrize(
+    "argv",
+    [
+        ["export", "--level", "1", "--order", "3", "--out", "{tmp}/series.xdmf"],
+        ["render", "--level", "1", "--order", "4", "--out", "{tmp}/ball.png"],
+    ],
+)
+def test_field_files_and_pictures_refuse_p3_p4_in_one_line(tmp_path, capsys, argv):
+    """No node order for 10/15-node triangles is shared by the writers: refused, exit 2."""
+    from twoball.cli.main import main
+
+    with pytest.raises(SystemExit) as stop:
+        main([part.format(tmp=tmp_path) for part in argv])
+    err = capsys.readouterr().err
+    assert stop.value.code == 2
+    assert len(err.strip().splitlines()) == 1 and "--order" in err and "Traceback" not in err
+
+
 @pytest.mark.parametrize("command", COMMANDS)
-def test_broken_mesh_is_refused(files, tmp_path, capsys, command):
-    line = refused([*COMMANDS[command], "--mesh-file", str(files["hole"])], tmp_path / "o", capsys)
+def test_broken_mesh_is_refused(ball_files, tmp_path, capsys, command):
+    line = refused(
+        [*COMMANDS[command], "--mesh-file", str(ball_files["hole"])], tmp_path / "o", capsys
+    )
     assert "--mesh-file" in line and "closed surface" in line and "boundary edges" in line
 
 
@@ -204,32 +133,32 @@ def test_pole_without_mesh_file_is_refused(tmp_path, capsys, command):
 
 
 @pytest.mark.parametrize("command", ["export", "render"])
-def test_order_3_on_a_file_is_refused(files, tmp_path, capsys, command):
-    argv = [*COMMANDS[command], "--mesh-file", str(files["vtu"]), "--order", "3"]
+def test_order_3_on_a_file_is_refused(ball_files, tmp_path, capsys, command):
+    argv = [*COMMANDS[command], "--mesh-file", str(ball_files["vtu"]), "--order", "3"]
     assert "--order must be 1 or 2 for field files and pictures" in refused(
         argv, tmp_path / "o", capsys
     )
 
 
-def test_refusals_that_do_not_apply(files, tmp_path, capsys):
-    eigen = ["plot", "eigen", "--mesh-file", str(files["vtu"]), "--out", "{out}/p.png"]
+def test_refusals_that_do_not_apply(ball_files, tmp_path, capsys):
+    eigen = ["plot", "eigen", "--mesh-file", str(ball_files["vtu"]), "--out", "{out}/p.png"]
     assert "--mesh-file must be left out with kind eigen" in refused(eigen, tmp_path / "a", capsys)
     ring = [*COMMANDS["export"], "--mesh", "ring", "--geometry", "exact"]
     assert "--geometry must be isoparametric with mesh ring" in refused(
         ring, tmp_path / "b", capsys
     )
-    level = [*COMMANDS["render"], "--mesh-file", str(files["vtu"]), "--level", "2"]
+    level = [*COMMANDS["render"], "--mesh-file", str(ball_files["vtu"]), "--level", "2"]
     assert "--level must be left out with a mesh file" in refused(level, tmp_path / "c", capsys)
     with pytest.raises(ParameterError, match="^pole"):
         twoball.plot(
-            "waterfall", tmp_path / "w.png", CASE, mesh=twoball.MeshOptions(pole=(0, 0, 1))
+            "waterfall", tmp_path / "w.png", BASKETBALL, mesh=twoball.MeshOptions(pole=(0, 0, 1))
         )
 
 
 @pytest.mark.parametrize("command", COMMANDS)
-def test_a_body_of_finite_mass_needs_a_generated_mesh(files, tmp_path, capsys, command):
+def test_a_body_of_finite_mass_needs_a_generated_mesh(ball_files, tmp_path, capsys, command):
     """A body of finite mass is solved on generated meshes: a file or exact geometry is refused."""
-    argv = [*COMMANDS[command], "--mass-ratio", "0.01", "--mesh-file", str(files["vtu"])]
+    argv = [*COMMANDS[command], "--mass-ratio", "0.01", "--mesh-file", str(ball_files["vtu"])]
     line = refused(argv, tmp_path / "a", capsys)
     assert line.startswith("twoball: error: --mesh-file must be a generated mesh"), line
     argv = [*COMMANDS[command], "--mass-ratio", "0.01", "--geometry", "exact"]

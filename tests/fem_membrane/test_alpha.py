@@ -1,31 +1,26 @@
-"""Generalized-alpha stepping against modal superposition: order 2 in dt, Woodbury solve."""
+"""Generalized-alpha stepping (fem_membrane/alpha.py).
+
+Parameters, order 2, Woodbury solve, pole functional.
+"""
 
 from __future__ import annotations
 
 import numpy as np
 import pytest
 import scipy.sparse as sp
-from twoball.fem_membrane.alpha import AlphaParameters, GeneralizedAlpha, automatic_step
+from twoball.fem_membrane.alpha import AlphaParameters, GeneralizedAlpha
 from twoball.fem_membrane.damping import ModalDamping
 from twoball.fem_membrane.eigen import Eigenpairs
+from twoball.fem_membrane.mesh import icosphere
+from twoball.fem_membrane.mesh_input import (
+    load_sphere_mesh,
+)
 from twoball.fem_membrane.modal import filtered_displacement
-from twoball.fem_membrane.solve import alpha_motion, fem_pole_motion, modal_model
-from twoball.modal.liftoff import SampledPoleMotion, find_liftoff
-from twoball.modal.parameters import Case
+from twoball.fem_membrane.space import sphere_space
 
-PHI_A, DAMPING = 2.6, 0.13
-GAMMA = Case().gamma
+from tests.meshes import OFF_NODE_POLES
 
-
-@pytest.fixture(scope="module")
-def model():
-    return modal_model(PHI_A, DAMPING, "lanczos", mesh="axisym", elements=100, order=2)
-
-
-def pole_difference(model, motion) -> np.ndarray:
-    exact = model.series.pole(motion.times)
-    sampled = motion.pole(motion.times)
-    return np.array([np.abs(a - b).max() for a, b in zip(sampled, exact, strict=True)])
+DAMPING = 0.13
 
 
 def test_parameters():
@@ -60,8 +55,8 @@ def test_single_damped_oscillator_is_second_order(rho_inf):
     assert np.all((orders > 1.9) & (orders < 2.1)), orders
 
 
-def test_woodbury_solve_equals_the_dense_effective_matrix(model):
-    space, pairs = model.space, model.pairs
+def test_woodbury_solve_equals_the_dense_effective_matrix(axisym_model):
+    space, pairs = axisym_model.space, axisym_model.pairs
     damping = ModalDamping.from_modes(space.mass, pairs, DAMPING)
     stepper = GeneralizedAlpha(space.mass, space.stiffness, 0.01, damping, rho_inf=0.7)
     p = stepper.parameters
@@ -77,49 +72,23 @@ def test_woodbury_solve_equals_the_dense_effective_matrix(model):
     assert np.allclose(damping @ v, dense_c @ v)
 
 
-def test_initial_state_is_the_filtered_series(model):
-    u0 = filtered_displacement(model.series, model.pairs)
-    pole = model.series.pole(0.0)
-    assert u0[model.space.pole] == pytest.approx(float(pole.u), abs=1e-12)
-    stepper = GeneralizedAlpha(model.space.mass, model.space.stiffness, 0.01)
+def test_initial_state_is_the_filtered_series(axisym_model):
+    u0 = filtered_displacement(axisym_model.series, axisym_model.pairs)
+    pole = axisym_model.series.pole(0.0)
+    assert u0[axisym_model.space.pole] == pytest.approx(float(pole.u), abs=1e-12)
+    stepper = GeneralizedAlpha(axisym_model.space.mass, axisym_model.space.stiffness, 0.01)
     a0 = stepper.initial_acceleration(u0, np.zeros_like(u0))
-    assert a0[model.space.pole] == pytest.approx(float(pole.u_tt), abs=1e-8)
+    assert a0[axisym_model.space.pole] == pytest.approx(float(pole.u_tt), abs=1e-8)
 
 
-@pytest.mark.parametrize("rho_inf", [1.0, 0.5])
-def test_alpha_matches_modal_at_order_2(model, rho_inf):
-    differences = []
-    for steps in (1000, 2000, 4000):
-        motion, info = alpha_motion(model, dt=4 * np.pi / steps, rho_inf=rho_inf)
-        assert isinstance(motion, SampledPoleMotion) and info["steps"] == steps
-        differences.append(pole_difference(model, motion))
-    differences = np.array(differences)  # rows: dt; columns: u, u_t, u_tt
-    orders = np.log2(differences[:-1] / differences[1:])
-    assert np.all((orders > 1.8) & (orders < 2.2)), orders
-
-
-def test_alpha_liftoff_converges_to_modal_liftoff_at_order_2(model):
-    # the step samples go through per-field splines, so t_l and v_l inherit O(dt^2)
-    reference = find_liftoff(model.series, GAMMA)
-    gaps = []
-    for steps in (1000, 2000, 4000):
-        motion, _ = alpha_motion(model, dt=4 * np.pi / steps)
-        result = find_liftoff(motion, GAMMA)
-        gaps.append(
-            [abs(result.t / reference.t - 1), abs(result.velocity / reference.velocity - 1)]
-        )
-    gaps = np.array(gaps)
-    orders = np.log2(gaps[:-1] / gaps[1:])
-    assert np.all((orders > 1.8) & (orders < 2.2)), orders
-    assert np.all(gaps[-1] < 1e-4)
-
-
-def test_fem_pole_motion_alpha_with_automatic_step():
-    motion, info = fem_pole_motion(
-        PHI_A, DAMPING, "lanczos", mesh="axisym", elements=40, order=2, scheme="alpha"
-    )
-    assert info["time_scheme"] == "alpha" and info["rho_inf"] == 1.0
-    assert info["dt"] * info["omega_cut"] <= 0.2 + 1e-12
-    assert info["steps"] * info["dt"] == pytest.approx(4 * np.pi)
-    assert motion.times[-1] >= 4 * np.pi
-    assert automatic_step(31.0, 4 * np.pi) * 31.0 <= 0.2
+def test_time_stepping_evaluates_the_pole_functional():
+    # the stepped pole history is the functional's weighted sum of the nodal histories
+    space = sphere_space(load_sphere_mesh(icosphere(1), pole=OFF_NODE_POLES[1]).mesh)
+    stepper = GeneralizedAlpha(space.mass, space.stiffness, 0.02, rho_inf=0.8)
+    u0 = np.cos(np.arange(space.dofs))
+    row = space.pole_row
+    history = stepper.run(u0, np.zeros_like(u0), 0.4, row)
+    nodal = [stepper.run(u0, np.zeros_like(u0), 0.4, int(i)) for i in row.indices]
+    for name in ("u", "u_t", "u_tt"):
+        combined = sum(w * getattr(h, name) for w, h in zip(row.data, nodal, strict=True))
+        assert np.allclose(getattr(history, name), combined, rtol=0, atol=1e-13)

@@ -1,7 +1,4 @@
-"""The finite-element backend of the finite-mass contact: the same solver on FE modes.
-
-Independent value: the Legendre backend (closed-form modes and cap averages).
-"""
+"""The finite-element contact (fem_membrane/contact.py): cap functional, agreement with Legendre."""
 
 from __future__ import annotations
 

@@ -1,4 +1,7 @@
-"""Rayleigh damping: fit, effective-ratio table, and stepping checked mode by mode."""
+"""Rayleigh damping on finite elements (fem_membrane/damping.py).
+
+Effective ratios, stepping mode by mode.
+"""
 
 from __future__ import annotations
 
@@ -14,18 +17,6 @@ from twoball.modal.series import ModalSeries
 from twoball._common.errors import ParameterError
 
 PHI_A, DAMPING = 2.6, 0.13
-
-
-def test_fit_matches_the_ratio_at_both_frequencies():
-    fit = Rayleigh.fit(DAMPING, math.sqrt(2), math.sqrt(30 * 31))
-    assert fit.ratios(np.array([math.sqrt(2), math.sqrt(930)])) == pytest.approx(
-        [DAMPING, DAMPING], rel=1e-14
-    )
-    inside = fit.ratios(np.array([3.0, 10.0, 20.0]))
-    assert np.all(inside < DAMPING)  # below D between the fitting frequencies
-    assert fit.ratios(np.array([60.0]))[0] > DAMPING
-    with pytest.raises(ParameterError, match="rayleigh_frequencies"):
-        Rayleigh.fit(DAMPING, 5.0, 2.0)
 
 
 def test_rayleigh_runs_and_reports_effective_ratios():

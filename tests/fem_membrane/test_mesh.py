@@ -1,4 +1,7 @@
-"""Sphere meshes: counts, pole vertex, orientation, curved nodes, ring, meshio round trip."""
+"""Sphere meshes (fem_membrane/mesh.py).
+
+Counts, pole vertex, orientation, curved nodes, the ring.
+"""
 
 from __future__ import annotations
 
@@ -6,16 +9,17 @@ import math
 
 import numpy as np
 import pytest
+from twoball.fem_membrane.axisym import axisym_space
 from twoball.fem_membrane.mesh import (
-    elevate,
+    _edges,
     icosphere,
     min_angle,
     ring_rows,
     ring_sphere,
     topology,
-    write_mesh,
 )
-from twoball.fem_membrane.mesh_input import read_mesh
+
+from twoball._common.errors import ParameterError
 
 PHI_A = 2.6
 
@@ -30,6 +34,41 @@ def euler_characteristic(mesh) -> int:
     t = mesh.triangles
     edges = np.unique(np.sort(t[:, [0, 1, 1, 2, 2, 0]].reshape(-1, 2), axis=1), axis=0)
     return mesh.vertex_count - len(edges) + len(t)
+
+
+def test_mesh_builders_reject():
+    with pytest.raises(ParameterError, match="level must be an integer >= 0, got -1"):
+        icosphere(-1)
+    with pytest.raises(ParameterError, match="order must be 1, 2, 3 or 4"):
+        icosphere(1, order=5)
+    with pytest.raises(ParameterError, match="phi_a"):
+        ring_sphere(1, 4.0)
+    with pytest.raises(ParameterError, match="elements must be an integer >= 2"):
+        axisym_space(1, PHI_A)
+
+
+@pytest.mark.parametrize("order", [3, 4])
+@pytest.mark.parametrize("kind", ["sphere", "ring"])
+def test_nodes_lie_on_the_sphere_once_each(order, kind):
+    mesh = icosphere(1, order) if kind == "sphere" else ring_sphere(1, PHI_A, order)
+    flat = icosphere(1) if kind == "sphere" else ring_sphere(1, PHI_A)
+    edges, _ = _edges(flat.triangles)
+    interior = {3: 1, 4: 3}[order]
+    assert mesh.cells.shape[1] == (order + 1) * (order + 2) // 2
+    assert len(mesh.points) == len(flat.points) + (order - 1) * len(edges) + interior * len(
+        flat.cells
+    )
+    assert np.abs(np.linalg.norm(mesh.points, axis=1) - 1.0).max() < 1e-15
+    # no node twice (a torn numbering would duplicate edge nodes)
+    assert len(np.unique(np.round(mesh.points, 12), axis=0)) == len(mesh.points)
+    assert np.array_equal(np.unique(mesh.cells), np.arange(len(mesh.points)))
+    if kind == "ring":  # nodes of ring edges stay on the ring
+        height = math.cos(PHI_A)
+        on_ring = np.abs(flat.points[:, 2] - height) < 1e-12
+        ring_edges = np.flatnonzero(on_ring[edges].all(axis=1))
+        start = len(flat.points)
+        nodes = start + (order - 1) * ring_edges[:, None] + np.arange(order - 1)
+        assert np.abs(mesh.points[nodes.ravel(), 2] - height).max() < 1e-15
 
 
 @pytest.mark.parametrize("level", [0, 1, 2, 3])
@@ -99,16 +138,3 @@ def test_topology_keeps_orientation_and_points():
     skmesh = topology(mesh)
     assert np.array_equal(skmesh.t.T, mesh.triangles)  # sort_t=False: no reordering
     assert skmesh.p.shape == (3, mesh.vertex_count)
-
-
-@pytest.mark.parametrize("order", [1, 2])
-@pytest.mark.parametrize("suffix", [".vtu", ".vtk"])
-def test_meshio_round_trip_keeps_z(tmp_path, order, suffix):
-    mesh = elevate(icosphere(1)) if order == 2 else icosphere(1)
-    path = tmp_path / f"sphere{suffix}"
-    write_mesh(path, mesh)
-    back = read_mesh(path)
-    assert back.order == order
-    assert np.allclose(back.points[back.cells], mesh.points[mesh.cells], atol=1e-15)
-    assert back.pole == mesh.pole
-    assert np.ptp(back.points[:, 2]) == pytest.approx(2.0)

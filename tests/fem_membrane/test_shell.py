@@ -21,6 +21,8 @@ from twoball import Case
 
 STIFF = Stiffness(beta=0.02, gas=18.7)  # about the tennis preset's
 BANDS = {1: (1.7, 2.3), 2: (3.5, 4.6)}  # h^(2p), as the membrane's (tests/test_fem_eigen.py)
+
+
 DEGREES = 8  # axisymmetric: n = 1 .. 8
 
 
@@ -43,20 +45,6 @@ def orders(worst: list[float], ratio: float = 2.0) -> np.ndarray:
     return np.log(w[:-1] / w[1:]) / math.log(ratio)
 
 
-@pytest.mark.parametrize("order", [1, 2])
-def test_axisymmetric_stiff_eigenvalues_converge_at_order_2p(order):
-    exact = exact_axisym(DEGREES + 1)[1:]
-    worst = []
-    for elements in (40, 80, 160):
-        space = axisym_space(elements, 2.6, order)
-        gas, values = split_gas(space, shell_eigenpairs_direct(space, STIFF, DEGREES + 1))
-        assert gas == pytest.approx(STIFF.gas, rel=1e-12)  # 1^T M 1 = 4 pi exactly
-        worst.append(np.max(np.abs(values / exact - 1.0)))
-    low, high = BANDS[order]
-    observed = orders(worst)
-    assert np.all((observed > low) & (observed < high)), observed
-
-
 def _sphere_exact(count: int) -> np.ndarray:
     degrees = np.array([d for d in range(8) for _ in range(2 * d + 1)][:count])
     return STIFF.legendre_omega(degrees) ** 2
@@ -72,6 +60,23 @@ def _rayleigh(space, vectors: np.ndarray) -> np.ndarray:
     residual = kx - (space.mass @ vectors) * values
     assert np.abs(residual).max() < 1e-8 * values.max()  # they are eigenpairs of K_s
     return values
+
+
+TENNIS = Case.preset("tennis")
+
+
+@pytest.mark.parametrize("order", [1, 2])
+def test_axisymmetric_stiff_eigenvalues_converge_at_order_2p(order):
+    exact = exact_axisym(DEGREES + 1)[1:]
+    worst = []
+    for elements in (40, 80, 160):
+        space = axisym_space(elements, 2.6, order)
+        gas, values = split_gas(space, shell_eigenpairs_direct(space, STIFF, DEGREES + 1))
+        assert gas == pytest.approx(STIFF.gas, rel=1e-12)  # 1^T M 1 = 4 pi exactly
+        worst.append(np.max(np.abs(values / exact - 1.0)))
+    low, high = BANDS[order]
+    observed = orders(worst)
+    assert np.all((observed > low) & (observed < high)), observed
 
 
 @pytest.mark.parametrize("order", [1, 2])
@@ -110,9 +115,6 @@ def test_dense_mixed_matrix_has_the_mapped_membrane_spectrum(space):
     if space.kind == "axisym":  # ARPACK on the saddle-point solve: the lowest ones
         direct = shell_eigenpairs_direct(space, STIFF, 12).values
         assert np.allclose(direct, dense[:12], rtol=1e-9, atol=0.0)
-
-
-TENNIS = Case.preset("tennis")
 
 
 @pytest.mark.parametrize("route", ["full", "krylov"])

@@ -2,10 +2,13 @@
 
 import math
 
+import mpmath
 import numpy as np
 import pytest
 from scipy.integrate import quad
+from scipy.optimize import brentq
 from twoball.modal.initial import (
+    _energy_shape,
     deformation_work,
     initial_displacement,
     initial_displacement_x,
@@ -15,6 +18,20 @@ from twoball.modal.initial import (
 )
 
 from twoball._common.errors import ParameterError
+
+V0 = np.geomspace(1e-10, 1e4, 241)
+
+
+def brentq_phi_a(v0: float) -> float:
+    """phi_a of eq. (3.7) by scipy's Brent solver in s = pi - phi_a (the former method)."""
+    target = math.log((v0 / (0.12 * 320.0)) ** 2)
+
+    def residual(s: float) -> float:
+        return math.log(_energy_shape(math.pi - s)) - target
+
+    eps = np.finfo(float).eps
+    s = brentq(residual, 1e-6, math.pi / 2 * (1 - 1e-15), xtol=1e-300, rtol=4 * eps, maxiter=500)
+    return math.pi - s
 
 
 def test_initial_displacement_is_the_truncated_sphere():
@@ -81,3 +98,36 @@ def test_work_equals_strain_energy_of_F(phi_a):
     assert -deformation_work(phi_a) == pytest.approx(math.pi * strain, rel=1e-10)
     # eq. (3.6): the kinetic energy 2 pi rho R^2 v0^2 -> 2 pi v0^2 in units of T R^2
     assert 2 * math.pi * v0_dimensionless(phi_a) ** 2 == pytest.approx(-deformation_work(phi_a))
+
+
+def test_phi_a_from_v0_matches_brent_within_round_off():
+    ours = np.array([phi_a_from_v0(v, 0.12, 320.0) for v in V0])
+    brent = np.array([brentq_phi_a(v) for v in V0])
+    # both find the sign change of the same floating-point residual: a few ulp apart
+    assert (np.abs(ours - brent) / np.spacing(brent)).max() <= 4
+    # and the speed comes back where it is well conditioned: away from phi_a -> pi,
+    # where 1 + cos phi_a cancels, and from phi_a -> pi/2, where v0 ~ (-cos phi_a)^-1/2
+    resolved = (ours < 3.0) & (V0 <= 100.0)
+    back = np.array([v0_from_phi_a(p, 0.12, 320.0) for p in ours[resolved]])
+    np.testing.assert_allclose(back, V0[resolved], rtol=1e-13)
+
+
+def test_phi_a_from_v0_against_eq_3_7_in_high_precision():
+    mpmath.mp.dps = 40
+    for v0 in V0[165::8]:  # phi_a from 2.96 down to pi/2 + 3e-6
+        log_t = 2 * mpmath.log(mpmath.mpf(v0) / (mpmath.mpf("0.12") * 320))
+
+        def residual(y, log_t=log_t):  # log of (3.7) minus log (v0 / R c)^2, y = log(pi - phi_a)
+            c = -mpmath.cos(mpmath.exp(y))
+            return mpmath.log((1 + c) ** 2 * (2 * c - 1) / (6 * c)) - log_t
+
+        bracket = (mpmath.log(1e-7), mpmath.log(mpmath.pi / 2) - mpmath.mpf(10) ** -30)
+        exact = float(mpmath.pi - mpmath.exp(mpmath.findroot(residual, bracket, "illinois")))
+        # (3.7) in double precision has round-off amplified by 1 / (1 + cos phi_a) <= 100 here
+        assert abs(phi_a_from_v0(v0, 0.12, 320.0) - exact) <= 4 * np.spacing(exact)
+
+
+@pytest.mark.parametrize("v0", [1e-12, 1e-30, 1e-300])
+def test_phi_a_from_v0_refuses_speeds_it_cannot_resolve(v0):
+    with pytest.raises(ParameterError, match=r"^v0 must be at least .* m/s"):
+        phi_a_from_v0(v0, 0.12, 320.0)

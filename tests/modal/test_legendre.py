@@ -5,10 +5,16 @@ import math
 import mpmath
 import numpy as np
 import pytest
+from scipy.linalg import eigvalsh_tridiagonal
 from scipy.special import eval_legendre
 from twoball.modal.filters import SpectralFilter
-from twoball.modal.initial import deformation_work, initial_displacement
+from twoball.modal.initial import (
+    deformation_work,
+    initial_displacement,
+)
 from twoball.modal.legendre import (
+    _DENSE_JACOBI_MAX,
+    _gauss_legendre,
     displacement,
     legendre_coefficients,
     legendre_coefficients_recurrence,
@@ -112,3 +118,33 @@ def test_modal_energy_tends_to_the_work_of_eq_3_5():
     assert all(g > 0 for g in gaps)  # truncation only removes energy
     assert gaps[1] < 0.6 * gaps[0] and gaps[2] < 0.6 * gaps[1]
     assert gaps[-1] / target < 0.01
+
+
+@pytest.mark.parametrize("points", [2, 9, 46, 101, _DENSE_JACOBI_MAX, _DENSE_JACOBI_MAX + 1])
+def test_gauss_rule_dense_and_tridiagonal_eigensolvers_agree(points):
+    x_dense, w_dense = _gauss_legendre(points, "dense")
+    x_tri, w_tri = _gauss_legendre(points, "tridiagonal")
+    np.testing.assert_allclose(x_dense, x_tri, rtol=0, atol=4e-16)
+    np.testing.assert_allclose(w_dense, w_tri, rtol=4e-15, atol=0)
+    # the nodes against numpy's independent rule (companion matrix + one Newton step);
+    # its weights are less accurate near the ends (1e-11 relative), so check ours by
+    # exactness instead: sum w P_k(x) = int P_k = 2 delta_k0 for every k < 2 m
+    np.testing.assert_allclose(x_dense, np.polynomial.legendre.leggauss(points)[0], atol=1e-15)
+    moments = np.polynomial.legendre.legvander(x_dense, 2 * points - 1).T @ w_dense
+    np.testing.assert_allclose(moments, np.eye(2 * points)[0] * 2.0, rtol=0, atol=2e-14)
+
+
+def test_gauss_rule_auto_switches_at_the_documented_size():
+    for points in (_DENSE_JACOBI_MAX, _DENSE_JACOBI_MAX + 1):
+        solver = "dense" if points <= _DENSE_JACOBI_MAX else "tridiagonal"
+        (x_auto, w_auto), (x, w) = _gauss_legendre(points), _gauss_legendre(points, solver)
+        assert np.array_equal(x_auto, x) and np.array_equal(w_auto, w)
+    with pytest.raises(ValueError, match="eigensolver"):
+        _gauss_legendre(10, "qr")
+
+
+def test_gauss_rule_nodes_are_the_jacobi_eigenvalues():
+    # Golub-Welsch: the nodes are the eigenvalues of the Jacobi matrix of P_n (a third check)
+    k = np.arange(1, 60)
+    x = eigvalsh_tridiagonal(np.zeros(60), k / np.sqrt(4.0 * k * k - 1.0))
+    np.testing.assert_allclose(_gauss_legendre(60, "dense")[0], x, rtol=0, atol=2e-15)

@@ -1,11 +1,70 @@
-"""Case parameters, scalings and presets (SI edge of the model)."""
+"""The case (modal/parameters.py): units, presets, the phi_a rule of eq. (3.7), refusals."""
+
+from __future__ import annotations
 
 import math
 
 import pytest
 from twoball.modal.parameters import PRESETS, Case, Scalings, preset, wave_speed_from_pressure
 
+import twoball
 from twoball._common.errors import ParameterError
+
+
+def v0_of_phi_a(phi_a: float, radius: float = 0.12, wave_speed: float = 320.0) -> float:
+    """Eq. (3.7) forwards: the impact speed [m/s] that flattens the ball up to phi_a."""
+    c = math.cos(phi_a)
+    return radius * wave_speed * math.sqrt((-1 + 2 * c**3 + 3 * c**2) / (6 * c))
+
+
+# --------------------------------------------------------------------------- phi_a rule
+def test_phi_a_rule_given_measured_or_eq_3_7():
+    assert twoball.Case().phi_a_source == "measured (basketball)" and twoball.Case().phi_a == 2.6
+    assert twoball.Case(v0=-4.1) == twoball.Case.preset("basketball")  # sign ignored
+    given = twoball.Case(phi_a=2.5)
+    assert (given.phi_a, given.phi_a_source, given.phi_a_note) == (2.5, "given", None)
+    derived = twoball.Case(v0=3.0)  # today's Case(v0=3.0) no longer keeps 2.6 silently
+    assert derived.phi_a_source == "eq. (3.7)"
+    assert v0_of_phi_a(derived.phi_a) == pytest.approx(3.0, rel=1e-12)
+    assert derived.phi_a_note.startswith(f"phi_a = {derived.phi_a:.4f} rad from eq. (3.7)")
+    assert "|v0| = 3 m/s" in derived.phi_a_note and "measured 2.6 rad" in derived.phi_a_note
+
+
+def test_phi_a_rule_through_derive_and_sweeps():
+    base = twoball.Case.preset("basketball")
+    there_and_back = base.derive(v0=3.0).derive(v0=4.1)
+    assert there_and_back == base and there_and_back.phi_a_source == "measured (basketball)"
+    assert base.derive(damping=0.2).phi_a_source == "measured (basketball)"
+    kept = base.derive(v0=3.0).derive(damping=0.2)
+    assert kept.phi_a_source == "eq. (3.7)" and kept.phi_a == base.derive(v0=3.0).phi_a
+    assert base.derive(phi_a=2.5).derive(damping=0.2).phi_a_source == "given"
+    wider = base.derive(radius=0.2)
+    assert "R = 0.2 m" in wider.phi_a_note
+    assert v0_of_phi_a(wider.phi_a, radius=0.2) == pytest.approx(4.1, rel=1e-12)
+    explicit = base.derive(phi_a="eq. (3.7)")  # eq. (3.7) even at the preset's own values
+    assert explicit.phi_a_source == "eq. (3.7)" and v0_of_phi_a(explicit.phi_a) == pytest.approx(
+        4.1
+    )
+
+
+def test_own_measurements_have_no_preset_and_no_note():
+    case = twoball.Case.from_measurements(radius=0.12, v0=4.1, pressure=77200, mass=0.567)
+    assert case.preset_name is None and case.phi_a_source == "eq. (3.7)" and case.phi_a_note is None
+    assert twoball.Case(preset_name=None).phi_a_source == "eq. (3.7)"
+
+
+@pytest.mark.parametrize(
+    "changes",
+    [
+        {"phi_a": 2.5, "phi_a_source": "measured (basketball)"},
+        {"phi_a": 2.5, "phi_a_source": "eq. (3.7)"},
+        {"phi_a": 2.6, "phi_a_source": "measured (basketball)", "v0": 3.0},
+    ],
+)
+def test_phi_a_source_cannot_be_faked(changes):
+    with pytest.raises(twoball.ParameterError) as error:
+        twoball.Case(**changes)
+    assert error.value.name == "phi_a_source"
 
 
 def test_table2_wave_speed_from_pressure():

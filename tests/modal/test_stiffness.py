@@ -2,7 +2,6 @@
 
 from __future__ import annotations
 
-import json
 import math
 from dataclasses import replace
 
@@ -23,7 +22,6 @@ from twoball.modal.stiffness import (
 import twoball
 from twoball import Case
 from twoball._common.errors import ParameterError
-from twoball.cli.main import main
 
 # today's results (main at d34289e, `twoball liftoff --json ...`), bit for bit
 MAIN = {
@@ -33,29 +31,14 @@ MAIN = {
 }
 
 
-class _Out:
-    def __init__(self, code: int, out: str, err: str) -> None:
-        self.returncode, self.stdout, self.stderr = code, out, err
-
-
-@pytest.fixture
-def cli(capsys):
-    def run(*args: str) -> _Out:
-        try:
-            code = main(["liftoff", *args])
-        except SystemExit as stop:
-            code = stop.code
-        out, err = capsys.readouterr()
-        return _Out(code, out, err)
-
-    return run
-
-
-@pytest.mark.parametrize("args", list(MAIN))
-def test_membrane_results_are_todays_bit_for_bit(cli, args):
-    data = json.loads(cli("--json", *args).stdout)
-    assert (data["t_liftoff_s"], data["v_liftoff_m_s"]) == MAIN[args]
-    assert "bending_N_m" not in data and "beta" not in data
+def _laplacian_eigenvalue(n: int) -> float:
+    """-Delta_s P_n / P_n by polynomial algebra: Delta = d/dx (1 - x^2) d/dx."""
+    c = np.zeros(n + 1)
+    c[n] = 1.0
+    p = npleg.leg2poly(c)
+    d = np.polynomial.polynomial.polyder(p)
+    lap = np.polynomial.polynomial.polyder(np.polynomial.polynomial.polymul([1, 0, -1], d))
+    return -lap[n] / p[n] if n else 0.0
 
 
 def test_zero_bending_and_no_gas_leave_the_series_unchanged():
@@ -71,16 +54,6 @@ def test_zero_bending_and_no_gas_leave_the_series_unchanged():
     assert np.array_equal(a.omega, b.omega) and b.filter_omega is None
     assert np.array_equal(a.pole(t).u_tt, b.pole(t).u_tt)
     assert twoball.liftoff(same).as_dict()["t_liftoff_s"] == MAIN[()][0]
-
-
-def _laplacian_eigenvalue(n: int) -> float:
-    """-Delta_s P_n / P_n by polynomial algebra: Delta = d/dx (1 - x^2) d/dx."""
-    c = np.zeros(n + 1)
-    c[n] = 1.0
-    p = npleg.leg2poly(c)
-    d = np.polynomial.polynomial.polyder(p)
-    lap = np.polynomial.polynomial.polyder(np.polynomial.polynomial.polymul([1, 0, -1], d))
-    return -lap[n] / p[n] if n else 0.0
 
 
 def test_bending_operator_on_legendre_polynomials_matches_the_dispersion():
@@ -202,36 +175,6 @@ def test_pressure_comes_with_the_mass_or_a_stiff_measurement():
         radius=0.0335, v0=4.1, wave_speed=549.0, pressure=8e4, gas="isothermal"
     )
     assert own.stiffness.gas == pytest.approx(6 * (8e4 + ATMOSPHERE) / 8e4, rel=1e-14)
-
-
-@pytest.mark.parametrize(
-    "args, flag",
-    [
-        (("--bending", "-2"), "--bending"),
-        (("--preset", "tennis", "--gas", "air"), "--gas"),
-        (("--bending", "1", "--thickness", "0.003"), "--bending"),
-        (("--youngs-modulus", "1e6"), "--youngs-modulus/--thickness"),
-        (("--poisson", "0.3"), "--poisson"),
-        (("--preset", "tennis", "--youngs-modulus", "1e6", "--thickness", "3e-3",
-          "--poisson", "0.7"), "--poisson"),
-        (("--preset", "squash"), "--preset"),
-        (("--gas", "adiabatic"), "--pressure"),  # the basketball preset has no pressure
-    ],
-)  # fmt: skip
-def test_cli_refuses_bad_stiffness_in_one_line(cli, args, flag):
-    out = cli(*args)
-    assert out.returncode == 2 and out.stdout == ""
-    lines = out.stderr.strip().splitlines()
-    assert len(lines) == 1 and lines[0].startswith(f"twoball: error: {flag}"), out.stderr
-
-
-def test_cli_preset_equals_the_api_bit_for_bit(cli):
-    data = json.loads(cli("--preset", "tennis", "--json").stdout)
-    api = twoball.liftoff(Case.preset("tennis")).as_dict()
-    for key in ("t_liftoff_s", "v_liftoff_m_s", "floor_time_s", "beta", "omega0_squared"):
-        assert data[key] == api[key]
-    e = cli("--preset", "tennis", "--youngs-modulus", "6e6", "--thickness", "3.2e-3", "--json")
-    assert json.loads(e.stdout)["t_liftoff_s"] == api["t_liftoff_s"]
 
 
 def test_gas_energy_enters_the_contact_angle_of_eq_3_7():

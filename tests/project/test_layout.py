@@ -1,4 +1,4 @@
-"""twoball owns exactly one top-level import name, and the parts map under it."""
+"""twoball owns exactly one top-level import name, the parts map under it, the tests mirror it."""
 
 from __future__ import annotations
 
@@ -7,7 +7,8 @@ import pathlib
 import sysconfig
 import tomllib
 
-ROOT = pathlib.Path(__file__).resolve().parents[1]
+from tests import ROOT
+
 PARTS = {"twoball": "twoball", "modal": "twoball.modal", "fem_membrane": "twoball.fem_membrane"}
 PARTS["verify"] = "twoball.verify"
 
@@ -47,3 +48,50 @@ def test_installed_distribution_has_one_top_level_name():
 def test_console_script_points_into_twoball():
     scripts = _pyproject()["project"]["scripts"]
     assert scripts == {"twoball": "twoball.cli.main:main"}
+
+
+#: Test folder -> the source folder it mirrors (tests/api and tests/project aside).
+MIRRORS = {
+    "modal": ROOT / "modal",
+    "fem_membrane": ROOT / "fem_membrane",
+    "verify": ROOT / "verify",
+    "_common": ROOT / "twoball" / "_common",
+    "cli": ROOT / "twoball" / "cli",
+}
+PROJECT_CHECKS = {"test_layout.py", "test_docs.py", "test_startup.py"}
+
+
+def test_each_test_file_is_named_after_the_module_or_verb_it_tests():
+    """tests/<part>/<path>/test_<name>.py tests <part>/<path>/<name>.py (``init``: the package).
+
+    tests/api holds one file per public verb or face module of ``twoball``;
+    tests/project the project-wide checks and the bad-input tables.
+    """
+    import twoball
+
+    orphans = []
+    for path in sorted((ROOT / "tests").rglob("test_*.py")):
+        relative = path.relative_to(ROOT / "tests")
+        top, name = relative.parts[0], path.stem.removeprefix("test_")
+        inner = relative.parent.parts[1:]
+        if top in MIRRORS:
+            folder = MIRRORS[top].joinpath(*inner)
+            found = (folder / f"{name}.py").is_file() or (
+                name == "init" and (folder / "__init__.py").is_file()
+            )
+        elif top == "api":
+            face = ROOT / "twoball"
+            found = (
+                name in twoball.__all__
+                or name == "init"
+                or (face / f"{name}.py").is_file()
+                or (face / f"_{name}.py").is_file()
+            )
+        elif top == "project":
+            found = path.name in PROJECT_CHECKS or name.startswith("validation")
+        else:
+            found = False
+        if not found:
+            orphans.append(str(relative))
+    assert not orphans, f"test files named after no module or verb: {orphans}"
+    assert not list((ROOT / "tests").glob("test_*.py"))  # none left at the top

@@ -1,4 +1,4 @@
-"""Every subcommand refuses every invalid value in one line, exit 2, before any work (issue 11).
+"""Every subcommand refuses every invalid value in one line, exit 2, before any work.
 
 The table (:mod:`validation_table`) is generated from the parser: every numeric
 option of every subcommand with each bad value outside its valid range, every
@@ -18,11 +18,11 @@ import sys
 from pathlib import Path
 
 import pytest
-import validation_table as table
 
+from tests import ROOT
+from tests.project import validation_table as table
 from twoball.cli.main import COMMANDS, full_parser
 
-ROOT = Path(__file__).resolve().parents[1]
 CHILD = Path(__file__).with_name("validation_child.py")
 #: CPU seconds a refusal may take (imports of the subcommand's modules included).
 REFUSAL_CPU_S = 2.0
@@ -81,6 +81,24 @@ def check_refusals(cases: list[tuple[str, list[str]]], results: list[dict]) -> l
     return bad
 
 
+CONTROL = [
+    ["liftoff", "--json"],
+    ["liftoff", "--json", "--v0", "-4.1"],  # the sign of v0 is ignored
+    ["liftoff", "--json", "--damping", "0"],
+    ["liftoff", "--json", "--phi-a", repr(table.PHI_A_HIGH)],
+    ["eigen", "--json", "--level", "0", "--order", "1", "--count", "3"],
+    ["sweep", "--param", "damping", "--values", "0:0.5:3", "--json"],
+    ["icm", "--mu", "0", "--e2", "0", "--e12", "1", "--json"],
+    ["icm", "--table1", "--json"],
+    ["converge", "modes", "--modes-list", "30,60,120", "--out", "{tmp}/c", "--json"],
+    ["export", "--level", "1", "--order", "1", "--out", "{tmp}/x.vtu"],
+    ["render", "--level", "1", "--order", "1", "--size", "64x48", "--out", "{tmp}/x.png"],
+    ["plot", "pole", "--level", "1", "--order", "1", "--out", "{tmp}/p.png"],
+    ["plot", "eigen", "--levels", "0", "--orders", "1", "--max-degree", "2"]
+    + ["--out", "{tmp}/p.png"],
+]
+
+
 def test_every_subcommand_and_numeric_option_is_in_the_table() -> None:
     parser = full_parser()
     assert set(table.BASE) == set(COMMANDS)
@@ -122,24 +140,6 @@ def test_invalid_command_lines_exit_2_with_one_line(tmp_path: Path) -> None:
     # refused before the work: the slowest refusal is a fraction of one real run
     slowest = max(r["cpu_s"] for r in results)
     assert slowest < REFUSAL_CPU_S
-
-
-CONTROL = [
-    ["liftoff", "--json"],
-    ["liftoff", "--json", "--v0", "-4.1"],  # the sign of v0 is ignored
-    ["liftoff", "--json", "--damping", "0"],
-    ["liftoff", "--json", "--phi-a", repr(table.PHI_A_HIGH)],
-    ["eigen", "--json", "--level", "0", "--order", "1", "--count", "3"],
-    ["sweep", "--param", "damping", "--values", "0:0.5:3", "--json"],
-    ["icm", "--mu", "0", "--e2", "0", "--e12", "1", "--json"],
-    ["icm", "--table1", "--json"],
-    ["converge", "modes", "--modes-list", "30,60,120", "--out", "{tmp}/c", "--json"],
-    ["export", "--level", "1", "--order", "1", "--out", "{tmp}/x.vtu"],
-    ["render", "--level", "1", "--order", "1", "--size", "64x48", "--out", "{tmp}/x.png"],
-    ["plot", "pole", "--level", "1", "--order", "1", "--out", "{tmp}/p.png"],
-    ["plot", "eigen", "--levels", "0", "--orders", "1", "--max-degree", "2"]
-    + ["--out", "{tmp}/p.png"],
-]
 
 
 def test_the_base_lines_run(tmp_path: Path) -> None:

@@ -1,4 +1,4 @@
-"""The table of invalid values through the Python API: ParameterError every time (issue 11).
+"""The table of invalid values through the Python API: ParameterError every time.
 
 Each bad value of :mod:`validation_table` that the command line refuses for a
 flag is given, as the value the parser would produce (an int for an integer
@@ -19,11 +19,11 @@ from pathlib import Path
 from typing import Any
 
 import pytest
-import validation_table as table
 from twoball.modal import icm
 from twoball.modal.stiffness import flexural_rigidity
 
 import twoball
+from tests.project import validation_table as table
 from twoball.cli.flags import FLAGS
 
 CPU_LIMIT_S = 3.0
@@ -52,8 +52,12 @@ def python_value(flag: str, text: str) -> Any:
 
 CASE = twoball.Case.preset("basketball")
 M = twoball.MeshOptions
+
+
 S = twoball.Stepping
 LEVEL_1 = M("sphere", level=1)
+
+
 #: parameter -> a function that passes the value to the public API, per entry point.
 CALLS: dict[str, dict[str, Callable[[Any, Path], Any]]] = {
     "radius": {
@@ -227,6 +231,8 @@ CALLS: dict[str, dict[str, Callable[[Any, Path], Any]]] = {
     "thickness": {"flexural_rigidity": lambda v, _: flexural_rigidity(6e6, v)},
     "poisson": {"flexural_rigidity": lambda v, _: flexural_rigidity(6e6, 0.003, v)},
 }
+
+
 #: The API's name of a flag's value where it differs from the flag's own parameter name.
 API_NAME = {"time": "frames"}
 
@@ -262,29 +268,10 @@ def call_refused(name: str, entry: str, value: Any, tmp: Path) -> str | None:
         signal.setitimer(signal.ITIMER_PROF, 0)
 
 
-def test_every_numeric_flag_has_api_calls() -> None:
-    """Each numeric option of the CLI is tried through the API (names through FLAGS)."""
-    from twoball.cli.main import full_parser
-
-    flags = {f for fl in table.numeric_options(full_parser()).values() for f in fl}
-    covered = {FLAGS[name] for name in CALLS}
-    assert flags <= covered, sorted(flags - covered)
-
-
-def test_bad_values_raise_parameter_error(tmp_path: Path) -> None:
-    cases = api_cases()
-    assert len(cases) > 300
-    failures = []
-    for name, entry, value in cases:
-        got = call_refused(name, entry, value, tmp_path)
-        if got is not None:
-            failures.append(f"{entry}({name}={value!r}): {got}")
-    assert not failures, f"{len(failures)} of {len(cases)}:\n" + "\n".join(failures[:40])
-    assert sorted(p.name for p in tmp_path.iterdir()) == []  # nothing written
-
-
 R = twoball.RenderOptions
 P = twoball.PlotOptions
+
+
 EXTRA: list[tuple[str, Callable[[Path], Any]]] = [
     # values of the wrong type are refused, never stored or coerced
     ("phi_a", lambda _: twoball.Case(phi_a="2.6")),
@@ -382,54 +369,6 @@ def _under(tmp: Path, path: str) -> str:
     return path if not path or path.startswith("/") else str(tmp / path)
 
 
-@pytest.mark.parametrize(
-    ("name", "call"), EXTRA, ids=[f"{n}-{k}" for k, (n, _) in enumerate(EXTRA)]
-)
-def test_wrong_types_options_that_do_not_apply_and_paths(
-    name: str, call: Any, tmp_path: Path
-) -> None:  # noqa: E501
-    signal.signal(signal.SIGPROF, _alarm)
-    signal.setitimer(signal.ITIMER_PROF, CPU_LIMIT_S)
-    try:
-        with warnings.catch_warnings():
-            warnings.simplefilter("error")
-            with pytest.raises(twoball.ParameterError) as caught:
-                call(tmp_path)
-    finally:
-        signal.setitimer(signal.ITIMER_PROF, 0)
-    assert caught.value.name in (name, FLAGS.get(name)), str(caught.value)
-    assert list(tmp_path.iterdir()) == []
-
-
-def test_extremes_inside_the_ranges_give_finite_numbers() -> None:
-    """Values at the edges of the ranges run without overflow warnings (formulas stay finite)."""
-    from twoball.modal.initial import phi_a_from_v0, v0_from_phi_a
-    from twoball.modal.parameters import wave_speed_from_pressure
-
-    with warnings.catch_warnings():
-        warnings.simplefilter("error")
-        for radius in (1e-6, 1e6):
-            for c in (1e-6, 1e9):
-                case = twoball.Case(radius=radius, wave_speed=c, phi_a=2.6)
-                assert math.isfinite(case.gamma) and case.gamma > 0
-                v0 = v0_from_phi_a(2.6, radius, c)
-                if v0 <= 1e6:
-                    assert phi_a_from_v0(v0, radius, c) == pytest.approx(2.6, abs=1e-12)
-                else:  # faster than any impact the model takes
-                    with pytest.raises(twoball.ParameterError, match="^v0 must be"):
-                        phi_a_from_v0(v0, radius, c)
-        # eq. (3.8) against its closed form c = sqrt(2 pi P R / m) at the corners
-        for p, m, r in ((1e12, 1e-12, 1e-6), (1e-6, 1e12, 1e6), (77200.0, 0.567, 0.12)):
-            expected = math.sqrt(2 * math.pi * p * r / m)
-            if 1e-6 <= expected <= 1e9:
-                assert wave_speed_from_pressure(p, m, r) == pytest.approx(expected, rel=1e-14)
-            else:
-                with pytest.raises(twoball.ParameterError, match="pressure"):
-                    wave_speed_from_pressure(p, m, r)
-        near_pi = twoball.liftoff(twoball.Case(phi_a=table.PHI_A_HIGH))
-        assert near_pi.t_liftoff_s is None or math.isfinite(near_pi.t_liftoff_s)
-
-
 #: (the field named in the error, a constructor call with one bad field) for every option object.
 OBJECTS: list[tuple[str, Callable[[], Any]]] = [
     ("mesh", lambda: M(kind="bogus")),  # the kind is the verbs' mesh argument
@@ -498,6 +437,75 @@ OBJECTS: list[tuple[str, Callable[[], Any]]] = [
     ("orders", lambda: P(orders=[True])),
     ("max_degree", lambda: P(max_degree=0)),
 ]
+
+
+def test_every_numeric_flag_has_api_calls() -> None:
+    """Each numeric option of the CLI is tried through the API (names through FLAGS)."""
+    from twoball.cli.main import full_parser
+
+    flags = {f for fl in table.numeric_options(full_parser()).values() for f in fl}
+    covered = {FLAGS[name] for name in CALLS}
+    assert flags <= covered, sorted(flags - covered)
+
+
+def test_bad_values_raise_parameter_error(tmp_path: Path) -> None:
+    cases = api_cases()
+    assert len(cases) > 300
+    failures = []
+    for name, entry, value in cases:
+        got = call_refused(name, entry, value, tmp_path)
+        if got is not None:
+            failures.append(f"{entry}({name}={value!r}): {got}")
+    assert not failures, f"{len(failures)} of {len(cases)}:\n" + "\n".join(failures[:40])
+    assert sorted(p.name for p in tmp_path.iterdir()) == []  # nothing written
+
+
+@pytest.mark.parametrize(
+    ("name", "call"), EXTRA, ids=[f"{n}-{k}" for k, (n, _) in enumerate(EXTRA)]
+)
+def test_wrong_types_options_that_do_not_apply_and_paths(
+    name: str, call: Any, tmp_path: Path
+) -> None:  # noqa: E501
+    signal.signal(signal.SIGPROF, _alarm)
+    signal.setitimer(signal.ITIMER_PROF, CPU_LIMIT_S)
+    try:
+        with warnings.catch_warnings():
+            warnings.simplefilter("error")
+            with pytest.raises(twoball.ParameterError) as caught:
+                call(tmp_path)
+    finally:
+        signal.setitimer(signal.ITIMER_PROF, 0)
+    assert caught.value.name in (name, FLAGS.get(name)), str(caught.value)
+    assert list(tmp_path.iterdir()) == []
+
+
+def test_extremes_inside_the_ranges_give_finite_numbers() -> None:
+    """Values at the edges of the ranges run without overflow warnings (formulas stay finite)."""
+    from twoball.modal.initial import phi_a_from_v0, v0_from_phi_a
+    from twoball.modal.parameters import wave_speed_from_pressure
+
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        for radius in (1e-6, 1e6):
+            for c in (1e-6, 1e9):
+                case = twoball.Case(radius=radius, wave_speed=c, phi_a=2.6)
+                assert math.isfinite(case.gamma) and case.gamma > 0
+                v0 = v0_from_phi_a(2.6, radius, c)
+                if v0 <= 1e6:
+                    assert phi_a_from_v0(v0, radius, c) == pytest.approx(2.6, abs=1e-12)
+                else:  # faster than any impact the model takes
+                    with pytest.raises(twoball.ParameterError, match="^v0 must be"):
+                        phi_a_from_v0(v0, radius, c)
+        # eq. (3.8) against its closed form c = sqrt(2 pi P R / m) at the corners
+        for p, m, r in ((1e12, 1e-12, 1e-6), (1e-6, 1e12, 1e6), (77200.0, 0.567, 0.12)):
+            expected = math.sqrt(2 * math.pi * p * r / m)
+            if 1e-6 <= expected <= 1e9:
+                assert wave_speed_from_pressure(p, m, r) == pytest.approx(expected, rel=1e-14)
+            else:
+                with pytest.raises(twoball.ParameterError, match="pressure"):
+                    wave_speed_from_pressure(p, m, r)
+        near_pi = twoball.liftoff(twoball.Case(phi_a=table.PHI_A_HIGH))
+        assert near_pi.t_liftoff_s is None or math.isfinite(near_pi.t_liftoff_s)
 
 
 @pytest.mark.parametrize(

@@ -1,4 +1,4 @@
-"""The table of invalid command lines of issue 11, generated from the parser.
+"""The table of invalid command lines, generated from the parser.
 
 Every numeric option of every subcommand (read from
 :func:`twoball.cli.main.full_parser`, so an option added later is in the

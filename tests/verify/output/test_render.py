@@ -1,17 +1,19 @@
-"""twoball render: off-screen pictures and animations of the ball (pyvista, imageio)."""
+"""Off-screen pictures and animations of the ball (verify/output/render.py).
+
+With or without a body of finite mass; sizes, warps, colour bar, unfinished MP4s.
+"""
 
 from __future__ import annotations
-
-import os
-import subprocess
-import sys
 
 import imageio.v3 as iio
 import numpy as np
 import pytest
-from twoball.fem_membrane.options import MeshOptions
 from twoball.modal.parameters import preset
-from twoball.verify.output.fields import ball_model, ball_scene, field_mesh, liftoff_frame
+from twoball.verify.output.fields import (
+    ball_scene,
+    contact_scene,
+    liftoff_frame,
+)
 from twoball.verify.output.render import (
     BallScene,
     check_size,
@@ -22,20 +24,76 @@ from twoball.verify.output.render import (
     surface_triangles,
 )
 
+import twoball
 from twoball._common.errors import ParameterError
-from twoball.cli.main import main
 
-WHITE = 255
-
-
-@pytest.fixture(scope="module")
-def model():
-    return ball_model(preset("basketball"), field_mesh(MeshOptions(level=2, order=1)))
+CASE = preset("basketball").derive(modes=10)
+LEVEL_1 = twoball.MeshOptions("sphere", level=1)
 
 
 def ball_share(image: np.ndarray) -> float:
     """Share of the pixels that are not the white background."""
     return float(np.mean(np.any(image < 245, axis=-1)))
+
+
+def test_render_draws_the_body_and_its_contact(coupled, tmp_path, monkeypatch):
+    monkeypatch.setenv("VTK_DEFAULT_OPENGL_WINDOW", "vtkEGLRenderWindow")
+    times = np.array([0.2e-3, coupled.t_end_s])
+    scene = contact_scene(coupled, times, "legendre")
+    assert np.array_equal(scene.body, coupled.motion("legendre", times)["s_m"])
+    assert list(scene.contact) == [True, False]
+    assert "IN CONTACT" in scene.caption(0, 1.0) and "in flight" in scene.caption(1, 1.0)
+    out = tmp_path / "ball.png"
+    result = twoball.render(
+        out, CASE, backend="legendre", mesh=LEVEL_1, frames=[0.2e-3],
+        view=twoball.RenderOptions(size=(320, 240)), body=twoball.Body(0.004),
+    )  # fmt: skip
+    image = iio.imread(out)
+    assert image.shape[:2] == (240, 320)
+    assert float(np.mean(np.any(image[..., :3] < 245, axis=-1))) > 0.1  # not blank
+    assert result.report.mass_ratio == 0.004
+    assert list(tmp_path.iterdir()) == [out]  # no scratch files left
+    gif = tmp_path / "bounce.gif"
+    twoball.render(
+        gif, CASE, backend="legendre", mesh=LEVEL_1, frames=3,
+        view=twoball.RenderOptions(size=(160, 120)), body=twoball.Body(0.004),
+    )  # fmt: skip
+    assert iio.imread(gif, index=None).shape[:3] == (3, 120, 160)
+
+
+def test_gif_colour_bar_is_smooth_and_footer_short(coarse, tmp_path):
+    from twoball.verify.output.fields import ball_scene
+    from twoball.verify.output.palette import colour_map_samples
+    from twoball.verify.output.render import COLOUR_MAP, render_scene, wrap_footer
+
+    scene = ball_scene(coarse, np.linspace(0.0, coarse.t_end_s, 3), "fem")
+    out = render_scene(tmp_path / "ball.gif", scene, size=(320, 240), fps=10)
+    frames = iio.imread(out, index=None)[..., :3]
+    # the colour bar is the only place the pure colour map is drawn, unlit: count its
+    # palette colours that the GIF kept exactly (a median cut alone leaves ~12 bands)
+    bar = colour_map_samples(COLOUR_MAP)
+    drawn = {tuple(c) for c in frames[0].reshape(-1, 3)}
+    kept = sum(tuple(c) in drawn for c in bar)
+    assert kept >= 60, kept
+    # one palette for all frames: the background white is the same index everywhere
+    assert all(np.all(f[0, 0] == frames[0][0, 0]) for f in frames)
+    footer = wrap_footer(scene.label)
+    assert all(len(line) <= 30 for line in footer.splitlines())
+    assert footer.replace("\n", " ") == scene.label
+
+
+def test_an_unfinished_mp4_is_an_error_not_a_file(tmp_path):
+    from twoball.verify.output.render import _check_mp4, _mp4_boxes
+
+    box = (16).to_bytes(4, "big") + b"ftyp" + b"isom" + b"\0" * 4
+    whole = tmp_path / "whole.mp4"
+    whole.write_bytes(box + (8).to_bytes(4, "big") + b"moov")
+    assert _mp4_boxes(whole) == [b"ftyp", b"moov"]
+    _check_mp4(whole)
+    cut = tmp_path / "cut.mp4"  # ffmpeg could not write its trailer (index)
+    cut.write_bytes(box + (4096).to_bytes(4, "big") + b"mdat" + b"\0" * 100)
+    with pytest.raises(OSError, match="cut.mp4"):
+        _check_mp4(cut)
 
 
 def test_png_shows_the_deformed_ball(model, tmp_path):
@@ -133,72 +191,3 @@ def test_unwritable_output_leaves_nothing(model, tmp_path):
     with pytest.raises(ParameterError, match="out"):
         render_scene(tmp_path / "ball.jpg", scene)
     assert list(tmp_path.iterdir()) == []
-
-
-# --------------------------------------------------------------------------- command line
-def test_cli_render_png_without_display_is_quiet(tmp_path):
-    """A fresh interpreter with no DISPLAY: no X attempt; stderr holds only twoball's warnings.
-
-    Level 1 is far too coarse for the N = 30 modes, so the accuracy warnings must be there.
-    """
-    out = tmp_path / "ball.png"
-    env = {k: v for k, v in os.environ.items() if k not in ("DISPLAY", "VTK_DEFAULT_OPENGL_WINDOW")}
-    root = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
-    env["PYTHONPATH"] = root + os.pathsep + env.get("PYTHONPATH", "")
-    proc = subprocess.run(
-        [sys.executable, "-m", "twoball", "--quiet", "render", "--level", "1"]
-        + ["--size", "200x150", "--out", str(out)],  # --quiet: no progress, warnings stay
-        capture_output=True,
-        text=True,
-        check=False,
-        env=env,
-        cwd=tmp_path,
-    )
-    assert proc.returncode == 0, proc.stderr
-    lines = proc.stderr.splitlines()
-    assert lines and all(line.startswith("twoball: warning: ") for line in lines), proc.stderr
-    assert any("under-resolves" in line for line in lines)
-    assert iio.imread(out).shape[:2] == (150, 200)
-
-
-def test_cli_render_gif(tmp_path, capsys):
-    out = tmp_path / "ball.gif"
-    code = main(
-        ["render", "--level", "1", "--backend", "legendre", "--frames", "3"]
-        + ["--size", "120x90", "--warp", "2", "--out", str(out)]
-    )
-    assert code == 0
-    assert iio.imread(out, index=None).shape[:3] == (3, 90, 120)
-    assert "Rendered" in capsys.readouterr().out
-
-
-@pytest.mark.parametrize(
-    ("extra", "flag"),
-    [
-        (["--size", "12x"], "--size"),
-        (["--size", "0x100"], "--size"),
-        (["--warp", "-1"], "--warp"),
-        (["--warp", "big"], "--warp"),
-        (["--frames", "0"], "--frames"),
-        (["--time", "-1"], "--time"),
-        (["--time", "1.0"], "--time"),
-        (["--fps", "0"], "--fps"),
-        (["--backend", "x"], "--backend"),
-    ],
-)
-def test_cli_render_bad_input(tmp_path, capsys, extra, flag):
-    out = tmp_path / "ball.png"
-    with pytest.raises(SystemExit) as stop:
-        main(["render", "--level", "1", *extra, "--out", str(out)])
-    err = capsys.readouterr().err
-    assert stop.value.code == 2
-    assert len(err.strip().splitlines()) == 1 and flag in err and "Traceback" not in err
-    assert list(tmp_path.iterdir()) == []
-
-
-@pytest.mark.parametrize("name", ["missing/ball.png", "ball.tiff"])
-def test_cli_render_bad_out(tmp_path, capsys, name):
-    with pytest.raises(SystemExit) as stop:
-        main(["render", "--level", "1", "--out", str(tmp_path / name)])
-    err = capsys.readouterr().err
-    assert stop.value.code == 2 and len(err.strip().splitlines()) == 1 and "--out" in err

@@ -1,22 +1,15 @@
-"""The one figure style: every figure of plot, verify, converge and reproduce, walked.
+"""The one figure style (verify/output/figures/style.py).
 
-Each builder runs on real (small) solutions; every axis label must carry a unit
-in brackets (``[–]`` for a pure number) and use mathtext rather than ASCII
-pseudo-math, and no axis may carry more than six curves (waterfalls excepted:
-their curves are shifted apart).
+Every figure of plot, verify, converge and reproduce, walked.
 """
 
 from __future__ import annotations
 
 import re
 
-import imageio.v3 as iio
 import numpy as np
-import pytest
-from twoball.modal.filters import SpectralFilter
-from twoball.modal.legendre import displacement, legendre_series
-from twoball.modal.parameters import preset
-from twoball.verify.output.fields import ball_model, coupled_model, field_mesh
+from twoball.modal.legendre import displacement
+from twoball.verify.output.fields import coupled_model
 from twoball.verify.output.figures.contact_pole import contact_pole_figure
 from twoball.verify.output.figures.eigen import (
     EigenErrors,
@@ -47,6 +40,7 @@ from twoball.verify.studies.refinement import run_h_study
 from twoball.verify.sweeps.sweeps import SweepSolver, make_grid, run_sweep
 
 import twoball
+from tests.helpers import closed_form_series
 
 UNIT = re.compile(r"\[[^\[\]]+\]")
 #: ASCII pseudo-math the style replaces by mathtext (outside $...$).
@@ -57,27 +51,13 @@ def outside_math(text: str) -> str:
     return re.sub(r"\$[^$]*\$", "", text)
 
 
-@pytest.fixture(scope="module")
-def case():
-    return preset("basketball")
-
-
-@pytest.fixture(scope="module")
-def model(case):
-    return ball_model(case, field_mesh(twoball.MeshOptions("sphere", level=1, order=1)))
-
-
-def _series(case, modes):
-    return legendre_series(case.phi_a, case.damping, SpectralFilter("lanczos", modes))
-
-
 def _traces(case, modes):
     out = []
     for n in modes:
         report = liftoff(case.derive(modes=n))
         scale = case.scalings
         t_l = report.t_liftoff_s / scale.time if report.t_liftoff_s is not None else None
-        out.append(Trace(f"Legendre N = {n}", _series(case, n), t_l, None))
+        out.append(Trace(f"Legendre N = {n}", closed_form_series(case, n), t_l, None))
     return out
 
 
@@ -106,12 +86,12 @@ def _fig12_inputs(monkeypatch):
     return sweeps, optima, liftoff(base)
 
 
-def every_figure(case, model, monkeypatch):
+def every_figure(case, coarse, monkeypatch):
     """(name, figure) of every builder of plot, verify, converge and reproduce."""
     scale = case.scalings
-    t_end = model.t_end
-    yield "plot waterfall", waterfall_figure(model, 6)
-    yield "plot pole", pole_figure(model, 300)
+    t_end = coarse.t_end
+    yield "plot waterfall", waterfall_figure(coarse, 6)
+    yield "plot pole", pole_figure(coarse, 300)
     mesh = twoball.MeshOptions("sphere", level=1, order=1)
     coupled = coupled_model(case, ("fem", "legendre"), twoball.Body(0.004), mesh)
     yield "plot pole with a body", contact_pole_figure(coupled, 300)
@@ -124,7 +104,7 @@ def every_figure(case, model, monkeypatch):
         eigen_errors_figure([EigenErrors(t.label, t.degrees, t.errors) for t in tables]),
     )
     t = np.linspace(0.0, t_end, 200)
-    energy = [(f"N = {n}", t, _series(case, n).energy(t)) for n in (20, 30, 40)]
+    energy = [(f"N = {n}", t, closed_form_series(case, n).energy(t)) for n in (20, 30, 40)]
     yield "verify energy", energy_figure(case, energy, (t, energy[-1][2] * 1.1))
     # converge: convergence.png of a closed-form and a finite-element study
     yield "converge modes", study_figure(run_modes_study(case, modes=(30, 60, 120)))
@@ -141,7 +121,11 @@ def every_figure(case, model, monkeypatch):
     yield "reproduce fig8", icm_part.fig8_figure(dx, curves8)
     phi = np.linspace(0.0, np.pi, 91)
     t_ms = np.linspace(0.0, 11.5, 24)
-    u_mm = displacement(_series(case, 30), t_ms * 1e-3 / scale.time, phi) * case.radius * 1e3
+    u_mm = (
+        displacement(closed_form_series(case, 30), t_ms * 1e-3 / scale.time, phi)
+        * case.radius
+        * 1e3
+    )
     yield "reproduce fig6", fig6_figure(phi, t_ms, u_mm)
     yield "reproduce fig10", fig10_figure(np.linspace(0.05, 8.0, 40), 0.12)
     yield "reproduce fig11a", fig11.fig11a_figure(_fig11_table(case))
@@ -159,9 +143,9 @@ def axis_labels(axis) -> list[str]:
     return [text for text in labels if text]
 
 
-def test_every_figure_labels_units_and_counts_curves(case, model, monkeypatch):
+def test_every_figure_labels_units_and_counts_curves(case, coarse, monkeypatch):
     seen = []
-    for name, figure in every_figure(case, model, monkeypatch):
+    for name, figure in every_figure(case, coarse, monkeypatch):
         seen.append(name)
         visible = [a for a in figure.axes if a.get_visible()]
         labelled = [text for a in visible for text in axis_labels(a)]
@@ -194,17 +178,17 @@ def test_every_figure_labels_units_and_counts_curves(case, model, monkeypatch):
     assert len(seen) == 18
 
 
-def test_crowded_data_becomes_small_multiples(case, model):
+def test_crowded_data_becomes_small_multiples(case, coarse):
     # 8 backends for the verify pole figure: reference + 7 others -> two columns
     traces = _traces(case, range(30, 70, 5))
-    figure = pole_motion_figure(case, traces, model.t_end, 200)
+    figure = pole_motion_figure(case, traces, coarse.t_end, 200)
     assert len(figure.axes) == 12  # 6 rows (3 quantities + differences) x 2 columns
     # every column repeats the reference, so each panel compares against it
     grid = np.array(figure.axes).reshape(6, 2)
     assert all(curves(a)[0].get_label() == "Legendre N = 30" for a in grid[0::2].ravel())
     assert all(len(curves(a)) <= MAX_CURVES for a in figure.axes)
     # difference rows: the others minus the reference, in the panel's unit
-    t = np.linspace(0.0, model.t_end, 200)
+    t = np.linspace(0.0, coarse.t_end, 200)
     du_ref = (traces[1].motion.pole(t).u - traces[0].motion.pole(t).u) * case.radius
     shown = curves(grid[1, 0])[0]  # row 1, column 0: first other trace, Delta u
     unit = grid[1, 0].get_ylabel().split("[")[1].rstrip("]")
@@ -213,35 +197,6 @@ def test_crowded_data_becomes_small_multiples(case, model):
     # eigen: 7 discretisations -> 2 panels of at most 6
     many = [eigen_table(lv, od, 2) for od in (1, 2) for lv in (0, 1, 2)] + [eigen_table(3, 1, 2)]
     assert [len(a.get_lines()) for a in eigen_figure(many).axes] == [4, 3]
-
-
-def test_energy_per_kilogram_starts_at_the_impact_energy():
-    # E/m = e (R c)^2 / (4 pi) [J/kg]; at t = 0 the stored energy of the unfiltered
-    # series tends to the kinetic energy per kilogram before impact, |v0|^2 / 2
-    # (eqs. (3.5)-(3.6), phi_a from eq. (3.7)), with an error falling like 1/N
-    case = preset("basketball").derive(preset_name=None)
-    t = np.array([0.0, 1.0])
-    gaps = []
-    for n in (400, 1600):
-        series = legendre_series(case.phi_a, 0.0, SpectralFilter("none", n))
-        figure = energy_figure(case, [(f"N = {n}", t, series.energy(t))])
-        (line,) = figure.axes[0].get_lines()
-        assert figure.axes[0].get_ylabel() == "$E/m$ [J/kg]"
-        assert line.get_ydata()[1] == pytest.approx(line.get_ydata()[0], rel=1e-9)  # D = 0
-        gaps.append(1.0 - line.get_ydata()[0] / (case.v0**2 / 2))
-    assert 0.003 < gaps[0] < 0.01
-    assert 3.5 < gaps[0] / gaps[1] < 4.5  # first order in 1/N
-
-
-def test_energy_pairs_get_a_relative_difference_panel(case):
-    t = np.linspace(0.0, 10.0, 50)
-    e30, e60 = _series(case, 30).energy(t), _series(case, 60).energy(t)
-    figure = energy_figure(case, [("N = 30", t, e30), ("N = 60", t, e60)])
-    top, below = figure.axes
-    assert len(curves(top)) == 2
-    (line,) = curves(below)
-    np.testing.assert_allclose(line.get_ydata(), e30 / e60 - 1.0, rtol=1e-12)
-    assert below.get_ylabel() == f"relative difference {DIMENSIONLESS}"
 
 
 def test_label_helpers():
@@ -253,24 +208,3 @@ def test_label_helpers():
     text = legend_name("E(t_end) [T R^2]")
     assert "T R" not in text and "$E(t_" in text
     assert legend_name("lambda_6 (exact 42)") == r"$\lambda_{6}$ (exact 42)"
-
-
-def test_gif_colour_bar_is_smooth_and_footer_short(model, tmp_path):
-    from twoball.verify.output.fields import ball_scene
-    from twoball.verify.output.palette import colour_map_samples
-    from twoball.verify.output.render import COLOUR_MAP, render_scene, wrap_footer
-
-    scene = ball_scene(model, np.linspace(0.0, model.t_end_s, 3), "fem")
-    out = render_scene(tmp_path / "ball.gif", scene, size=(320, 240), fps=10)
-    frames = iio.imread(out, index=None)[..., :3]
-    # the colour bar is the only place the pure colour map is drawn, unlit: count its
-    # palette colours that the GIF kept exactly (a median cut alone leaves ~12 bands)
-    bar = colour_map_samples(COLOUR_MAP)
-    drawn = {tuple(c) for c in frames[0].reshape(-1, 3)}
-    kept = sum(tuple(c) in drawn for c in bar)
-    assert kept >= 60, kept
-    # one palette for all frames: the background white is the same index everywhere
-    assert all(np.all(f[0, 0] == frames[0][0, 0]) for f in frames)
-    footer = wrap_footer(scene.label)
-    assert all(len(line) <= 30 for line in footer.splitlines())
-    assert footer.replace("\n", " ") == scene.label
