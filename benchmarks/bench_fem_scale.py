@@ -1,4 +1,4 @@
-"""Large-mesh timing of the finite-element lift-off: full eigen route against Krylov (issue 7).
+"""Large-mesh timing of the finite-element lift-off: full eigen route against Krylov.
 
 Run from the repository root, e.g.::
 

@@ -1,4 +1,4 @@
-"""Fields and eigen listings: today's route against the fast route, side by side (issue 16).
+"""Fields and eigen listings: today's route against the fast route, side by side.
 
 Run from the repository root::
 
@@ -18,7 +18,7 @@ otherwise):
 ``eigen900`` ``twoball.fem.eigen(level=L, order=2, count=900)``
 
 "old" is ``--route full`` of this checkout by default (every eigenpair below the
-cutoff, the route all of them took before issue 16), or, with ``--old PATH``, the
+cutoff), or, with ``--old PATH``, the
 same calls in another checkout (e.g. the main branch: today's code); eigen900 has
 no route and is only compared with ``--old``.  "new" is this checkout's default
 (``--route auto``: the Krylov Ritz fields from 2000 unknowns on).  A run longer

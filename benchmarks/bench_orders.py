@@ -1,4 +1,4 @@
-"""Sphere lift-off at P1 to P4 near 41k unknowns: error, seconds and peak memory (issue 14).
+"""Sphere lift-off at P1 to P4 near 41k unknowns: error, seconds and peak memory.
 
 Run from the repository root::
 

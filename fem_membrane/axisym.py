@@ -25,7 +25,7 @@ from skfem.refdom import RefLine
 from twoball.fem_membrane.checks import check_elements, check_order
 from twoball.fem_membrane.forms import AZIMUTH, axisym_mass, axisym_stiffness
 from twoball.fem_membrane.space import Discretisation, line_polar_cosine
-from twoball.modal.initial import _check_phi_a
+from twoball.modal.initial import check_phi_a
 
 
 class ElementLineLagrange(ElementH1):
@@ -81,7 +81,7 @@ def axisym_nodes(elements: int, phi_a: float) -> np.ndarray:
     polar-angle length cover [0, phi_a], the others [phi_a, pi].
     """
     elements = check_elements(elements)
-    phi_a = _check_phi_a(phi_a)
+    phi_a = check_phi_a(phi_a)
     north = min(max(round(elements * phi_a / math.pi), 1), elements - 1)
     phi = np.concatenate(
         [np.linspace(0.0, phi_a, north + 1), np.linspace(phi_a, math.pi, elements - north + 1)[1:]]

@@ -13,7 +13,7 @@ from twoball.fem_membrane.checks import (
 )
 from twoball.fem_membrane.mesh import SphereMesh, icosphere, ring_sphere
 from twoball.fem_membrane.space import Discretisation, sphere_space
-from twoball.modal.initial import _check_phi_a
+from twoball.modal.initial import check_phi_a
 
 from twoball._common.errors import ParameterError
 
@@ -57,7 +57,7 @@ def build_space(
     -------
     Discretisation
     """
-    phi_a = _check_phi_a(phi_a)
+    phi_a = check_phi_a(phi_a)
     geometry = check_choice("geometry", geometry, GEOMETRIES)
     if isinstance(mesh, SphereMesh):
         for name, value in (("level", level), ("elements", elements)):

@@ -1,4 +1,4 @@
-"""The finite-element backend of the finite-mass contact (issue 13).
+"""The finite-element backend of the finite-mass contact.
 
 The eigenpairs give the same :class:`~twoball.modal.series.ModalSeries` as for the
 massless lift-off; the contact vector is ``b_k = f . phi_k`` with ``f`` the cap
@@ -106,9 +106,15 @@ def fem_contact_model(
         if level is not None:
             raise ParameterError("level", "left out with mesh axisym", level)
         model = modal_model(
-            phi_a, damping, filter, mesh="axisym", elements=elements, order=order,
-            initial=initial, route="full",
-        )  # fmt: skip
+            phi_a,
+            damping,
+            filter,
+            mesh="axisym",
+            elements=elements,
+            order=order,
+            initial=initial,
+            route="full",
+        )
     else:
         if elements is not None:
             raise ParameterError("elements", "left out with a sphere mesh", elements)
@@ -139,13 +145,12 @@ def fem_contact_solution(
     elements), no mesh file.  The model holds the eigenvectors the contact
     solver moved (fields of :mod:`twoball.fem_membrane.contact_fields`).
     """
+    from twoball.fem_membrane.cost import check_fem
     from twoball.fem_membrane.options import MeshOptions
     from twoball.modal.contact.caps import cap_angle
     from twoball.modal.contact.report import check_contact_options, membrane_case, solve_contact
     from twoball.modal.filters import SpectralFilter
     from twoball.modal.report import t_end_dimensionless
-
-    from twoball._common.budget import check_fem
 
     radius = check_contact_options(case, body)
     spec = MeshOptions.of(mesh).require(files=False)
@@ -166,11 +171,19 @@ def fem_contact_solution(
         initial=spec.initial or "projection",
     )
     report = solve_contact(
-        case, model.series, contact,
-        mass_ratio=body.mass_ratio, contact_radius_m=radius, restitution=body.restitution,
-        energy=body.energy, backend="fem", sigma=sigma, t_end=t_end_dimensionless(case, t_end_s),
-        membrane=membrane, extra={"cap_angle_rad": theta, **info},
-    )  # fmt: skip
+        case,
+        model.series,
+        contact,
+        mass_ratio=body.mass_ratio,
+        contact_radius_m=radius,
+        restitution=body.restitution,
+        energy=body.energy,
+        backend="fem",
+        sigma=sigma,
+        t_end=t_end_dimensionless(case, t_end_s),
+        membrane=membrane,
+        extra={"cap_angle_rad": theta, **info},
+    )
     return model, report
 
 

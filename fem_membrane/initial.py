@@ -28,7 +28,7 @@ from skfem.quadrature import get_quadrature
 from skfem.refdom import RefLine, RefTri
 from twoball.fem_membrane.checks import INITIAL_METHODS, check_choice
 from twoball.fem_membrane.space import Discretisation
-from twoball.modal.initial import _check_phi_a, initial_displacement_x
+from twoball.modal.initial import check_phi_a, initial_displacement_x
 
 KINK_SUBDIVISIONS = 4  # refinements of the reference element on elements cut by the kink
 LOAD_EXTRA_ORDER = 4  # quadrature degree beyond 2 * order for the smooth parts of F
@@ -97,7 +97,7 @@ def initial_load(
     ndarray, shape (dofs,)
         ``b = M u_proj`` (dimensionless).
     """
-    phi_a = _check_phi_a(phi_a)
+    phi_a = check_phi_a(phi_a)
     basis = space.basis
     mesh, elem, mapping = basis.mesh, basis.elem, basis.mapping
     degree = 2 * space.order + LOAD_EXTRA_ORDER
@@ -127,7 +127,7 @@ def project_initial(space: Discretisation, phi_a: float) -> np.ndarray:
 
 def interpolate_initial(space: Discretisation, phi_a: float) -> np.ndarray:
     """Nodal interpolant of F: F at each degree of freedom's location (dimensionless)."""
-    phi_a = _check_phi_a(phi_a)
+    phi_a = check_phi_a(phi_a)
     return initial_displacement_x(space.polar_cosine(space.basis.doflocs), phi_a)
 
 

@@ -1,4 +1,4 @@
-"""Rational block Krylov route to the filtered pole motion on large meshes (issue 7).
+"""Rational block Krylov route to the filtered pole motion on large meshes.
 
 The pole motion of eqs. (3.14)-(3.16) on M-orthonormal eigenpairs,
 
@@ -35,8 +35,8 @@ acceleration u_tt of the Ritz series, sampled 16 times per period of omega_cut o
 separately) over one full cycle of shifts, on two consecutive cycles.  The Ritz
 pairs and the criterion are evaluated after whole cycles (one block from every
 shift), every ``max(1, basis // 100)`` cycles, against the previous evaluation
-(issue 16: the Rayleigh-Ritz eigenproblem of the growing basis dominated the cost
-when done on every step; the wider spacing only makes the comparison stricter).
+(the Rayleigh-Ritz eigenproblem of the growing basis dominates the cost when
+done on every step; the wider spacing only makes the comparison stricter).
 The basis grows by at most two columns per step, so a cycle adds 2 len(shifts)
 directions; a stagnating step cannot satisfy the rule alone.  With
 ``field_times`` the whole field must settle too

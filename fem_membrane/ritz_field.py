@@ -1,4 +1,4 @@
-"""Stopping rule on the whole filtered field for the rational Krylov route (issue 16).
+"""Stopping rule on the whole filtered field for the rational Krylov route.
 
 The Krylov route (:mod:`twoball.fem_membrane.krylov`) stops when the pole
 trajectory has settled.  Files, pictures and plots need the field on every node,

@@ -1,4 +1,4 @@
-"""Eigenpairs of ``K x = lambda M x`` by dense LAPACK or by spectrum slicing (issue 16).
+"""Eigenpairs of ``K x = lambda M x`` by dense LAPACK or by spectrum slicing.
 
 K is symmetric positive semi-definite (the stiffness of eq. (3.9)), M symmetric
 positive definite (the mass).  Two methods, chosen by size:
@@ -219,9 +219,16 @@ def shift_invert(
         start -= deflate @ (MX.T @ start)
     try:
         values, vectors = eigsh(
-            K, k, M, sigma=sigma, which=which, OPinv=operator, tol=ARPACK_TOLERANCE, v0=start,
+            K,
+            k,
+            M,
+            sigma=sigma,
+            which=which,
+            OPinv=operator,
+            tol=ARPACK_TOLERANCE,
+            v0=start,
             ncv=min(K.shape[0] - 1, max(int(NCV_FACTOR * k) + 1, k + 20)),
-        )  # fmt: skip
+        )
     except Exception as error:  # ArpackNoConvergence and friends
         raise NumericalError(f"eigensolver did not converge near {sigma:g}: {error}") from error
     order = np.argsort(values)

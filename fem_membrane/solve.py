@@ -34,6 +34,7 @@ from twoball.fem_membrane.checks import (
     check_rho_inf,
     check_t_end,
 )
+from twoball.fem_membrane.cost import check_fem
 from twoball.fem_membrane.damping import ModalDamping, rayleigh_matrix, rayleigh_table
 from twoball.fem_membrane.eigen import Eigenpairs, eigenpairs
 from twoball.fem_membrane.initial import initial_moments
@@ -44,12 +45,11 @@ from twoball.fem_membrane.ritz_field import field_times
 from twoball.fem_membrane.space import Discretisation
 from twoball.modal.damping import RAYLEIGH_LOW, Rayleigh
 from twoball.modal.filters import FilterKind, SpectralFilter
-from twoball.modal.initial import _check_phi_a
+from twoball.modal.initial import check_phi_a
 from twoball.modal.liftoff import DEFAULT_T_END, PoleMotion, SampledPoleMotion
 from twoball.modal.series import ModalSeries, check_damping
 from twoball.modal.stiffness import Stiffness
 
-from twoball._common.budget import check_fem
 from twoball._common.errors import ParameterError
 
 STEP_ACCURACY = 0.2  # automatic dt: omega_cut * dt <= 0.2
@@ -119,7 +119,7 @@ def modal_model(
     (:func:`twoball.fem_membrane.shell.stiff_series`); ``pairs`` then hold the
     stiffened eigenvalues.
     """
-    phi_a = _check_phi_a(phi_a)
+    phi_a = check_phi_a(phi_a)
     damping = check_damping(damping)
     filter = as_filter(filter)
     initial = check_choice("initial", initial, INITIAL_METHODS)

@@ -19,7 +19,7 @@ __getattr__, __dir__ = attach(
         "PoleMotion": ".liftoff",
         "PoleState": ".series",
         "SampledPoleMotion": ".liftoff",
-        "Scalings": ".parameters",
+        "Scalings": ".scalings",
         "SpectralFilter": ".filters",
         "deformation_work": ".initial",
         "find_liftoff": ".liftoff",
@@ -34,7 +34,7 @@ __getattr__, __dir__ = attach(
         "report_liftoff": ".report",
         "v0_dimensionless": ".initial",
         "v0_from_phi_a": ".initial",
-        "wave_speed_from_pressure": ".parameters",
+        "wave_speed_from_pressure": ".scalings",
     },
 )
 

@@ -58,9 +58,6 @@ def check_phi_a(phi_a: object) -> float:
     return value
 
 
-_check_phi_a = check_phi_a  # the name the finite-element modules import
-
-
 def _scale(radius: float, wave_speed: float) -> tuple[float, float]:
     """R and c checked (as :class:`~twoball.modal.parameters.Case` does)."""
     from twoball.modal.scalings import check_radius, check_wave_speed
@@ -70,7 +67,7 @@ def _scale(radius: float, wave_speed: float) -> tuple[float, float]:
 
 def v0_dimensionless(phi_a: float) -> float:
     """Impact speed in units of R c that flattens the ball up to ``phi_a``, eq. (3.7)."""
-    return math.sqrt(_energy_shape(_check_phi_a(phi_a)))
+    return math.sqrt(_energy_shape(check_phi_a(phi_a)))
 
 
 def v0_from_phi_a(phi_a: float, radius: float, wave_speed: float) -> float:
@@ -95,7 +92,7 @@ def gas_energy_shape(phi_a: float, gas: float) -> float:
     kinetic energy ``2 pi v0^2`` of eq. (3.6) this adds ``omega_0^2 a_0^2`` to
     ``v0^2``.  (Bending adds nothing finite: F has a crease at phi_a.)
     """
-    c = math.cos(_check_phi_a(phi_a))
+    c = math.cos(check_phi_a(phi_a))
     a0 = 0.5 * (c * (math.log(-c) - 1.0) - 1.0)
     return gas * a0 * a0
 
@@ -173,4 +170,4 @@ def deformation_work(phi_a: float) -> float:
     strain energy ``(1/2) int |grad_s F|^2 dS`` over the unit sphere and, by
     eq. (3.6), the kinetic energy ``2 pi rho R^2 v0^2`` before impact.
     """
-    return -2.0 * math.pi * _energy_shape(_check_phi_a(phi_a))
+    return -2.0 * math.pi * _energy_shape(check_phi_a(phi_a))

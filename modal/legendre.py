@@ -16,13 +16,13 @@ import numpy as np
 from numpy.polynomial.legendre import legvander
 from numpy.typing import ArrayLike
 from twoball.modal.filters import FilterKind, SpectralFilter, legendre_frequency
-from twoball.modal.initial import _check_phi_a
+from twoball.modal.initial import check_phi_a
 from twoball.modal.series import ModalSeries
 from twoball.modal.stiffness import Stiffness
 
 from twoball._common.errors import NumericalError, ParameterError
 
-_MAX_QUADRATURE = 20000
+MAX_QUADRATURE = 20000
 
 
 _DENSE_JACOBI_MAX = 256  # up to this many points numpy's dense eigvalsh is as fast as scipy's
@@ -88,7 +88,7 @@ def quadrature_points(modes: int, phi_a: float) -> int:
     half = (1.0 + xa) / 2.0
     xi = 1.0 + (-xa) / half  # pole position in the interval's reference coordinate
     rho = xi + math.sqrt(xi * xi - 1.0)
-    return min(_MAX_QUADRATURE, modes + math.ceil(24.0 / math.log(rho)) + 8)
+    return min(MAX_QUADRATURE, modes + math.ceil(24.0 / math.log(rho)) + 8)
 
 
 def legendre_coefficients(phi_a: float, modes: int) -> np.ndarray:
@@ -97,7 +97,7 @@ def legendre_coefficients(phi_a: float, modes: int) -> np.ndarray:
     ``a_n = (2n + 1)/2 * int_{-1}^{cos phi_a} (cos phi_a / x - 1) P_n(x) dx``, by
     Gauss-Legendre quadrature on exactly the interval where F is nonzero.
     """
-    phi_a = _check_phi_a(phi_a)
+    phi_a = check_phi_a(phi_a)
     modes = _check_modes(modes)
     length = 2.0 * math.sin((math.pi - phi_a) / 2.0) ** 2  # 1 + cos(phi_a), no cancellation
     nodes, weights = _gauss_legendre(quadrature_points(modes, phi_a))
@@ -115,7 +115,7 @@ def legendre_coefficients(phi_a: float, modes: int) -> np.ndarray:
 
 def mean_displacement(phi_a: float) -> float:
     """a_0 in closed form, eq. (3.13): ``(cos phi_a (log(-cos phi_a) - 1) - 1) / 2``."""
-    xa = math.cos(_check_phi_a(phi_a))
+    xa = math.cos(check_phi_a(phi_a))
     return 0.5 * (xa * (math.log(-xa) - 1.0) - 1.0)
 
 
@@ -128,7 +128,7 @@ def legendre_coefficients_recurrence(phi_a: float, modes: int) -> np.ndarray:
     ``J_n = (P_{n+1} - P_{n-1})(cos phi_a) / (2n + 1)``; then ``a_n = (2n+1)/2
     (cos(phi_a) I_n - J_n)``.  Used by the tests to check eq. (3.12).
     """
-    xa = math.cos(_check_phi_a(phi_a))
+    xa = math.cos(check_phi_a(phi_a))
     modes = _check_modes(modes)
     p = legvander(np.array([xa]), modes + 1)[0]  # P_0 .. P_{N+1} at xa
     n = np.arange(modes + 1)

@@ -2,7 +2,7 @@
 
 The scalings to the dimensionless model and the SI ranges are in
 :mod:`twoball.modal.scalings`, the measured parameters of the presets in
-:mod:`twoball.modal.presets`; both are re-exported here.  SI lives at the edges
+:mod:`twoball.modal.presets`; SI lives at the edges
 (CLI, files, reports).
 """
 
@@ -12,18 +12,12 @@ import math
 from dataclasses import dataclass, replace
 from typing import Any
 
-from twoball.modal.initial import PHI_A_RANGE, check_phi_a, phi_a_from_v0  # noqa: F401 -- re-exported
+from twoball.modal.initial import check_phi_a, phi_a_from_v0
 from twoball.modal.presets import MEASURED, Measured
-from twoball.modal.scalings import (  # noqa: F401 -- re-exported
+from twoball.modal.scalings import (
     BENDING_RANGE,
-    G_RANGE,
-    MASS_RANGE,
-    MODES_MAX,
     PRESSURE_RANGE,
-    RADIUS_RANGE,
     STANDARD_GRAVITY,
-    V0_MAX,
-    WAVE_SPEED_RANGE,
     Scalings,
     check_g,
     check_modes,
@@ -103,6 +97,16 @@ class Case:
         the user's own measurements (phi_a then given or from eq. (3.7)).
     phi_a_source : str, optional
         Set by the class: ``"given"``, ``"measured (<preset>)"`` or ``"eq. (3.7)"``.
+
+    Examples
+    --------
+    >>> import twoball
+    >>> case = twoball.Case.preset("basketball")
+    >>> case.radius, case.wave_speed, case.v0, case.phi_a, case.phi_a_source
+    (0.12, 320.0, 4.1, 2.6, 'measured (basketball)')
+    >>> slower = case.derive(v0=3.0)  # phi_a follows eq. (3.7) at the new speed
+    >>> round(slower.phi_a, 4), slower.phi_a_source
+    (2.6719, 'eq. (3.7)')
     """
 
     radius: float = 0.12
@@ -366,17 +370,34 @@ class Case:
         elif mass is not None or (pressure is not None and bending == 0 and gas == "none"):
             raise ParameterError("wave_speed", "given alone, not with pressure and mass")
         return cls(
-            radius, wave_speed, v0, phi_a, damping, modes, g, preset_name=None,
-            bending=bending, gas=gas, pressure=pressure,
-        )  # fmt: skip
+            radius,
+            wave_speed,
+            v0,
+            phi_a,
+            damping,
+            modes,
+            g,
+            preset_name=None,
+            bending=bending,
+            gas=gas,
+            pressure=pressure,
+        )
 
 
-PRESETS: dict[str, Case] = {name: Case(preset_name=name, radius=m.radius, wave_speed=m.wave_speed,
-                                       v0=m.v0, damping=m.damping, modes=m.modes,
-                                       bending=m.bending, gas=m.gas,
-                                       pressure=m.pressure if m.bending or m.gas != "none"
-                                       else None)
-                            for name, m in MEASURED.items()}  # fmt: skip
+PRESETS: dict[str, Case] = {
+    name: Case(
+        preset_name=name,
+        radius=m.radius,
+        wave_speed=m.wave_speed,
+        v0=m.v0,
+        damping=m.damping,
+        modes=m.modes,
+        bending=m.bending,
+        gas=m.gas,
+        pressure=m.pressure if m.bending or m.gas != "none" else None,
+    )
+    for name, m in MEASURED.items()
+}
 
 
 def preset(name: str) -> Case:

@@ -88,7 +88,7 @@ MEASURED: dict[str, Measured] = {
         modes=30,
         pressure=77200.0,
         mass=0.567,
-        source="Cross et al., two-ball bounce, Table 2 and Fig. 11 (measured)",
+        source="Berdeni et al. 2015, two-ball bounce, Table 2 and Fig. 11 (measured)",
     ),  # fmt: skip
     "tennis": _tennis(),
     "volleyball": _volleyball(),

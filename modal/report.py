@@ -43,6 +43,15 @@ class LiftoffReport:
     provenance : dict, optional
         Versions, command line or API call, UTC time and case
         (:func:`twoball._common.provenance.block`); set by the public API.
+
+    Examples
+    --------
+    >>> import twoball
+    >>> report = twoball.liftoff()
+    >>> report.lifted, round(report.ratio, 4), report.backend
+    (True, 0.9347, 'legendre')
+    >>> sorted(report.as_dict())[:4]
+    ['backend', 'before_floor_departure', 'damping', 'floor_time_estimate']
     """
 
     case: Case
@@ -60,6 +69,11 @@ class LiftoffReport:
         phi_a was chosen, when eq. (3.7) departs from a preset's measured angle."""
         note = self.case.phi_a_note
         return [note] if note else []
+
+    @property
+    def lifted(self) -> bool:
+        """Whether the body lifts off within the modelled window."""
+        return bool(self.result.lifted)
 
     @property
     def t_liftoff_s(self) -> float | None:
@@ -197,7 +211,7 @@ def legendre_liftoff(
     reference: bool = True,
 ) -> LiftoffReport:
     """Lift-off of the closed-form CEM, eqs. (3.12)-(3.16) with criteria (i)-(ii) of §3(a)."""
-    from twoball._common.budget import check_series
+    from twoball.modal.cost import check_series
 
     check_series(case.modes, t_end_dimensionless(case, t_end_s), t_end_s)
     series = legendre_series(

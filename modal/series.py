@@ -20,7 +20,7 @@ from twoball.modal.filters import SpectralFilter
 
 from twoball._common.errors import NumericalError, ParameterError
 
-_CHUNK = 4096  # time samples evaluated at once; bounds memory for large mode counts
+CHUNK = 4096  # time samples evaluated at once; bounds memory for large mode counts
 
 
 class PoleState(NamedTuple):
@@ -145,9 +145,9 @@ class ModalSeries:
         times = np.asarray(t, dtype=float)
         flat = times.reshape(-1)
         out = np.empty((flat.size,) + amplitudes.shape[1:])
-        for start in range(0, flat.size, _CHUNK):
-            block = _exponential_table(flat[start : start + _CHUNK], rates)
-            out[start : start + _CHUNK] = _product(block, amplitudes).real
+        for start in range(0, flat.size, CHUNK):
+            block = _exponential_table(flat[start : start + CHUNK], rates)
+            out[start : start + CHUNK] = _product(block, amplitudes).real
         if not np.all(np.isfinite(out)):
             raise NumericalError("modal series: evaluation is not finite")
         return out.reshape(times.shape + amplitudes.shape[1:])

@@ -58,7 +58,7 @@ class Stepping:
     >>> twoball.Stepping(dt=-1.0)
     Traceback (most recent call last):
     ...
-    twoball._common.errors.ParameterError: dt must be a time step > 0 [s], got -1.0
+    twoball.ParameterError: dt must be a time step > 0 [s], got -1.0
     """
 
     t_end: float | None = None

@@ -4,6 +4,10 @@ from __future__ import annotations
 
 import json
 import math
+import os
+import subprocess
+import sys
+import textwrap
 
 import matplotlib.image as mpimg
 import numpy as np
@@ -12,6 +16,7 @@ from twoball.modal.filters import SpectralFilter
 from twoball.modal.legendre import legendre_series
 from twoball.modal.series import ModalSeries
 
+from tests import ROOT
 from twoball.cli.main import main
 
 
@@ -86,3 +91,35 @@ def text_of(array) -> str:
 def closed_form_series(case, modes: int) -> ModalSeries:
     """The Legendre series of eq. (3.16) of ``case`` with ``modes`` modes, Lanczos filter."""
     return legendre_series(case.phi_a, case.damping, SpectralFilter("lanczos", modes))
+
+
+def peak_child(code: str) -> tuple[float, float]:
+    """Peak RSS [bytes] (VmHWM) and CPU time [s] of ``code`` run in a fresh interpreter.
+
+    CPU time (user + system), not wall time: on a shared machine the wall time
+    of a single-threaded run grows with the others' load, its CPU time does not.
+    """
+    wrapper = textwrap.dedent(
+        """
+        import resource, sys
+        import numpy, scipy.sparse.linalg, skfem  # imports are not the work measured
+        def cpu():
+            usage = resource.getrusage(resource.RUSAGE_SELF)
+            return usage.ru_utime + usage.ru_stime
+        start = cpu()
+        exec(sys.argv[1])
+        used = cpu() - start
+        # VmHWM: this program's own peak; ru_maxrss keeps the forking parent's
+        # peak across exec (Linux), so a large pytest process would be measured
+        with open("/proc/self/status") as status:
+            hwm = next(int(line.split()[1]) for line in status if line.startswith("VmHWM:"))
+        print(hwm * 1024, used)
+        """
+    )
+    env = dict(os.environ, OPENBLAS_NUM_THREADS="1")
+    done = subprocess.run(
+        [sys.executable, "-c", wrapper, code], cwd=ROOT, env=env, capture_output=True, text=True
+    )
+    assert done.returncode == 0, done.stderr[-2000:]
+    peak, wall = done.stdout.split()[-2:]
+    return float(peak), float(wall)

@@ -39,8 +39,9 @@ def _case(case: Case | None) -> Case:
 def _field_bundles(verb: str, mesh: Any, stepping: Any, body: Any, old: dict[str, Any]) -> Any:
     """The bundles of a field verb: mesh, stepping (window and route only) and body."""
     times = old.pop("times", None)
-    given = bundles(verb, mesh=mesh, stepping=stepping, body=body, old=old,
-                    takes=("mesh", "stepping", "body"))  # fmt: skip
+    given = bundles(
+        verb, mesh=mesh, stepping=stepping, body=body, old=old, takes=("mesh", "stepping", "body")
+    )
     if given.stepping is not None:
         given.stepping.refuse("with field outputs (modal superposition)", "scheme", "dt")
     return given, times
@@ -185,9 +186,16 @@ def export(
         check_frame_budget(case, frames or DEFAULT_FRAMES, "frames", field)
     say = progress or silent
     model = ball_model(
-        case, field, backends=BACKENDS, body=given.body, sigma=sigma, recontact=recontact,
-        t_end_s=t_end, route=route, progress=say,
-    )  # fmt: skip
+        case,
+        field,
+        backends=BACKENDS,
+        body=given.body,
+        sigma=sigma,
+        recontact=recontact,
+        t_end_s=t_end,
+        route=route,
+        progress=say,
+    )
     if fmt == "vtu" and times is None and frames is None:
         selected = liftoff_frame(model, backend)
     elif fmt == "vtu" and frames == 1:
@@ -327,9 +335,10 @@ def render(
     t_end, route = _window(given)
     if given.mesh is not None and given.mesh.initial is not None and backend != "fem":
         raise ParameterError(
-            "initial", "left out without the fem backend (it sets the FE initial state)",
+            "initial",
+            "left out without the fem backend (it sets the FE initial state)",
             given.mesh.initial,
-        )  # fmt: skip
+        )
     count, times = _frames(frames, legacy_times)
     if kind == ".png" and count is not None:
         raise ParameterError(
@@ -347,9 +356,16 @@ def render(
         check_frame_budget(case, number, "frames", field)
     say = progress or silent
     model = ball_model(
-        case, field, backends=(backend,), body=given.body, sigma=sigma, recontact=recontact,
-        t_end_s=t_end, route=route, progress=say,
-    )  # fmt: skip
+        case,
+        field,
+        backends=(backend,),
+        body=given.body,
+        sigma=sigma,
+        recontact=recontact,
+        t_end_s=t_end,
+        route=route,
+        progress=say,
+    )
     if kind == ".png":
         times = liftoff_frame(model, backend) if times is None else times
     elif times is None:
@@ -521,9 +537,16 @@ def plot(
             check_field_body(case, given.body, field, recontact=recontact, route=route)
         check_frame_budget(case, instants, "instants", field)
         model = ball_model(
-            case, field, backends=chosen, body=given.body, sigma=sigma, recontact=recontact,
-            t_end_s=t_end, route=route, progress=say,
-        )  # fmt: skip
+            case,
+            field,
+            backends=chosen,
+            body=given.body,
+            sigma=sigma,
+            recontact=recontact,
+            t_end_s=t_end,
+            route=route,
+            progress=say,
+        )
         if given.body is not None:
             drawn = contact_pole_figure(model)
         elif kind == "waterfall":
@@ -580,7 +603,16 @@ def mesh_block(field: Any) -> dict[str, object]:
 
 @dataclass(frozen=True)
 class ExportResult:
-    """Files written by :func:`export` and what they hold (SI)."""
+    """Files written by :func:`export` and what they hold (SI).
+
+    Examples
+    --------
+    >>> import tempfile, pathlib, twoball
+    >>> out = pathlib.Path(tempfile.mkdtemp()) / "ball.vtu"
+    >>> result = twoball.export(out, mesh=twoball.MeshOptions("sphere", level=1))
+    >>> result.format, result.nodes, result.cell_type, len(result.times_s)
+    ('vtu', 162, 'triangle6', 1)
+    """
 
     files: list[Path]
     format: str
@@ -611,7 +643,16 @@ class ExportResult:
 
 @dataclass(frozen=True)
 class RenderResult:
-    """The picture or animation written by :func:`render`."""
+    """The picture or animation written by :func:`render`.
+
+    Examples
+    --------
+    >>> import tempfile, pathlib, twoball
+    >>> out = pathlib.Path(tempfile.mkdtemp()) / "ball.png"
+    >>> result = twoball.render(out, mesh=twoball.MeshOptions("sphere", level=1), frames=[0.005])
+    >>> result.times_s, result.backend
+    ([0.005], 'fem')
+    """
 
     file: Path
     times_s: list[float]
@@ -638,7 +679,17 @@ class RenderResult:
 
 @dataclass(frozen=True)
 class PlotResult:
-    """The PNG written by :func:`plot`, with one line per curve family."""
+    """The PNG written by :func:`plot`, with one line per curve family.
+
+    Examples
+    --------
+    >>> import tempfile, pathlib, twoball
+    >>> out = pathlib.Path(tempfile.mkdtemp()) / "eigen.png"
+    >>> figure = twoball.PlotOptions(levels=[1], orders=[1], dpi=72)
+    >>> result = twoball.plot("eigen", out, figure=figure)
+    >>> result.kind, result.rows[0][0]
+    ('eigen', 'P1, level 1 (42 unknowns)')
+    """
 
     file: Path
     kind: str

@@ -87,9 +87,13 @@ def liftoff(
     True
     """
     given = bundles(
-        "twoball.liftoff", mesh=mesh, stepping=stepping, body=body, damping=damping,
+        "twoball.liftoff",
+        mesh=mesh,
+        stepping=stepping,
+        body=body,
+        damping=damping,
         old=deprecated,
-    )  # fmt: skip
+    )
     case = Case.preset("basketball") if case is None else case
     if not isinstance(case, Case):
         raise ParameterError("case", "a twoball.Case", type(case).__name__)
@@ -104,9 +108,14 @@ def liftoff(
         from twoball.fem import solve
 
         report = solve(
-            case, mesh=given.mesh, stepping=stepping, damping=given.damping, sigma=sigma,
-            recontact=recontact, progress=progress,
-        )  # fmt: skip
+            case,
+            mesh=given.mesh,
+            stepping=stepping,
+            damping=given.damping,
+            sigma=sigma,
+            recontact=recontact,
+            progress=progress,
+        )
     else:
         _refuse_fem_options(given)
         from twoball.modal.report import legendre_liftoff
@@ -128,8 +137,8 @@ def _refuse_fem_options(given: Any, why: str = "with backend legendre") -> None:
     if given.stepping is not None:
         given.stepping.refuse(f"{why} (no time steps)", "scheme", "dt", "route")
     if isinstance(given.damping, Rayleigh):
-        valid = "a ModalRatio on the closed form (Rayleigh: backend fem with scheme alpha)"
-        raise ParameterError("damping", valid, given.damping.as_dict())
+        valid = "the paper's modal ratio on the closed form (Rayleigh: fem with scheme alpha)"
+        raise ParameterError("damping", valid, "rayleigh")
 
 
 def _contact_liftoff(case: Case, backend: str, given: Any, sigma: str, recontact: str) -> Any:

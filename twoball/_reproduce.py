@@ -22,6 +22,13 @@ class Reproduction:
     sections : list
         One per part, in report order: ``key``, ``title``, ``figures``,
         ``comparisons`` (paper value, ours, difference), ``seconds``.
+
+    Examples
+    --------
+    >>> import tempfile, pathlib, twoball
+    >>> done = twoball.reproduce(pathlib.Path(tempfile.mkdtemp()) / "paper", only="table1")
+    >>> done.as_dict()["sections"][0]["key"], done.figures >= 0
+    ('table1', True)
     """
 
     directory: Path

@@ -82,6 +82,13 @@ def converge(
     -------
     StudyResult
         ``passed`` is False if an observed order leaves its expected band.
+
+    Examples
+    --------
+    >>> import twoball
+    >>> study = twoball.converge(study="modes", modes_list="30,60,120")
+    >>> study.study, study.passed
+    ('modes', True)
     """
     from twoball.verify.studies.fem_runs import DEFAULT_LEVELS
     from twoball.verify.studies.modes import parse_modes, run_modes_study
@@ -194,6 +201,13 @@ def verify(
     -------
     VerifyResult
         ``passed`` only if every check passes.
+
+    Examples
+    --------
+    >>> import twoball
+    >>> result = twoball.verify(fast=True)  # the small configuration; twoball.verify() by default
+    >>> result.passed
+    True
     """
     from twoball.verify.checks.config import config
     from twoball.verify.checks.run import run_verify

@@ -34,6 +34,13 @@ class SweepResult:
         One per grid point: ``index``, ``case``, ``report`` (or ``error``).
     provenance : dict
         Versions, command line or call, UTC time, base case (:mod:`twoball._common.provenance`).
+
+    Examples
+    --------
+    >>> import twoball
+    >>> result = twoball.sweep({"v0": [3.0, 4.1]})
+    >>> result.parameters, result.shape, [p.case.phi_a_source for p in result.points]
+    (('v0',), (2,), ['eq. (3.7)', 'measured (basketball)'])
     """
 
     parameters: tuple[str, ...]
@@ -120,12 +127,12 @@ def sweep(
     >>> import twoball
     >>> result = twoball.sweep({"damping": [0.1, 0.13, 0.2]})
     >>> [round(p.ratio, 3) for p in result.points]
-    [1.142, 0.935, 0.628]
+    [1.354, 0.935, 0.417]
     """
     import numpy as np
 
-    from twoball._common.budget import check_sweep
     from twoball.modal.report import t_end_dimensionless
+    from twoball.verify.sweeps.cost import check_sweep
     from twoball.verify.sweeps.parallel import MIN_PARALLEL_ITEMS, Runner, check_workers
     from twoball.verify.sweeps.sweeps import SWEEP_PARAMETERS, SweepGrid, SweepSolver, run_sweep
 

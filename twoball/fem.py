@@ -79,9 +79,13 @@ def solve(
     from twoball.modal.stepping import Stepping
 
     given = bundles(
-        "twoball.fem.solve", mesh=mesh, stepping=stepping, damping=damping, old=deprecated,
+        "twoball.fem.solve",
+        mesh=mesh,
+        stepping=stepping,
+        damping=damping,
+        old=deprecated,
         takes=("mesh", "stepping", "damping"),
-    )  # fmt: skip
+    )
     case = Case.preset("basketball") if case is None else case
     if not isinstance(case, Case):
         raise ParameterError("case", "a twoball.Case", type(case).__name__)
@@ -106,7 +110,7 @@ def solve(
 
         dt_scaled = check_dt_in_window(dt, case.scalings.time, t_end_dimensionless(case, t_end))
     if spec.kind != "file":  # the budget in the user's units (the model layer checks again)
-        from twoball._common.budget import check_fem
+        from twoball.fem_membrane.cost import check_fem
 
         check_fem(
             spec.kind,
@@ -222,10 +226,11 @@ def eigen(
     >>> import twoball
     >>> rows = twoball.fem.eigen(twoball.MeshOptions("axisym", elements=100), count=3)
     >>> [(row["l"], row["exact"]) for row in rows]
-    [(1, 2.0), (2, 6.0), (3, 12.0)]
+    [(0, 0.0), (1, 2.0), (2, 6.0), (3, 12.0)]
     """
     given = bundles("twoball.fem.eigen", mesh=mesh, old=deprecated, takes=("mesh",))
-    from twoball._common.budget import check, fem_dofs, fem_estimate, options
+    from twoball._common.budget import check, options
+    from twoball.fem_membrane.cost import fem_dofs, fem_estimate
     from twoball.fem_membrane.eigen import eigen_table
 
     spec = MeshOptions.of(given.mesh)

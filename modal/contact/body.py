@@ -49,7 +49,7 @@ class Body:
     >>> twoball.Body(mass_ratio=0.1, restitution=2.0)
     Traceback (most recent call last):
     ...
-    twoball._common.errors.ParameterError: restitution must be a number in [0, 1], got 2.0
+    twoball.ParameterError: restitution must be a number in [0, 1], got 2.0
     """
 
     mass_ratio: float

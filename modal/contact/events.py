@@ -181,10 +181,17 @@ def integrate(
         after = float(system.energy(z))
         events.append(
             ContactEvent(
-                "impact", t, *_body(system, z), impulse, approach, before - after, before,
-                z_event, z.copy(),
+                "impact",
+                t,
+                *_body(system, z),
+                impulse,
+                approach,
+                before - after,
+                before,
+                z_event,
+                z.copy(),
             )
-        )  # fmt: skip
+        )
         if e > 0.0:
             events.append(_separation(system, t, z))
             mode = "flight"

@@ -58,6 +58,15 @@ class ContactReport:
 
     ``history`` is the dimensionless event history (None in the massless mode,
     where ``massless`` holds the criteria's :class:`LiftoffResult`).
+
+    Examples
+    --------
+    >>> import twoball
+    >>> report = twoball.liftoff(body=twoball.Body(mass_ratio=0.1))
+    >>> [event["kind"] for event in report.events_si()][:3]
+    ['separation', 'impact', 'separation']
+    >>> report.lifted, round(report.ratio, 3)
+    (True, 0.104)
     """
 
     case: Case
@@ -250,10 +259,20 @@ def solve_contact(
         history = integrate(system, t_end, restitution, samples_per_period)
         result = None
     return ContactReport(
-        case, mass_ratio, contact_radius_m, restitution, energy, backend, sigma,
-        history, result, dict(extra or {}), (), membrane,
+        case,
+        mass_ratio,
+        contact_radius_m,
+        restitution,
+        energy,
+        backend,
+        sigma,
+        history,
+        result,
+        dict(extra or {}),
+        (),
+        membrane,
         None if mass_ratio == 0.0 else system,
-    )  # fmt: skip
+    )
 
 
 def legendre_contact(
@@ -285,9 +304,17 @@ def legendre_contact(
     theta = cap_angle(radius, case.radius)
     contact = legendre_cap_averages(theta, case.modes)
     return solve_contact(
-        case, series, contact,
-        mass_ratio=mass_ratio, contact_radius_m=radius, restitution=float(restitution),
-        energy=energy, backend="legendre", sigma=sigma,
-        t_end=t_end_dimensionless(case, t_end_s), membrane=membrane,
-        extra={"cap_angle_rad": theta}, samples_per_period=samples_per_period,
-    )  # fmt: skip
+        case,
+        series,
+        contact,
+        mass_ratio=mass_ratio,
+        contact_radius_m=radius,
+        restitution=float(restitution),
+        energy=energy,
+        backend="legendre",
+        sigma=sigma,
+        t_end=t_end_dimensionless(case, t_end_s),
+        membrane=membrane,
+        extra={"cap_angle_rad": theta},
+        samples_per_period=samples_per_period,
+    )

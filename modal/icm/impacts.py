@@ -15,7 +15,7 @@ from twoball.modal.icm.inputs import (
     check_mu,
     check_restitution,
 )
-from twoball.modal.parameters import STANDARD_GRAVITY
+from twoball.modal.scalings import STANDARD_GRAVITY
 
 from twoball._common.errors import ParameterError
 

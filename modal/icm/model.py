@@ -21,7 +21,7 @@ from twoball.modal.icm.inputs import (
     check_mu,
     check_restitution,
 )
-from twoball.modal.parameters import STANDARD_GRAVITY
+from twoball.modal.scalings import STANDARD_GRAVITY
 
 
 @dataclass(frozen=True)
@@ -52,6 +52,13 @@ class ICMResult:
         Velocities just after the second impact, eq. (2.5) [m/s].
     v1_ratio, v2_ratio : float
         ``v1 / |v0|`` and ``v2 / |v0|`` (dimensionless).
+
+    Examples
+    --------
+    >>> import twoball
+    >>> result = twoball.icm(0.1, e2=0.8, e12=0.89)
+    >>> round(result.v1_ratio, 4), round(result.v2_ratio, 4)
+    (2.0927, 0.4907)
     """
 
     mu: float
@@ -124,6 +131,15 @@ def icm(
     ParameterError
         If any input is out of range; the name is the CLI flag
         (``--mu``, ``--e2``, ``--e12``, ``--dx``, ``--drop-height``, ``--g``).
+
+    Examples
+    --------
+    >>> import twoball
+    >>> touching = twoball.icm(0.101, e2=0.80, e12=0.89)  # basketball and tennis ball
+    >>> round(touching.v1_ratio, 3)
+    2.09
+    >>> round(twoball.icm(0.0, 1.0, 1.0).v1_ratio, 6)  # the classic three times, eq. (2.7)
+    3.0
     """
     mu = check_mu(mu)
     e2 = check_restitution("e2", e2)

@@ -146,6 +146,13 @@ def table1_check(rows: tuple[Table1Row, ...] = TABLE1) -> tuple[Table1Check, ...
     -------
     tuple of Table1Check
         One entry per row, in order.
+
+    Examples
+    --------
+    >>> import twoball
+    >>> rows = twoball.table1()
+    >>> [(c.row.upper, round(c.v1, 3), c.row.icm_v1) for c in rows[:3]]
+    [('Coin', 1.516, 1.5), ('Nut', 1.493, 1.5), ('Table tennis', 1.771, 1.8)]
     """
     out = []
     for i, row in enumerate(rows, start=1):

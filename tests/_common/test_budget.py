@@ -16,6 +16,7 @@ import textwrap
 from pathlib import Path
 
 import pytest
+from twoball.modal.cost import check_series, series_estimate
 
 from tests import ROOT
 from twoball._common import budget
@@ -28,7 +29,6 @@ from twoball._common.budget import (
     format_bytes,
     parse_bytes,
     parse_seconds,
-    series_estimate,
 )
 from twoball._common.errors import ParameterError
 
@@ -68,38 +68,6 @@ CHILD = textwrap.dedent(
 )
 
 
-def _peak_child(code: str) -> tuple[float, float]:
-    """Peak RSS [bytes] (VmHWM) and CPU time [s] of ``code`` run in a fresh interpreter.
-
-    CPU time (user + system), not wall time: on a shared machine the wall time
-    of a single-threaded run grows with the others' load, its CPU time does not.
-    """
-    wrapper = textwrap.dedent(
-        """
-        import resource, sys
-        import numpy, scipy.sparse.linalg, skfem  # imports are not the work measured
-        def cpu():
-            usage = resource.getrusage(resource.RUSAGE_SELF)
-            return usage.ru_utime + usage.ru_stime
-        start = cpu()
-        exec(sys.argv[1])
-        used = cpu() - start
-        # VmHWM: this program's own peak; ru_maxrss keeps the forking parent's
-        # peak across exec (Linux), so a large pytest process would be measured
-        with open("/proc/self/status") as status:
-            hwm = next(int(line.split()[1]) for line in status if line.startswith("VmHWM:"))
-        print(hwm * 1024, used)
-        """
-    )
-    env = dict(os.environ, OPENBLAS_NUM_THREADS="1")
-    done = subprocess.run(
-        [sys.executable, "-c", wrapper, code], cwd=ROOT, env=env, capture_output=True, text=True
-    )
-    assert done.returncode == 0, done.stderr[-2000:]
-    peak, wall = done.stdout.split()[-2:]
-    return float(peak), float(wall)
-
-
 def test_sizes_and_durations_parse() -> None:
     assert parse_bytes("12GiB") == 12 * GiB
     assert parse_bytes("500MB") == 500 * 10**6
@@ -107,6 +75,7 @@ def test_sizes_and_durations_parse() -> None:
     assert parse_seconds("90min") == 5400.0
     assert parse_seconds("2h") == 7200.0
     assert parse_seconds("3600") == 3600.0
+    assert format_bytes(15.0 * GiB) == "15 GiB"
     for bad in ("12x", "-1GiB", "0", "nan", "GiB"):
         with pytest.raises(ParameterError, match="^max_memory must be a size > 0"):
             parse_bytes(bad)
@@ -130,40 +99,25 @@ def test_default_memory_is_half_the_machine(monkeypatch: pytest.MonkeyPatch) -> 
 def test_refusal_message_names_option_estimate_and_limit() -> None:
     limit = Budget(int(11.7 * GiB), 300.0)
     with pytest.raises(BudgetError) as caught:
-        limit.check("--modes 100000", series_estimate(100000, 4 * 3.141592653589793))
+        limit.check("modes 100000", series_estimate(100000, 4 * 3.141592653589793))
     assert str(caught.value) == (
-        "--modes 100000 needs ~15 GiB of memory; limit 11.7 GiB "
-        "(raise the memory limit, max_memory)"
+        "modes 100000 needs ~15 GiB of memory; limit 11.7 GiB (raise the memory limit, max_memory)"
     )
-    assert isinstance(caught.value, ParameterError) and caught.value.name == "--modes"
+    assert isinstance(caught.value, ParameterError) and caught.value.name == "modes"
     with pytest.raises(
-        BudgetError, match=r"^--dt 1e-09 needs ~.* limit 5 min \(raise the time limit, max_time\)$"
+        BudgetError, match=r"^dt 1e-09 needs ~.* limit 5 min \(raise the time limit, max_time\)$"
     ):
-        limit.check("--dt 1e-09", Estimate(GiB, 1e6))
-    assert limit.check("--modes 30", Estimate(200 * MiB, 1.0)) == Estimate(200 * MiB, 1.0)
+        limit.check("dt 1e-09", Estimate(GiB, 1e6))
+    assert limit.check("modes 30", Estimate(200 * MiB, 1.0)) == Estimate(200 * MiB, 1.0)
 
 
 def test_limits_context_restores_the_budget() -> None:
     before = budget.current_budget()
     with budget.limits("1GiB", "1s") as inner:
         assert budget.current_budget() == inner == Budget(GiB, 1.0)
-        with pytest.raises(BudgetError, match="--modes 3000 needs"):
-            budget.check_series(3000, 4 * 3.141592653589793)
+        with pytest.raises(BudgetError, match="^modes 3000 needs"):
+            check_series(3000, 4 * 3.141592653589793)
     assert budget.current_budget() == before
-
-
-def test_sizes_in_closed_form_match_the_meshes() -> None:
-    from twoball.fem_membrane.build import build_space
-
-    for mesh, level, elements, order in [
-        ("sphere", 1, None, 1),
-        ("sphere", 2, None, 2),
-        ("ring", 2, None, 2),
-        ("axisym", None, 40, 2),
-    ]:
-        space = build_space(mesh, level=level, elements=elements, order=order, phi_a=2.6)
-        assert budget.fem_dofs(mesh, level, elements, order) == space.dofs
-    assert format_bytes(15.0 * GiB) == "15 GiB"
 
 
 def test_each_absurd_size_is_refused_before_any_allocation(tmp_path: Path) -> None:
@@ -189,14 +143,11 @@ def test_each_absurd_size_is_refused_before_any_allocation(tmp_path: Path) -> No
         assert len(lines) == 1 and lines[0].startswith("twoball: error: "), (argv, err)
         assert "Traceback" not in err
     refused = [err for _, err in results[:-1]]
-    assert (
-        "--modes 20000 needs ~" in refused[0] and "(raise the time limit, max_time)" in refused[0]
-    )
+    assert "--modes 20000 needs ~" in refused[0]
+    assert refused[0].rstrip().endswith("(raise the time limit, --max-time)"), refused[0]
     assert "--modes 100000 needs ~15 GiB of memory" in refused[1]
-    assert (
-        "--t-end 1e+06 needs ~" in refused[2]
-        and "(raise the memory limit, max_memory)" in refused[2]
-    )
+    assert "--t-end 1e+06 needs ~" in refused[2]
+    assert refused[2].rstrip().endswith("(raise the memory limit, --max-memory)"), refused[2]
     assert "--level 9" in refused[3] and "--level 50" in refused[4]
     assert "--dt 1e-09 needs ~" in refused[5]
     assert "(1000000 points) needs ~" in refused[6]
@@ -205,30 +156,3 @@ def test_each_absurd_size_is_refused_before_any_allocation(tmp_path: Path) -> No
     assert "--instants must be an integer in [2, 2000]" in refused[9]
     assert "--times must be at most 2000 times" in refused[10]
     assert results[-1][0] == 0, results[-1][1]
-
-
-@pytest.mark.slow
-@pytest.mark.parametrize("modes", [1500, 3000])
-def test_series_estimate_within_a_factor_of_measurement(modes: int) -> None:
-    code = (
-        "from twoball.modal.parameters import preset\n"
-        "from twoball.modal.report import legendre_liftoff\n"
-        f"legendre_liftoff(preset('basketball').derive(modes={modes}))\n"
-    )
-    peak, wall = _peak_child(code)
-    estimate = budget.check_series(modes, 4 * 3.141592653589793)
-    assert 1 / 2.5 < estimate.memory / peak < 2.5, (estimate, peak)
-    assert 1 / 3 < estimate.seconds / wall < 3, (estimate, wall)
-
-
-@pytest.mark.slow
-@pytest.mark.parametrize(("level", "order"), [(4, 1), (3, 2)])
-def test_fem_estimate_within_a_factor_of_measurement(level: int, order: int) -> None:
-    code = (
-        "from twoball.fem_membrane.solve import fem_pole_motion\n"
-        f"fem_pole_motion(2.6, 0.13, 'lanczos', level={level}, order={order})\n"
-    )
-    peak, wall = _peak_child(code)
-    estimate = budget.fem_estimate(budget.fem_dofs("sphere", level, None, order), 30, "krylov")
-    assert 1 / 2.5 < estimate.memory / peak < 2.5, (estimate, peak)
-    assert 1 / 3 < estimate.seconds / wall < 3, (estimate, wall)

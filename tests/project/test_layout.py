@@ -58,11 +58,19 @@ MIRRORS = {
     "_common": ROOT / "twoball" / "_common",
     "cli": ROOT / "twoball" / "cli",
 }
-PROJECT_CHECKS = {"test_layout.py", "test_docs.py", "test_startup.py"}
+PROJECT_CHECKS = {
+    "test_layout.py",
+    "test_layers.py",
+    "test_docs.py",
+    "test_examples.py",
+    "test_startup.py",
+}
 
 
 def test_each_test_file_is_named_after_the_module_or_verb_it_tests():
-    """tests/<part>/<path>/test_<name>.py tests <part>/<path>/<name>.py (``init``: the package).
+    """tests/<part>/<path>/test_<name>.py tests <part>/<path>/<name>.py or its subpackage <name>.
+
+    ``test_init.py`` tests the folder's own ``__init__.py``;
 
     tests/api holds one file per public verb or face module of ``twoball``;
     tests/project the project-wide checks and the bad-input tables.
@@ -76,8 +84,10 @@ def test_each_test_file_is_named_after_the_module_or_verb_it_tests():
         inner = relative.parent.parts[1:]
         if top in MIRRORS:
             folder = MIRRORS[top].joinpath(*inner)
-            found = (folder / f"{name}.py").is_file() or (
-                name == "init" and (folder / "__init__.py").is_file()
+            found = (
+                (folder / f"{name}.py").is_file()
+                or (folder / name / "__init__.py").is_file()
+                or (name == "init" and (folder / "__init__.py").is_file())
             )
         elif top == "api":
             face = ROOT / "twoball"

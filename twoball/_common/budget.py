@@ -1,49 +1,27 @@
-"""Resource guards: estimate memory and time before the work starts, refuse what cannot fit.
+"""The resource guard: refuse, before it starts, work that cannot fit in memory or time.
 
-Every expensive path (the closed-form series, the finite-element mesh and eigen
-solve, generalized-alpha stepping, sweeps, worker pools, frames) asks for an
-:class:`Estimate` from the small formulas below and passes it to
-:meth:`Budget.check` *before* it allocates anything.  Above the limit it raises
-:class:`BudgetError` (a :class:`~twoball._common.errors.ParameterError`, so the
-command line prints one line and exits with status 2)::
+Every expensive path asks its own cost model for an :class:`Estimate` (the
+closed-form series: :mod:`twoball.modal.cost`; the finite elements:
+:mod:`twoball.fem_membrane.cost`; sweeps and worker pools:
+:mod:`twoball.verify.sweeps.cost`; field frames: :mod:`twoball.verify.output.fields`)
+and passes it to :func:`check` *before* it allocates anything.  Above the limit it
+raises :class:`BudgetError` (a :class:`~twoball._common.errors.ParameterError`,
+so the command line prints one line and exits with status 2)::
 
-    --modes 100000 needs ~15 GiB of memory; limit 11.7 GiB (set --max-memory)
+    modes 100000 needs ~15 GiB of memory; limit 11.7 GiB (raise the memory limit, max_memory)
 
 Limits
-    Memory: ``--max-memory`` or ``TWOBALL_MAX_MEMORY`` (``12GiB``, ``500MB``,
-    ``2e9``); default half the machine's physical memory -- the share one run may
-    take while the desktop, other runs and the page cache keep the rest, so that a
-    run near the limit is refused and never swaps or meets the OOM killer.
-    Time: ``--max-time`` or ``TWOBALL_MAX_TIME`` (``3600``, ``90min``, ``2h``);
-    default five minutes -- more than five times the slowest documented single run
-    (generalized-alpha on the P2 level-3 sphere, 42 s; the series with N = 6000,
-    48 s), so no ordinary run is refused, while a run that would look hung (N =
-    20000: ~9 min) is refused at once and a deliberate long one says so with
-    ``--max-time``.
+    Memory: ``max_memory`` (command line ``--max-memory``) or ``TWOBALL_MAX_MEMORY``
+    (``12GiB``, ``500MB``, ``2e9``); default half the machine's physical memory --
+    the share one run may take while the desktop, other runs and the page cache
+    keep the rest, so that a run near the limit is refused and never swaps or
+    meets the OOM killer.
+    Time: ``max_time`` or ``TWOBALL_MAX_TIME`` (``3600``, ``90min``, ``2h``);
+    default five minutes -- more than five times the slowest documented single
+    run, so no ordinary run is refused, while a run that would look hung is
+    refused at once and a deliberate long one says so.
 
-Calibration (peak RSS from ``resource.getrusage`` of a child process, wall time
-on the 2-core build machine; ``benchmarks/bench_budget.py`` prints them; the
-estimates are meant to be right within a factor of 2-3, which is all a refusal
-needs):
-
-================================  ========================  =======================
-run                               measured                  model
-================================  ========================  =======================
-liftoff N = 1000 / 3000 / 6000    218 / 480 / 873 MiB,      base + max(8 m (N+1),
-                                  1.1 / 8.0 / 48 s          24 min(S, 4096) (N+1));
-                                                            40 ns x S x (N+1)
-FE sphere P1 L4 / L5, P2 L3 / L4  187 / 312, 159 / 283 MiB  base + 20 kB/DOF
-(Krylov route)                    1.5 / 3.4, 1.6 / 5.9 s    0.6 ms/DOF
-FE full route, P2 L3              171 MiB, 8 s              + 3 us x DOFs x (N+1)^2
-alpha, P2 L2 / L3, axisym 8001    2.4 / 17 / 8 ms per step  0.3 ms + 1 us x DOFs
-                                                            + 5 ns x DOFs x modes
-================================  ========================  =======================
-
-``S`` is the number of time samples of the bracketing grid, 16 per period of the
-highest retained mode (:func:`twoball.modal.liftoff.bracketing_grid`), ``m`` the
-Gauss points of eq. (3.12) (:func:`twoball.modal.legendre.quadrature_points`).
-
-Only the standard library is imported here (``twoball --help`` stays cheap).
+Only the standard library is imported here.
 """
 
 from __future__ import annotations
@@ -63,24 +41,8 @@ FALLBACK_MEMORY = 4 * GiB  # when the machine's memory cannot be read
 DEFAULT_MAX_SECONDS = 300.0
 MEMORY_ENV = "TWOBALL_MAX_MEMORY"
 TIME_ENV = "TWOBALL_MAX_TIME"
-MAX_WORKERS_PER_CORE = 4
 
 BASE_MEMORY = 100 * MiB  # interpreter, numpy, scipy (measured 89 MiB)
-WORKER_MEMORY = 150 * MiB  # one pool worker (a forked interpreter with the solver loaded)
-SECONDS_PER_TERM = 40e-9  # one complex exp-multiply-add of the series evaluation
-MAX_QUADRATURE = 20000  # twoball.modal.legendre._MAX_QUADRATURE
-CHUNK = 4096  # twoball.modal.series._CHUNK
-SAMPLES_PER_PERIOD = 16
-FE_BYTES_PER_DOF = 20 * KiB  # Krylov basis, LU fill, mesh and assembly (P1/P2, L3-L5)
-FE_SECONDS_PER_DOF = 6e-4
-FULL_ROUTE_SECONDS = 3e-6  # per DOF and eigenpair of the full eigen route
-STEP_SECONDS = 3e-4  # per generalized-alpha step: Python overhead
-STEP_SECONDS_PER_DOF = 1e-6  # sparse LU solves
-STEP_SECONDS_PER_DOF_MODE = 5e-9  # low-rank modal damping (Woodbury)
-STEP_BYTES = 160  # pole history and its three cubic splines per step
-POINT_OVERHEAD_SECONDS = 3e-3  # one sweep point besides its series (case, report, reference)
-POINT_BYTES = 8 * KiB  # one kept sweep point (case, report, candidates)
-FRAME_FIELDS = 12  # doubles per node and frame: u, u_t, u_tt, u n, both backends
 
 _UNITS = {
     "": 1,
@@ -270,228 +232,9 @@ def check(option: str, estimate: Estimate) -> Estimate:
 
 
 def options(**values: object) -> str:
-    """``--modes 100000 --t-end 1e+06`` from keyword values (None skipped; _ -> -)."""
+    """``modes 100000 t_end 1e+06`` from keyword values (None skipped): the work asked for."""
     return " ".join(
-        f"--{name.replace('_', '-')} {value:g}"
-        if isinstance(value, float)
-        else f"--{name.replace('_', '-')} {value}"
+        f"{name} {value:g}" if isinstance(value, float) else f"{name} {value}"
         for name, value in values.items()
         if value is not None
     )
-
-
-# --- estimators -------------------------------------------------------------------
-
-
-def legendre_omega(modes: int) -> float:
-    """``omega_N = sqrt(N (N + 1))``, the highest retained frequency (dimensionless)."""
-    return math.sqrt(modes * (modes + 1.0))
-
-
-def grid_samples(omega_max: float, t_end: float) -> float:
-    """Samples of the bracketing grid: 16 per period of ``omega_max`` over [0, t_end]."""
-    return math.ceil(t_end * max(omega_max, 1.0) * SAMPLES_PER_PERIOD / (2.0 * math.pi)) + 1
-
-
-def series_estimate(modes: int, t_end: float, terms: int | None = None) -> Estimate:
-    """The closed-form lift-off with N modes over a window ``t_end`` (dimensionless).
-
-    Memory: the larger of the Gauss rule's Vandermonde matrix of eq. (3.12),
-    ``8 m (N + 1)`` bytes with ``m = min(N + 50, 20000)``, and the evaluation: the
-    exponential tables, ``24 min(S, 4096) K`` bytes for K retained modes, and the
-    grid's u, u_t, u_tt and force, ``48 S`` bytes.  Time: ``40 ns x S x K``.  ``terms`` is K when it
-    differs from N + 1 (e.g. finite-element modes).
-    """
-    modes = int(modes)
-    kept = modes + 1 if terms is None else int(terms)
-    samples = grid_samples(legendre_omega(modes), t_end)
-    points = min(modes + 50, MAX_QUADRATURE) if terms is None else 0
-    # the Vandermonde matrix is freed before the evaluation starts: the larger one is the peak
-    evaluation = 24.0 * min(samples, CHUNK) * kept + 48.0 * samples
-    memory = BASE_MEMORY + max(8.0 * points * (modes + 1), evaluation)
-    return Estimate(memory, SECONDS_PER_TERM * samples * kept)
-
-
-def reference_estimate(t_end: float, modes: int = 240) -> Estimate:
-    """The converged-series reference of the truncation guard (N up to ~240, the window)."""
-    return series_estimate(modes, t_end)
-
-
-def fem_dofs(mesh: object, level: int | None, elements: int | None, order: int) -> int:
-    """Degrees of freedom of the finite-element space, in closed form (no mesh built).
-
-    Icosphere of level L: ``20 4^L`` triangles, so ``10 4^L p^2 + 2`` DOFs for
-    order p; ring sphere: ``4 n^2 + 2`` vertices with ``n ~ sqrt(10) 2^(L-1)``;
-    axisymmetric line of E elements: ``p E + 1``.
-    """
-    if not isinstance(mesh, str):  # a SphereMesh (a user's file): its own size
-        order = mesh.order if order is None else int(order)
-        return len(mesh.cells) * order * order // 2 + 2  # closed surface: V = T / 2 + 2
-    order = int(order)
-    if mesh == "axisym":
-        return order * int(400 if elements is None else elements) + 1
-    level = 3 if level is None else int(level)
-    if level > 60:  # 4^level overflows any machine: report it as such
-        return 10**40
-    if mesh == "ring":
-        rows = max(2, round(math.sqrt(10.0) * 2.0 ** (level - 1)))
-        return 4 * rows * rows * order * order + 2
-    return 10 * 4**level * order * order + 2
-
-
-def fem_estimate(dofs: int, modes: int = 30, route: str = "krylov", dimension: int = 2) -> Estimate:
-    """Assembly, eigen solve (or Krylov series) and lift-off of a FE space of ``dofs``.
-
-    Memory ``base + 20 kB/DOF`` (measured P1/P2, levels 3-5); time ``0.6 ms/DOF``
-    on the Krylov route, plus ``3 us x DOFs x (N + 1)^2`` on the full route
-    (every eigenpair below the cutoff: ``(N + 1)^2`` on the sphere, ``N + 1`` on
-    the axisymmetric line, ``dimension`` 2 or 1).
-    """
-    pairs = (modes + 1) ** 2 if dimension == 2 else modes + 1
-    memory = BASE_MEMORY + FE_BYTES_PER_DOF * dofs
-    seconds = FE_SECONDS_PER_DOF * dofs
-    if route == "full":
-        memory += 8.0 * dofs * pairs
-        seconds += FULL_ROUTE_SECONDS * dofs * pairs
-    return Estimate(memory, seconds)
-
-
-def alpha_estimate(dofs: int, pairs: int, t_end: float, dt: float) -> Estimate:
-    """Generalized-alpha stepping of ``t_end / dt`` steps on ``dofs`` (dimensionless times).
-
-    Per step ``0.3 ms + 1 us x DOFs + 5 ns x DOFs x pairs`` (the low-rank modal
-    damping of ``pairs`` modes); 160 bytes per step for the pole history and its
-    splines.
-    """
-    steps = math.ceil(t_end / dt)
-    per_step = STEP_SECONDS + STEP_SECONDS_PER_DOF * dofs + STEP_SECONDS_PER_DOF_MODE * dofs * pairs
-    return Estimate(BASE_MEMORY + STEP_BYTES * steps + 8.0 * dofs * pairs, steps * per_step)
-
-
-def sweep_estimate(points: int, per_point: Estimate, workers: int = 1) -> Estimate:
-    """``points`` solves of ``per_point`` each, on ``workers`` processes (limited by the cores)."""
-    parallel = max(1, min(int(workers), os.cpu_count() or 1))
-    seconds = points * (per_point.seconds + POINT_OVERHEAD_SECONDS) / parallel
-    memory = per_point.memory + (parallel - 1) * WORKER_MEMORY + POINT_BYTES * points
-    return Estimate(memory, seconds)
-
-
-def check_workers(workers: int | None) -> None:
-    """Refuse more than four workers per core (they only contend) or more than memory allows."""
-    if workers is None:
-        return
-    cores = os.cpu_count() or 1
-    if workers > MAX_WORKERS_PER_CORE * cores:
-        raise ParameterError(
-            "workers",
-            f"an integer in [1, {MAX_WORKERS_PER_CORE * cores}] "
-            f"({MAX_WORKERS_PER_CORE} per core, {cores} cores)",
-            workers,
-        )
-    check(f"workers {workers}", Estimate(BASE_MEMORY + workers * WORKER_MEMORY, 0.0))
-
-
-def frames_estimate(
-    frames: int, nodes: int, modes: int, seconds_per_frame: float = 0.0
-) -> Estimate:
-    """Fields at ``frames`` instants on ``nodes`` nodes from ``modes`` modes (export, render, plot).
-
-    Memory ``12 doubles x nodes x frames`` (u, u_t, u_tt and u n of both backends);
-    time ``40 ns x frames x nodes x modes`` for the evaluation plus
-    ``seconds_per_frame`` for drawing or writing each frame.
-    """
-    memory = BASE_MEMORY + 8.0 * FRAME_FIELDS * nodes * frames + 8.0 * nodes * modes
-    seconds = frames * (SECONDS_PER_TERM * nodes * modes + seconds_per_frame)
-    return Estimate(memory, seconds)
-
-
-def check_series(modes: int, t_end: float, t_end_s: float | None = None) -> Estimate:
-    """Refuse a closed-form lift-off (N modes, window ``t_end`` dimensionless) that cannot fit.
-
-    The truncation guard's converged reference over the same window is included.
-    """
-    estimate = series_estimate(modes, t_end) + reference_estimate(t_end)
-    return check(options(modes=int(modes), t_end=t_end_s), estimate)
-
-
-def check_fem(
-    mesh: str,
-    level: int | None,
-    elements: int | None,
-    order: int,
-    modes: int,
-    route: str,
-    *,
-    scheme: str = "modal",
-    dt: float | None = None,
-    t_end: float = 4.0 * math.pi,
-    step_accuracy: float = 0.2,
-    time_unit_s: float | None = None,
-) -> Estimate:
-    """Refuse a finite-element run (mesh, eigen solve, and stepping for ``alpha``) that cannot fit.
-
-    ``dt`` and ``t_end`` are dimensionless; ``time_unit_s`` (1/c in seconds) only
-    turns dt back into the ``--dt`` the user typed for the message.
-    """
-    dofs = fem_dofs(mesh, level, elements, order)
-    dimension = 1 if mesh == "axisym" else 2
-    if route == "auto":
-        route = "krylov" if dofs >= 2000 else "full"
-    if scheme == "alpha":
-        route = "full"
-    size = options(level=level, elements=elements, order=order) or "the finite-element mesh"
-    estimate = check(size, fem_estimate(dofs, modes, route, dimension))
-    if scheme != "alpha":
-        return estimate
-    omega_cut = 0.5 * (legendre_omega(modes) + legendre_omega(modes + 1))
-    step = dt if dt is not None else step_accuracy / omega_cut
-    pairs = (modes + 1) ** 2 if dimension == 2 else modes + 1
-    if dt is None:
-        option = "scheme alpha"
-    elif time_unit_s is None:
-        option = f"dt (dt c = {dt:.3g})"
-    else:
-        option = options(dt=dt * time_unit_s)
-    return check(option, estimate + alpha_estimate(dofs, pairs, t_end, step))
-
-
-def check_sweep(
-    points: int, modes: int, t_end: float, workers: int | None = None, reference: bool = False
-) -> Estimate:
-    """Refuse a sweep of ``points`` closed-form solves (N ``modes``, window ``t_end``).
-
-    Workers: at most four per core, each ~150 MiB.  Per point: the series (and,
-    with ``reference``, the truncation guard's converged series) plus ~3 ms of
-    bookkeeping.
-    """
-    check_workers(workers)
-    cores = os.cpu_count() or 1
-    per_point = series_estimate(modes, t_end)
-    if reference:
-        per_point = per_point + reference_estimate(t_end)
-    estimate = sweep_estimate(points, per_point, cores if workers is None else workers)
-    return check(f"values ({points} points)", estimate)
-
-
-def check_count(option: str, count: float, bytes_each: float = 8.0) -> Estimate:
-    """Refuse an array of ``count`` items (e.g. the values of ``--values``) that cannot fit."""
-    return check(option, Estimate(BASE_MEMORY + bytes_each * count, 0.0))
-
-
-def check_frames(
-    option: str,
-    frames: int,
-    mesh: str = "sphere",
-    level: int | None = None,
-    order: int = 2,
-    modes: int = 30,
-    seconds_per_frame: float = 0.0,
-) -> Estimate:
-    """Refuse ``frames`` field frames on the mesh (export, render, plot) that cannot fit.
-
-    The mode count is the FE one, ``(N + 1)^2`` on the sphere (the Legendre
-    backend has fewer); ``seconds_per_frame`` is the drawing or writing of a frame.
-    """
-    nodes = fem_dofs(mesh, level, None, order)
-    pairs = (modes + 1) ** 2
-    return check(option, frames_estimate(frames, nodes, pairs, seconds_per_frame))

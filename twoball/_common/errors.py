@@ -18,6 +18,15 @@ class ParameterError(ValueError):
         The valid range or set, in words (for example ``"[0, 1)"``).
     got : object, optional
         The offending value.
+
+    Examples
+    --------
+    >>> import twoball
+    >>> try:
+    ...     twoball.Case.preset("basketball", damping=1.5)
+    ... except twoball.ParameterError as error:
+    ...     print(error.name, "|", error.valid)
+    damping | in [0, 1)
     """
 
     def __init__(self, name: str, valid: str, got: object = None) -> None:
@@ -35,7 +44,14 @@ class ParameterError(ValueError):
 
 
 class NumericalError(RuntimeError):
-    """A computation produced NaN/inf or did not converge; never passed on silently."""
+    """A computation produced NaN/inf or did not converge; never passed on silently.
+
+    Examples
+    --------
+    >>> import twoball
+    >>> issubclass(twoball.NumericalError, RuntimeError)
+    True
+    """
 
 
 # Public as twoball.ParameterError and twoball.NumericalError: tracebacks and reprs say so.

@@ -9,19 +9,20 @@ A :class:`Reporter` is what the library's ``progress`` callbacks are given:
   ``update(done)`` (a :data:`TaskHook`, as ``twoball reproduce`` takes);
 * ``reporter.update(done)`` sets the count of its own total (sweeps).
 
-On a terminal it draws a rich bar (transient: gone when the work ends).  Anywhere
+On a terminal it draws one status line (spinner, step, counts, elapsed time),
+redrawn four times a second by a background thread and erased when the work ends.  Anywhere
 else (a CI log, a pipe, a file) it prints plain lines such as
 ``twoball: verify: 3/12 fem P2 level 3 (14 s)``: one when the work begins, then
 at most one every :data:`INTERVAL` seconds (a background thread also prints one
 while a single step runs long), and a last ``done`` line.  With ``delay`` the
 reporter stays silent unless the work outlasts it, so quick runs print nothing.
 ``twoball --quiet`` (:func:`set_quiet`) silences every reporter; warnings and
-errors are printed elsewhere and are not affected.  The background thread (and
-rich's) starts with the first report, not on entering: a process pool started
+errors are printed elsewhere and are not affected.  The background thread
+starts with the first report, not on entering: a process pool started
 in between forks without it (see :mod:`twoball.verify.sweeps.parallel`).  Nothing goes to standard
 output, so ``--json`` output stays clean.
 
-rich is imported only when a bar is drawn.
+Only the standard library is used.
 """
 
 from __future__ import annotations
@@ -95,6 +96,15 @@ class Reporter:
         Print nothing unless the work lasts longer than this [s].
     enabled : bool, optional
         Default: not :func:`is_quiet`.
+
+    Examples
+    --------
+    >>> import twoball
+    >>> with twoball.Reporter("demo", enabled=False) as progress:
+    ...     progress("first step")
+    ...     progress("second step")
+    >>> progress._count
+    2
     """
 
     def __init__(
@@ -126,8 +136,7 @@ class Reporter:
         self._lines = 0
         self._last = -float("inf")
         self._start = time.monotonic()
-        self._bar: Any = None
-        self._bar_tasks: dict[str, Any] = {}
+        self._bar: int | None = None  # status-line redraws on a terminal (None: none shown)
 
     # ------------------------------------------------------------------ context
     def __enter__(self) -> Reporter:
@@ -147,8 +156,7 @@ class Reporter:
             self._thread.join()
         with self._lock:
             if self._bar is not None:
-                self._bar.stop()
-                self._bar = None
+                self._erase()
             elif kind is None and self._lines:
                 counted = f" {self.total}/{self.total}" if self.total else ""
                 self._write(f"done{counted} ({self._elapsed():.0f} s)")
@@ -227,41 +235,38 @@ class Reporter:
             self._write(f"{self._message()} ({self._elapsed():.0f} s)")
 
     def _draw(self, label: str | None) -> None:
-        """Update the rich bar (started on first use)."""
+        """Redraw the one status line of a terminal (lock held): spinner, step, counts, time."""
         if self._bar is None:
-            from rich.console import Console
-            from rich.progress import (
-                BarColumn,
-                MofNCompleteColumn,
-                Progress,
-                SpinnerColumn,
-                TextColumn,
-                TimeElapsedColumn,
-            )
-
-            self._bar = Progress(
-                SpinnerColumn(),
-                TextColumn("{task.description}"),
-                BarColumn(),
-                MofNCompleteColumn(),
-                TimeElapsedColumn(),
-                console=Console(file=self._stream, markup=False, highlight=False),
-                transient=True,
-            )
-            self._bar.start()
-            self._bar_tasks[""] = self._bar.add_task(self.name, total=self.total)
-        main = self._bar_tasks[""]
-        self._bar.update(
-            main,
-            description=f"{self.name}: {self._text}" if self._text else self.name,
-            completed=self._completed,
-        )
+            self._bar = 0  # frames drawn; the line is erased on exit
+        self._bar += 1
+        spin = "|/-\\"[self._bar % 4]
+        parts = [f"{spin} {self.name}"]
+        if self._text:
+            parts.append(self._text)
+        if self.total:
+            parts.append(f"[{min(self._completed, self.total)}/{self.total}]")
         if self._task is not None:
             name, done, total = self._task
-            key = label or name
-            if key not in self._bar_tasks:
-                self._bar_tasks[key] = self._bar.add_task(key, total=total)
-            self._bar.update(self._bar_tasks[key], completed=done, total=total)
+            parts.append(f"{label or name} {done}/{total}")
+        parts.append(f"{self._elapsed():.0f} s")
+        line = "  ".join(parts)
+        width = _terminal_width(self._stream)
+        if len(line) > width - 1:
+            line = line[: max(width - 2, 10)] + "…"
+        try:
+            self._stream.write("\r\x1b[2K" + line)
+            self._stream.flush()
+        except (OSError, ValueError):
+            self.enabled = False
+
+    def _erase(self) -> None:
+        """Remove the status line of a terminal (lock held)."""
+        try:
+            self._stream.write("\r\x1b[2K")
+            self._stream.flush()
+        except (OSError, ValueError):
+            pass
+        self._bar = None
 
     def _beat(self) -> None:
         """Background: a line while one step runs long; the bar after a delay."""
@@ -270,8 +275,18 @@ class Reporter:
                 if not self.enabled or self._elapsed() < self.delay:
                     continue
                 if self._terminal:
-                    if self._bar is None:
-                        self._draw(None)
+                    self._draw(None)  # the time moves even while a step runs long
                 elif self._begun or self.delay > 0:
                     if time.monotonic() - self._last >= self.interval:
                         self._write(f"{self._message()} ({self._elapsed():.0f} s)")
+
+
+def _terminal_width(stream: Any) -> int:
+    """Columns of the terminal behind ``stream`` (80 if it cannot be told)."""
+    import os
+
+    try:
+        columns = os.get_terminal_size(stream.fileno()).columns
+    except (AttributeError, OSError, ValueError):
+        return 80
+    return columns if columns >= 20 else 80

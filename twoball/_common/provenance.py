@@ -218,6 +218,13 @@ class Report:
         System, release, machine, CPU count, Python implementation.
     packages : dict
         twoball, python and each distribution -> version (None: not installed).
+
+    Examples
+    --------
+    >>> import twoball
+    >>> report = twoball.report()
+    >>> report.packages["twoball"] == twoball.__version__
+    True
     """
 
     platform: dict[str, Any]
@@ -274,6 +281,12 @@ def report(additional: Sequence[str] = ()) -> Report:
     --------
     >>> import twoball
     >>> print(twoball.report())  # doctest: +SKIP
+
+    Examples
+    --------
+    >>> import twoball
+    >>> sorted(twoball.report().as_dict())[:2]
+    ['generated', 'packages']
     """
     return Report(
         dict(platform_info()),

@@ -130,6 +130,14 @@ def cli_message(error: ParameterError, args: Namespace | None = None) -> str:
     becomes the flag.
     """
     text = " ".join(str(error).split())  # one line
+    from twoball._common.budget import BudgetError
+
+    if isinstance(error, BudgetError):  # "modes 100000 t_end 2 needs ...": every name a flag
+        words = text.split(" ")
+        return " ".join(
+            flag_of(w.rstrip(")"), args) + w[len(w.rstrip(")")) :] if w.rstrip(")") in FLAGS else w
+            for w in words
+        )
     name = str(error.name)
     if text.startswith(name):
         return flag_of(name, args) + text[len(name) :]

@@ -19,9 +19,13 @@ def run(args: argparse.Namespace) -> int:
 
     with Reporter("reproduce") as bar:
         done = twoball.reproduce(
-            args.out, only=args.only, workers=args.workers, scheduler=args.scheduler,
-            progress=bar.task, command=command_line(args),
-        )  # fmt: skip
+            args.out,
+            only=args.only,
+            workers=args.workers,
+            scheduler=args.scheduler,
+            progress=bar.task,
+            command=command_line(args),
+        )
     out = console()
     out.print(f"wrote {done.directory / _choices.REPRODUCTION_REPORT} and {done.figures} figures")
     for s in done.sections:

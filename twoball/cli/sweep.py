@@ -87,10 +87,16 @@ def run(args: argparse.Namespace) -> int:
         total *= n
     with Reporter(f"sweep {' x '.join(grid.parameters)}", total=total, delay=QUICK) as bar:
         result = twoball.sweep(
-            values, base, stepping=stepping, body=body, sigma=args.sigma,
-            recontact=args.recontact, workers=args.workers, scheduler=args.scheduler,
+            values,
+            base,
+            stepping=stepping,
+            body=body,
+            sigma=args.sigma,
+            recontact=args.recontact,
+            workers=args.workers,
+            scheduler=args.scheduler,
             progress=bar.update,
-        )  # fmt: skip
+        )
     points = result.points
     print_notes(sweep_notes(points))
     print_warnings(sweep_warnings(points))

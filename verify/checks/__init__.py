@@ -6,3 +6,5 @@ finite-element spectra and energies are in :mod:`~twoball.verify.checks.fem`, th
 direct time stepping in :mod:`~twoball.verify.checks.alpha`, and what they return in
 :mod:`~twoball.verify.checks.results`.
 """
+
+__all__ = ["alpha", "config", "fem", "results", "run"]

@@ -13,13 +13,14 @@ from dataclasses import dataclass
 from typing import Any
 
 import numpy as np
+from twoball.modal.converged import ConvergedReference
 from twoball.modal.liftoff import Horizon, find_liftoff
 from twoball.modal.parameters import Case
 from twoball.verify.checks.config import AlphaTarget
 from twoball.verify.checks.results import Check, RunRow, bounded, liftoff_gap, run_row
 from twoball.verify.output.figures.pole import Trace
 from twoball.verify.studies.fem_runs import FEMRun
-from twoball.verify.studies.reference import ConvergedReference, LegendreRun
+from twoball.verify.studies.reference import LegendreRun
 from twoball.verify.studies.trajectory import TrajectoryNorm, hermite_resample
 
 
@@ -147,11 +148,23 @@ def alpha_checks(
     ]
     rows = [
         run_row(
-            case, "fem alpha", label, modal.dofs, result.t, result.velocity, seconds, reference,
-            limit, {"steps": info["steps"], "dt_s": target.dt * case.scalings.time,
-                    "liftoff_gap_to_modal": gap, "liftoff_gap_to_modal_hermite": hermite_gap},
+            case,
+            "fem alpha",
+            label,
+            modal.dofs,
+            result.t,
+            result.velocity,
+            seconds,
+            reference,
+            limit,
+            {
+                "steps": info["steps"],
+                "dt_s": target.dt * case.scalings.time,
+                "liftoff_gap_to_modal": gap,
+                "liftoff_gap_to_modal_hermite": hermite_gap,
+            },
         )
-    ]  # fmt: skip
+    ]
     traces = [Trace(f"FE alpha {label}", motion, result.t, result.velocity)]
     energy = alpha_energies(modal, target.dt, t_end)
     same = float(np.max(np.abs(energy.pole - motion.pole(motion.times).u)))

@@ -7,9 +7,9 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
+from twoball.modal.converged import REFERENCE_TOLERANCE
 from twoball.verify.studies.fem_runs import FEMSpec
 from twoball.verify.studies.orders import OrderBand
-from twoball.verify.studies.reference import REFERENCE_TOLERANCE
 
 
 @dataclass(frozen=True)
@@ -80,10 +80,10 @@ class VerifyConfig:
     energy_band: OrderBand | None = None
     reference_tolerance: float = REFERENCE_TOLERANCE
     krylov: tuple[FEMTarget, ...] = ()
-    """Meshes solved by the fast rational Krylov route (issue 7): lift-off only."""
+    """Meshes solved by the fast rational Krylov route: lift-off only."""
 
 
-# Tolerances: lift-off as set in issue 3 (axisym P2 400 el. 1e-6; sphere P2 level 3 1e-3,
+# Tolerances: lift-off (axisym P2 400 el. 1e-6; sphere P2 level 3 1e-3,
 # level 4 1e-4; sphere P1 level 4 2 %); eigenvalue and energy bounds about twice the errors
 # the convergence studies measure on these meshes (eigenvalues: orders 2 and 4 for P1 and
 # P2).  The energy of the projected F converges slowly on the icosphere (order ~1: the kink
@@ -98,7 +98,7 @@ THOROUGH_EXTRA: tuple[FEMTarget, ...] = (
     FEMTarget(FEMSpec("axisym", 2, 800), liftoff=1e-7, eigen=2e-9, energy=4e-8),
     FEMTarget(FEMSpec("sphere", 1, 5), liftoff=5e-3, eigen=8e-3, energy=1.5e-2),
     FEMTarget(FEMSpec("sphere", 2, 4), liftoff=1e-4, eigen=1e-4, energy=3e-2),
-    # P3 and P4 (issue 14), measured: axisym P3 200 el. 6.6e-12 | 6.3e-12 | 1.6e-9, P4 100 el.
+    # P3 and P4, measured: axisym P3 200 el. 6.6e-12 | 6.3e-12 | 1.6e-9, P4 100 el.
     # 1.3e-13 | 2.0e-13 | 1.4e-10 (round-off for lift-off and eigenvalues); sphere P3 L2
     # 8.4e-4 | 2.3e-4 | 5.5e-2, P4 L2 1.2e-5 | 4.5e-6 | 3.2e-2 (lift-off | eigen | energy)
     FEMTarget(FEMSpec("axisym", 3, 200), liftoff=2e-11, eigen=2e-11, energy=4e-9),

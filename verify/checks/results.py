@@ -13,11 +13,12 @@ from dataclasses import dataclass, field
 from typing import Any
 
 import numpy as np
+from twoball.modal.converged import ConvergedReference
 from twoball.modal.parameters import Case
 from twoball.verify.checks.config import VerifyConfig
 from twoball.verify.output.figures.eigen import EigenErrors
 from twoball.verify.output.figures.pole import Trace
-from twoball.verify.studies.reference import ConvergedReference, LegendreRun
+from twoball.verify.studies.reference import LegendreRun
 from twoball.verify.studies.result import si
 
 

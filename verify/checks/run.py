@@ -18,6 +18,7 @@ from __future__ import annotations
 import time
 
 import numpy as np
+from twoball.modal.converged import ConvergedReference, converged_legendre
 from twoball.modal.filters import FilterKind
 from twoball.modal.liftoff import Horizon
 from twoball.modal.parameters import Case
@@ -29,12 +30,7 @@ from twoball.verify.checks.results import Check, RunRow, VerifyResult, bounded, 
 from twoball.verify.output.figures.eigen import EigenErrors
 from twoball.verify.output.figures.pole import Trace
 from twoball.verify.studies.fem_runs import FEMRun, FEMSpec, fem_run
-from twoball.verify.studies.reference import (
-    ConvergedReference,
-    LegendreRun,
-    converged_legendre,
-    legendre_run,
-)
+from twoball.verify.studies.reference import LegendreRun, legendre_run
 from twoball.verify.studies.result import Progress, case_settings, si
 
 
@@ -75,17 +71,42 @@ def run_verify(
         case, sigma, recontact, t_end, configuration.reference_tolerance, case.modes
     )
     rows = [
-        run_row(case, "legendre", f"N = {case.modes}", case.modes + 1, reference.t,
-                reference.velocity, reference.seconds, reference, limit),
-        run_row(case, "legendre N->inf", f"N = {limit.modes}, unfiltered", limit.modes + 1,
-                limit.t, limit.velocity, limit.seconds, reference, limit),
-    ]  # fmt: skip
+        run_row(
+            case,
+            "legendre",
+            f"N = {case.modes}",
+            case.modes + 1,
+            reference.t,
+            reference.velocity,
+            reference.seconds,
+            reference,
+            limit,
+        ),
+        run_row(
+            case,
+            "legendre N->inf",
+            f"N = {limit.modes}, unfiltered",
+            limit.modes + 1,
+            limit.t,
+            limit.velocity,
+            limit.seconds,
+            reference,
+            limit,
+        ),
+    ]
     checks = [reference_check(limit, configuration.reference_tolerance)]
-    traces = [Trace(f"Legendre N = {case.modes}", reference.series, reference.t,
-                    reference.velocity)]  # fmt: skip
+    traces = [
+        Trace(f"Legendre N = {case.modes}", reference.series, reference.t, reference.velocity)
+    ]
     if limit.series is not None:
-        traces.append(Trace(f"Legendre N -> inf ({limit.modes}, unfiltered)", limit.series,
-                            limit.t, limit.velocity))  # fmt: skip
+        traces.append(
+            Trace(
+                f"Legendre N -> inf ({limit.modes}, unfiltered)",
+                limit.series,
+                limit.t,
+                limit.velocity,
+            )
+        )
     eigen: list[EigenErrors] = []
     fem_runs: dict[FEMSpec, FEMRun] = {}
     for target in configuration.fem:
@@ -176,9 +197,19 @@ def run_verify(
         "v_liftoff_m_s": si(limit.velocity, scale.velocity),
     }
     return VerifyResult(
-        case, configuration, settings, rows, checks, traces, eigen, energy_curves, bound,
-        limit, time.perf_counter() - clock, notes,
-    )  # fmt: skip
+        case,
+        configuration,
+        settings,
+        rows,
+        checks,
+        traces,
+        eigen,
+        energy_curves,
+        bound,
+        limit,
+        time.perf_counter() - clock,
+        notes,
+    )
 
 
 def reference_check(limit: ConvergedReference, tolerance: float) -> Check:
@@ -211,6 +242,14 @@ def _fem_row(
     """The run-table row of a finite-element run with ``modes`` modes computed."""
     details = {"modes_computed": modes, "h": run.spec.step}
     return run_row(
-        case, backend, run.spec.label, run.dofs, run.t, run.velocity, run.seconds, reference,
-        limit, details,
-    )  # fmt: skip
+        case,
+        backend,
+        run.spec.label,
+        run.dofs,
+        run.t,
+        run.velocity,
+        run.seconds,
+        reference,
+        limit,
+        details,
+    )

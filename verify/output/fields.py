@@ -40,6 +40,7 @@ from twoball.modal.series import ModalSeries
 from twoball.verify.output.render import BallScene
 from twoball.verify.output.series import TimeSeries
 
+from twoball._common.budget import BASE_MEMORY, Estimate, check
 from twoball._common.errors import ParameterError
 from twoball._common.progress import Step, silent
 
@@ -334,9 +335,17 @@ def solve_backends(
     solved: dict[str, Backend] = {}
     if "fem" in backends:
         unit_mesh, solved["fem"] = fem_backend(
-            case, spec.level, field.order, field.mesh, sigma, recontact, t_end, initial, route,
+            case,
+            spec.level,
+            field.order,
+            field.mesh,
+            sigma,
+            recontact,
+            t_end,
+            initial,
+            route,
             spec.geometry,
-        )  # fmt: skip
+        )
     else:
         unit_mesh = build_mesh(case, spec.level, field.order, field.mesh, spec.geometry)
     if "legendre" in backends:
@@ -394,9 +403,10 @@ def ball_model(
         raise ParameterError("route", "one of " + ", ".join(ROUTES), route)
     if field.spec.initial is not None and "fem" not in backends:
         raise ParameterError(
-            "initial", "left out without the fem backend (it sets the FE initial state)",
+            "initial",
+            "left out without the fem backend (it sets the FE initial state)",
             field.spec.initial,
-        )  # fmt: skip
+        )
     t_end = t_end_dimensionless(case, t_end_s)  # checked before any progress line
     say = progress or silent
     if body is not None:
@@ -635,7 +645,9 @@ def eigen_sizes(
     levels: Sequence[int] | None, orders: Sequence[int] | None, max_degree: int | None
 ) -> tuple[list[int], list[int]]:
     """Levels and orders of the eigenvalue plot, each mesh checked against the budget."""
-    from twoball._common.budget import check, fem_dofs, fem_estimate, options
+    from twoball.fem_membrane.cost import fem_dofs, fem_estimate
+
+    from twoball._common.budget import check, options
 
     levels = [1, 2, 3] if levels is None else levels
     orders = [1, 2] if orders is None else orders
@@ -665,8 +677,6 @@ def check_frame_budget(case: Case, count: int, name: str, field: FieldMesh) -> N
     user's mesh's own (its triangles at its order).
     """
 
-    from twoball._common.budget import check_frames as check_frame_budget_of
-
     if count > MAX_FRAMES:  # the same cap for frames, times and instants
         if name in ("instants", "frames"):  # a count
             low = 2 if name == "instants" else 1
@@ -674,7 +684,7 @@ def check_frame_budget(case: Case, count: int, name: str, field: FieldMesh) -> N
         raise ParameterError(name, f"at most {MAX_FRAMES} {name}", f"{count} {name}")
     spec = field.spec
     mesh = spec.kind if field.loaded is None else field.loaded.mesh
-    check_frame_budget_of(
+    check_frames_budget(
         f"{name} ({count} frames)", count, mesh, spec.level, field.order, case.modes
     )
 
@@ -808,7 +818,7 @@ class CoupledModel(BallModel):
         """Modal state of backend ``name`` at ``times_s`` [s] (dimensionless values).
 
         Computed once per backend and times (matrix exponentials are the cost of an
-        export: measured 21 of 24 s at level 2 before this was kept).
+        export: measured 21 of 24 s at level 2).
         """
         t = np.atleast_1d(np.asarray(times_s, dtype=float)) / self.case.scalings.time
         key = (name, t.tobytes())  # u, u_t, u_tt, the body and the caption share one solve
@@ -954,8 +964,56 @@ def contact_scene(model: CoupledModel, times_s: np.ndarray, backend: str) -> Any
     report = model.contact(backend)
     impacts = [e["t_s"] for e in report.events_si() if e["kind"] == "impact"]
     return ContactScene(
-        scene.points, scene.cells, scene.times, scene.u, scene.body, scene.radius,
-        scene.t_liftoff, f"{scene.label}, mu = {report.mass_ratio:g}",
-        contact=model.states(backend, scene.times).contact, impacts=np.array(impacts),
+        scene.points,
+        scene.cells,
+        scene.times,
+        scene.u,
+        scene.body,
+        scene.radius,
+        scene.t_liftoff,
+        f"{scene.label}, mu = {report.mass_ratio:g}",
+        contact=model.states(backend, scene.times).contact,
+        impacts=np.array(impacts),
         mass_ratio=report.mass_ratio,
-    )  # fmt: skip
+    )
+
+
+# --------------------------------------------------------------------------- cost
+DOUBLES_PER_FRAME_NODE = 12  # u, u_t, u_tt and u n of both backends
+
+
+def frames_estimate(
+    frames: int, nodes: int, modes: int, seconds_per_frame: float = 0.0
+) -> Estimate:
+    """Fields at ``frames`` instants on ``nodes`` nodes from ``modes`` modes (export, render, plot).
+
+    Memory ``12 doubles x nodes x frames`` (u, u_t, u_tt and u n of both backends);
+    time ``40 ns x frames x nodes x modes`` for the evaluation plus
+    ``seconds_per_frame`` for drawing or writing each frame.
+    """
+    from twoball.modal.cost import SECONDS_PER_TERM
+
+    memory = BASE_MEMORY + 8.0 * DOUBLES_PER_FRAME_NODE * nodes * frames + 8.0 * nodes * modes
+    seconds = frames * (SECONDS_PER_TERM * nodes * modes + seconds_per_frame)
+    return Estimate(memory, seconds)
+
+
+def check_frames_budget(
+    option: str,
+    frames: int,
+    mesh: str = "sphere",
+    level: int | None = None,
+    order: int = 2,
+    modes: int = 30,
+    seconds_per_frame: float = 0.0,
+) -> Estimate:
+    """Refuse ``frames`` field frames on the mesh (export, render, plot) that cannot fit.
+
+    The mode count is the FE one, ``(N + 1)^2`` on the sphere (the Legendre
+    backend has fewer); ``seconds_per_frame`` is the drawing or writing of a frame.
+    """
+    from twoball.fem_membrane.cost import fem_dofs
+
+    nodes = fem_dofs(mesh, level, None, order)
+    pairs = (modes + 1) ** 2
+    return check(option, frames_estimate(frames, nodes, pairs, seconds_per_frame))

@@ -22,7 +22,6 @@ from twoball.verify.checks.results import VerifyResult
 from twoball.verify.studies.quantities import QuantityResult
 from twoball.verify.studies.result import StudyResult
 
-from twoball._common.staging import MARKER as MARKER  # re-exported: the marker of report folders
 from twoball._common.strict_json import json_text
 
 Writer = Callable[[Path], None]
@@ -339,7 +338,7 @@ def verify_markdown(result: VerifyResult) -> str:
                     f"{s['t_end_s'] * 1e3:.4f}",
                 ]
             ],
-        ),  # fmt: skip
+        ),
         "## Runs\n",
         "Relative differences: `dt_l/t_l`, `dv_l/v_l` against the Legendre series with the "
         f"case's N = {s['modes']} (the reference of every finite-element run, which uses the "
@@ -374,7 +373,7 @@ def verify_markdown(result: VerifyResult) -> str:
                 ]
                 for r in result.rows
             ],
-        ),  # fmt: skip
+        ),
         "## Checks\n",
         md_table(
             ["check", "what is compared", "value", "tolerance", "result"],
@@ -388,7 +387,7 @@ def verify_markdown(result: VerifyResult) -> str:
                 ]
                 for c in result.checks
             ],
-        ),  # fmt: skip
+        ),
         "## Eigenvalue errors\n",
         "Largest relative error `|lambda_h - l(l+1)| / l(l+1)` over the 2l + 1 discrete "
         "eigenvalues of degree l (one on the axisymmetric line).\n",
@@ -396,7 +395,7 @@ def verify_markdown(result: VerifyResult) -> str:
             ["discretisation"]
             + [f"l = {d}" for d in (result.eigen[0].degrees if result.eigen else [])],
             [[e.label] + [fmt(x, 2) for x in e.errors] for e in result.eigen],
-        ),  # fmt: skip
+        ),
         "## Plots\n",
         "![Pole displacement, velocity and acceleration of every backend](pole.png)\n",
         "![Eigenvalue error against the degree l](eigenvalues.png)\n",
@@ -427,17 +426,32 @@ def verify_files(result: VerifyResult) -> dict[str, str | Writer]:
     case = result.case
     t_end = result.settings["t_end_s"] / case.scalings.time
     checks_rows = [
-        [c.name, fmt(c.value, 3), fmt(c.tolerance, 1),
-         fmt(None if c.band is None else c.band[0], 2, "f"),
-         fmt(None if c.band is None else c.band[1], 2, "f"), c.verdict, c.description]
+        [
+            c.name,
+            fmt(c.value, 3),
+            fmt(c.tolerance, 1),
+            fmt(None if c.band is None else c.band[0], 2, "f"),
+            fmt(None if c.band is None else c.band[1], 2, "f"),
+            c.verdict,
+            c.description,
+        ]
         for c in result.checks
-    ]  # fmt: skip
+    ]
     summary = [
-        [r.backend, r.mesh, r.dofs, fmt(_scaled(r.t_l_s, 1e3), 6, "f"), fmt(r.v_l_m_s, 6, "f"),
-         fmt(r.ratio, 5, "f"), fmt(r.t_diff, 2), fmt(r.v_diff, 2), fmt(r.t_diff_converged, 2),
-         fmt(r.v_diff_converged, 2)]
+        [
+            r.backend,
+            r.mesh,
+            r.dofs,
+            fmt(_scaled(r.t_l_s, 1e3), 6, "f"),
+            fmt(r.v_l_m_s, 6, "f"),
+            fmt(r.ratio, 5, "f"),
+            fmt(r.t_diff, 2),
+            fmt(r.v_diff, 2),
+            fmt(r.t_diff_converged, 2),
+            fmt(r.v_diff_converged, 2),
+        ]
         for r in result.rows
-    ]  # fmt: skip
+    ]
     degrees = result.eigen[0].degrees.tolist() if result.eigen else []
     eigen_rows = [[e.label] + [fmt(x, 2) for x in e.errors] for e in result.eigen]
     keep = [k for k, name in enumerate(RUN_COLUMNS) if name != "seconds"]

@@ -523,10 +523,13 @@ def read_xdmf(path: Path) -> TimeSeries:
         cells = values(mesh.find("Topology/DataItem") if mesh is not None else None)
         times = [float(g.find("Time").get("Value", "nan")) for g in steps]  # type: ignore[union-attr]
         frames = [
-            {a.get("Name", ""): values(a.find("DataItem")) for a in g.iter("Attribute")
-             if a.get("Center") == "Node"}
+            {
+                a.get("Name", ""): values(a.find("DataItem"))
+                for a in g.iter("Attribute")
+                if a.get("Center") == "Node"
+            }
             for g in steps
-        ]  # fmt: skip
+        ]
     finally:
         for handle in files.values():
             handle.close()

@@ -1,1 +1,3 @@
 """twoball.verify.reproduce -- the paper reproduction."""
+
+__all__ = ["common", "contact", "driver", "icm", "cem"]

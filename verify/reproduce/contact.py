@@ -1,4 +1,4 @@
-"""Beyond the paper: v1/|v0| of an upper body of finite mass on the basketball (issue 13).
+"""Beyond the paper: v1/|v0| of an upper body of finite mass on the basketball.
 
 The finite-mass contact solver (:mod:`twoball.modal.contact`, docs/contact.rst)
 over mu = 1e-4 .. 0.2 at the default contact radius R/10, beside the massless

@@ -10,7 +10,8 @@ from typing import TYPE_CHECKING
 
 import numpy as np
 from twoball.modal import icm
-from twoball.modal.parameters import STANDARD_GRAVITY, preset, wave_speed_from_pressure
+from twoball.modal.parameters import preset
+from twoball.modal.scalings import STANDARD_GRAVITY, wave_speed_from_pressure
 from twoball.verify.output.figures.style import label, styled
 from twoball.verify.reproduce.common import (
     Comparison,

@@ -11,3 +11,16 @@
   :mod:`~twoball.verify.studies.refinement` (h, and P1 against P2) and
   :mod:`~twoball.verify.studies.time_step` (dt).
 """
+
+__all__ = [
+    "fem_runs",
+    "gci",
+    "modes",
+    "orders",
+    "quantities",
+    "reference",
+    "refinement",
+    "result",
+    "time_step",
+    "trajectory",
+]

@@ -242,20 +242,47 @@ def gci(
     approximate = abs(eps21 / f1) if f1 != 0.0 else (0.0 if eps21 == 0.0 else math.inf)
     if kind == "exact":
         return GCIResult(
-            (f1, f2, f3), (h1, h2, h3), math.inf, True, kind, f1, 0.0, 0.0, 0.0, 0.0,
+            (f1, f2, f3),
+            (h1, h2, h3),
+            math.inf,
+            True,
+            kind,
+            f1,
+            0.0,
+            0.0,
+            0.0,
+            0.0,
             safety_factor,
-        )  # fmt: skip
+        )
     if kind == "divergent" or not (order > 0):
         return GCIResult(
-            (f1, f2, f3), (h1, h2, h3), order, converged, "divergent", f1, approximate,
-            math.nan, math.inf, math.inf, safety_factor,
-        )  # fmt: skip
+            (f1, f2, f3),
+            (h1, h2, h3),
+            order,
+            converged,
+            "divergent",
+            f1,
+            approximate,
+            math.nan,
+            math.inf,
+            math.inf,
+            safety_factor,
+        )
     extrapolated = richardson(f1, f2, r21, order)
     factor21 = r21**order
     gci_abs = 0.0 if math.isinf(factor21) else safety_factor * abs(eps21) / (factor21 - 1.0)
     gci_rel = gci_abs / abs(f1) if f1 != 0.0 else math.inf
     ext_error = abs((extrapolated - f1) / extrapolated) if extrapolated != 0.0 else math.nan
     return GCIResult(
-        (f1, f2, f3), (h1, h2, h3), order, converged, kind, extrapolated, approximate,
-        ext_error, gci_rel, gci_abs, safety_factor,
-    )  # fmt: skip
+        (f1, f2, f3),
+        (h1, h2, h3),
+        order,
+        converged,
+        kind,
+        extrapolated,
+        approximate,
+        ext_error,
+        gci_rel,
+        gci_abs,
+        safety_factor,
+    )

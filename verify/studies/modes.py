@@ -9,6 +9,12 @@ import time
 from collections.abc import Sequence
 from typing import Any
 
+from twoball.modal.converged import (
+    PAPER_MODES,
+    ConvergedReference,
+    converged_legendre,
+    unfiltered_series,
+)
 from twoball.modal.filters import FilterKind
 from twoball.modal.liftoff import Horizon
 from twoball.modal.parameters import Case
@@ -16,15 +22,7 @@ from twoball.modal.report import t_end_dimensionless
 from twoball.verify.studies.gci import finite_or_none
 from twoball.verify.studies.orders import OrderBand
 from twoball.verify.studies.quantities import evaluate_quantity, liftoff_specs
-from twoball.verify.studies.reference import (
-    PAPER_MODES,
-    ConvergedReference,
-    LegendreRun,
-    converged_legendre,
-    legendre_row,
-    legendre_run,
-    unfiltered_series,
-)
+from twoball.verify.studies.reference import LegendreRun, legendre_row, legendre_run
 from twoball.verify.studies.result import Progress, StudyResult, case_settings, quiet, si
 from twoball.verify.studies.trajectory import TrajectoryNorm
 

@@ -1,7 +1,7 @@
 """Closed-form references of the studies: one Legendre run, and its converged limit N -> infinity.
 
-The converged limit is model knowledge and lives in :mod:`twoball.modal.converged`
-(re-exported here).  Dimensionless (length R, time 1/c); :func:`legendre_row`
+The converged limit is model knowledge and lives in :mod:`twoball.modal.converged`.
+Dimensionless (length R, time 1/c); :func:`legendre_row`
 gives a run in SI.
 """
 
@@ -12,14 +12,6 @@ from dataclasses import dataclass
 from typing import Any
 
 import numpy as np
-from twoball.modal.converged import (
-    PAPER_MODES,
-    REFERENCE_MAX_MODES,
-    REFERENCE_TOLERANCE,
-    ConvergedReference,
-    converged_legendre,
-    unfiltered_series,
-)
 from twoball.modal.filters import FilterKind, SpectralFilter
 from twoball.modal.legendre import legendre_series
 from twoball.modal.liftoff import Horizon, find_liftoff
@@ -28,15 +20,9 @@ from twoball.modal.series import ModalSeries
 from twoball.verify.studies.result import si
 
 __all__ = [
-    "PAPER_MODES",
-    "REFERENCE_MAX_MODES",
-    "REFERENCE_TOLERANCE",
-    "ConvergedReference",
     "LegendreRun",
-    "converged_legendre",
     "legendre_row",
     "legendre_run",
-    "unfiltered_series",
 ]
 
 

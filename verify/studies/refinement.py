@@ -140,16 +140,20 @@ def fem_quantities(
         if want(f"lambda_{deg}"):
             exact = deg * (deg + 1.0)
             spec = QuantitySpec(
-                f"lambda_{deg}{suffix}", f"lambda_{deg}{suffix} (exact {exact:g})", 1.0,
+                f"lambda_{deg}{suffix}",
+                f"lambda_{deg}{suffix} (exact {exact:g})",
+                1.0,
                 eigen_band(mesh, order, geometry, deg),
-            )  # fmt: skip
+            )
             out.append(evaluate_quantity(spec, labels, dofs, steps, means[:, j], exact, "exact"))
     if want("strain_energy"):
         energy = [projection_energy(r.model) for r in runs]
         spec = QuantitySpec(
-            f"strain_energy{suffix}", f"1/2 u0^T K u0{suffix} [T R^2] vs -W (3.5)", 1.0,
+            f"strain_energy{suffix}",
+            f"1/2 u0^T K u0{suffix} [T R^2] vs -W (3.5)",
+            1.0,
             ENERGY_BAND[(mesh, order)],
-        )  # fmt: skip
+        )
         exact = -deformation_work(case.phi_a)
         out.append(evaluate_quantity(spec, labels, dofs, steps, energy, exact, "exact"))
     band = LIFTOFF_BAND.get((mesh, order))
@@ -168,16 +172,21 @@ def fem_quantities(
     if want("pole_l2"):
         norm = TrajectoryNorm(reference.series, t_end)
         values = [norm.relative_error(r.series) for r in runs]
-        out.append(evaluate_quantity(_suffixed(specs["pole_l2"], suffix), labels, dofs, steps,
-                                     values, 0.0))  # fmt: skip
+        out.append(
+            evaluate_quantity(_suffixed(specs["pole_l2"], suffix), labels, dofs, steps, values, 0.0)
+        )
     if want("energy_end"):
         values = [r.energy_end for r in runs]
         out.append(
             evaluate_quantity(
-                _suffixed(specs["energy_end"], suffix), labels, dofs, steps, values,
+                _suffixed(specs["energy_end"], suffix),
+                labels,
+                dofs,
+                steps,
+                values,
                 reference.energy_end,
             )
-        )  # fmt: skip
+        )
     return out
 
 

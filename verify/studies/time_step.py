@@ -81,9 +81,13 @@ def run_dt_study(
             / max(np.max(np.abs(exact.u_tt[motion.times > 0.5])), 1e-300),
         )
         for key, value in (
-            ("t", result.t), ("v", result.velocity), ("t_q", quintic.t),
-            ("v_q", quintic.velocity), ("l2", norm.relative_error(motion)), ("knots", knots),
-        ):  # fmt: skip
+            ("t", result.t),
+            ("v", result.velocity),
+            ("t_q", quintic.t),
+            ("v_q", quintic.velocity),
+            ("l2", norm.relative_error(motion)),
+            ("knots", knots),
+        ):
             values[key].append(math.nan if value is None else float(value))
         steps_count.append(int(info["steps"]))
         rows.append(
@@ -116,9 +120,12 @@ def run_dt_study(
         evaluate_quantity(specs["pole_l2"], labels, steps_count, dts, values["l2"], 0.0)
     )
     knot_spec = QuantitySpec(
-        "pole_samples", "max |pole state - modal| at the steps (u, u_tt; relative)", 1.0,
-        DT_BAND, True,
-    )  # fmt: skip
+        "pole_samples",
+        "max |pole state - modal| at the steps (u, u_tt; relative)",
+        1.0,
+        DT_BAND,
+        True,
+    )
     study.quantities.append(
         evaluate_quantity(knot_spec, labels, steps_count, dts, values["knots"], 0.0)
     )

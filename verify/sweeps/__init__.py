@@ -1,1 +1,3 @@
 """twoball.verify.sweeps -- parameter sweeps on a pool or Dask."""
+
+__all__ = ["cost", "parallel", "sweeps"]

@@ -49,7 +49,8 @@ def parse_range(text: str, name: str = "values") -> np.ndarray:
     ``START:STOP:COUNT`` gives ``COUNT`` evenly spaced values from START to STOP
     inclusive; ``v1,v2,...`` the values as written.
     """
-    from twoball._common.budget import check_count
+    from twoball.verify.sweeps.cost import check_count
+
     from twoball._common.ranges import parse_values
 
     if isinstance(text, str) and text.count(":") == 2:  # the budget before building the list

@@ -15,11 +15,12 @@ from twoball.verify.output.fields import (
     field_mesh,
     field_series,
     frame_times,
+    frames_estimate,
 )
 from twoball.verify.output.series import write_series
 
 import twoball
-from twoball._common.budget import BudgetError, frames_estimate, limits
+from twoball._common.budget import BudgetError, limits
 
 BASKETBALL = twoball.Case.preset("basketball")
 

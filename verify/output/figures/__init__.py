@@ -133,3 +133,18 @@ def save_figure(
     with staged_file(out, flag) as scratch, matplotlib.rc_context(STYLE):
         figure.savefig(scratch, dpi=resolution, format=kind, metadata=metadata)
     return out
+
+
+__all__ = [
+    "DPI",
+    "DPI_RANGE",
+    "LABELS",
+    "PLOT_KINDS",
+    "REPORT_DPI",
+    "UNSUPPORTED_FORMATS",
+    "check_dpi",
+    "figure_format",
+    "figure_formats",
+    "new_figure",
+    "save_figure",
+]

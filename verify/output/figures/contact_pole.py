@@ -16,7 +16,7 @@ from typing import TYPE_CHECKING, Any
 import numpy as np
 from twoball.verify.output.fields import CoupledModel
 from twoball.verify.output.figures import LABELS, new_figure
-from twoball.verify.output.figures.pole import _clip_acceleration, _draw_differences
+from twoball.verify.output.figures.pole import clip_acceleration, draw_differences
 from twoball.verify.output.figures.style import (
     LIFTOFF_MARKER,
     REFERENCE_COLOUR,
@@ -76,9 +76,7 @@ def contact_pole_figure(model: CoupledModel, samples: int = 2500) -> Figure:
     for k, (name, motion) in enumerate(motions.items()):
         _draw_backend(axes, ms, name, motion, model.contact(name), f"C{k}", k)
     axes[2].axhline(-case.g, color=REFERENCE_COLOUR, linewidth=0.8, linestyle=":", label="$-g$")
-    _clip_acceleration(
-        axes[2], np.concatenate([m["cap_tt_m_s2"] for m in motions.values()]), case.g
-    )
+    clip_acceleration(axes[2], np.concatenate([m["cap_tt_m_s2"] for m in motions.values()]), case.g)
     for axis, (symbol, unit, _) in zip(axes, QUANTITIES, strict=True):
         axis.set_ylabel(label(symbol, unit))
     _event_legend(axes[1])
@@ -89,7 +87,7 @@ def contact_pole_figure(model: CoupledModel, samples: int = 2500) -> Figure:
         fem, ref = motions["fem"], motions["legendre"]
         cap = [fem[k] - ref[k] for k in ("cap_m", "cap_t_m_s", "cap_tt_m_s2")]
         body = [fem[k] - ref[k] for k in ("s_m", "s_t_m_s", "s_tt_m_s2")]
-        _draw_differences(
+        draw_differences(
             grid[1::2],
             ms,
             [
@@ -116,14 +114,22 @@ def _draw_backend(
     keys = (("cap_m", "s_m"), ("cap_t_m_s", "s_t_m_s"), ("cap_tt_m_s2", None))
     for axis, (cap, body), (_, _, factor) in zip(axes, keys, QUANTITIES, strict=True):
         axis.plot(
-            ms, motion[cap] * factor, _CAP_STYLE.get(name, "-"), color=colour,
+            ms,
+            motion[cap] * factor,
+            _CAP_STYLE.get(name, "-"),
+            color=colour,
             label=f"cap average, {short}",
-        )  # fmt: skip
+        )
         if body is not None:
             axis.plot(
-                ms, motion[body] * factor, _BODY_STYLE.get(name, ":"), color=colour,
-                linewidth=1.5, label=f"body, {short}", gid=f"{BODY_GID}-{name}",
-            )  # fmt: skip
+                ms,
+                motion[body] * factor,
+                _BODY_STYLE.get(name, ":"),
+                color=colour,
+                linewidth=1.5,
+                label=f"body, {short}",
+                gid=f"{BODY_GID}-{name}",
+            )
     events = report.events_si()
     for kind, marker in EVENT_MARKERS.items():
         chosen = [e for e in events if e["kind"] == kind]
@@ -131,17 +137,29 @@ def _draw_backend(
         for axis, key, factor in ((axes[0], "height_m", 1e3), (axes[1], "velocity_m_s", 1.0)):
             values = np.array([e[key] * factor for e in chosen])
             axis.plot(
-                t, values, marker, linestyle="none", color=colour, markersize=6,
-                markeredgecolor="black", markeredgewidth=0.5, gid=f"{EVENT_GID}-{kind}-{name}",
-            )  # fmt: skip
+                t,
+                values,
+                marker,
+                linestyle="none",
+                color=colour,
+                markersize=6,
+                markeredgecolor="black",
+                markeredgewidth=0.5,
+                gid=f"{EVENT_GID}-{kind}-{name}",
+            )
     if report.lifted:
         t_l = report.t_liftoff_s * 1e3
         final = report.history.displacement * report.case.scalings.length
         for axis, value in ((axes[0], final * 1e3), (axes[1], report.v_liftoff_m_s)):
             axis.plot(
-                t_l, value, LIFTOFF_MARKER, markersize=10, markerfacecolor="none",
-                markeredgecolor=colour, markeredgewidth=1.2,
-            )  # fmt: skip
+                t_l,
+                value,
+                LIFTOFF_MARKER,
+                markersize=10,
+                markerfacecolor="none",
+                markeredgecolor=colour,
+                markeredgewidth=1.2,
+            )
         for axis in axes:
             axis.axvline(t_l, color=colour, linewidth=0.7, linestyle="--")
         axes[0].annotate(
@@ -159,6 +177,14 @@ def _event_legend(axis: Any) -> None:
     for kind, marker in EVENT_MARKERS.items():
         axis.plot([], [], marker, ls="none", color="0.5", markeredgecolor="black", label=kind)
     axis.plot(
-        [], [], LIFTOFF_MARKER, markerfacecolor="none", markeredgecolor="0.3", markersize=8,
-        linestyle="--", color="0.4", linewidth=0.7, label="lift-off (final separation)",
-    )  # fmt: skip
+        [],
+        [],
+        LIFTOFF_MARKER,
+        markerfacecolor="none",
+        markeredgecolor="0.3",
+        markersize=8,
+        linestyle="--",
+        color="0.4",
+        linewidth=0.7,
+        label="lift-off (final separation)",
+    )

@@ -62,7 +62,7 @@ def _liftoff_legend(axis: Any) -> None:
     axis.plot([], [], LIFTOFF_MARKER, linestyle="--", color="0.4", linewidth=0.7, label="lift-off")
 
 
-def _clip_acceleration(axis: Any, values: np.ndarray, g: float) -> None:
+def clip_acceleration(axis: Any, values: np.ndarray, g: float) -> None:
     """Zoom past the first samples of a filtered series, keeping -g in view."""
     finite = np.abs(values[np.isfinite(values)])
     spread = float(np.percentile(finite, 99.0)) if finite.size else 0.0
@@ -70,7 +70,7 @@ def _clip_acceleration(axis: Any, values: np.ndarray, g: float) -> None:
         axis.set_ylim(-1.3 * max(spread, g), 1.3 * max(spread, g))
 
 
-def _draw_differences(
+def draw_differences(
     axes: Sequence[Any], t_ms: np.ndarray, diffs: list[tuple[str, Any, list[np.ndarray]]]
 ) -> None:
     """Fill the difference rows: ``diffs`` = (label, colour/style, [du, du_t, du_tt] SI)."""
@@ -149,7 +149,7 @@ def pole_figure(model: BallModel, samples: int = 2500) -> Figure:
                 color=lines[0].get_color(),
             )
     axes[2].axhline(-case.g, color=REFERENCE_COLOUR, linewidth=0.8, linestyle=":", label="$-g$")
-    _clip_acceleration(axes[2], np.concatenate([s.u_tt * si[2] for s in states.values()]), case.g)
+    clip_acceleration(axes[2], np.concatenate([s.u_tt * si[2] for s in states.values()]), case.g)
     for axis, (symbol, unit, _) in zip(axes, QUANTITIES, strict=True):
         axis.set_ylabel(label(symbol, unit))
     _liftoff_legend(axes[2])
@@ -161,7 +161,7 @@ def pole_figure(model: BallModel, samples: int = 2500) -> Figure:
             (np.asarray(a) - np.asarray(b)) * unit for a, b, unit in zip(fem, ref, si, strict=True)
         ]
         style = {"color": "0.15", "linestyle": "-", "linewidth": 0.9}
-        _draw_differences(grid[1::2], ms, [("finite elements − closed form", style, diff)])
+        draw_differences(grid[1::2], ms, [("finite elements − closed form", style, diff)])
         grid[1].legend(loc="upper right")
     grid[-1].set_xlabel(time_label("after maximal compression"))
     figure.suptitle(
@@ -242,22 +242,24 @@ def pole_motion_figure(
                     (
                         _pretty(trace.label),
                         {**style, "linewidth": 0.9},
-                        [(np.asarray(a) - np.asarray(b)) * unit
-                         for a, b, unit in zip(state, ref_state, si, strict=True)],
+                        [
+                            (np.asarray(a) - np.asarray(b)) * unit
+                            for a, b, unit in zip(state, ref_state, si, strict=True)
+                        ],
                     )
-                )  # fmt: skip
+                )
         for axis, (symbol, unit, _) in zip(axes, QUANTITIES, strict=True):
             axis.set_ylabel(label(symbol, unit))
         axes[2].axhline(-case.g, color=REFERENCE_COLOUR, linewidth=0.8, linestyle=":", label="$-g$")
         if ref_state is not None:
-            _clip_acceleration(axes[2], ref_state.u_tt * si[2], case.g)
+            clip_acceleration(axes[2], ref_state.u_tt * si[2], case.g)
         if reference is not None and reference.t_l is not None:
             for axis in axes:
                 axis.axvline(
                     reference.t_l * scale.time * 1e3, color="0.5", linewidth=0.7, linestyle="--"
                 )
         if compare:
-            _draw_differences(rows[1::2], ms, diffs)
+            draw_differences(rows[1::2], ms, diffs)
         _liftoff_legend(axes[2])
         axes[0].legend(loc="best", fontsize=7)
         axes[2].legend(loc="lower right", fontsize=7)

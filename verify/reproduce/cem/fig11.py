@@ -11,8 +11,8 @@ from typing import TYPE_CHECKING, Any
 
 import numpy as np
 from scipy.optimize import brentq
-from twoball.modal.parameters import STANDARD_GRAVITY as G
 from twoball.modal.parameters import preset
+from twoball.modal.scalings import STANDARD_GRAVITY as G
 from twoball.verify.output.figures.style import REFERENCE_COLOUR, label, styled
 from twoball.verify.reproduce.cem.tasks import (
     CRITERIA,
@@ -296,8 +296,10 @@ def fig11a_figure(table: dict) -> Figure:
             ax = axes[row, column]
             for k, n in enumerate(N_LIST):
                 ms = [table.get((n, float(d))) for d in ds]
-                values = [np.nan if m is None or getattr(m, field) is None else getattr(m, field)
-                          for m in ms]  # fmt: skip
+                values = [
+                    np.nan if m is None or getattr(m, field) is None else getattr(m, field)
+                    for m in ms
+                ]
                 ax.plot(ds, values, color=f"C{k}", linestyle="-", marker=".", label=f"$N$ = {n}")
             ax.axhline(-G, color=REFERENCE_COLOUR, lw=1.0, ls="--", label=f"$-g$ = {-G:g} m/s$^2$")
             ax.set_ylabel(label(r"min $u_{tt}(t, 0)$ " + what, "m/s$^2$"), fontsize=8)

@@ -11,8 +11,8 @@ from typing import TYPE_CHECKING
 
 import numpy as np
 from scipy.optimize import minimize_scalar
-from twoball.modal.parameters import STANDARD_GRAVITY as G
 from twoball.modal.parameters import Case, preset
+from twoball.modal.scalings import STANDARD_GRAVITY as G
 from twoball.verify.output.figures.style import label, styled
 from twoball.verify.reproduce.cem.tasks import call, run_tasks
 from twoball.verify.reproduce.common import (

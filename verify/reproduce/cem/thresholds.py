@@ -15,8 +15,8 @@ from twoball.modal.legendre import (
     legendre_coefficients_recurrence,
     quadrature_points,
 )
-from twoball.modal.parameters import STANDARD_GRAVITY as G
 from twoball.modal.parameters import Case
+from twoball.modal.scalings import STANDARD_GRAVITY as G
 from twoball.verify.reproduce.cem.fig12 import fig12_base
 from twoball.verify.reproduce.cem.tasks import (
     ThresholdTask,

@@ -1,8 +1,8 @@
-"""The converged Legendre reference (verify/studies/reference.py)."""
+"""The converged limit N -> infinity of the Legendre series (modal/converged.py)."""
 
 import pytest
+from twoball.modal.converged import converged_legendre
 from twoball.modal.parameters import preset
-from twoball.verify.studies.reference import converged_legendre
 
 
 def test_converged_reference_settles_to_1e7():

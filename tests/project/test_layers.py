@@ -1,0 +1,201 @@
+"""Imports run one way, top to bottom, with no circle between modules.
+
+The layers, from the top: the command line (``twoball/cli``), the face (the
+public verbs and objects in ``twoball/``), ``verify``, ``fem_membrane``,
+``modal``, and the ground floor of stdlib-only helpers (``twoball/_common``).
+Every import of every module is read from its source, those inside functions
+and under ``TYPE_CHECKING`` included; a module may import its own layer or any
+layer below, and the command line only the face and the ground floor.
+"""
+
+from __future__ import annotations
+
+import ast
+import sys
+from pathlib import Path
+
+import pytest
+
+ROOT = Path(__file__).resolve().parents[2]
+#: Source folder -> dotted name of the package it installs as (pyproject.toml).
+PARTS = {
+    "twoball": "twoball",
+    "modal": "twoball.modal",
+    "fem_membrane": "twoball.fem_membrane",
+    "verify": "twoball.verify",
+}
+#: Layers from the bottom; a module may import from its own layer and those below.
+RANKS = {"ground": 0, "modal": 1, "fem_membrane": 2, "verify": 3, "face": 4, "cli": 5}
+#: Arrows allowed against the rule, with the reason (at most two).
+EXCEPTIONS: dict[tuple[str, str], str] = {}
+
+
+def modules(root: Path = ROOT) -> dict[str, Path]:
+    """Dotted module name -> source file, for every module of the package."""
+    found = {}
+    for folder, dotted in PARTS.items():
+        for path in sorted((root / folder).rglob("*.py")):
+            parts = [dotted, *path.relative_to(root / folder).with_suffix("").parts]
+            if parts[-1] == "__init__":
+                parts.pop()
+            found[".".join(parts)] = path
+    return found
+
+
+def layer(module: str) -> str:
+    """The layer of a dotted module name of the package."""
+    parts = module.split(".")
+    if module == "twoball.__main__" or parts[1:2] == ["cli"]:
+        return "cli"
+    if parts[1:2] == ["_common"] or module == "twoball._version":
+        return "ground"
+    if len(parts) > 1 and parts[1] in ("modal", "fem_membrane", "verify"):
+        return parts[1]
+    return "face"
+
+
+def imports(module: str, path: Path, known: dict[str, Path]) -> set[str]:
+    """The package's modules that ``module`` imports, anywhere in its source."""
+    package = module if path.name == "__init__.py" else module.rpartition(".")[0]
+    found: set[str] = set()
+    for node in ast.walk(ast.parse(path.read_text(encoding="utf-8"))):
+        names: list[str] = []
+        if isinstance(node, ast.Import):
+            names = [alias.name for alias in node.names]
+        elif isinstance(node, ast.ImportFrom):
+            base = node.module or ""
+            if node.level:
+                anchor = package.split(".")[: len(package.split(".")) - node.level + 1]
+                base = ".".join([*anchor, base] if base else anchor)
+            names = [f"{base}.{alias.name}" for alias in node.names] + [base]
+        for name in names:
+            while name and name not in known:  # the module itself, not an attribute of it
+                name = name.rpartition(".")[0]
+            if name.startswith("twoball") and name != module:
+                found.add(name)
+    # importing a submodule runs its parents' __init__: only the target counts here
+    return found
+
+
+def graph(root: Path = ROOT) -> dict[str, set[str]]:
+    """Every module of the package and the package modules it imports."""
+    known = modules(root)
+    return {name: imports(name, path, known) for name, path in known.items()}
+
+
+def upward(edges: dict[str, set[str]]) -> list[tuple[str, str]]:
+    """Arrows that point to a higher layer, or from the command line below the face."""
+    bad = []
+    for source, targets in edges.items():
+        for target in targets:
+            low, high = layer(source), layer(target)
+            wrong = RANKS[high] > RANKS[low] or (
+                low == "cli" and high not in ("cli", "face", "ground")
+            )
+            if wrong and (source, target) not in EXCEPTIONS:
+                bad.append((source, target))
+    return sorted(bad)
+
+
+def circles(edges: dict[str, set[str]]) -> list[list[str]]:
+    """Strongly connected groups of more than one module (Tarjan)."""
+    index: dict[str, int] = {}
+    low: dict[str, int] = {}
+    stack: list[str] = []
+    found: list[list[str]] = []
+    counter = [0]
+
+    def visit(node: str) -> None:
+        index[node] = low[node] = counter[0]
+        counter[0] += 1
+        stack.append(node)
+        for target in edges.get(node, ()):
+            if target not in index:
+                visit(target)
+                low[node] = min(low[node], low[target])
+            elif target in stack:
+                low[node] = min(low[node], index[target])
+        if low[node] == index[node]:
+            group = []
+            while True:
+                member = stack.pop()
+                group.append(member)
+                if member == node:
+                    break
+            if len(group) > 1:
+                found.append(sorted(group))
+
+    limit = sys.getrecursionlimit()
+    sys.setrecursionlimit(max(limit, 10000))
+    try:
+        for node in edges:
+            if node not in index:
+                visit(node)
+    finally:
+        sys.setrecursionlimit(limit)
+    return found
+
+
+def test_every_module_is_in_one_layer():
+    edges = graph()
+    assert len(edges) > 100  # the whole package was read
+    assert {layer(m) for m in edges} == set(RANKS)
+
+
+def test_no_import_points_up():
+    assert upward(graph()) == []
+
+
+def test_no_circle_between_modules():
+    assert circles(graph()) == []
+
+
+def test_at_most_two_exceptions_each_with_a_reason():
+    assert len(EXCEPTIONS) <= 2
+    assert all(reason.strip() for reason in EXCEPTIONS.values())
+
+
+@pytest.mark.parametrize(
+    ("folder", "line", "arrow"),
+    [
+        ("modal", "from twoball.verify.output.fields import ball_model", "verify"),
+        ("twoball/_common", "    import twoball.modal.parameters", "modal"),
+        ("twoball/cli", "from twoball.fem_membrane.options import MeshOptions", "fem_membrane"),
+    ],
+)
+def test_a_planted_upward_import_is_found(tmp_path, folder, line, arrow):
+    """Copy the sources, plant one upward import (also inside a function), see it caught."""
+    import shutil
+
+    for part in PARTS:
+        shutil.copytree(ROOT / part, tmp_path / part, ignore=shutil.ignore_patterns("__pycache__"))
+    target = tmp_path / folder / "planted_module.py"
+    body = line if not line.startswith(" ") else "def planted():\n" + line + "\n"
+    target.write_text(f'"""Planted."""\n\n{body}\n', encoding="utf-8")
+    bad = upward(graph(tmp_path))
+    assert len(bad) == 1 and layer(bad[0][1]) == arrow
+    assert upward(graph(ROOT)) == []
+
+
+def test_a_planted_circle_is_found(tmp_path):
+    import shutil
+
+    for part in PARTS:
+        shutil.copytree(ROOT / part, tmp_path / part, ignore=shutil.ignore_patterns("__pycache__"))
+    (tmp_path / "modal" / "planted_a.py").write_text("from twoball.modal import planted_b\n")
+    (tmp_path / "modal" / "planted_b.py").write_text("from twoball.modal import planted_a\n")
+    assert circles(graph(tmp_path)) == [["twoball.modal.planted_a", "twoball.modal.planted_b"]]
+
+
+def test_the_ground_floor_imports_the_standard_library_only():
+    """``twoball/_common`` needs nothing installed: no numpy, scipy, rich or other package."""
+    allowed = set(sys.stdlib_module_names) | {"twoball"}
+    for path in sorted((ROOT / "twoball" / "_common").glob("*.py")):
+        for node in ast.walk(ast.parse(path.read_text(encoding="utf-8"))):
+            if isinstance(node, ast.Import):
+                tops = [alias.name.split(".")[0] for alias in node.names]
+            elif isinstance(node, ast.ImportFrom) and not node.level:
+                tops = [(node.module or "").split(".")[0]]
+            else:
+                continue
+            assert set(tops) <= allowed, f"{path.name} imports {tops}"
