@@ -1,4 +1,8 @@
-"""Calibration of the resource estimates of :mod:`twoball._common.budget` against measurement.
+"""Calibration of the closed form's and the finite elements' cost models against measurement.
+
+The estimates are those of :mod:`twoball.modal.cost` and
+:mod:`twoball.fem_membrane.cost`, which the guard of :mod:`twoball._common.budget`
+compares with the limits.
 
 Run from the repository root::
 
@@ -58,6 +62,9 @@ def measure(code: str) -> tuple[float, float]:
 
 def main() -> None:
     """Print the table."""
+    from twoball.fem_membrane.cost import fem_dofs, fem_estimate
+    from twoball.modal.cost import reference_estimate, series_estimate
+
     from twoball._common import budget
 
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
@@ -70,17 +77,15 @@ def main() -> None:
             "from twoball.modal.report import legendre_liftoff\n"
             f"legendre_liftoff(preset('basketball').derive(modes={modes}))\n"
         )
-        estimate = budget.series_estimate(modes, 4 * math.pi) + budget.reference_estimate(
-            4 * math.pi
-        )
+        estimate = series_estimate(modes, 4 * math.pi) + reference_estimate(4 * math.pi)
         rows.append((f"series N = {modes}", estimate, *measure(code)))
     for level, order in [(3, 2)] if quick else [(4, 1), (3, 2)]:
         code = (
             "from twoball.fem_membrane.solve import fem_pole_motion\n"
             f"fem_pole_motion(2.6, 0.13, 'lanczos', level={level}, order={order})\n"
         )
-        dofs = budget.fem_dofs("sphere", level, None, order)
-        rows.append((f"FE P{order} level {level}", budget.fem_estimate(dofs), *measure(code)))
+        dofs = fem_dofs("sphere", level, None, order)
+        rows.append((f"FE P{order} level {level}", fem_estimate(dofs), *measure(code)))
     print(f"{'run':22s} {'memory est':>11s} {'measured':>11s} {'ratio':>6s}"
           f" {'time est':>9s} {'CPU':>9s} {'ratio':>6s}")  # fmt: skip
     for name, estimate, peak, seconds in rows:

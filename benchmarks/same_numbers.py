@@ -1,5 +1,9 @@
 """The same numbers before and after a change: JSON of representative commands, array hashes.
 
+The record in ``same_numbers.json`` was made on the last commit before the
+package was reshaped (``git worktree add /tmp/before c695646``, this script
+copied there, ``record``); ``check`` on any later commit compares against it.
+
 ``python benchmarks/same_numbers.py record`` runs every command below with ``--json``
 and writes their outputs, with the provenance blocks removed, to
 ``benchmarks/same_numbers.json``, together with SHA-256 hashes of every nodal array of
@@ -181,8 +185,14 @@ def _export_hashes(tmp: Path, env: dict[str, str]) -> dict[str, str]:
 
 
 def collect() -> dict[str, object]:
-    """Run every command and the export; their stripped JSON and the array hashes."""
+    """Run every command and the export; their stripped JSON and the array hashes.
+
+    BLAS and OpenMP run one thread each: the summation order of the dense
+    eigensolvers depends on the thread count, and the comparison is bit for bit.
+    """
     env = dict(os.environ)
+    for name in ("OPENBLAS_NUM_THREADS", "OMP_NUM_THREADS", "MKL_NUM_THREADS"):
+        env[name] = "1"
     results: dict[str, object] = {}
     with tempfile.TemporaryDirectory() as name:
         tmp = Path(name)

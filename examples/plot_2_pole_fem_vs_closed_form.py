@@ -10,21 +10,30 @@ below differ only by the discretisation error of the finite elements.
 """
 
 # %%
+# :func:`twoball.plot` solves the case with both backends on the mesh of a
+# :class:`twoball.MeshOptions` and writes the figure; its result carries each
+# backend's lift-off report (SI).  The pictures of this example go to a
+# scratch folder.
+import shutil
+import tempfile
+from pathlib import Path
+
+import matplotlib.image as mpimg
 import matplotlib.pyplot as plt
-from twoball.verify.output.fields import ball_model
-from twoball.verify.output.figures.pole import pole_figure
 
 import twoball
 
 case = twoball.Case.preset("basketball")
-model = ball_model(case, level=3, order=2)
+mesh = twoball.MeshOptions("sphere", level=3, order=2)
+folder = Path(tempfile.mkdtemp())
+figure = twoball.PlotOptions(dpi=150)  # resolution of the PNG [dots per inch]
+result = twoball.plot("pole", folder / "pole.png", case, mesh=mesh, figure=figure)
 
-for name, backend in model.backends.items():
-    report = backend.report
+for name, report in result.reports.items():
     print(
         f"{name:9s} t_l = {report.t_liftoff_s * 1e3:.5f} ms, v_l = {report.v_liftoff_m_s:.5f} m/s"
     )
-fem, legendre = model.backends["fem"].report, model.backends["legendre"].report
+fem, legendre = result.reports["fem"], result.reports["legendre"]
 print(f"relative difference of t_l: {abs(fem.t_liftoff_s / legendre.t_liftoff_s - 1):.1e}")
 
 # %%
@@ -32,11 +41,13 @@ print(f"relative difference of t_l: {abs(fem.t_liftoff_s / legendre.t_liftoff_s 
 # dashed lines mark each backend's lift-off, the dotted line in the velocity
 # panel is the body's free flight after it.  Under each quantity a smaller
 # panel shows the difference finite elements minus closed form, which the
-# upper panels cannot show: the curves lie on top of each other.  The figure
-# functions of :mod:`twoball.verify.output.figures` return a pyplot-free
-# :class:`matplotlib.figure.Figure` in the one style of the package
-# (``save_figure`` writes it as PDF, SVG, PNG, ... by the file suffix, as
-# ``twoball plot pole --out pole.pdf`` does); ``plt.figure`` adopts it so that
-# ``plt.show`` displays it.
-plt.figure(pole_figure(model))
+# upper panels cannot show: the curves lie on top of each other.  The file's
+# suffix chooses the format (``pole.pdf`` or ``pole.svg`` for a paper, as
+# ``twoball plot pole --out pole.pdf`` does); the PNG is shown here as written.
+image = mpimg.imread(result.file)
+height, width = image.shape[:2]
+fig, ax = plt.subplots(figsize=(8, 8 * height / width), layout="constrained")
+ax.imshow(image)
+ax.set_axis_off()
 plt.show()
+shutil.rmtree(folder)  # the figure is on this page now

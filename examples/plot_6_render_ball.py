@@ -9,33 +9,39 @@ is magnified for visibility; the factor is printed in each picture.
 """
 
 # %%
+# :func:`twoball.render` solves the case on the mesh of a
+# :class:`twoball.MeshOptions` and writes a PNG (one instant: ``frames`` is a
+# list of one time in seconds, by default the lift-off) or an animation
+# (``.gif``, ``.mp4``: a frame count or a list of times).
+# :class:`twoball.RenderOptions` sets the warp factor, the image size in
+# pixels and the frames per second of an animation.
 import shutil
 import tempfile
 from pathlib import Path
 
 import matplotlib.image as mpimg
 import matplotlib.pyplot as plt
-from twoball.verify.output.fields import ball_model, ball_scene, liftoff_frame
-from twoball.verify.output.render import render_scene
 
 import twoball
 
-model = ball_model(twoball.Case.preset("basketball"), level=3, order=2, backends=("fem",))
+case = twoball.Case.preset("basketball")
+mesh = twoball.MeshOptions("sphere", level=3, order=2)
+view = twoball.RenderOptions(size=(480, 400))
 folder = Path(tempfile.mkdtemp())
 
 # %%
 # Two instants: 5 ms after maximal compression, while the wave runs up the
-# ball, and the lift-off instant of the finite elements.
+# ball, and the lift-off instant of the finite elements (the default).
 pictures = {
-    "t = 5 ms": render_scene(folder / "ball_5ms.png", ball_scene(model, [0.005]), size=(480, 400)),
-    "lift-off": render_scene(
-        folder / "ball_liftoff.png", ball_scene(model, liftoff_frame(model)), size=(480, 400)
-    ),
+    "t = 5 ms": twoball.render(folder / "ball_5ms.png", case, mesh=mesh, frames=[0.005], view=view),
+    "lift-off": twoball.render(folder / "ball_liftoff.png", case, mesh=mesh, view=view),
 }
+for title, result in pictures.items():
+    print(f"{title}: t = {1e3 * result.times_s[0]:.3f} ms, warp x{result.warp:.1f}, {result.size}")
 
-fig, axes = plt.subplots(1, 2, figsize=(9, 3.9), layout="constrained")
-for ax, (title, path) in zip(axes, pictures.items(), strict=True):
-    ax.imshow(mpimg.imread(path))
+fig, axes = plt.subplots(1, 2, figsize=(9, 4.2), layout="constrained")
+for ax, (title, result) in zip(axes, pictures.items(), strict=True):
+    ax.imshow(mpimg.imread(result.file))
     ax.set_title(title)
     ax.set_axis_off()
 plt.show()

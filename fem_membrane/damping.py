@@ -54,12 +54,20 @@ def rayleigh_matrix(law: Rayleigh, mass: sp.spmatrix, stiffness: sp.spmatrix) ->
     return (law.alpha * mass + law.beta * stiffness).tocsr()
 
 
-def rayleigh_table(law: Rayleigh, omega: np.ndarray, ratio: float) -> list[dict[str, float]]:
-    """One row per mode except the constant one: index, omega, ratio zeta, zeta / D."""
+def rayleigh_table(
+    law: Rayleigh, omega: np.ndarray, ratio: float | None
+) -> list[dict[str, float | None]]:
+    """One row per mode except the constant one: index, omega, ratio zeta, zeta / D.
+
+    ``ratio`` None (a law given without D): the last column is None.
+    """
     omega = np.asarray(omega, dtype=float)
     rows = []
     for k in np.flatnonzero(omega > ZERO_FREQUENCY):
         zeta = float(law.ratios(omega[k]))
-        relative = zeta / ratio if ratio > 0 else math.inf
+        if ratio is None:
+            relative = None
+        else:
+            relative = zeta / ratio if ratio > 0 else math.inf
         rows.append({"mode": int(k), "omega": float(omega[k]), "zeta": zeta, "ratio": relative})
     return rows

@@ -14,6 +14,7 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass
+from typing import Any
 
 import numpy as np
 import scipy.sparse as sp
@@ -199,8 +200,14 @@ def eigen_table(
     count: int = 25,
     phi_a: float = 2.6,
     geometry: str = "isoparametric",
+    membrane: Any = None,
 ) -> list[dict[str, float | int]]:
     """The lowest ``count`` nonzero eigenvalues beside the exact ``l (l + 1)`` (eq. (3.11)).
+
+    With the pressurised ``membrane`` the eigenvalues of ``K - 2 M`` beside
+    ``(l - 1)(l + 2)`` (:mod:`twoball.modal.membrane`): the Laplacian's pairs,
+    certified by inertia counts, are exactly its pairs with ``lambda_h - 2``
+    (the residuals are measured with ``K - 2 M`` itself).
 
     Parameters
     ----------
@@ -217,13 +224,16 @@ def eigen_table(
         exact eigenvalues).
     geometry : {"isoparametric", "exact"}
         Discrete sphere (see :func:`twoball.fem_membrane.build.build_space`).
+    membrane : Membrane, optional
+        The membrane operator (None: the paper's).
 
     Returns
     -------
     list of dict
         One row per eigenvalue, the constant mode first: ``index``, ``l``,
-        ``value``, ``exact`` = l (l + 1), ``relative_error`` (absolute for
-        l = 0), ``multiplicity`` (computed eigenvalues in the cluster of l) and
+        ``value``, ``exact`` = l (l + 1) or (l - 1)(l + 2), ``relative_error``
+        (absolute where the exact value is 0), ``multiplicity`` (computed
+        eigenvalues in the cluster of l) and
         ``expected_multiplicity`` (2 l + 1 on the sphere, 1 on the line),
         ``residual`` = ``||K x - lambda M x|| / max(||K x||, ||M x||)`` of the
         pair and ``orthonormality`` = ``max |Phi^T M Phi - I|`` over all pairs
@@ -249,19 +259,23 @@ def eigen_table(
         needed = (last + 2) ** 2  # complete the last cluster and the next one
     needed = min(needed, space.dofs)
     pairs = lowest_eigenpairs(space.stiffness, space.mass, needed)
-    values = pairs.values
+    pressurised = membrane is not None and membrane.pressurised
+    values = membrane.eigenvalues(pairs.values) if pressurised else pairs.values
     listed = min(count + 1, values.size)
     residuals = relative_residuals(
-        space.stiffness, space.mass, values[:listed], pairs.vectors[:, :listed]
+        space.operator(membrane), space.mass, values[:listed], pairs.vectors[:, :listed]
     )
     counts = np.ones(values.size, dtype=int)
     if not axisymmetric:
-        counts = np.bincount(sphere_degree(values), minlength=values.size)
+        counts = np.bincount(sphere_degree(pairs.values), minlength=values.size)
     rows = []
     for index in range(listed):
         degree = int(degrees[index]) if axisymmetric else int(math.isqrt(index))
-        exact = float(degree * (degree + 1))
-        error = abs(values[index] - exact) / exact if exact > 0 else abs(values[index])
+        if pressurised:
+            exact = float(membrane.legendre(degree))
+        else:
+            exact = float(degree * (degree + 1))
+        error = abs(values[index] - exact) / abs(exact) if exact != 0 else abs(values[index])
         rows.append(
             {
                 "index": index,

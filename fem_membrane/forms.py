@@ -6,6 +6,12 @@ operator.  On the axisymmetric line ``x = cos(phi)`` the surface measure is
 ``dS = dx dtheta`` and ``|grad_s u|^2 = (1 - x^2) u'^2``; the forms there carry
 the full azimuthal factor 2 pi, so that both backends use the measure of the
 whole unit sphere (mass of the constant 4 pi, same energies).
+
+The pressurised membrane (:mod:`twoball.modal.membrane`) adds
+``-2 int u v dS`` to the stiffness form, the second variation of ``T dA - P dV``
+beyond the Laplacian's: a mass-like form, assembled as ``-2 M`` from :func:`mass`
+(or :func:`axisym_mass`) -- no form of its own
+(:meth:`twoball.fem_membrane.space.Discretisation.operator`).
 """
 
 from __future__ import annotations

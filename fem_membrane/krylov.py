@@ -82,7 +82,7 @@ from twoball.fem_membrane.slicing import factorise
 from twoball.fem_membrane.space import Discretisation, PoleFunctional, pole_value, pole_vector
 from twoball.modal.filters import SpectralFilter
 from twoball.modal.liftoff import DEFAULT_T_END
-from twoball.modal.series import ModalSeries, check_damping
+from twoball.modal.series import ModalSeries, check_law
 
 from twoball._common.errors import NumericalError, ParameterError
 
@@ -226,7 +226,7 @@ def _series(
     values: np.ndarray,
     coefficients: np.ndarray,
     pole_values: np.ndarray,
-    damping: float,
+    damping: Any,
     filter: SpectralFilter,
 ) -> ModalSeries:
     keep = values <= filter.omega_cut**2
@@ -266,7 +266,7 @@ def _unpack(
 def krylov_modal_series(
     problem: Discretisation | tuple[sp.spmatrix, sp.spmatrix, int],
     moments: np.ndarray,
-    damping: float,
+    damping: Any,
     filter: SpectralFilter,
     *,
     tol: float = TOLERANCE,
@@ -291,8 +291,9 @@ def krylov_modal_series(
         (the pole as a degree of freedom or a sparse row).
     moments : ndarray, shape (dofs,)
         ``b = M u0``; for the Galerkin projection the load ``b_i = int F phi_i dS``.
-    damping : float
-        Modal damping ratio D in [0, 1).
+    damping : float or Rayleigh
+        Modal damping ratio D in [0, 1), or a Rayleigh law in units of c
+        (:class:`twoball.modal.series.ModalSeries`).
     filter : SpectralFilter
         Weights by frequency; its ``omega_cut**2`` is the eigenvalue cutoff.
     tol : float
@@ -342,7 +343,7 @@ def krylov_modal_series(
 def _krylov(
     problem: Discretisation | tuple[sp.spmatrix, sp.spmatrix, int],
     moments: np.ndarray,
-    damping: float,
+    damping: Any,
     filter: SpectralFilter,
     tol: float,
     residuals: bool,
@@ -352,7 +353,7 @@ def _krylov(
     vectors: bool,
     field_times: np.ndarray | None = None,
 ) -> tuple[ModalSeries, KrylovInfo]:
-    damping = check_damping(damping)
+    damping = check_law(damping)
     if not (math.isfinite(tol) and 0.0 < tol < 1.0):
         raise ParameterError("tol", "in (0, 1)", tol)
     K, M, pole = _unpack(problem)

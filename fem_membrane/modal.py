@@ -11,6 +11,8 @@ evaluated by exactly the same code as for the Legendre series.
 
 from __future__ import annotations
 
+from typing import Any
+
 import numpy as np
 from twoball.fem_membrane.eigen import Eigenpairs
 from twoball.fem_membrane.space import PoleFunctional, pole_value
@@ -22,7 +24,7 @@ def modal_series(
     pairs: Eigenpairs,
     moments: np.ndarray,
     pole: PoleFunctional,
-    damping: float,
+    damping: Any,
     filter: SpectralFilter,
 ) -> ModalSeries:
     """The finite-element modal series of eq. (3.16) (dimensionless).
@@ -36,8 +38,10 @@ def modal_series(
     pole : int or sparse row
         Degree of freedom at the north pole, or the pole functional
         (:attr:`twoball.fem_membrane.space.Discretisation.pole_row`).
-    damping : float
-        Modal damping ratio D in [0, 1).
+    damping : float, ModalRatio or Rayleigh
+        Modal damping ratio D in [0, 1), or a damping law in units of c: mode k
+        is damped by ``zeta(omega_k)`` (C = alpha M + beta K is diagonal on the
+        M-orthonormal eigenvectors, so this is exact for Rayleigh damping).
     filter : SpectralFilter
         Weights by frequency; the same object as for the Legendre series.
 

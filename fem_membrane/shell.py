@@ -1,16 +1,19 @@
-"""Finite elements of the stiffened ball: bending by a mixed form, the gas by a rank-one term.
+"""Finite elements of the ball's operator: pressure term, bending by a mixed form, gas rank one.
 
 Dimensionless (length R, time 1/c); the closed form is in
 :mod:`twoball.modal.stiffness`.  On the membrane's own C0 space (sphere or
-axisymmetric line, any order) the strong operator ``-Delta_s + beta Delta_s
+axisymmetric line, any order) the strong operator ``-Delta_s - s + beta Delta_s
 (Delta_s + 2)`` is discretised with a second field ``w = -Delta_s u``, in weak
 form ``M w = K u`` (the same space for w, so no boundary terms on the closed
 surface).  Eliminating w leaves the Schur complement
 
-    ``K_b = (1 - 2 beta) K + beta K M^-1 K``,
+    ``K_b = (1 - 2 beta) K - s M + beta K M^-1 K``,
 
-and the enclosed gas adds ``(gas / 4 pi) m m^T`` with ``m = M 1``, the discrete
-volume functional (``m^T u = int u dS``).  ``K_b`` is never formed:
+where ``-s M`` (s = 2 for the pressurised membrane, 0 for the paper's) is the
+mass-like form of the ``-2 u^2 / R^2`` term of :mod:`twoball.modal.membrane`
+(:meth:`twoball.fem_membrane.space.Discretisation.operator`), and the enclosed
+gas adds ``(gas / 4 pi) m m^T`` with ``m = M 1``, the discrete volume
+functional (``m^T u = int u dS``).  ``K_b`` is never formed:
 
 * products ``K_b x`` take one sparse solve with M (:class:`ShellOperator`);
 * shift-invert solves ``(K_b - sigma M)^-1`` use the sparse saddle-point system
@@ -19,10 +22,10 @@ volume functional (``m^T u = int u dS``).  ``K_b`` is never formed:
 * generalized-alpha stepping factorises the same saddle system
   (:class:`ShellAlpha`).
 
-Because ``K_b = M p(M^-1 K)`` with ``p(mu) = (1 - 2 beta) mu + beta mu^2``, the
-membrane's M-orthonormal eigenvectors are exactly those of ``K_b``, with
+Because ``K_b = M p(M^-1 K)`` with ``p(mu) = (1 - 2 beta) mu - s + beta mu^2``,
+the membrane's M-orthonormal eigenvectors are exactly those of ``K_b``, with
 eigenvalues ``p(mu_h)``; and ``m^T phi = 0`` for every membrane mode except the
-constant one (K 1 = 0), whose eigenvalue becomes ``gas * (1^T M 1) / (4 pi)``.
+constant one (K 1 = 0), whose eigenvalue becomes ``gas * (1^T M 1) / (4 pi) - s``.
 The modal routes (full and Krylov) therefore reuse the membrane eigen solvers and
 map their spectra (:func:`twoball.modal.stiffness.stiffen`); the direct
 shift-invert solve above checks that identity, and the eigenvalue error is
@@ -42,6 +45,7 @@ from twoball.fem_membrane.checks import check_dt
 from twoball.fem_membrane.damping import ModalDamping
 from twoball.fem_membrane.eigen import Eigenpairs
 from twoball.fem_membrane.space import Discretisation
+from twoball.modal.damping import Rayleigh
 from twoball.modal.series import ModalSeries
 from twoball.modal.stiffness import Stiffness, stiffen
 
@@ -49,12 +53,13 @@ from twoball._common.errors import NumericalError
 
 
 class ShellOperator(LinearOperator):
-    """``K_s = (1 - 2 beta) K + beta K M^-1 K + (gas / 4 pi) m m^T`` as a LinearOperator."""
+    """``K_s = (1 - 2 beta) K - s M + beta K M^-1 K + (gas / 4 pi) m m^T`` as a LinearOperator."""
 
     def __init__(self, space: Discretisation, stiffness: Stiffness) -> None:
         self.K = sp.csr_matrix(space.stiffness)
         self.M = sp.csr_matrix(space.mass)
         self.beta = float(stiffness.beta)
+        self.shift = float(stiffness.membrane.shift)
         self.volume = np.asarray(self.M @ np.ones(self.M.shape[0]))  # m = M 1
         self.gas = float(stiffness.gas) / (4.0 * math.pi)
         self._mass_lu = splu(sp.csc_matrix(self.M)) if self.beta > 0 else None
@@ -69,6 +74,8 @@ class ShellOperator(LinearOperator):
         x = np.asarray(x, dtype=float).reshape(-1)
         kx = self.K @ x
         out = (1.0 - 2.0 * self.beta) * kx
+        if self.shift:
+            out = out - self.shift * (self.M @ x)
         if self._mass_lu is not None:
             out = out + self.beta * (self.K @ self._mass_lu.solve(kx))
         if self.gas:
@@ -82,11 +89,13 @@ class ShellOperator(LinearOperator):
         return self  # symmetric
 
     def saddle(self, a: float, b: float, extra: sp.spmatrix | None = None) -> sp.csc_matrix:
-        """Sparse ``[[a M + b (1 - 2 beta) K + extra, b beta K], [K, -M]]``.
+        """Sparse ``[[(a - b s) M + b (1 - 2 beta) K + extra, b beta K], [K, -M]]``.
 
         Its first block row solved for x gives ``(a M + b K_b + extra)^-1`` (no gas),
         since the second row makes ``z = M^-1 K x``.
         """
+        if self.shift:
+            a = a - b * self.shift
         top = a * self.M + b * (1.0 - 2.0 * self.beta) * self.K
         if extra is not None:
             top = top + extra
@@ -163,12 +172,25 @@ def stiff_pairs(pairs: Eigenpairs, series: ModalSeries) -> Eigenpairs:
     return Eigenpairs(series.omega**2, pairs.vectors, None)
 
 
-class ShellAlpha(GeneralizedAlpha):
-    """Generalized-alpha stepping of ``M u'' + C u' + K_s u = 0`` (mixed bending, gas).
+class RayleighOperator:
+    """``C = alpha M + beta K_s`` of a Rayleigh law on the ball's operator (``C @ v``)."""
 
-    The effective matrix ``(1 - alpha_m) M + (1 - alpha_f) beta_N dt^2 K_s`` is
-    applied inverse through the saddle-point LU; the gas and the low-rank modal
-    damping enter together by one Woodbury correction.
+    def __init__(self, law: Rayleigh, mass: sp.spmatrix, operator: ShellOperator) -> None:
+        self.alpha, self.beta = float(law.alpha), float(law.beta)
+        self.mass, self.operator = mass, operator
+
+    def __matmul__(self, v: np.ndarray) -> np.ndarray:
+        return self.alpha * (self.mass @ v) + self.beta * (self.operator @ v)
+
+
+class ShellAlpha(GeneralizedAlpha):
+    """Generalized-alpha stepping of ``M u'' + C u' + K_s u = 0`` (pressure, bending, gas).
+
+    The effective matrix ``(1 - alpha_m) M + (1 - alpha_f) (gamma_N dt C + beta_N
+    dt^2 K_s)`` is applied inverse through the saddle-point LU; the gas and the
+    low-rank modal damping enter together by one Woodbury correction.  A Rayleigh
+    law ``C = a M + b K_s`` only changes the two weights of the saddle system:
+    ``((1 - alpha_m) + w_c a) M + (w_k + w_c b) K_s``.
     """
 
     def __init__(
@@ -176,7 +198,7 @@ class ShellAlpha(GeneralizedAlpha):
         mass: sp.spmatrix,
         operator: ShellOperator,
         dt: float,
-        damping: ModalDamping | None = None,
+        damping: ModalDamping | Rayleigh | None = None,
         rho_inf: float = 1.0,
     ) -> None:
         self.dt = check_dt(dt)
@@ -186,15 +208,20 @@ class ShellAlpha(GeneralizedAlpha):
         self.damping = damping
         weight_c = (1.0 - p.alpha_f) * p.gamma * self.dt
         weight_k = (1.0 - p.alpha_f) * p.beta * self.dt**2
-        self._lu = _SaddleSolve(operator, 1.0 - p.alpha_m, weight_k)
+        weight_m = 1.0 - p.alpha_m
+        if isinstance(damping, Rayleigh):
+            self.damping = RayleighOperator(damping, self.mass, operator)
+            weight_m = weight_m + weight_c * self.damping.alpha
+            weight_k = weight_k + weight_c * self.damping.beta
+        self._lu = _SaddleSolve(operator, weight_m, weight_k)
         self._mass_lu = None
         self._lowrank = None
         columns, scales = [], []
         if isinstance(damping, ModalDamping):
             columns.append(damping.basis)
             scales.append(weight_c * damping.rates)
-        elif damping is not None:
-            raise NumericalError("ShellAlpha takes modal damping only")
+        elif damping is not None and not isinstance(damping, Rayleigh):
+            raise NumericalError("ShellAlpha takes modal or Rayleigh damping only")
         if operator.gas:
             columns.append(operator.volume[:, None])
             scales.append(np.array([weight_k * operator.gas]))
@@ -206,6 +233,7 @@ class ShellAlpha(GeneralizedAlpha):
 
 
 __all__ = [
+    "RayleighOperator",
     "ShellAlpha",
     "ShellOperator",
     "shell_eigenpairs_direct",

@@ -1,16 +1,20 @@
 """Finite-element pole motion: the entry point for the command line.
 
 Two independent time discretisations of the semi-discrete membrane equation
-(3.9) with damping ratio D:
+(3.9) with a damping law (the paper's ratio D, or Rayleigh ``C = alpha M + beta
+K``, :mod:`twoball.modal.damping`):
 
 ``modal``
     Superposition of finite-element eigenmodes in closed form, eqs. (3.14)-(3.16),
-    returned as the shared :class:`twoball.modal.series.ModalSeries`.
+    returned as the shared :class:`twoball.modal.series.ModalSeries`; each mode
+    with the law's ratio ``zeta(omega_k)`` (exact for Rayleigh damping, which the
+    M-orthonormal eigenvectors diagonalise).
 ``alpha``
     Direct generalized-alpha stepping of ``M u'' + C u' + K u = 0`` from the
     filtered initial displacement, returned as
     :class:`twoball.modal.liftoff.SampledPoleMotion` (each of the pole's u, u_t, u_tt
-    through its own cubic spline on the step grid).
+    through its own cubic spline on the step grid); C is the low-rank modal
+    damping of ratio D or the sparse Rayleigh matrix.
 
 Both motions go to :func:`twoball.modal.liftoff.find_liftoff`; nothing here decides
 lift-off, filters or scales.  Everything is dimensionless.
@@ -47,7 +51,7 @@ from twoball.modal.damping import RAYLEIGH_LOW, Rayleigh
 from twoball.modal.filters import FilterKind, SpectralFilter
 from twoball.modal.initial import check_phi_a
 from twoball.modal.liftoff import DEFAULT_T_END, PoleMotion, SampledPoleMotion
-from twoball.modal.series import ModalSeries, check_damping
+from twoball.modal.series import ModalSeries, check_law
 from twoball.modal.stiffness import Stiffness
 
 from twoball._common.errors import ParameterError
@@ -84,7 +88,7 @@ def as_filter(filter: SpectralFilter | FilterKind, modes: int = 30) -> SpectralF
 
 def modal_model(
     phi_a: float,
-    damping: float,
+    damping: Any,
     filter: SpectralFilter | FilterKind = "lanczos",
     *,
     mesh: str = "sphere",
@@ -114,13 +118,15 @@ def modal_model(
     also stops on the whole filtered field (u, u_t, u_tt in the M-norm at
     instants over [0, ``t_end``], :mod:`twoball.fem_membrane.ritz_field`).
 
-    ``stiffness`` (bending, gas) maps the membrane
-    spectrum to the mixed bending form's and the gas term's
-    (:func:`twoball.fem_membrane.shell.stiff_series`); ``pairs`` then hold the
-    stiffened eigenvalues.
+    ``stiffness`` (membrane operator, bending, gas) maps the Laplace-Beltrami
+    spectrum to the pressure term's, the mixed bending form's and the gas
+    term's (:func:`twoball.fem_membrane.shell.stiff_series`); ``pairs`` then
+    hold the stiffened eigenvalues.  ``damping`` is the ratio D or a Rayleigh law
+    in units of c (:func:`twoball.modal.series.check_law`), applied to the
+    stiffened frequencies.
     """
     phi_a = check_phi_a(phi_a)
-    damping = check_damping(damping)
+    damping = check_law(damping)
     filter = as_filter(filter)
     initial = check_choice("initial", initial, INITIAL_METHODS)
     seconds = {}
@@ -155,15 +161,48 @@ def modal_model(
     return ModalModel(space, pairs, moments, series, seconds, krylov, stiffness)
 
 
-def rayleigh_damping(model: ModalModel, law: Rayleigh | None = None) -> tuple[Rayleigh, Any]:
-    """The Rayleigh law ``law``, or one fitted to D at sqrt(2) and omega_N; and the frequencies.
+def fit_band(filter: SpectralFilter, stiffness: Stiffness | None) -> tuple[float, float]:
+    """Where a fitted Rayleigh law has ratio D: the ball's lowest vibrating mode and degree N.
 
-    Returns the law and its fitting frequencies ``(low, high)`` (None for a given law).
+    :meth:`twoball.modal.stiffness.Stiffness.fit_band`; sqrt(2) and ``omega_N`` for
+    the paper's membrane.
     """
-    if law is not None and not law.fitted:
+    if stiffness is None or not stiffness.active:
+        return RAYLEIGH_LOW, filter.omega_n
+    return stiffness.fit_band(filter.modes)
+
+
+def resolve_law(
+    damping: Any,
+    damping_model: str,
+    rayleigh: Rayleigh | None,
+    filter: SpectralFilter,
+    stiffness: Stiffness | None,
+) -> tuple[float | Rayleigh, tuple[float, float] | None]:
+    """The damping of a run: ratio D, or a Rayleigh law in units of c; and its fit band.
+
+    ``damping_model="rayleigh"`` with a ratio D takes ``rayleigh`` (coefficients
+    given) or the law fitted to D at :func:`fit_band` (returned as the second
+    value, None otherwise); a Rayleigh law as ``damping`` is taken as it is.
+    """
+    law = check_law(damping)
+    if isinstance(law, Rayleigh) or damping_model != "rayleigh":
         return law, None
-    low, high = RAYLEIGH_LOW, model.filter.omega_n
-    return Rayleigh.fit(model.series.damping, low, high), (low, high)
+    if rayleigh is not None and not rayleigh.fitted:
+        return rayleigh, None
+    band = fit_band(filter, stiffness)
+    return Rayleigh.fit(law, *band), band
+
+
+def rayleigh_info(law: Rayleigh, band: Any, omega: np.ndarray, ratio: float | None) -> dict:
+    """The Rayleigh block of ``info``: coefficients (units of c), fit band, ratio table."""
+    return {
+        "alpha": law.alpha,
+        "beta": law.beta,
+        "omega_low": None if band is None else band[0],
+        "omega_high": None if band is None else band[1],
+        "table": rayleigh_table(law, omega, ratio),
+    }
 
 
 def alpha_motion(
@@ -179,13 +218,17 @@ def alpha_motion(
 
     ``u0 = Phi diag(sigma) Phi^T M u_proj`` (the filtered series at t = 0),
     ``u_t(0) = 0`` and ``M u_tt(0) = -K u0``; the sampled pole motion matches the
-    modal series as dt -> 0 (for ``damping_model="modal"``).
+    modal series as dt -> 0.  The damping is the series' law: ratio D on every
+    computed mode (low rank), or the sparse Rayleigh ``C = alpha M + beta K``
+    with K the ball's operator (pressure term, bending and gas included).
+    ``damping_model="rayleigh"`` on a series of ratio D takes ``rayleigh`` or
+    the law fitted to D (:func:`resolve_law`) instead.
 
     Returns
     -------
     SampledPoleMotion, dict
-        Pole samples and ``dt``, ``steps``, ``rho_inf`` (and ``rayleigh``:
-        alpha, beta, fitting frequencies and the effective-ratio table).
+        Pole samples and ``dt``, ``steps``, ``rho_inf`` (and ``rayleigh`` when
+        the law was resolved here).
     """
     damping_model = check_choice("damping_model", damping_model, DAMPING_MODELS)
     dt = check_dt(dt)
@@ -195,28 +238,23 @@ def alpha_motion(
     if dt is None:
         dt = automatic_step(model.filter.omega_cut, t_end, STEP_ACCURACY)
     info: dict[str, Any] = {"dt": dt, "rho_inf": rho_inf}
-    if damping_model == "modal":
-        damping = ModalDamping.from_modes(space.mass, pairs, series.damping)
-    elif model.stiffness is not None:
-        raise ParameterError("damping_model", "modal with bending or gas", damping_model)
-    else:
-        law, fitted = rayleigh_damping(model, rayleigh)
-        damping = rayleigh_matrix(law, space.mass, space.stiffness)
-        retained = series.omega[series.retained]
-        info["rayleigh"] = {
-            "alpha": law.alpha,
-            "beta": law.beta,
-            "omega_low": None if fitted is None else fitted[0],
-            "omega_high": None if fitted is None else fitted[1],
-            "table": rayleigh_table(law, retained, series.damping),
-        }
+    law, band = resolve_law(series.damping, damping_model, rayleigh, model.filter, model.stiffness)
+    if band is not None or (isinstance(law, Rayleigh) and law is not series.damping):
+        ratio = float(series.damping)
+        info["rayleigh"] = rayleigh_info(law, band, series.omega[series.retained], ratio)
     start = clock.perf_counter()
     if model.stiffness is not None:
         from twoball.fem_membrane.shell import ShellAlpha, ShellOperator
 
         operator = ShellOperator(space, model.stiffness)
-        stepper = ShellAlpha(space.mass, operator, dt, damping, rho_inf)
+        if not isinstance(law, Rayleigh):
+            law = ModalDamping.from_modes(space.mass, pairs, law)
+        stepper = ShellAlpha(space.mass, operator, dt, law, rho_inf)
     else:
+        if isinstance(law, Rayleigh):
+            damping = rayleigh_matrix(law, space.mass, space.stiffness)
+        else:
+            damping = ModalDamping.from_modes(space.mass, pairs, law)
         stepper = GeneralizedAlpha(space.mass, space.stiffness, dt, damping, rho_inf)
     u0 = filtered_displacement(series, pairs)
     history = stepper.run(u0, np.zeros_like(u0), t_end, space.pole_row)
@@ -259,8 +297,8 @@ def fem_pole_motion(
     ----------
     phi_a : float
         Contact angle [rad] in (pi/2, pi) (``--phi-a``).
-    damping : float
-        Damping ratio D in [0, 1) (``--damping``).
+    damping : float or Rayleigh
+        Damping ratio D in [0, 1) (``--damping``), or a Rayleigh law in units of c.
     filter : SpectralFilter or {"lanczos", "printed", "none"}
         Spectral filter; a kind name uses N = 30.  Its ``omega_cut`` is the
         eigenvalue cutoff, also for ``"none"``.
@@ -286,9 +324,10 @@ def fem_pole_motion(
         Krylov from 2000 DOFs on (``auto``, default) (``--route``).  ``alpha``
         always uses the full eigenpairs.
     damping_model : {"modal", "rayleigh"}
-        ``alpha`` only: ratio D on every computed mode (low rank), or Rayleigh
-        ``C = a M + b K`` of ``rayleigh`` (default: fitted at sqrt(2)
-        and omega_N) (``--damping-model``).
+        With a ratio D as ``damping``: ratio D on every mode (eq. (3.14)), or
+        Rayleigh ``C = a M + b K`` of ``rayleigh`` (default: fitted to D at the
+        lowest vibrating mode and omega_N, :func:`fit_band`) (``--damping-model``).
+        A Rayleigh law given as ``damping`` is used as it is.
     dt : float, optional
         Time step > 0 (``--dt``); default ``omega_cut dt <= 0.2``.
     rho_inf : float
@@ -299,10 +338,11 @@ def fem_pole_motion(
     initial : {"projection", "interpolation"}
         Galerkin L2 projection of F, or nodal interpolation (``--initial``).
     rayleigh : Rayleigh, optional
-        The law of ``damping_model="rayleigh"``; None or fitted: fitted to D at
-        sqrt(2) and omega_N.
+        The law of ``damping_model="rayleigh"`` (units of c); None or fitted:
+        fitted to D at :func:`fit_band`.
     stiffness : Stiffness, optional
-        Bending and gas (:mod:`twoball.fem_membrane.shell`); None: the membrane.
+        Membrane operator, bending and gas (:mod:`twoball.fem_membrane.shell`);
+        None: the paper's membrane.
 
     Returns
     -------
@@ -322,10 +362,6 @@ def fem_pole_motion(
     dt = check_dt(dt)
     rho_inf = check_rho_inf(rho_inf)
     t_end = check_t_end(t_end)
-    if scheme == "modal" and damping_model != "modal":
-        raise ParameterError(
-            "damping_model", "modal when scheme is modal (one ratio D for all modes)", damping_model
-        )
     route = check_choice("route", route, ROUTES)
     if scheme == "alpha":
         if route == "krylov":
@@ -333,9 +369,13 @@ def fem_pole_motion(
         route = "full"  # time stepping needs the eigenvectors for damping and filtering
     modes = as_filter(filter).modes
     check_fem(mesh, level, elements, order, modes, route, scheme=scheme, dt=dt, t_end=t_end)
+    ratio = None if isinstance(damping, Rayleigh) else float(check_law(damping))
+    law, band = resolve_law(damping, damping_model, rayleigh, as_filter(filter, modes), stiffness)
+    if isinstance(law, Rayleigh):
+        damping_model = "rayleigh"
     model = modal_model(
         phi_a,
-        damping,
+        law,
         filter,
         mesh=mesh,
         level=level,
@@ -367,16 +407,11 @@ def fem_pole_motion(
     }
     if model.krylov is not None:
         info["krylov"] = model.krylov
+    if isinstance(law, Rayleigh):
+        info["rayleigh"] = rayleigh_info(law, band, series.omega[series.retained], ratio)
     if scheme == "modal":
         return series, info
-    motion, extra = alpha_motion(
-        model,
-        damping_model=damping_model,
-        dt=dt,
-        rho_inf=rho_inf,
-        t_end=t_end,
-        rayleigh=rayleigh,
-    )
+    motion, extra = alpha_motion(model, dt=dt, rho_inf=rho_inf, t_end=t_end)
     info["seconds"]["stepping"] = extra.pop("seconds_stepping")
     info.update(extra)
     return motion, info

@@ -17,6 +17,7 @@ from __future__ import annotations
 
 from collections.abc import Callable
 from dataclasses import dataclass
+from typing import Any
 
 import numpy as np
 import scipy.sparse as sp
@@ -105,6 +106,20 @@ class Discretisation:
     def dofs(self) -> int:
         """Number of degrees of freedom."""
         return int(self.basis.N)
+
+    def operator(self, membrane: Any = None) -> sp.csr_matrix:
+        """The membrane operator's matrix: K (the paper's), or ``K - 2 M`` (pressurised).
+
+        ``membrane`` is a :class:`~twoball.modal.membrane.Membrane` (None: the
+        paper's).  The ``-2 u^2 / R^2`` term of the pressurised membrane is the
+        mass form times -2 (:mod:`twoball.fem_membrane.forms`), so its
+        eigenvectors are the Laplacian's and its eigenvalues ``lambda_h - 2``:
+        the same error, hence the same order ``h^(2p)``, as the membrane's.
+        Dimensionless.
+        """
+        if membrane is None or not membrane.pressurised:
+            return self.stiffness
+        return (self.stiffness - membrane.shift * self.mass).tocsr()
 
     @property
     def pole(self) -> int:

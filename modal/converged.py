@@ -87,7 +87,7 @@ def unfiltered_series(case: Case, modes: int) -> ModalSeries:
         omega=case.stiffness.legendre_omega(n) if stiff else legendre_frequency(n),
         coefficients=legendre_coefficients_recurrence(case.phi_a, modes),
         pole_values=np.ones(n.size),
-        damping=case.damping,
+        damping=case.damping_law,
         filter=SpectralFilter("none", modes),
         mode_norms=4.0 * np.pi / (2 * n + 1),
         filter_omega=legendre_frequency(n) if stiff else None,
@@ -153,7 +153,9 @@ def converged_legendre(
     clock = time.perf_counter()
     if base is None:
         lanczos = SpectralFilter("lanczos", start_modes)
-        base_series = legendre_series(case.phi_a, case.damping, lanczos, stiffness=case.stiffness)
+        base_series = legendre_series(
+            case.phi_a, case.damping_law, lanczos, stiffness=case.stiffness
+        )
         base = find_liftoff(base_series, case.gamma, t_end=t_end, horizon=recontact)
     if base.t is None:
         return ConvergedReference(

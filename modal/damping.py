@@ -1,9 +1,16 @@
 """Damping laws: one object per law, giving the damping ratio of a mode of frequency omega.
 
-Dimensionless (frequencies in units of c).  A law is shared by every backend:
-the closed form and finite-element modal superposition damp mode n by its
-ratio ``zeta(omega_n)``; finite-element time stepping builds its damping
-operator from the same law (:mod:`twoball.fem_membrane.damping`).
+A law is shared by every backend: the closed form and finite-element modal
+superposition damp mode n by its ratio ``zeta(omega_n)`` (any ratio >= 0:
+over-damped modes too, :class:`twoball.modal.series.ModalSeries`);
+finite-element time stepping builds its damping operator from the same law
+(:mod:`twoball.fem_membrane.damping`).
+
+Units: a ratio is a pure number.  Rayleigh's coefficients are SI at the public
+API (alpha [1/s], beta [s], :class:`twoball.Case` ``rayleigh``) and
+dimensionless inside the solvers (alpha in units of c, beta in units of 1/c):
+:meth:`Rayleigh.scaled` converts, and ``zeta(omega)`` is the same function in
+either system as long as omega is in the same units (rad/s, or units of c).
 
 :class:`ModalRatio`
     One ratio D for every mode, eq. (3.14): the paper's law.  As an operator
@@ -12,8 +19,10 @@ operator from the same law (:mod:`twoball.fem_membrane.damping`).
 :class:`Rayleigh`
     ``C = alpha M + beta K`` (mass- and stiffness-proportional, local and
     causal): ``zeta(omega) = alpha / (2 omega) + beta omega / 2``.  Without
-    ``alpha`` and ``beta`` it is fitted to the case's ratio D at omega_1 =
-    sqrt(2) and at the spectral filter's cutoff, by the solver that knows it.
+    ``alpha`` and ``beta`` it is fitted to the case's ratio D at the lowest
+    vibrating mode (omega_1 = sqrt(2) for the paper's membrane, omega_2 = 2 for
+    the pressurised one) and at degree N, the spectral filter's cutoff
+    (:meth:`twoball.modal.stiffness.Stiffness.fit_band`).
 """
 
 from __future__ import annotations
@@ -24,7 +33,7 @@ from typing import Any
 
 from twoball._common.errors import ParameterError, real_number
 
-__all__ = ["DAMPING_LAWS", "ModalRatio", "Rayleigh", "damping_law"]
+__all__ = ["DAMPING_LAWS", "ModalRatio", "Rayleigh", "damping_law", "is_law"]
 
 #: Lower fitting frequency of a fitted Rayleigh law: omega_1 of the sphere.
 RAYLEIGH_LOW = math.sqrt(2.0)
@@ -67,6 +76,16 @@ class ModalRatio:
 
         return np.full(np.shape(omega), self.ratio)
 
+    def decay(self, omega: Any) -> Any:
+        """``2 zeta omega = 2 D omega``: the coefficient of q' in each mode's equation."""
+        import numpy as np
+
+        return 2.0 * self.ratio * np.asarray(omega, dtype=float)
+
+    def scaled(self, wave_speed: float) -> ModalRatio:
+        """The law in units of c: a ratio has no unit, so itself."""
+        return self
+
     def as_dict(self) -> dict[str, Any]:
         """``{"law": "modal", "ratio": D}``."""
         return {"law": self.name, "ratio": self.ratio}
@@ -74,17 +93,24 @@ class ModalRatio:
 
 @dataclass(frozen=True)
 class Rayleigh:
-    """Rayleigh (Kelvin-Voigt) damping ``C = alpha M + beta K``, dimensionless.
+    """Rayleigh (Kelvin-Voigt) damping ``C = alpha M + beta K``: local and causal.
+
+    Each mode of frequency omega has the ratio ``zeta = alpha / (2 omega) + beta
+    omega / 2`` (the decay ``2 zeta omega = alpha + beta omega^2``); modes with
+    zeta >= 1 are critically or over-damped (real exponentials).  K is the
+    ball's own stiffness (membrane operator, bending, gas).
 
     Parameters
     ----------
     alpha : float, optional
-        Mass-proportional coefficient >= 0, in units of c.
+        Mass-proportional coefficient >= 0 [1/s] (at the API; in units of c
+        inside the solvers, :meth:`scaled`).
     beta : float, optional
-        Stiffness-proportional coefficient >= 0, in units of 1/c.
+        Stiffness-proportional coefficient >= 0 [s] (in units of 1/c inside).
 
-    Give both, or neither: then the solver fits them so that the ratio equals
-    the case's D at omega_1 = sqrt(2) and at its spectral filter's cutoff.
+    Give both, or neither: then the law is fitted so that the ratio equals the
+    case's D at the lowest vibrating mode (omega_1 = sqrt(2) for the paper's
+    membrane) and at degree N, the spectral filter's cutoff.
 
     Examples
     --------
@@ -92,8 +118,14 @@ class Rayleigh:
     >>> law = twoball.Rayleigh(alpha=0.1, beta=0.01)
     >>> round(float(law.ratios(2.0)), 6)
     0.035
+    >>> law.scaled(320.0).beta  # beta c: the same law in units of c
+    3.2
     >>> twoball.Rayleigh.fit(0.13, 2**0.5, 30.0).alpha > 0
     True
+    >>> twoball.Rayleigh(alpha=-1.0, beta=0.0)
+    Traceback (most recent call last):
+    ...
+    twoball.ParameterError: alpha must be a finite number >= 0 [1/s], got -1.0
     """
 
     alpha: float | None = None
@@ -107,12 +139,13 @@ class Rayleigh:
             raise ParameterError(
                 given, "given together with the other (or neither: fitted to D)", None
             )
-        for field in ("alpha", "beta"):
+        for field, unit in (("alpha", "1/s"), ("beta", "s")):
             value = getattr(self, field)
             if value is not None:
-                number = real_number(field, value, "a finite number >= 0")
+                valid = f"a finite number >= 0 [{unit}]"
+                number = real_number(field, value, valid)
                 if number < 0.0:
-                    raise ParameterError(field, "a finite number >= 0", value)
+                    raise ParameterError(field, valid, value)
                 object.__setattr__(self, field, number)
 
     @property
@@ -144,6 +177,24 @@ class Rayleigh:
         with np.errstate(divide="ignore"):
             return self.alpha / (2.0 * omega) + 0.5 * self.beta * omega
 
+    def decay(self, omega: Any) -> Any:
+        """``2 zeta omega = alpha + beta omega^2``: finite at omega = 0 too."""
+        import numpy as np
+
+        if self.fitted:
+            raise ParameterError("damping", "a Rayleigh law with alpha and beta here", self)
+        omega = np.asarray(omega, dtype=float)
+        return self.alpha + self.beta * omega * omega
+
+    def scaled(self, wave_speed: float) -> Rayleigh:
+        """The same law in units of c: ``alpha / c`` and ``beta c`` (a fitted law stays so).
+
+        ``wave_speed`` is c [1/s]; alpha [1/s] and beta [s] become dimensionless.
+        """
+        if self.fitted:
+            return self
+        return Rayleigh(self.alpha / wave_speed, self.beta * wave_speed)
+
     def as_dict(self) -> dict[str, Any]:
         """``{"law": "rayleigh", "alpha": ..., "beta": ...}`` (None: fitted to D)."""
         return {"law": self.name, "alpha": self.alpha, "beta": self.beta}
@@ -151,6 +202,11 @@ class Rayleigh:
 
 #: The laws by name (the command line's choices).
 DAMPING_LAWS: dict[str, type] = {ModalRatio.name: ModalRatio, Rayleigh.name: Rayleigh}
+
+
+def is_law(value: Any) -> bool:
+    """Whether ``value`` is a damping law object (not a bare ratio)."""
+    return isinstance(value, (ModalRatio, Rayleigh))
 
 
 def damping_law(law: Any, ratio: float) -> ModalRatio | Rayleigh:

@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import math
+from typing import Any
 
 import numpy as np
 from numpy.typing import ArrayLike
@@ -97,7 +98,9 @@ def gas_energy_shape(phi_a: float, gas: float) -> float:
     return gas * a0 * a0
 
 
-def phi_a_from_v0(v0: float, radius: float, wave_speed: float, gas: float = 0.0) -> float:
+def phi_a_from_v0(
+    v0: float, radius: float, wave_speed: float, gas: float = 0.0, membrane: Any = None
+) -> float:
     """Contact angle phi_a [rad] in (pi/2, pi) for impact speed ``|v0|`` [m/s], inverting eq. (3.7).
 
     The right-hand side of (3.7) decreases monotonically from +inf (phi_a -> pi/2)
@@ -110,7 +113,10 @@ def phi_a_from_v0(v0: float, radius: float, wave_speed: float, gas: float = 0.0)
     ``log(pi - phi_a)``, where it is nearly a straight line.
 
     ``gas`` (``omega_0^2`` of :mod:`twoball.modal.stiffness`, default 0) adds the
-    energy of the compressed gas to the balance (3.6) (:func:`gas_energy_shape`).
+    energy of the compressed gas to the balance (3.6) (:func:`gas_energy_shape`);
+    ``membrane`` (a :class:`~twoball.modal.membrane.Membrane`, default the
+    paper's) the energy of its ``-2 u^2 / R^2`` term when pressurised
+    (:meth:`~twoball.modal.membrane.Membrane.energy_shape`).
     """
     from twoball.modal.scalings import check_v0
 
@@ -123,7 +129,12 @@ def phi_a_from_v0(v0: float, radius: float, wave_speed: float, gas: float = 0.0)
     # Solve in y = log(pi - phi_a): with s = pi - phi_a the shape of (3.7) rises
     # monotonically from ~s^4/8 (s -> 0) to +inf (s -> pi/2); its logarithm is
     # ~ 4 y - log 8 for small s, so a bracket in y is refined quickly and uniformly.
+    pressurised = membrane is not None and membrane.pressurised
+
     def shape(phi_a: float) -> float:
+        if pressurised:
+            extra = gas_energy_shape(phi_a, gas) + membrane.energy_shape(phi_a)
+            return _energy_shape(phi_a) + extra
         if gas > 0.0:
             return _energy_shape(phi_a) + gas_energy_shape(phi_a, gas)
         return _energy_shape(phi_a)

@@ -12,7 +12,9 @@ import math
 from dataclasses import dataclass, replace
 from typing import Any
 
+from twoball.modal.damping import ModalRatio, Rayleigh
 from twoball.modal.initial import check_phi_a, phi_a_from_v0
+from twoball.modal.membrane import Membrane
 from twoball.modal.presets import MEASURED, Measured
 from twoball.modal.scalings import (
     BENDING_RANGE,
@@ -91,6 +93,16 @@ class Case:
         (§4(b)) and the gas pressure ``P + atmosphere``.  Unused otherwise.
     atmosphere : float
         Ambient pressure [Pa] (default 101325).
+    membrane : Membrane or {"paper", "pressurised"}
+        The membrane operator (:mod:`twoball.modal.membrane`): the paper's
+        ``omega_n^2 = n (n + 1)`` (default) or the one consistent with the
+        pressure, ``(n - 1)(n + 2)``, which needs a gas (docs/pressurised.rst).
+        Stored as a :class:`~twoball.Membrane`.
+    rayleigh : Rayleigh or None
+        A Rayleigh damping law in SI (alpha [1/s], beta [s]) instead of the
+        modal ratio D on every mode; ``Rayleigh()`` is fitted to D at the
+        lowest vibrating mode and at degree N (:attr:`damping_law`).  None:
+        the paper's ratio D, eq. (3.14).
     preset_name : str or None
         The preset whose measurements the case starts from (default
         ``basketball``, whose values are the defaults above); None for a case of
@@ -122,6 +134,8 @@ class Case:
     gas: str = "none"
     pressure: float | None = None
     atmosphere: float = ATMOSPHERE
+    membrane: Membrane | str = Membrane()
+    rayleigh: Rayleigh | None = None
 
     def __post_init__(self) -> None:
         object.__setattr__(self, "radius", check_radius(self.radius))
@@ -151,23 +165,42 @@ class Case:
         atmosphere = bounded("atmosphere", self.atmosphere, 0.0, PRESSURE_RANGE[1], "Pa")
         object.__setattr__(self, "bending", bending)
         object.__setattr__(self, "atmosphere", atmosphere)
+        object.__setattr__(self, "membrane", Membrane.of(self.membrane))
+        if self.rayleigh is not None and not isinstance(self.rayleigh, Rayleigh):
+            raise ParameterError("rayleigh", "a twoball.Rayleigh or None", self.rayleigh)
         self.stiffness  # noqa: B018 -- raises ParameterError when pressure is missing
 
     @property
     def stiffness(self) -> Stiffness:
-        """Dimensionless bending ratio beta and gas stiffness omega_0^2 (zero: membrane)."""
+        """The dimensionless spectrum: membrane operator, bending ratio beta, gas stiffness."""
         return stiffness_from_si(
             radius=self.radius,
             pressure=self.pressure,
             bending=self.bending,
             gas=self.gas,
             atmosphere=self.atmosphere,
+            membrane=self.membrane,
         )
 
     @property
     def stiff(self) -> bool:
-        """True when bending or gas departs from the paper's membrane."""
-        return self.bending > 0.0 or self.gas != "none"
+        """True when the membrane operator, bending or gas departs from the paper's membrane."""
+        return self.bending > 0.0 or self.gas != "none" or self.membrane.pressurised
+
+    @property
+    def damping_law(self) -> ModalRatio | Rayleigh:
+        """The damping law, dimensionless (units of c): what the solvers take.
+
+        ``ModalRatio(D)`` without :attr:`rayleigh`; else the Rayleigh law with
+        ``alpha / c`` and ``beta c``, or, for ``Rayleigh()``, the one whose ratio
+        is D at :meth:`~twoball.modal.stiffness.Stiffness.fit_band` (sqrt(2) and
+        ``sqrt(N (N + 1))`` for the paper's membrane).
+        """
+        if self.rayleigh is None:
+            return ModalRatio(self.damping)
+        if self.rayleigh.fitted:
+            return Rayleigh.fit(self.damping, *self.stiffness.fit_band(self.modes))
+        return self.rayleigh.scaled(self.wave_speed)
 
     @property
     def floor_time(self) -> float:
@@ -191,19 +224,26 @@ class Case:
                 and self.at_measured_point
             ):
                 return measured.phi_a, f"measured ({self.preset_name})"
-            return phi_a_from_v0(self.v0, self.radius, self.wave_speed, self.stiffness.gas), FROM_V0
+            return self._phi_a_from_v0(), FROM_V0
         phi_a = check_phi_a(self.phi_a)
         source = self.phi_a_source or "given"
         if source == "given":
             return phi_a, source
         if source == FROM_V0:  # kept through derive(): still the root of eq. (3.7)?
-            if phi_a == phi_a_from_v0(self.v0, self.radius, self.wave_speed, self.stiffness.gas):
+            if phi_a == self._phi_a_from_v0():
                 return phi_a, source
         if measured is not None and source == f"measured ({self.preset_name})":
             if self.at_measured_point and measured.phi_a is not None and phi_a == measured.phi_a:
                 return phi_a, source
         raise ParameterError(
             "phi_a_source", "None, 'given' or consistent with the preset", self.phi_a_source
+        )
+
+    def _phi_a_from_v0(self) -> float:
+        """Eq. (3.7) with the energies of the gas and of the membrane operator."""
+        stiffness = self.stiffness
+        return phi_a_from_v0(
+            self.v0, self.radius, self.wave_speed, stiffness.gas, stiffness.membrane
         )
 
     @property
@@ -249,9 +289,11 @@ class Case:
         return self.scalings.gamma
 
     def as_dict(self) -> dict[str, Any]:
-        """The case in SI, JSON-ready, with ``phi_a_source``.
+        """The case in SI, JSON-ready, with ``phi_a_source`` and ``membrane``.
 
-        Bending and gas keys (and beta, omega_0) appear only for a stiffened ball.
+        Bending and gas keys (and beta, omega_0^2 of the breathing mode) appear
+        only for a stiffened ball, ``rayleigh`` only with a Rayleigh law (SI and
+        dimensionless coefficients).
         """
         out = {
             "radius_m": self.radius,
@@ -263,6 +305,7 @@ class Case:
             "modes": self.modes,
             "g_m_s2": self.g,
             "preset": self.preset_name,
+            "membrane": self.membrane.kind,
         }
         if self.stiff:
             stiffness = self.stiffness
@@ -272,9 +315,25 @@ class Case:
                 pressure_Pa=self.pressure,
                 atmosphere_Pa=self.atmosphere,
                 beta=stiffness.beta,
-                omega0_squared=stiffness.gas,
+                omega0_squared=stiffness.breathing,
             )
+        if self.rayleigh is not None:
+            out["rayleigh"] = self.rayleigh_dict()
         return out
+
+    def rayleigh_dict(self) -> dict[str, Any]:
+        """The Rayleigh law in SI (``alpha_1_s``, ``beta_s``), units of c and ``fitted``."""
+        law = self.damping_law
+        if not isinstance(law, Rayleigh):
+            raise ParameterError("rayleigh", "a twoball.Rayleigh law in this case", None)
+        fitted = self.rayleigh.fitted
+        return {
+            "alpha_1_s": law.alpha * self.wave_speed if fitted else self.rayleigh.alpha,
+            "beta_s": law.beta / self.wave_speed if fitted else self.rayleigh.beta,
+            "alpha": law.alpha,
+            "beta": law.beta,
+            "fitted": fitted,
+        }
 
     def with_v0(self, v0: float) -> Case:
         """This case with a new impact speed; phi_a by the rule (see :class:`Case`)."""
@@ -286,8 +345,8 @@ class Case:
         Without ``phi_a`` in ``changes``, a new v0, c or R (or ``preset_name``)
         re-applies the rule: the preset's measured phi_a at its own values, eq.
         (3.7) elsewhere.  ``phi_a="eq. (3.7)"`` asks for eq. (3.7) explicitly.
-        ``gas`` and ``atmosphere`` re-apply the rule too (the gas's energy enters
-        eq. (3.7)); ``pressure`` is not a change here: it comes with the mass
+        ``gas``, ``atmosphere`` and ``membrane`` re-apply the rule too (their
+        energies enter eq. (3.7)); ``pressure`` is not a change here: it comes with the mass
         through :meth:`from_pressure`, which sets c and T together.
         This is how Fig. 12 varies one parameter at a time.
         """
@@ -303,7 +362,7 @@ class Case:
                 )
                 valid = "a field of Case, one of " + ", ".join(known) + hint
                 raise ParameterError(name, valid, None)
-        rule = ("v0", "wave_speed", "radius", "preset_name", "gas", "atmosphere")
+        rule = ("v0", "wave_speed", "radius", "preset_name", "gas", "atmosphere", "membrane")
         if "phi_a" in changes or any(k in changes for k in rule):
             changes = {"phi_a": None, **changes, "phi_a_source": None}
         return replace(self, **changes)
@@ -357,11 +416,13 @@ class Case:
         g: float = STANDARD_GRAVITY,
         bending: float = 0.0,
         gas: str = "none",
+        membrane: Membrane | str = "paper",
     ) -> Case:
         """A case of one's own measurements (no preset): c, or P and m; phi_a given or eq. (3.7).
 
         ``bending`` B [N m] and ``gas`` (:mod:`twoball.modal.stiffness`) need the
-        excess pressure P for the tension ``T = P R / 2``.
+        excess pressure P for the tension ``T = P R / 2``; ``membrane`` is the
+        operator (:mod:`twoball.modal.membrane`).
         """
         if wave_speed is None:
             if pressure is None or mass is None:
@@ -381,6 +442,7 @@ class Case:
             bending=bending,
             gas=gas,
             pressure=pressure,
+            membrane=membrane,
         )
 
 

@@ -135,11 +135,14 @@ class LiftoffReport:
             "recontact": self.recontact,
             "t_end_s": self.result.t_end * scale.time,
         }
-        if self.case.stiff:  # bending and gas (absent for the paper's membrane)
+        data["membrane"] = self.case.membrane.kind
+        if self.case.stiff:  # bending, gas, pressure term (absent for the paper's membrane)
             case = self.case.as_dict()
             for key in ("bending_N_m", "gas", "pressure_Pa", "atmosphere_Pa", "beta"):
                 data[key] = case[key]
             data["omega0_squared"] = case["omega0_squared"]
+        if self.case.rayleigh is not None:  # the law instead of D (a backend may add its table)
+            data["rayleigh"] = self.case.rayleigh_dict()
         data.update(self.extra)
         data["notes"] = self.notes
         data["warnings"] = list(self.warnings)
@@ -215,7 +218,7 @@ def legendre_liftoff(
 
     check_series(case.modes, t_end_dimensionless(case, t_end_s), t_end_s)
     series = legendre_series(
-        case.phi_a, case.damping, SpectralFilter(sigma, case.modes), stiffness=case.stiffness
+        case.phi_a, case.damping_law, SpectralFilter(sigma, case.modes), stiffness=case.stiffness
     )
     return report_liftoff(
         case,

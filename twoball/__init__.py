@@ -10,12 +10,15 @@ each name below imports its module on first use::
     fe = twoball.liftoff(case, backend="fem", mesh="axisym")
     print(result.t_liftoff_s, result.v_liftoff_m_s, result.case.phi_a_source)
 
-Public names: :class:`Case`, :func:`liftoff`, :func:`sweep`, :mod:`fem`
-(``fem.solve``, ``fem.eigen``), :func:`converge`, :func:`verify`,
-:func:`export`, :func:`render`, :func:`plot`, :class:`LiftoffReport`,
-:class:`MeshOptions`, :class:`ParameterError`, :class:`NumericalError`,
-:func:`report` (versions and platform), :mod:`provenance`, :mod:`progress`,
-``__version__``.  The command line ``twoball`` is a thin layer over these.
+Public names (``twoball.__all__``): the verbs :func:`liftoff`, :func:`sweep`,
+``fem.solve``, ``fem.eigen``, :func:`export`, :func:`render`, :func:`plot`,
+:func:`converge`, :func:`verify`, :func:`reproduce`, :func:`icm`,
+:func:`table1`, :func:`report`; the case and the option and model objects
+:class:`Case`, :class:`MeshOptions`, :class:`Stepping`, :class:`Body`,
+:class:`Membrane`, :class:`ModalRatio`, :class:`Rayleigh`, :class:`RenderOptions`,
+:class:`PlotOptions`; the results; :class:`Reporter` (progress),
+:class:`ParameterError`, :class:`NumericalError`, ``__version__``.  The
+command line ``twoball`` is a thin layer over these.
 """
 
 from __future__ import annotations
@@ -45,6 +48,7 @@ _NAMES: dict[str, str | tuple[str, str]] = {
     "Body": "twoball.modal.contact.body",
     "ModalRatio": "twoball.modal.damping",
     "Rayleigh": "twoball.modal.damping",
+    "Membrane": "twoball.modal.membrane",
     "RenderOptions": "twoball.verify.output.options",
     "PlotOptions": "twoball.verify.output.options",
     "ContactReport": "twoball.modal.contact.report",

@@ -125,9 +125,21 @@ def bundles(
 
 
 def with_damping(case: Any, law: Any) -> Any:
-    """``case`` with the paper's ratio of a :class:`ModalRatio` law (else as it is)."""
-    from twoball.modal.damping import ModalRatio
+    """``case`` with the verb's damping law folded in (None: the case as it is).
 
+    A :class:`ModalRatio` sets the paper's ratio D; a :class:`Rayleigh` law (SI,
+    or ``Rayleigh()`` fitted to D) becomes the case's ``rayleigh``, which every
+    solver reads through
+    :attr:`twoball.Case.damping_law`.  A law that contradicts the case's own
+    Rayleigh law is refused.
+    """
+    from twoball.modal.damping import ModalRatio, Rayleigh
+
+    if law is not None and case.rayleigh is not None and law != case.rayleigh:
+        valid = "left out when the case has its own Rayleigh law (one damping law)"
+        raise ParameterError("damping", valid, law.as_dict())
     if isinstance(law, ModalRatio) and law.ratio != case.damping:
         return case.derive(damping=law.ratio)
+    if isinstance(law, Rayleigh) and law != case.rayleigh:
+        return case.derive(rayleigh=law)
     return case

@@ -100,7 +100,12 @@ def export(
     case : Case, optional
         The impact (default the basketball preset).
     backend : {"fem", "legendre"}
-        Which solver's u, u_t, u_tt and lift-off are the main fields.
+        Which solver's u, u_t, u_tt and lift-off are the main fields.  ``fem``
+        (default) also solves the closed form for the comparison fields
+        ``u_legendre_m`` and ``u_diff_m``; ``legendre`` solves the closed form
+        alone (no finite elements: ``u_legendre_m``, no ``u_fem_m``/``u_diff_m``),
+        and refuses the finite elements' options (``stepping.route``,
+        ``mesh.initial``).
     mesh : MeshOptions, {"sphere", "ring"} or the user's mesh, optional
         The sphere (default the level-3 P2 icosphere; orders 1 and 2), or the
         user's sphere: a file any format meshio reads, of any radius, centre
@@ -161,15 +166,19 @@ def export(
         liftoff_frame,
         window_s,
     )
-    from twoball.verify.output.series import series_format, write_series
+    from twoball.verify.output.series import check_side_entries, series_format, write_series
 
     check_path_type(out)
     given, legacy_times = _field_bundles("twoball.export", mesh, stepping, body, deprecated)
     case = _case(case)
     fmt = series_format(out, format)
     target = check_file(out)
+    check_side_entries(target, fmt)
     check_backend(backend)
     t_end, route = _window(given)
+    solved = BACKENDS if backend == "fem" else (backend,)  # the closed form needs no FE solve
+    if "fem" not in solved and route != "auto":
+        raise ParameterError("route", "left out with backend legendre (no finite elements)", route)
     field = field_mesh(given.mesh, cells=True, load=False)
     frames, times = _frames(frames, legacy_times)
     if times is not None:
@@ -188,7 +197,7 @@ def export(
     model = ball_model(
         case,
         field,
-        backends=BACKENDS,
+        backends=solved,
         body=given.body,
         sigma=sigma,
         recontact=recontact,
@@ -405,12 +414,15 @@ def plot(
     progress: Step | None = None,
     **deprecated: Any,
 ) -> PlotResult:
-    """Figures: ``waterfall`` of u(phi) (Fig. 6), ``pole`` motion, FE ``eigen`` errors.
+    """Figures: ``waterfall`` (Fig. 6), ``pole`` motion, FE ``eigen`` errors, ``precursor``.
 
     Parameters
     ----------
-    kind : {"waterfall", "pole", "eigen"}
-        The figure.
+    kind : {"waterfall", "pole", "eigen", "precursor"}
+        The figure.  ``precursor``: the pole's displacement under the case's
+        damping law beside the other law matched to it and the undamped
+        membrane, with the motion before the wave front ``phi_a / c`` (closed
+        form; :mod:`twoball.verify.output.figures.precursor`).
     out : path
         Output file; its suffix chooses the format: any format matplotlib
         writes (``.pdf``, ``.svg``, ``.eps``, ``.png``, ...).
@@ -497,7 +509,39 @@ def plot(
     warnings: list[str] = []
     field = None
     say = progress or silent
-    if kind == "eigen":
+    if kind == "precursor":
+        from twoball.modal.report import t_end_dimensionless
+        from twoball.verify.output.figures.precursor import (
+            law_curves,
+            precursor_figure,
+            precursor_rows,
+        )
+
+        refused = {"backends": backends, "mesh": given.mesh, "instants": figure.instants}
+        refused |= {"levels": figure.levels, "orders": figure.orders}
+        refused |= {"max_degree": figure.max_degree}
+        for name, value in refused.items():
+            if value is not None:
+                shown = value.label if hasattr(value, "label") else value
+                valid = "left out with kind precursor (the closed form only)"
+                raise ParameterError(name, valid, shown)
+        if given.body is not None:
+            raise ParameterError(
+                "mass_ratio",
+                "left out with kind precursor (a massless body)",
+                given.body.mass_ratio,
+            )
+        if given.stepping is not None:
+            given.stepping.refuse("with kind precursor (the closed form)", "route")
+        case = _case(case)
+        sigma = "lanczos" if sigma is None else sigma
+        recontact = "window" if recontact is None else recontact
+        window = t_end_dimensionless(case, t_end)
+        say("the closed form under each damping law")
+        curves = law_curves(case, sigma, recontact, window)
+        drawn = precursor_figure(case, curves, window)
+        rows += precursor_rows(case, curves)
+    elif kind == "eigen":
         refused = {"case": case, "backends": backends, "mesh": given.mesh, "sigma": sigma}
         refused |= {"recontact": recontact, "instants": figure.instants}
         refused |= {"stepping": given.stepping}

@@ -54,8 +54,10 @@ def liftoff(
         An upper body of finite mass in unilateral contact (docs/contact.rst,
         :class:`~twoball.Body`); default the massless body of the paper.
     damping : ModalRatio or Rayleigh, optional
-        The damping law (default the paper's ratio D of the case on every mode,
-        eq. (3.14)); :class:`~twoball.Rayleigh` needs finite-element time stepping.
+        The damping law (default the case's: the paper's ratio D on every mode,
+        eq. (3.14), or its ``rayleigh``); :class:`~twoball.Rayleigh` in SI
+        (alpha [1/s], beta [s]; ``Rayleigh()`` fitted to D) on every backend
+        and scheme, each mode with its own ratio (docs/pressurised.rst).
     sigma : {"lanczos", "printed", "none"}
         Spectral filter, eq. (3.16).
     recontact : {"window", "paper"}
@@ -128,17 +130,12 @@ def liftoff(
 
 
 def _refuse_fem_options(given: Any, why: str = "with backend legendre") -> None:
-    """Refuse the mesh, the time steps and a Rayleigh law on the closed form."""
-    from twoball.modal.damping import Rayleigh
-
+    """Refuse the mesh and the time steps on the closed form."""
     if given.mesh is not None:
         shown = given.mesh.label if hasattr(given.mesh, "label") else given.mesh
         raise ParameterError("mesh", f"left out {why} (no mesh)", os.fspath(shown))
     if given.stepping is not None:
         given.stepping.refuse(f"{why} (no time steps)", "scheme", "dt", "route")
-    if isinstance(given.damping, Rayleigh):
-        valid = "the paper's modal ratio on the closed form (Rayleigh: fem with scheme alpha)"
-        raise ParameterError("damping", valid, "rayleigh")
 
 
 def _contact_liftoff(case: Case, backend: str, given: Any, sigma: str, recontact: str) -> Any:
@@ -148,12 +145,8 @@ def _contact_liftoff(case: Case, backend: str, given: Any, sigma: str, recontact
             "recontact", "window with mass_ratio (events are simulated)", recontact
         )
     if backend == "fem":
-        from twoball.modal.damping import Rayleigh
-
         if given.stepping is not None:
             given.stepping.refuse("with mass_ratio (modal route only)", "scheme", "dt", "route")
-        if isinstance(given.damping, Rayleigh):
-            raise ParameterError("damping", "a ModalRatio with mass_ratio", "rayleigh")
         from twoball.fem_membrane.contact import fem_contact_solution
         from twoball.fem_membrane.options import MeshOptions
 

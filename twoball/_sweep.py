@@ -50,7 +50,7 @@ class SweepResult:
     values: tuple[Any, ...] = field(default=(), compare=False, repr=False)
 
     def plot(self, out: str | os.PathLike[str]) -> Path:
-        """Write the figure of the sweep: v_l/|v0| and t_l against the parameter, or heat maps.
+        r"""Write the figure of the sweep: v_l / \|v0\| and t_l against the parameter, or heat maps.
 
         ``out``'s suffix chooses the format (``.png``, ``.pdf``, ``.svg``, ...).
         """

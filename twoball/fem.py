@@ -48,9 +48,11 @@ def solve(
         eqs. (3.14)-(3.16), or generalized-alpha), its step ``dt`` [s] (default
         omega_cut dt = 0.2) and the eigen ``route`` of modal superposition.
     damping : ModalRatio or Rayleigh, optional
-        The damping law: the case's ratio D on every mode (default), or
-        Rayleigh damping ``C = alpha M + beta K`` (generalized-alpha only;
-        ``Rayleigh()`` fits it to D at sqrt(2) and the filter's cutoff).
+        The damping law: the case's (default: ratio D on every mode), or
+        Rayleigh damping ``C = alpha M + beta K`` in SI (alpha [1/s], beta [s];
+        ``Rayleigh()`` fits it to D at the lowest vibrating mode and the
+        filter's cutoff), by modal superposition (each mode its ratio) or
+        generalized-alpha (the sparse matrix).
     sigma : {"lanczos", "printed", "none"}
         Spectral filter, eq. (3.16).
     recontact : {"window", "paper"}
@@ -75,7 +77,6 @@ def solve(
     >>> round(report.t_liftoff_s * 1e3, 2)
     9.88
     """
-    from twoball.modal.damping import Rayleigh
     from twoball.modal.stepping import Stepping
 
     given = bundles(
@@ -92,14 +93,11 @@ def solve(
     spec = MeshOptions.of(given.mesh)
     step = given.stepping or Stepping()
     scheme, dt, route, t_end = step.scheme or "modal", step.dt, step.route, step.t_end
-    rayleigh = isinstance(given.damping, Rayleigh)
-    if rayleigh and scheme != "alpha":
-        raise ParameterError(
-            "damping", "a ModalRatio with scheme modal (one ratio D per mode)", "rayleigh"
-        )
     from twoball._bundles import with_damping
 
     case = with_damping(case, given.damping)
+    law = case.rayleigh
+    rayleigh = law is not None
     from twoball.fem_membrane.solve import fem_pole_motion
     from twoball.modal.filters import SpectralFilter
     from twoball.modal.report import report_liftoff, t_end_dimensionless
@@ -138,7 +136,7 @@ def solve(
         order=spec.order if loaded is None else None,
         scheme=scheme,
         damping_model="rayleigh" if rayleigh else "modal",
-        rayleigh=given.damping if rayleigh and not given.damping.fitted else None,
+        rayleigh=law.scaled(case.wave_speed) if rayleigh and not law.fitted else None,
         dt=dt_scaled,
         t_end=t_end_dimensionless(case, t_end),
         route="auto" if route is None else route,
@@ -162,8 +160,15 @@ def solve(
         extra["mesh_description"] = loaded.description
     if "dt" in info:
         extra["dt_s"] = info["dt"] * case.scalings.time
-    if "rayleigh" in info:
-        extra["rayleigh"] = info["rayleigh"]
+    if "rayleigh" in info:  # coefficients in units of c, and in SI
+        c = case.wave_speed
+        extra["rayleigh"] = {
+            **info["rayleigh"],
+            "alpha_1_s": info["rayleigh"]["alpha"] * c if law.fitted else law.alpha,
+            "beta_s": info["rayleigh"]["beta"] / c if law.fitted else law.beta,
+        }
+    if case.membrane.pressurised:
+        extra["membrane"] = case.membrane.kind
     from twoball.fem_membrane.guards import fem_warnings
 
     # a user's mesh has no level: its resolution is not estimated (time step still is)
@@ -197,10 +202,15 @@ def eigen(
     mesh: Any = None,
     *,
     count: int = 25,
+    membrane: Any = "paper",
     progress: Step | None = None,
     **deprecated: Any,
 ) -> list[dict[str, float | int]]:
     """The lowest ``count`` nonzero eigenvalues of -Laplace-Beltrami beside l (l + 1), eq. (3.11).
+
+    With ``membrane="pressurised"``: those of ``K - 2 M`` beside ``(l - 1)(l + 2)``
+    (:class:`~twoball.Membrane`; l = 1, the free translation, is 0 up to the
+    mesh's eigenvalue error at l = 1).
 
     Parameters
     ----------
@@ -208,6 +218,8 @@ def eigen(
         As in :func:`solve` (default the level-3 P2 icosphere).
     count : int
         Nonzero eigenvalues listed, >= 1.
+    membrane : Membrane or {"paper", "pressurised"}
+        The membrane operator.
     progress : callable, optional
         Called with a short text as the solve starts (:class:`~twoball.Reporter`).
     **deprecated
@@ -232,8 +244,10 @@ def eigen(
     from twoball._common.budget import check, options
     from twoball.fem_membrane.cost import fem_dofs, fem_estimate
     from twoball.fem_membrane.eigen import eigen_table
+    from twoball.modal.membrane import Membrane
 
     spec = MeshOptions.of(given.mesh)
+    membrane = Membrane.of(membrane)
     if isinstance(count, bool) or not isinstance(count, Integral) or count < 1:
         raise ParameterError("count", "an integer >= 1", count)
     if spec.kind != "file":  # refuse absurd meshes before building them
@@ -243,7 +257,9 @@ def eigen(
     (progress or silent)(f"{count} eigenvalues on {spec.label}")
     loaded = spec.load()
     if loaded is not None:
-        return eigen_table(mesh=loaded.mesh, order=None, count=count, geometry=spec.geometry)
+        return eigen_table(
+            mesh=loaded.mesh, order=None, count=count, geometry=spec.geometry, membrane=membrane
+        )
     return eigen_table(
         mesh=spec.kind,
         level=spec.level,
@@ -251,4 +267,5 @@ def eigen(
         order=spec.order,
         count=count,
         geometry=spec.geometry,
+        membrane=membrane,
     )

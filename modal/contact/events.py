@@ -18,7 +18,10 @@ between two grid points is not missed.  Dimensionless throughout.
 from __future__ import annotations
 
 import math
+from collections.abc import Callable
 from dataclasses import dataclass, field
+from functools import cached_property
+from typing import Any
 
 import numpy as np
 from scipy.linalg import expm
@@ -30,6 +33,9 @@ from twoball._common.errors import NumericalError, ParameterError
 TIME_TOLERANCE = 1e-12
 MAX_EVENTS = 10000
 _DENSE_EXPM_MAX = 200  # state size up to which exp(A t) is formed densely for each root step
+_DENSE_WALK_MAX = 600  # state size up to which the grid is walked with a dense exp(A step)
+_TAYLOR_MAX_TERMS = 80  # beyond this the local Taylor series gives way to expm_multiply
+_UNIT_ROUNDOFF = 2.0**-53
 _ZENO_RATE = 1e-6  # |g'| (units R c) below which an impact is plastic: ends Zeno chains
 
 
@@ -83,25 +89,138 @@ class ContactHistory:
         return tuple(e for e in self.events if e.kind == "separation")
 
 
-class _Phase:
-    """Closed-form propagation ``exp(A t) z`` of one phase, with its grid step."""
+def grid_step(system: ContactSystem, samples_per_period: int = 32) -> float:
+    """The event grid's step: ``samples_per_period`` points per shortest modal period."""
+    return 2.0 * math.pi / (max(system.max_frequency, 1.0) * samples_per_period)
 
-    def __init__(self, matrix: np.ndarray, step: float) -> None:
+
+class LocalSeries:
+    """``exp(A tau) z`` for every ``tau`` in [0, h] from one truncated Taylor series.
+
+    ``c_j = (h A)^j z / j!`` is summed until two successive terms are below the
+    unit round-off of the largest term (the stopping rule of Al-Mohy and Higham's
+    ``expm_multiply``, Alg. 3.2, which scipy uses); ``exp(A tau) z = sum_j (tau/h)^j
+    c_j`` then costs one Horner sweep per time, and a scalar ``r . z(tau)`` a
+    polynomial in ``tau`` of the numbers ``r . c_j``.  On the event grid ``h`` is 1/32
+    of the shortest modal period, so ``|omega h| < 0.2`` and some 10-20 terms
+    suffice.  ``apply(z)`` is ``A z`` (:meth:`ContactSystem.apply`: O(n), not a
+    dense product).
+    """
+
+    def __init__(self, apply: Callable[[np.ndarray], np.ndarray], z: np.ndarray, h: float) -> None:
+        terms = [np.asarray(z, dtype=float)]
+        scale = float(np.abs(terms[0]).max(initial=0.0))
+        for j in range(1, _TAYLOR_MAX_TERMS + 1):
+            terms.append(apply(terms[-1]) * (h / j))
+            size = float(np.abs(terms[-1]).max(initial=0.0))
+            scale = max(scale, size)
+            if size + float(np.abs(terms[-2]).max(initial=0.0)) <= _UNIT_ROUNDOFF * scale:
+                break
+        else:  # pragma: no cover - |A h| is small on the event grid
+            raise NumericalError("contact: the local Taylor series did not converge")
+        self.terms = np.array(terms)
+        self.h = h
+
+    def at(self, tau: np.ndarray) -> np.ndarray:
+        """States at ``tau`` (shape (T,), each in [0, h]): shape (T, n)."""
+        s = np.atleast_1d(np.asarray(tau, dtype=float)) / self.h
+        out = np.repeat(self.terms[-1][None, :], s.size, axis=0)
+        for term in self.terms[-2::-1]:
+            out *= s[:, None]
+            out += term
+        return out
+
+    def scalar(self, row: np.ndarray) -> LocalScalar:
+        """``row . z(tau)`` as a polynomial in ``tau``."""
+        return LocalScalar(self.terms @ row, self.h)
+
+
+@dataclass(frozen=True)
+class LocalScalar:
+    """``sum_j (tau / h)^j a_j``: a scalar observable of a :class:`LocalSeries`."""
+
+    coefficients: np.ndarray
+    h: float
+
+    def __call__(self, tau: np.ndarray, _i: np.ndarray | None = None) -> np.ndarray:
+        s = np.atleast_1d(np.asarray(tau, dtype=float)) / self.h
+        out = np.full(s.shape, self.coefficients[-1])
+        for a in self.coefficients[-2::-1]:
+            out = out * s + a
+        return out
+
+
+class _Phase:
+    """Closed-form propagation ``exp(A t) z`` of one phase, with its grid step.
+
+    Small systems (state size up to :data:`_DENSE_EXPM_MAX`) form ``exp(A t)``
+    densely: ``grid_map = exp(A step)`` for the grid and ``expm`` at any offset.
+    Larger ones (``apply`` given) evaluate inside a step with a
+    :class:`LocalSeries` of ``A z`` products, O(n) each; they walk the grid with
+    the dense ``grid_map`` up to :data:`_DENSE_WALK_MAX` (one O(n^2) product a
+    step beats a dozen small products there) and with the local series beyond,
+    where forming ``exp(A step)`` (O(n^3)) and applying it would dominate the
+    export (finite-element spheres, n ~ 1600 at level 3, P2).
+    """
+
+    def __init__(
+        self,
+        matrix: np.ndarray,
+        step: float,
+        apply: Callable[[np.ndarray], np.ndarray] | None = None,
+    ) -> None:
         self.matrix = matrix
         self.step = step
-        self.grid_map = expm(matrix * step)
+        self.apply = apply if matrix.shape[0] > _DENSE_EXPM_MAX else None
+        self.walks_dense = self.apply is None or matrix.shape[0] <= _DENSE_WALK_MAX
 
-    def at(self, z: np.ndarray, tau: np.ndarray) -> np.ndarray:
-        """States at offsets ``tau`` (each in [0, step]) from ``z``.
+    @cached_property
+    def grid_map(self) -> np.ndarray:
+        """``exp(A step)`` (small systems)."""
+        return expm(self.matrix * self.step)
 
-        Small systems: the dense ``expm``; large ones (finite-element spheres with
-        hundreds of modes): ``expm_multiply``, a few matrix-vector products.
-        """
-        if self.matrix.shape[0] <= _DENSE_EXPM_MAX:
+    def local(self, z: np.ndarray) -> LocalSeries | None:
+        """The local series from ``z`` over one step (None for small systems)."""
+        return None if self.apply is None else LocalSeries(self.apply, z, self.step)
+
+    def next(self, z: np.ndarray, local: LocalSeries | None = None) -> np.ndarray:
+        """The state one grid step after ``z``."""
+        if self.walks_dense:
+            return self.grid_map @ z
+        local = self.local(z) if local is None else local
+        return local.at(np.array([self.step]))[0]  # type: ignore[union-attr]
+
+    def at(self, z: np.ndarray, tau: np.ndarray, local: LocalSeries | None = None) -> np.ndarray:
+        """States at offsets ``tau`` from ``z`` (each in [0, step] for large systems;
+        use :meth:`far` beyond)."""
+        if self.apply is None:
             return np.array([expm(self.matrix * t) @ z for t in np.atleast_1d(tau)])
-        from scipy.sparse.linalg import expm_multiply
+        local = self.local(z) if local is None else local
+        return local.at(tau)  # type: ignore[union-attr]
 
-        return np.array([expm_multiply(self.matrix * t, z) for t in np.atleast_1d(tau)])
+    def far(self, z: np.ndarray, offsets: np.ndarray) -> np.ndarray:
+        """States at any ``offsets`` >= 0 from ``z``: small systems one ``expm`` each,
+        large ones whole grid steps (:meth:`next`, as :func:`_advance`) and the rest
+        of a step from its local series."""
+        offsets = np.atleast_1d(np.asarray(offsets, dtype=float))
+        if self.apply is None:
+            return self.at(z, offsets)
+        out = np.empty((offsets.size, z.size))
+        cells = np.floor(offsets / self.step).astype(np.int64)
+        state, cell = z, 0
+        for i in np.argsort(offsets, kind="stable"):
+            while cell < cells[i]:
+                state, cell = self.next(state), cell + 1
+            out[i] = self.at(state, np.array([offsets[i] - cell * self.step]))[0]
+        return out
+
+
+def make_phases(system: ContactSystem, step: float) -> dict[str, _Phase]:
+    """The flight and the contact phase of ``system`` on the grid ``step``."""
+    return {
+        mode: _Phase(matrix, step, lambda z, mode=mode: system.apply(z, mode))
+        for mode, matrix in (("flight", system.flight_matrix), ("contact", system.contact_matrix))
+    }
 
 
 def integrate(
@@ -136,11 +255,8 @@ def integrate(
     if samples_per_period < 16:
         raise ParameterError("samples_per_period", "an integer >= 16", samples_per_period)
     omega = max(system.max_frequency, 1.0)
-    step = 2.0 * math.pi / (omega * samples_per_period)
-    phases = {
-        "flight": _Phase(system.flight_matrix, step),
-        "contact": _Phase(system.contact_matrix, step),
-    }
+    step = grid_step(system, samples_per_period)
+    phases = make_phases(system, step)
     skip = 1e-3 / omega  # round-off zone right after an event
     force = system.force_row
     events: list[ContactEvent] = []
@@ -244,7 +360,7 @@ def _separation(system: ContactSystem, t: float, z: np.ndarray) -> ContactEvent:
 def _advance(phase: _Phase, z: np.ndarray, duration: float) -> np.ndarray:
     steps = int(duration // phase.step)
     for _ in range(steps):
-        z = phase.grid_map @ z
+        z = phase.next(z)
     rest = duration - steps * phase.step
     return phase.at(z, np.array([rest]))[0] if rest > 0 else z
 
@@ -266,12 +382,16 @@ def _next_event(
     duration = t_end - t0
     while tau < duration:
         h = min(phase.step, duration - tau)
-        z_next = phase.grid_map @ z if h == phase.step else phase.at(z, np.array([h]))[0]
+        local = None if phase.walks_dense else phase.local(z)  # the step's and its search's
+        if h == phase.step:
+            z_next = phase.next(z, local)
+        else:
+            z_next = phase.at(z, np.array([h]), local)[0]
         lo = max(skip - tau, 0.0)  # offset inside this step where the search begins
         if lo < h:
-            hit = _in_step(phase, signal, rate, z, h, lo, z_next)
+            hit = _in_step(phase, signal, rate, z, h, lo, z_next, local)
             if hit is not None:
-                return tau + hit, phase.at(z, np.array([hit]))[0]
+                return tau + hit, phase.at(z, np.array([hit]), local)[0]
         z, tau = z_next, tau + h
     return None
 
@@ -284,17 +404,36 @@ def _in_step(
     h: float,
     lo: float,
     z_next: np.ndarray,
+    local: LocalSeries | None = None,
 ) -> float | None:
-    """First zero of ``signal . z(tau)`` crossed downwards in ``[lo, h]``, if any."""
+    """First zero of ``signal . z(tau)`` crossed downwards in ``[lo, h]``, if any.
 
-    def value(tau: np.ndarray, _i: np.ndarray | None = None) -> np.ndarray:
-        return phase.at(z, tau) @ signal
+    With a :class:`LocalSeries` of the step (systems above
+    :data:`_DENSE_EXPM_MAX`, built here when first needed) the signal and its
+    rate are polynomials in ``tau``; otherwise each value is a dense ``expm``.
+    """
+    found: dict[str, Any] = {}
 
-    def slope(tau: np.ndarray, _i: np.ndarray | None = None) -> np.ndarray:
-        return phase.at(z, tau) @ rate
+    def series() -> LocalSeries | None:
+        if "series" not in found:
+            found["series"] = local if local is not None else phase.local(z)
+        return found["series"]
+
+    def observable(row: np.ndarray, name: str) -> Callable[..., np.ndarray]:
+        def evaluate(tau: np.ndarray, _i: np.ndarray | None = None) -> np.ndarray:
+            near = series()
+            if near is None:
+                return phase.at(z, tau) @ row
+            if name not in found:
+                found[name] = near.scalar(row)
+            return found[name](tau)
+
+        return evaluate
+
+    value, slope = observable(signal, "value"), observable(rate, "slope")
 
     if lo > 0.0:
-        z_lo = phase.at(z, np.array([lo]))[0]
+        z_lo = phase.at(z, np.array([lo]), series())[0]
         start, s0 = float(signal @ z_lo), float(rate @ z_lo)
     else:
         start, s0 = float(signal @ z), float(rate @ z)

@@ -33,8 +33,14 @@ def check_contact_options(case: Case, body: Body) -> float:
     if not isinstance(body, Body):
         raise ParameterError("body", "a twoball.Body", type(body).__name__)
     if case.stiff:  # the contact system is built on the membrane's modes (eq. (3.11)) only
-        valid = "left out with bending or gas (the contact model has the membrane's modes only)"
+        valid = (
+            "left out with bending or gas, or the pressurised membrane (the contact model has "
+            "the paper's membrane modes only)"
+        )
         raise ParameterError("mass_ratio", valid, body.mass_ratio)
+    if case.rayleigh is not None:  # the contact system damps every mode by 2 D omega
+        valid = "left out with mass_ratio (the contact model takes the modal ratio D)"
+        raise ParameterError("rayleigh", valid, case.rayleigh.as_dict())
     radius = body.radius_m(case.radius)
     cap_angle(radius, case.radius)
     return radius

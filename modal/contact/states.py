@@ -15,7 +15,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 import numpy as np
-from twoball.modal.contact.events import _DENSE_EXPM_MAX, ContactHistory
+from twoball.modal.contact.events import _DENSE_EXPM_MAX, ContactHistory, grid_step, make_phases
 from twoball.modal.contact.system import ContactSystem
 from twoball.modal.contact.trajectory import phases
 
@@ -78,7 +78,12 @@ def modal_states(system: ContactSystem, history: ContactHistory, times: np.ndarr
     """``z`` and ``A z`` at ``times`` (dimensionless, within [0, ``history.t_end``]).
 
     Each time is evaluated from the start of its phase in closed form; many
-    evenly spaced times in one phase share one matrix exponential.
+    evenly spaced times in one phase share one matrix exponential.  Large
+    systems (finite-element spheres, state size above 200) walk the phase on the
+    event grid of :func:`~twoball.modal.contact.events.integrate`, each step and
+    the rest of a step a local Taylor series
+    (:class:`~twoball.modal.contact.events.LocalSeries`, O(n) products ``A z``)
+    instead of one ``expm_multiply`` over the whole offset per time.
     """
     times = np.atleast_1d(np.asarray(times, dtype=float))
     segments = phases(system, history)
@@ -89,11 +94,15 @@ def modal_states(system: ContactSystem, history: ContactHistory, times: np.ndarr
     rate = np.empty((times.size, size))
     touching = np.zeros(times.size, dtype=bool)
     which = np.maximum(np.searchsorted(starts, times, side="right") - 1, 0)
+    walkers = make_phases(system, grid_step(system))
     for j in np.unique(which):
         t0, z0, mode = segments[j]
         index = np.flatnonzero(which == j)
         offsets = times[index] - t0
-        state[index] = _propagate(matrices[mode], z0, offsets)
+        if size > _DENSE_EXPM_MAX:  # large: grid steps, then a local series
+            state[index] = walkers[mode].far(z0, np.maximum(offsets, 0.0))
+        else:
+            state[index] = _propagate(matrices[mode], z0, offsets)
         rate[index] = state[index] @ matrices[mode].T
         touching[index] = mode == "contact"
     return ModalStates(times, state, rate, touching, system.size)

@@ -88,7 +88,11 @@ class ContactSystem:
         """The contact system on a backend's :class:`ModalSeries` (every mode, filtered start).
 
         Modes the filter drops start at rest but are still forced by the contact.
+        The damping is the paper's ratio D (``2 D omega`` per mode): a series
+        under another law is refused.
         """
+        if not isinstance(series.damping, float):
+            raise ParameterError("damping", "the modal ratio D with a body of finite mass", "law")
         return cls(
             omega=series.omega,
             masses=series.mode_norms,
@@ -171,6 +175,31 @@ class ContactSystem:
         # the body moves with the cap: s'' = b . q''
         a[2 * k + 1] = self.contact @ a[k : 2 * k]
         return a
+
+    def apply(self, z: np.ndarray, mode: str) -> np.ndarray:
+        """``A z`` for the ``flight`` or ``contact`` matrix, in O(K) without forming ``A``.
+
+        The same rows as :attr:`flight_matrix` and :attr:`contact_matrix`:
+        ``q' = q'``, ``q'' = -omega^2 q - 2 D omega q' (- b Lambda / m in contact,
+        Lambda = l . z of eq. (C5))``, ``s' = s'``, ``s'' = -gamma`` in flight and
+        ``b . q''`` in contact, and 0 for the constant 1.
+        """
+        k = self.size
+        q, v = z[:k], z[k : 2 * k]
+        out = np.empty_like(z, dtype=float)
+        out[:k] = v
+        accel = -(self.omega**2) * q - (2.0 * self.damping * self.omega) * v
+        if mode == "contact":
+            accel = accel - (self.contact / self.masses) * float(self.force_row @ z)
+            out[2 * k + 1] = float(self.contact @ accel)
+        elif mode == "flight":
+            out[2 * k + 1] = -self.gamma * z[-1]
+        else:
+            raise ValueError("mode must be flight or contact")
+        out[k : 2 * k] = accel
+        out[2 * k] = z[2 * k + 1]
+        out[-1] = 0.0
+        return out
 
     # --- observables ------------------------------------------------------------------
     def gap(self, z: np.ndarray) -> np.ndarray:

@@ -8,7 +8,7 @@ Rebuilds the phases from a :class:`~twoball.modal.contact.events.ContactHistory`
 from __future__ import annotations
 
 import numpy as np
-from twoball.modal.contact.events import ContactHistory, _Phase
+from twoball.modal.contact.events import ContactHistory, grid_step, make_phases
 from twoball.modal.contact.system import ContactSystem
 
 
@@ -38,18 +38,16 @@ def sample(
     times = np.asarray(times, dtype=float)
     segments = phases(system, history)
     starts = np.array([s[0] for s in segments])
-    mats = {
-        "flight": _Phase(system.flight_matrix, 1.0),
-        "contact": _Phase(system.contact_matrix, 1.0),
-    }
+    mats = make_phases(system, grid_step(system))
     k = system.size
     states = np.empty((times.size, 2 * k + 3))
     touching = np.zeros(times.size, dtype=bool)
-    which = np.searchsorted(starts, times, side="right") - 1
-    for j, t in enumerate(times):
-        t0, z0, mode = segments[max(which[j], 0)]
-        states[j] = mats[mode].at(z0, np.array([t - t0]))[0]
-        touching[j] = mode == "contact"
+    which = np.maximum(np.searchsorted(starts, times, side="right") - 1, 0)
+    for j in np.unique(which):  # one walk per phase (large systems), expm per time (small)
+        t0, z0, mode = segments[j]
+        index = np.flatnonzero(which == j)
+        states[index] = mats[mode].far(z0, times[index] - t0)
+        touching[index] = mode == "contact"
     cap, cap_rate = system.cap_motion(states)
     return {
         "t": times,

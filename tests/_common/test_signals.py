@@ -1,14 +1,19 @@
 """Interrupts (SIGINT, SIGTERM) and killed parents (twoball._common.signals): outputs stay whole.
 
 Each command runs as ``python -m twoball`` in a subprocess that stops at a named
-stage of :mod:`twoball._common.staging` (``TWOBALL_TEST_PAUSE``) and is signalled there.
+stage of :mod:`twoball._common.staging` (``TWOBALL_TEST_PAUSE``) and is signalled
+there; inside VTK signals are held back and raised between frames.
 """
 
 from __future__ import annotations
 
 import json
+import os
 import signal
+import subprocess
+import sys
 import time
+from pathlib import Path
 
 import pytest
 from twoball.verify.output.series import read_series
@@ -25,6 +30,7 @@ from tests._common.commands import (
     start,
     wait_for_pause,
 )
+from twoball._common.signals import Interrupted, checkpoint, held_signals
 from twoball._common.staging import MARKER, foreign_entry
 
 SIGNALS = [(signal.SIGINT, 130), (signal.SIGTERM, 143)]
@@ -121,3 +127,83 @@ def test_workers_die_with_a_killed_parent(tmp_path):
     while any(running(k) for k in kids) and time.monotonic() < end:
         time.sleep(0.05)
     assert len(kids) >= 2 and not any(running(k) for k in kids)
+
+
+ROOT = Path(__file__).resolve().parents[2]
+
+
+EARLIER = b"GIF89a an earlier animation"
+
+
+RENDER = ["render", "-q", "--level", "1", "--frames", "60", "--size", "160x120"]
+
+
+def scratch_entries(folder: Path) -> list[Path]:
+    return [p for p in folder.iterdir() if p.name.startswith(".x.gif.twoball-scratch-")]
+
+
+def interrupted_render(folder: Path, signum: int, delay: float) -> tuple[int, str, float]:
+    """Render; signal it ``delay`` s after its scratch appears; status, stderr, latency."""
+    env = dict(os.environ, PYTHONPATH=str(ROOT), OPENBLAS_NUM_THREADS="1")
+    env.setdefault("VTK_DEFAULT_OPENGL_WINDOW", "vtkEGLRenderWindow")
+    env.pop("TWOBALL_TEST_PAUSE", None)
+    process = subprocess.Popen(
+        [sys.executable, "-m", "twoball", *RENDER, "--out", str(folder / "x.gif")],
+        cwd="/",
+        env=env,
+        stdout=subprocess.DEVNULL,
+        stderr=subprocess.PIPE,
+    )
+    end = time.monotonic() + 120
+    while not scratch_entries(folder) and process.poll() is None and time.monotonic() < end:
+        time.sleep(0.005)
+    assert process.poll() is None, "the render ended before its scratch appeared"
+    time.sleep(delay)
+    sent = time.monotonic()
+    process.send_signal(signum)
+    _, err = process.communicate(timeout=60)
+    return process.returncode, err.decode(), time.monotonic() - sent
+
+
+@pytest.mark.parametrize("delay", [0.2, 0.35, 0.5, 0.65])
+@pytest.mark.parametrize(("signum", "status"), [(signal.SIGINT, 130), (signal.SIGTERM, 143)])
+def test_interrupted_render_exits_cleanly_and_keeps_the_earlier_gif(
+    tmp_path, signum, status, delay
+):
+    out = tmp_path / "x.gif"
+    out.write_bytes(EARLIER)
+    code, err, latency = interrupted_render(tmp_path, signum, delay)
+    assert code == status, (code, err[-2000:])  # not -11 (SIGSEGV), not 0 (swallowed)
+    assert err.strip().splitlines() == ["twoball: interrupted"], err[-2000:]
+    assert out.read_bytes() == EARLIER
+    assert scratch_entries(tmp_path) == []
+    assert latency < 10.0  # a frame or two; generous for a loaded machine
+
+
+# --------------------------------------------------------------------------- the mechanism
+def test_held_signal_waits_for_the_checkpoint():
+    with pytest.raises(Interrupted) as raised:
+        with held_signals():
+            os.kill(os.getpid(), signal.SIGTERM)
+            time.sleep(0.05)  # the handler has run by now: recorded, not raised
+            reached = True
+            checkpoint()
+            pytest.fail("the checkpoint did not raise")  # pragma: no cover
+    assert reached and raised.value.exit_status == 143
+    checkpoint()  # nothing pending any more
+
+
+def test_held_signal_is_raised_at_the_end_of_the_block():
+    with pytest.raises(Interrupted) as raised:
+        with held_signals():
+            os.kill(os.getpid(), signal.SIGINT)
+            time.sleep(0.05)
+            done = True
+    assert done and raised.value.exit_status == 130
+
+
+def test_held_signals_restores_the_handlers():
+    before = {s: signal.getsignal(s) for s in (signal.SIGINT, signal.SIGTERM)}
+    with held_signals():
+        checkpoint()
+    assert {s: signal.getsignal(s) for s in before} == before

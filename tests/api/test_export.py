@@ -1,4 +1,4 @@
-"""twoball.export: the fields of both backends in SI, a body's path, the user's mesh file."""
+"""twoball.export: the fields in SI, the backends it solves, a body's path, the user's mesh."""
 
 from __future__ import annotations
 
@@ -127,9 +127,12 @@ def test_exported_membrane_carries_the_body_while_in_contact(exported):
 
 
 def test_small_mass_approaches_the_massless_field(tmp_path):
-    """Both backends' coupled fields tend to the free membrane at first order in mu."""
+    """Both backends' coupled fields tend to the free membrane at first order in mu.
+
+    The finite elements are the main backend, so the files hold both backends' u.
+    """
     times = [0.0, 2e-3, 6e-3, 12e-3]
-    common = {"backend": "legendre", "mesh": LEVEL_1, "frames": times}
+    common = {"backend": "fem", "mesh": LEVEL_1, "frames": times}
     twoball.export(tmp_path / "free.pvd", CASE, **common)
     free = read_series(tmp_path / "free.pvd")
     assert not free.frame_data
@@ -205,3 +208,44 @@ def test_warnings_of_a_file_are_those_of_its_liftoff(ball_files, ball_files_lift
         tmp_path / "y.vtu", BASKETBALL, mesh=twoball.MeshOptions(level=1, order=1)
     )
     assert any("under-resolves" in w for w in coarse.warnings)
+
+
+MESH = twoball.MeshOptions("sphere", level=1)
+
+
+def test_closed_form_export_solves_no_finite_elements(tmp_path):
+    said: list[str] = []
+    result = twoball.export(
+        tmp_path / "x.xdmf", mesh=MESH, backend="legendre", frames=2, progress=said.append
+    )
+    solving = [line for line in said if line.startswith("solving")]
+    assert solving == ["solving the closed form (legendre) on sphere L1 P2"], said
+    series = read_series(result.files[0])
+    assert "u_fem_m" not in series.point_data and "u_diff_m" not in series.point_data
+    assert series.point_data["u_m"].tobytes() == series.point_data["u_legendre_m"].tobytes()
+    assert "t_liftoff_fem_s" not in series.field_data
+    assert series.field_data["t_liftoff_s"] == series.field_data["t_liftoff_legendre_s"]
+
+
+def test_fem_export_says_it_solves_both(tmp_path):
+    said: list[str] = []
+    result = twoball.export(tmp_path / "x.xdmf", mesh=MESH, frames=2, progress=said.append)
+    solving = [line for line in said if line.startswith("solving")]
+    assert solving == [
+        "solving the finite elements (fem) and the closed form (legendre) on sphere L1 P2"
+    ]
+    series = read_series(result.files[0])
+    diff = series.point_data["u_fem_m"] - series.point_data["u_legendre_m"]
+    assert series.point_data["u_diff_m"].tobytes() == diff.tobytes()
+
+
+def test_closed_form_export_refuses_the_finite_elements_route(tmp_path):
+    with pytest.raises(twoball.ParameterError) as error:
+        twoball.export(
+            tmp_path / "x.xdmf",
+            mesh=MESH,
+            backend="legendre",
+            stepping=twoball.Stepping(route="full"),
+        )
+    assert error.value.name == "route"
+    assert list(tmp_path.iterdir()) == []

@@ -145,7 +145,7 @@ def test_liftoff_without_mass_ratio_is_unchanged():
             "level",
         ),
         (lambda: _contact(Body(0.1), recontact="paper"), "recontact"),
-        (lambda: _contact(Body(0.1), damping=twoball.Rayleigh()), "damping"),
+        (lambda: _contact(Body(0.1), damping=twoball.Rayleigh()), "rayleigh"),
     ],
 )
 def test_bad_contact_input_names_the_parameter(call, name):

@@ -3,6 +3,8 @@
 from __future__ import annotations
 
 import json
+import subprocess
+import sys
 
 import pytest
 
@@ -71,3 +73,28 @@ def test_cli_preset_equals_the_api_bit_for_bit(cli):
         assert data[key] == api[key]
     e = cli("--preset", "tennis", "--youngs-modulus", "6e6", "--thickness", "3.2e-3", "--json")
     assert json.loads(e.stdout)["t_liftoff_s"] == api["t_liftoff_s"]
+
+
+def _cli(*args: str) -> subprocess.CompletedProcess[str]:
+    return subprocess.run([sys.executable, "-m", "twoball", "--quiet", *args],
+                          capture_output=True, text=True, timeout=300)  # fmt: skip
+
+
+@pytest.mark.parametrize(
+    ("args", "flag"),
+    [
+        (["liftoff", "--membrane", "pressurised"], "--gas"),
+        (["liftoff", "--membrane", "flat"], "--membrane"),
+        (["eigen", "--membrane", "flat"], "--membrane"),
+        (["converge", "modes", "--membrane", "pressurised", "--gas", "adiabatic", "--pressure",
+          "77200", "--mass", "0.567", "--phi-a", "2.6", "--out", "/tmp/twoball-never-written"],
+         "--membrane"),
+        (["liftoff", "--membrane", "pressurised", "--gas", "adiabatic", "--pressure", "77200",
+          "--mass", "0.567", "--mass-ratio", "0.1"], "--mass-ratio"),
+    ],
+)  # fmt: skip
+def test_the_command_line_refuses_what_does_not_apply_in_one_line(args, flag):
+    done = _cli(*args)
+    assert done.returncode == 2
+    lines = done.stderr.strip().splitlines()
+    assert len(lines) == 1 and lines[0].startswith(f"twoball: error: {flag} "), done.stderr

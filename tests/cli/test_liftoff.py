@@ -161,3 +161,22 @@ def test_cli_refuses_unresolvable_speed_in_one_line():
     )
     assert done.returncode == 2
     assert done.stderr.count("\n") == 1 and "--v0 must be at least" in done.stderr
+
+
+def _cli_quiet(*args: str) -> subprocess.CompletedProcess[str]:
+    return subprocess.run([sys.executable, "-m", "twoball", "--quiet", *args],
+                          capture_output=True, text=True, timeout=300)  # fmt: skip
+
+
+def test_liftoff_command_runs_the_pressurised_ball_on_both_backends():
+    ball = ["--membrane", "pressurised", "--gas", "adiabatic", "--pressure", "77200",
+            "--mass", "0.567", "--json"]  # fmt: skip
+    closed = _cli_quiet("liftoff", *ball)
+    fem = _cli_quiet("liftoff", *ball, "--backend", "fem", "--mesh", "axisym", "--elements", "200")
+    assert closed.returncode == fem.returncode == 0, closed.stderr + fem.stderr
+    a, b = json.loads(closed.stdout), json.loads(fem.stdout)
+    assert a["membrane"] == b["membrane"] == "pressurised"
+    assert b["t_liftoff_s"] == pytest.approx(a["t_liftoff_s"], rel=1e-4)  # E = 200, P2
+    api = twoball.liftoff(twoball.Case.from_pressure(77200, 0.567, gas="adiabatic",
+                                                     membrane="pressurised"))  # fmt: skip
+    assert api.t_liftoff_s == a["t_liftoff_s"]

@@ -289,14 +289,51 @@ EXTRA: list[tuple[str, Callable[[Path], Any]]] = [
     ("mesh", lambda _: twoball.fem.solve(CASE, mesh=3)),
     ("view", lambda tmp: twoball.render(tmp / "x.png", CASE, mesh=LEVEL_1, view=(320, 240))),
     ("figure", lambda tmp: twoball.plot("eigen", tmp / "p.png", figure={"dpi": 100})),
+    # the membrane operator and the damping law (docs/pressurised.rst)
+    ("membrane", lambda _: twoball.Case(membrane="flat")),
+    ("gas", lambda _: twoball.Case(membrane="pressurised")),
+    ("membrane", lambda _: twoball.Membrane("flat")),
+    ("membrane", lambda _: twoball.fem.eigen(membrane="flat")),
+    ("alpha", lambda _: twoball.Rayleigh(-1.0, 0.0)),
+    ("beta", lambda _: twoball.Rayleigh(0.0, -1.0)),
+    ("rayleigh", lambda _: twoball.Case(rayleigh=(1.0, 0.0))),
+    (
+        "rayleigh",
+        lambda _: twoball.liftoff(damping=twoball.Rayleigh(1.0, 0.0), body=twoball.Body(0.1)),
+    ),
+    (
+        "damping",
+        lambda _: twoball.liftoff(
+            twoball.Case(rayleigh=twoball.Rayleigh(1.0, 0.0)), damping=twoball.ModalRatio(0.2)
+        ),
+    ),
+    (
+        "membrane",
+        lambda tmp: twoball.converge(
+            twoball.Case(pressure=77200.0, gas="adiabatic", membrane="pressurised"),
+            study="modes",
+            out=tmp / "c",
+        ),
+    ),
+    (
+        "rayleigh",
+        lambda tmp: twoball._studies.verify(
+            twoball.Case(rayleigh=twoball.Rayleigh()), fast=True, out=tmp / "r"
+        ),
+    ),
+    ("backends", lambda tmp: twoball.plot("precursor", tmp / "p.png", CASE, backends=["fem"])),
+    (
+        "param",
+        lambda _: twoball.sweep(
+            {"damping": [0.1, 0.2]}, twoball.Case(rayleigh=twoball.Rayleigh(1.0, 0.0))
+        ),
+    ),
     # options that do not apply
     ("mesh", lambda _: twoball.liftoff(CASE, mesh=M(level=3))),
     ("mesh", lambda _: twoball.liftoff(CASE, mesh="sphere")),
     ("dt", lambda _: twoball.liftoff(CASE, stepping=S(dt=1e-5))),
     ("scheme", lambda _: twoball.liftoff(CASE, stepping=S(scheme="alpha", dt=1e-5))),
     ("route", lambda _: twoball.liftoff(CASE, stepping=S(route="full"))),
-    ("damping", lambda _: twoball.liftoff(CASE, damping=twoball.Rayleigh())),
-    ("damping", lambda _: twoball.fem.solve(CASE, mesh="axisym", damping=twoball.Rayleigh())),
     ("level", lambda _: twoball.fem.solve(CASE, mesh=M("axisym", level=2))),
     ("elements", lambda _: twoball.fem.solve(CASE, mesh=M("ring", elements=50))),
     ("dt", lambda _: twoball.fem.solve(CASE, stepping=S(scheme="modal", dt=1e-5))),
@@ -326,6 +363,12 @@ EXTRA: list[tuple[str, Callable[[Path], Any]]] = [
     ("levels", lambda tmp: twoball.plot("eigen", tmp / "p.png", figure=P(levels=[-1]))),
     ("orders", lambda tmp: twoball.plot("eigen", tmp / "p.png", figure=P(orders=[7]))),
     ("frames", lambda tmp: twoball.export(tmp / "x.vtu", CASE, mesh=LEVEL_1, frames=5)),
+    (
+        "route",
+        lambda tmp: twoball.export(
+            tmp / "x.vtu", CASE, backend="legendre", stepping=twoball.Stepping(route="full")
+        ),
+    ),
     # mesh files of the field commands
     ("pole", lambda tmp: twoball.export(tmp / "x.vtu", CASE, mesh=M(level=1, pole=(0, 0, 1)))),
     ("pole", lambda tmp: twoball.render(tmp / "x.png", CASE, mesh=M(pole="0,0,1"))),

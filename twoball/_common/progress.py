@@ -88,7 +88,7 @@ class Reporter:
     stream : file, optional
         Where to write (default: standard error at the time of entering).
     terminal : bool, optional
-        Draw a rich bar (True) or print lines (False); default: whether
+        Draw one status line (True) or print lines (False); default: whether
         ``stream`` is a terminal.
     interval : float
         Seconds between two lines.

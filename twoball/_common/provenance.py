@@ -281,10 +281,6 @@ def report(additional: Sequence[str] = ()) -> Report:
     --------
     >>> import twoball
     >>> print(twoball.report())  # doctest: +SKIP
-
-    Examples
-    --------
-    >>> import twoball
     >>> sorted(twoball.report().as_dict())[:2]
     ['generated', 'packages']
     """

@@ -3,7 +3,10 @@
 :func:`raise_on_signals` turns both signals into :class:`Interrupted` (exit
 status 128 + signal number: 130, 143), so every ``finally`` runs and scratch is
 removed; :func:`deferred_signals` holds them back while a sequence of renames
-commits output (see :mod:`twoball._common.staging`) and raises afterwards.
+commits output (see :mod:`twoball._common.staging`) and raises afterwards;
+:func:`held_signals` holds them back while a foreign library runs (VTK: its
+imports, renders and callbacks) and :func:`checkpoint` raises them at a safe
+point in between (between two frames).
 
 Testing hook: with ``TWOBALL_TEST_PAUSE=STAGE`` in the environment,
 :func:`pause` prints ``twoball-test-pause: STAGE`` on standard error at that
@@ -100,6 +103,44 @@ def deferred_signals() -> Iterator[None]:
         if _deferral["depth"] == 0 and pending is not None:
             _deferral["pending"] = None
             raise Interrupted(pending)
+
+
+@contextlib.contextmanager
+def held_signals() -> Iterator[None]:
+    """Hold SIGINT/SIGTERM back while foreign code runs; :func:`checkpoint` raises them.
+
+    An exception raised inside a C++ library's callback, or inside the
+    initialisation of a C extension module being imported, may crash the
+    interpreter (measured: SIGSEGV when a signal reached VTK's module import,
+    ``render`` 0.5 s into its scratch) or be swallowed by the library, which
+    then carries on.  In this block the signal is only recorded; the caller
+    calls :func:`checkpoint` at safe points (between frames), and the end of
+    the block raises a signal still pending.  In the main thread, SIGINT with
+    Python's own handler and SIGTERM with the system's default get the handler
+    of :func:`raise_on_signals` for the block (a caller's own handler is left
+    alone), so API callers are covered as well as the command line.
+    """
+    installed = {}
+    if threading.current_thread() is threading.main_thread():
+        for s in _HANDLED:
+            current = signal.getsignal(s)
+            if current in (signal.default_int_handler, signal.SIG_DFL):
+                installed[s] = current
+                signal.signal(s, _raise_interrupted)
+    try:
+        with deferred_signals():
+            yield
+    finally:
+        for s, handler in installed.items():
+            signal.signal(s, handler)
+
+
+def checkpoint() -> None:
+    """Raise :class:`Interrupted` now for a signal held back so far (a safe point)."""
+    pending = _deferral["pending"]
+    if pending is not None:
+        _deferral["pending"] = None
+        raise Interrupted(pending)
 
 
 def pause(stage: str) -> None:

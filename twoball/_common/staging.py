@@ -338,6 +338,7 @@ def staged_collection(
     path: str | os.PathLike[str],
     param: str = "out",
     retire: Callable[[Path, Sequence[str]], Sequence[Path]] | None = None,
+    ours: Callable[[Path], bool] | None = None,
 ) -> Iterator[Path]:
     """Yield a scratch folder for a main file (named like ``path``) and its side entries.
 
@@ -347,7 +348,9 @@ def staged_collection(
     there with the same content it is kept (content-addressed names), otherwise
     it is refused unless twoball wrote it.  ``retire(out, new_names)`` lists
     earlier entries the new main file no longer refers to; they are removed
-    after the commit (only folders twoball wrote, files as given).
+    after the commit (only folders twoball wrote, files as given).  An existing
+    side *file* is replaced only if ``ours(existing)`` says twoball wrote it
+    (checked again just before the moves; without ``ours`` it is replaced).
     """
     out = check_file(path, param)
     with _scratch_dir(out) as scratch:
@@ -356,7 +359,7 @@ def staged_collection(
             raise FileNotFoundError(errno.ENOENT, "the writer wrote no main file", str(out))
         sides = sorted(p.name for p in scratch.iterdir() if p.name != out.name)
         for name in sides:  # refuse before anything moves
-            _check_side(scratch / name, out.parent / name, param)
+            _check_side(scratch / name, out.parent / name, param, ours)
         old = list(retire(out, sides)) if retire is not None else []
         pause("staged")
         with deferred_signals():
@@ -372,7 +375,9 @@ def staged_collection(
                     _remove(entry)
 
 
-def _check_side(new: Path, existing: Path, param: str) -> None:
+def _check_side(
+    new: Path, existing: Path, param: str, ours: Callable[[Path], bool] | None = None
+) -> None:
     if existing.is_symlink():
         raise _parameter_error(
             param, "a path whose side files are not symbolic links", f"{existing}"
@@ -388,6 +393,10 @@ def _check_side(new: Path, existing: Path, param: str) -> None:
             )
     elif existing.is_dir():
         raise _parameter_error(param, "a path whose side files are not folders", f"{existing}")
+    elif ours is not None and existing.exists() and not ours(existing):
+        raise _parameter_error(
+            param, "a path whose side files are missing or ones twoball wrote", f"{existing}"
+        )
 
 
 def _same_tree(a: Path, b: Path) -> bool:

@@ -54,6 +54,17 @@ def add_case_options(parser: argparse.ArgumentParser) -> None:
     stiff.add_argument(
         "--atmosphere", type=number, metavar="PA", help="ambient pressure [Pa] (101325)"
     )
+    stiff.add_argument(
+        "--membrane",
+        metavar="KIND",
+        help="membrane operator: paper (n(n+1), default) or pressurised ((n-1)(n+2), "
+        "consistent with T = P R / 2; needs --gas)",
+    )
+    group.add_argument(
+        "--rayleigh",
+        metavar="ALPHA,BETA",
+        help="Rayleigh damping C = alpha M + beta K instead of the ratio D: alpha [1/s], beta [s]",
+    )
     model = parser.add_argument_group("model")
     model.add_argument(
         "--sigma", choices=_choices.SIGMAS, default="lanczos", help="spectral filter (eq. (3.16))"
@@ -92,13 +103,29 @@ def case_from_options(args: argparse.Namespace) -> twoball.Case:
     if args.g != _choices.STANDARD_GRAVITY:
         changes["g"] = args.g
     changes.update(_stiffness_changes(args))
+    if getattr(args, "rayleigh", None) is not None:
+        if args.damping is not None:
+            valid = "left out with --rayleigh ALPHA,BETA (the law has its own coefficients)"
+            raise ParameterError("damping", valid, args.damping)
+        changes["rayleigh"] = rayleigh_option(args.rayleigh)
     if args.pressure is not None:
         return twoball.Case.from_pressure(args.pressure, args.mass, preset=args.preset, **changes)
     return twoball.Case.preset(args.preset, **changes)
 
 
 #: The options that describe the case (``--sigma`` etc. belong to the model).
-CASE_OPTIONS = ("radius", "wave_speed", "pressure", "mass", "v0", "phi_a", "damping", "modes")
+CASE_OPTIONS = (
+    "radius",
+    "wave_speed",
+    "pressure",
+    "mass",
+    "v0",
+    "phi_a",
+    "damping",
+    "modes",
+    "rayleigh",
+    "membrane",
+)
 
 
 def case_options_given(args: argparse.Namespace) -> bool:
@@ -108,6 +135,15 @@ def case_options_given(args: argparse.Namespace) -> bool:
         or args.preset != "basketball"
         or args.g != _choices.STANDARD_GRAVITY
     )
+
+
+def rayleigh_option(text: str) -> twoball.Rayleigh:
+    """``--rayleigh ALPHA,BETA`` (SI: alpha [1/s], beta [s]) as a :class:`~twoball.Rayleigh`."""
+    parts = [p.strip() for p in str(text).split(",")]
+    if len(parts) != 2:
+        raise ParameterError("rayleigh", "two numbers ALPHA,BETA (alpha [1/s], beta [s])", text)
+    alpha, beta = (number(p) for p in parts)
+    return twoball.Rayleigh(alpha, beta)
 
 
 def apply_limits(args: argparse.Namespace) -> None:
@@ -141,6 +177,8 @@ def _stiffness_changes(args: argparse.Namespace) -> dict[str, float | str]:
         )
     if args.gas is not None:
         changes["gas"] = args.gas
+    if getattr(args, "membrane", None) is not None:
+        changes["membrane"] = args.membrane
     if args.atmosphere is not None:
         changes["atmosphere"] = args.atmosphere
     return changes
@@ -151,4 +189,5 @@ __all__ = [
     "apply_limits",
     "case_from_options",
     "case_options_given",
+    "rayleigh_option",
 ]

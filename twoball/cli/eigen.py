@@ -20,15 +20,21 @@ def run(args: argparse.Namespace) -> int:
     from twoball._common.provenance import attach, block
 
     mesh = mesh_options(args)
+    membrane = "paper" if args.membrane is None else args.membrane
     with Reporter("eigen", delay=QUICK) as progress:
-        rows = twoball.fem.eigen(mesh, count=args.count, progress=progress)
+        rows = twoball.fem.eigen(mesh, count=args.count, membrane=membrane, progress=progress)
     spec = twoball.MeshOptions() if mesh is None else mesh
+    pressurised = twoball.Membrane.of(membrane).pressurised
     if args.json:
         arguments = {"mesh": spec.as_dict(), "count": args.count}
+        if args.membrane is not None:
+            arguments["membrane"] = args.membrane
         print_json(attach(rows, block(None, "twoball.fem.eigen", arguments)))
         return 0
-    table = Table(title=f"Eigenvalues of -Laplace-Beltrami: {spec.label}")
-    names = ("#", "l", "lambda (FE)", "l(l+1)", "rel. error", "cluster", "expected", "residual")
+    operator = "-Laplace-Beltrami - 2 (pressurised)" if pressurised else "-Laplace-Beltrami"
+    table = Table(title=f"Eigenvalues of {operator}: {spec.label}")
+    exact = "(l-1)(l+2)" if pressurised else "l(l+1)"
+    names = ("#", "l", "lambda (FE)", exact, "rel. error", "cluster", "expected", "residual")
     for name in names:
         table.add_column(name, justify="right")
     for r in rows:
@@ -56,6 +62,11 @@ def register(parser: argparse.ArgumentParser) -> None:
     add_mesh_options(parser, geometry=True)
     parser.add_argument(
         "--count", type=integer, default=25, help="nonzero eigenvalues listed (default 25)"
+    )
+    parser.add_argument(
+        "--membrane",
+        help="membrane operator: paper (K, beside l(l+1); default) or pressurised "
+        "(K - 2M, beside (l-1)(l+2))",
     )
     parser.add_argument(
         "--json",

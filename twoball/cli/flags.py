@@ -31,6 +31,10 @@ FLAGS: dict[str, str] = {
     "poisson": "--poisson",
     "gas": "--gas",
     "atmosphere": "--atmosphere",
+    "membrane": "--membrane",
+    "rayleigh": "--rayleigh",
+    "alpha": "--rayleigh",
+    "beta": "--rayleigh",
     # model
     "sigma": "--sigma",
     "recontact": "--recontact",
@@ -108,6 +112,9 @@ def flag_of(name: str, args: Namespace | None = None) -> str:
         return "--mesh-file"
     if name == "damping" and getattr(args, "damping_model", None) is not None:
         return "--damping-model"  # the law the option chose
+    if name == "rayleigh" and getattr(args, "rayleigh", None) is None:
+        if getattr(args, "damping_model", None) is not None:
+            return "--damping-model"  # the fitted law of --damping-model rayleigh
     if name == "frames" and getattr(args, "times", None) is not None:
         return "--times"
     if name == "frames" and getattr(args, "time", None) is not None:
@@ -116,7 +123,7 @@ def flag_of(name: str, args: Namespace | None = None) -> str:
         for option in ("preset", "radius", "wave_speed", "pressure", "mass", "v0", "phi_a"):
             if getattr(args, option, None) not in (None, "basketball"):
                 return FLAGS[option]
-        for option in ("damping", "modes", "g"):
+        for option in ("damping", "modes", "rayleigh", "membrane", "g"):
             if getattr(args, option, None) is not None and option != "g":
                 return FLAGS[option]
         return "--g"
@@ -132,12 +139,11 @@ def cli_message(error: ParameterError, args: Namespace | None = None) -> str:
     text = " ".join(str(error).split())  # one line
     from twoball._common.budget import BudgetError
 
-    if isinstance(error, BudgetError):  # "modes 100000 t_end 2 needs ...": every name a flag
-        words = text.split(" ")
-        return " ".join(
-            flag_of(w.rstrip(")"), args) + w[len(w.rstrip(")")) :] if w.rstrip(")") in FLAGS else w
-            for w in words
-        )
+    if isinstance(error, BudgetError):  # "modes 100000 t_end 2 needs ...": the names asked for
+        asked, _, rest = text.partition(" needs ")
+        words = [flag_of(w, args) if w in FLAGS else w for w in asked.split(" ")]
+        rest = rest.replace("max_memory)", "--max-memory)").replace("max_time)", "--max-time)")
+        return " ".join(words) + (" needs " + rest if rest else "")
     name = str(error.name)
     if text.startswith(name):
         return flag_of(name, args) + text[len(name) :]

@@ -30,16 +30,34 @@ __all__ = ["liftoff_rows", "register", "run"]
 
 
 def _stiffness_rows(case) -> list[tuple[str, str]]:
+    rows = []
+    if case.rayleigh is not None:
+        law = case.rayleigh_dict()
+        fitted = " (fitted to D)" if law["fitted"] else ""
+        rows.append(
+            (
+                "Rayleigh alpha [1/s], beta [s]" + fitted,
+                f"{law['alpha_1_s']:.4g}, {law['beta_s']:.4g}",
+            )
+        )
     if not case.stiff:
-        return []
+        return rows
     stiffness = case.stiffness
-    return [
+    return rows + [
+        ("membrane", case.membrane.kind),
         ("bending B [N m]", f"{case.bending:.4g}"),
         ("beta = B/(T R^2)", f"{stiffness.beta:.4g}"),
         ("gas", case.gas),
         ("P (excess) [Pa]", f"{case.pressure:g}"),
-        ("omega_0^2 (gas, units c^2)", f"{stiffness.gas:.4g}"),
+        ("omega_0^2 (breathing, units c^2)", f"{stiffness.breathing:.4g}"),
     ]
+
+
+def _ratio_text(case) -> str:
+    """D, or a dash when a Rayleigh law with its own coefficients replaces it."""
+    if case.rayleigh is not None and not case.rayleigh.fitted:
+        return "- (Rayleigh law)"
+    return f"{case.damping:g}"
 
 
 def liftoff_rows(report: twoball.LiftoffReport) -> list[tuple[str, str]]:
@@ -51,7 +69,7 @@ def liftoff_rows(report: twoball.LiftoffReport) -> list[tuple[str, str]]:
         ("|v0| [m/s]", f"{case.v0:g}"),
         ("phi_a [rad]", f"{case.phi_a:.6f}"),
         ("phi_a from", str(case.phi_a_source)),
-        ("D", f"{case.damping:g}"),
+        ("D", _ratio_text(case)),
         ("N", f"{case.modes}"),
         *_stiffness_rows(case),
         ("gamma = g/(R c^2)", f"{case.gamma:.4e}"),

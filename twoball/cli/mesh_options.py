@@ -110,7 +110,9 @@ def add_time_options(parser: argparse.ArgumentParser) -> None:
         help="time integration: modal (superposition, default) or alpha (generalized-alpha)",
     )
     group.add_argument(
-        "--damping-model", help="alpha only: modal (ratio D per mode, default) or rayleigh"
+        "--damping-model",
+        help="damping law: modal (ratio D on every mode, default) or rayleigh "
+        "(C = alpha M + beta K fitted to D at the lowest mode and omega_N); any backend",
     )
     group.add_argument(
         "--dt",
@@ -150,8 +152,15 @@ def stepping_options(args: argparse.Namespace) -> twoball.Stepping | None:
 
 
 def damping_options(args: argparse.Namespace) -> twoball.ModalRatio | twoball.Rayleigh | None:
-    """``--damping-model`` as a damping law: ``rayleigh`` fitted to D, ``modal`` the paper's."""
+    """``--damping-model`` as a damping law: ``rayleigh`` fitted to D, ``modal`` the paper's.
+
+    Refused beside ``--rayleigh ALPHA,BETA`` (a law of its own).
+    """
     law = getattr(args, "damping_model", None)
+    if law is not None and getattr(args, "rayleigh", None) is not None:
+        raise twoball.ParameterError(
+            "damping_model", "left out with --rayleigh ALPHA,BETA (one damping law)", law
+        )
     if law is None or law == "modal":
         return None
     if law == "rayleigh":

@@ -1,4 +1,4 @@
-"""``twoball plot waterfall|pole|eigen``: figures of the solution and of the FE spectrum.
+"""``twoball plot waterfall|pole|eigen|precursor``: figures of the solution and of the FE spectrum.
 
 A thin layer over :func:`twoball.plot`.
 """
@@ -102,7 +102,7 @@ def register(parser: argparse.ArgumentParser) -> None:
         "finite elements - closed form); eigen: FE eigenvalue errors against l(l+1) per "
         "level and order.  The suffix of --out chooses the format (.pdf, .svg, .eps, .png, ...)."
     )
-    parser.add_argument("kind", metavar="KIND", help="waterfall, pole or eigen")
+    parser.add_argument("kind", metavar="KIND", help="waterfall, pole, eigen or precursor")
     add_case_options(parser)
     add_mesh_options(parser, _choices.SPHERE_KINDS, initial=True, geometry=True)
     # None when not given: the API fills in the defaults and refuses what the kind does not use

@@ -189,7 +189,7 @@ def legendre_backend(
 ) -> Backend:
     """The closed form of eq. (3.16) with its Legendre modes at the nodes of ``mesh``."""
     series = legendre_series(
-        case.phi_a, case.damping, SpectralFilter(sigma, case.modes), stiffness=case.stiffness
+        case.phi_a, case.damping_law, SpectralFilter(sigma, case.modes), stiffness=case.stiffness
     )
     shapes = legendre_shapes(node_polar_angles(mesh), case.modes)
     report = report_liftoff(
@@ -353,6 +353,15 @@ def solve_backends(
     return BallModel(case, unit_mesh, solved, t_end, sigma, recontact, source=field.source)
 
 
+#: How progress lines name what a backend solves.
+SOLVED_TEXT = {"fem": "the finite elements (fem)", "legendre": "the closed form (legendre)"}
+
+
+def solved_text(backends: Sequence[str]) -> str:
+    """``the finite elements (fem) and the closed form (legendre)``: what is solved."""
+    return " and ".join(SOLVED_TEXT[name] for name in backends)
+
+
 def ball_model(
     case: Case,
     field: FieldMesh | None = None,
@@ -416,7 +425,7 @@ def ball_model(
         )
     if field.spec.kind == FILE and field.loaded is None:
         field = replace(field, loaded=field.spec.load())
-    say(f"solving {' and '.join(backends)} on {field.spec.label}")
+    say(f"solving {solved_text(backends)} on {field.spec.label}")
     return solve_backends(
         case, field, tuple(backends), sigma=sigma, recontact=recontact, t_end=t_end, route=route
     )
@@ -443,6 +452,12 @@ def series_metadata(model: BallModel, backend: str) -> dict[str, float]:
         "mesh_order": float(model.mesh.order),
         "nodes": float(len(model.mesh.points)),
     }
+    if case.membrane.pressurised:  # omega^2 = lambda - s (docs/pressurised.rst)
+        data["membrane_shift"] = case.membrane.shift
+    if case.rayleigh is not None:  # the law that replaces D, in SI
+        law = case.rayleigh_dict()
+        data["rayleigh_alpha_1_s"] = float(law["alpha_1_s"])
+        data["rayleigh_beta_s"] = float(law["beta_s"])
     if model.source is not None:  # the user's file: its own unit and frame
         data["mesh_file_radius"] = float(model.source["radius"])
         centre, pole = model.source["center"], model.source["pole"]
@@ -516,9 +531,20 @@ def case_text(model: BallModel, backend: str) -> str:
     return (
         f"twoball {backend}: R = {c.radius:g} m, c = {c.wave_speed:g} 1/s, v0 = {c.v0:g} m/s, "
         f"phi_a = {c.phi_a:.6g} rad ({c.phi_a_source}), D = {c.damping:g}, N = {c.modes}, "
-        f"g = {c.g:g} m/s^2; fields u_m [m], u_t_m_s [m/s], u_tt_m_s2 [m/s^2], "
-        "displacement_m [m]; time [s]"
+        f"g = {c.g:g} m/s^2; {_model_text(c)}fields u_m [m], u_t_m_s [m/s], "
+        "u_tt_m_s2 [m/s^2], displacement_m [m]; time [s]"
     )
+
+
+def _model_text(case: Case) -> str:
+    """The membrane operator and damping law when not the paper's ('' otherwise)."""
+    parts = []
+    if case.membrane.pressurised:
+        parts.append("membrane pressurised, omega^2 = (n - 1)(n + 2)")
+    if case.rayleigh is not None:
+        law = case.rayleigh_dict()
+        parts.append(f"Rayleigh alpha = {law['alpha_1_s']:.6g} 1/s, beta = {law['beta_s']:.6g} s")
+    return "".join(part + "; " for part in parts)
 
 
 def ball_scene(model: BallModel, times_s: np.ndarray, backend: str = "fem") -> BallScene:

@@ -28,6 +28,7 @@ from pathlib import Path
 import numpy as np
 
 from twoball._common.errors import ParameterError
+from twoball._common.signals import checkpoint, held_signals
 from twoball._common.staging import staged_file
 
 IMAGE_KINDS: tuple[str, ...] = (".png", ".gif", ".mp4")
@@ -333,13 +334,23 @@ def render_frames(
         Displacement magnification; None: :meth:`BallScene.auto_warp`.
     size : (int, int)
         Image width and height [px].
+
+    From the import of VTK to the closing of its window, SIGINT and SIGTERM
+    are held back (:func:`twoball._common.signals.held_signals`: an exception
+    inside VTK can crash the interpreter or be swallowed by it) and raised
+    between frames, before any frame is handed out.
     """
     warp = scene.auto_warp() if warp is None else check_warp(warp)
-    with quiet_vtk():
-        renderer = _Renderer(scene, warp, check_size(size))
+    size = check_size(size)
+    # VTK is imported and runs with SIGINT/SIGTERM held back: raised between frames
+    with held_signals(), quiet_vtk():
+        renderer = _Renderer(scene, warp, size)
         try:
             for k in range(scene.times.size):
-                yield renderer.frame(k)
+                checkpoint()
+                image = renderer.frame(k)
+                checkpoint()
+                yield image
         finally:
             renderer.close()
 

@@ -13,10 +13,14 @@ Three layouts, chosen by :func:`series_format` from ``--format`` or the suffix:
     the XML file instead.  Every time step is one uniform grid whose geometry and
     topology point at the same two HDF5 datasets (no separate mesh grid, so readers
     see one block, not a duplicate).  Series-wide scalars (lift-off time, case, ...)
-    and texts (provenance JSON, case) are grid-centred attributes of every step,
-    which VTK's ``vtkXdmfReader`` (ParaView, ``pyvista.read``) shows as field data
-    (texts as character arrays), and also ``<Information>`` elements of the domain
-    and attributes of the HDF5 root group.
+    and texts (provenance JSON, case) are grid-centred attributes, which VTK's
+    ``vtkXdmfReader`` (ParaView, ``pyvista.read``) shows as field data (texts as
+    ``UChar`` arrays of their UTF-8 bytes).  They sit in ``<Information>``
+    holders of the domain and each step pulls them in with ``xi:include``:
+    VTK's reader resolves the inclusion, meshio's ``TimeSeriesReader`` skips it
+    (it refuses grid-centred attributes among a step's own children).  The
+    same values are also ``<Information Name= Value=>`` elements of the domain
+    and attributes of the HDF5 root group, which carries :data:`H5_MARK` too.
 ``pvd``
     ``NAME.pvd`` (a ParaView collection, written here) listing one VTU per frame
     in the folder ``NAME_frames-ID/`` beside it (``NAME_0000.vtu``, ...), where
@@ -27,13 +31,15 @@ Three layouts, chosen by :func:`series_format` from ``--format`` or the suffix:
     A single frame in one ``.vtu`` file.
 
 Every VTU carries the series-wide scalars as VTK field data plus ``TimeValue``
-(the frame's time, which ParaView shows), and the texts as VTK string arrays
-(``<Array type="String">``, which meshio's VTU reader refuses: :func:`read_series`
-reads them itself).  All files go through
-:mod:`twoball._common.staging`: written into a scratch folder beside the target and
-moved into place only when complete, so an interrupted or failed run leaves the
-earlier output intact and no partial files.  The same series gives
-byte-identical files.
+(the frame's time, which ParaView shows), and the texts as ``UInt8`` arrays of
+their UTF-8 bytes: meshio's VTU reader refuses VTK string arrays (and
+``meshio.read`` then exits the interpreter), so texts are numbers in every
+format; :func:`text_value` turns such an array back into text.  All files go
+through :mod:`twoball._common.staging`: written into a scratch folder beside the
+target and moved into place only when complete, so an interrupted or failed run
+leaves the earlier output intact and no partial files.  Side entries the user
+did not name (``NAME.h5``, ``NAME_frames-*``) are replaced only if twoball wrote
+them (:func:`check_side_entries`).  The same series gives byte-identical files.
 """
 
 from __future__ import annotations
@@ -63,6 +69,13 @@ SUFFIXES: dict[str, str] = {"xdmf": ".xdmf", "vtu": ".vtu", "pvd": ".pvd"}
 CELL_TYPES: dict[int, str] = {3: "triangle", 6: "triangle6"}
 TIME_VALUE = "TimeValue"  # the VTK/ParaView name of a dataset's time in field data
 FRAME_DATA = "frame_data"  # the text listing the names of per-frame field data
+#: Attribute of the HDF5 root group that marks ``NAME.h5`` as written by :func:`write_xdmf`.
+H5_MARK = "twoball_series"
+H5_MARK_VALUE = "twoball.verify.output.series xdmf+h5"
+XINCLUDE = "http://www.w3.org/2001/XInclude"
+#: Names of the domain's ``<Information>`` holders of grid-centred attributes (XDMF).
+SERIES_HOLDER = "twoball:series-attributes"
+STEP_HOLDER = "twoball:step-attributes:{k}"
 
 
 @dataclass(frozen=True)
@@ -187,19 +200,47 @@ def series_format(path: str | os.PathLike[str], fmt: str | None = None) -> str:
     raise ParameterError("out", "a file name ending in " + ", ".join(SUFFIXES.values()), str(path))
 
 
+# --------------------------------------------------------------------------- texts
+def text_value(array: Any) -> str:
+    """A text of the field data as any reader returns it: its UTF-8 bytes as numbers.
+
+    Accepts a numpy array of bytes (``uint8`` or ``int8``: meshio, pyvista, VTK
+    through ``vtk.util.numpy_support``), a VTK string array's value as a str, or
+    a sequence of numbers.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> text_value(np.frombuffer("R = 0.12 m".encode(), dtype=np.uint8))
+    'R = 0.12 m'
+    """
+    if isinstance(array, str):
+        return array
+    values = np.asarray(array)
+    if values.dtype.kind in "US":  # a string array (VTK's reader on older files)
+        return str(values.ravel()[0])
+    codes = values.ravel().astype(np.int64) % 256  # int8 (VTK char) or uint8 bytes
+    return bytes(codes.astype(np.uint8)).decode("utf-8")
+
+
+def _text_codes(text: str) -> np.ndarray:
+    return np.frombuffer(text.encode("utf-8"), dtype=np.uint8)
+
+
 # --------------------------------------------------------------------------- VTU
-def _string_codes(text: str) -> str:
-    """A VTK ASCII string array's content: the UTF-8 bytes as numbers, 0-terminated."""
-    return " ".join(str(b) for b in text.encode("utf-8")) + " 0"
-
-
 def _field_element(field_data: Mapping[str, float], text: Mapping[str, str] = {}) -> ET.Element:  # noqa: B006
     element = ET.Element("FieldData")
-    for name, value in text.items():  # as vtkXMLWriter writes a vtkStringArray
+    for name, value in text.items():  # UTF-8 bytes: meshio refuses VTK string arrays
+        codes = _text_codes(value)
         array = ET.SubElement(
-            element, "Array", type="String", Name=name, NumberOfTuples="1", format="ascii"
+            element,
+            "DataArray",
+            type="UInt8",
+            Name=name,
+            NumberOfTuples=str(codes.size),
+            format="ascii",
         )
-        array.text = _string_codes(value)
+        array.text = " ".join(str(b) for b in codes.tolist())
     for name, value in field_data.items():
         if not math.isfinite(value):  # VTK's ASCII parser rejects nan: leave the entry out
             continue
@@ -290,6 +331,7 @@ def write_pvd(path: str | os.PathLike[str], series: TimeSeries) -> list[Path]:
     """
     out = Path(path).expanduser()
     names = [frame_name(out, k) for k in range(len(series))]
+    check_side_entries(out, "pvd")
     with staged_collection(out, retire=_earlier_frames) as scratch:
         frames = scratch / "frames"
         frames.mkdir()
@@ -335,12 +377,14 @@ class _XdmfWriter(TimeSeriesWriter):
         # Built in memory and written by Python at the end: a full disk is then an
         # OSError, not a cascade of HDF5 errors ending in a crash.
         self.h5_file = h5py.File(self.h5_filename, "w", driver="core", backing_store=False)
-        self.step_metadata: list[ET.Element] = []
+        self.h5_file.attrs[H5_MARK] = H5_MARK_VALUE
+        self.series_holder = ET.Element("Information", Name=SERIES_HOLDER)
         return self
 
     def __exit__(self, kind: object, *exc: object) -> None:
         try:
             if kind is None:
+                ET.register_namespace("xi", XINCLUDE)  # meshio maps the prefix elsewhere
                 write_xml(self.filename, self.xdmf_file)
                 self.h5_file.flush()
                 image = self.h5_file.id.get_file_image()
@@ -357,31 +401,52 @@ class _XdmfWriter(TimeSeriesWriter):
         self.mesh_parts = list(mesh)
 
     def write_metadata(self, field_data: Mapping[str, float], text: Mapping[str, str]) -> None:
-        """Series-wide scalars and texts: grid attributes of every step, domain Information,
-        HDF5 root attributes.  Call before the first :meth:`write_data`."""
+        """Series-wide scalars and texts: grid attributes of every step (through the
+        domain's holder :data:`SERIES_HOLDER`), domain Information, HDF5 root
+        attributes.  Call before the first :meth:`write_data`."""
         h5_name = os.path.basename(self.h5_filename)
         for name, value in text.items():
-            codes = np.frombuffer(value.encode("utf-8"), dtype=np.int8)
+            codes = _text_codes(value)
             self.h5_file.create_dataset(f"text/{name}", data=codes)
             self.h5_file.attrs[name] = value
             ET.SubElement(self.domain, "Information", Name=name, Value=value)
-            self.step_metadata.append(
-                _grid_attribute(name, "Char", "1", str(codes.size), f"{h5_name}:/text/{name}")
+            self.series_holder.append(
+                _grid_attribute(name, "UChar", "1", str(codes.size), f"{h5_name}:/text/{name}")
             )
         for name, value in field_data.items():
             ET.SubElement(self.domain, "Information", Name=name, Value=repr(value))
             self.h5_file.attrs[name] = value
             if math.isfinite(value):
-                self.step_metadata.append(_grid_attribute(name, "Float", "8", "1", repr(value)))
+                self.series_holder.append(_grid_attribute(name, "Float", "8", "1", repr(value)))
+        self.domain.append(self.series_holder)
 
-    def write_data(self, t: float, point_data: dict | None = None, cell_data: None = None) -> None:
+    def write_data(
+        self,
+        t: float,
+        point_data: dict | None = None,
+        cell_data: None = None,
+        step_data: Mapping[str, float] | None = None,
+    ) -> None:
+        """One time step: node data, and ``step_data`` (this step's own scalars)."""
         super().write_data(t, point_data, cell_data)
+        k = len(self.collection) - 1
         grid = self.collection[-1]
         grid.set("GridType", "Uniform")
         grid.remove(grid[0])  # meshio's xi:include of the separate mesh grid
-        for k, part in enumerate(self.mesh_parts):
-            grid.insert(k, copy.deepcopy(part))
-        grid.extend(copy.deepcopy(element) for element in self.step_metadata)
+        for j, part in enumerate(self.mesh_parts):
+            grid.insert(j, copy.deepcopy(part))
+        _include(grid, SERIES_HOLDER)
+        if step_data:
+            holder = ET.SubElement(self.domain, "Information", Name=STEP_HOLDER.format(k=k))
+            for name, value in step_data.items():
+                holder.append(_grid_attribute(name, "Float", "8", "1", repr(float(value))))
+            _include(grid, STEP_HOLDER.format(k=k))
+
+
+def _include(grid: ET.Element, holder: str) -> None:
+    """``xi:include`` of the attributes in the domain's ``<Information Name=holder>``."""
+    pointer = f"xpointer(//Information[@Name='{holder}']/*)"
+    ET.SubElement(grid, f"{{{XINCLUDE}}}include", xpointer=pointer)
 
 
 def _grid_attribute(name: str, kind: str, precision: str, size: str, data: str) -> ET.Element:
@@ -404,8 +469,10 @@ def write_xdmf(path: str | os.PathLike[str], series: TimeSeries) -> list[Path]:
 
     Readable with VTK's ``vtkXdmfReader`` (ParaView, ``pyvista.read``: one
     unstructured grid per time, the series-wide scalars and texts as field
-    data) and with :func:`read_series`.  meshio's ``TimeSeriesReader`` refuses the
-    grid-centred attributes that carry the field data.
+    data), with meshio's ``TimeSeriesReader`` (points, cells and the node data of
+    every step; it skips the ``xi:include`` of the grid-centred attributes) and
+    with :func:`read_series`.  ``NAME.h5`` is replaced only if twoball wrote it
+    (:func:`check_side_entries`).
 
     Returns
     -------
@@ -414,16 +481,15 @@ def write_xdmf(path: str | os.PathLike[str], series: TimeSeries) -> list[Path]:
     """
     out = Path(path).expanduser()
     h5_name = out.with_suffix(".h5").name
-    with staged_collection(out) as scratch:
+    check_side_entries(out, "xdmf")
+    with staged_collection(out, ours=is_twoball_h5) as scratch:
         target = scratch / out.name
         with _XdmfWriter(target) as writer:
             writer.write_points_cells(series.points, [(series.cell_type, series.cells)])
             writer.write_metadata(series.field_data, series.text)
             for k, time in enumerate(series.times):
-                writer.write_data(float(time), point_data=series.frame(k))
-                for name, values in series.frame_data.items():  # this step's own scalars
-                    value = repr(float(values[k]))
-                    writer.collection[-1].append(_grid_attribute(name, "Float", "8", "1", value))
+                own = {name: values[k] for name, values in series.frame_data.items()}
+                writer.write_data(float(time), point_data=series.frame(k), step_data=own)
         if not (scratch / h5_name).is_file():  # pragma: no cover - guards the workaround
             raise OSError(f"the HDF5 file {h5_name} was not written beside {out.name}")
     return [out, out.with_name(h5_name)]
@@ -457,11 +523,12 @@ def write_series(
 def read_series(path: str | os.PathLike[str]) -> TimeSeries:
     """Read a series written by :func:`write_series` (any of the three formats).
 
-    XDMF is read here (XML and h5py): meshio's ``TimeSeriesReader`` refuses the
-    grid-centred attributes of the field data (and ``meshio.read`` of a time
-    series exits the interpreter).  PVD and VTU go through meshio's VTU reader
-    after the string arrays (``provenance``, ``case``), which it refuses, are
-    taken out and read here.
+    A thin layer over meshio: XDMF through ``meshio.xdmf.TimeSeriesReader``
+    (points, cells, times, node data), the field data and texts from the
+    domain's ``<Information>`` elements, the per-frame scalars from the step
+    holders; PVD and VTU through ``meshio.read`` of each VTU, the texts decoded
+    from their bytes.  Files of twoball 0.2 (XDMF steps with grid-centred
+    attributes, VTU string arrays: both refused by meshio) are read too.
     """
 
     path = Path(path)
@@ -496,14 +563,49 @@ def _split_text(values: Mapping[str, str]) -> tuple[dict[str, float], dict[str, 
 
 def read_xdmf(path: Path) -> TimeSeries:
     """An XDMF series of :func:`write_xdmf` (also meshio's own layout, with a mesh grid)."""
-    import h5py
-
     root = ET.parse(path).getroot()
     domain = root.find("Domain")
     if domain is None:
         raise ValueError(f"{path}: no XDMF domain")
     collection = next(g for g in domain.iter("Grid") if g.get("GridType") == "Collection")
     steps = collection.findall("Grid")
+    try:
+        points, cells, times, frames = _meshio_steps(path)
+    except meshio.ReadError:  # twoball 0.2: grid-centred attributes among the steps' own
+        points, cells, times, frames = _parsed_steps(path, domain, steps)
+    info = {
+        i.get("Name", ""): i.get("Value", "nan")
+        for i in domain.findall("Information")
+        if i.get("Value") is not None
+    }
+    field_data, text = _split_text(info)
+    names = [n for n in text.get(FRAME_DATA, "").split(",") if n]
+    frame_data = {
+        n: np.array([_step_value(domain, g, k, n) for k, g in enumerate(steps)]) for n in names
+    }
+    return TimeSeries(
+        points, cells.astype(np.int64), times, stack(frames), field_data, text, frame_data
+    )
+
+
+def _meshio_steps(path: Path) -> tuple[np.ndarray, np.ndarray, list[float], list[dict]]:
+    """Points, cells, times and node data of every step, read by meshio."""
+    with meshio.xdmf.TimeSeriesReader(str(path)) as reader:
+        points, cells = reader.read_points_cells()
+        times, frames = [], []
+        for k in range(reader.num_steps):
+            t, point_data, _ = reader.read_data(k)
+            times.append(float(t))
+            frames.append({name: np.asarray(v) for name, v in point_data.items()})
+    return np.asarray(points), np.asarray(cells[0].data), times, frames
+
+
+def _parsed_steps(
+    path: Path, domain: ET.Element, steps: list[ET.Element]
+) -> tuple[np.ndarray, np.ndarray, list[float], list[dict]]:
+    """As :func:`_meshio_steps`, parsed here (files meshio refuses)."""
+    import h5py
+
     mesh = steps[0] if steps[0].find("Geometry") is not None else domain.find("Grid[@Name]")
     files: dict[str, Any] = {}
 
@@ -533,25 +635,25 @@ def read_xdmf(path: Path) -> TimeSeries:
     finally:
         for handle in files.values():
             handle.close()
-    info = {i.get("Name", ""): i.get("Value", "nan") for i in domain.findall("Information")}
-    field_data, text = _split_text(info)
-    names = [n for n in text.get("frame_data", "").split(",") if n]
-    frame_data = {n: np.array([_step_value(g, n) for g in steps]) for n in names}
-    return TimeSeries(
-        points, cells.astype(np.int64), times, stack(frames), field_data, text, frame_data
-    )
+    return points, cells, times, frames
 
 
-def _step_value(step: ET.Element, name: str) -> float:
-    """The scalar grid attribute ``name`` of one XDMF time step (per-frame field data)."""
-    for attribute in step.iter("Attribute"):
-        if attribute.get("Name") == name and attribute.get("Center") == "Grid":
-            return float((attribute.findtext("DataItem") or "nan").strip())
+def _step_value(domain: ET.Element, step: ET.Element, k: int, name: str) -> float:
+    """The scalar grid attribute ``name`` of XDMF time step ``k`` (per-frame field data)."""
+    holder = domain.find(f"Information[@Name='{STEP_HOLDER.format(k=k)}']")
+    for place in (holder, step):
+        for attribute in [] if place is None else place.iter("Attribute"):
+            if attribute.get("Name") == name and attribute.get("Center") == "Grid":
+                return float((attribute.findtext("DataItem") or "nan").strip())
     raise ValueError(f"frame data {name!r} missing in an XDMF time step")
 
 
 def read_vtu(path: Path) -> tuple[meshio.Mesh, dict[str, float], dict[str, str]]:
-    """One VTU: meshio reads mesh and numbers; the string arrays (which meshio refuses) here."""
+    """One VTU read by ``meshio.read``: mesh, numbers, and the texts (decoded from bytes).
+
+    A VTK string array (files of twoball 0.2), which meshio refuses, is taken out
+    and read here first.
+    """
     import tempfile
 
     tree = ET.parse(path)
@@ -570,9 +672,78 @@ def read_vtu(path: Path) -> tuple[meshio.Mesh, dict[str, float], dict[str, str]]
             mesh = meshio.read(str(plain), file_format="vtu")
     else:
         mesh = meshio.read(str(path), file_format="vtu")
-    fields = {name: float(np.asarray(v).ravel()[0]) for name, v in mesh.field_data.items()}
+    fields = {}
+    for name, values in mesh.field_data.items():
+        values = np.asarray(values)
+        if values.dtype == np.uint8:
+            text[name] = text_value(values)
+        else:
+            fields[name] = float(values.ravel()[0])
     return mesh, fields, text
 
 
 def stack(frames: list[dict[str, np.ndarray]]) -> dict[str, np.ndarray]:
     return {name: np.stack([f[name] for f in frames]) for name in frames[0]}
+
+
+# --------------------------------------------------------------------------- side entries
+def is_twoball_h5(path: Path) -> bool:
+    """True if ``path`` is an HDF5 file :func:`write_xdmf` wrote (root attribute
+    :data:`H5_MARK`, or, from twoball 0.2, a twoball provenance block)."""
+    import json
+
+    import h5py
+
+    try:
+        with h5py.File(path, "r") as h5:
+            if h5.attrs.get(H5_MARK) == H5_MARK_VALUE:
+                return True
+            provenance = h5.attrs.get("provenance")
+            if provenance is None:
+                return False
+            block = json.loads(provenance)
+    except (OSError, ValueError, TypeError):
+        return False
+    versions = block.get("versions") if isinstance(block, dict) else None
+    return isinstance(versions, dict) and "twoball" in block
+
+
+def check_side_entries(path: str | os.PathLike[str], fmt: str | None = None) -> None:
+    """Refuse, before any work, a side entry of ``path`` that twoball did not write.
+
+    ``NAME.xdmf`` writes ``NAME.h5`` beside it: an existing ``NAME.h5`` must be
+    an HDF5 file of :func:`write_xdmf` (:func:`is_twoball_h5`).  ``NAME.pvd``
+    writes a folder ``NAME_frames-ID``: every existing entry of that pattern
+    must be a folder twoball wrote (its marker, nothing else).  A ``.vtu`` has
+    no side entries.
+
+    Raises
+    ------
+    ParameterError
+        Naming ``out`` and the entry, for the one-line command-line error.
+    """
+    from twoball._common.staging import foreign_entry
+
+    out = Path(path).expanduser().absolute()
+    fmt = series_format(out, fmt)
+    if fmt == "xdmf":
+        side = out.with_suffix(".h5")
+        if side.is_symlink() or side.is_dir() or (side.exists() and not is_twoball_h5(side)):
+            raise ParameterError(
+                "out",
+                "a path whose side file NAME.h5 is missing or one twoball wrote",
+                f"{path} ({side.name} is there and twoball did not write it)",
+            )
+    elif fmt == "pvd":
+        pattern = _frames_pattern(out)
+        with contextlib.suppress(OSError):
+            for entry in sorted(out.parent.iterdir()):
+                if not pattern.fullmatch(entry.name):
+                    continue
+                ours = entry.is_dir() and not entry.is_symlink() and foreign_entry(entry) is None
+                if not ours:
+                    raise ParameterError(
+                        "out",
+                        "a path whose side folders NAME_frames-* are ones twoball wrote",
+                        f"{path} ({entry.name} is there and twoball did not write it)",
+                    )

@@ -8,6 +8,7 @@ CEM, the ICM touching limit (2.6) and Table 1's measured basketball rows.
 from __future__ import annotations
 
 import numpy as np
+from twoball.modal.contact.body import Body
 from twoball.modal.contact.report import legendre_contact
 from twoball.modal.icm.limits import touching_ratios
 from twoball.modal.icm.table1 import TABLE1
@@ -22,9 +23,9 @@ def part_contact(ctx: Context) -> Section:
     """The mu-curve of the finite-mass model against Table 1 (basketball rows) and the ICM."""
     case = Case.preset("basketball")
     rows = [r for r in TABLE1 if r.lower == "Basketball"]
-    ratios = [legendre_contact(case, float(mu)).ratio for mu in MASS_RATIOS]
+    ratios = [legendre_contact(case, Body(float(mu))).ratio for mu in MASS_RATIOS]
     massless = legendre_liftoff(case, reference=False).ratio
-    at_rows = {r.upper: legendre_contact(case, r.mu).ratio for r in rows}
+    at_rows = {r.upper: legendre_contact(case, Body(r.mu)).ratio for r in rows}
     fig, ax = new_figure(figsize=(6.6, 4.6))
     ax.semilogx(MASS_RATIOS, ratios, "o-", label="finite mass, a = R/10 (this model)")
     ax.axhline(massless, color="grey", ls="--", label="massless CEM (criteria (i)-(ii))")

@@ -77,9 +77,17 @@ def _check_parameter(parameter: str) -> str:
     return SWEEP_PARAMETERS[parameter]
 
 
+def _check_law(base: Case, field: str) -> None:
+    """Refuse sweeping D when the case's Rayleigh law has its own coefficients (D unused)."""
+    if field == "damping" and base.rayleigh is not None and not base.rayleigh.fitted:
+        valid = "a swept parameter that the case uses (its Rayleigh law has its own alpha, beta)"
+        raise ParameterError("param", valid, "damping")
+
+
 def sweep_cases(base: Case, parameter: str, values: Iterable[float]) -> list[Case]:
     """The cases of a sweep: ``base`` with one parameter varied (phi_a per eq. (3.7))."""
     field = _check_parameter(parameter)
+    _check_law(base, field)
     return [base.derive(**{field: _field_value(field, value)}) for value in values]
 
 
@@ -102,6 +110,8 @@ class SweepGrid:
     def cases(self, base: Case) -> list[Case]:
         """One case per grid point, in :meth:`indices` order; v0, c, R re-derive phi_a."""
         fields = [_check_parameter(p) for p in self.parameters]
+        for field in fields:
+            _check_law(base, field)
         out = []
         for index in self.indices():
             changes = {

@@ -10,6 +10,7 @@ module             figures
 ``energy``         energy decay of time stepping against the modal closed form
 ``study``          convergence studies: error against step, expected slopes
 ``sweep``          lift-off sweeps over one parameter or a grid of two
+``precursor``      the pole before the wave front under each damping law
 =================  ===========================================================
 
 Every ``*_figure`` function returns a :class:`matplotlib.figure.Figure` (no
@@ -33,7 +34,7 @@ DPI = 300
 DPI_RANGE = (50, 1200)
 #: Resolution of the PNGs of the verify, converge and reproduce reports (read on screen).
 REPORT_DPI = 150
-PLOT_KINDS: tuple[str, ...] = ("waterfall", "pole", "eigen")
+PLOT_KINDS: tuple[str, ...] = ("waterfall", "pole", "eigen", "precursor")
 LABELS = {"fem": "finite elements", "legendre": "closed form (3.16)"}
 #: Formats matplotlib lists but cannot write without more software (pgf needs LaTeX).
 UNSUPPORTED_FORMATS = frozenset({"pgf"})
