@@ -41,7 +41,13 @@ def _field_bundles(verb: str, mesh: Any, stepping: Any, body: Any, old: dict[str
     """The bundles of a field verb: mesh, stepping (window and route only) and body."""
     times = old.pop("times", None)
     given = bundles(
-        verb, mesh=mesh, stepping=stepping, body=body, old=old, takes=("mesh", "stepping", "body")
+        verb,
+        mesh=mesh,
+        stepping=stepping,
+        body=body,
+        old=old,
+        takes=("mesh", "stepping", "body"),
+        stacklevel=4,
     )
     if given.stepping is not None:
         given.stepping.refuse("with field outputs (modal superposition)", "scheme", "dt")
@@ -193,7 +199,7 @@ def export(
         raise ParameterError("frames", "exactly one time for a single .vtu file", list(times))
     field = field_mesh(given.mesh, cells=True)  # reads a file
     if times is not None:
-        check_frame_budget(case, len(times), "frames", field)
+        check_frame_budget(case, len(times), "times", field)
     else:
         check_frame_budget(case, frames or DEFAULT_FRAMES, "frames", field)
     say = progress or silent
@@ -549,12 +555,15 @@ def plot(
         drawn = precursor_figure(case, curves, window)
         rows += precursor_rows(case, curves)
     elif kind == "eigen":
+        if given.stepping is not None:  # the window and the time options name themselves
+            from twoball.modal.stepping import Stepping
+
+            given.stepping.refuse("with kind eigen (use levels, orders)", *Stepping.VALID)
         refused = {"case": case, "backends": backends, "mesh": given.mesh, "sigma": sigma}
         refused |= {"recontact": recontact, "instants": figure.instants}
-        refused |= {"stepping": given.stepping}
         for name, value in refused.items():
             if value is not None:
-                shown = type(value).__name__ if name in ("case", "stepping") else value
+                shown = type(value).__name__ if name == "case" else value
                 shown = shown.label if hasattr(shown, "label") else shown
                 raise ParameterError(name, "left out with kind eigen (use levels, orders)", shown)
         levels, orders = eigen_sizes(figure.levels, figure.orders, figure.max_degree)

@@ -18,6 +18,7 @@ from pathlib import Path
 import pytest
 from twoball.verify.output.series import read_series
 
+from tests import ROOT
 from tests._common.commands import (
     FAST,
     FILE_WRITERS,
@@ -127,9 +128,6 @@ def test_workers_die_with_a_killed_parent(tmp_path):
     while any(running(k) for k in kids) and time.monotonic() < end:
         time.sleep(0.05)
     assert len(kids) >= 2 and not any(running(k) for k in kids)
-
-
-ROOT = Path(__file__).resolve().parents[2]
 
 
 EARLIER = b"GIF89a an earlier animation"

@@ -23,6 +23,7 @@ from twoball.cli.mesh_options import (
     add_time_options,
     damping_options,
     mesh_options,
+    refuse_mesh_flags,
     stepping_options,
 )
 
@@ -141,6 +142,8 @@ def solve_from_options(args: argparse.Namespace) -> twoball.LiftoffReport:
     """Call :func:`twoball.liftoff` with the case, model, mesh, time and body options."""
     from twoball._common.progress import QUICK, Reporter
 
+    if args.backend != "fem":
+        refuse_mesh_flags(args, "with backend legendre (no mesh)")
     options = {
         "backend": args.backend,
         "sigma": args.sigma,

@@ -713,6 +713,8 @@ def check_frame_budget(case: Case, count: int, name: str, field: FieldMesh) -> N
         if name in ("instants", "frames"):  # a count
             low = 2 if name == "instants" else 1
             raise ParameterError(name, f"an integer in [{low}, {MAX_FRAMES}]", count)
+        if name == "times":  # frames given as their times
+            raise ParameterError("frames", f"at most {MAX_FRAMES} times [s]", f"{count} times")
         raise ParameterError(name, f"at most {MAX_FRAMES} {name}", f"{count} {name}")
     spec = field.spec
     mesh = spec.kind if field.loaded is None else field.loaded.mesh

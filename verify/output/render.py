@@ -159,11 +159,14 @@ def round_size(size: tuple[int, int], block: int = MACRO_BLOCK) -> tuple[int, in
 
 def check_warp(warp: float | None, flag: str = "warp") -> float | None:
     """A warp factor: None (automatic) or a finite number >= 0."""
+    from twoball._common.errors import real_number
+
     if warp is None:
         return None
-    if isinstance(warp, bool) or not math.isfinite(float(warp)) or float(warp) < 0.0:
+    value = real_number(flag, warp, "a finite number >= 0 (or auto)")
+    if value < 0.0:
         raise ParameterError(flag, "a finite number >= 0 (or auto)", warp)
-    return float(warp)
+    return value
 
 
 def check_scene_warp(scene: BallScene, warp: float | None, flag: str = "warp") -> None:

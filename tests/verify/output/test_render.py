@@ -5,16 +5,23 @@ With or without a body of finite mass; sizes, warps, colour bar, unfinished MP4s
 
 from __future__ import annotations
 
+import math
+from pathlib import Path
+
 import imageio.v3 as iio
 import numpy as np
 import pytest
 from twoball.modal.parameters import preset
 from twoball.verify.output.fields import (
+    ball_model,
     ball_scene,
     contact_scene,
+    field_mesh,
     liftoff_frame,
 )
 from twoball.verify.output.render import (
+    AUTO_WARP_LIMIT,
+    AUTO_WARP_SHARE,
     BallScene,
     check_size,
     check_warp,
@@ -191,3 +198,38 @@ def test_unwritable_output_leaves_nothing(model, tmp_path):
     with pytest.raises(ParameterError, match="out"):
         render_scene(tmp_path / "ball.jpg", scene)
     assert list(tmp_path.iterdir()) == []
+
+
+# --- The automatic warp of an animation shows the vibration, not only the initial flattening
+
+CASE = twoball.Case.preset("basketball")
+MESH = twoball.MeshOptions("sphere", level=1)
+FRAMES = 12
+
+
+def test_animation_warp_makes_the_wave_visible(tmp_path: Path) -> None:
+    model = ball_model(CASE, field_mesh(MESH), backends=("fem",))
+    times = np.linspace(0.0, model.t_end_s, FRAMES)
+    scene = ball_scene(model, times, "fem")
+    radius = CASE.radius
+    largest = float(np.abs(scene.u).max())
+    wave = float(np.abs(scene.u[times >= math.pi / CASE.wave_speed]).max())
+    warp = scene.auto_warp()
+    assert warp == pytest.approx(
+        min(AUTO_WARP_SHARE * radius / wave, AUTO_WARP_LIMIT * radius / largest), rel=1e-12
+    )
+    assert largest > 10 * wave  # the flattening dwarfs the waves ...
+    assert warp > 5 * AUTO_WARP_SHARE * radius / largest  # ... and no longer sets the warp
+    assert warp * wave > 0.04 * radius  # the wave drawn at >= 4 % of R (old: < 1 %)
+    assert warp * largest <= AUTO_WARP_LIMIT * radius * (1 + 1e-12)  # the ball never folds
+    result = twoball.render(
+        tmp_path / "ball.gif", mesh=MESH, frames=FRAMES, view=twoball.RenderOptions(size="64x48")
+    )
+    assert result.warp == pytest.approx(warp, rel=1e-12)
+
+
+def test_a_single_late_picture_keeps_the_old_rule() -> None:
+    model = ball_model(CASE, field_mesh(MESH), backends=("fem",))
+    scene = ball_scene(model, np.array([0.02]), "fem")
+    largest = float(np.abs(scene.u).max())
+    assert scene.auto_warp() == pytest.approx(AUTO_WARP_SHARE * CASE.radius / largest)

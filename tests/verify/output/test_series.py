@@ -34,6 +34,7 @@ from vtkmodules.vtkIOXdmf2 import vtkXdmfReader
 from vtkmodules.vtkIOXML import vtkXMLUnstructuredGridReader
 
 import twoball
+from tests import ROOT
 from tests.helpers import text_of
 from tests.verify.output.nodal import closed_form, fem_values
 from twoball._common.errors import ParameterError
@@ -457,9 +458,6 @@ def test_provenance_events_and_liftoff_travel_with_every_export(exports, fmt, re
         assert float(np.ravel(fields["v_liftoff_m_s"])[0]) == report.v_liftoff_m_s
         assert float(np.ravel(fields["mass_ratio"])[0]) == 0.1
         assert "R = 0.12 m" in text_value(fields["case"])
-
-
-ROOT = Path(__file__).resolve().parents[3]
 
 
 MESH = twoball.MeshOptions("sphere", level=1)

@@ -25,7 +25,8 @@ from pathlib import Path
 
 import pytest
 
-ROOT = Path(__file__).resolve().parents[2]
+from tests import ROOT
+
 TERMINAL_GAP_S = 1.0
 LOG_GAP_S = 10.0
 INTERRUPT_S = 1.0
