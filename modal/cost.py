@@ -29,6 +29,7 @@ from twoball._common.budget import BASE_MEMORY, Estimate, check, options
 
 __all__ = [
     "check_series",
+    "decaying_memory",
     "decaying_work",
     "grid_samples",
     "legendre_omega",
@@ -82,11 +83,12 @@ def _omegas(modes: int, stiffness: Stiffness | None) -> np.ndarray:
     return np.sqrt(n * (n + 1.0))
 
 
-def decaying_work(omega: np.ndarray, damping: float, t_end: float) -> tuple[float, float]:
-    """Samples and summed terms of a blockwise-decayed series (DecayingSeries' blocks).
+def _decaying_blocks(omega: np.ndarray, damping: float, t_end: float) -> list[tuple[int, int]]:
+    """(samples, modes summed) of each block of a blockwise-decayed series.
 
     Blocks ``[0, tau), [tau, 2 tau), ...`` (``tau = 1 / omega_max``); on each, the
-    modes with ``D omega t_start < 40`` at 16 samples per period of the highest.
+    modes with ``D omega t_start < 40`` at 16 samples per period of the highest
+    (:class:`twoball.modal.decay.DecayingSeries`).
     """
     omega = np.sort(np.asarray(omega, dtype=float))
     top = max(float(omega[-1]), 1.0)
@@ -94,16 +96,33 @@ def decaying_work(omega: np.ndarray, damping: float, t_end: float) -> tuple[floa
     while tau < t_end:
         starts.append(tau)
         tau *= 2.0
-    samples = work = 0.0
+    blocks = []
     for start, end in zip(starts, [*starts[1:], t_end], strict=True):
         count = omega.size
         if damping > 0.0 and start > 0.0:
             count = int(np.searchsorted(omega, DECAYED / (damping * start), side="right"))
         highest = max(float(omega[count - 1]) if count else 0.0, 1.0)
         block = math.ceil((end - start) * highest * SAMPLES_PER_PERIOD / (2 * math.pi)) + 1
-        samples += block
-        work += block * count
-    return samples, work
+        blocks.append((block, count))
+    return blocks
+
+
+def decaying_work(omega: np.ndarray, damping: float, t_end: float) -> tuple[float, float]:
+    """Samples and summed terms of a blockwise-decayed series (:func:`_decaying_blocks`)."""
+    blocks = _decaying_blocks(omega, damping, t_end)
+    return float(sum(b for b, _ in blocks)), float(sum(b * n for b, n in blocks))
+
+
+def decaying_memory(omega: np.ndarray, damping: float, t_end: float) -> float:
+    """Peak bytes of a blockwise-decayed series: the largest block's exponential table.
+
+    Each block is summed in chunks of at most :data:`~twoball.modal.series.CHUNK`
+    samples: ``24 min(samples, CHUNK) K`` bytes for its K modes, plus the grid's
+    ``48`` bytes per sample.
+    """
+    blocks = _decaying_blocks(omega, damping, t_end)
+    samples = sum(b for b, _ in blocks)
+    return max(24.0 * min(b, CHUNK) * n for b, n in blocks) + 48.0 * samples
 
 
 def reference_estimate(
@@ -123,8 +142,9 @@ def reference_estimate(
     start = max(int(modes), 30)
     memory = seconds = 0.0
     for n in (2 * start, 4 * start):
-        samples, work = decaying_work(_omegas(n, stiffness), damping, t_end)
-        memory = max(memory, 24.0 * CHUNK * (n + 1) + 48.0 * samples)
+        omega = _omegas(n, stiffness)
+        _, work = decaying_work(omega, damping, t_end)
+        memory = max(memory, decaying_memory(omega, damping, t_end))
         seconds += SECONDS_PER_TERM * work
     if damping == 0.0:  # nothing decays: the root is followed with every mode, 4 doublings
         for n in (2 * start, 4 * start, 8 * start, 16 * start):  # (the changes stop shrinking)

@@ -16,7 +16,22 @@ from typing import Any
 
 from twoball._common.errors import ParameterError
 
-__all__ = ["Bundles", "bundles", "with_damping"]
+__all__ = ["Bundles", "bundles", "warn_deprecated", "with_damping"]
+
+
+def warn_deprecated(message: str) -> None:
+    """A :class:`DeprecationWarning` attributed to the caller's line, outside twoball.
+
+    The verbs reach here through wrappers and helpers of different depths, so the
+    stack level is found by walking out of the package's frames.
+    """
+    import sys
+
+    level, frame = 2, sys._getframe(1)  # stacklevel 2 is the frame that called this one
+    while frame is not None and frame.f_globals.get("__name__", "").split(".")[0] == "twoball":
+        frame, level = frame.f_back, level + 1
+    warnings.warn(message, DeprecationWarning, stacklevel=level)
+
 
 MESH_KEYS = ("level", "elements", "order", "pole", "geometry", "initial")
 STEPPING_KEYS = ("t_end", "dt", "scheme", "route")
@@ -51,7 +66,6 @@ def bundles(
     damping: Any = None,
     old: dict[str, Any] | None = None,
     takes: tuple[str, ...] = ("mesh", "stepping", "body", "damping"),
-    stacklevel: int = 3,
 ) -> Bundles:
     """Check the bundles' types and fold the old keywords ``old`` into them.
 
@@ -86,12 +100,10 @@ def bundles(
             raise TypeError(f"{verb}() got an unexpected keyword argument {key!r}")
     given = {k: v for k, v in old.items() if v is not None}
     if given:
-        warnings.warn(
+        warn_deprecated(
             f"{verb}: the keywords {', '.join(sorted(given))} are deprecated; pass "
             "mesh=MeshOptions(...), stepping=Stepping(...), body=Body(...) or "
-            "damping=ModalRatio(...)/Rayleigh(...) instead",
-            DeprecationWarning,
-            stacklevel=stacklevel,
+            "damping=ModalRatio(...)/Rayleigh(...) instead"
         )
     fields = {k: old.get(k) for k in MESH_KEYS}
     if any(v is not None for v in fields.values()) or (mesh is not None and "mesh" in takes):

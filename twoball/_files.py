@@ -15,7 +15,7 @@ from dataclasses import dataclass, field, replace
 from pathlib import Path
 from typing import Any
 
-from twoball._bundles import bundles
+from twoball._bundles import bundles, warn_deprecated
 from twoball._common.budget import timed
 from twoball._common.errors import ParameterError
 from twoball._common.progress import Step, check_progress, silent
@@ -47,7 +47,6 @@ def _field_bundles(verb: str, mesh: Any, stepping: Any, body: Any, old: dict[str
         body=body,
         old=old,
         takes=("mesh", "stepping", "body"),
-        stacklevel=4,
     )
     if given.stepping is not None:
         given.stepping.refuse("with field outputs (modal superposition)", "scheme", "dt")
@@ -64,13 +63,7 @@ def _window(given: Any) -> tuple[float | None, str]:
 def _frames(frames: Any, legacy_times: Any) -> tuple[int | None, Sequence[float] | None]:
     """``frames`` as a count or as times [s] (the old ``times`` keyword folded in)."""
     if legacy_times is not None:
-        import warnings
-
-        warnings.warn(
-            "the keyword times is deprecated; pass the frame times as frames=[...]",
-            DeprecationWarning,
-            stacklevel=3,
-        )
+        warn_deprecated("the keyword times is deprecated; pass the frame times as frames=[...]")
         if frames is not None:
             raise ParameterError("frames", "left out when times are given", frames)
         frames = legacy_times
@@ -323,13 +316,9 @@ def render(
     legacy_view = {k: deprecated.pop(k) for k in ("warp", "size", "fps") if k in deprecated}
     given, legacy_times = _field_bundles("twoball.render", mesh, stepping, body, deprecated)
     if time is not None or any(v is not None for v in legacy_view.values()):
-        import warnings
-
-        warnings.warn(
+        warn_deprecated(
             "twoball.render: time, warp, size and fps are deprecated; pass frames=[time] "
-            "and view=RenderOptions(...)",
-            DeprecationWarning,
-            stacklevel=2,
+            "and view=RenderOptions(...)"
         )
     if time is not None:
         if frames is not None or legacy_times is not None:
@@ -496,11 +485,9 @@ def plot(
     if any(v is not None for v in legacy.values()):
         import warnings
 
-        warnings.warn(
+        warn_deprecated(
             "twoball.plot: " + ", ".join(sorted(legacy)) + " are deprecated; pass "
-            "figure=PlotOptions(...)",
-            DeprecationWarning,
-            stacklevel=2,
+            "figure=PlotOptions(...)"
         )
         if figure is not None:
             raise ParameterError("figure", "left out with " + ", ".join(sorted(legacy)), figure)

@@ -9,6 +9,7 @@ from __future__ import annotations
 import os
 from typing import TYPE_CHECKING, Any
 
+from twoball._bundles import warn_deprecated
 from twoball._common.budget import timed
 from twoball._common.errors import ParameterError
 from twoball._common.progress import Step, check_progress, silent
@@ -311,7 +312,6 @@ def _study_options(
     default (the study's ``levels`` set the sizes); the 0.2 keywords ``order``,
     ``geometry`` and ``t_end`` are folded in with a :class:`DeprecationWarning`.
     """
-    import warnings
 
     from twoball.fem_membrane.options import DEFAULT_ELEMENTS, DEFAULT_LEVEL, FILE, MeshOptions
     from twoball.modal.stepping import Stepping
@@ -321,11 +321,9 @@ def _study_options(
         raise TypeError(f"twoball.converge() got an unexpected keyword argument {unknown.pop()!r}")
     given = {k: v for k, v in deprecated.items() if v is not None}
     if given:
-        warnings.warn(
+        warn_deprecated(
             "twoball.converge: the keywords " + ", ".join(sorted(given)) + " are deprecated; "
-            "pass mesh=MeshOptions(kind, order=..., geometry=...) and stepping=Stepping(t_end=...)",
-            DeprecationWarning,
-            stacklevel=3,
+            "pass mesh=MeshOptions(kind, order=..., geometry=...) and stepping=Stepping(t_end=...)"
         )
     order, geometry, t_end = given.get("order"), given.get("geometry"), given.get("t_end")
     if isinstance(mesh, MeshOptions):

@@ -13,7 +13,7 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
 
-from twoball._bundles import bundles
+from twoball._bundles import bundles, warn_deprecated
 from twoball._common.budget import timed
 from twoball._common.errors import ParameterError
 from twoball.modal.parameters import Case
@@ -203,12 +203,8 @@ def sweep(
     t_end = None if given.stepping is None else given.stepping.t_end
     body = given.body
     if legacy_radius is not None:
-        import warnings
-
-        warnings.warn(
-            "twoball.sweep: contact_radius is deprecated; pass body=Body(0, contact_radius=...)",
-            DeprecationWarning,
-            stacklevel=2,
+        warn_deprecated(
+            "twoball.sweep: contact_radius is deprecated; pass body=Body(0, contact_radius=...)"
         )
         if body is not None:
             raise ParameterError("contact_radius", "left out with body (set it there)", None)

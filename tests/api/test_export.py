@@ -201,7 +201,7 @@ def test_exact_geometry_and_pole_inside_an_element(ball_files, tmp_path):
 
 
 def test_warnings_of_a_file_are_those_of_its_liftoff(ball_files, ball_files_liftoff, tmp_path):
-    """No resolution estimate for a file (as in liftoff); a generated level 1 does warn."""
+    """The same warnings, in the same order, as the lift-off on that file; level 1 warns."""
     result = twoball.export(tmp_path / "x.vtu", BASKETBALL, mesh=ball_files["msh"])
     assert result.warnings == list(ball_files_liftoff["msh"].warnings)
     coarse = twoball.export(

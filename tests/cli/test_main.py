@@ -8,9 +8,9 @@ import sys
 from pathlib import Path
 
 import pytest
-import validation_table as table
-from test_validation import check_refusals, run_child
 
+from tests.project import validation_table as table
+from tests.project.test_validation import check_refusals, run_child
 from twoball.cli.main import full_parser, join_negative_values, main
 
 

@@ -114,7 +114,7 @@ CALLS: dict[str, dict[str, Callable[[Any, Path], Any]]] = {
             "pole", tmp / "p.png", CASE, mesh=LEVEL_1, stepping=S(t_end=v)
         ),
         "converge": lambda v, tmp: twoball.converge(
-            CASE, study="modes", modes_list="30,60,120", t_end=v, out=tmp / "c"
+            CASE, study="modes", modes_list="30,60,120", stepping=S(t_end=v), out=tmp / "c"
         ),
         "verify": lambda v, tmp: twoball._studies.verify(CASE, fast=True, t_end=v, out=tmp / "r"),
     },
@@ -138,7 +138,9 @@ CALLS: dict[str, dict[str, Callable[[Any, Path], Any]]] = {
         "fem.solve": lambda v, _: twoball.fem.solve(CASE, mesh=M(level=1, order=v)),
         "fem.eigen": lambda v, _: twoball.fem.eigen(M(level=1, order=v)),
         "export": lambda v, tmp: twoball.export(tmp / "x.vtu", CASE, mesh=M(level=1, order=v)),
-        "converge": lambda v, tmp: twoball.converge(CASE, study="h", order=v, out=tmp / "c"),
+        "converge": lambda v, tmp: twoball.converge(
+            CASE, study="h", mesh=M("sphere", order=v), out=tmp / "c"
+        ),
     },
     "dt": {  # Stepping refuses dt <= 0; the solvers a step outside [1e-7, 1e-2] s
         "fem.solve": lambda v, _: twoball.fem.solve(
@@ -349,7 +351,10 @@ EXTRA: list[tuple[str, Callable[[Path], Any]]] = [
     ("elements", lambda _: twoball.fem.solve(CASE, mesh=M("ring", elements=50))),
     ("dt", lambda _: twoball.fem.solve(CASE, stepping=S(scheme="modal", dt=1e-5))),
     ("route", lambda _: twoball.fem.solve(CASE, stepping=S(scheme="alpha", route="krylov"))),
-    ("order", lambda tmp: twoball.converge(CASE, study="order", order=2, out=tmp / "c")),
+    (
+        "order",
+        lambda tmp: twoball.converge(CASE, study="order", mesh=M("sphere", order=3), out=tmp / "c"),
+    ),
     ("levels", lambda tmp: twoball.converge(CASE, study="modes", levels="1:2", out=tmp / "c")),
     ("modes_list", lambda tmp: twoball.converge(CASE, study="h", modes_list="30,60,120")),
     ("levels", lambda tmp: twoball.converge(CASE, study="h", levels="0:1", out=tmp / "c")),
@@ -367,7 +372,7 @@ EXTRA: list[tuple[str, Callable[[Path], Any]]] = [
     ("case", lambda tmp: twoball.plot("eigen", tmp / "p.png", CASE)),
     ("sigma", lambda tmp: twoball.plot("eigen", tmp / "p.png", sigma="none")),
     ("backends", lambda tmp: twoball.plot("eigen", tmp / "p.png", backends=["fem"])),
-    ("stepping", lambda tmp: twoball.plot("eigen", tmp / "p.png", stepping=S(t_end=0.01))),
+    ("t_end", lambda tmp: twoball.plot("eigen", tmp / "p.png", stepping=S(t_end=0.01))),
     ("levels", lambda tmp: twoball.plot("pole", tmp / "p.png", CASE, figure=P(levels=[1, 2]))),
     ("max_degree", lambda tmp: twoball.plot("waterfall", tmp / "p.png", figure=P(max_degree=5))),
     ("instants", lambda tmp: twoball.plot("pole", tmp / "p.png", CASE, figure=P(instants=5))),

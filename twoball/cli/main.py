@@ -222,9 +222,11 @@ def _main(argv: Sequence[str] | None = None) -> int:
 
     progress.set_quiet(args.quiet)
     provenance.set_command(argv)  # every JSON and file this run writes names it
-    from twoball._common.budget import DeadlineError, running
+    from twoball._common.budget import DeadlineError, running, set_budget
     from twoball._common.errors import NumericalError, ParameterError
 
+    budget_before = set_budget(None)
+    set_budget(budget_before)
     try:
         with running():  # the clock of --max-time: long loops stop at its deadline
             return int(args.run(args))
@@ -241,6 +243,7 @@ def _main(argv: Sequence[str] | None = None) -> int:
     finally:  # main() called again in one process (tests, scripts) starts afresh
         progress.set_quiet(False)
         provenance.set_command(None)
+        set_budget(budget_before)
 
 
 if __name__ == "__main__":

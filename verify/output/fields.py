@@ -653,7 +653,7 @@ def field_warnings(model: Any, backend: str, field: FieldMesh) -> list[str]:
     As in :func:`twoball.liftoff`, a user's mesh is judged by its size and
     order (:func:`twoball.fem_membrane.guards.mesh_warnings`).
     """
-    warnings = list(model.backend(backend).report.warnings)
+    warnings = []  # the mesh's first, as in the lift-off report
     if backend == "fem":
         from twoball.fem_membrane.guards import mesh_warnings
 
@@ -663,6 +663,7 @@ def field_warnings(model: Any, backend: str, field: FieldMesh) -> list[str]:
         else:
             surface = (field.loaded.mesh.points, field.loaded.mesh.cells)
             warnings += mesh_warnings("sphere", None, None, field.order, series.filter, surface)
+    warnings += model.backend(backend).report.warnings
     return list(dict.fromkeys(warnings))  # a contact report has the mesh's already
 
 

@@ -61,7 +61,8 @@ def sweep_figure(grid: SweepGrid, points: list[SweepPoint]) -> Figure:
             ax.grid(False)
     errors = sum(p.error is not None for p in points)
     title = "Closed-form lift-off sweep" + (f" ({errors} points failed)" if errors else "")
-    fig.suptitle(f"{title}\n" + r"$\varphi_a$: " + phi_a_rule([p.case for p in points]))
+    rule = phi_a_rule([p.case for p in points]).replace("|v0|", "$|v_0|$")
+    fig.suptitle(f"{title}\n" + r"$\varphi_a$: " + rule)
     return fig
 
 

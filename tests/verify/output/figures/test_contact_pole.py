@@ -36,5 +36,6 @@ def test_plot_pole_draws_the_path_and_one_marker_per_event(coupled):
         scale = np.abs(data["body_height_m"]).max()
         assert np.abs(path.get_ydata() / 1e3 - data["body_height_m"]).max() < 1e-12 * scale
     assert all(len(curves(a)) <= 6 for a in figure.axes)
-    labels = [t.get_text() for t in velocity.get_legend().get_texts()]
+    (legend,) = figure.legends  # one legend below every panel
+    labels = [t.get_text() for t in legend.get_texts()]
     assert {"impact", "separation", "lift-off (final separation)"} <= set(labels)
