@@ -142,6 +142,7 @@ CALLS: dict[str, dict[str, Callable[[Any, Path], Any]]] = {
         "Drop": lambda v, _: twoball.Drop(drop_height=v),
     },
     "floor_restitution": {"Drop": lambda v, _: twoball.Drop(floor_restitution=v)},
+    "gap": {"Drop": lambda v, _: twoball.Drop(gap=v)},
     "frames": {
         "export": lambda v, tmp: twoball.export(tmp / "x.pvd", CASE, level=1, frames=v),
         "render": lambda v, tmp: twoball.render(tmp / "x.gif", CASE, level=1, frames=v),
@@ -158,6 +159,7 @@ CALLS: dict[str, dict[str, Callable[[Any, Path], Any]]] = {
         "export": lambda v, tmp: twoball.export(tmp / "x.vtu", CASE, level=1, mass_ratio=v),
         "render": lambda v, tmp: twoball.render(tmp / "x.png", CASE, level=1, mass_ratio=v),
         "plot": lambda v, tmp: twoball.plot("pole", tmp / "p.png", CASE, level=1, mass_ratio=v),
+        "bounce": lambda v, _: twoball.bounce(CASE, body=twoball.Body(v)),
     },
     "contact_radius": {
         "liftoff": lambda v, _: twoball.liftoff(CASE, mass_ratio=0.01, contact_radius=v),
@@ -170,6 +172,7 @@ CALLS: dict[str, dict[str, Callable[[Any, Path], Any]]] = {
         "plot": lambda v, tmp: twoball.plot(
             "pole", tmp / "p.png", CASE, level=1, mass_ratio=0.01, contact_radius=v
         ),
+        "bounce": lambda v, _: twoball.bounce(CASE, body=twoball.Body(0.01, contact_radius=v)),
     },
     "restitution": {
         "liftoff": lambda v, _: twoball.liftoff(CASE, mass_ratio=0.01, restitution=v),
@@ -182,6 +185,7 @@ CALLS: dict[str, dict[str, Callable[[Any, Path], Any]]] = {
         "plot": lambda v, tmp: twoball.plot(
             "pole", tmp / "p.png", CASE, level=1, mass_ratio=0.01, restitution=v
         ),
+        "bounce": lambda v, _: twoball.bounce(CASE, body=twoball.Body(0.01, restitution=v)),
     },
     "bending": {"Case": lambda v, _: twoball.Case.preset("tennis").derive(bending=v)},
     "atmosphere": {"Case": lambda v, _: twoball.Case.preset("tennis").derive(atmosphere=v)},

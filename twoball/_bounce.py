@@ -791,6 +791,7 @@ class BounceReport:
         from twoball.verify.output.figures import save_figure
         from twoball.verify.output.figures.bounce import drop_figure, whole_figure
 
+        self._require_history()
         title = f"{self.backend}, {self.model['membrane']} membrane"
         if self.has_body:
             icm = self.icm_solver
@@ -800,12 +801,20 @@ class BounceReport:
             figure = drop_figure(self.result, self.case, self.mass_kg, title)
         return save_figure(figure, out, "plot", dpi)
 
+    def _require_history(self) -> None:
+        if not self.result.has_history:
+            raise NumericalError(
+                "a light report keeps no history (a sweep point): run twoball.bounce for its "
+                "figure, fields and pictures"
+            )
+
     def _mesh_and_times(self, mesh: Any, frames: int) -> tuple[Any, Any]:
         from twoball.fem_membrane.mesh import sphere_mesh
         from twoball.fem_membrane.options import MeshOptions
         from twoball.verify.output.drop_fields import drop_frames
         from twoball.verify.output.fields import check_frames
 
+        self._require_history()
         spec = MeshOptions.of(mesh).require(("sphere",), files=False)
         if spec.order > 2:
             raise ParameterError("order", "1 or 2 for field files and pictures", spec.order)
@@ -971,6 +980,8 @@ def bounce_sweep(
     parameter, array = bounce_values(list(values), list(values.values()))
     if pair is not None and parameter == "mass-ratio":
         raise ParameterError("pair", "left out when the mass ratio is swept (it fixes mu)", pair)
+    if parameter == "gap" and body is None and pair is None:
+        raise ParameterError("gap", "swept only with an upper body (body or pair)", None)
     if scheduler and workers is not None:
         raise ParameterError("workers", "left out with scheduler (the cluster decides)", workers)
     workers = 1 if workers is None and not scheduler else workers

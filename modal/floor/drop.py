@@ -285,17 +285,18 @@ def run_drop(system: FloorSystem, settings: DropSettings, **core: object) -> Dro
     body = system.body
     stepper = MoreauJean(system.problem, settings.dt, **core)
     q0, v0 = system.falling(settings.v0)
-    flags = {"stop": "window", "rising": False}
+    flags = {"stop": "window", "rising": False, "off": False}
     top_bound = _cap_bound(system)
 
     def floor_clear(state, record) -> bool:
         """The ball is off the floor and cannot come back while its centre rises."""
         if record.impact_impulse[floor].any() or record.step_impulse[floor].any():
-            flags["rising"] = False
+            flags["rising"] = flags["off"] = False
             return False
         rising = state.v[system.centre] > 0.0
         if flags["rising"] and not rising:
             flags["stop"] = "apex"
+            flags["off"] = True
             return True
         flags["rising"] = rising
         if not rising or not np.isfinite(bound).all():
@@ -303,6 +304,7 @@ def run_drop(system: FloorSystem, settings: DropSettings, **core: object) -> Dro
         reach = math.sqrt(2.0 * _membrane_energy(system, state.q, state.v))
         if np.min(system.floor_gaps(state.q) - reach * bound) > 0.0:
             flags["stop"] = "flight"
+            flags["off"] = True
             return True
         return False
 
@@ -334,11 +336,16 @@ def run_drop(system: FloorSystem, settings: DropSettings, **core: object) -> Dro
     start = time.perf_counter()
     tr = stepper.run(q0, v0, settings.t_end, stop=stop, keep_states=True)
     wall = time.perf_counter() - start
-    return _measure(system, settings, tr, flags["stop"], wall)
+    return _measure(system, settings, tr, flags["stop"], wall, bool(flags["off"]))
 
 
 def _measure(
-    system: FloorSystem, settings: DropSettings, tr: Trajectory, stop: str, wall: float
+    system: FloorSystem,
+    settings: DropSettings,
+    tr: Trajectory,
+    stop: str,
+    wall: float,
+    off: bool = False,
 ) -> DropResult:
     gamma, v0 = settings.gamma, settings.v0
     impulses = tr.impulse[:, system.floor].sum(axis=1)
@@ -353,14 +360,16 @@ def _measure(
         speed = float(tr.v[iv.last + 1, 0] + gamma * (tr.t[iv.last + 1] - iv.end))
         events.append(FloorEvent("separation", iv.end, speed, carrying))
     point_events = len(tr.events)
-    left = stop in ("flight", "apex")
+    # the ball has left the floor for good (with a body, the run may go on for it)
+    left = stop in ("flight", "apex") or off
+    apart = stop in ("flight", "apex")
     last = intervals[-1]
     total = float(impulses.sum())
     body = None
     if system.body is not None:
         from twoball.modal.floor.body import measure_body, momentum_balance
 
-        body = measure_body(system, tr, intervals, left, settings.dt)
+        body = measure_body(system, tr, intervals, apart, settings.dt)
     if left and system.body is not None:
         contact_time = last.end - intervals[0].start
         # the centre at its floor release: free flight from the next step end back to it
