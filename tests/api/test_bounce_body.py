@@ -285,3 +285,20 @@ def test_the_window_is_long_enough_for_the_gap():
     assert report.result.body.left and report.result.stop == "flight"
     assert not [w for w in report.warnings if "window" in w]
     assert report.model["t_end_s"] == pytest.approx(10 * math.pi / 320 + 2 * 1.0 / 4.1)
+
+
+def test_a_gap_sweep_on_dask_gives_the_same_numbers():
+    distributed = pytest.importorskip("distributed")
+    values = {"gap": [0.0, 0.1]}
+    drop = twoball.Drop(modes=16)
+    serial = twoball.sweep(values, drop=drop, pair="basketball-tennis", workers=1)
+    with distributed.LocalCluster(
+        n_workers=2, threads_per_worker=1, processes=False, dashboard_address=None
+    ) as cluster:
+        on_dask = twoball.sweep(
+            values, drop=drop, pair="basketball-tennis", scheduler=cluster.scheduler_address
+        )
+    assert on_dask.errors == [None, None]
+    for a, b in zip(serial.reports, on_dask.reports, strict=True):
+        assert a.as_dict()["v1_ratio"] == b.as_dict()["v1_ratio"]
+    assert "dask" in on_dask.provenance["call"]["arguments"]["runner"]
