@@ -60,10 +60,28 @@ def measure(code: str) -> tuple[float, float]:
     return float(peak), float(seconds)
 
 
+def twoball_case(name: str, modes: int) -> object:
+    """A preset with ``modes``."""
+    import twoball
+
+    return twoball.Case.preset(name, modes=modes)
+
+
+def check_series_estimate(modes: int, stiffness: object) -> object:
+    """The closed form's estimate with the converged reference, as the guard makes it."""
+    from twoball.modal.cost import reference_estimate, series_estimate
+
+    top = float(stiffness.legendre_omega(float(modes)))
+    return series_estimate(modes, 4 * math.pi, omega_max=top) + reference_estimate(
+        4 * math.pi, modes, 0.13, stiffness
+    )
+
+
 def main() -> None:
     """Print the table."""
     from twoball.fem_membrane.cost import fem_dofs, fem_estimate
-    from twoball.modal.cost import reference_estimate, series_estimate
+    from twoball.modal.contact.cost import contact_estimate
+    from twoball.modal.cost import legendre_omega, reference_estimate, series_estimate
 
     from twoball._common import budget
 
@@ -77,8 +95,18 @@ def main() -> None:
             "from twoball.modal.report import legendre_liftoff\n"
             f"legendre_liftoff(preset('basketball').derive(modes={modes}))\n"
         )
-        estimate = series_estimate(modes, 4 * math.pi) + reference_estimate(4 * math.pi)
+        estimate = series_estimate(modes, 4 * math.pi) + reference_estimate(4 * math.pi, modes)
         rows.append((f"series N = {modes}", estimate, *measure(code)))
+    code = "import twoball\ntwoball.liftoff(twoball.Case.preset('tennis', modes=240))\n"
+    tennis = twoball_case("tennis", 240)
+    estimate = check_series_estimate(240, tennis.stiffness)
+    rows.append(("series tennis N = 240", estimate, *measure(code)))
+    code = (
+        "import twoball\n"
+        "twoball.liftoff(twoball.Case.preset('basketball', modes=120), body=twoball.Body(0.1))\n"
+    )
+    estimate = contact_estimate(121, legendre_omega(120), 4 * math.pi)
+    rows.append(("contact N = 120", estimate, *measure(code)))
     for level, order in [(3, 2)] if quick else [(4, 1), (3, 2)]:
         code = (
             "from twoball.fem_membrane.solve import fem_pole_motion\n"

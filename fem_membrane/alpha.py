@@ -35,6 +35,7 @@ from twoball.fem_membrane.checks import check_dt, check_rho_inf, check_t_end
 from twoball.fem_membrane.damping import ModalDamping
 from twoball.fem_membrane.space import PoleFunctional, pole_value
 
+from twoball._common.budget import check_deadline
 from twoball._common.errors import NumericalError
 
 
@@ -167,6 +168,8 @@ class GeneralizedAlpha:
 
         history[0] = at(d), at(v), at(a)
         for n in range(steps):
+            if n % 16 == 0:
+                check_deadline(f"generalized-alpha step {n} of {steps}")
             d_pred = d + dt * v + dt * dt * (0.5 - p.beta) * a
             v_pred = v + dt * (1.0 - p.gamma) * a
             rhs = -(p.alpha_m * (M @ a))

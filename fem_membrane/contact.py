@@ -157,6 +157,16 @@ def fem_contact_solution(
     if spec.geometry != "isoparametric":
         raise ParameterError("geometry", "isoparametric with a body of finite mass", spec.geometry)
     check_fem(spec.kind, spec.level, spec.elements, spec.order, case.modes, "full")
+    t_end = t_end_dimensionless(case, t_end_s)
+    if body.mass_ratio > 0.0:  # the event loop on every FE mode below the cutoff
+        from twoball.fem_membrane.cost import fem_dofs
+        from twoball.modal.contact.cost import check_contact
+        from twoball.modal.cost import legendre_omega
+
+        dofs = fem_dofs(spec.kind, spec.level, spec.elements, spec.order)
+        pairs = case.modes + 1 if spec.kind == "axisym" else (case.modes + 1) ** 2
+        top = legendre_omega(case.modes + 1)  # the cutoff lies between N and N + 1
+        check_contact(min(dofs, pairs), top, t_end, modes=case.modes, mass_ratio=body.mass_ratio)
     membrane = membrane_case(case, body.mass_ratio, body.energy)
     theta = cap_angle(radius, case.radius)
     model, contact, info = fem_contact_model(
@@ -180,11 +190,18 @@ def fem_contact_solution(
         energy=body.energy,
         backend="fem",
         sigma=sigma,
-        t_end=t_end_dimensionless(case, t_end_s),
+        t_end=t_end,
         membrane=membrane,
         extra={"cap_angle_rad": theta, **info},
     )
-    return model, report
+    # the mesh guard of the massless path, and the closed-form contact solution beside it
+    from twoball.fem_membrane.guards import mesh_warnings
+    from twoball.modal.contact.report import guarded
+
+    mesh_said = mesh_warnings(
+        spec.kind, spec.level, spec.elements, model.space.order, SpectralFilter(sigma, case.modes)
+    )
+    return model, guarded(report, body, t_end_s, more=mesh_said)
 
 
 def fem_contact_fields(

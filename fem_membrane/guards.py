@@ -29,7 +29,18 @@ Mesh (eigenvalue error of the retained modes, eq. (3.11))
     :data:`EIGENVALUE_ERROR` = 5 % (2.5 % in frequency).  Defaults (icosphere
     level 3, P2: 3 %; axisymmetric 400 P2: 1e-5) are quiet; icosphere level 2 P1
     (lift-off 5.76 ms instead of 9.88 ms) is warned.  Orders without a fitted
-    constant (the ring sphere at P3/P4, user meshes) get no estimate.
+    constant (the ring sphere at P3/P4) get no estimate.
+
+A user's mesh (eq. (3.11) on any triangulation)
+    It has no level, but it has a size: T triangles of the unit sphere are
+    given the icosphere's mesh size at the same count, ``h = 1.0515 sqrt(20 /
+    T)`` (exactly the generated ``1.0515 / 2^level`` for ``T = 20 4^level``),
+    times ``(sum_i A_i (A_i / mean A)^p / sum_i A_i)^(1 / 2p)`` for triangle
+    areas ``A_i``: the error ``C (l h_i)^(2p)`` averaged over the surface, so a
+    mesh with large and small triangles counts its large ones (1.004 for the
+    icosphere itself, 1.008 for a gmsh sphere of 623 nodes), and the sphere's
+    constant of its order.  A gmsh P1 sphere of 623 nodes (1242 triangles)
+    gets 51 % like the generated level 3 P1 (642 nodes, 50 %): warned.
 """
 
 from __future__ import annotations
@@ -156,24 +167,53 @@ def eigenvalue_error_estimate(mesh: str, order: int, h: float, degree: int) -> f
     return constant * (degree * h) ** (2 * int(order))
 
 
+def surface_size(points: np.ndarray, cells: np.ndarray, order: int) -> float:
+    """Mesh size h of any triangulation of the unit sphere, on the icosphere's scale.
+
+    ``1.0515 sqrt(20 / T)`` for T triangles, times the area average of
+    ``(A_i / mean A)^p`` to the power ``1 / (2p)`` (module docstring); the
+    corners ``cells[:, :3]`` of ``points`` (dimensionless, unit sphere) span the
+    flat triangles whose areas are measured.
+    """
+    corners = np.asarray(points)[np.asarray(cells)[:, :3]]
+    areas = 0.5 * np.linalg.norm(
+        np.cross(corners[:, 1] - corners[:, 0], corners[:, 2] - corners[:, 0]), axis=1
+    )
+    p = int(order)
+    spread = float(np.sum(areas * (areas / areas.mean()) ** p) / areas.sum()) ** (0.5 / p)
+    return ICOSAHEDRON_EDGE * math.sqrt(20.0 / len(areas)) * spread
+
+
 def mesh_warnings(
     mesh: str,
     level: int | None,
     elements: int | None,
     order: int,
     filter: SpectralFilter,
+    surface: tuple[np.ndarray, np.ndarray] | None = None,
 ) -> list[str]:
-    """Warn when the mesh under-resolves the modes the filter keeps (module docstring)."""
-    h = mesh_size(mesh, level, elements)
+    """Warn when the mesh under-resolves the modes the filter keeps (module docstring).
+
+    ``surface`` (points and cells of a user's unit-sphere mesh) replaces the
+    generated mesh's level: its size comes from :func:`surface_size` and the
+    error from the sphere's constant of ``order``.
+    """
     degree = half_weight_degree(filter)
-    error = eigenvalue_error_estimate(mesh, order, h, degree)
+    if surface is not None:
+        points, cells = surface
+        h = surface_size(points, cells, order)
+        error = eigenvalue_error_estimate("sphere", order, h, degree)
+        size = f"your mesh: {len(cells)} triangles, h = {h:.3g} R"
+    else:
+        h = mesh_size(mesh, level, elements)
+        error = eigenvalue_error_estimate(mesh, order, h, degree)
+        size = (
+            f"{400 if elements is None else elements} elements"
+            if mesh == "axisym"
+            else f"level {3 if level is None else level}"
+        )
     if error is None or error <= EIGENVALUE_ERROR:
         return []
-    size = (
-        f"{400 if elements is None else elements} elements"
-        if mesh == "axisym"
-        else f"level {3 if level is None else level}"
-    )
     return [
         f"mesh under-resolves the retained modes: estimated eigenvalue error "
         f"{min(error, 9.99):.0%} at degree l = {degree} (P{order}, {size}; limit "
@@ -188,15 +228,18 @@ def fem_warnings(
     level: int | None = None,
     elements: int | None = None,
     time_unit_s: float = 1.0,
+    surface: tuple[np.ndarray, np.ndarray] | None = None,
 ) -> list[str]:
     """Mesh and time-step warnings of one run from its ``info`` (:func:`fem_pole_motion`).
 
-    ``info["mesh_kind"]`` None (a user's mesh) skips the mesh estimate, which
-    needs a generated mesh's level or element count.
+    ``surface``: the points and cells of a user's mesh (on the unit sphere),
+    whose size stands in for the level (:func:`mesh_warnings`).
     """
     warnings = []
     if info["mesh_kind"] is not None:
-        warnings += mesh_warnings(info["mesh_kind"], level, elements, info["order"], filter)
+        warnings += mesh_warnings(
+            info["mesh_kind"], level, elements, info["order"], filter, surface
+        )
     if info.get("time_scheme") == "alpha" and "dt" in info:
         omega = info.get("omega_max") or filter.omega_n
         warnings += time_step_warnings(omega, info["dt"], info.get("rho_inf", 1.0), time_unit_s)

@@ -84,6 +84,7 @@ from twoball.modal.filters import SpectralFilter
 from twoball.modal.liftoff import DEFAULT_T_END
 from twoball.modal.series import ModalSeries, check_law
 
+from twoball._common.budget import check_deadline
 from twoball._common.errors import NumericalError, ParameterError
 
 TOLERANCE = 1e-10  # relative change of the filtered pole trajectory (u and u_tt)
@@ -92,6 +93,7 @@ FIRST_SHIFT = -1.0  # below the constant mode lambda = 0 (K is singular)
 AUTO_THRESHOLD = 2000  # --route auto: Krylov from this many degrees of freedom on
 ROUTES = ("full", "krylov", "auto")
 MAX_BASIS = 1200  # give up beyond this many basis vectors
+FIRST_COLUMNS = 128  # basis columns reserved at first (doubled when full)
 DEPENDENT = 1e-10  # drop a new direction whose norm falls below this fraction
 SAMPLES_PER_PERIOD = 16  # trajectory samples per period of omega_cut
 CHECK_SPACING = 100  # criteria every max(1, basis // 100) cycles of shifts
@@ -193,6 +195,20 @@ def default_shifts(upper: float, count: int = SHIFT_COUNT) -> np.ndarray:
         gap = max(1, round(j * top / (count - 1)))
         shifts.append(float(gap) ** 2)
     return np.unique(np.array(shifts))
+
+
+def _widened(array: np.ndarray, columns: int, used: int, rows: int | None = None) -> np.ndarray:
+    """``array`` in a larger column-major buffer of ``columns`` columns (first ``used`` kept).
+
+    ``rows`` also grows a square matrix (the projected stiffness); new entries are zero.
+    """
+    if rows is None:
+        out = np.empty((array.shape[0], columns), order="F")
+        out[:, :used] = array[:, :used]
+        return out
+    out = np.zeros((rows, columns))
+    out[:used, :used] = array[:used, :used]
+    return out
 
 
 def _m_orthonormalise(
@@ -373,12 +389,13 @@ def _krylov(
 
     start = clock.perf_counter()
     limit = min(max_basis, n)
-    # column-major: only the columns in use are ever touched (resident memory ~ size)
-    basis = np.empty((n, limit), order="F")
-    mass_basis = np.empty((n, limit), order="F")
-    stiff_basis = np.empty((n, limit), order="F")
-    projected = np.zeros((limit, limit))  # V^T K V, grown block by block
-    loads = np.empty(limit)  # V^T b
+    # column-major, grown by doubling: the memory reserved stays within twice the
+    # columns in use (reserving all max_basis columns at once took 4.4 GB of address
+    # space on a 163842-DOF mesh that used a fraction of it)
+    capacity = min(limit, FIRST_COLUMNS)
+    basis, mass_basis, stiff_basis = (np.empty((n, capacity), order="F") for _ in range(3))
+    projected = np.zeros((capacity, capacity))  # V^T K V, grown block by block
+    loads = np.empty(capacity)  # V^T b
     size = 0
     block = factors[0].solve(np.column_stack([b, pole_vector(pole, n)]))
     grid = np.linspace(
@@ -392,6 +409,7 @@ def _krylov(
     theta = np.empty(0)
     small = np.empty((0, 0))
     while True:
+        check_deadline(f"the rational Krylov iteration (basis {size} of at most {limit})")
         new, mass_new = _m_orthonormalise(block, basis[:, :size], mass_basis[:, :size], M)
         width = min(new.shape[1], limit - size)
         if width == 0:  # invariant subspace: the projection is exact
@@ -399,6 +417,13 @@ def _krylov(
             theta, small = np.linalg.eigh(projected[:size, :size])
             break
         end = size + width
+        if end > capacity:
+            capacity = min(limit, max(2 * capacity, end))
+            basis, mass_basis, stiff_basis = (
+                _widened(a, capacity, size) for a in (basis, mass_basis, stiff_basis)
+            )
+            projected = _widened(projected, capacity, size, rows=capacity)
+            loads = np.concatenate([loads[:size], np.empty(capacity - size)])
         basis[:, size:end] = new[:, :width]
         mass_basis[:, size:end] = mass_new[:, :width]
         stiff_basis[:, size:end] = K @ new[:, :width]

@@ -9,7 +9,10 @@ unit sphere, rotated so that the requested pole direction is +z -- the
 dimensionless geometry of eq. (3.9), whose pole motion decides lift-off.
 
 The checks (one closed, manifold, connected surface of sphere topology,
-spherical to :data:`MAX_RADIAL_DEVIATION`, consistently oriented) and the
+spherical to :data:`MAX_RADIAL_DEVIATION` on average, to
+:data:`~twoball.fem_membrane.surface_checks.MAX_NODE_DEVIATION` at every node and
+:data:`~twoball.fem_membrane.surface_checks.MAX_POLE_DEVIATION` near the pole,
+consistently oriented) and the
 centre and radius fit are in :mod:`twoball.fem_membrane.surface_checks`; each
 failure is a :class:`twoball._common.errors.ParameterError` naming ``mesh``
 with what is wrong and by how much.  Cells: ``triangle`` (3-node) or
@@ -76,6 +79,8 @@ class MeshInput:
         Geometric order in the source: 1 (3-node) or 2 (6-node triangles).
     mean_radial_deviation, max_radial_deviation : float
         Mean and largest ``|r_i - radius| / radius`` over the source's nodes.
+    pole_radial_deviation : float
+        The largest of them within 0.3 rad of the pole (and its 7 nearest nodes).
     triangles, vertices : int
         Counts after merging coincident points.
     merged_points : int
@@ -108,6 +113,7 @@ class MeshInput:
     pole_at_node: bool = False
     ignored_cells: dict[str, int] = field(default_factory=dict)
     description: str = ""
+    pole_radial_deviation: float = 0.0
 
     def as_dict(self) -> dict[str, Any]:
         """Plain summary (no arrays but short lists) for ``info`` dictionaries and JSON."""
@@ -122,6 +128,7 @@ class MeshInput:
             "vertices": self.vertices,
             "mean_radial_deviation": self.mean_radial_deviation,
             "max_radial_deviation": self.max_radial_deviation,
+            "pole_radial_deviation": self.pole_radial_deviation,
             "merged_points": self.merged_points,
             "unused_points": self.unused_points,
             "flipped": self.flipped,
@@ -257,10 +264,11 @@ def check_pole(pole: object) -> np.ndarray:
         raise ParameterError(POLE_FLAG, valid, pole) from None
     if values.shape != (3,) or not np.all(np.isfinite(values)):
         raise ParameterError(POLE_FLAG, valid, pole)
-    length = float(np.linalg.norm(values))
-    if length == 0.0:
+    largest = float(np.abs(values).max())
+    if largest == 0.0:
         raise ParameterError(POLE_FLAG, valid, pole)
-    return values / length
+    values = values / largest  # 1e308,1e308,1e308 would overflow the length
+    return values / float(np.linalg.norm(values))
 
 
 def rotation_to_z(direction: np.ndarray) -> np.ndarray:
@@ -324,7 +332,7 @@ def load_sphere_mesh(
     name = raw.name
     points, cells, unused, merged = clean_nodes(name, raw.points, raw.cells)
     check_topology(name, cells)
-    fit = check_sphere(name, points)
+    fit = check_sphere(name, points, direction)
     cells, flipped = orient_outward(name, points, cells, fit, raw.orientation_known)
     source_order = 1 if cells.shape[1] == 3 else 2
     if raw.order is not None:
@@ -349,6 +357,7 @@ def load_sphere_mesh(
         source_order=source_order,
         mean_radial_deviation=fit.mean_deviation,
         max_radial_deviation=fit.max_deviation,
+        pole_radial_deviation=fit.pole_deviation,
         triangles=len(cells),
         vertices=int(cells[:, :3].max()) + 1,
         merged_points=merged,
@@ -372,7 +381,8 @@ def describe(result: MeshInput, name: str) -> str:
         f"{name}: {result.triangles} triangles, {result.vertices} vertices, {order}",
         f"radius {result.radius:.6g} and centre ({cx:.6g}, {cy:.6g}, {cz:.6g}) in file units",
         f"mean radial deviation {result.mean_radial_deviation:.1e} "
-        f"(largest {result.max_radial_deviation:.1e})",
+        f"(largest {result.max_radial_deviation:.1e}, near the pole "
+        f"{result.pole_radial_deviation:.1e})",
         f"pole ({px:.6g}, {py:.6g}, {pz:.6g}) "
         + ("at a node" if result.pole_at_node else "inside an element"),
     ]

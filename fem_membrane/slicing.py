@@ -48,11 +48,16 @@ import scipy.linalg as sl
 import scipy.sparse as sp
 from scipy.sparse.linalg import LinearOperator, eigsh, splu
 
+from twoball._common.budget import check_deadline
 from twoball._common.errors import NumericalError
 
 DENSE_DOFS = 3000  # dense LAPACK up to this many unknowns when over DENSE_COUNT pairs are wanted
 DENSE_COUNT = 150
 DENSE_ALWAYS = 200  # dense LAPACK for any count up to this many unknowns
+#: From this many unknowns the dense solve runs in a forked child (:mod:`twoball._common.child`):
+#: scipy's LAPACK holds the GIL (~0.1 s at 500 unknowns, 5 s at 2562), which would
+#: freeze the progress line and hold back Ctrl-C; the numbers are the same bits.
+DENSE_CHILD = 500
 DENSE_FRACTION = 0.4  # ... or when more than this fraction of the spectrum is wanted
 FIRST_SHIFT = -1e-2  # below the constant mode lambda = 0
 WINDOW = 40  # target number of eigenvalues per slice
@@ -151,17 +156,28 @@ def dense_pairs(
     """
     n = K.shape[0]
     count = n if count is None else int(min(max(count, 1), n))
-    Md = sp.csr_matrix(M).toarray()
-    Ad = sp.csr_matrix(K).toarray() + Md
-    if count > n // 2:
-        nu, vectors = sl.eigh(Md, Ad, driver="gvd")
-        nu, vectors = nu[n - count :], vectors[:, n - count :]
+    if n >= DENSE_CHILD:  # LAPACK through scipy holds the GIL: a child keeps us responsive
+        from twoball._common.child import in_child
+
+        doing = f"dense eigenpairs of {n} unknowns (LAPACK)"
+        nu, vectors = in_child(_dense_lapack, K, M, count, doing=doing)
     else:
-        nu, vectors = sl.eigh(Md, Ad, subset_by_index=[n - count, n - 1], driver="gvx")
+        nu, vectors = _dense_lapack(K, M, count)
     nu, vectors = nu[::-1], vectors[:, ::-1]  # ascending lambda
     if np.any(nu <= 0.0):
         raise NumericalError("dense eigensolver: K + M is not positive definite")
     return 1.0 / nu - 1.0, vectors / np.sqrt(nu)  # x^T (K + M) x = 1 -> x^T M x = 1
+
+
+def _dense_lapack(K: sp.spmatrix, M: sp.spmatrix, count: int) -> tuple[np.ndarray, np.ndarray]:
+    """The largest ``count`` pairs of ``M x = nu (K + M) x``, nu ascending (LAPACK sygvd/sygvx)."""
+    n = K.shape[0]
+    Md = sp.csr_matrix(M).toarray()
+    Ad = sp.csr_matrix(K).toarray() + Md
+    if count > n // 2:
+        nu, vectors = sl.eigh(Md, Ad, driver="gvd")
+        return nu[n - count :], vectors[:, n - count :]
+    return sl.eigh(Md, Ad, subset_by_index=[n - count, n - 1], driver="gvx")
 
 
 def slice_bounds(upper: float, total: int, window: int = WINDOW) -> list[float]:
@@ -289,12 +305,19 @@ def sliced_pairs(
     """
     n = K.shape[0]
     K, M = sp.csc_matrix(K), sp.csc_matrix(M)
+    check_deadline(f"eigenpairs of {n} unknowns: counting them (inertia)")
     total = inertia(K, M, upper)
     bounds = slice_bounds(upper, total, window)
     counts = [0] + [inertia(K, M, g) for g in bounds[1:-1]] + [total]
     values: list[np.ndarray] = []
     vectors: list[np.ndarray] = []
-    for lower, higher, below, up_to in zip(bounds, bounds[1:], counts, counts[1:], strict=False):
+    pieces = len(bounds) - 1
+    for k, (lower, higher, below, up_to) in enumerate(
+        zip(bounds, bounds[1:], counts, counts[1:], strict=False), start=1
+    ):
+        check_deadline(
+            f"eigenpairs of {n} unknowns: slice {k} of {pieces} (pairs {up_to} of {total})"
+        )
         if up_to > below:
             found, shapes = slice_pairs(K, M, lower, higher, up_to - below)
             values.append(found)

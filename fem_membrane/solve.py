@@ -54,6 +54,7 @@ from twoball.modal.liftoff import DEFAULT_T_END, PoleMotion, SampledPoleMotion
 from twoball.modal.series import ModalSeries, check_law
 from twoball.modal.stiffness import Stiffness
 
+from twoball._common.budget import check_deadline
 from twoball._common.errors import ParameterError
 
 STEP_ACCURACY = 0.2  # automatic dt: omega_cut * dt <= 0.2
@@ -132,13 +133,16 @@ def modal_model(
     seconds = {}
     check_fem(mesh, level, elements, order, filter.modes, route)  # before any allocation
     start = clock.perf_counter()
+    check_deadline("mesh and assembly")
     space = build_space(
         mesh, level=level, elements=elements, order=order, phi_a=phi_a, geometry=geometry
     )
+    check_deadline(f"initial displacement ({initial}) on {space.dofs} unknowns")
     moments = initial_moments(space, phi_a, initial)
     seconds["assembly"] = clock.perf_counter() - start
     route = choose_route(route, space.dofs)
     start = clock.perf_counter()
+    check_deadline(f"eigenpairs below the cutoff on {space.dofs} unknowns ({route} route)")
     if route == "full":
         pairs = eigenpairs(space.stiffness, space.mass, filter.omega_cut**2)
         series = modal_series(pairs, moments, space.pole_row, damping, filter)

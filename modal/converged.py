@@ -12,7 +12,8 @@ import time
 from dataclasses import dataclass
 
 import numpy as np
-from twoball.modal.filters import SpectralFilter, legendre_frequency
+from twoball.modal.decay import DecayingSeries, reduced, significant
+from twoball.modal.filters import FilterKind, SpectralFilter, legendre_frequency
 from twoball.modal.legendre import legendre_coefficients_recurrence, legendre_series
 from twoball.modal.liftoff import (
     DEFAULT_T_END,
@@ -25,9 +26,15 @@ from twoball.modal.parameters import Case
 from twoball.modal.roots import bracketed_roots
 from twoball.modal.series import ModalSeries
 
+from twoball._common.budget import check_deadline
+
 PAPER_MODES = 30  # the truncation used throughout the paper (§3(b))
 REFERENCE_TOLERANCE = 1e-7  # relative change of v_l that stops the doubling of N
 REFERENCE_MAX_MODES = 3840
+#: Relative change of the filtered series' lift-off time between N and 2N below which
+#: both lift off on the same root (the one the limit is followed on); far below the
+#: spacing of the roots that criterion (ii) chooses between (~10 % for the tennis ball).
+IDENTIFY_TOLERANCE = 0.01
 
 
 @dataclass(frozen=True)
@@ -36,13 +43,26 @@ class ConvergedReference:
 
     Every filter tends to 1 mode by mode as N grows, so all filtered series share
     one limit: the unfiltered damped series (3.14).  For t > 0 its terms decay
-    like exp(-D sqrt(n(n+1)) t), so at the lift-off time it converges
-    exponentially in N (for D > 0).  It is found by following the lift-off
-    root of the N = 30 filtered series into the unfiltered series while N
-    doubles, until t_l and v_l change by less than ``tolerance`` (relative).
-    For D = 0 the series converges only algebraically at t_l; the doubling stops
-    once the changes no longer shrink by a factor 4 per step (``converged``
-    False: the check of ``verify`` then fails).
+    like exp(-D omega_n t), so at the lift-off time it converges exponentially
+    in N (for D > 0).  It is found in two steps:
+
+    1. *Which root.*  The lift-off (criteria (i)-(ii) of §3(a)) of the
+       Lanczos-filtered series is computed at N0 (never below the N asked) and
+       at 2 N0, 4 N0, ... until two successive ones lift off within
+       :data:`IDENTIFY_TOLERANCE` of each other in time (or both not at all):
+       a truncated series may lift off on a neighbouring root that criterion
+       (ii) rejects at larger N (the tennis ball at N = 30: 0.583 ms, against
+       0.518 ms from N = 60 on).
+    2. *Its value.*  That root (of the first of the two) is followed into the
+       unfiltered series while N doubles from there, until t_l and v_l change by
+       less than ``tolerance`` (relative).  For D = 0 the series converges only
+       algebraically at t_l; the doubling stops once the changes no longer shrink
+       by a factor 4 per step (``converged`` False: the check of ``verify`` then
+       fails).
+
+    Both steps sum, at each time, only the modes whose damped contribution is
+    above round-off (:mod:`twoball.modal.decay`), which keeps N in the thousands
+    cheap.
 
     Attributes
     ----------
@@ -53,12 +73,19 @@ class ConvergedReference:
     modes : int
         N of the last (accepted) step.
     converged : bool
-        Whether the changes fell below ``tolerance`` before ``REFERENCE_MAX_MODES``.
+        Whether the changes fell below ``tolerance`` before the largest N
+        (``REFERENCE_MAX_MODES``, or 4 times the starting N with damping);
+        True with ``t`` None when the filtered series settled on no lift-off in
+        the window.
     history : list of (N, t, v)
-        The sequence of the doubling.
+        The sequence of the doubling of the unfiltered series.
     clear : bool
         Whether the free flight after lift-off stays above the pole on the
         checked samples (criterion (ii) for the limit).
+    filtered : list of (N, t or None, v or None)
+        Step 1: the lift-offs of the Lanczos-filtered series.
+    identified : bool
+        Whether step 1 settled (two successive lift-offs on one root, or none).
     """
 
     t: float | None
@@ -71,6 +98,22 @@ class ConvergedReference:
     clear: bool
     seconds: float
     series: ModalSeries | None
+    filtered: tuple[tuple[int, float | None, float | None], ...] = ()
+    identified: bool = True
+
+
+def _legendre(case: Case, modes: int, kind: FilterKind) -> ModalSeries:
+    n = np.arange(modes + 1)
+    stiff = case.stiff
+    return ModalSeries(
+        omega=case.stiffness.legendre_omega(n) if stiff else legendre_frequency(n),
+        coefficients=legendre_coefficients_recurrence(case.phi_a, modes),
+        pole_values=np.ones(n.size),
+        damping=case.damping_law,
+        filter=SpectralFilter(kind, modes),
+        mode_norms=4.0 * np.pi / (2 * n + 1),
+        filter_omega=legendre_frequency(n) if stiff else None,
+    )
 
 
 def unfiltered_series(case: Case, modes: int) -> ModalSeries:
@@ -81,17 +124,34 @@ def unfiltered_series(case: Case, modes: int) -> ModalSeries:
     second method; agrees with the quadrature of eq. (3.12) to ~1e-13 and needs
     no Gauss rule, which is what makes thousands of modes cheap).
     """
-    n = np.arange(modes + 1)
-    stiff = case.stiff
-    return ModalSeries(
-        omega=case.stiffness.legendre_omega(n) if stiff else legendre_frequency(n),
-        coefficients=legendre_coefficients_recurrence(case.phi_a, modes),
-        pole_values=np.ones(n.size),
-        damping=case.damping_law,
-        filter=SpectralFilter("none", modes),
-        mode_norms=4.0 * np.pi / (2 * n + 1),
-        filter_omega=legendre_frequency(n) if stiff else None,
-    )
+    return _legendre(case, modes, "none")
+
+
+def filtered_liftoff(
+    case: Case, modes: int, t_end: float = DEFAULT_T_END, recontact: Horizon = "window"
+) -> LiftoffResult:
+    """Lift-off of the Lanczos-filtered series (3.16) with ``modes``, summed blockwise.
+
+    The same criteria and window as :func:`twoball.modal.report.legendre_liftoff`;
+    the coefficients from the recurrence and the modes that have decayed below
+    round-off dropped (:class:`twoball.modal.decay.DecayingSeries`): agrees with
+    the plain evaluation to ~1e-13 at a small part of its cost for large N.
+    """
+    motion = DecayingSeries(_legendre(case, modes, "lanczos"), t_end)
+    return find_liftoff(motion, case.gamma, t_end=t_end, horizon=recontact)
+
+
+def _same_root(a: LiftoffResult, b: LiftoffResult) -> bool:
+    """Both lift off within IDENTIFY_TOLERANCE of each other in time, or neither does."""
+    if a.t is None or b.t is None:
+        return a.t is None and b.t is None
+    return abs(b.t - a.t) <= IDENTIFY_TOLERANCE * abs(b.t)
+
+
+def _cheaper(series: ModalSeries, start: float) -> ModalSeries:
+    """The series without the modes negligible from ``start`` on, when that halves it."""
+    kept = significant(series, start)
+    return reduced(series, kept) if 2 * kept.size <= series.omega.size else series
 
 
 def _track_root(
@@ -122,6 +182,27 @@ def _track_root(
     return float(root), float(series.pole(np.array([root])).u_t[0])
 
 
+def _identify(
+    case: Case,
+    base: LiftoffResult,
+    start_modes: int,
+    max_modes: int,
+    t_end: float,
+    recontact: Horizon,
+) -> tuple[int, LiftoffResult, bool, tuple[tuple[int, float | None, float | None], ...]]:
+    """Step 1 of :class:`ConvergedReference`: (N, lift-off) of the first of two that agree."""
+    steps = [(start_modes, base)]
+    while not (len(steps) >= 2 and _same_root(steps[-2][1], steps[-1][1])):
+        modes = 2 * steps[-1][0]
+        if modes > max_modes:
+            break
+        steps.append((modes, filtered_liftoff(case, modes, t_end, recontact)))
+    record = tuple((n, r.t, r.velocity) for n, r in steps)
+    settled = len(steps) >= 2 and _same_root(steps[-2][1], steps[-1][1])
+    modes, found = steps[-2] if settled else steps[-1]
+    return modes, found, settled, record
+
+
 def converged_legendre(
     case: Case,
     sigma: str = "lanczos",
@@ -135,42 +216,64 @@ def converged_legendre(
     flight: bool = True,
     min_samples: int = 2001,
 ) -> ConvergedReference:
-    """The converged Legendre lift-off: N doubled from ``2 start_modes`` until it settles.
+    """The converged Legendre lift-off, from ``start_modes`` up until it settles.
 
-    See :class:`ConvergedReference`.  The lift-off of the Lanczos-filtered series
-    with ``start_modes`` modes (criteria (i)-(ii) of §3(a)) picks the root to
-    follow, whatever ``sigma`` is: the limit is the same for every filter, and
+    See :class:`ConvergedReference`.  The Lanczos-filtered series picks the root
+    to follow, whatever ``sigma`` is: the limit is the same for every filter, and
     without a filter the truncated series lifts off spuriously on its Gibbs
-    oscillations.  ``t_end`` is dimensionless (unit 1/c).
+    oscillations.  ``t_end`` is dimensionless (unit 1/c).  ``start_modes`` is the
+    least N used (the guards pass the N of the result they judge).
 
-    ``base`` is that starting lift-off when the caller has it already (same case,
-    window, horizon, Lanczos filter and ``start_modes``).  ``flight=False`` skips
-    the clearance check and the end energy of the limit (``clear`` False,
-    ``energy_end`` NaN): the accuracy guards need t_l and v_l only.  ``min_samples``
-    is the least number of samples that bracket the followed root.
+    ``base`` is the Lanczos lift-off with ``start_modes`` when the caller has it
+    already (same case, window and horizon).  ``flight=False`` skips the
+    clearance check and the end energy of the limit (``clear`` False,
+    ``energy_end`` NaN): the accuracy guards need t_l and v_l only.
+    ``min_samples`` is the least number of samples that bracket the followed root.
+    With damping, N may rise to ``4 start_modes`` if that is above ``max_modes``
+    (the decayed modes are dropped, so a large N costs little).
     """
     del sigma  # every filter has the same limit
     clock = time.perf_counter()
+    if case.damping > 0.0:
+        max_modes = max(max_modes, 4 * start_modes)
     if base is None:
         lanczos = SpectralFilter("lanczos", start_modes)
         base_series = legendre_series(
             case.phi_a, case.damping_law, lanczos, stiffness=case.stiffness
         )
         base = find_liftoff(base_series, case.gamma, t_end=t_end, horizon=recontact)
-    if base.t is None:
+    modes, root, settled, filtered = _identify(case, base, start_modes, max_modes, t_end, recontact)
+
+    def unfinished(converged: bool = False) -> ConvergedReference:
+        seconds = time.perf_counter() - clock
         return ConvergedReference(
-            None, None, math.nan, start_modes, False, tolerance, (), False, 0.0, None
+            None,
+            None,
+            math.nan,
+            modes,
+            converged,
+            tolerance,
+            (),
+            False,
+            seconds,
+            None,
+            filtered,
+            settled,
         )
-    guess, width = base.t, 0.05 * base.t
+
+    if root.t is None:  # the filtered series settled on no lift-off (or did not settle)
+        return unfinished(converged=settled)
+    guess, width = root.t, 0.05 * root.t
     history: list[tuple[int, float, float]] = []
     changes: list[float] = []
-    modes, converged, series = start_modes, False, None
+    converged, series = False, None
     while modes < max_modes:
+        check_deadline(f"the converged reference series at N = {2 * modes}")
         modes *= 2
-        series = unfiltered_series(case, modes)
+        series = _cheaper(unfiltered_series(case, modes), guess - width)
         found = _track_root(series, case.gamma, guess, width, min_samples)
-        if found is None:
-            break
+        if found is None:  # too few modes for the series at t_l yet (its tail still counts)
+            continue
         history.append((modes, *found))
         guess = found[0]
         if len(history) >= 2:
@@ -185,9 +288,7 @@ def converged_legendre(
             if len(changes) >= 3 and changes[-1] > 0.25 * changes[-2] > 0.0625 * changes[-3]:
                 break
     if not history or series is None:
-        return ConvergedReference(
-            None, None, math.nan, modes, False, tolerance, tuple(history), False, 0.0, None
-        )
+        return unfinished()
     _, t_l, v_l = history[-1]
     clear, energy = False, math.nan
     if flight:
@@ -199,10 +300,12 @@ def converged_legendre(
         v_l,
         energy,
         modes,
-        converged,
+        converged and settled,
         tolerance,
         tuple(history),
         clear,
         time.perf_counter() - clock,
         series,
+        filtered,
+        settled,
     )

@@ -8,19 +8,28 @@ factor of 2-3, which is all a refusal needs): ``liftoff`` with N = 1000 / 3000 /
 ``40 ns x S x (N + 1)``, with ``S`` the samples of the bracketing grid, 16 per
 period of the highest retained mode (:func:`twoball.modal.liftoff.bracketing_grid`),
 and ``m`` the Gauss points of eq. (3.12) (:func:`twoball.modal.legendre.quadrature_points`).
+
+With bending, ``omega_N ~ sqrt(beta) N^2`` sets the grid instead of ``N``
+(tennis ball, N = 960: 147 s measured, 1.4 min estimated).  The converged
+reference of the truncation guard (:func:`reference_estimate`) sums, at each
+time, only the modes not yet decayed (:class:`twoball.modal.decay.DecayingSeries`):
+its cost grows like N, not N^2.
 """
 
 from __future__ import annotations
 
 import math
 
+import numpy as np
 from twoball.modal.legendre import MAX_QUADRATURE
 from twoball.modal.series import CHUNK
+from twoball.modal.stiffness import Stiffness
 
 from twoball._common.budget import BASE_MEMORY, Estimate, check, options
 
 __all__ = [
     "check_series",
+    "decaying_work",
     "grid_samples",
     "legendre_omega",
     "reference_estimate",
@@ -29,6 +38,8 @@ __all__ = [
 
 SECONDS_PER_TERM = 40e-9  # one complex exp-multiply-add of the series evaluation
 SAMPLES_PER_PERIOD = 16  # of the bracketing grid (twoball.modal.liftoff.bracketing_grid)
+DECAYED = 40.0  # D omega t beyond which a mode no longer counts (exp(-40) ~ 4e-18)
+TRACK_WIDTH = 0.16  # the followed root's window, 5 % of t_l ~ pi (the basketball's)
 
 
 def legendre_omega(modes: int) -> float:
@@ -41,18 +52,22 @@ def grid_samples(omega_max: float, t_end: float) -> float:
     return math.ceil(t_end * max(omega_max, 1.0) * SAMPLES_PER_PERIOD / (2.0 * math.pi)) + 1
 
 
-def series_estimate(modes: int, t_end: float, terms: int | None = None) -> Estimate:
+def series_estimate(
+    modes: int, t_end: float, terms: int | None = None, omega_max: float | None = None
+) -> Estimate:
     """The closed-form lift-off with N modes over a window ``t_end`` (dimensionless).
 
     Memory: the larger of the Gauss rule's Vandermonde matrix of eq. (3.12),
     ``8 m (N + 1)`` bytes with ``m = min(N + 50, 20000)``, and the evaluation: the
     exponential tables, ``24 min(S, 4096) K`` bytes for K retained modes, and the
     grid's u, u_t, u_tt and force, ``48 S`` bytes.  Time: ``40 ns x S x K``.  ``terms`` is K when it
-    differs from N + 1 (e.g. finite-element modes).
+    differs from N + 1 (e.g. finite-element modes); ``omega_max`` the highest
+    frequency when it is not ``sqrt(N (N + 1))`` (bending, gas).
     """
     modes = int(modes)
     kept = modes + 1 if terms is None else int(terms)
-    samples = grid_samples(legendre_omega(modes), t_end)
+    top = legendre_omega(modes) if omega_max is None else float(omega_max)
+    samples = grid_samples(top, t_end)
     points = min(modes + 50, MAX_QUADRATURE) if terms is None else 0
     # the Vandermonde matrix is freed before the evaluation starts: the larger one is the peak
     evaluation = 24.0 * min(samples, CHUNK) * kept + 48.0 * samples
@@ -60,15 +75,80 @@ def series_estimate(modes: int, t_end: float, terms: int | None = None) -> Estim
     return Estimate(memory, SECONDS_PER_TERM * samples * kept)
 
 
-def reference_estimate(t_end: float, modes: int = 240) -> Estimate:
-    """The converged-series reference of the truncation guard (N up to ~240, the window)."""
-    return series_estimate(modes, t_end)
+def _omegas(modes: int, stiffness: Stiffness | None) -> np.ndarray:
+    n = np.arange(int(modes) + 1, dtype=float)
+    if stiffness is not None and stiffness.active:
+        return stiffness.legendre_omega(n)
+    return np.sqrt(n * (n + 1.0))
 
 
-def check_series(modes: int, t_end: float, t_end_s: float | None = None) -> Estimate:
+def decaying_work(omega: np.ndarray, damping: float, t_end: float) -> tuple[float, float]:
+    """Samples and summed terms of a blockwise-decayed series (DecayingSeries' blocks).
+
+    Blocks ``[0, tau), [tau, 2 tau), ...`` (``tau = 1 / omega_max``); on each, the
+    modes with ``D omega t_start < 40`` at 16 samples per period of the highest.
+    """
+    omega = np.sort(np.asarray(omega, dtype=float))
+    top = max(float(omega[-1]), 1.0)
+    starts, tau = [0.0], 1.0 / top
+    while tau < t_end:
+        starts.append(tau)
+        tau *= 2.0
+    samples = work = 0.0
+    for start, end in zip(starts, [*starts[1:], t_end], strict=True):
+        count = omega.size
+        if damping > 0.0 and start > 0.0:
+            count = int(np.searchsorted(omega, DECAYED / (damping * start), side="right"))
+        highest = max(float(omega[count - 1]) if count else 0.0, 1.0)
+        block = math.ceil((end - start) * highest * SAMPLES_PER_PERIOD / (2 * math.pi)) + 1
+        samples += block
+        work += block * count
+    return samples, work
+
+
+def reference_estimate(
+    t_end: float,
+    modes: int = 30,
+    damping: float = 0.13,
+    stiffness: Stiffness | None = None,
+) -> Estimate:
+    """The converged-series reference of the truncation guard for a result with N modes.
+
+    :func:`twoball.modal.converged.converged_legendre` from N0 = max(N, 30): the
+    filtered lift-off at 2 N0 and 4 N0 (each blockwise, :func:`decaying_work`;
+    the one at N0 is the result itself), then the unfiltered series followed at
+    its root (a few thousand samples of the modes not yet decayed: small, except
+    for D = 0, where every mode is summed there for four doublings).
+    """
+    start = max(int(modes), 30)
+    memory = seconds = 0.0
+    for n in (2 * start, 4 * start):
+        samples, work = decaying_work(_omegas(n, stiffness), damping, t_end)
+        memory = max(memory, 24.0 * CHUNK * (n + 1) + 48.0 * samples)
+        seconds += SECONDS_PER_TERM * work
+    if damping == 0.0:  # nothing decays: the root is followed with every mode, 4 doublings
+        for n in (2 * start, 4 * start, 8 * start, 16 * start):  # (the changes stop shrinking)
+            if n > 3840:
+                break
+            samples = max(2001.0, 40 * TRACK_WIDTH * float(_omegas(n, stiffness)[-1]))
+            seconds += SECONDS_PER_TERM * samples * (n + 1)
+    return Estimate(BASE_MEMORY + memory, seconds)
+
+
+def check_series(
+    modes: int,
+    t_end: float,
+    t_end_s: float | None = None,
+    damping: float = 0.13,
+    stiffness: Stiffness | None = None,
+) -> Estimate:
     """Refuse a closed-form lift-off (N modes, window ``t_end`` dimensionless) that cannot fit.
 
-    The truncation guard's converged reference over the same window is included.
+    The truncation guard's converged reference over the same window is included;
+    ``stiffness`` as in :func:`reference_estimate`.
     """
-    estimate = series_estimate(modes, t_end) + reference_estimate(t_end)
+    top = float(_omegas(modes, stiffness)[-1])
+    estimate = series_estimate(modes, t_end, omega_max=top) + reference_estimate(
+        t_end, modes, damping, stiffness
+    )
     return check(options(modes=int(modes), t_end=t_end_s), estimate)

@@ -9,7 +9,7 @@ The scalings to the dimensionless model and the SI ranges are in
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass, replace
+from dataclasses import dataclass, field, replace
 from typing import Any
 
 from twoball.modal.damping import ModalRatio, Rayleigh
@@ -45,6 +45,8 @@ _SAME = 1e-12  # relative: a typed value equal to the measured one to double pre
 def _measured(name: str | None) -> Measured | None:
     if name is None:
         return None
+    if not isinstance(name, str):
+        raise ParameterError("preset", "one of " + ", ".join(sorted(MEASURED)), name)
     try:
         return MEASURED[name]
     except KeyError:
@@ -73,7 +75,9 @@ class Case:
     wave_speed : float
         Angular wave speed c [1/s], > 0, eq. (3.8).
     v0 : float
-        Impact speed [m/s]; the sign is ignored (``|v0|`` is used).
+        Impact speed [m/s]; ``|v0|`` is used.  A negative value is read as the
+        paper's signed velocity (Fig. 6: v0 = -4.1 m/s, downwards) and said in
+        :attr:`notes`; only ``v0^2`` enters eqs. (3.6)-(3.7).
     phi_a : float or None or "eq. (3.7)"
         Contact (truncation) angle [rad] in (pi/2, pi - 1e-6], eq. (3.3); None: by the
         rule above; ``"eq. (3.7)"``: from ``|v0|``, R, c by eq. (3.7) in any case.
@@ -136,12 +140,17 @@ class Case:
     atmosphere: float = ATMOSPHERE
     membrane: Membrane | str = Membrane()
     rayleigh: Rayleigh | None = None
+    #: The v0 as given when it was negative (the paper's sign: downwards), else None.
+    v0_given: float | None = field(default=None, compare=False, repr=False)
 
     def __post_init__(self) -> None:
         object.__setattr__(self, "radius", check_radius(self.radius))
         object.__setattr__(self, "wave_speed", check_wave_speed(self.wave_speed))
         object.__setattr__(self, "g", check_g(self.g))
+        given = self.v0
         object.__setattr__(self, "v0", check_v0(self.v0))
+        if given != self.v0:  # negative: kept to say how it was read
+            object.__setattr__(self, "v0_given", float(given))
         damping = _number("damping", self.damping, "in [0, 1)")
         if not (0.0 <= damping < 1.0):
             raise ParameterError("damping", "in [0, 1)", self.damping)
@@ -163,6 +172,13 @@ class Case:
                 self, "pressure", bounded("pressure", self.pressure, *PRESSURE_RANGE, "Pa")
             )
         atmosphere = bounded("atmosphere", self.atmosphere, 0.0, PRESSURE_RANGE[1], "Pa")
+        if self.gas == "none" and atmosphere != ATMOSPHERE:  # it acts on the gas alone
+            raise ParameterError(
+                "atmosphere",
+                f"left at {ATMOSPHERE:g} Pa without a gas (it sets the enclosed gas's "
+                "pressure P + atmosphere; give gas isothermal or adiabatic)",
+                self.atmosphere,
+            )
         object.__setattr__(self, "bending", bending)
         object.__setattr__(self, "atmosphere", atmosphere)
         object.__setattr__(self, "membrane", Membrane.of(self.membrane))
@@ -216,6 +232,11 @@ class Case:
     def _resolve_phi_a(self) -> tuple[float, str]:
         """The rule for phi_a: given, else the preset's measurement, else eq. (3.7)."""
         measured = _measured(self.preset_name)
+        if self.phi_a_source is not None and (
+            not isinstance(self.phi_a_source, str) or not self._known_source(self.phi_a_source)
+        ):
+            valid = "None (set by the class), 'given', 'eq. (3.7)' or 'measured (<preset>)'"
+            raise ParameterError("phi_a_source", valid, self.phi_a_source)
         if self.phi_a is None or self.phi_a == FROM_V0:
             if (
                 self.phi_a is None
@@ -223,8 +244,14 @@ class Case:
                 and measured.phi_a is not None
                 and self.at_measured_point
             ):
-                return measured.phi_a, f"measured ({self.preset_name})"
-            return self._phi_a_from_v0(), FROM_V0
+                phi_a, source = measured.phi_a, f"measured ({self.preset_name})"
+            else:
+                phi_a, source = self._phi_a_from_v0(), FROM_V0
+            if self.phi_a_source not in (None, source):  # a source the rule did not give
+                raise ParameterError(
+                    "phi_a_source", f"None (set by the class; here {source!r})", self.phi_a_source
+                )
+            return phi_a, source
         phi_a = check_phi_a(self.phi_a)
         source = self.phi_a_source or "given"
         if source == "given":
@@ -245,6 +272,12 @@ class Case:
         return phi_a_from_v0(
             self.v0, self.radius, self.wave_speed, stiffness.gas, stiffness.membrane
         )
+
+    @staticmethod
+    def _known_source(source: str) -> bool:
+        """Whether ``source`` is one of the words the class itself writes."""
+        measured = [f"measured ({name})" for name in MEASURED]
+        return source in ("given", FROM_V0, *measured)
 
     @property
     def at_measured_point(self) -> bool:
@@ -277,6 +310,21 @@ class Case:
             f"{self.preset_name} preset's measured {m.phi_a:g} rad applies only at its own "
             "R, c, |v0|"
         )
+
+    @property
+    def v0_note(self) -> str | None:
+        """How a negative v0 was read (None for a positive one)."""
+        if self.v0_given is None:
+            return None
+        return (
+            f"v0 = {self.v0_given:g} m/s read as an impact at {self.v0:g} m/s downwards (the "
+            "paper's sign, Fig. 6: v0 < 0 falls); the model uses |v0|"
+        )
+
+    @property
+    def notes(self) -> list[str]:
+        """The remarks on how the case was read: :attr:`phi_a_note`, :attr:`v0_note`."""
+        return [note for note in (self.phi_a_note, self.v0_note) if note]
 
     @property
     def scalings(self) -> Scalings:
@@ -352,7 +400,8 @@ class Case:
         """
         if "phi_a_source" in changes:
             raise ParameterError("phi_a_source", "set by the class, not given", None)
-        known = [f for f in self.__dataclass_fields__ if f not in ("phi_a_source", "pressure")]
+        hidden = ("phi_a_source", "pressure", "v0_given")
+        known = [f for f in self.__dataclass_fields__ if f not in hidden]
         for name in changes:
             if name not in known:
                 hint = (
@@ -365,6 +414,8 @@ class Case:
         rule = ("v0", "wave_speed", "radius", "preset_name", "gas", "atmosphere", "membrane")
         if "phi_a" in changes or any(k in changes for k in rule):
             changes = {"phi_a": None, **changes, "phi_a_source": None}
+        if "v0" in changes:
+            changes["v0_given"] = None
         return replace(self, **changes)
 
     @classmethod
@@ -464,6 +515,8 @@ PRESETS: dict[str, Case] = {
 
 def preset(name: str) -> Case:
     """The named preset case (basketball, tennis, volleyball); see :data:`MEASURED`."""
+    if not isinstance(name, str):
+        raise ParameterError("preset", "one of " + ", ".join(sorted(PRESETS)), name)
     try:
         return PRESETS[name]
     except KeyError:

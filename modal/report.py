@@ -63,12 +63,24 @@ class LiftoffReport:
     warnings: tuple[str, ...] = ()
     provenance: dict[str, Any] | None = field(default=None, compare=False, repr=False)
 
+    def __repr__(self) -> str:
+        """The answer first, in SI: lifted, t_l [s], v_l [m/s], v_l/|v0|; then how and on what.
+
+        The dimensionless :attr:`result` is left to its own repr.
+        """
+        return (
+            f"LiftoffReport(lifted={self.lifted}, t_liftoff_s={self.t_liftoff_s!r}, "
+            f"v_liftoff_m_s={self.v_liftoff_m_s!r}, ratio={self.ratio!r}, "
+            f"backend={self.backend!r}, sigma={self.sigma!r}, recontact={self.recontact!r}, "
+            f"warnings={len(self.warnings)}, case={self.case!r})"
+        )
+
     @property
     def notes(self) -> list[str]:
         """Remarks the reader must see (the CLI prints them on standard error): how
-        phi_a was chosen, when eq. (3.7) departs from a preset's measured angle."""
-        note = self.case.phi_a_note
-        return [note] if note else []
+        phi_a was chosen, when eq. (3.7) departs from a preset's measured angle, and
+        how a negative v0 was read (:attr:`Case.notes`)."""
+        return self.case.notes
 
     @property
     def lifted(self) -> bool:
@@ -188,13 +200,14 @@ def report_liftoff(
     (:mod:`twoball.modal.guards`) add the re-contact window's and, with
     ``reference``, the ``truncation`` block: the converged series beside the
     N-result (~10 ms for the basketball, up to ~1 s for D -> 0, where the series
-    converges slowly).
+    converges slowly); then the inputs far from any ball and the windows in which
+    nothing can lift off (:func:`twoball.modal.guards.case_warnings`, ``span_warnings``).
     """
     result = find_liftoff(
         motion, case.gamma, t_end=t_end_dimensionless(case, t_end_s), horizon=recontact
     )
     extra, notes = dict(extra or {}), list(warnings)
-    from twoball.modal.guards import liftoff_guards, window_warnings
+    from twoball.modal.guards import case_warnings, liftoff_guards, span_warnings, window_warnings
 
     if reference:
         found, block = liftoff_guards(case, result, backend, sigma)
@@ -202,6 +215,7 @@ def report_liftoff(
         extra["truncation"] = block.as_dict()
     else:
         notes += window_warnings(case, result)
+    notes += case_warnings(case) + span_warnings(case, result)
     return LiftoffReport(case, result, backend, sigma, recontact, extra, tuple(notes))
 
 
@@ -216,7 +230,13 @@ def legendre_liftoff(
     """Lift-off of the closed-form CEM, eqs. (3.12)-(3.16) with criteria (i)-(ii) of §3(a)."""
     from twoball.modal.cost import check_series
 
-    check_series(case.modes, t_end_dimensionless(case, t_end_s), t_end_s)
+    check_series(
+        case.modes,
+        t_end_dimensionless(case, t_end_s),
+        t_end_s,
+        case.damping,
+        case.stiffness if case.stiff else None,
+    )
     series = legendre_series(
         case.phi_a, case.damping_law, SpectralFilter(sigma, case.modes), stiffness=case.stiffness
     )

@@ -38,6 +38,7 @@ from numpy.typing import ArrayLike
 from twoball.modal.damping import ModalRatio, Rayleigh, is_law
 from twoball.modal.filters import SpectralFilter
 
+from twoball._common.budget import check_deadline
 from twoball._common.errors import NumericalError, ParameterError
 
 CHUNK = 4096  # time samples evaluated at once; bounds memory for large mode counts
@@ -290,6 +291,8 @@ class ModalSeries:
         flat = times.reshape(-1)
         out = np.empty((flat.size,) + amplitudes.shape[1:])
         for start in range(0, flat.size, CHUNK):
+            if start:
+                check_deadline(f"the modal series at sample {start} of {flat.size}")
             chunk = flat[start : start + CHUNK]
             block = _exponential_table(chunk, rates)
             values = _product(block, amplitudes).real

@@ -274,13 +274,26 @@ def stiffen(series: ModalSeries, stiffness: Stiffness, surface_ratio: float = 1.
 
 
 def flexural_rigidity(youngs_modulus: float, thickness: float, poisson: float = 0.5) -> float:
-    """``B = E h^3 / (12 (1 - nu^2))`` [N m] from E [Pa], h [m] and nu in [0, 1/2]."""
+    """``B = E h^3 / (12 (1 - nu^2))`` [N m] from E [Pa], h [m] and nu in [0, 1/2].
+
+    A B above the range of :class:`~twoball.modal.parameters.Case` (1e6 N m) is
+    refused here, naming ``youngs_modulus`` (what was given), not ``bending``.
+    """
+    from twoball.modal.scalings import BENDING_RANGE
+
     from twoball._common.errors import bounded
 
     youngs_modulus = bounded("youngs_modulus", youngs_modulus, 0.0, 1e15, "Pa", low_open=True)
     thickness = bounded("thickness", thickness, 0.0, 1.0, "m", low_open=True)
     poisson = bounded("poisson", poisson, 0.0, 0.5)
-    return youngs_modulus * thickness**3 / (12.0 * (1.0 - poisson**2))
+    bending = youngs_modulus * thickness**3 / (12.0 * (1.0 - poisson**2))
+    if bending > BENDING_RANGE[1]:
+        valid = (
+            f"such that B = E h^3 / (12 (1 - nu^2)) is at most {BENDING_RANGE[1]:g} N m "
+            f"(here h = {thickness:g} m, nu = {poisson:g}: B = {bending:.4g} N m)"
+        )
+        raise ParameterError("youngs_modulus", valid, youngs_modulus)
+    return bending
 
 
 def floor_contact_time(wave_speed: float) -> float:

@@ -27,9 +27,15 @@ from __future__ import annotations
 import importlib as _importlib
 import os as _os
 import types as _types
+from collections.abc import Callable as _Callable
+from typing import TYPE_CHECKING as _TYPE_CHECKING
 
 from twoball._common.lazy import attach as _attach
 from twoball._version import __version__
+
+if _TYPE_CHECKING:  # annotations only: nothing numerical is imported with the package
+    from twoball.modal.parameters import Case
+    from twoball.verify.checks.results import VerifyResult
 
 # In a source checkout the parts (modal/, fem_membrane/, verify/) sit beside this
 # folder; installed, setuptools maps them to twoball/modal, ... (pyproject.toml).
@@ -87,18 +93,52 @@ class _VerifyPackage(_types.ModuleType):
     modules is imported.  So the subpackage itself is made callable here.
     """
 
-    def __call__(self, *args: object, **kwargs: object) -> object:
+    def __call__(
+        self,
+        case: Case | None = None,
+        *,
+        thorough: bool = False,
+        fast: bool = False,
+        sigma: str = "lanczos",
+        recontact: str = "window",
+        t_end: float | None = None,
+        out: str | _os.PathLike[str] | None = None,
+        progress: _Callable[[str], None] | None = None,
+    ) -> VerifyResult:
+        """Every backend against the closed form, with PASS/FAIL per check.
+
+        Parameters
+        ----------
+        case : Case, optional
+            The impact (default the basketball preset).
+        thorough : bool
+            Finer meshes as well (minutes, not seconds).
+        fast : bool
+            The small configuration of the test suite.
+        sigma, recontact, t_end
+            As in :func:`twoball.liftoff`.
+        out : path, optional
+            Report directory to write (report.md, results.json, CSV, PNG).
+        progress : callable, optional
+            Called with a short text as each step starts (:class:`twoball.Reporter`).
+
+        Returns
+        -------
+        VerifyResult
+            ``passed`` only if every check passes.
+        """
         from twoball._studies import verify as run_verify
 
-        return run_verify(*args, **kwargs)
-
-    @property
-    def __signature__(self) -> object:
-        import inspect
-
-        from twoball._studies import verify as run_verify
-
-        return inspect.signature(run_verify)
+        return run_verify(
+            case,
+            thorough=thorough,
+            fast=fast,
+            sigma=sigma,
+            recontact=recontact,
+            t_end=t_end,
+            out=out,
+            progress=progress,
+        )
 
 
 verify.__class__ = _VerifyPackage

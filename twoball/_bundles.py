@@ -51,6 +51,7 @@ def bundles(
     damping: Any = None,
     old: dict[str, Any] | None = None,
     takes: tuple[str, ...] = ("mesh", "stepping", "body", "damping"),
+    stacklevel: int = 3,
 ) -> Bundles:
     """Check the bundles' types and fold the old keywords ``old`` into them.
 
@@ -90,7 +91,7 @@ def bundles(
             "mesh=MeshOptions(...), stepping=Stepping(...), body=Body(...) or "
             "damping=ModalRatio(...)/Rayleigh(...) instead",
             DeprecationWarning,
-            stacklevel=3,
+            stacklevel=stacklevel,
         )
     fields = {k: old.get(k) for k in MESH_KEYS}
     if any(v is not None for v in fields.values()) or (mesh is not None and "mesh" in takes):

@@ -16,8 +16,9 @@ from pathlib import Path
 from typing import Any
 
 from twoball._bundles import bundles
+from twoball._common.budget import timed
 from twoball._common.errors import ParameterError
-from twoball._common.progress import Step, silent
+from twoball._common.progress import Step, check_progress, silent
 from twoball._common.provenance import block
 from twoball._common.staging import check_path_type
 from twoball.modal.parameters import Case
@@ -40,7 +41,13 @@ def _field_bundles(verb: str, mesh: Any, stepping: Any, body: Any, old: dict[str
     """The bundles of a field verb: mesh, stepping (window and route only) and body."""
     times = old.pop("times", None)
     given = bundles(
-        verb, mesh=mesh, stepping=stepping, body=body, old=old, takes=("mesh", "stepping", "body")
+        verb,
+        mesh=mesh,
+        stepping=stepping,
+        body=body,
+        old=old,
+        takes=("mesh", "stepping", "body"),
+        stacklevel=4,
     )
     if given.stepping is not None:
         given.stepping.refuse("with field outputs (modal superposition)", "scheme", "dt")
@@ -76,6 +83,7 @@ def _frames(frames: Any, legacy_times: Any) -> tuple[int | None, Sequence[float]
     return frames, None
 
 
+@timed
 def export(
     out: str | os.PathLike[str],
     case: Case | None = None,
@@ -169,6 +177,7 @@ def export(
     from twoball.verify.output.series import check_side_entries, series_format, write_series
 
     check_path_type(out)
+    check_progress(progress)
     given, legacy_times = _field_bundles("twoball.export", mesh, stepping, body, deprecated)
     case = _case(case)
     fmt = series_format(out, format)
@@ -190,7 +199,7 @@ def export(
         raise ParameterError("frames", "exactly one time for a single .vtu file", list(times))
     field = field_mesh(given.mesh, cells=True)  # reads a file
     if times is not None:
-        check_frame_budget(case, len(times), "frames", field)
+        check_frame_budget(case, len(times), "times", field)
     else:
         check_frame_budget(case, frames or DEFAULT_FRAMES, "frames", field)
     say = progress or silent
@@ -238,6 +247,7 @@ def _shown(frames: int | None, times: Any) -> Any:
     return frames if times is None else [float(t) for t in times]
 
 
+@timed
 def render(
     out: str | os.PathLike[str],
     case: Case | None = None,
@@ -308,6 +318,7 @@ def render(
     from twoball.verify.output.render import DEFAULT_SIZE, image_kind, render_scene, round_size
 
     check_path_type(out)
+    check_progress(progress)
     time = deprecated.pop("time", None)
     legacy_view = {k: deprecated.pop(k) for k in ("warp", "size", "fps") if k in deprecated}
     given, legacy_times = _field_bundles("twoball.render", mesh, stepping, body, deprecated)
@@ -399,6 +410,7 @@ def render(
     )
 
 
+@timed
 def plot(
     kind: str,
     out: str | os.PathLike[str],
@@ -478,6 +490,7 @@ def plot(
     from twoball.verify.output.options import PlotOptions
 
     check_path_type(out)
+    check_progress(progress)
     legacy = {k: deprecated.pop(k) for k in tuple(deprecated) if k in PLOT_OPTION_KEYS}
     given, _ = _field_bundles("twoball.plot", mesh, stepping, body, deprecated)
     if any(v is not None for v in legacy.values()):
@@ -542,12 +555,15 @@ def plot(
         drawn = precursor_figure(case, curves, window)
         rows += precursor_rows(case, curves)
     elif kind == "eigen":
+        if given.stepping is not None:  # the window and the time options name themselves
+            from twoball.modal.stepping import Stepping
+
+            given.stepping.refuse("with kind eigen (use levels, orders)", *Stepping.VALID)
         refused = {"case": case, "backends": backends, "mesh": given.mesh, "sigma": sigma}
         refused |= {"recontact": recontact, "instants": figure.instants}
-        refused |= {"stepping": given.stepping}
         for name, value in refused.items():
             if value is not None:
-                shown = type(value).__name__ if name in ("case", "stepping") else value
+                shown = type(value).__name__ if name == "case" else value
                 shown = shown.label if hasattr(shown, "label") else shown
                 raise ParameterError(name, "left out with kind eigen (use levels, orders)", shown)
         levels, orders = eigen_sizes(figure.levels, figure.orders, figure.max_degree)
@@ -564,6 +580,13 @@ def plot(
                 raise ParameterError(
                     name, f"left out with kind {kind} (eigen only)", getattr(figure, name)
                 )
+        if kind == "waterfall" and recontact is not None:
+            raise ParameterError(
+                "recontact",
+                "left out with kind waterfall (it draws u(phi) at fixed instants; the "
+                "re-contact horizon acts on the lift-off: kind pole)",
+                recontact,
+            )
         if kind == "pole" and figure.instants is not None:
             raise ParameterError(
                 "instants", "left out with kind pole (waterfall only)", figure.instants
@@ -649,6 +672,9 @@ def mesh_block(field: Any) -> dict[str, object]:
 class ExportResult:
     """Files written by :func:`export` and what they hold (SI).
 
+    Like every result that writes files, it has ``files`` (every one) and
+    ``file`` (the main one).
+
     Examples
     --------
     >>> import tempfile, pathlib, twoball
@@ -669,11 +695,17 @@ class ExportResult:
     warnings: list[str] = field(default_factory=list)
     provenance: dict[str, Any] | None = None
 
+    @property
+    def file(self) -> Path:
+        """The main file (``.xdmf``, ``.pvd`` or ``.vtu``); :attr:`files` lists every one."""
+        return self.files[0]
+
     def as_dict(self) -> dict[str, Any]:
         """JSON-ready summary with the lift-off of the exported backend."""
         return {
             "provenance": self.provenance,
             "warnings": self.warnings,
+            "file": str(self.file),
             "files": [str(f) for f in self.files],
             "format": self.format,
             "times_s": self.times_s,
@@ -687,7 +719,7 @@ class ExportResult:
 
 @dataclass(frozen=True)
 class RenderResult:
-    """The picture or animation written by :func:`render`.
+    """The picture or animation written by :func:`render`: ``file`` (and ``files``, one).
 
     Examples
     --------
@@ -707,12 +739,18 @@ class RenderResult:
     warnings: list[str] = field(default_factory=list)
     provenance: dict[str, Any] | None = None
 
+    @property
+    def files(self) -> list[Path]:
+        """Every file written (one: :attr:`file`), as :attr:`ExportResult.files`."""
+        return [self.file]
+
     def as_dict(self) -> dict[str, Any]:
         """JSON-ready summary."""
         return {
             "provenance": self.provenance,
             "warnings": self.warnings,
             "file": str(self.file),
+            "files": [str(f) for f in self.files],
             "times_s": self.times_s,
             "size": list(self.size),
             "warp": self.warp,
@@ -723,7 +761,8 @@ class RenderResult:
 
 @dataclass(frozen=True)
 class PlotResult:
-    """The PNG written by :func:`plot`, with one line per curve family.
+    """The figure written by :func:`plot` (``file``, and ``files``, one), with one line per
+    curve family.
 
     Examples
     --------
@@ -742,12 +781,18 @@ class PlotResult:
     warnings: list[str] = field(default_factory=list)
     provenance: dict[str, Any] | None = None
 
+    @property
+    def files(self) -> list[Path]:
+        """Every file written (one: :attr:`file`), as :attr:`ExportResult.files`."""
+        return [self.file]
+
     def as_dict(self) -> dict[str, Any]:
         """JSON-ready summary."""
         return {
             "provenance": self.provenance,
             "warnings": self.warnings,
             "file": str(self.file),
+            "files": [str(f) for f in self.files],
             "kind": self.kind,
             "rows": [list(r) for r in self.rows],
             "liftoff": {name: r.as_dict() for name, r in self.reports.items()},

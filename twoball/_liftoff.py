@@ -11,8 +11,9 @@ from dataclasses import replace
 from typing import Any
 
 from twoball._bundles import bundles, with_damping
+from twoball._common.budget import timed
 from twoball._common.errors import ParameterError
-from twoball._common.progress import Step
+from twoball._common.progress import Step, check_progress
 from twoball.modal.parameters import Case
 from twoball.modal.report import LiftoffReport
 
@@ -21,6 +22,7 @@ BACKENDS: tuple[str, ...] = ("legendre", "fem")
 __all__ = ["BACKENDS", "liftoff"]
 
 
+@timed
 def liftoff(
     case: Case | None = None,
     *,
@@ -88,6 +90,7 @@ def liftoff(
     >>> twoball.liftoff(body=twoball.Body(mass_ratio=0.1)).lifted
     True
     """
+    check_progress(progress)
     given = bundles(
         "twoball.liftoff",
         mesh=mesh,
@@ -105,7 +108,7 @@ def liftoff(
     stepping = given.stepping
     t_end = None if stepping is None else stepping.t_end
     if given.body is not None:
-        report = _contact_liftoff(case, backend, given, sigma, recontact)
+        report = _contact_liftoff(case, backend, given, sigma, recontact, progress)
     elif backend == "fem":
         from twoball.fem import solve
 
@@ -138,7 +141,9 @@ def _refuse_fem_options(given: Any, why: str = "with backend legendre") -> None:
         given.stepping.refuse(f"{why} (no time steps)", "scheme", "dt", "route")
 
 
-def _contact_liftoff(case: Case, backend: str, given: Any, sigma: str, recontact: str) -> Any:
+def _contact_liftoff(
+    case: Case, backend: str, given: Any, sigma: str, recontact: str, progress: Step | None = None
+) -> Any:
     """The finite-mass body: the shared contact solver on a backend's modes."""
     if recontact != "window":
         raise ParameterError(
@@ -153,10 +158,15 @@ def _contact_liftoff(case: Case, backend: str, given: Any, sigma: str, recontact
         mesh = MeshOptions.of(given.mesh)
         if mesh.pole is not None:
             raise ParameterError("pole", "left out with mass_ratio (no mesh file)", mesh.pole)
+        if progress is not None:
+            progress(f"finite elements on {mesh.label} (full eigen route) and the contact solver")
         _, report = fem_contact_solution(case, given.body, mesh, sigma=sigma, t_end_s=_t_end(given))
         return report
     _refuse_fem_options(given)
     from twoball.modal.contact.report import legendre_contact
+
+    if progress is not None:
+        progress(f"the contact solver on {case.modes + 1} Legendre modes")
 
     return legendre_contact(case, given.body, sigma=sigma, t_end_s=_t_end(given))
 

@@ -8,6 +8,8 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
 
+from twoball._common.budget import timed
+
 __all__ = ["Reproduction", "reproduce"]
 
 
@@ -35,6 +37,18 @@ class Reproduction:
     sections: list[Any] = field(default_factory=list)
 
     @property
+    def file(self) -> Path:
+        """The main file, ``reproduction.md`` in :attr:`directory`."""
+        from twoball.verify.reproduce.driver import REPORT
+
+        return self.directory / REPORT
+
+    @property
+    def files(self) -> list[Path]:
+        """Every file written into :attr:`directory` (report, JSON, figures), sorted."""
+        return sorted(p for p in self.directory.rglob("*") if p.is_file())
+
+    @property
     def figures(self) -> int:
         """How many figures were written."""
         return sum(len(s.figures) for s in self.sections)
@@ -55,6 +69,7 @@ class Reproduction:
         }
 
 
+@timed
 def reproduce(
     out: str | os.PathLike[str] | None = None,
     *,
@@ -96,10 +111,12 @@ def reproduce(
     >>> (done.directory / "reproduction.md").exists(), done.sections[0].key
     (True, 'table1')
     """
+    from twoball._common.progress import check_progress
     from twoball.verify.reproduce.driver import DEFAULT_OUT, check_output, parse_only
     from twoball.verify.reproduce.driver import reproduce as run_reproduction
     from twoball.verify.sweeps.parallel import Runner, check_workers
 
+    check_progress(progress)
     if only is not None and not isinstance(only, str):
         only = ",".join(str(part) for part in only)
     names = parse_only(only)

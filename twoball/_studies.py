@@ -7,11 +7,16 @@ write a report directory (report.md, results.json, CSV tables, PNG plots).
 from __future__ import annotations
 
 import os
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
+from twoball._common.budget import timed
 from twoball._common.errors import ParameterError
-from twoball._common.progress import Step, silent
+from twoball._common.progress import Step, check_progress, silent
 from twoball.modal.parameters import Case
+
+if TYPE_CHECKING:
+    from twoball.verify.checks.results import VerifyResult
+    from twoball.verify.studies.result import StudyResult
 
 __all__ = ["converge", "parse_levels", "verify", "verify_steps"]
 
@@ -37,21 +42,21 @@ def parse_levels(text: str, mesh: str, study: str = "h") -> tuple[int, ...]:
     return tuple(int(v) for v in levels)
 
 
+@timed
 def converge(
     case: Case | None = None,
     *,
     study: str,
-    mesh: str | None = None,
-    order: int | None = None,
+    mesh: Any = None,
     levels: str | None = None,
     modes_list: str | None = None,
-    geometry: str | None = None,
+    stepping: Any = None,
     sigma: str = "lanczos",
     recontact: str = "window",
-    t_end: float | None = None,
     out: str | os.PathLike[str] | None = None,
     progress: Step = silent,
-) -> Any:
+    **deprecated: Any,
+) -> StudyResult:
     """A refinement study: observed orders, Richardson extrapolation and GCI.
 
     Parameters
@@ -60,23 +65,28 @@ def converge(
         The impact (default the basketball preset).
     study : {"h", "order", "modes", "dt"}
         Mesh refinement, P1 against P2, Legendre truncation N, or time step.
-    mesh : {"sphere", "axisym"}, optional
-        Default sphere (axisym for ``dt``); not used by ``modes``.
-    order : {1, 2, 3, 4}, optional
-        Default 2, as everywhere; ``order`` runs P1 to P4 and takes none.
-    geometry : {"isoparametric", "exact"}, optional
-        Discrete sphere of ``h`` and ``order`` on the sphere (default
-        isoparametric); refused on the line and with ``modes`` and ``dt``.
+    mesh : {"sphere", "axisym"} or MeshOptions, optional
+        The mesh kind (default sphere; axisym for ``dt``; none for ``modes``),
+        or :class:`~twoball.MeshOptions` for its kind, element order (default
+        2; ``order`` runs P1 to P4 and takes none) and geometry (``exact`` on
+        the sphere with ``h`` and ``order`` only); its size is refused (the
+        ``levels`` set it).
     levels : str, optional
         ``"A:B"``; default per study and mesh.
     modes_list : str, optional
         ``modes`` study: ``"30,60,120"`` or ``"30:480"`` (doubling).
-    sigma, recontact, t_end
-        Filter, re-contact horizon and window [s], as in :func:`twoball.liftoff`.
+    stepping : Stepping, optional
+        The window ``t_end`` [s] (default 4 pi / c); no time step (``dt`` sets
+        its own steps by ``levels``).
+    sigma, recontact
+        Filter and re-contact horizon, as in :func:`twoball.liftoff`.
     out : path, optional
         Report directory to write (an earlier report there is replaced).
     progress : callable
-        Called with a short text as each step starts (:class:`twoball._common.progress.Reporter`).
+        Called with a short text as each step starts (:class:`~twoball.Reporter`).
+    **deprecated
+        ``order``, ``geometry`` and ``t_end`` of version 0.2, with a
+        :class:`DeprecationWarning`.
 
     Returns
     -------
@@ -96,6 +106,8 @@ def converge(
     from twoball.verify.studies.result import STUDIES
     from twoball.verify.studies.time_step import run_dt_study
 
+    check_progress(progress)
+    mesh, order, geometry, t_end = _study_options(mesh, stepping, deprecated)
     case = Case.preset("basketball") if case is None else case
     if not isinstance(case, Case):
         raise ParameterError("case", "a twoball.Case", type(case).__name__)
@@ -128,10 +140,15 @@ def converge(
         if levels is not None:
             raise ParameterError("levels", "left out with study modes (use modes_list)", levels)
         mode_list = parse_modes(modes_list) if modes_list is not None else None
+        from twoball.modal.report import t_end_dimensionless
+        from twoball.verify.studies.modes import DEFAULT_MODES, check_modes_study
+
+        check_modes_study(mode_list or DEFAULT_MODES, t_end_dimensionless(case, t_end))
     else:
         if modes_list is not None:
             raise ParameterError("modes_list", "given only with study modes", modes_list)
-        level_list = parse_levels(levels or DEFAULT_LEVELS[(study, mesh, order)], mesh, study)
+        chosen = DEFAULT_LEVELS[(study, mesh, order)] if levels is None else levels
+        level_list = parse_levels(chosen, mesh, study)
     target = None
     if out is not None:
         from twoball.verify.output.report_files import check_output_dir
@@ -150,7 +167,9 @@ def converge(
     else:
         result = run_dt_study(case, mesh=mesh, order=order, levels=level_list, **common)
     from twoball._common.provenance import block
+    from twoball.modal.guards import case_warnings
 
+    result.warnings = case_warnings(case)
     arguments = {"study": study, "mesh": mesh, "order": order, "levels": levels}
     arguments |= {"modes_list": modes_list, "sigma": sigma, "recontact": recontact}
     result.provenance = block(case, "twoball.converge", {**arguments, "t_end": t_end, "out": out})
@@ -162,6 +181,7 @@ def converge(
     return result
 
 
+@timed
 def verify(
     case: Case | None = None,
     *,
@@ -172,7 +192,7 @@ def verify(
     t_end: float | None = None,
     out: str | os.PathLike[str] | None = None,
     progress: Step | None = None,
-) -> Any:
+) -> VerifyResult:
     """Every backend against the closed form, with PASS/FAIL per check.
 
     Parameters
@@ -206,12 +226,18 @@ def verify(
     from twoball.verify.checks.config import config
     from twoball.verify.checks.run import run_verify
 
+    check_progress(progress)
     case = Case.preset("basketball") if case is None else case
     if not isinstance(case, Case):
         raise ParameterError("case", "a twoball.Case", type(case).__name__)
     _paper_model(case, "verify")
     if thorough and fast:
         raise ParameterError("fast", "left out with thorough", fast)
+    from twoball.verify.studies.fem_runs import EIGEN_DEGREES
+
+    if case.modes < max(EIGEN_DEGREES):  # the eigenvalue checks need the modes up to l = 6
+        valid = f"at least {max(EIGEN_DEGREES)} for verify (its eigenvalue checks cover l = 1..6)"
+        raise ParameterError("modes", valid, case.modes)
     target = None
     if out is not None:
         from twoball.verify.output.report_files import check_output_dir
@@ -220,6 +246,9 @@ def verify(
     configuration = config("fast" if fast else ("thorough" if thorough else "default"))
     say = progress or silent
     result = run_verify(case, sigma, recontact, t_end, configuration, say)
+    from twoball.modal.guards import case_warnings
+
+    result.warnings = case_warnings(case)
     from twoball._common.provenance import block
 
     arguments = {"thorough": thorough, "fast": fast, "sigma": sigma, "recontact": recontact}
@@ -271,3 +300,53 @@ def _paper_model(case: Case, what: str) -> None:
     if case.rayleigh is not None:
         valid = f"left out for {what} (they check the paper's ratio D, eq. (3.14))"
         raise ParameterError("rayleigh", valid, case.rayleigh.as_dict())
+
+
+def _study_options(
+    mesh: Any, stepping: Any, deprecated: dict[str, Any]
+) -> tuple[str | None, int | None, str | None, float | None]:
+    """Mesh kind, element order, geometry (None: not given) and window [s] of a study.
+
+    ``mesh`` is a kind name or a :class:`~twoball.MeshOptions` whose size is its
+    default (the study's ``levels`` set the sizes); the 0.2 keywords ``order``,
+    ``geometry`` and ``t_end`` are folded in with a :class:`DeprecationWarning`.
+    """
+    import warnings
+
+    from twoball.fem_membrane.options import DEFAULT_ELEMENTS, DEFAULT_LEVEL, FILE, MeshOptions
+    from twoball.modal.stepping import Stepping
+
+    unknown = set(deprecated) - {"order", "geometry", "t_end"}
+    if unknown:
+        raise TypeError(f"twoball.converge() got an unexpected keyword argument {unknown.pop()!r}")
+    given = {k: v for k, v in deprecated.items() if v is not None}
+    if given:
+        warnings.warn(
+            "twoball.converge: the keywords " + ", ".join(sorted(given)) + " are deprecated; "
+            "pass mesh=MeshOptions(kind, order=..., geometry=...) and stepping=Stepping(t_end=...)",
+            DeprecationWarning,
+            stacklevel=3,
+        )
+    order, geometry, t_end = given.get("order"), given.get("geometry"), given.get("t_end")
+    if isinstance(mesh, MeshOptions):
+        if order is not None or geometry is not None:
+            name = "order" if order is not None else "geometry"
+            raise ParameterError(name, "left out with a MeshOptions (set it there)", given[name])
+        if mesh.kind == FILE:
+            raise ParameterError("mesh", "sphere or axisym for a study (no mesh file)", mesh.label)
+        size = mesh.level if mesh.kind != "axisym" else mesh.elements
+        default = DEFAULT_LEVEL if mesh.kind != "axisym" else DEFAULT_ELEMENTS
+        if size != default:
+            valid = "a MeshOptions without its size in a study (levels set the sizes)"
+            raise ParameterError("mesh", valid, mesh.label)
+        order = mesh.order if mesh.order != 2 else None
+        geometry = mesh.geometry if mesh.geometry != "isoparametric" else None
+        mesh = mesh.kind
+    if stepping is not None:
+        if not isinstance(stepping, Stepping):
+            raise ParameterError("stepping", "a twoball.Stepping", type(stepping).__name__)
+        stepping.refuse("in a study (the study sets its own steps)", "scheme", "dt", "route")
+        if t_end is not None and stepping.t_end is not None:
+            raise ParameterError("t_end", "left out with stepping (set it there)", t_end)
+        t_end = stepping.t_end if stepping.t_end is not None else t_end
+    return mesh, order, geometry, t_end

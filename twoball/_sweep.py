@@ -14,6 +14,7 @@ from pathlib import Path
 from typing import Any
 
 from twoball._bundles import bundles
+from twoball._common.budget import timed
 from twoball._common.errors import ParameterError
 from twoball.modal.parameters import Case
 
@@ -40,7 +41,9 @@ class SweepResult:
     >>> import twoball
     >>> result = twoball.sweep({"v0": [3.0, 4.1]})
     >>> result.parameters, result.shape, [p.case.phi_a_source for p in result.points]
-    (('v0',), (2,), ['eq. (3.7)', 'measured (basketball)'])
+    (('v0',), (2,), ['eq. (3.7)', 'eq. (3.7)'])
+    >>> result.phi_a_rule
+    'eq. (3.7) at every point (from |v0|, R, c)'
     """
 
     parameters: tuple[str, ...]
@@ -62,20 +65,49 @@ class SweepResult:
         grid = SweepGrid(self.parameters, tuple(self.values))
         return plot_sweep(grid, self.points, target)
 
+    @property
+    def phi_a_rule(self) -> str:
+        """How phi_a was chosen: one rule for every point (eq. (3.7) when v0, c or R is
+        swept, else the base case's angle)."""
+        from twoball.verify.sweeps.sweeps import phi_a_rule
+
+        return phi_a_rule([p.case for p in self.points])
+
     def as_dict(self) -> dict[str, Any]:
-        """JSON-ready: parameters, shape, the points (SI) and the provenance."""
+        """JSON-ready: parameters, shape, the phi_a rule, the points (SI) and the provenance."""
         return {
             "parameters": list(self.parameters),
             "shape": list(self.shape),
+            "phi_a_rule": self.phi_a_rule,
             "points": [p.as_dict() for p in self.points],
             "provenance": self.provenance,
         }
+
+
+def _point_cost(case: Case, grid: Any, body: Any, modes: int, window: float) -> Any:
+    """The estimate of the costliest point: the contact solver with a body, else the series
+    at the stiffest bending swept (None: the membrane's series, the sweep's default)."""
+    from twoball.modal.cost import legendre_omega, series_estimate
+
+    stiff = case
+    if "bending" in grid.parameters:
+        stiff = case.derive(bending=float(max(grid.values[grid.parameters.index("bending")])))
+    top = float(stiff.stiffness.legendre_omega(float(modes))) if stiff.stiff else None
+    masses = [0.0 if body is None else body.mass_ratio]
+    if "mass-ratio" in grid.parameters:
+        masses = list(grid.values[grid.parameters.index("mass-ratio")])
+    if max(masses) > 0.0:
+        from twoball.modal.contact.cost import contact_estimate
+
+        return contact_estimate(modes + 1, legendre_omega(modes), window)
+    return None if top is None else series_estimate(modes, window, omega_max=top)
 
 
 def _sweep_name(name: str) -> str:
     return name.replace("_", "-")
 
 
+@timed
 def sweep(
     values: Mapping[str, Sequence[float]],
     case: Case | None = None,
@@ -162,11 +194,18 @@ def sweep(
         raise ParameterError("pair", "given only with drop (a sweep of the whole bounce)", pair)
     import numpy as np
 
+    from twoball._common.progress import check_progress
     from twoball.modal.report import t_end_dimensionless
     from twoball.verify.sweeps.cost import check_sweep
-    from twoball.verify.sweeps.parallel import MIN_PARALLEL_ITEMS, Runner, check_workers
+    from twoball.verify.sweeps.parallel import (
+        MIN_PARALLEL_ITEMS,
+        Runner,
+        check_scheduler,
+        check_workers,
+    )
     from twoball.verify.sweeps.sweeps import SWEEP_PARAMETERS, SweepGrid, SweepSolver, run_sweep
 
+    check_progress(progress)
     legacy_radius = deprecated.pop("contact_radius", None)
     given = bundles(
         "twoball.sweep", stepping=stepping, body=body, old=deprecated, takes=("stepping", "body")
@@ -196,8 +235,10 @@ def sweep(
         from twoball.modal.contact.body import Body
 
         body = Body(0.0, contact_radius=legacy_radius)
-    if scheduler and workers is not None:
+    if scheduler is not None and workers is not None:
         raise ParameterError("workers", "left out with scheduler (the cluster decides)", workers)
+    if scheduler is not None:
+        scheduler = check_scheduler(scheduler)
     workers = 1 if workers is None and not scheduler else workers
     if workers is not None:
         check_workers(workers)  # its type and range, before the budget compares it
@@ -215,13 +256,36 @@ def sweep(
         raise ParameterError("values", "two different parameters for a grid", list(values))
     arrays = []
     for name, items in values.items():
-        array = np.atleast_1d(np.asarray(items, dtype=float))
+        valid = f"a non-empty list of finite numbers for {name}"
+        if isinstance(items, (str, bytes)):
+            raise ParameterError("values", valid, items)
+        try:
+            array = np.atleast_1d(np.asarray(items, dtype=float))
+        except (TypeError, ValueError):
+            raise ParameterError("values", valid, items) from None
         if array.ndim != 1 or array.size < 1 or not np.all(np.isfinite(array)):
-            raise ParameterError(f"values[{name!r}]", "a non-empty list of finite numbers", items)
+            raise ParameterError("values", valid, items)
         arrays.append(array)
+    rule = [p for p in parameters if p in ("v0", "wave-speed", "radius")]
+    if rule and case.phi_a_source == "given":
+        valid = (
+            f"left out when {rule[0].replace('-', '_')} is swept (phi_a then follows |v0|, "
+            "c and R by eq. (3.7) at every point)"
+        )
+        raise ParameterError("phi_a", valid, case.phi_a)
     grid = SweepGrid(parameters, tuple(arrays))
+    if "mass-ratio" in parameters and body is not None and body.energy == "both":
+        # mu > 0 takes eq. (3.7) at |v0| sqrt(1 + mu): so does mu = 0 (one rule per sweep)
+        case = case.derive(phi_a="eq. (3.7)")
     modes = int(max(arrays[parameters.index("modes")])) if "modes" in parameters else case.modes
-    check_sweep(math.prod(grid.shape), modes, t_end_dimensionless(case, t_end), workers)
+    window = t_end_dimensionless(case, t_end)
+    check_sweep(
+        math.prod(grid.shape),
+        modes,
+        window,
+        workers,
+        per_point=_point_cost(case, grid, body, modes, window),
+    )
     cases = grid.cases(case)
     workers = None if scheduler else check_workers(workers)
     if len(cases) < MIN_PARALLEL_ITEMS and not scheduler:
@@ -243,6 +307,12 @@ def sweep(
         solver = SweepSolver(sigma, recontact, t_end)
     with Runner(workers, scheduler) as runner:
         points = run_sweep(cases, solver, progress, runner=runner, indices=grid.indices())
+    from dataclasses import replace as with_rule
+
+    from twoball.verify.sweeps.sweeps import phi_a_rule
+
+    rule = phi_a_rule(cases)  # one rule per sweep: said beside every point
+    points = [with_rule(p, phi_a_rule=rule) for p in points]
     from twoball._common.provenance import block
 
     arguments = {"values": {k: arrays[i] for i, k in enumerate(values)}, **call}

@@ -12,8 +12,9 @@ from numbers import Integral
 from typing import Any
 
 from twoball._bundles import bundles
+from twoball._common.budget import timed
 from twoball._common.errors import ParameterError
-from twoball._common.progress import Step, silent
+from twoball._common.progress import Step, check_progress, silent
 from twoball.fem_membrane.options import MeshOptions
 from twoball.modal.parameters import Case
 from twoball.modal.report import LiftoffReport
@@ -21,6 +22,7 @@ from twoball.modal.report import LiftoffReport
 __all__ = ["eigen", "solve"]
 
 
+@timed
 def solve(
     case: Case | None = None,
     *,
@@ -79,6 +81,7 @@ def solve(
     """
     from twoball.modal.stepping import Stepping
 
+    check_progress(progress)
     given = bundles(
         "twoball.fem.solve",
         mesh=mesh,
@@ -171,13 +174,14 @@ def solve(
         extra["membrane"] = case.membrane.kind
     from twoball.fem_membrane.guards import fem_warnings
 
-    # a user's mesh has no level: its resolution is not estimated (time step still is)
+    # a user's mesh has no level: its size stands in for it
     warnings = fem_warnings(
-        info if loaded is None else {**info, "mesh_kind": None},
+        info,
         SpectralFilter(sigma, case.modes),
         level=spec.level,
         elements=spec.elements,
         time_unit_s=case.scalings.time,
+        surface=None if loaded is None else (loaded.mesh.points, loaded.mesh.cells),
     )
     say("lift-off criteria and the converged closed form beside it")
     report = report_liftoff(
@@ -198,6 +202,7 @@ def solve(
     return replace(report, provenance=block(case, "twoball.fem.solve", arguments))
 
 
+@timed
 def eigen(
     mesh: Any = None,
     *,
@@ -240,6 +245,7 @@ def eigen(
     >>> [(row["l"], row["exact"]) for row in rows]
     [(0, 0.0), (1, 2.0), (2, 6.0), (3, 12.0)]
     """
+    check_progress(progress)
     given = bundles("twoball.fem.eigen", mesh=mesh, old=deprecated, takes=("mesh",))
     from twoball._common.budget import check, options
     from twoball.fem_membrane.cost import fem_dofs, fem_estimate

@@ -28,6 +28,7 @@ from scipy.linalg import expm
 from twoball.modal.contact.system import ContactSystem
 from twoball.modal.roots import bracketed_roots
 
+from twoball._common.budget import check_deadline
 from twoball._common.errors import NumericalError, ParameterError
 
 TIME_TOLERANCE = 1e-12
@@ -64,9 +65,11 @@ class ContactEvent:
 class ContactHistory:
     """All events on [0, t_end] and the final separation (dimensionless).
 
-    ``lifted`` is True if the body is in flight at ``t_end``; then ``t`` and
-    ``velocity`` are the time and the body's upward velocity at the last
-    separation (lift-off or rebound), ``displacement`` its height there.
+    ``lifted`` is True if the body is in flight at ``t_end`` after a last
+    separation (lift-off or rebound) with an upward velocity; then ``t`` and
+    ``velocity`` are the time and that velocity, ``displacement`` its height
+    there.  A body that separated moving down (v1 <= 0) is falling with the
+    membrane and will land again: not lifted.
     """
 
     events: tuple[ContactEvent, ...]
@@ -265,6 +268,7 @@ def integrate(
     if mode == "flight":
         events.append(_separation(system, 0.0, z))
     while True:
+        check_deadline(f"the contact event loop at t = {t:.4g} of {t_end:.4g} (units 1/c)")
         phase = phases[mode]
         if mode == "contact":
             signal = force
@@ -317,7 +321,9 @@ def integrate(
             events.append(_separation(system, t, z))
             mode = "flight"
     final = events[-1] if events and events[-1].kind == "separation" else None
-    lifted = mode == "flight" and final is not None
+    # a body that left the membrane moving down is falling with it, not lifting off
+    # (criterion (ii) of §3(a): no negative lift-off velocity); it lands again later
+    lifted = mode == "flight" and final is not None and final.velocity > 0.0
     return ContactHistory(
         tuple(events),
         t_end,
@@ -359,7 +365,9 @@ def _separation(system: ContactSystem, t: float, z: np.ndarray) -> ContactEvent:
 
 def _advance(phase: _Phase, z: np.ndarray, duration: float) -> np.ndarray:
     steps = int(duration // phase.step)
-    for _ in range(steps):
+    for k in range(steps):
+        if k % 64 == 0:
+            check_deadline(f"the contact solver's last flight, step {k} of {steps}")
         z = phase.next(z)
     rest = duration - steps * phase.step
     return phase.at(z, np.array([rest]))[0] if rest > 0 else z
@@ -380,7 +388,11 @@ def _next_event(
     rate = signal @ phase.matrix  # d/dt (signal . z) = signal . A z
     z, tau = z0, 0.0
     duration = t_end - t0
+    steps = 0
     while tau < duration:
+        steps += 1
+        if steps % 64 == 0:
+            check_deadline(f"the contact event search at t = {t0 + tau:.4g} of {t_end:.4g}")
         h = min(phase.step, duration - tau)
         local = None if phase.walks_dense else phase.local(z)  # the step's and its search's
         if h == phase.step:

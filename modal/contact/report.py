@@ -5,6 +5,30 @@
 the paper's criteria (i)-(ii) of §3(a) applied to the cap-averaged motion
 (:func:`twoball.modal.liftoff.find_liftoff` on a series whose "pole values" are the
 cap averages), which is today's pole result as the contact radius goes to 0.
+
+Accuracy guards (:func:`contact_guards`), as for the massless body
+(:mod:`twoball.modal.guards`):
+
+* truncation: the same contact problem solved in closed form with
+  ``N_ref = max(2 N, 60)`` Lanczos modes is reported beside the result (the
+  ``truncation`` block) and a warning is added when t_l or v1 differs from it
+  by more than 5 %, or when only one of them lifts off.  The contact solutions
+  converge like ``N^-2`` (basketball, mu = 0.1: v1 = 0.4261, 0.4325, 0.4342,
+  0.4346 m/s at N = 30, 60, 120, 240), so the difference to ``2 N`` estimates
+  the error of N (N = 30: -1.5 %; the converged limit: -2.0 %); N = 3 does not
+  lift off where N = 60 does at 11.8 ms: warned.  A converged reference (N
+  doubled to a limit, as for the massless body) is out of reach: one contact
+  solve costs 0.06, 0.24, 0.43, 2.7 and 44 s at N = 30, 60, 120, 240, 480; so
+  ``N_ref`` stops at :data:`CONTACT_REFERENCE_MAX_MODES` (240), and above
+  N = 120 the block says it was not checked (the difference between N = 120
+  and 240 is 0.1 % there).  The finite elements are compared with the same
+  closed form: truncation and discretisation together (plus the mesh guard);
+* the window: a body that separated moving down at the end of the window is
+  not lifted (criterion (ii): no negative lift-off velocity) and this is said;
+  a lift-off followed by less than a refocusing period ``2 pi / c``, or past
+  its apex, is warned as in :func:`twoball.modal.guards.window_warnings`; unit
+  slips and windows in which nothing can lift off as in
+  :func:`twoball.modal.guards.case_warnings` and ``span_warnings``.
 """
 
 from __future__ import annotations
@@ -26,6 +50,10 @@ from twoball.modal.report import t_end_dimensionless
 from twoball.modal.series import ModalSeries
 
 from twoball._common.errors import ParameterError
+
+CONTACT_REFERENCE_MIN_MODES = 60  # twice the paper's N = 30
+CONTACT_REFERENCE_MAX_MODES = 240  # one contact solve: 2.7 s at 240 modes, 44 s at 480
+CONTACT_WARNING = 0.05  # relative difference of t_l or v1 from the reference
 
 
 def check_contact_options(case: Case, body: Body) -> float:
@@ -90,6 +118,18 @@ class ContactReport:
     system: ContactSystem | None = field(default=None, repr=False, compare=False)
     provenance: dict[str, Any] | None = field(default=None, compare=False, repr=False)
 
+    def __repr__(self) -> str:
+        """The answer first, in SI: lifted, final separation [s], v1 [m/s], v1/|v0|, events."""
+        impacts = 0 if self.history is None else len(self.history.impacts)
+        events = 0 if self.history is None else len(self.history.events)
+        return (
+            f"ContactReport(lifted={self.lifted}, t_liftoff_s={self.t_liftoff_s!r}, "
+            f"v_liftoff_m_s={self.v_liftoff_m_s!r}, ratio={self.ratio!r}, "
+            f"mass_ratio={self.mass_ratio!r}, contact_radius_m={self.contact_radius_m!r}, "
+            f"restitution={self.restitution!r}, impacts={impacts}, events={events}, "
+            f"backend={self.backend!r}, sigma={self.sigma!r}, case={self.case!r})"
+        )
+
     @property
     def result(self) -> Any:
         """The dimensionless outcome: the :class:`ContactHistory` (or the massless
@@ -127,9 +167,8 @@ class ContactReport:
 
     @property
     def notes(self) -> list[str]:
-        """How phi_a was chosen (as for the massless lift-off)."""
-        note = (self.membrane or self.case).phi_a_note
-        return [note] if note else []
+        """How phi_a was chosen and a negative v0 read (as for the massless lift-off)."""
+        return (self.membrane or self.case).notes
 
     def trajectory_si(self, samples: int = 600) -> dict[str, Any]:
         """Body and cap-averaged membrane on ``samples`` times over the window (SI).
@@ -248,8 +287,16 @@ def solve_contact(
     samples_per_period: int = 32,
 ) -> ContactReport:
     """Run the shared contact solver on any backend's series and cap averages."""
+    from twoball.modal.contact.cost import check_contact
+
     system = None
+    kept, top = len(series.omega), float(np.max(series.omega, initial=0.0))
     if mass_ratio == 0.0:
+        from twoball.modal.cost import series_estimate
+
+        from twoball._common.budget import check, options
+
+        check(options(modes=case.modes), series_estimate(case.modes, t_end, kept, top))
         cap_series = ModalSeries(
             series.omega,
             series.coefficients,
@@ -261,6 +308,7 @@ def solve_contact(
         result = find_liftoff(cap_series, case.gamma, t_end=t_end)
         history = None
     else:
+        check_contact(kept, top, t_end, modes=case.modes, mass_ratio=mass_ratio)
         system = ContactSystem.from_series(series, contact, mass_ratio, case.gamma)
         history = integrate(system, t_end, restitution, samples_per_period)
         result = None
@@ -281,6 +329,115 @@ def solve_contact(
     )
 
 
+def _relative(value: float | None, reference: float | None) -> float | None:
+    if value is None or reference is None or reference == 0:
+        return None
+    return value / reference - 1.0
+
+
+def contact_reference(
+    case: Case, body: Body, t_end_s: float | None
+) -> tuple[int, ContactReport | None]:
+    """The closed-form contact solution with ``max(2 N, 60)`` Lanczos modes (None above 240)."""
+    modes = max(2 * case.modes, CONTACT_REFERENCE_MIN_MODES)
+    if modes > CONTACT_REFERENCE_MAX_MODES:
+        return modes, None
+    finer = case.derive(modes=modes)
+    return modes, legendre_contact(finer, body, t_end_s=t_end_s, reference=False)
+
+
+def contact_guards(
+    report: ContactReport,
+    reference_modes: int | None = None,
+    reference: ContactReport | None = None,
+) -> tuple[list[str], dict[str, Any] | None]:
+    """Warnings of a contact result and its ``truncation`` block (module docstring).
+
+    ``reference_modes`` None: no truncation check (sweeps), the block is None.
+    """
+    from twoball.modal.guards import case_warnings, span_warnings, window_warnings
+
+    case, result = report.case, report.result
+    warnings = case_warnings(case) + span_warnings(case, result)
+    history = report.history
+    last = history.events[-1] if history is not None and history.events else None
+    scale = case.scalings
+    if not result.lifted and last is not None and last.kind == "separation":
+        t_end_ms = history.t_end * scale.time * 1e3
+        warnings.append(
+            f"the body left the membrane at {last.t * scale.time * 1e3:.4g} ms moving down "
+            f"(v1 = {last.velocity * scale.velocity:.3g} m/s) and is still falling when the "
+            f"window ends at {t_end_ms:.4g} ms: not a lift-off (a negative lift-off velocity "
+            "means a second impact, §3(a)(ii)); lengthen the window t_end"
+        )
+    if result.lifted:
+        warnings += window_warnings(case, result)
+    if reference_modes is None:
+        return warnings, None
+    block: dict[str, Any] = {
+        "modes": case.modes,
+        "reference_modes": reference_modes,
+        "reference": "the same contact problem in closed form, Lanczos filter",
+        "checked": reference is not None,
+        "t_liftoff_s": None,
+        "v_liftoff_m_s": None,
+        "t_difference": None,
+        "v_difference": None,
+        "warning_above": CONTACT_WARNING,
+    }
+    if reference is None:
+        block["not_checked_because"] = (
+            f"the reference would need {reference_modes} modes (above "
+            f"{CONTACT_REFERENCE_MAX_MODES}: one contact solve takes ~45 s at 480)"
+        )
+        return warnings, block
+    t_diff = _relative(report.t_liftoff_s, reference.t_liftoff_s)
+    v_diff = _relative(report.v_liftoff_m_s, reference.v_liftoff_m_s)
+    block.update(
+        t_liftoff_s=reference.t_liftoff_s,
+        v_liftoff_m_s=reference.v_liftoff_m_s,
+        t_difference=t_diff,
+        v_difference=v_diff,
+    )
+    subject = (
+        f"N = {case.modes}" if report.backend == "legendre" else f"the {report.backend} result"
+    )
+    cure = (
+        "raise the number of modes N"
+        if report.backend == "legendre"
+        else f"N = {case.modes} truncation and discretisation (mesh) together"
+    )
+    named = f"the contact solution with N = {reference_modes}"
+    if result.lifted != reference.lifted:
+        if reference.lifted:
+            found = (
+                f"{named} lifts off at {reference.t_liftoff_s * 1e3:.4g} ms with "
+                f"{reference.v_liftoff_m_s:.4g} m/s"
+            )
+            return [*warnings, f"{subject} finds no lift-off, but {found}; {cure}"], block
+        return [*warnings, f"{subject} lifts off, but {named} does not; {cure}"], block
+    differences = [d for d in (t_diff, v_diff) if d is not None]
+    if not differences or max(abs(d) for d in differences) <= CONTACT_WARNING:
+        return warnings, block
+    shown = (
+        f"t_l {t_diff:+.1%}, v1 {v_diff:+.1%} from {named} "
+        f"({reference.t_liftoff_s * 1e3:.4f} ms, {reference.v_liftoff_m_s:.4g} m/s)"
+    )
+    if report.backend == "legendre":
+        return [*warnings, f"N = {case.modes} truncation: {shown}; {cure}"], block
+    return [*warnings, f"{subject} is {shown}: {cure}"], block
+
+
+def guarded(report: ContactReport, body: Body, t_end_s: float | None, *, more=()) -> ContactReport:
+    """``report`` with its warnings (:func:`contact_guards`) and ``truncation`` block."""
+    from dataclasses import replace
+
+    modes, reference = contact_reference(report.case, body, t_end_s)
+    warnings, block = contact_guards(report, modes, reference)
+    extra = {**report.extra, "truncation": block}
+    return replace(report, extra=extra, warnings=(*more, *warnings))
+
+
 def legendre_contact(
     case: Case,
     body: Body,
@@ -288,6 +445,7 @@ def legendre_contact(
     sigma: str = "lanczos",
     t_end_s: float | None = None,
     samples_per_period: int = 32,
+    reference: bool = True,
 ) -> ContactReport:
     """Finite-mass lift-off on the Legendre modes (the closed-form backend).
 
@@ -302,6 +460,9 @@ def legendre_contact(
         Spectral filter of the initial values, eq. (3.16).
     t_end_s : float, optional
         Modelled window [s] (default 4 pi / c).
+    reference : bool
+        Add the truncation block and its warning (:func:`contact_guards`; one
+        more solve with ``max(2 N, 60)`` modes); False: the other warnings only.
     """
     radius = check_contact_options(case, body)
     mass_ratio, restitution, energy = body.mass_ratio, body.restitution, body.energy
@@ -309,7 +470,7 @@ def legendre_contact(
     series = legendre_series(membrane.phi_a, case.damping, SpectralFilter(sigma, case.modes))
     theta = cap_angle(radius, case.radius)
     contact = legendre_cap_averages(theta, case.modes)
-    return solve_contact(
+    report = solve_contact(
         case,
         series,
         contact,
@@ -324,3 +485,8 @@ def legendre_contact(
         extra={"cap_angle_rad": theta},
         samples_per_period=samples_per_period,
     )
+    if reference:
+        return guarded(report, body, t_end_s)
+    from dataclasses import replace
+
+    return replace(report, warnings=tuple(contact_guards(report)[0]))

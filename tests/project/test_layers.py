@@ -16,7 +16,8 @@ from pathlib import Path
 
 import pytest
 
-ROOT = Path(__file__).resolve().parents[2]
+from tests import ROOT
+
 #: Source folder -> dotted name of the package it installs as (pyproject.toml).
 PARTS = {
     "twoball": "twoball",

@@ -15,25 +15,40 @@ Limits
     (``12GiB``, ``500MB``, ``2e9``); default half the machine's physical memory --
     the share one run may take while the desktop, other runs and the page cache
     keep the rest, so that a run near the limit is refused and never swaps or
-    meets the OOM killer.
+    meets the OOM killer -- or, under an address-space limit (``ulimit -v``), a
+    third of the address space still free if that is less (sparse LU reserves
+    about three times what the estimates count, :data:`ADDRESS_SPACE_PER_RESIDENT`).
     Time: ``max_time`` or ``TWOBALL_MAX_TIME`` (``3600``, ``90min``, ``2h``);
     default five minutes -- more than five times the slowest documented single
     run, so no ordinary run is refused, while a run that would look hung is
     refused at once and a deliberate long one says so.
+
+The deadline
+    Estimates are right within a factor of 2-3 at best, so the time limit is
+    also a deadline: the outermost public verb (or command) starts its clock
+    (:func:`running`), and the long loops of every solver -- the series
+    evaluation chunks, the contact event loop, the generalized-alpha steps, the
+    Krylov iterations, sweep points, study runs -- call :func:`check_deadline`.
+    Past the limit it raises :class:`DeadlineError` (a
+    :class:`~twoball._common.errors.NumericalError`: exit status 3, one line
+    naming what was running).  Nested verbs share the outer clock.
 
 Only the standard library is imported here.
 """
 
 from __future__ import annotations
 
+import functools
 import math
 import os
 import re
-from collections.abc import Iterator
+import time
+from collections.abc import Callable, Iterator
 from contextlib import contextmanager
 from dataclasses import dataclass
+from typing import Any, TypeVar
 
-from twoball._common.errors import ParameterError
+from twoball._common.errors import NumericalError, ParameterError
 
 KiB, MiB, GiB, TiB = 2**10, 2**20, 2**30, 2**40
 DEFAULT_MEMORY_SHARE = 0.5  # of physical memory
@@ -43,6 +58,10 @@ MEMORY_ENV = "TWOBALL_MAX_MEMORY"
 TIME_ENV = "TWOBALL_MAX_TIME"
 
 BASE_MEMORY = 100 * MiB  # interpreter, numpy, scipy (measured 89 MiB)
+#: Address space mapped per byte of the estimates (resident memory): SuperLU reserves
+#: (calloc) its fill estimate for every factorisation and touches a fraction; measured
+#: sphere L5 P4: 9.5 GB mapped at 1.6 GB resident, estimate 3.3 GB.
+ADDRESS_SPACE_PER_RESIDENT = 3.0
 
 _UNITS = {
     "": 1,
@@ -79,6 +98,29 @@ def physical_memory() -> int | None:
         return int(os.sysconf("SC_PAGE_SIZE")) * int(os.sysconf("SC_PHYS_PAGES"))
     except (AttributeError, ValueError, OSError):
         return None
+
+
+def address_space_left() -> int | None:
+    """Bytes the process may still map under its address-space limit (``ulimit -v``), or None.
+
+    ``RLIMIT_AS`` less the virtual size already mapped (``/proc/self/statm``; 0 where
+    it cannot be read).  None without such a limit.
+    """
+    try:
+        import resource
+
+        soft, _ = resource.getrlimit(resource.RLIMIT_AS)
+    except (ImportError, AttributeError, OSError, ValueError):
+        return None
+    if soft == resource.RLIM_INFINITY or soft < 0:
+        return None
+    used = 0
+    try:
+        with open("/proc/self/statm") as statm:
+            used = int(statm.read().split()[0]) * int(os.sysconf("SC_PAGE_SIZE"))
+    except (OSError, ValueError, IndexError, AttributeError):
+        pass
+    return max(int(soft) - used, 0)
 
 
 def parse_bytes(text: str | float, option: str = "max_memory") -> int:
@@ -173,6 +215,9 @@ class Budget:
         if memory_text is None:
             total = physical_memory()
             memory = int(DEFAULT_MEMORY_SHARE * total) if total else FALLBACK_MEMORY
+            left = address_space_left()  # under ``ulimit -v`` the address space is the limit
+            if left is not None:
+                memory = min(memory, int(left / ADDRESS_SPACE_PER_RESIDENT))
         else:
             memory = parse_bytes(memory_text)
         seconds = DEFAULT_MAX_SECONDS if time_text is None else parse_seconds(time_text)
@@ -238,3 +283,73 @@ def options(**values: object) -> str:
         for name, value in values.items()
         if value is not None
     )
+
+
+class DeadlineError(NumericalError):
+    """The work ran past the time limit (``max_time``) and was stopped (exit status 3)."""
+
+
+#: The clock of the time limit: when the outermost verb started (None: no clock),
+#: and the limit in force with the moment it was read (re-read at most once a second).
+_clock: dict[str, float | None] = {"start": None, "limit": None, "read": None}
+_LIMIT_REFRESH_S = 1.0
+
+_F = TypeVar("_F", bound=Callable[..., Any])
+
+
+@contextmanager
+def running() -> Iterator[None]:
+    """Start the clock of the time limit for the enclosed work (unless one runs already)."""
+    if _clock["start"] is not None:  # a verb inside a verb (or a command): one clock
+        yield
+        return
+    _clock.update(start=time.monotonic(), limit=None, read=None)
+    try:
+        yield
+    finally:
+        _clock.update(start=None, limit=None, read=None)
+
+
+def timed(function: _F) -> _F:
+    """Decorator of a public verb: its work runs on the clock of :func:`running`."""
+
+    @functools.wraps(function)
+    def wrapper(*args: Any, **kwargs: Any) -> Any:
+        with running():
+            return function(*args, **kwargs)
+
+    return wrapper  # type: ignore[return-value]
+
+
+def elapsed() -> float | None:
+    """Seconds since the clock started (None without one)."""
+    start = _clock["start"]
+    return None if start is None else time.monotonic() - start
+
+
+def check_deadline(doing: str) -> None:
+    """Raise :class:`DeadlineError` if the work has run past the time limit.
+
+    ``doing`` says what was running (``"the contact event loop at t = 3.1 of
+    12.6"``); it is also what the progress line shows after the step
+    (:func:`twoball._common.progress.set_activity`).  Cheap enough for every pass
+    of a long loop (one clock read; the limit itself is read again at most once
+    a second).
+    """
+    from twoball._common.progress import set_activity
+
+    set_activity(doing)
+    start = _clock["start"]
+    if start is None:
+        return
+    now = time.monotonic()
+    read = _clock["read"]
+    if read is None or now - read > _LIMIT_REFRESH_S:
+        _clock.update(limit=current_budget().max_seconds, read=now)
+    limit = _clock["limit"]
+    assert limit is not None
+    if now - start > limit:
+        raise DeadlineError(
+            f"stopped at the time limit {format_seconds(limit)} after "
+            f"{format_seconds(now - start)}, while {doing} (raise the time limit, max_time)"
+        )

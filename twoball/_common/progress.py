@@ -35,10 +35,13 @@ from typing import Any, TextIO
 
 __all__ = [
     "INTERVAL",
+    "activity",
+    "check_progress",
     "Reporter",
     "Step",
     "TaskHook",
     "is_quiet",
+    "set_activity",
     "set_quiet",
     "silent",
 ]
@@ -54,6 +57,20 @@ TaskHook = Callable[[str, int], Callable[[int], None]]
 """``hook(label, total)`` starts a counted task and returns its ``update(done)``."""
 
 _QUIET = False
+#: What the solvers are doing right now (e.g. "eigenpairs: slice 3 of 24"), shown after
+#: the step's text; set by :func:`set_activity` (the long loops, through
+#: :func:`twoball._common.budget.check_deadline`), cleared when a step starts.
+_ACTIVITY: dict[str, str | None] = {"text": None}
+
+
+def set_activity(text: str | None) -> None:
+    """Say what the work is doing now (None: nothing beyond the step); cheap, any thread."""
+    _ACTIVITY["text"] = text
+
+
+def activity() -> str | None:
+    """What :func:`set_activity` last said (None after a step started)."""
+    return _ACTIVITY["text"]
 
 
 def set_quiet(quiet: bool) -> None:
@@ -151,6 +168,7 @@ class Reporter:
         return self  # no thread yet: a process pool may still fork (see _show)
 
     def __exit__(self, kind: type[BaseException] | None, *exc: object) -> None:
+        set_activity(None)
         self._stop.set()
         if self._thread is not None:
             self._thread.join()
@@ -169,6 +187,7 @@ class Reporter:
             self._completed = self._count - 1
             self._text = text
             self._task = None
+            set_activity(None)
             self._show()
 
     def update(self, completed: int, text: str | None = None) -> None:
@@ -204,9 +223,12 @@ class Reporter:
         if self._task is not None:
             label, done, total = self._task
             return f"{label} {done}/{total}"
+        now = activity()
         if self.total:
-            return f"{min(self._count, self.total)}/{self.total} {self._text}".rstrip()
-        return self._text or "working"
+            text = f"{min(self._count, self.total)}/{self.total} {self._text}".rstrip()
+        else:
+            text = self._text or ("" if now else "working")
+        return f"{text}: {now}" if now and text else (now or text)
 
     def _write(self, message: str) -> None:
         assert self._stream is not None
@@ -243,6 +265,9 @@ class Reporter:
         parts = [f"{spin} {self.name}"]
         if self._text:
             parts.append(self._text)
+        now = activity()
+        if now:
+            parts.append(now)
         if self.total:
             parts.append(f"[{min(self._completed, self.total)}/{self.total}]")
         if self._task is not None:
@@ -290,3 +315,17 @@ def _terminal_width(stream: Any) -> int:
     except (AttributeError, OSError, ValueError):
         return 80
     return columns if columns >= 20 else 80
+
+
+def check_progress(progress: Any, name: str = "progress") -> Any:
+    """``progress`` itself if it is None or callable (a :class:`Reporter`, a function).
+
+    Anything else raises :class:`~twoball._common.errors.ParameterError` naming it,
+    before any work (a text or a number would fail only at the first report).
+    """
+    if progress is None or callable(progress):
+        return progress
+    from twoball._common.errors import ParameterError
+
+    shown = progress if isinstance(progress, str | int | float) else type(progress).__name__
+    raise ParameterError(name, "a callable (e.g. a twoball.Reporter) or None", shown)

@@ -100,6 +100,7 @@ def _named(error: OSError, target: Path) -> OSError:
 # --------------------------------------------------------------------------- targets
 def _plain_target(path: str | os.PathLike[str], param: str, valid: str) -> Path:
     """``path`` made absolute; refused if it is a symbolic link or its folder is unusable."""
+    check_path_type(path, param)
     try:
         return _usable_target(path, param, valid)
     except OSError as error:  # a name or path too long, a loop of links, ...

@@ -17,15 +17,21 @@ if TYPE_CHECKING:
     from rich.table import Table as RichTable
 
 
+#: Columns of a table written to a file or a pipe: wide enough that no cell is cut
+#: ("9.556799796e…"); a reader of a log or a script gets every value whole.
+PIPE_WIDTH = 1000
+
+
 def console(wide: bool = False) -> Console:
     """A console that prints brackets literally (units like ``[m/s]`` are not markup).
 
-    On a terminal, tables fit its width.  ``wide`` tables written to a file or a
-    pipe (a CI log) get at least 120 columns, so their rows are not wrapped.
+    On a terminal, tables fit its width (``wide`` is kept for the callers' intent:
+    their tables have many columns).  Written to a file or a pipe, tables take the
+    width their cells need (up to :data:`PIPE_WIDTH` columns): no value is cut.
     """
     from rich.console import Console
 
-    width = max(Console().width, 120) if wide and not sys.stdout.isatty() else None
+    width = None if sys.stdout.isatty() else PIPE_WIDTH
     return Console(markup=False, highlight=False, width=width)
 
 

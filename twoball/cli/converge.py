@@ -12,11 +12,12 @@ from typing import Any
 
 from rich.table import Table
 
+import twoball
 from twoball import _choices
 from twoball._common.errors import ParameterError
 from twoball._common.strict_json import json_text
 from twoball.cli.case_options import add_case_options, case_from_options
-from twoball.cli.console import console, print_notes
+from twoball.cli.console import console, print_notes, print_warnings
 
 MESHES = ("sphere", "axisym")
 
@@ -49,24 +50,23 @@ def run(args: argparse.Namespace) -> int:
     out = args.out if args.out is not None else f"twoball-converge-{args.study}"
     options = {
         "study": args.study,
-        "mesh": args.mesh,
-        "order": args.order,
-        "geometry": args.geometry,
+        "mesh": _mesh(args),
         "levels": args.levels,
         "modes_list": args.modes_list,
+        "stepping": None if args.t_end is None else twoball.Stepping(t_end=args.t_end),
         "sigma": args.sigma,
         "recontact": args.recontact,
-        "t_end": args.t_end,
         "out": out,
     }
     if args.study == "modes" and args.modes is not None:
         raise ParameterError("modes", "left out with study modes (use --modes-list)", args.modes)
     case = case_from_options(args)
-    print_notes([case.phi_a_note] if case.phi_a_note else [])
+    print_notes(case.notes)
     from twoball._common.progress import Reporter
 
     with Reporter(f"converge {args.study}") as progress:
         study = twoball.converge(case, progress=progress, **options)
+    print_warnings(study.warnings)
     target = Path(out).expanduser()
     if args.json:
         data = study.as_dict()
@@ -129,7 +129,8 @@ def register(parser: argparse.ArgumentParser) -> None:
         "--levels",
         metavar="LIST",
         help="consecutive refinement levels, e.g. 2:5 or 2,3,4,5 (sphere: icosphere "
-        "level; axisym: 25 * 2^level elements; dt: dt = dt0 / 2^level)",
+        "level; axisym: 25 * 2^level elements; dt: c dt = 0.01 / 2^level, i.e. "
+        "31.25 us / 2^level for c = 320 1/s)",
     )
     parser.add_argument(
         "--modes-list",
@@ -142,3 +143,18 @@ def register(parser: argparse.ArgumentParser) -> None:
     )
     parser.add_argument("--json", action="store_true", help="print the results as one JSON object")
     parser.set_defaults(run=run)
+
+
+def _mesh(args: argparse.Namespace) -> str | twoball.MeshOptions | None:
+    """``--mesh``, ``--order``, ``--geometry`` as the study's mesh (None: the study's default)."""
+    fields = {n: getattr(args, n) for n in ("order", "geometry") if getattr(args, n) is not None}
+    if not fields:
+        return args.mesh
+    if args.study == "modes":  # the Legendre series has no mesh
+        name = next(iter(fields))
+        raise ParameterError(name, "left out with study modes (no mesh)", fields[name])
+    if args.study == "order" and "order" in fields:
+        valid = "left out with study order (it compares P1 to P4)"
+        raise ParameterError("order", valid, fields["order"])
+    kind = args.mesh or ("axisym" if args.study == "dt" else "sphere")
+    return twoball.MeshOptions(kind, **fields)

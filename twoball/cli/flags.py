@@ -117,6 +117,11 @@ def flag_of(name: str, args: Namespace | None = None) -> str:
     """
     if name == "mesh" and getattr(args, "mesh_file", None) is not None:
         return "--mesh-file"
+    if name == "mesh" and args is not None and getattr(args, "mesh", None) is None:
+        # the mesh options came from its fields alone: name the first one given
+        for option in ("level", "elements", "order", "geometry", "pole"):
+            if getattr(args, option, None) is not None:
+                return FLAGS[option]
     if name == "damping" and getattr(args, "damping_model", None) is not None:
         return "--damping-model"  # the law the option chose
     if name == "rayleigh" and getattr(args, "rayleigh", None) is None:
@@ -146,11 +151,16 @@ def cli_message(error: ParameterError, args: Namespace | None = None) -> str:
     text = " ".join(str(error).split())  # one line
     from twoball._common.budget import BudgetError
 
-    if isinstance(error, BudgetError):  # "modes 100000 t_end 2 needs ...": the names asked for
-        asked, _, rest = text.partition(" needs ")
-        words = [flag_of(w, args) if w in FLAGS else w for w in asked.split(" ")]
-        rest = rest.replace("max_memory)", "--max-memory)").replace("max_time)", "--max-time)")
-        return " ".join(words) + (" needs " + rest if rest else "")
+    if isinstance(error, BudgetError):  # "modes 100000 t_end 2 needs ...": every name a flag
+        asked, needs, rest = text.partition(" needs ")
+        words = asked.split(" ")
+        asked = " ".join(
+            flag_of(w.rstrip(")"), args) + w[len(w.rstrip(")")) :] if w.rstrip(")") in FLAGS else w
+            for w in words
+        )
+        for name in ("max_memory", "max_time"):  # the advice names the limit's flag
+            rest = rest.replace(name, FLAGS[name])
+        return asked + needs + rest
     name = str(error.name)
     if text.startswith(name):
         return flag_of(name, args) + text[len(name) :]

@@ -6,6 +6,8 @@
 * An :class:`OSError` (full disk, read-only file system, no permission, name too
   long, ...) -> ``twoball: error: cannot write PATH: REASON``, exit 2 when the
   cause lies with the user's path or disk, else 3.
+* A :class:`MemoryError` the resource estimates did not foresee -> one line,
+  exit 3.
 * Standard output that is closed or full (``--json > /dev/full``) -> one line,
   exit 2; a reader that stopped early (``| head``) -> exit 0, silently.
 
@@ -56,6 +58,18 @@ def guarded(command: Callable[..., int], *args: Any) -> int:
             _quiet_stdout()
             sys.stderr.write("twoball: interrupted\n")
             return int(getattr(interrupt, "exit_status", 130))
+        except (MemoryError, RuntimeError) as error:
+            # an allocation the estimates did not foresee; SuperLU reports its own
+            # failed allocations as RuntimeError("SUPERLU_MALLOC failed ...")
+            if isinstance(error, RuntimeError) and "MALLOC" not in str(error):
+                raise
+            _quiet_stdout()
+            detail = " ".join(str(error).split()) or "an allocation failed"
+            sys.stderr.write(
+                f"twoball: error: out of memory ({detail}); choose a smaller size, or give "
+                "the process more memory\n"
+            )
+            return EXIT_NUMERICAL
         except BrokenPipeError:  # output piped into a reader that stopped (e.g. `head`)
             _quiet_stdout()
             return 0

@@ -23,6 +23,7 @@ from twoball.cli.mesh_options import (
     add_time_options,
     damping_options,
     mesh_options,
+    refuse_mesh_flags,
     stepping_options,
 )
 
@@ -128,6 +129,12 @@ def contact_rows(report) -> list[tuple[str, str]]:
         ("v1 [m/s]", number(report.v_liftoff_m_s)),
         ("v1 / |v0|", number(report.ratio)),
     ]
+    block = report.extra.get("truncation") or {}
+    if block.get("t_liftoff_s") is not None:
+        name = f"closed form, N = {block['reference_modes']}"
+        rows.append((f"final separation [ms], {name}", number(block["t_liftoff_s"], 1e3)))
+        rows.append((f"v1 [m/s], {name}", number(block["v_liftoff_m_s"])))
+    rows += [("warning", text) for text in report.warnings]
     return rows
 
 
@@ -135,6 +142,8 @@ def solve_from_options(args: argparse.Namespace) -> twoball.LiftoffReport:
     """Call :func:`twoball.liftoff` with the case, model, mesh, time and body options."""
     from twoball._common.progress import QUICK, Reporter
 
+    if args.backend != "fem":
+        refuse_mesh_flags(args, "with backend legendre (no mesh)")
     options = {
         "backend": args.backend,
         "sigma": args.sigma,
@@ -145,7 +154,7 @@ def solve_from_options(args: argparse.Namespace) -> twoball.LiftoffReport:
         "damping": damping_options(args),
     }
     case = case_from_options(args)
-    if args.backend != "fem":  # the closed form takes milliseconds
+    if args.backend != "fem" and options["body"] is None:  # the closed form: milliseconds
         return twoball.liftoff(case, **options)
     with Reporter("liftoff", delay=QUICK) as progress:
         return twoball.liftoff(case, progress=progress, **options)

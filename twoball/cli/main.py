@@ -50,8 +50,37 @@ def command_module(name: str) -> ModuleType:
     return importlib.import_module(f"twoball.cli.{name}")
 
 
+class _StoreOnce(argparse._StoreAction):
+    """``store`` that refuses an option given twice (argparse would keep the last silently)."""
+
+    def __call__(
+        self,
+        parser: argparse.ArgumentParser,
+        namespace: argparse.Namespace,
+        values: object,
+        option_string: str | None = None,
+    ) -> None:
+        if option_string is not None:
+            seen = namespace.__dict__.setdefault("_given_once", {})
+            if self.dest in seen:
+                name = max(self.option_strings, key=len)
+                parser.error(
+                    f"{name} given more than once ({seen[self.dest]}, then {values}); give it once"
+                )
+            seen[self.dest] = values
+        setattr(namespace, self.dest, values)
+
+
 class _Parser(argparse.ArgumentParser):
-    """ArgumentParser whose errors are one line (no usage block) and exit status 2."""
+    """ArgumentParser whose errors are one line (no usage block) and exit status 2.
+
+    An option that takes one value is refused when given twice (:class:`_StoreOnce`).
+    """
+
+    def __init__(self, *args: object, **kwargs: object) -> None:
+        super().__init__(*args, **kwargs)  # type: ignore[arg-type]
+        self.register("action", None, _StoreOnce)
+        self.register("action", "store", _StoreOnce)
 
     def error(self, message: str) -> NoReturn:
         bad_type = re.fullmatch(r"argument (--[\w-]+): invalid \w+ value: (.*)", message)
@@ -132,6 +161,30 @@ def join_negative_values(argv: Sequence[str], value_options: set[str]) -> list[s
     return out
 
 
+def refuse_unknown_options(parser: argparse.ArgumentParser, argv: Sequence[str]) -> None:
+    """Refuse, naming it, an option the chosen subcommand does not have.
+
+    argparse would otherwise take the word after an unknown option as a
+    positional argument and blame that (``converge --study h --mesh-file X`` ->
+    "invalid choice: 'X'").  Unique abbreviations stay accepted, as argparse does.
+    """
+    command = chosen_command(argv)
+    known = {s for a in parser._actions for s in a.option_strings}
+    for action in parser._actions:
+        if isinstance(action, argparse._SubParsersAction) and command in action.choices:
+            known |= {s for a in action.choices[command]._actions for s in a.option_strings}
+    for word in argv:
+        if word == "--":
+            break
+        if not word.startswith("--") or word == "--":
+            continue
+        name = word.split("=", 1)[0]
+        if name in known or len([k for k in known if k.startswith(name)]) == 1:
+            continue
+        where = f"twoball {command}" if command else "twoball"
+        fail(f"{name} is not an option of {where} (see {where} --help)")
+
+
 def chosen_command(argv: Sequence[str]) -> str | None:
     """The subcommand named in ``argv`` (its first word that is not an option), if any."""
     for word in argv:
@@ -161,6 +214,7 @@ def _main(argv: Sequence[str] | None = None) -> int:
         parser.print_help()
         return 0
     argv = join_negative_values(argv, value_options(parser))
+    refuse_unknown_options(parser, argv)
     args = parser.parse_args(argv)
     if args.command is None:
         fail("choose a command: " + ", ".join(COMMANDS))
@@ -168,14 +222,20 @@ def _main(argv: Sequence[str] | None = None) -> int:
 
     progress.set_quiet(args.quiet)
     provenance.set_command(argv)  # every JSON and file this run writes names it
+    from twoball._common.budget import DeadlineError, running
     from twoball._common.errors import NumericalError, ParameterError
 
     try:
-        return int(args.run(args))
+        with running():  # the clock of --max-time: long loops stop at its deadline
+            return int(args.run(args))
     except ParameterError as error:
         from twoball.cli.flags import cli_message
 
         fail(cli_message(error, args))
+    except DeadlineError as error:
+        from twoball.cli.flags import flag_of
+
+        fail(" ".join(str(error).split()).replace("max_time", flag_of("max_time")), EXIT_NUMERICAL)
     except NumericalError as error:
         fail(f"numerical trouble: {error}", EXIT_NUMERICAL)
     finally:  # main() called again in one process (tests, scripts) starts afresh

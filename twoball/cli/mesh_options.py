@@ -144,6 +144,15 @@ def mesh_options(args: argparse.Namespace) -> twoball.MeshOptions | None:
     return twoball.MeshOptions(kind, **fields)
 
 
+def refuse_mesh_flags(args: argparse.Namespace, why: str) -> None:
+    """Refuse the first mesh option given, by its own name (``--level``, not ``--mesh``)."""
+    names = ("mesh", "mesh_file", "pole", "level", "elements", "order", "geometry", "initial")
+    for name in names:
+        value = getattr(args, name, None)
+        if value is not None:
+            raise twoball.ParameterError(name, f"left out {why}", value)
+
+
 def stepping_options(args: argparse.Namespace) -> twoball.Stepping | None:
     """``--t-end``, ``--scheme``, ``--dt``, ``--route`` as :class:`~twoball.Stepping` or None."""
     names = ("t_end", "dt", "scheme", "route")
@@ -169,6 +178,7 @@ def damping_options(args: argparse.Namespace) -> twoball.ModalRatio | twoball.Ra
 
 
 __all__ = [
+    "refuse_mesh_flags",
     "add_mesh_options",
     "add_route_option",
     "add_time_options",

@@ -22,6 +22,7 @@ from twoball.cli.mesh_options import (
     add_mesh_options,
     add_route_option,
     mesh_options,
+    refuse_mesh_flags,
     stepping_options,
 )
 from twoball.cli.values import integer, number
@@ -58,6 +59,7 @@ def run(args: argparse.Namespace) -> int:
     if args.orders is not None:
         orders = parse_list(args.orders, "orders", "comma-separated orders 1 to 4", {1, 2, 3, 4})
     if args.kind == "eigen":  # no case: every case option given is passed on and refused
+        refuse_mesh_flags(args, "with kind eigen (use --levels, --orders)")
         apply_limits(args)
         case = case_from_options(args) if case_options_given(args) else None
         steps = len(levels or (1, 2, 3)) * len(orders or (1, 2)) + 1

@@ -28,6 +28,9 @@ def run(args: argparse.Namespace) -> int:
     """Run ``twoball render``: :func:`twoball.render` with the options."""
     from twoball._common.progress import Reporter
 
+    if args.time is not None and not str(args.out).lower().endswith(".png"):
+        valid = "used with .png only (--frames for an animation)"
+        raise twoball.ParameterError("time", valid, args.time)
     frames = args.frames if args.time is None else [args.time]
     view = twoball.RenderOptions(warp=args.warp, size=args.size, fps=args.fps)
     with Reporter("render") as progress:

@@ -86,6 +86,14 @@ def run(args: argparse.Namespace) -> int:
             raise ParameterError(
                 field, f"left out when --param {name} is swept", getattr(args, field)
             )
+    why = {  # --pressure and --mass give c by eq. (3.8) at the base radius, once
+        "wave-speed": "the swept values would replace the c they give by eq. (3.8)",
+        "radius": "the c they give by eq. (3.8) would stay that of the base radius",
+    }
+    for name, reason in why.items():
+        if name in grid.parameters and args.pressure is not None:
+            valid = f"left out with --mass when --param {name} is swept ({reason})"
+            raise ParameterError("pressure", valid, args.pressure)
     plot = None if args.plot is None else check_figure_path(args.plot, "plot")
     base = case_from_options(args)
     values = dict(zip(grid.parameters, grid.values, strict=True))
@@ -110,7 +118,7 @@ def run(args: argparse.Namespace) -> int:
         )
     points = result.points
     print_notes(sweep_notes(points))
-    print_warnings(sweep_warnings(points))
+    print_warnings(sweep_warnings(points, grid.parameters))
     if plot is not None:
         result.plot(plot)
     if args.json:
@@ -240,22 +248,36 @@ def _sweep_body(args: argparse.Namespace, parameters: tuple[str, ...]) -> Any:
 
 
 def sweep_notes(points: list[Any]) -> list[str]:
-    """One note for the whole sweep: at how many points eq. (3.7) replaced a preset's phi_a."""
-    notes = [p.report.notes[0] for p in points if p.report is not None and p.report.notes]
+    """One note for the whole sweep: at how many points eq. (3.7) replaced a preset's phi_a
+    (and, once each, any other remark, e.g. how a negative v0 was read)."""
+    every = [n for p in points if p.report is not None for n in p.report.notes]
+    notes = [n for n in every if n.startswith("phi_a = ")]
+    others = list(dict.fromkeys(n for n in every if not n.startswith("phi_a = ")))
     if len(notes) <= 1:
-        return notes
+        return notes + others
     why = notes[0].split("; ", 1)[-1]
-    return [f"phi_a from eq. (3.7) at {len(notes)} of {len(points)} points; {why}"]
+    return [f"phi_a from eq. (3.7) at {len(notes)} of {len(points)} points; {why}", *others]
 
 
-def sweep_warnings(points: list[Any]) -> list[str]:
-    """One warning for the whole sweep: how many points carry accuracy warnings, the first."""
+def sweep_warnings(points: list[Any], parameters: tuple[str, ...] = ()) -> list[str]:
+    """One warning for the whole sweep: how many points carry accuracy warnings, the first.
+
+    The first is named by its swept values (``v0 = 3.2``), not by its grid index.
+    """
     flagged = [p for p in points if p.report is not None and p.report.warnings]
     if not flagged:
         return []
+    first = flagged[0]
+    where = (
+        ", ".join(
+            f"{name} = {getattr(first.case, _choices.SWEEP_PARAMETERS[name]):g}"
+            for name in parameters
+        )
+        or f"point {first.index}"
+    )
     return [
         f"{len(flagged)} of {len(points)} points carry warnings (see --json), the first "
-        f"at {flagged[0].index}: {flagged[0].report.warnings[0]}"
+        f"at {where}: {first.report.warnings[0]}"
     ]
 
 

@@ -14,7 +14,7 @@ from rich.table import Table
 
 from twoball._common.strict_json import json_text
 from twoball.cli.case_options import add_case_options, case_from_options
-from twoball.cli.console import console, print_notes
+from twoball.cli.console import console, print_notes, print_warnings
 
 DEFAULT_OUT = "twoball-report"
 
@@ -71,7 +71,7 @@ def run(args: argparse.Namespace) -> int:
     from twoball._studies import verify
 
     case = case_from_options(args)
-    print_notes([case.phi_a_note] if case.phi_a_note else [])
+    print_notes(case.notes)
     options = {
         "thorough": args.thorough,
         "fast": args.fast,
@@ -86,6 +86,7 @@ def run(args: argparse.Namespace) -> int:
     steps = verify_steps(args.thorough, args.fast)
     with Reporter("verify", total=steps) as progress:
         result = verify(case, progress=progress, **options)
+    print_warnings(result.warnings)
     out = Path(args.out).expanduser()
     if args.json:
         data = result.as_dict()

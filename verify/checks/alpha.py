@@ -21,6 +21,7 @@ from twoball.verify.checks.results import Check, RunRow, bounded, liftoff_gap, r
 from twoball.verify.output.figures.pole import Trace
 from twoball.verify.studies.fem_runs import FEMRun
 from twoball.verify.studies.reference import LegendreRun
+from twoball.verify.studies.result import time_step_text
 from twoball.verify.studies.trajectory import TrajectoryNorm, hermite_resample
 
 
@@ -121,7 +122,7 @@ def alpha_checks(
     """Generalized-alpha against modal superposition on one mesh, and the energy decay."""
     from twoball.fem_membrane.solve import alpha_motion
 
-    label = f"{target.spec.label}, dt = {target.dt:g}"
+    label = f"{target.spec.label}, {time_step_text(target.dt, case.scalings.time)}"
     start = time.perf_counter()
     motion, info = alpha_motion(modal.model, dt=target.dt, t_end=t_end)
     result = find_liftoff(motion, case.gamma, t_end=t_end, horizon=recontact)

@@ -126,6 +126,8 @@ class VerifyResult:
     seconds: float = 0.0
     notes: list[str] = field(default_factory=list)
     provenance: dict[str, Any] | None = None  # set by twoball.verify (twoball._common.provenance)
+    #: inputs far from any ball (:func:`twoball.modal.guards.case_warnings`)
+    warnings: list[str] = field(default_factory=list)
 
     @property
     def passed(self) -> bool:
@@ -146,6 +148,7 @@ class VerifyResult:
                 for e in self.eigen
             ],
             "notes": self.notes,
+            "warnings": self.warnings,
             "provenance": self.provenance,
         }
 

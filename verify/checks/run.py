@@ -31,7 +31,7 @@ from twoball.verify.output.figures.eigen import EigenErrors
 from twoball.verify.output.figures.pole import Trace
 from twoball.verify.studies.fem_runs import FEMRun, FEMSpec, fem_run
 from twoball.verify.studies.reference import LegendreRun, legendre_run
-from twoball.verify.studies.result import Progress, case_settings, si
+from twoball.verify.studies.result import Progress, case_settings, si, time_step_text
 
 
 def run_verify(
@@ -159,7 +159,7 @@ def run_verify(
     energy_curves: list[tuple[str, np.ndarray, np.ndarray]] = []
     bound = None
     for target in configuration.alpha:
-        say(f"generalized-alpha {target.spec.label}, dt = {target.dt:g}")
+        say(f"generalized-alpha {target.spec.label}, {time_step_text(target.dt, scale.time)}")
         modal = fem_runs.get(target.spec)
         if modal is None:
             modal = fem_run(case, target.spec, sigma, recontact, t_end)

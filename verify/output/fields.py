@@ -21,6 +21,7 @@ returns SI (m, m/s, m/s^2, s) unless its docstring says otherwise.
 from __future__ import annotations
 
 import json
+import math
 import os
 from collections.abc import Sequence
 from dataclasses import dataclass, field, replace
@@ -566,6 +567,7 @@ def ball_scene(model: BallModel, times_s: np.ndarray, backend: str = "fem") -> B
         case.radius,
         report.t_liftoff_s if report.result.lifted else None,
         label,
+        settle_time=math.pi * scale.time,  # pi / c: the flattening has crossed the ball
     )
 
 
@@ -648,16 +650,20 @@ def field_mesh(mesh: Any = None, *, cells: bool = False, load: bool = True) -> F
 def field_warnings(model: Any, backend: str, field: FieldMesh) -> list[str]:
     """Accuracy warnings of ``backend``'s fields: its lift-off's, and the FE mesh resolution.
 
-    As in :func:`twoball.liftoff`, the resolution of a user's mesh is not
-    estimated (it has no level): only its lift-off's warnings are given.
+    As in :func:`twoball.liftoff`, a user's mesh is judged by its size and
+    order (:func:`twoball.fem_membrane.guards.mesh_warnings`).
     """
     warnings = list(model.backend(backend).report.warnings)
-    if backend == "fem" and field.loaded is None:
+    if backend == "fem":
         from twoball.fem_membrane.guards import mesh_warnings
 
         spec, series = field.spec, model.backend(backend).series
-        warnings += mesh_warnings(spec.kind, spec.level, None, spec.order, series.filter)
-    return warnings
+        if field.loaded is None:
+            warnings += mesh_warnings(spec.kind, spec.level, None, spec.order, series.filter)
+        else:
+            surface = (field.loaded.mesh.points, field.loaded.mesh.cells)
+            warnings += mesh_warnings("sphere", None, None, field.order, series.filter, surface)
+    return list(dict.fromkeys(warnings))  # a contact report has the mesh's already
 
 
 def check_fps(fps: object) -> float:
@@ -707,6 +713,8 @@ def check_frame_budget(case: Case, count: int, name: str, field: FieldMesh) -> N
         if name in ("instants", "frames"):  # a count
             low = 2 if name == "instants" else 1
             raise ParameterError(name, f"an integer in [{low}, {MAX_FRAMES}]", count)
+        if name == "times":  # frames given as their times
+            raise ParameterError("frames", f"at most {MAX_FRAMES} times [s]", f"{count} times")
         raise ParameterError(name, f"at most {MAX_FRAMES} {name}", f"{count} {name}")
     spec = field.spec
     mesh = spec.kind if field.loaded is None else field.loaded.mesh
@@ -748,12 +756,19 @@ def window_s(case: Case, t_end_s: float | None = None) -> float:
 
 
 def check_times(end: float, times_s: Sequence[float], name: str = "times") -> np.ndarray:
-    """``times_s`` [s] as a sorted array, each inside the modelled window [0, ``end``]."""
-    times = np.asarray(sorted({float(t) for t in times_s}), dtype=float)
+    """``times_s`` [s] as a sorted array, each inside the modelled window [0, ``end``].
+
+    Each time must be a real number (a nested list or a text is refused by name).
+    """
+    from numbers import Real
+
+    valid = f"times in [0, {end:.6g}] s (the modelled window)"
+    given = list(times_s)
+    if any(isinstance(t, bool) or not isinstance(t, Real) for t in given):
+        raise ParameterError(name, valid, given)
+    times = np.asarray(sorted({float(t) for t in given}), dtype=float)
     if times.size == 0 or np.any(~np.isfinite(times)) or times.min() < 0 or times.max() > end:
-        raise ParameterError(
-            name, f"times in [0, {end:.6g}] s (the modelled window)", list(times_s)
-        )
+        raise ParameterError(name, valid, given)
     return times
 
 
@@ -998,6 +1013,7 @@ def contact_scene(model: CoupledModel, times_s: np.ndarray, backend: str) -> Any
         scene.radius,
         scene.t_liftoff,
         f"{scene.label}, mu = {report.mass_ratio:g}",
+        settle_time=scene.settle_time,
         contact=model.states(backend, scene.times).contact,
         impacts=np.array(impacts),
         mass_ratio=report.mass_ratio,

@@ -26,9 +26,11 @@ class RenderOptions:
     ----------
     warp : float or "auto", optional
         Displacement magnification, a finite number >= 0; default (or
-        ``"auto"``) automatic: the largest displacement at 15 % of R.
+        ``"auto"``) automatic (:meth:`~twoball.verify.output.render.BallScene.auto_warp`:
+        the wave after the initial flattening drawn at 15 % of R); a given warp
+        must draw the largest displacement within R.
     size : (int, int) or "WxH", optional
-        Image size in pixels, each side in [16, 8192] (default 640 x 480;
+        Image size in pixels, each side in [16, 4096] (default 640 x 480;
         MP4: rounded up to multiples of 16).
     fps : float, optional
         Frames per second of an animation, in [0.001, 1000] (default 20);

@@ -163,17 +163,23 @@ def fmt(value: float | None, digits: int = 4, style: str = "e") -> str:
     return f"{value:.{digits}{style}}"
 
 
-def quantity_markdown(q: QuantityResult) -> str:
-    """One quantity of a study: per-grid table and the summary line."""
+def quantity_markdown(q: QuantityResult, time_unit_s: float | None = None) -> str:
+    """One quantity of a study: per-grid table and the summary line.
+
+    ``time_unit_s`` (1/c [s], the time-step study): the step is shown as the
+    time step in seconds, as ``--dt`` takes it, with ``c dt`` beside it.
+    """
     a = q.analysis
     show_value = not q.spec.error_norm
-    header = ["grid", "h", "DOFs"]
+    header = ["grid", "h", "DOFs"] if time_unit_s is None else ["grid", "dt [s]", "c dt", "steps"]
     if show_value:
         header.append(q.spec.label)
     header += ["error (rel.)" if not q.spec.error_norm else "error", "ratio", "order"]
     rows = []
     for k, label in enumerate(q.labels):
         row = [label, fmt(a.steps[k], 3), str(q.dofs[k])]
+        if time_unit_s is not None:
+            row = [label, fmt(a.steps[k] * time_unit_s, 4), fmt(a.steps[k], 3), str(q.dofs[k])]
         if show_value:
             row.append(fmt(a.values[k] * q.spec.scale, 10, "g"))
         row += [
@@ -219,8 +225,15 @@ def study_markdown(study: StudyResult) -> str:
     parts.append("## Summary\n")
     parts.append(md_table(*study_summary_rows(study)))
     parts.append("\n## Quantities\n")
-    parts.extend(quantity_markdown(q) + "\n" for q in study.quantities)
+    unit = _time_unit(study)
+    parts.extend(quantity_markdown(q, unit) + "\n" for q in study.quantities)
     return "\n".join(parts)
+
+
+def _time_unit(study: StudyResult) -> float | None:
+    """1/c [s] for the time-step study (its steps are c dt), else None."""
+    speed = study.settings.get("wave_speed_1_s")
+    return 1.0 / speed if study.study == "dt" and speed else None
 
 
 def study_summary_rows(study: StudyResult) -> tuple[list[str], list[list[str]]]:
@@ -259,6 +272,7 @@ STUDY_CSV_HEADER = (
     "order",
     "expected_order",
     "passed",
+    "dt_s",
 )
 
 
@@ -276,7 +290,11 @@ def study_files(study: StudyResult) -> dict[str, str | Writer]:
 
 
 def study_csv(study: StudyResult) -> str:
-    """One row per quantity and grid (dimensionless values; see ``scale`` in the JSON)."""
+    """One row per quantity and grid (dimensionless values; see ``scale`` in the JSON).
+
+    ``dt_s``: the time step in seconds (time-step study; empty for the others).
+    """
+    unit = _time_unit(study)
     rows = []
     for q in study.quantities:
         a = q.analysis
@@ -297,6 +315,7 @@ def study_csv(study: StudyResult) -> str:
                     a.orders[k - 1] if k else None,
                     None if q.spec.band is None else q.spec.band.expected,
                     "" if q.passed is None else ("PASS" if q.passed else "FAIL"),
+                    None if unit is None else a.steps[k] * unit,
                 ]
             )
     return csv_text(STUDY_CSV_HEADER, rows)

@@ -53,6 +53,22 @@ def parse_modes(text: str) -> tuple[int, ...]:
     return tuple(int(v) for v in values)
 
 
+def check_modes_study(modes: Sequence[int], t_end: float) -> None:
+    """Refuse a truncation study that cannot fit (``t_end`` dimensionless), before any work.
+
+    Its work: one closed-form lift-off per N (:func:`twoball.modal.cost.series_estimate`),
+    the converged reference and the unfiltered trajectory reference at 4 max(N).
+    """
+    from twoball.modal.cost import reference_estimate, series_estimate
+
+    from twoball._common.budget import check
+
+    estimate = reference_estimate(t_end) + series_estimate(4 * max(modes), t_end)
+    for n in modes:
+        estimate = estimate + series_estimate(n, t_end)
+    check("modes_list " + ",".join(str(n) for n in modes), estimate)
+
+
 def run_modes_study(
     case: Case,
     sigma: FilterKind = "lanczos",

@@ -19,12 +19,21 @@ from twoball._common.progress import (
 from twoball._common.progress import silent as quiet
 
 STUDIES: tuple[str, ...] = ("h", "order", "modes", "dt")
-__all__ = ["STUDIES", "Progress", "StudyResult", "case_settings", "quiet", "si"]
+__all__ = ["STUDIES", "Progress", "StudyResult", "case_settings", "quiet", "si", "time_step_text"]
 
 
 def si(value: float | None, scale: float) -> float | None:
     """``value * scale`` (a dimensionless value in SI), None kept."""
     return None if value is None else value * scale
+
+
+def time_step_text(dt: float, time_unit_s: float) -> str:
+    """A time step as the user types it: ``dt = 7.8125e-06 s (c dt = 0.0025)``.
+
+    ``dt`` is dimensionless (unit 1/c, ``time_unit_s`` seconds): the seconds
+    come first, as ``--dt`` takes them, the dimensionless ``c dt`` beside them.
+    """
+    return f"dt = {dt * time_unit_s:.6g} s (c dt = {dt:g})"
 
 
 @dataclass
@@ -59,6 +68,8 @@ class StudyResult:
     settings: dict[str, Any] = field(default_factory=dict)
     seconds: float = 0.0
     provenance: dict[str, Any] | None = None
+    #: inputs far from any ball (:func:`twoball.modal.guards.case_warnings`)
+    warnings: list[str] = field(default_factory=list)
 
     @property
     def passed(self) -> bool:
@@ -75,6 +86,7 @@ class StudyResult:
             "seconds": self.seconds,
             "settings": self.settings,
             "notes": self.notes,
+            "warnings": self.warnings,
             "runs": self.runs,
             "quantities": [q.as_dict() for q in self.quantities],
             "provenance": self.provenance,

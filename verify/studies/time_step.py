@@ -1,7 +1,8 @@
 """The time-step study: generalized-alpha against modal superposition on one mesh.
 
-dt = 0.01 / 2^level (dimensionless, unit 1/c); the reference is the modal series
-of the same mesh, so only the time discretisation is measured.
+c dt = 0.01 / 2^level (dimensionless; dt = 0.01 / (2^level c) seconds, which is
+what labels and run rows show, the dimensionless value beside it); the reference
+is the modal series of the same mesh, so only the time discretisation is measured.
 """
 
 from __future__ import annotations
@@ -25,7 +26,14 @@ from twoball.verify.studies.quantities import (
     ms_per_unit,
 )
 from twoball.verify.studies.reference import legendre_run
-from twoball.verify.studies.result import Progress, StudyResult, case_settings, quiet, si
+from twoball.verify.studies.result import (
+    Progress,
+    StudyResult,
+    case_settings,
+    quiet,
+    si,
+    time_step_text,
+)
 from twoball.verify.studies.trajectory import TrajectoryNorm, hermite_resample
 
 DT_LEVEL_LIMITS = (0, 8)
@@ -63,12 +71,13 @@ def run_dt_study(
     base = fem_run(case, spec, sigma, recontact, t_end)
     norm = TrajectoryNorm(base.series, t_end)
     dts = [DT_BASE / 2**level for level in levels]
-    labels = [f"dt = {dt:g}" for dt in dts]
+    unit = case.scalings.time  # s per unit of dimensionless time
+    labels = [time_step_text(dt, unit) for dt in dts]
     rows: list[dict[str, Any]] = []
     values: dict[str, list[float]] = {k: [] for k in ("t", "v", "t_q", "v_q", "l2", "knots")}
     steps_count = []
     for dt in dts:
-        progress(f"{spec.label}: generalized-alpha dt = {dt:g}")
+        progress(f"{spec.label}: generalized-alpha {time_step_text(dt, unit)}")
         start = time.perf_counter()
         motion, info = alpha_motion(base.model, dt=dt, t_end=t_end, rho_inf=rho_inf)
         result = find_liftoff(motion, case.gamma, t_end=t_end, horizon=recontact)
@@ -92,8 +101,10 @@ def run_dt_study(
         steps_count.append(int(info["steps"]))
         rows.append(
             {
-                "label": f"dt = {dt:g}",
+                "label": time_step_text(dt, unit),
                 "backend": "fem alpha",
+                "dt_s": dt * unit,
+                "c_dt": dt,
                 "dofs": base.dofs,
                 "steps": int(info["steps"]),
                 "t_liftoff_s": si(result.t, case.scalings.time),
@@ -105,7 +116,7 @@ def run_dt_study(
     study = StudyResult(
         "dt",
         f"generalized-alpha (rho_inf = {rho_inf:g}) against modal superposition, {spec.label}",
-        "h = dt (dimensionless, unit 1/c)",
+        "h = c dt (dimensionless; the time step in seconds is dt = h / c)",
         settings=case_settings(case, sigma, recontact, t_end),
     )
     specs = {s.key: s for s in liftoff_specs(case, DT_BAND)}
@@ -145,7 +156,7 @@ def run_dt_study(
         f"Reference: modal superposition on the same mesh ({spec.label}, {base.dofs} DOFs, "
         f"{len(base.model.pairs)} eigenpairs, filter sigma = {sigma}), "
         f"t_l = {si(base.t, case.scalings.time * 1e3)} ms; the errors measure the time "
-        "discretisation alone.  The column 'DOFs' holds the number of steps."
+        "discretisation alone.  The 'steps' column (the JSON's 'dofs') holds the number of steps."
     )
     study.seconds = time.perf_counter() - clock
     return study

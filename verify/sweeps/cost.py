@@ -41,19 +41,25 @@ def check_worker_budget(workers: int | None) -> None:
 
 
 def check_sweep(
-    points: int, modes: int, t_end: float, workers: int | None = None, reference: bool = False
+    points: int,
+    modes: int,
+    t_end: float,
+    workers: int | None = None,
+    reference: bool = False,
+    per_point: Estimate | None = None,
 ) -> Estimate:
     """Refuse a sweep of ``points`` closed-form solves (N ``modes``, window ``t_end``).
 
     Workers: at most four per core, each ~150 MiB.  Per point: the series (and,
     with ``reference``, the truncation guard's converged series) plus ~3 ms of
-    bookkeeping.
+    bookkeeping; or ``per_point`` when the solve is another (the contact solver,
+    :func:`twoball.modal.contact.cost.contact_estimate`, or a stiffened series).
     """
     check_worker_budget(workers)
     cores = os.cpu_count() or 1
-    per_point = series_estimate(modes, t_end)
+    per_point = series_estimate(modes, t_end) if per_point is None else per_point
     if reference:
-        per_point = per_point + reference_estimate(t_end)
+        per_point = per_point + reference_estimate(t_end, modes)
     estimate = sweep_estimate(points, per_point, cores if workers is None else workers)
     return check(f"values ({points} points)", estimate)
 

@@ -37,6 +37,7 @@ from dataclasses import dataclass
 from numbers import Integral
 from typing import Any
 
+from twoball._common.budget import DeadlineError, check_deadline
 from twoball._common.errors import ParameterError
 
 #: Maps with fewer items than this run in the calling process even when workers
@@ -69,6 +70,8 @@ def guarded(func: Callable[[Any], Any], item: Any) -> Outcome:
     """``func(item)`` as an :class:`Outcome`; an exception becomes ``error``."""
     try:
         return Outcome(func(item))
+    except DeadlineError:  # the whole run stops at its time limit, not one point
+        raise
     except Exception as exc:  # noqa: BLE001 - reported with the item, never lost
         return Outcome(None, f"{type(exc).__name__}: {exc}")
 
@@ -100,6 +103,74 @@ def check_workers(workers: int | None) -> int:
     if isinstance(workers, bool) or not isinstance(workers, Integral) or workers < 1:
         raise ParameterError("workers", VALID_RANGES["workers"], workers)
     return int(workers)
+
+
+SCHEDULER_VALID = (
+    "the address of a running dask.distributed scheduler, [tcp|tls]://HOST[:PORT] "
+    "(default port 8786)"
+)
+_ADDRESS = (
+    r"(?:(?P<protocol>tcp|tls)://)?"
+    r"(?P<host>\[[0-9A-Fa-f:.]+\]|[A-Za-z0-9](?:[A-Za-z0-9._-]*[A-Za-z0-9])?)"
+    r"(?::(?P<port>[0-9]{1,5}))?"
+)
+#: Protocols of dask addresses taken as written (no TCP port to probe); ``inproc`` (a
+#: scheduler in this process, as a threads-only LocalCluster has) is looked up instead.
+_UNPROBED = ("ucx", "ws", "wss")
+#: Seconds a scheduler's port has to accept a connection before it counts as absent.
+PROBE_SECONDS = 2.0
+
+
+def check_scheduler(address: object) -> str:
+    """A scheduler address in the form dask reads, checked before anything connects.
+
+    Empty, malformed (``::::``) or out-of-range ports are refused by their form;
+    a well-formed address is probed with one TCP connection (``PROBE_SECONDS``),
+    so a scheduler that is not there is reported at once and no dask client is
+    left waiting for it.
+    """
+    import re
+    import socket
+
+    if not isinstance(address, str) or not address.strip():
+        raise ParameterError("scheduler", SCHEDULER_VALID, address)
+    protocol, _, rest = address.strip().partition("://")
+    if protocol == "inproc":  # a scheduler of this very process, or none
+        if not (rest and _inproc_listening(address.strip())):
+            raise ParameterError(
+                "scheduler",
+                SCHEDULER_VALID + "; no scheduler of this process listens there",
+                address,
+            )
+        return address.strip()
+    if rest and protocol in _UNPROBED and re.fullmatch(r"[\w.\[\]:/-]+", rest):
+        return address.strip()  # not TCP: dask itself connects
+    match = re.fullmatch(_ADDRESS, address.strip())
+    port = None if match is None or match["port"] is None else int(match["port"])
+    if match is None or (port is not None and not 1 <= port <= 65535):
+        raise ParameterError("scheduler", SCHEDULER_VALID, address)
+    host = match["host"].strip("[]")
+    try:
+        with socket.create_connection((host, port or 8786), timeout=PROBE_SECONDS):
+            pass
+    except OSError as error:
+        reason = error.strerror or type(error).__name__
+        raise ParameterError(
+            "scheduler", SCHEDULER_VALID + f"; none answers there ({reason})", address
+        ) from None
+    return address.strip()
+
+
+def _inproc_listening(address: str) -> bool:
+    """Whether a dask scheduler of this process listens at the ``inproc://`` ``address``."""
+    try:
+        from distributed.comm.inproc import global_manager
+    except ImportError:
+        return False
+    try:
+        return global_manager.get_listener_for(address.removeprefix("inproc://")) is not None
+    except Exception:  # noqa: BLE001 -- a malformed address: nobody listens there
+        return False
 
 
 def _start_method() -> str:
@@ -155,7 +226,7 @@ class Runner:
                 "workers", "left out with scheduler (the cluster decides)", workers
             )
         self.workers = check_workers(workers)
-        self.scheduler = scheduler
+        self.scheduler = None if scheduler is None else check_scheduler(scheduler)
         self._pool: ProcessPoolExecutor | None = None
         self._client: Any = None
 
@@ -252,6 +323,7 @@ class Runner:
         results: list[Outcome | None] = [None] * len(items)
         done = 0
         for start, outcomes in self._chunks(func, starts, chunks):
+            check_deadline(f"item {done + 1} of {len(items)}")
             results[start : start + len(outcomes)] = outcomes
             done += len(outcomes)
             if progress is not None:
@@ -261,6 +333,7 @@ class Runner:
     def _serial(self, func, items, progress) -> list[Outcome]:
         out = []
         for k, item in enumerate(items):
+            check_deadline(f"item {k + 1} of {len(items)}")
             out.append(guarded(func, item))
             if progress is not None:
                 progress(k + 1)

@@ -5,6 +5,15 @@ slowest), solved by :class:`SweepSolver` through a :class:`twoball.verify.sweeps
 so the same code runs serially, on local processes or on a Dask cluster, with
 identical numbers.  A point whose solve raises is kept as a :class:`SweepPoint`
 with ``error`` set, next to its parameters.
+
+One rule for phi_a in one sweep.  A preset's measured phi_a holds only at its
+own R, c and ``|v0|`` (:class:`~twoball.modal.parameters.Case`); a sweep of v0,
+c or R passing through that point would take the measured angle there and eq.
+(3.7) beside it -- a dip of the curve made by the rule, not the physics
+(basketball: 2.6 rad measured against 2.62 rad from eq. (3.7) at 4.1 m/s).  So
+every point of such a sweep takes eq. (3.7); a sweep of anything else keeps the
+base case's phi_a at every point.  :func:`phi_a_rule` says which, in the JSON
+and on the figure.
 """
 
 from __future__ import annotations
@@ -15,7 +24,7 @@ from dataclasses import dataclass
 from typing import Any
 
 import numpy as np
-from twoball.modal.parameters import Case
+from twoball.modal.parameters import FROM_V0, Case
 from twoball.modal.report import LiftoffReport, legendre_liftoff
 from twoball.verify.sweeps.parallel import Runner
 
@@ -84,11 +93,32 @@ def _check_law(base: Case, field: str) -> None:
         raise ParameterError("param", valid, "damping")
 
 
+#: Case fields whose change re-applies the phi_a rule (eq. (3.7) away from a preset's point).
+PHI_A_FIELDS = ("v0", "wave_speed", "radius")
+
+
+def _one_rule(fields: Iterable[str]) -> dict[str, str]:
+    """``phi_a="eq. (3.7)"`` when a field of the phi_a rule is swept (module docstring)."""
+    return {"phi_a": FROM_V0} if set(fields) & set(PHI_A_FIELDS) else {}
+
+
 def sweep_cases(base: Case, parameter: str, values: Iterable[float]) -> list[Case]:
-    """The cases of a sweep: ``base`` with one parameter varied (phi_a per eq. (3.7))."""
+    """The cases of a sweep: ``base`` with one parameter varied (one phi_a rule, module doc)."""
     field = _check_parameter(parameter)
     _check_law(base, field)
-    return [base.derive(**{field: _field_value(field, value)}) for value in values]
+    rule = _one_rule([field])
+    return [base.derive(**{field: _field_value(field, value)}, **rule) for value in values]
+
+
+def phi_a_rule(cases: Sequence[Any]) -> str:
+    """How phi_a was chosen at the points: ``eq. (3.7) at every point`` or the one value."""
+    sources = {c.phi_a_source for c in cases}
+    if sources == {FROM_V0}:
+        return "eq. (3.7) at every point (from |v0|, R, c)"
+    angles = {c.phi_a for c in cases}
+    if len(angles) == 1 and len(sources) == 1:
+        return f"{angles.pop():.6g} rad at every point ({sources.pop()})"
+    return "mixed: " + ", ".join(sorted(str(s) for s in sources))
 
 
 @dataclass(frozen=True)
@@ -108,16 +138,22 @@ class SweepGrid:
         return [tuple(int(i) for i in k) for k in np.ndindex(*self.shape)]
 
     def cases(self, base: Case) -> list[Case]:
-        """One case per grid point, in :meth:`indices` order; v0, c, R re-derive phi_a."""
+        """One case per grid point, in :meth:`indices` order.
+
+        A sweep of v0, c or R takes phi_a from eq. (3.7) at every point, the
+        preset's own point included; any other keeps the base case's phi_a
+        (one rule per sweep, module docstring).
+        """
         fields = [_check_parameter(p) for p in self.parameters]
         for field in fields:
             _check_law(base, field)
+        rule = _one_rule(fields)
         out = []
         for index in self.indices():
             changes = {
                 f: _field_value(f, self.values[axis][i])
                 for axis, (f, i) in enumerate(zip(fields, index, strict=True))
-            }
+            } | rule
             mass_ratio = changes.pop("mass_ratio", None)
             case = base.derive(**changes) if changes else base
             if mass_ratio is not None:
@@ -176,7 +212,9 @@ class SweepSolver:
             if hasattr(case, "mass_ratio"):
                 plain = case.case
                 body = replace(body, mass_ratio=case.mass_ratio)
-            return legendre_contact(plain, body, sigma=self.sigma, t_end_s=self.t_end_s)
+            return legendre_contact(
+                plain, body, sigma=self.sigma, t_end_s=self.t_end_s, reference=self.reference
+            )
         return legendre_liftoff(
             case, self.sigma, self.recontact, self.t_end_s, reference=self.reference
         )
@@ -190,6 +228,16 @@ class SweepPoint:
     case: Case
     report: LiftoffReport | None
     error: str | None = None
+    #: how phi_a was chosen over the whole sweep (:func:`phi_a_rule`), set by twoball.sweep
+    phi_a_rule: str | None = None
+
+    def __repr__(self) -> str:
+        """The answer first, in SI (t_l [s], v_l [m/s], v_l/|v0|), then the point's case."""
+        return (
+            f"SweepPoint(index={self.index}, t_liftoff_s={self.t_liftoff_s!r}, "
+            f"v_liftoff_m_s={self.v_liftoff_m_s!r}, ratio={self.ratio!r}, "
+            f"error={self.error!r}, case={self.case!r})"
+        )
 
     @property
     def ratio(self) -> float:
@@ -210,7 +258,8 @@ class SweepPoint:
         return math.nan if v is None else v
 
     def as_dict(self) -> dict[str, Any]:
-        """JSON-ready: the report's keys (or the case's, on error), ``index`` and ``error``."""
+        """JSON-ready: the report's keys (or the case's, on error), ``index``, ``error`` and
+        the sweep's ``phi_a_rule``."""
         if self.report is not None:
             data = self.report.as_dict()
         else:
@@ -230,6 +279,8 @@ class SweepPoint:
             }
         data["index"] = list(self.index)
         data["error"] = self.error
+        if self.phi_a_rule is not None:
+            data["phi_a_rule"] = self.phi_a_rule
         return data
 
 

@@ -80,9 +80,6 @@ def contact_pole_figure(model: CoupledModel, samples: int = 2500) -> Figure:
     for axis, (symbol, unit, _) in zip(axes, QUANTITIES, strict=True):
         axis.set_ylabel(label(symbol, unit))
     _event_legend(axes[1])
-    axes[0].legend(loc="best", fontsize=7)
-    axes[1].legend(loc="best", fontsize=7)
-    axes[2].legend(loc="lower right", fontsize=7)
     if compare:
         fem, ref = motions["fem"], motions["legendre"]
         cap = [fem[k] - ref[k] for k in ("cap_m", "cap_t_m_s", "cap_tt_m_s2")]
@@ -95,8 +92,8 @@ def contact_pole_figure(model: CoupledModel, samples: int = 2500) -> Figure:
                 ("body: finite elements − closed form", {"color": "C3", "linewidth": 0.9}, body),
             ],
         )
-        grid[1].legend(loc="upper right", fontsize=7)
     grid[-1].set_xlabel(time_label("after maximal compression"))
+    _figure_legend(figure, grid)
     report = next(iter(model.backends.values())).report
     figure.suptitle(
         rf"Cap ($a$ = {report.contact_radius_m * 1e3:.3g} mm) and body of mass ratio "
@@ -170,6 +167,25 @@ def _draw_backend(
             fontsize=7,
             color=colour,
         )
+
+
+def _figure_legend(figure: Any, axes: Any) -> None:
+    """One legend for every panel, below them: no legend box covers a curve or a peak."""
+    entries: dict[str, Any] = {}
+    for axis in axes:
+        handles, names = axis.get_legend_handles_labels()
+        for handle, name in zip(handles, names, strict=True):
+            entries.setdefault(name, handle)
+        if axis.get_legend() is not None:
+            axis.get_legend().remove()
+    figure.legend(
+        list(entries.values()),
+        list(entries),
+        loc="outside lower center",
+        ncol=3,
+        fontsize=7,
+        frameon=False,
+    )
 
 
 def _event_legend(axis: Any) -> None:

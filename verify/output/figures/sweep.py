@@ -9,7 +9,7 @@ from typing import TYPE_CHECKING
 import numpy as np
 from twoball.verify.output.figures import new_figure
 from twoball.verify.output.figures.style import label, styled
-from twoball.verify.sweeps.sweeps import PARAMETER_LABELS, SweepGrid, SweepPoint
+from twoball.verify.sweeps.sweeps import PARAMETER_LABELS, SweepGrid, SweepPoint, phi_a_rule
 
 if TYPE_CHECKING:
     from matplotlib.figure import Figure
@@ -61,7 +61,7 @@ def sweep_figure(grid: SweepGrid, points: list[SweepPoint]) -> Figure:
             ax.grid(False)
     errors = sum(p.error is not None for p in points)
     title = "Closed-form lift-off sweep" + (f" ({errors} points failed)" if errors else "")
-    fig.suptitle(title)
+    fig.suptitle(f"{title}\n" + r"$\varphi_a$: " + phi_a_rule([p.case for p in points]))
     return fig
 
 

@@ -93,6 +93,7 @@ def waterfall_figure(
                 color=colours[k],
                 alpha=0.55,
                 label=LABELS["fem"] + " (nodes)" if k == 0 else None,
+                rasterized=True,  # every node of every instant: vector files stay small
             )
         if "legendre" in curves:
             phi, u = curves["legendre"]
@@ -169,10 +170,19 @@ def _difference_stack(
     offset = 1.5 * spread if spread > 0 else 1.0
     ratio = offset / offset_mm
     for k in range(len(times)):
-        axis.plot(phi, diff[k] * factor + k * offset, ".", markersize=1.6, color=colours[k])
+        axis.plot(
+            phi,
+            diff[k] * factor + k * offset,
+            ".",
+            markersize=1.6,
+            color=colours[k],
+            rasterized=True,
+        )
     axis.axvline(model.case.phi_a, color="grey", linewidth=0.7, linestyle=":")
     axis.set_xlim(0.0, math.pi)
     axis.set_xticks(np.linspace(0.0, math.pi, 3), ["0", r"$\pi/2$", r"$\pi$"])
+    for text, align in zip(axis.get_xticklabels(), ("left", "center", "right"), strict=True):
+        text.set_horizontalalignment(align)  # the end labels stay inside the narrow panel
     axis.set_ylim(limits[0] * ratio, limits[1] * ratio)
     axis.set_xlabel(label(r"$\varphi$", "rad"))
     shift = rf"finite elements $-$ closed form + {offset:.3g} {unit} per instant"

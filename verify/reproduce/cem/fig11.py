@@ -315,15 +315,23 @@ def fig11a_figure(table: dict) -> Figure:
     return fig
 
 
+#: Legend texts of the two re-contact horizons (plain text: a figure shows no Markdown).
+HORIZON_LABELS = {
+    "window": "re-contact checked over the window (default)",
+    "paper": r"re-contact checked for $\Delta t < t_l$ only (§3(a)(ii))",
+}
+
+
 @styled
 def fig11b_figure(window, paper, at_013) -> Figure:
     """v_l and t_l against D under both horizons; the red dot is D = 0.13."""
     fig, axes = new_figure(2, 1, figsize=(6.4, 6.4), sharex=True)
     d = [p.case.damping for p in window]
-    axes[0].plot(d, [p.v_liftoff_m_s for p in window], "-", label="`window` horizon")
-    axes[0].plot(d, [p.v_liftoff_m_s for p in paper], ":", label="`paper` horizon")
-    axes[1].plot(d, [1e3 * p.t_liftoff_s for p in window], "-", label="`window` horizon")
-    axes[1].plot(d, [1e3 * p.t_liftoff_s for p in paper], ":", label="`paper` horizon")
+    whole, short = HORIZON_LABELS["window"], HORIZON_LABELS["paper"]
+    axes[0].plot(d, [p.v_liftoff_m_s for p in window], "-", label=whole)
+    axes[0].plot(d, [p.v_liftoff_m_s for p in paper], ":", label=short)
+    axes[1].plot(d, [1e3 * p.t_liftoff_s for p in window], "-", label=whole)
+    axes[1].plot(d, [1e3 * p.t_liftoff_s for p in paper], ":", label=short)
     axes[0].plot([0.13], [at_013.v_liftoff_m_s], "o", color="red", label="$D$ = 0.13 (§4(b))")
     axes[1].plot([0.13], [1e3 * at_013.t_liftoff_s], "o", color="red", label="$D$ = 0.13 (§4(b))")
     axes[0].set_ylabel(label("$v_l$", "m/s"))

@@ -1,0 +1,311 @@
+"""Resource guards (twoball._common.budget): limits, messages, estimates against measurements.
+
+Every absurd size is run in one child process whose address space
+and CPU time are capped: had any of them started its work it would die with a
+MemoryError traceback (exit 1) or by SIGXCPU; a refusal by the guard is exit 2
+with its one-line message, i.e. it happened before the allocation.
+"""
+
+from __future__ import annotations
+
+import json
+import os
+import subprocess
+import sys
+import textwrap
+import time
+from pathlib import Path
+
+import numpy as np
+import pytest
+from twoball.modal.cost import check_series, series_estimate
+from twoball.modal.filters import SpectralFilter
+
+import twoball
+from tests import ROOT
+from twoball._common import budget
+from twoball._common.budget import (
+    Budget,
+    BudgetError,
+    DeadlineError,
+    Estimate,
+    GiB,
+    MiB,
+    check_deadline,
+    format_bytes,
+    limits,
+    parse_bytes,
+    parse_seconds,
+    running,
+)
+from twoball._common.errors import ParameterError
+
+ABSURD = [
+    ["liftoff", "--modes", "20000"],
+    ["liftoff", "--modes", "100000"],
+    ["liftoff", "--t-end", "1e6"],
+    ["liftoff", "--backend", "fem", "--level", "9"],
+    ["liftoff", "--backend", "fem", "--level", "50"],
+    ["liftoff", "--backend", "fem", "--scheme", "alpha", "--dt", "1e-9"],
+    ["sweep", "--param", "damping", "--values", "0:0.5:1000000"],
+    ["sweep", "--param", "damping", "--values", "0:0.5:10000"]
+    + ["--param", "v0", "--values", "1:5:10000"],
+    ["sweep", "--param", "damping", "--values", "0:0.5:64", "--workers", "100"],
+    ["plot", "waterfall", "--instants", "100000", "--out", "{tmp}/w.png"],
+    ["export", "--times", "{times}", "--out", "{tmp}/x.xdmf"],
+]
+
+
+CHILD = textwrap.dedent(
+    """
+    import contextlib, io, json, resource, sys
+    resource.setrlimit(resource.RLIMIT_AS, (3 * 2**30, 3 * 2**30))
+    resource.setrlimit(resource.RLIMIT_CPU, (60, 60))
+    from twoball.cli.main import main
+    out = []
+    for argv in json.loads(sys.argv[1]):
+        err = io.StringIO()
+        with contextlib.redirect_stderr(err), contextlib.redirect_stdout(io.StringIO()):
+            try:
+                status = main(argv)
+            except SystemExit as stop:
+                status = stop.code
+        out.append([status, err.getvalue()])
+    print(json.dumps(out))
+    """
+)
+
+
+def test_sizes_and_durations_parse() -> None:
+    assert parse_bytes("12GiB") == 12 * GiB
+    assert parse_bytes("500MB") == 500 * 10**6
+    assert parse_bytes("2e9") == 2 * 10**9
+    assert parse_seconds("90min") == 5400.0
+    assert parse_seconds("2h") == 7200.0
+    assert parse_seconds("3600") == 3600.0
+    assert format_bytes(15.0 * GiB) == "15 GiB"
+    for bad in ("12x", "-1GiB", "0", "nan", "GiB"):
+        with pytest.raises(ParameterError, match="^max_memory must be a size > 0"):
+            parse_bytes(bad)
+    with pytest.raises(ParameterError, match="^max_time must be"):
+        parse_seconds("soon")
+
+
+def test_default_memory_is_half_the_machine(monkeypatch: pytest.MonkeyPatch) -> None:
+    monkeypatch.delenv(budget.MEMORY_ENV, raising=False)
+    monkeypatch.delenv(budget.TIME_ENV, raising=False)
+    pages = os.sysconf("SC_PAGE_SIZE") * os.sysconf("SC_PHYS_PAGES")
+    default = Budget.default()
+    assert default.max_memory == int(0.5 * pages)
+    assert default.max_seconds == budget.DEFAULT_MAX_SECONDS
+    monkeypatch.setenv(budget.MEMORY_ENV, "3GiB")
+    monkeypatch.setenv(budget.TIME_ENV, "10min")
+    assert Budget.default() == Budget(3 * GiB, 600.0)
+    assert Budget.from_options("1GiB", "5s") == Budget(GiB, 5.0)  # options beat the environment
+
+
+def test_refusal_message_names_option_estimate_and_limit() -> None:
+    limit = Budget(int(11.7 * GiB), 300.0)
+    with pytest.raises(BudgetError) as caught:
+        limit.check("modes 100000", series_estimate(100000, 4 * 3.141592653589793))
+    assert str(caught.value) == (
+        "modes 100000 needs ~15 GiB of memory; limit 11.7 GiB (raise the memory limit, max_memory)"
+    )
+    assert isinstance(caught.value, ParameterError) and caught.value.name == "modes"
+    with pytest.raises(
+        BudgetError, match=r"^dt 1e-09 needs ~.* limit 5 min \(raise the time limit, max_time\)$"
+    ):
+        limit.check("dt 1e-09", Estimate(GiB, 1e6))
+    assert limit.check("modes 30", Estimate(200 * MiB, 1.0)) == Estimate(200 * MiB, 1.0)
+
+
+def test_limits_context_restores_the_budget() -> None:
+    before = budget.current_budget()
+    with budget.limits("1GiB", "1s") as inner:
+        assert budget.current_budget() == inner == Budget(GiB, 1.0)
+        with pytest.raises(BudgetError, match="^modes 3000 needs"):
+            check_series(3000, 4 * 3.141592653589793)
+    assert budget.current_budget() == before
+
+
+def test_each_absurd_size_is_refused_before_any_allocation(tmp_path: Path) -> None:
+    times = ",".join(f"{k * 3e-6:.6g}" for k in range(10000))
+    cases = [[w.format(tmp=tmp_path, times=times) for w in argv] for argv in ABSURD]
+    control = ["liftoff", "--json"]  # a normal run fits the same limits
+    env = dict(os.environ, OPENBLAS_NUM_THREADS="1", MPLBACKEND="Agg")
+    env.pop(budget.MEMORY_ENV, None)
+    env.pop(budget.TIME_ENV, None)
+    done = subprocess.run(
+        [sys.executable, "-c", CHILD, json.dumps([*cases, control])],
+        cwd=ROOT,
+        env=env,
+        capture_output=True,
+        text=True,
+        timeout=300,
+    )
+    assert done.returncode == 0, done.stderr[-2000:]
+    results = json.loads(done.stdout.splitlines()[-1])
+    for argv, (status, err) in zip(cases, results[:-1], strict=True):
+        lines = err.strip().splitlines()
+        assert status == 2, (argv, err[-500:])
+        assert len(lines) == 1 and lines[0].startswith("twoball: error: "), (argv, err)
+        assert "Traceback" not in err
+    refused = [err for _, err in results[:-1]]
+    assert "--modes 20000 needs ~" in refused[0]
+    assert refused[0].rstrip().endswith("(raise the time limit, --max-time)"), refused[0]
+    assert "--modes 100000 needs ~15 GiB of memory" in refused[1]
+    assert "--t-end 1e+06 needs ~" in refused[2]
+    assert refused[2].rstrip().endswith("(raise the memory limit, --max-memory)"), refused[2]
+    assert "--level 9" in refused[3] and "--level 50" in refused[4]
+    assert "--dt 1e-09 needs ~" in refused[5]
+    assert "(1000000 points) needs ~" in refused[6]
+    assert "(100000000 points) needs ~" in refused[7]
+    assert "--workers must be an integer in [1, " in refused[8]
+    assert "--instants must be an integer in [2, 2000]" in refused[9]
+    assert "--times must be at most 2000 times" in refused[10]
+    assert results[-1][0] == 0, results[-1][1]
+
+
+# --- The time limit is also a deadline: every long loop stops past it with one clear error
+
+FILTER = SpectralFilter("lanczos", 30)
+
+
+def past_the_deadline(call):
+    """``call()`` on a clock whose one-second limit has already passed."""
+    with limits(max_time="1s"), running():
+        time.sleep(1.05)
+        with pytest.raises(DeadlineError) as caught:
+            call()
+    return str(caught.value)
+
+
+def test_no_clock_no_deadline() -> None:
+    with limits(max_time="1s"):
+        time.sleep(1.05)
+        check_deadline("nothing")  # outside a verb nothing is timed
+
+
+def test_contact_event_loop() -> None:
+    text = past_the_deadline(lambda: twoball.liftoff(body=twoball.Body(0.1)))
+    assert "while the contact event loop at t = 0 of 12.57" in text
+    assert text.startswith("stopped at the time limit 1 s after") and "max_time" in text
+
+
+def test_series_evaluation_chunks() -> None:
+    from twoball.modal.legendre import legendre_series
+
+    series = legendre_series(2.6, 0.13, SpectralFilter("lanczos", 60))
+    times = np.linspace(0.0, 12.0, 10_000)
+    series.pole(times[:100])  # one chunk: no check
+    assert "while the modal series at sample 4096 of 10000" in past_the_deadline(
+        lambda: series.pole(times)
+    )
+
+
+def test_generalized_alpha_steps() -> None:
+    from twoball.fem_membrane.alpha import GeneralizedAlpha
+    from twoball.fem_membrane.axisym import axisym_space
+
+    space = axisym_space(50, 2.6, 1)
+    stepper = GeneralizedAlpha(space.mass, space.stiffness, 1e-3)
+    u0 = np.zeros(space.dofs)
+    text = past_the_deadline(lambda: stepper.run(u0, u0, 1.0, space.pole_row))
+    assert "while generalized-alpha step 0 of 1000" in text
+
+
+def test_krylov_iterations() -> None:
+    from twoball.fem_membrane.build import build_space
+    from twoball.fem_membrane.initial import initial_moments
+    from twoball.fem_membrane.krylov import krylov_modal_series
+
+    space = build_space("sphere", level=2, order=1, phi_a=2.6)
+    moments = initial_moments(space, 2.6)
+    text = past_the_deadline(lambda: krylov_modal_series(space, moments, 0.13, FILTER))
+    assert "while the rational Krylov iteration (basis 0 of at most" in text
+
+
+def test_eigenpair_slices_and_sweep_points() -> None:
+    from twoball.fem_membrane.build import build_space
+    from twoball.fem_membrane.slicing import sliced_pairs
+
+    space = build_space("sphere", level=2, order=2, phi_a=2.6)
+    text = past_the_deadline(lambda: sliced_pairs(space.stiffness, space.mass, 200.0))
+    assert "while eigenpairs of 642 unknowns: counting them" in text
+    text = past_the_deadline(lambda: twoball.sweep({"damping": [0.1, 0.2]}))
+    assert "while item 1 of 2" in text
+
+
+def test_dense_eigenpairs_in_a_child_stop_at_the_deadline() -> None:
+    from twoball.fem_membrane.build import build_space
+    from twoball.fem_membrane.slicing import dense_pairs
+
+    space = build_space("sphere", level=3, order=1, phi_a=2.6)  # 642 unknowns: in a child
+    with limits(max_time="1s"), running():
+        time.sleep(0.9)
+        start = time.monotonic()
+        with pytest.raises(DeadlineError, match="dense eigenpairs of 642 unknowns"):
+            for _ in range(20):  # ~0.1 s each: the deadline falls inside one of them
+                dense_pairs(space.stiffness, space.mass)
+        assert time.monotonic() - start < 1.5
+
+
+def run_cli(argv: list[str], cwd: Path, **kwargs) -> tuple[subprocess.CompletedProcess, float]:
+    env = dict(os.environ, OPENBLAS_NUM_THREADS="1", MPLBACKEND="Agg", PYTHONPATH=str(ROOT))
+    for name in ("TWOBALL_MAX_MEMORY", "TWOBALL_MAX_TIME"):
+        env.pop(name, None)
+    start = time.monotonic()
+    done = subprocess.run(
+        [sys.executable, "-m", "twoball", *argv],
+        cwd=cwd,
+        env=env,
+        capture_output=True,
+        text=True,
+        timeout=600,
+        **kwargs,
+    )
+    return done, time.monotonic() - start
+
+
+def test_command_line_stops_at_the_deadline_with_one_line(tmp_path, monkeypatch, capsys):
+    """With every estimate let through, only the deadline stops ``verify`` (about a minute)."""
+    import contextlib
+
+    from twoball._common.budget import Budget
+    from twoball.cli.main import main
+
+    monkeypatch.setattr(Budget, "check", lambda self, option, estimate: estimate)
+    monkeypatch.chdir(tmp_path)
+    start = time.monotonic()
+    with contextlib.suppress(SystemExit):
+        main(["--quiet", "verify", "--max-time", "1s", "--out", "r"])
+    seconds = time.monotonic() - start
+    err = capsys.readouterr().err
+    [line] = err.splitlines()
+    assert line.startswith("twoball: error: stopped at the time limit 1 s after 1")
+    assert ", while " in line and line.endswith("(raise the time limit, --max-time)")
+    assert seconds < 1 + 3.0  # the last pass of a loop, clean-up
+    assert not (tmp_path / "r").exists() and list(tmp_path.iterdir()) == []
+
+
+def _address_space(limit: int):
+    def apply() -> None:
+        import resource
+
+        resource.setrlimit(resource.RLIMIT_AS, (limit, limit))
+
+    return apply
+
+
+def test_address_space_limit_refuses_before_work_or_ends_in_one_line(tmp_path: Path) -> None:
+    """``ulimit -v 10000000``: level 5 order 4 reserved 9.5 GB (SuperLU) and died in a traceback."""
+    argv = ["liftoff", "--backend", "fem", "--level", "5", "--order", "4"]
+    done, seconds = run_cli(argv, tmp_path, preexec_fn=_address_space(10_000_000 * 1024))
+    assert done.returncode == 2 and seconds < 5, done.stderr
+    assert done.stderr.startswith("twoball: error: --level 5 --order 4 needs ~")
+    # told to go ahead anyway: the allocation that fails is one line, exit 3
+    argv = [*argv[:-4], "--level", "5", "--max-memory", "100GiB"]
+    done, _ = run_cli(argv, tmp_path, preexec_fn=_address_space(1_500_000_000))
+    assert done.returncode == 3, done.stderr
+    assert done.stderr.splitlines()[-1].startswith("twoball: error: out of memory (")
+    assert "Traceback" not in done.stderr

@@ -1,0 +1,207 @@
+"""Interrupts (SIGINT, SIGTERM) and killed parents (twoball._common.signals): outputs stay whole.
+
+Each command runs as ``python -m twoball`` in a subprocess that stops at a named
+stage of :mod:`twoball._common.staging` (``TWOBALL_TEST_PAUSE``) and is signalled
+there; inside VTK signals are held back and raised between frames.
+"""
+
+from __future__ import annotations
+
+import json
+import os
+import signal
+import subprocess
+import sys
+import time
+from pathlib import Path
+
+import pytest
+from twoball.verify.output.series import read_series
+
+from tests import ROOT
+from tests._common.commands import (
+    FAST,
+    FILE_WRITERS,
+    FOLDER_WRITERS,
+    children,
+    interrupt,
+    no_scratch,
+    running,
+    snapshot,
+    start,
+    wait_for_pause,
+)
+from twoball._common.signals import Interrupted, checkpoint, held_signals
+from twoball._common.staging import MARKER, foreign_entry
+
+SIGNALS = [(signal.SIGINT, 130), (signal.SIGTERM, 143)]
+POOL_SWEEP = ["sweep", "--param", "damping", "--values", "0:0.3:40", "--workers", "2"]
+
+
+@pytest.mark.parametrize("stage", ["begin", "staged", "commit"])
+@pytest.mark.parametrize(("signum", "status"), SIGNALS)
+def test_interrupted_pvd_export_keeps_a_whole_collection(tmp_path, stage, signum, status):
+    out = tmp_path / "x.pvd"
+    assert start(["export", *FAST, "--frames", "2", "--out", str(out)]).wait() == 0
+    old = snapshot(tmp_path)
+    code, _ = interrupt(["export", *FAST, "--frames", "3", "--out", str(out)], stage, signum)
+    assert code == status
+    no_scratch(tmp_path)
+    now = snapshot(tmp_path)
+    frames = [p for p in tmp_path.iterdir() if p.name.startswith("x_frames-")]
+    assert len(frames) == 1 and foreign_entry(frames[0]) is None  # one collection, whole
+    if stage == "commit":  # signals wait for the commit: the new collection is in place
+        assert len(read_series(out)) == 4
+    else:
+        assert now == old
+
+
+@pytest.mark.parametrize(("signum", "status"), SIGNALS)
+def test_interrupted_xdmf_export_keeps_the_pair(tmp_path, signum, status):
+    out = tmp_path / "x.xdmf"
+    assert start(["export", *FAST, "--frames", "2", "--out", str(out)]).wait() == 0
+    old = snapshot(tmp_path)
+    code, _ = interrupt(["export", *FAST, "--frames", "3", "--out", str(out)], "staged", signum)
+    assert code == status and snapshot(tmp_path) == old
+
+
+@pytest.mark.parametrize(
+    ("command", "stage", "signum", "status"),
+    [
+        ("verify", "staged", signal.SIGINT, 130),
+        ("verify", "commit", signal.SIGTERM, 143),
+        ("reproduce", "begin", signal.SIGTERM, 143),
+        ("reproduce", "commit", signal.SIGINT, 130),
+    ],
+)
+def test_interrupted_report_folder_is_old_or_new_whole(tmp_path, command, stage, signum, status):
+    out = tmp_path / "out"
+    assert start([*FOLDER_WRITERS[command], str(out)]).wait() == 0
+    old = snapshot(tmp_path)
+    code, _ = interrupt([*FOLDER_WRITERS[command], str(out)], stage, signum)
+    assert code == status
+    no_scratch(tmp_path)
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["out"]
+    assert foreign_entry(out) is None
+    listed = json.loads((out / MARKER).read_text())["files"]
+    assert all((out / name).is_file() for name in listed)  # complete, old or new
+    if stage != "commit":
+        assert snapshot(tmp_path) == old
+
+
+@pytest.mark.parametrize(("signum", "status"), SIGNALS)
+def test_interrupted_render_leaves_the_earlier_picture(tmp_path, signum, status):
+    out = tmp_path / "ball.png"
+    out.write_bytes(b"an earlier picture")
+    code, _ = interrupt([*FILE_WRITERS["render"], str(out)], "staged", signum)
+    assert code == status and out.read_bytes() == b"an earlier picture"
+    no_scratch(tmp_path)
+
+
+@pytest.mark.parametrize(
+    ("argv", "signum", "status"),
+    [
+        (POOL_SWEEP, signal.SIGINT, 130),
+        (POOL_SWEEP, signal.SIGTERM, 143),
+        (["reproduce", "--only", "table2", "--workers", "2"], signal.SIGTERM, 143),
+    ],
+)
+def test_interrupt_ends_pool_workers(tmp_path, argv, signum, status):
+    extra = ["--plot", str(tmp_path / "s.png")] if argv[0] == "sweep" else []
+    extra = extra or ["--out", str(tmp_path / "rep")]
+    code, kids = interrupt([*argv, *extra], "pool", signum)
+    assert code == status and len(kids) >= 2
+    end = time.monotonic() + 10
+    while any(running(k) for k in kids) and time.monotonic() < end:
+        time.sleep(0.05)
+    assert not any(running(k) for k in kids)
+    assert list(tmp_path.iterdir()) == []
+
+
+def test_workers_die_with_a_killed_parent(tmp_path):
+    process = start(POOL_SWEEP, "pool")
+    wait_for_pause(process, "pool")
+    kids = children(process.pid)
+    process.kill()  # SIGKILL: no finally runs; PR_SET_PDEATHSIG ends the workers
+    process.wait()
+    end = time.monotonic() + 10
+    while any(running(k) for k in kids) and time.monotonic() < end:
+        time.sleep(0.05)
+    assert len(kids) >= 2 and not any(running(k) for k in kids)
+
+
+EARLIER = b"GIF89a an earlier animation"
+
+
+RENDER = ["render", "-q", "--level", "1", "--frames", "60", "--size", "160x120"]
+
+
+def scratch_entries(folder: Path) -> list[Path]:
+    return [p for p in folder.iterdir() if p.name.startswith(".x.gif.twoball-scratch-")]
+
+
+def interrupted_render(folder: Path, signum: int, delay: float) -> tuple[int, str, float]:
+    """Render; signal it ``delay`` s after its scratch appears; status, stderr, latency."""
+    env = dict(os.environ, PYTHONPATH=str(ROOT), OPENBLAS_NUM_THREADS="1")
+    env.setdefault("VTK_DEFAULT_OPENGL_WINDOW", "vtkEGLRenderWindow")
+    env.pop("TWOBALL_TEST_PAUSE", None)
+    process = subprocess.Popen(
+        [sys.executable, "-m", "twoball", *RENDER, "--out", str(folder / "x.gif")],
+        cwd="/",
+        env=env,
+        stdout=subprocess.DEVNULL,
+        stderr=subprocess.PIPE,
+    )
+    end = time.monotonic() + 120
+    while not scratch_entries(folder) and process.poll() is None and time.monotonic() < end:
+        time.sleep(0.005)
+    assert process.poll() is None, "the render ended before its scratch appeared"
+    time.sleep(delay)
+    sent = time.monotonic()
+    process.send_signal(signum)
+    _, err = process.communicate(timeout=60)
+    return process.returncode, err.decode(), time.monotonic() - sent
+
+
+@pytest.mark.parametrize("delay", [0.2, 0.35, 0.5, 0.65])
+@pytest.mark.parametrize(("signum", "status"), [(signal.SIGINT, 130), (signal.SIGTERM, 143)])
+def test_interrupted_render_exits_cleanly_and_keeps_the_earlier_gif(
+    tmp_path, signum, status, delay
+):
+    out = tmp_path / "x.gif"
+    out.write_bytes(EARLIER)
+    code, err, latency = interrupted_render(tmp_path, signum, delay)
+    assert code == status, (code, err[-2000:])  # not -11 (SIGSEGV), not 0 (swallowed)
+    assert err.strip().splitlines() == ["twoball: interrupted"], err[-2000:]
+    assert out.read_bytes() == EARLIER
+    assert scratch_entries(tmp_path) == []
+    assert latency < 10.0  # a frame or two; generous for a loaded machine
+
+
+# --------------------------------------------------------------------------- the mechanism
+def test_held_signal_waits_for_the_checkpoint():
+    with pytest.raises(Interrupted) as raised:
+        with held_signals():
+            os.kill(os.getpid(), signal.SIGTERM)
+            time.sleep(0.05)  # the handler has run by now: recorded, not raised
+            reached = True
+            checkpoint()
+            pytest.fail("the checkpoint did not raise")  # pragma: no cover
+    assert reached and raised.value.exit_status == 143
+    checkpoint()  # nothing pending any more
+
+
+def test_held_signal_is_raised_at_the_end_of_the_block():
+    with pytest.raises(Interrupted) as raised:
+        with held_signals():
+            os.kill(os.getpid(), signal.SIGINT)
+            time.sleep(0.05)
+            done = True
+    assert done and raised.value.exit_status == 130
+
+
+def test_held_signals_restores_the_handlers():
+    before = {s: signal.getsignal(s) for s in (signal.SIGINT, signal.SIGTERM)}
+    with held_signals():
+        checkpoint()
+    assert {s: signal.getsignal(s) for s in before} == before

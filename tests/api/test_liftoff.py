@@ -1,0 +1,154 @@
+"""twoball.liftoff: the same numbers as the command line, bit for bit; refusals by name."""
+
+from __future__ import annotations
+
+import pytest
+from twoball.modal.parameters import Case
+
+import twoball
+from tests.helpers import cli_json, same_numbers
+from twoball import Body
+from twoball.cli.main import main
+
+BASKETBALL = Case.preset("basketball")
+
+
+def _contact(body: Body, **kwargs):
+    return twoball.liftoff(BASKETBALL, body=body, **kwargs)
+
+
+# --------------------------------------------------------------------------- API = CLI
+@pytest.mark.parametrize(
+    ("argv", "case"),
+    [
+        ((), lambda: twoball.Case.preset("basketball")),
+        (("--v0", "3"), lambda: twoball.Case.preset("basketball", v0=3.0)),
+        (("--phi-a", "2.5"), lambda: twoball.Case.preset("basketball", phi_a=2.5)),
+        (("--v0", "4.1"), lambda: twoball.Case.preset("basketball")),
+        (
+            ("--pressure", "77200", "--mass", "0.567"),
+            lambda: twoball.Case.from_pressure(77200, 0.567),
+        ),
+        (("--damping", "0.2", "--modes", "60"), lambda: twoball.Case(damping=0.2, modes=60)),
+    ],
+    ids=["default", "v0-3", "phi-a-2.5", "preset-own-v0", "pressure-mass", "damping-modes"],
+)
+def test_closed_form_api_equals_cli(capsys, argv, case):
+    cli, _ = cli_json(capsys, "liftoff", *argv)
+    api = twoball.liftoff(case())
+    same_numbers(api.as_dict(), cli)
+
+
+def test_default_is_the_basketball_preset_with_its_pinned_numbers(capsys):
+    result = twoball.liftoff(twoball.Case.preset("basketball"))
+    assert result.t_liftoff_s * 1e3 == pytest.approx(9.8825, abs=5e-5)
+    assert result.v_liftoff_m_s == pytest.approx(3.8322, abs=5e-5)
+    again, first = twoball.liftoff().as_dict(), result.as_dict()
+    assert again.pop("provenance")["case"] == first.pop("provenance")["case"]
+    assert again == first
+    cli, err = cli_json(capsys, "liftoff", "--v0", "4.1")
+    assert cli["phi_a_source"] == "measured (basketball)" and cli["phi_a_rad"] == 2.6
+    assert err == ""  # the preset's own value: nothing to note
+
+
+def test_fem_axisym_api_equals_cli(capsys):
+    cli, _ = cli_json(capsys, "liftoff", "--backend", "fem", "--mesh", "axisym")
+    api = twoball.liftoff(twoball.Case.preset("basketball"), backend="fem", mesh="axisym")
+    same_numbers(api.as_dict(), cli)
+    assert cli["backend"] == "fem" and cli["mesh"].startswith("axisym")
+
+
+def test_mesh_file_api_equals_cli(capsys, ball_file):
+    path, points, cells = ball_file
+    argv = ("--backend", "fem", "--mesh-file", str(path), "--order", "2", "--v0", "3")
+    cli, _ = cli_json(capsys, "liftoff", *argv)
+    case = twoball.Case.preset("basketball", v0=3.0)
+    api = twoball.liftoff(case, backend="fem", mesh=twoball.MeshOptions(file=str(path), order=2))
+    same_numbers(api.as_dict(), cli)
+    assert cli["mesh_file"]["radius"] == pytest.approx(0.12, rel=1e-12)
+    assert cli["mesh_file"]["center"] == pytest.approx([1.0, 2.0, 3.0], rel=1e-12)
+    # the same mesh as an object (meshio.Mesh, scikit-fem MeshTri): the same numbers up to
+    # round-off (the readers hand over the points in different layouts)
+    import meshio
+    from skfem import MeshTri1
+
+    for source in (meshio.read(path), MeshTri1(points.T, cells.T)):
+        again = twoball.fem.solve(case, mesh=twoball.MeshOptions(file=source, order=2))
+        assert again.t_liftoff_s == pytest.approx(api.t_liftoff_s, rel=1e-12)
+        assert again.v_liftoff_m_s == pytest.approx(api.v_liftoff_m_s, rel=1e-12)
+    # second method: the generated icosphere it was written from, up to round-off of the
+    # translation and scaling (a discretisation difference would be ~1e-3)
+    generated = twoball.fem.solve(case, mesh=twoball.MeshOptions("sphere", level=2, order=2))
+    assert api.t_liftoff_s == pytest.approx(generated.t_liftoff_s, rel=1e-9)
+    assert api.v_liftoff_m_s == pytest.approx(generated.v_liftoff_m_s, rel=1e-9)
+
+
+def test_results_state_phi_a_source_and_notes(capsys):
+    result = twoball.liftoff(twoball.Case(v0=3.0))
+    data = result.as_dict()
+    assert data["phi_a_source"] == "eq. (3.7)" and data["notes"] == [result.case.phi_a_note]
+    code = main(["liftoff", "--v0", "3"])
+    captured = capsys.readouterr()
+    assert code == 0 and "phi_a from" in captured.out and "eq. (3.7)" in captured.out
+    assert captured.err.startswith("twoball: note: phi_a = ")
+
+
+# --------------------------------------------------------------------------- refusals
+@pytest.mark.parametrize(
+    ("call", "name"),
+    [
+        (lambda: twoball.liftoff(mesh=twoball.MeshOptions(level=2)), "mesh"),
+        (lambda: twoball.liftoff(mesh="axisym"), "mesh"),
+        (lambda: twoball.liftoff(backend="spectral"), "backend"),
+        (lambda: twoball.fem.solve(mesh=twoball.MeshOptions("axisym", level=2)), "level"),
+        (lambda: twoball.fem.solve(mesh=twoball.MeshOptions("sphere", elements=100)), "elements"),
+        (lambda: twoball.fem.solve(mesh="axisym", stepping=twoball.Stepping(dt=1e-5)), "dt"),
+        (lambda: twoball.liftoff(stepping=twoball.Stepping(scheme="alpha")), "scheme"),
+        (lambda: twoball.liftoff(body=twoball.Body(-0.1)), "mass_ratio"),
+        (lambda: twoball.fem.solve(mesh="cube"), "mesh"),
+        (lambda: twoball.Case(damping=2.0), "damping"),
+        (lambda: twoball.Case.preset("squash"), "preset"),
+        (lambda: twoball.Case.preset("basketball", pressure=7e4), "pressure"),
+    ],
+)
+def test_api_errors_name_parameters(call, name):
+    with pytest.raises(twoball.ParameterError) as error:
+        call()
+    assert error.value.name == name and str(error.value).startswith(f"{name} must be ")
+
+
+def test_liftoff_without_mass_ratio_is_unchanged():
+    """The contact options leave the massless path bit-identical."""
+    from twoball.modal.report import legendre_liftoff
+
+    a = twoball.liftoff(BASKETBALL)
+    b = legendre_liftoff(BASKETBALL)
+    assert (a.t_liftoff_s, a.v_liftoff_m_s) == (b.t_liftoff_s, b.v_liftoff_m_s)
+
+
+@pytest.mark.parametrize(
+    ("call", "name"),
+    [
+        (lambda: _contact(Body(-1.0)), "mass_ratio"),
+        (lambda: _contact(Body(float("nan"))), "mass_ratio"),
+        (lambda: _contact(Body(0.1, contact_radius=0.2)), "contact_radius"),  # a >= R = 0.12 m
+        (lambda: _contact(Body(0.1, contact_radius=0.0)), "contact_radius"),
+        (lambda: _contact(Body(0.1, restitution=1.5)), "restitution"),
+        (lambda: _contact(Body(0.1, energy="all")), "energy"),
+        (lambda: _contact(Body(0.1), backend="spectral"), "backend"),
+        (
+            lambda: _contact(Body(0.1), backend="fem", stepping=twoball.Stepping(scheme="alpha")),
+            "scheme",
+        ),
+        (
+            lambda: _contact(Body(0.1), backend="fem", mesh=twoball.MeshOptions("axisym", level=2)),
+            "level",
+        ),
+        (lambda: _contact(Body(0.1), recontact="paper"), "recontact"),
+        (lambda: _contact(Body(0.1), damping=twoball.Rayleigh()), "rayleigh"),
+    ],
+)
+def test_bad_contact_input_names_the_parameter(call, name):
+    with pytest.raises(twoball.ParameterError) as info:
+        call()
+    assert info.value.name == name

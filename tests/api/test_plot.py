@@ -1,0 +1,45 @@
+"""twoball.plot: figure options and the user's mesh file."""
+
+from __future__ import annotations
+
+import matplotlib.image as mpimg
+import pytest
+from twoball.verify.output.figures.eigen import eigen_figure, eigen_table
+
+import twoball
+from tests.meshes import RADIUS
+from twoball._common.errors import ParameterError
+
+BASKETBALL = twoball.Case.preset("basketball")
+MM = 1000.0  # the .msh file is in millimetres
+
+
+def test_plot_pole_on_the_file_mesh(ball_files, ball_files_liftoff, tmp_path):
+    out = tmp_path / "pole.png"
+    result = twoball.plot("pole", out, BASKETBALL, mesh=ball_files["msh"])
+    assert out.stat().st_size > 0
+    fem = ball_files_liftoff["msh"]
+    assert result.reports["fem"].t_liftoff_s == pytest.approx(fem.t_liftoff_s, rel=1e-12)
+    assert result.provenance["mesh_file"]["radius"] == pytest.approx(RADIUS * MM, rel=1e-12)
+
+
+def test_plot_api_dpi_sets_raster_size(tmp_path):
+    from twoball import PlotOptions, plot
+
+    figure_inches = eigen_figure([eigen_table(0, 1, 1)]).get_size_inches()
+    for dpi in (100, 200):
+        figure = PlotOptions(dpi=dpi, levels=[0], orders=[1], max_degree=1)
+        out = plot("eigen", tmp_path / f"e{dpi}.png", figure=figure)
+        height, width = mpimg.imread(out.file).shape[:2]
+        assert (width, height) == tuple(round(x * dpi) for x in figure_inches)
+    for bad in (10, 5000, float("nan"), "300", True):
+        with pytest.raises(ParameterError, match="dpi"):
+            plot("eigen", tmp_path / "bad.png", figure=PlotOptions(dpi=bad, levels=[0], orders=[1]))
+    assert not (tmp_path / "bad.png").exists()
+
+
+def test_an_output_that_is_not_a_path_is_refused_by_name(tmp_path, monkeypatch):
+    monkeypatch.chdir(tmp_path)
+    with pytest.raises(ParameterError, match=r"^out must be a file path \(str or os.PathLike\)"):
+        twoball.plot("pole", None)
+    assert not any(tmp_path.iterdir())

@@ -1,0 +1,47 @@
+"""twoball.sweep: the same numbers as the command line and as single runs."""
+
+from __future__ import annotations
+
+import json
+
+import numpy as np
+import pytest
+from twoball.modal.parameters import Case
+
+import twoball
+from tests.helpers import cli_json
+from twoball import Body
+
+BASKETBALL = Case.preset("basketball")
+
+
+def test_sweep_api_equals_cli(capsys):
+    cli, err = cli_json(capsys, "sweep", "--param", "v0", "--values", "2:4.1:3")
+    api = twoball.sweep({"v0": np.linspace(2.0, 4.1, 3)})
+    assert json.loads(json.dumps([p.as_dict() for p in api.points])) == cli
+    # one phi_a rule per sweep: eq. (3.7) at the preset's own 4.1 m/s as well
+    assert [p["phi_a_source"] for p in cli] == ["eq. (3.7)"] * 3
+    assert "note:" in err
+    data = api.as_dict()
+    assert data["parameters"] == ["v0"] and data["shape"] == [3] and len(data["points"]) == 3
+
+
+def test_sweep_refuses_unknown_parameters():
+    with pytest.raises(twoball.ParameterError) as error:
+        twoball.sweep({"mass": [1.0, 2.0]})
+    assert error.value.name == "values" and "wave_speed" in str(error.value)
+
+
+def test_mass_ratio_sweep_equals_single_runs():
+    cap = Body(0.0, contact_radius=0.03)  # the other fields of every swept mass ratio
+    result = twoball.sweep({"mass_ratio": [0.004, 0.101]}, BASKETBALL, body=cap)
+    for point, mu in zip(result.points, (0.004, 0.101), strict=True):
+        single = twoball.liftoff(BASKETBALL, body=Body(mu, contact_radius=0.03))
+        assert point.v_liftoff_m_s == single.v_liftoff_m_s
+        assert point.as_dict()["mass_ratio"] == mu
+    with pytest.raises(twoball.ParameterError) as info:
+        twoball.sweep({"mass_ratio": [-1.0]}, BASKETBALL)
+    assert info.value.name == "mass_ratio"
+    with pytest.raises(twoball.ParameterError) as info:
+        twoball.sweep({"mass_ratio": [0.1]}, BASKETBALL, body=Body(0.0, contact_radius=0.2))
+    assert info.value.name == "contact_radius"  # a >= R = 0.12 m

@@ -1,0 +1,154 @@
+"""The command line's entry point (twoball/cli/main.py): one-line errors, negative values."""
+
+import argparse
+import json
+import shutil
+import subprocess
+import sys
+from pathlib import Path
+
+import pytest
+import validation_table as table
+from test_validation import check_refusals, run_child
+
+from twoball.cli.main import full_parser, join_negative_values, main
+
+
+@pytest.mark.parametrize(
+    ("argv", "flag"),
+    [
+        (["liftoff", "--radius", "0"], "--radius"),
+        (["liftoff", "--radius", "-0.1"], "--radius"),
+        (["liftoff", "--damping", "1"], "--damping"),
+        (["liftoff", "--damping", "-0.01"], "--damping"),
+        (["liftoff", "--phi-a", "1.2"], "--phi-a"),
+        (["liftoff", "--phi-a", "3.2"], "--phi-a"),
+        (["liftoff", "--preset", "squash"], "--preset"),
+        (["liftoff", "--modes", "0"], "--modes"),
+        (["liftoff", "--v0", "0"], "--v0"),
+        (["liftoff", "--wave-speed", "-3"], "--wave-speed"),
+        (["liftoff", "--pressure", "77200"], "--pressure"),
+        (["liftoff", "--wave-speed", "300", "--pressure", "1", "--mass", "1"], "--wave-speed"),
+        (["liftoff", "--t-end", "-1"], "--t-end"),
+        (["liftoff", "--sigma", "hann"], "--sigma"),
+        (["liftoff", "--recontact", "never"], "--recontact"),
+        (["liftoff", "--damping", "abc"], "--damping"),
+        (["liftoff", "--radius", "nan"], "--radius"),
+        (["sweep", "--param", "damping", "--values", "0:1"], "--values"),
+        (["sweep", "--param", "damping", "--values", "a:b:3"], "--values"),
+        (["sweep", "--param", "damping", "--values", "0:0.5:0"], "--values"),
+        (["sweep", "--param", "modes", "--values", "1:2:3"], "--values"),
+        (["sweep", "--param", "mass", "--values", "0:1:3"], "--param"),
+        (["sweep", "--param", "damping", "--values", "0:1:3"], "--damping"),
+    ],
+)
+def test_bad_input_is_one_line_exit_2(capsys, argv, flag):
+    with pytest.raises(SystemExit) as stop:
+        main(argv)
+    err = capsys.readouterr().err
+    assert stop.value.code == 2
+    lines = err.strip().splitlines()
+    assert len(lines) == 1, err
+    assert flag in lines[0] and "Traceback" not in err
+
+
+def test_console_script_error_has_no_traceback():
+    exe = shutil.which("twoball")
+    cmd = [exe] if exe else [sys.executable, "-m", "twoball"]
+    proc = subprocess.run(
+        [*cmd, "liftoff", "--damping", "2"], capture_output=True, text=True, check=False
+    )
+    assert proc.returncode == 2
+    assert proc.stderr.strip() == "twoball: error: --damping must be in [0, 1), got 2.0"
+    assert proc.stdout == ""
+
+
+def test_negative_values_join_their_option_only():
+    options = {"--values", "--g"}
+    assert join_negative_values(["sweep", "--values", "-1:1:3"], options) == [
+        "sweep",
+        "--values=-1:1:3",
+    ]
+    assert join_negative_values(["--g", "-1e-3"], options) == ["--g=-1e-3"]
+    assert join_negative_values(["--json", "-1"], options) == ["--json", "-1"]
+    assert join_negative_values(["--values", "--json"], options) == ["--values", "--json"]
+
+
+def test_cli_sweep_negative_start_is_a_value_not_an_option(capsys):
+    """v0 is a speed: its sign is irrelevant, so -3:-1:3 runs the same cases as 3:1:3."""
+    assert main(["sweep", "--param", "v0", "--values", "-3:-1:3", "--json"]) == 0
+    negative = capsys.readouterr().out
+    assert main(["sweep", "--param", "v0", "--values", "3,2,1", "--json"]) == 0
+    positive = capsys.readouterr().out
+
+    def rows(text):
+        data = json.loads(text)
+        data = data["results"] if isinstance(data, dict) else data
+        return [(r["t_liftoff_s"], r["v_liftoff_m_s"]) for r in data]
+
+    assert rows(negative) == rows(positive)
+
+
+# --- Options that were silently ignored, repeated or blamed on another option: refused by name
+
+
+def test_options_that_were_ignored_are_refused_by_name(tmp_path: Path) -> None:
+    cases = table.NO_LONGER_IGNORED
+    results = run_child(cases, tmp_path)
+    bad = check_refusals(cases, results)
+    assert not bad, f"{len(bad)} of {len(cases)}:\n" + "\n".join(bad)
+
+
+def _repeat_cases() -> list[tuple[str, list[str]]]:
+    """Every single-value option of every subcommand, given twice on the base line."""
+    cases = []
+    for command, parser in table.subparsers(full_parser()).items():
+        for action in parser._actions:
+            if not action.option_strings or type(action).__name__ != "_StoreOnce":
+                continue
+            flag = max(action.option_strings, key=len)
+            value = str(action.choices[0]) if action.choices else "1"
+            argv = [w for w in table.BASE[command]]
+            cases.append((flag, [*argv, flag, value, flag, value]))
+    return cases
+
+
+def test_every_single_value_option_given_twice_is_refused(tmp_path: Path) -> None:
+    cases = _repeat_cases()
+    assert len(cases) > 150  # every subcommand's options, not a sample
+    assert {argv[0] for _, argv in cases} == set(table.BASE)
+    results = run_child(cases, tmp_path)
+    bad = check_refusals(cases, results)
+    assert not bad, f"{len(bad)} of {len(cases)}:\n" + "\n".join(bad[:20])
+    for (flag, _), result in zip(cases, results, strict=True):
+        assert "more than once" in result["stderr"], (flag, result["stderr"])
+
+
+def test_parser_registers_store_once_for_every_value_option() -> None:
+    """No single-value option escapes the check (a plain argparse store would keep the last)."""
+    for parser in table.subparsers(full_parser()).values():
+        for action in parser._actions:
+            if action.option_strings and action.nargs is None and action.const is None:
+                if isinstance(action, argparse._StoreAction):
+                    assert type(action).__name__ == "_StoreOnce", action.option_strings
+
+
+@pytest.mark.parametrize(
+    ("argv", "expected"),
+    [
+        (
+            ["converge", "--study", "h", "--mesh-file", "X"],
+            "--mesh-file is not an option of twoball converge",
+        ),
+        (
+            ["liftoff", "--youngs-modulus", "1e7", "--thickness", "1"],
+            "--youngs-modulus must be such that B = E h^3 / (12 (1 - nu^2)) is at most 1e+06",
+        ),
+        (["liftoff", "--mass-ratio", "0.1", "--geometry", "exact"], "--geometry must be left out"),
+        (["liftoff", "--radius", "1", "--radius", "2"], "--radius given more than once (1.0, then"),
+    ],
+)
+def test_the_line_names_the_option_given(argv: list[str], expected: str, tmp_path: Path) -> None:
+    [result] = run_child([("", argv)], tmp_path)
+    assert result["status"] == 2
+    assert result["stderr"].startswith(f"twoball: error: {expected}"), result["stderr"]

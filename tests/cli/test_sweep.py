@@ -1,0 +1,83 @@
+"""twoball sweep: JSON in order, grids, workers, failed points, bad input in one line."""
+
+import json
+
+import pytest
+from twoball.verify.sweeps import parallel
+
+from tests.helpers import cli_run
+from tests.verify.sweeps.helpers import FailAbove
+from twoball.cli.main import main
+
+
+def test_sweep_json_in_order(capsys):
+    code, out, _ = cli_run(capsys, "sweep", "--param", "v0", "--values", "2:8:4", "--json")
+    data = json.loads(out)["results"]
+    assert code == 0 and [d["v0_m_s"] for d in data] == pytest.approx([2, 4, 6, 8])
+    assert len({d["phi_a_rad"] for d in data}) == 4  # phi_a re-derived per value
+
+
+def test_sweep_modes(capsys):
+    code, out, _ = cli_run(capsys, "sweep", "--param", "modes", "--values", "30:60:2", "--json")
+    assert code == 0 and [d["modes"] for d in json.loads(out)["results"]] == [30, 60]
+
+
+def test_sweep_cli_reports_failed_points(capsys, monkeypatch):
+    monkeypatch.setattr("twoball.verify.sweeps.sweeps.SweepSolver", lambda *a: FailAbove(3.0))
+    assert main(["sweep", "--param", "v0", "--values", "2:4:3", "--json", "--workers", "1"]) == 0
+    rows = json.loads(capsys.readouterr().out)["results"]
+    assert [r["error"] is not None for r in rows] == [False, False, True]
+    assert all(r["phi_a_source"] == "eq. (3.7)" for r in rows)  # failed points too
+    assert main(["sweep", "--param", "v0", "--values", "2:4:3", "--workers", "1"]) == 0
+    assert "NumericalError" in capsys.readouterr().out
+
+
+def test_sweep_cli_workers_give_the_same_json(capsys):
+    argv = ["sweep", "--param", "damping", "--values", "0:0.4:24", "--json"]
+    main([*argv, "--workers", "1"])
+    serial = json.loads(capsys.readouterr().out)
+    main([*argv, "--workers", "2"])
+    parallel = json.loads(capsys.readouterr().out)
+    assert parallel["results"] == serial["results"]  # the provenance names the workers
+    assert parallel["provenance"]["call"]["arguments"]["workers"] == 2
+
+
+def test_grid_cli_json_and_heat_map(capsys, tmp_path):
+    png = tmp_path / "grid.png"
+    argv = ["sweep", "--param", "damping", "--values", "0.05:0.3:3"]
+    argv += ["--param", "v0", "--values", "2:6:2", "--json", "--plot", str(png)]
+    assert main(argv) == 0
+    rows = json.loads(capsys.readouterr().out)["results"]
+    assert [r["index"] for r in rows] == [[i, j] for i in range(3) for j in range(2)]
+    assert png.stat().st_size > 10_000 and png.read_bytes()[:4] == b"\x89PNG"
+    assert not [p for p in tmp_path.iterdir() if p.name.startswith(".")]
+
+
+@pytest.mark.parametrize(
+    ("argv", "flag"),
+    [
+        (["--param", "v0", "--values", "1:2"], "--values"),
+        (["--param", "v0", "--values", "1:x:3"], "--values"),
+        (["--param", "v0", "--param", "damping", "--values", "1:2:3"], "--values"),
+        (["--param", "v0", "--values", "1:2:3", "--values", "0:1:2"], "--values"),
+        (["--param", "v0", "--param", "v0", "--values", "1:2:3", "--values", "1:2:3"], "--param"),
+        (["--param", "v0", "--values", "1:2:3", "--workers", "0"], "--workers"),
+        (["--param", "v0", "--values", "1:2:3", "--workers", "two"], "--workers"),
+        (["--param", "v0", "--values", "1:2:3", "--plot", "/nonexistent/dir/a.png"], "--plot"),
+        (["--param", "v0", "--values", "1:2:3", "--plot", "/tmp/a.xyz"], "--plot"),
+    ],
+)
+def test_bad_sweep_input_is_one_line_exit_2(capsys, argv, flag):
+    with pytest.raises(SystemExit) as stop:
+        main(["sweep", *argv])
+    err = capsys.readouterr().err.strip().splitlines()
+    assert stop.value.code == 2 and len(err) == 1 and flag in err[0]
+
+
+def test_unreachable_scheduler_is_one_line_exit_2(capsys, monkeypatch):
+    pytest.importorskip("distributed")
+    monkeypatch.setattr(parallel, "CONNECT_TIMEOUT", "0.5s")
+    with pytest.raises(SystemExit) as stop:
+        main(["sweep", "--param", "v0", "--values", "1:2:3", "--scheduler", "tcp://127.0.0.1:9"])
+    err = capsys.readouterr().err.strip().splitlines()
+    assert stop.value.code == 2 and len(err) == 1 and "--scheduler" in err[0]

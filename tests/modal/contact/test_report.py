@@ -1,0 +1,132 @@
+"""The Legendre contact solution (modal/contact/report.py) of a body of finite mass."""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+import pytest
+from twoball.modal.contact.report import CONTACT_WARNING, legendre_contact
+from twoball.modal.parameters import Case, preset
+
+import twoball
+from twoball import Body
+from twoball._common.errors import ParameterError
+
+BASKETBALL = Case.preset("basketball")
+
+
+def test_massless_mode_recovers_todays_pole_result():
+    """mu = 0 on a cap of a = 1e-5 m: the paper's criteria on the cap = today's pole result."""
+    today = twoball.liftoff(BASKETBALL)
+    massless = twoball.liftoff(BASKETBALL, body=Body(0.0, contact_radius=1e-5))
+    assert massless.t_liftoff_s == pytest.approx(today.t_liftoff_s, rel=1e-4)
+    assert massless.v_liftoff_m_s == pytest.approx(today.v_liftoff_m_s, rel=1e-4)
+
+
+def test_energy_option_both_deforms_more():
+    ball = twoball.liftoff(BASKETBALL, body=Body(0.1))
+    both = twoball.liftoff(BASKETBALL, body=Body(0.1, energy="both"))
+    assert both.as_dict()["phi_a_rad"] < ball.as_dict()["phi_a_rad"]  # eq. (3.7) at larger v0
+
+
+def test_converges_in_modes_at_second_order():
+    """a = R/10, mu = 0.101: v1(N) converges like N^-2 (the Lanczos filter); band 1.6-2.6."""
+    v = {}
+    for modes in (30, 60, 120):
+        case = BASKETBALL.derive(modes=modes)
+        v[modes] = twoball.liftoff(case, body=Body(0.101, contact_radius=0.012)).v_liftoff_m_s
+    order = math.log2(abs(v[60] - v[30]) / abs(v[120] - v[60]))
+    assert 1.6 < order < 2.6
+
+
+def test_event_grid_does_not_change_the_result():
+    """The events are exact roots: 16, 32 or 64 grid points per period give the same v1."""
+    from twoball.modal.contact.report import legendre_contact
+
+    body = Body(0.101, contact_radius=0.012)
+    v = [legendre_contact(BASKETBALL, body, samples_per_period=n).v_liftoff_m_s for n in (16, 64)]
+    assert v[0] == pytest.approx(v[1], rel=1e-10)
+
+
+def test_trajectory_follows_the_events():
+    """The sampled path: gap >= 0, body on the cap in contact phases, event values hit."""
+    report = twoball.liftoff(BASKETBALL, body=Body(0.004))
+    data = report.trajectory_si(400)
+    gap = data["body_height_m"] - data["cap_displacement_m"]
+    assert gap.min() > -1e-12 * BASKETBALL.radius
+    on = data["contact"]
+    assert on.any() and (~on).any()
+    np.testing.assert_allclose(gap[on], 0.0, atol=1e-12 * BASKETBALL.radius)
+    final = report.events_si()[-1]
+    after = data["t_s"] > final["t_s"]
+    t = data["t_s"][after] - final["t_s"]
+    g = BASKETBALL.g
+    expected = final["height_m"] + final["velocity_m_s"] * t - 0.5 * g * t * t
+    np.testing.assert_allclose(data["body_height_m"][after], expected, rtol=1e-9, atol=1e-12)
+
+
+@pytest.mark.parametrize("mass_ratio", [0.0, 0.1])
+def test_a_body_on_a_stiff_ball_is_refused_not_solved_as_a_membrane(mass_ratio):
+    """The contact system holds the membrane's modes only: bending or gas would be dropped."""
+    with pytest.raises(ParameterError, match="mass_ratio.*bending or gas"):
+        twoball.liftoff(Case.preset("tennis"), body=Body(mass_ratio))
+    with pytest.raises(ParameterError, match="mass_ratio.*bending or gas"):
+        twoball.sweep({"mass_ratio": [0.01]}, Case.preset("volleyball"))
+
+
+# --- The contact mode carries the massless path's trust warnings: truncation, mesh, window
+
+BODY = twoball.Body(mass_ratio=0.1)
+
+
+def test_too_few_modes_is_warned_against_the_finer_solution() -> None:
+    coarse = legendre_contact(preset("basketball").derive(modes=3), BODY)
+    assert not coarse.lifted
+    (text,) = coarse.warnings
+    assert text.startswith("N = 3 finds no lift-off, but the contact solution with N = 60")
+    assert "11.79 ms" in text
+    converged = legendre_contact(preset("basketball").derive(modes=240), BODY, reference=False)
+    assert converged.lifted and converged.t_liftoff_s == pytest.approx(0.011785, rel=1e-4)
+
+
+def test_default_is_quiet_and_its_block_estimates_the_error() -> None:
+    report = legendre_contact(preset("basketball"), BODY)
+    assert report.warnings == ()
+    block = report.extra["truncation"]
+    assert block["checked"] and block["reference_modes"] == 60
+    converged = legendre_contact(preset("basketball").derive(modes=240), BODY, reference=False)
+    error = report.v_liftoff_m_s / converged.v_liftoff_m_s - 1  # -2.0 %
+    # the difference to 2N is most of the error (O(N^-2): 3/4 of it)
+    assert 0.6 * abs(error) < abs(block["v_difference"]) <= abs(error)
+    assert abs(block["v_difference"]) < CONTACT_WARNING
+
+
+def test_a_body_falling_with_the_membrane_has_not_lifted(capsys) -> None:
+    """--t-end 0.005: the body leaves the cap at 3.78 ms moving down (v1 = -0.028 m/s)."""
+    report = twoball.liftoff(body=BODY, stepping=twoball.Stepping(t_end=0.005))
+    last = report.events_si()[-1]
+    assert last["kind"] == "separation" and last["velocity_m_s"] < 0
+    assert not report.lifted and report.t_liftoff_s is None and report.v_liftoff_m_s is None
+    assert any("moving down" in w and "not a lift-off" in w for w in report.warnings)
+    default = twoball.liftoff(body=BODY)
+    assert default.lifted and default.v_liftoff_m_s > 0 and default.t_liftoff_s > 0.005
+
+
+def test_coarse_fem_mesh_is_warned() -> None:
+    """Icosphere level 0, P1: 2.85 ms against 11.8 ms."""
+    mesh = twoball.MeshOptions("sphere", level=0, order=1)
+    report = twoball.liftoff(backend="fem", mesh=mesh, body=BODY)
+    assert report.t_liftoff_s == pytest.approx(2.85e-3, rel=0.01)
+    assert any(w.startswith("mesh under-resolves") for w in report.warnings)
+    (text,) = [w for w in report.warnings if w.startswith("the fem result is t_l -7")]
+    assert "truncation and discretisation" in text
+    fine = twoball.liftoff(backend="fem", mesh=twoball.MeshOptions("axisym"), body=BODY)
+    assert fine.warnings == ()
+
+
+def test_sweep_points_keep_the_window_warnings_without_the_reference() -> None:
+    result = twoball.sweep({"mass_ratio": [0.1]}, stepping=twoball.Stepping(t_end=0.005), body=BODY)
+    (point,) = result.points
+    assert "truncation" not in point.report.extra
+    assert any("not a lift-off" in w for w in point.report.warnings)

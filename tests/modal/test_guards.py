@@ -1,0 +1,166 @@
+"""Accuracy guards of the closed form (modal/guards.py).
+
+Truncation in N and the re-contact window.
+"""
+
+from __future__ import annotations
+
+import json
+import math
+
+import pytest
+from twoball.modal.converged import converged_legendre
+from twoball.modal.guards import TRUNCATION_WARNING, truncation, window_warnings
+from twoball.modal.parameters import Case, preset
+from twoball.modal.report import legendre_liftoff
+
+import twoball
+from tests.helpers import assert_printed, run_json
+from twoball.cli.main import main
+
+
+def test_legendre_default_is_quiet_and_reports_the_converged_series(capsys) -> None:
+    data, lines = run_json(capsys)
+    assert data["warnings"] == [] and lines == []
+    block = data["truncation"]
+    reference = converged_legendre(preset("basketball"))
+    scale = preset("basketball").scalings
+    assert block["converged"] and block["converged_modes"] == reference.modes
+    assert block["t_liftoff_s"] == pytest.approx(reference.t * scale.time, rel=1e-12)
+    assert block["v_liftoff_m_s"] == pytest.approx(reference.velocity * scale.velocity, rel=1e-12)
+    # N = 30 is 2.9 % below the converged series in v_l (3.9454 m/s at N = 120)
+    assert block["v_difference"] == pytest.approx(data["v_liftoff_m_s"] / 3.9454 - 1, abs=2e-4)
+    assert -0.030 < block["v_difference"] < -0.028
+    assert abs(block["v_difference"]) < TRUNCATION_WARNING
+
+
+def test_truncation_warns_above_five_percent() -> None:
+    coarse = legendre_liftoff(preset("basketball").derive(modes=20))
+    (text,) = coarse.warnings
+    assert text.startswith("N = 20 truncation: t_l ") and text.endswith(
+        "; raise the number of modes N"
+    )
+    assert coarse.extra["truncation"]["v_difference"] < -TRUNCATION_WARNING  # -6.3 %
+    fine = legendre_liftoff(preset("basketball").derive(modes=60))
+    assert fine.warnings == ()
+    assert abs(fine.extra["truncation"]["v_difference"]) < 0.01
+
+
+def test_truncation_difference_shrinks_with_n() -> None:
+    case = preset("basketball")
+    gaps = [
+        abs(
+            truncation(
+                case.derive(modes=n), legendre_liftoff(case.derive(modes=n)).result
+            ).v_difference
+        )
+        for n in (15, 30, 60)
+    ]
+    assert gaps[0] > gaps[1] > gaps[2] > 0
+
+
+def test_short_window_warns(capsys) -> None:
+    data, lines = run_json(capsys, "--t-end", "0.005")
+    assert data["lifted"] and data["t_liftoff_s"] == pytest.approx(4.8e-4, rel=0.01)
+    assert_printed(data, lines)
+    window, falling = data["warnings"][:2]
+    assert window.startswith("window too short for the re-contact check")
+    assert "2 pi / c = 19.6 ms" in window
+    assert falling.startswith("the body is falling back at the end of the window")
+
+
+def test_window_criterion_edges() -> None:
+    """Quiet from one refocusing period after t_l on, while the body still rises."""
+    case = preset("basketball")
+    base = legendre_liftoff(case).result
+    t_l = base.t
+    enough = type(base)(**{**base.__dict__, "t_end": t_l + 2 * math.pi * 1.01})
+    short = type(base)(**{**base.__dict__, "t_end": t_l + 2 * math.pi * 0.99})
+    assert window_warnings(case, enough) == []
+    assert len(window_warnings(case, short)) == 1
+
+
+# --- Unit and sign slips are said: R, |v0| far outside any ball, windows where nothing can lift off
+
+
+def cli(capsys, *argv: str) -> tuple[dict, list[str]]:
+    assert main(["liftoff", "--json", *argv]) == 0
+    out, err = capsys.readouterr()
+    return json.loads(out), err.splitlines()
+
+
+def test_radius_in_millimetres_is_said(capsys) -> None:
+    data, lines = cli(capsys, "--radius", "120")
+    assert not data["lifted"]
+    (text,) = [w for w in data["warnings"] if w.startswith("R = 120 m")]
+    assert "did you mean 0.12 m (120 mm)" in text
+    assert f"twoball: warning: {text}" in lines
+    meant = legendre_liftoff(preset("basketball").derive(radius=0.12))
+    assert meant.lifted and not [w for w in meant.warnings if w.startswith("R = ")]
+
+
+def test_speed_in_millimetres_per_second_is_said() -> None:
+    report = legendre_liftoff(preset("basketball").derive(v0=4100.0))
+    assert any("did you mean 4.1 m/s (4100 mm/s)" in w for w in report.warnings)
+
+
+@pytest.mark.parametrize("seconds", [5.0, 1.0])
+def test_window_in_milliseconds_typed_as_seconds_is_said(seconds: float) -> None:
+    """Longer than the flight 2 |v0| / g = 0.836 s: every lift-off falls back inside it."""
+    case = preset("basketball")
+    assert seconds > 2 * case.v0 / case.g
+    report = legendre_liftoff(case, t_end_s=seconds)
+    assert not report.lifted
+    (text,) = [w for w in report.warnings if w.startswith("the window t_end")]
+    assert f"did you mean {seconds:g} ms" in text
+    # the paper's horizon (re-contact only for t - t_l < t_l) lifts off in the same window:
+    # the window, not the physics, rejected the lift-off
+    assert legendre_liftoff(case, recontact="paper", t_end_s=seconds).lifted
+    # the window meant (milliseconds) lifts off where the default does (within 5 ms)
+    default = legendre_liftoff(case)
+    assert default.lifted and default.t_liftoff_s < 0.01 * seconds
+
+
+def test_window_before_the_wave_reaches_the_pole_is_said(capsys) -> None:
+    data, _ = cli(capsys, "--t-end", "0.001")
+    (text,) = [w for w in data["warnings"] if w.startswith("the window ends at 1 ms")]
+    case = preset("basketball")
+    front = case.phi_a / case.wave_speed  # s: the pole is still before this (eq. (3.9))
+    assert 0.001 < front and f"phi_a / c = {front * 1e3:.3g} ms" in text
+    assert f"pi / c = {math.pi / case.wave_speed * 1e3:.3g} ms" in text
+    stiff = legendre_liftoff(preset("tennis"), t_end_s=3e-4)  # lifts off at 0.52 ms
+    assert not stiff.lifted
+    assert any(w.startswith("the window ends at 0.3 ms") for w in stiff.warnings)
+
+
+def test_defaults_and_ordinary_balls_are_quiet() -> None:
+    for name in ("basketball", "tennis", "volleyball"):
+        report = legendre_liftoff(preset(name))
+        assert not [w for w in report.warnings if w.startswith(("R = ", "|v0| = ", "the window"))]
+
+
+def test_negative_v0_is_the_papers_downward_velocity(capsys) -> None:
+    data, lines = cli(capsys, "--v0=-4.1")
+    positive, _ = cli(capsys, "--v0", "4.1")
+    assert data["v_liftoff_m_s"] == positive["v_liftoff_m_s"]  # only |v0| enters (3.6)-(3.7)
+    (note,) = data["notes"]
+    assert note.startswith("v0 = -4.1 m/s read as an impact at 4.1 m/s downwards")
+    assert f"twoball: note: {note}" in lines and positive["notes"] == []
+    case = Case.preset("basketball", v0=-3.0)
+    assert case.v0 == 3.0 and case.notes[-1].startswith("v0 = -3 m/s")
+    assert case.derive(v0=3.0).v0_note is None and case.derive(damping=0.2).v0_note is not None
+
+
+def test_sweep_points_carry_the_warning() -> None:
+    result = twoball.sweep({"radius": [0.12, 120.0]})
+    first, second = (p.report for p in result.points)
+    assert not [w for w in first.warnings if w.startswith("R = ")]
+    assert [w for w in second.warnings if w.startswith("R = 120 m")]
+
+
+def test_converge_says_it_too() -> None:
+    slip = twoball.Case.preset("basketball", radius=120.0)
+    study = twoball.converge(slip, study="modes", modes_list="30,60,120")
+    assert [w for w in study.warnings if w.startswith("R = 120 m")]
+    assert study.as_dict()["warnings"] == study.warnings
+    assert twoball.converge(study="modes", modes_list="30,60,120").warnings == []
