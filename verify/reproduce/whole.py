@@ -222,7 +222,7 @@ def part_whole_gap(ctx: Context) -> Section:
         row = TABLE1[pair.row - 1]
         points = curves[name]
         measured = {"v1": row.measured_v1, "v2": row.measured_v2, "dx": 0.0}
-        figure = gap_figure(points, "gap", measured, name)
+        figure = gap_figure(points, "gap", measured, name, PAPER_CEM_V1)
         file = save(ctx, figure, f"whole_gap_{name}.png")
         sec.figures.append((file, f"{name}: v1/|v0|, v2/|v0| and lift-off times against Delta x"))
         for gap, report in points:

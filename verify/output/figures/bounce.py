@@ -239,6 +239,7 @@ def gap_figure(
     parameter: str = "gap",
     measured: dict[str, float] | None = None,
     title: str = "",
+    cem: float | None = None,
 ) -> Figure:
     """v1/|v0|, v2/|v0| and the lift-off times against the gap Delta x [mm] or mu.
 
@@ -278,6 +279,8 @@ def gap_figure(
             x, s1, "o", mfc="none", color="k", ms=5, label="ICM, e2 and $e_{12,eff}$ of the run"
         )
         axes[0].plot(x, s2, "o", mfc="none", color="k", ms=5)
+    if cem is not None:
+        axes[0].plot([0.0], [cem], "D", color="C2", ms=7, label="CEM (massless), the paper")
     if measured:
         at = measured.get("dx", 0.0) * scale
         axes[0].plot([at], [measured["v1"]], "s", color="C3", ms=8, label="measured (Table 1)")
