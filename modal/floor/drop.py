@@ -302,7 +302,10 @@ def run_drop(system: FloorSystem, settings: DropSettings, **core: object) -> Dro
         if not rising or not np.isfinite(bound).all():
             return False
         reach = math.sqrt(2.0 * _membrane_energy(system, state.q, state.v))
-        if np.min(system.floor_gaps(state.q) - reach * bound) > 0.0:
+        # a point's gap is Z + (1 + u_i) x_i with |u_i| <= b_i sqrt(2 E) from now on,
+        # and Z only grows while the centre rises: Z + x_i - |x_i| b_i sqrt(2 E) > 0
+        lowest = state.q[system.centre] + x - reach * bound
+        if np.min(lowest) > 0.0:
             flags["stop"] = "flight"
             flags["off"] = True
             return True
