@@ -42,9 +42,51 @@ from twoball.modal.stiffness import Stiffness
 
 from twoball._common.errors import NumericalError, ParameterError
 
-__all__ = ["axisym_ball", "axisym_matrices"]
+__all__ = ["axisym_ball", "axisym_matrices", "cap_functional_exact"]
 
 SPHERE = 4.0 * math.pi  # the forms integrate over the unit sphere; m2 = 4 pi rho R^2
+
+
+def _vertices(elements: int) -> np.ndarray:
+    """Element vertices x = cos(phi), ascending, equally spaced in phi (exact ends and equator)."""
+    phi = np.linspace(0.0, math.pi, elements + 1)
+    x = np.cos(phi)[::-1].copy()
+    x[0], x[-1] = -1.0, 1.0
+    if elements % 2 == 0:
+        x[elements // 2] = 0.0
+    return x
+
+
+def _line_basis(elements: int, order: int) -> Basis:
+    """Lagrange elements of ``order`` on the line x = cos(phi) in [-1, 1]."""
+    if isinstance(elements, bool) or not isinstance(elements, int) or elements < 2:
+        raise ParameterError("elements", "an integer >= 2", elements)
+    if order not in LINE_ELEMENTS:
+        raise ParameterError("order", "1, 2, 3 or 4", order)
+    mesh = MeshLine1.init_tensor(_vertices(elements))
+    return Basis(mesh, LINE_ELEMENTS[order](), intorder=2 * order + 2)
+
+
+def cap_functional_exact(elements: int, order: int, theta: float) -> np.ndarray:
+    """Vector f with ``f . u`` the mean of the finite-element u over ``x in [cos theta, 1]``.
+
+    Exact for the piecewise polynomials of the line: the interval is split at the
+    element vertices and each piece gets an ``order + 1``-point Gauss rule.
+    """
+    from numpy.polynomial.legendre import leggauss
+
+    basis = _line_basis(elements, order)
+    vertices = _vertices(elements)
+    low = math.cos(theta)
+    cuts = np.concatenate([[low], vertices[vertices > low]])
+    xi, w = leggauss(order + 1)
+    points, weights = [], []
+    for a, b in zip(cuts[:-1], cuts[1:], strict=True):
+        points.append(0.5 * (b - a) * xi + 0.5 * (a + b))
+        weights.append(0.5 * (b - a) * w)
+    x, w = np.concatenate(points), np.concatenate(weights) / (1.0 - low)
+    probes = basis.probes(x[None, :])
+    return np.asarray(probes.T @ w).ravel()
 
 
 def axisym_matrices(elements: int, order: int) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
@@ -52,16 +94,7 @@ def axisym_matrices(elements: int, order: int) -> tuple[np.ndarray, np.ndarray, 
 
     Vertices equally spaced in phi on [0, pi]; Lagrange elements of ``order``.
     """
-    if isinstance(elements, bool) or not isinstance(elements, int) or elements < 2:
-        raise ParameterError("elements", "an integer >= 2", elements)
-    if order not in LINE_ELEMENTS:
-        raise ParameterError("order", "1, 2, 3 or 4", order)
-    phi = np.linspace(0.0, math.pi, elements + 1)
-    x = np.cos(phi)[::-1].copy()
-    x[0], x[-1] = -1.0, 1.0
-    if elements % 2 == 0:
-        x[elements // 2] = 0.0
-    basis = Basis(MeshLine1.init_tensor(x), LINE_ELEMENTS[order](), intorder=2 * order + 2)
+    basis = _line_basis(elements, order)
     K = asm(axisym_stiffness, basis).toarray() / SPHERE
     M = asm(axisym_mass, basis).toarray() / SPHERE
     return 0.5 * (K + K.T), 0.5 * (M + M.T), basis.doflocs[0].copy()
@@ -127,4 +160,5 @@ def axisym_ball(
         laplace=laplace,
         label=f"axisym {elements} P{order}",
         sampler=sampler,
+        averager=lambda theta: cap_functional_exact(elements, order, theta) @ V,
     )

@@ -12,6 +12,13 @@ a body touching the ball with a flat face (coin, nut) has ``R* = R2``, the
 lower ball's radius; a ball of radius ``r1`` has ``R* = r1 R2 / (r1 + R2)``
 (two spheres, Johnson, *Contact Mechanics*, 1985, §4.2).
 
+Cap radius rule (the radius a of the cap over which the whole bounce averages
+the ball's top, :attr:`Pair.cap_radius`): a flat face touches over its own
+size, ``a`` = half its width (coin 10.15 mm, nut 2.5 mm); a ball over a disc of
+the contact's radius of curvature, ``a = R*`` (tennis ball on the basketball
+26.2 mm, 40 mm balls on the basketball 17.1 mm, on the tennis ball 12.5 mm).
+A choice, stated: nothing in the paper fixes a.
+
 Examples
 --------
 >>> p = PAIRS["basketball-tennis"]
@@ -169,6 +176,21 @@ class Pair:
         r2 = self.ball.radius
         r1 = self.body.face_radius
         return r2 if r1 is None else r1 * r2 / (r1 + r2)
+
+    @property
+    def cap_radius(self) -> float:
+        """Radius a [m] of the contact cap of the whole bounce (module docstring).
+
+        Examples
+        --------
+        >>> round(PAIRS["tennis-coin"].cap_radius * 1e3, 2)
+        10.15
+        >>> round(PAIRS["basketball-tennis"].cap_radius * 1e3, 1)
+        26.2
+        """
+        if self.body.face_radius is None:
+            return self.body.radius
+        return self.contact_radius
 
 
 def _pair(name: str, lower: str, body: str, row: int) -> Pair:

@@ -16,7 +16,7 @@ from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
 from twoball._bundles import bundles
-from twoball._common.errors import ParameterError
+from twoball._common.errors import NumericalError, ParameterError
 from twoball.modal.floor.options import DEFAULT_MODES, Drop
 from twoball.modal.parameters import Case
 
@@ -51,30 +51,44 @@ def bounce(
     case: Case | None = None,
     drop: Drop | None = None,
     *,
+    body: Any = None,
+    pair: str | None = None,
     backend: str = "legendre",
     mesh: Any = None,
     stepping: Any = None,
     damping: Any = None,
 ) -> BounceReport:
-    """Drop the lower ball on a rigid floor: contact time, rebound, flattening, energy, in SI.
+    """Drop the lower ball on a rigid floor, alone or with a body on top, in SI.
 
     The ball starts undeformed, its lowest point touching the floor, its centre
     falling at ``|v0|``; its centre's height Z carries the translation (mass
     ``m2 = 4 pi R^2 rho``, gravity), its membrane the deformation measured from
     the centre, and the floor holds every point of the lower hemisphere at
-    height >= 0 (docs/bounce.rst, eqs. (F1)-(F3)).  The run ends when the ball
-    has left the floor and moves up, or at the window.
+    height >= 0 (docs/bounce.rst, eqs. (F1)-(F3)).  With an upper body (the
+    whole two-ball bounce, docs/whole_bounce.rst, eqs. (B1)-(B2)) a rigid body of
+    mass ``mu m2`` starts ``drop.gap`` above the ball's top, falling at the same
+    speed, and touches the top over a cap of radius a with Newton's e12.  The
+    run ends when everything has moved apart for good, or at the window.
 
     Parameters
     ----------
     case : Case, optional
-        The ball and its impact speed ``|v0|`` (default the basketball preset).
-        Its excess pressure P (the preset's measured one when the case has
-        none) sets the mass ``m2 = 2 pi R P / c^2`` and the gas.
+        The ball and its impact speed ``|v0|`` (default the basketball preset,
+        or the pair's lower ball).  Its excess pressure P (the preset's
+        measured one when the case has none) sets the mass ``m2 = 2 pi R P /
+        c^2`` and the gas.
     drop : Drop, optional
         Drop height, gas, floor restitution, Legendre degree N, membrane
-        operator (:class:`~twoball.Drop`; default: the case's ``|v0|``, its gas
-        or else the adiabatic gas, e = 0, N = 192, the pressurised operator).
+        operator, gap Delta x [m] (:class:`~twoball.Drop`; default: the case's
+        ``|v0|``, its gas or else the adiabatic gas, e = 0, N = 192, the
+        pressurised operator, touching).
+    body : Body, optional
+        The upper body: ``mass_ratio`` mu in (0, 100], ``contact_radius`` a [m]
+        (default R / 10), ``restitution`` e12 (Newton's, at its impacts).
+    pair : str, optional
+        A Table 1 pair (``"basketball-tennis"``, ...; :data:`twoball.modal.pairs.PAIRS`):
+        the lower ball's preset, mu, e12 and a (:attr:`~twoball.modal.pairs.Pair.cap_radius`);
+        refused with ``body``.
     backend : {"legendre", "fem"}
         Legendre modes (floor points at the Gauss-Radau nodes) or axisymmetric
         finite elements (floor points at the nodes).
@@ -82,7 +96,8 @@ def bounce(
         Finite elements only: the line ``axisym`` (default 96 elements, P2).
     stepping : Stepping, optional
         ``dt`` [s] (default 0.005 / c) with ``scheme="moreau-jean"`` (the only
-        scheme of the drop), and the window ``t_end`` [s] (default 10 pi / c).
+        scheme of the drop), and the window ``t_end`` [s] (default 10 pi / c,
+        plus twice the gap's fall time ``Delta x / |v0|``).
     damping : ModalRatio or Rayleigh, optional
         The damping law (default the case's own: its ratio D on every mode, eq.
         (3.14), or its ``rayleigh``); ``Rayleigh()`` is fitted to D as
@@ -94,7 +109,9 @@ def bounce(
     BounceReport
         ``contact_time_s``, ``v2_m_s``, ``e2``, ``phi_a_max_rad``,
         ``flattening_max_m``, ``t_max_compression_s``, ``floor_impulse_N_s``,
-        ``events``, ``energy_J``, ``warnings``; ``as_dict()`` for JSON.
+        ``events``, ``energy_J``, ``warnings``; with a body also ``v1_m_s``,
+        ``v1_ratio``, ``v2_ratio``, ``t_liftoff_s``, ``body_left_first``,
+        ``e12_effective`` and the lumped baselines; ``as_dict()`` for JSON.
 
     Examples
     --------
@@ -106,6 +123,9 @@ def bounce(
     >>> change = report.mass_kg * (report.v2_m_s + 4.1)
     >>> abs(report.floor_impulse_N_s - change - weight) < 1e-12
     True
+    >>> whole = twoball.bounce(drop=twoball.Drop(modes=24), pair="basketball-tennis")
+    >>> round(whole.v1_ratio, 1), whole.body_left_first
+    (1.4, True)
     """
     from twoball.modal.stepping import Stepping
 
@@ -113,30 +133,35 @@ def bounce(
         "twoball.bounce",
         mesh=mesh,
         stepping=stepping,
+        body=body,
         damping=damping,
-        takes=("mesh", "stepping", "damping"),
+        takes=("mesh", "stepping", "body", "damping"),
     )
-    case = Case.preset("basketball") if case is None else case
-    if not isinstance(case, Case):
+    from twoball.modal.floor.model import resolve_body, resolve_drop, resolve_pair
+
+    if case is not None and not isinstance(case, Case):
         raise ParameterError("case", "a twoball.Case", type(case).__name__)
+    case, body, chosen = resolve_pair(case, given.body, pair)
+    case = Case.preset("basketball") if case is None else case
     drop = Drop() if drop is None else drop
     if not isinstance(drop, Drop):
         raise ParameterError("drop", "a twoball.Drop", type(drop).__name__)
     if backend not in BACKENDS:
         raise ParameterError("backend", "one of " + ", ".join(BACKENDS), backend)
-    from twoball.modal.floor.model import resolve_drop
-
+    whole = resolve_body(case, body, chosen, drop)
     given_phi_a = case.phi_a if case.phi_a_source == "given" else None
     model_in = resolve_drop(case, drop, given.damping)
     case, spectrum, law = model_in.case, model_in.spectrum, model_in.law
     warnings = list(model_in.warnings)
     step = given.stepping if given.stepping is not None else Stepping()
-    dt, t_end = _times(case, step)
+    gap = drop.gap / case.radius
+    dt, t_end = _times(case, step, gap)
     ball, resolution = _ball(case, drop, backend, given.mesh, spectrum, law, dt, t_end)
     from twoball.modal.floor.drop import DropSettings, run_drop
     from twoball.modal.floor.system import floor_system
 
-    system = floor_system(ball, case.gamma, drop.floor_restitution)
+    row = None if whole is None else _body_row(ball, whole, gap)
+    system = floor_system(ball, case.gamma, drop.floor_restitution, row)
     settings = DropSettings(case.v0 / case.scalings.velocity, case.gamma, dt, t_end)
     result = run_drop(system, settings)
     warnings += _warnings(result, ball, dt)
@@ -160,21 +185,125 @@ def bounce(
             f"the case's phi_a = {given_phi_a:g} rad is not used: the drop computes "
             "the contact angle (phi_a_max_rad)",
         )
+    extra: dict[str, Any] = {}
+    if whole is not None:
+        notes += whole.notes
+        warnings += _body_warnings(result, whole, ball)
+        extra = {"whole": whole, "baselines": _baselines(case, drop, whole, model_in, result)}
     report = BounceReport(
-        case, drop, result, backend, model, model_in.pressure, tuple(warnings), notes
+        case, drop, result, backend, model, model_in.pressure, tuple(warnings), notes, **extra
     )
     arguments = {"drop": drop.as_dict(), "backend": backend, **given.as_dict()}
+    if pair is not None:
+        arguments["pair"] = pair
     return replace(report, provenance=block(case, "twoball.bounce", arguments))
 
 
-def _times(case: Case, step: Any) -> tuple[float, float]:
-    """The time step and the window in units of 1/c, checked."""
+def _body_row(ball: Any, whole: Any, gap: float) -> Any:
+    """The body's coordinate and row (B1)-(B2) on ``ball`` (dimensionless)."""
+    from twoball.modal.floor.system import BodyOnTop
+
+    cap = ball.cap_average(whole.cap_angle)
+    b = whole.body
+    return BodyOnTop(b.mass_ratio, cap, whole.cap_angle, b.restitution, gap)
+
+
+def _baselines(case: Case, drop: Drop, whole: Any, model_in: Any, result: Any) -> dict[str, Any]:
+    """The lumped models of §1(b) for the same drop (SI), with their inputs.
+
+    A Table 1 pair takes its own inputs (Table 1's mu, e2, e12, the pressure
+    rule); any other body takes the ball's e2 as this solver gives it for the
+    ball alone (from the run itself when the ball left the floor before the body
+    touched, else from a drop of the ball alone) and Newton's e12 given.
+    """
+    from twoball.modal.lumped.baselines import baselines, body_inputs, pair_inputs
+
+    if whole.pair is not None:
+        inputs = pair_inputs(whole.pair)
+    else:
+        e2, where = _e2_alone(result)
+        mass = model_in.mass
+        inputs = body_inputs(
+            whole.body.mass_ratio * mass,
+            mass,
+            case.radius,
+            model_in.pressure,
+            whole.contact_radius,
+            e2,
+            whole.body.restitution,
+            f"e2 = {e2:.4g} of this solver's ball alone ({where}), e12 = Newton's given",
+        )
+    return baselines(inputs, case.v0, drop.gap, case.g)
+
+
+def _e2_alone(result: Any) -> tuple[float, str]:
+    """The solver's e2 of the ball alone: the run's floor release if the body came later."""
+    body = result.body
+    if body is not None and body.sequence == "independent" and result.e2 is not None:
+        return float(result.e2), "the floor release of this run, before the body touched"
+    from twoball.modal.floor.drop import run_drop
+    from twoball.modal.floor.system import floor_system
+
+    system = result.system
+    alone = floor_system(system.ball, system.gamma, float(system.problem.restitution[0]))
+    run = run_drop(alone, result.settings)
+    if run.e2 is None:
+        raise NumericalError("the ball alone did not leave the floor within the window")
+    return float(run.e2), "a drop of the ball alone at the same resolution"
+
+
+def check_field_targets(
+    export: str | os.PathLike[str] | None,
+    render: str | os.PathLike[str] | None,
+    frames: int | None,
+) -> tuple[Path | None, Path | None, int]:
+    """The files of ``twoball bounce --export/--render`` checked before any work.
+
+    Returns the export path (``.xdmf``, ``.pvd`` or one ``.vtu`` frame), the
+    picture path (``.png``, ``.gif``, ``.mp4``) and the number of instants
+    (default 40; 1 for a ``.vtu``).  Refuses a folder, a link, an existing
+    side file twoball did not write, an unknown suffix, and ``frames`` without
+    a file.
+    """
+    from twoball._common.staging import check_file
+    from twoball._files import check_path_type
+    from twoball.verify.output.fields import check_frames
+    from twoball.verify.output.render import image_kind
+    from twoball.verify.output.series import check_side_entries, series_format
+
+    count = check_frames(frames) if frames is not None else 40
+    target = picture = None
+    if export is not None:
+        check_path_type(export, "export")
+        try:
+            fmt = series_format(export, None)
+        except ParameterError as error:  # named after the API's "out"
+            raise ParameterError("export", error.valid, os.fspath(export)) from None
+        target = check_file(export, "export")
+        check_side_entries(target, fmt)
+        if fmt == "vtu":
+            if frames not in (None, 1):
+                raise ParameterError("frames", "1 for a single .vtu file", frames)
+            count = 1
+    if render is not None:
+        check_path_type(render, "render")
+        image_kind(render, "render")
+        picture = check_file(render, "render")
+    if frames is not None and target is None and picture is None:
+        raise ParameterError("frames", "given with export or render", frames)
+    return target, picture, count
+
+
+def _times(case: Case, step: Any, gap: float = 0.0) -> tuple[float, float]:
+    """The time step and the window in units of 1/c, checked (``gap``: Delta x / R)."""
     from twoball.modal.report import t_end_dimensionless
 
     step.refuse("for the drop (no eigen route: it steps in time)", "route")
     if step.scheme not in (None, "moreau-jean"):
         raise ParameterError("scheme", "moreau-jean for the drop (its only scheme)", step.scheme)
-    t_end = DEFAULT_WINDOW if step.t_end is None else t_end_dimensionless(case, step.t_end)
+    # the body needs about Delta x / ((1 + e2) |v0|) to reach the ball, eq. (2.2)
+    window = DEFAULT_WINDOW + 2.0 * gap / (case.v0 / case.scalings.velocity)
+    t_end = window if step.t_end is None else t_end_dimensionless(case, step.t_end)
     if step.dt is None:
         dt = DEFAULT_DT
     else:
@@ -257,6 +386,26 @@ def _warnings(result: Any, ball: Any, dt: float) -> list[str]:
     return out
 
 
+def _body_warnings(result: Any, whole: Any, ball: Any) -> list[str]:
+    """Warnings of the whole bounce: not apart within the window, a cap too small for the points."""
+    out = []
+    body = result.body
+    if body is not None and not body.touched:
+        out.append("the body never touched the ball within the window (raise t_end)")
+    elif body is not None and not body.left:
+        out.append(
+            "the body and the ball have not moved apart for good within the window (v1, "
+            "t_liftoff_s and e12_effective are not defined; raise t_end)"
+        )
+    spacing = (math.pi / 2.0) / ball.points
+    if whole.cap_angle < 2.0 * spacing:
+        out.append(
+            f"the contact cap's half-angle {whole.cap_angle:.3g} rad spans fewer than two "
+            f"spacings of the ball's points ({spacing:.3g} rad): refine (modes, or elements)"
+        )
+    return out
+
+
 def _pressure_area(case: Case) -> dict[str, float]:
     from twoball.modal.floor.references import pressure_area
 
@@ -288,6 +437,12 @@ class BounceReport:
         Remarks (where a value came from).
     provenance : dict, optional
         Versions, command line or call, UTC time and case.
+    whole : WholeBody, optional
+        The upper body as resolved (:func:`twoball.modal.floor.model.resolve_body`):
+        the whole two-ball bounce.
+    baselines : dict, optional
+        The lumped models of §1(b) for the same drop
+        (:func:`twoball.modal.lumped.baselines.baselines`), with their inputs.
 
     Examples
     --------
@@ -311,6 +466,12 @@ class BounceReport:
     warnings: tuple[str, ...] = ()
     notes: tuple[str, ...] = ()
     provenance: dict[str, Any] | None = field(default=None, compare=False, repr=False)
+    whole: Any = field(default=None, repr=False)
+    baselines: dict[str, Any] | None = field(default=None, repr=False)
+
+    def light(self) -> BounceReport:
+        """The report without the run's history (every number kept): a sweep's point."""
+        return replace(self, result=self.result.light())
 
     # --- units -------------------------------------------------------------------------
     @property
@@ -371,14 +532,20 @@ class BounceReport:
 
     @property
     def energy_J(self) -> dict[str, float]:
-        """The energy books [J]; see :meth:`as_dict`."""
+        """The energy books [J]; see :meth:`as_dict`.
+
+        With a body: ``initial_kinetic`` is both bodies', ``initial_kinetic_body``
+        the body's part, ``final_body_kinetic`` and ``body_gravity_gained`` its
+        books at the end, ``body_share_of_initial`` its final kinetic energy as a
+        fraction of the initial total (dimensionless).
+        """
         unit = self._energy_unit
         e = self.result.energy
         final = {
             key: e[key] * unit
             for key in ("rigid_kinetic", "membrane_kinetic", "membrane_elastic", "gas")
         }
-        return {
+        books = {
             "initial_kinetic": 0.5 * self.result.settings.v0**2 * unit,
             "final_rigid_kinetic": final["rigid_kinetic"],
             "final_membrane_kinetic": final["membrane_kinetic"],
@@ -391,19 +558,165 @@ class BounceReport:
             "vibration_after_leaving": e["vibration"] * unit,
             "balance_error": e["balance"] * unit,
         }
+        if self.result.body is not None:
+            start = e["body_kinetic_start"]
+            books["initial_kinetic"] += start * unit
+            books["initial_kinetic_body"] = start * unit
+            books["final_body_kinetic"] = e["body_kinetic"] * unit
+            books["body_gravity_gained"] = (e["body_gravity"] - e["body_gravity_start"]) * unit
+            total = 0.5 * self.result.settings.v0**2 + start
+            books["body_share_of_initial"] = e["body_kinetic"] / total
+        return books
 
     @property
     def events(self) -> list[dict[str, Any]]:
-        """Every touch and separation of the floor: kind, time [s], centre velocity [m/s]."""
+        """Every touch and separation: contact, kind, time [s], velocities [m/s].
+
+        ``velocity_m_s`` is the ball's centre; with a body, ``body_velocity_m_s``
+        is the body's and the events of both contacts are listed in time order.
+        """
+        speed = self.case.scalings.velocity
+        if self.result.body is not None:
+            return [
+                {
+                    "contact": ev.contact,
+                    "kind": ev.kind,
+                    "t_s": ev.t / self.case.wave_speed,
+                    "velocity_m_s": ev.ball_velocity * speed,
+                    "body_velocity_m_s": ev.body_velocity * speed,
+                }
+                for ev in self.result.body.events
+            ]
         return [
             {
+                "contact": "floor",
                 "kind": ev.kind,
                 "t_s": ev.t / self.case.wave_speed,
-                "velocity_m_s": ev.velocity * self.case.scalings.velocity,
+                "velocity_m_s": ev.velocity * speed,
                 "floor_points": ev.points,
             }
             for ev in self.result.events
         ]
+
+    # --- the whole bounce (a body on the ball) ----------------------------------------
+    @property
+    def has_body(self) -> bool:
+        """True for the whole two-ball bounce (an upper body on the ball)."""
+        return self.result.body is not None
+
+    def _body_value(self, name: str) -> Any:
+        body = self.result.body
+        return None if body is None else getattr(body, name)
+
+    @property
+    def v1_m_s(self) -> float | None:
+        """The body's velocity at its last separation from the ball [m/s] (None: no body)."""
+        return self._speed(self._body_value("v1"))
+
+    @property
+    def v1_ratio(self) -> float | None:
+        """``v1 / |v0|`` (Table 1's upper-body column)."""
+        v1 = self.v1_m_s
+        return None if v1 is None else v1 / self.case.v0
+
+    @property
+    def v2_ratio(self) -> float | None:
+        """``v2 / |v0|``: the centre at the ball's last release (floor or body), over ``|v0|``.
+
+        Without a body the drop's ``e2``.
+        """
+        if self.result.body is None:
+            return self.e2
+        v2 = self._body_value("v2")
+        return None if v2 is None else v2 / self.result.settings.v0
+
+    @property
+    def t_liftoff_s(self) -> float | None:
+        """The body's last separation after the first floor touch [s]."""
+        return self._time(self._body_value("t_liftoff"))
+
+    @property
+    def t_liftoff_from_max_compression_s(self) -> float | None:
+        """``t_l`` of Fig. 9: the lift-off after the ball's maximal compression [s]."""
+        t = self.t_liftoff_s
+        return None if t is None else t - self.t_max_compression_s
+
+    @property
+    def body_left_first(self) -> bool | None:
+        """True when the body left before the ball left the floor."""
+        return self._body_value("body_left_first")
+
+    @property
+    def e12_effective(self) -> float | None:
+        """Eq. (2.4) between the centres, before the body's first touch and after its last
+        separation (None when the collisions overlap)."""
+        return self._body_value("e12_effective")
+
+    @property
+    def icm_solver(self) -> dict[str, Any] | None:
+        """The ICM (2.5) with this run's own e2 and e12_effective (None when they overlap).
+
+        With the independent sequence the ball's floor bounce is the ball alone, so
+        ``e2`` is the solver's e2 of the ball alone; eqs. (2.1)-(2.5) at the
+        run's ``|v0|``, Delta x and g.
+        """
+        e12 = self.e12_effective
+        if e12 is None or self.e2 is None or self.whole is None:
+            return None
+        from twoball.modal.icm.impacts import post_impact_velocities
+
+        v0, g, gap = self.case.v0, self.case.g, self.drop.gap
+        e2 = min(max(self.e2, 0.0), 1.0)
+        # eqs. (2.1), (2.2): the floor impact at t0, the second after dt; gravity on both
+        delay = gap / ((1.0 + e2) * v0)
+        u1, u2 = -v0 - g * delay, e2 * v0 - g * delay
+        try:
+            v1, v2 = post_impact_velocities(u1, u2, self.whole.body.mass_ratio, min(e12, 1.0))
+        except ParameterError:
+            return None
+        return {
+            "e2": self.e2,
+            "e12": e12,
+            "v1_m_s": v1,
+            "v2_m_s": v2,
+            "v1_ratio": v1 / v0,
+            "v2_ratio": v2 / v0,
+            "source": "eqs. (2.1)-(2.5) with this run's e2 (the ball alone: it left the floor "
+            "before the body touched) and e12_effective",
+        }
+
+    def _body_block(self) -> dict[str, Any]:
+        """The JSON keys of the whole bounce (SI)."""
+        whole, body = self.whole, self.result.body
+        speed = self.case.scalings.velocity
+        t_floor = body.t_floor_release
+        before = None if body.before is None else [x * speed for x in body.before]
+        after = None if body.after is None else [x * speed for x in body.after]
+        return {
+            "v1_m_s": self.v1_m_s,
+            "v1_ratio": self.v1_ratio,
+            "v2_ratio": self.v2_ratio,
+            "t_liftoff_s": self.t_liftoff_s,
+            "t_liftoff_from_max_compression_s": self.t_liftoff_from_max_compression_s,
+            "t_floor_release_s": self._time(t_floor),
+            "body_left_first": self.body_left_first,
+            "sequence": body.sequence,
+            "e12_effective": self.e12_effective,
+            "e12_velocities_m_s": {"before_u1_u2": before, "after_v1_v2": after},
+            "body_contacts": body.contacts,
+            "body_impulse_N_s": body.impulse * self.mass_kg * speed,
+            "body": {
+                "mass_ratio": whole.body.mass_ratio,
+                "mass_kg": whole.body.mass_ratio * self.mass_kg,
+                "contact_radius_m": whole.contact_radius,
+                "cap_angle_rad": whole.cap_angle,
+                "restitution": whole.body.restitution,
+                "gap_m": self.drop.gap,
+                "pair": None if whole.pair is None else whole.pair.name,
+            },
+            "icm_solver": self.icm_solver,
+            "baselines": self.baselines,
+        }
 
     def comparisons(self) -> dict[str, Any]:
         """The drop beside eq. (3.7), pressure x area and the measurements (SI)."""
@@ -459,6 +772,10 @@ class BounceReport:
             "notes": list(self.notes),
             "warnings": list(self.warnings),
         }
+        if self.result.body is not None:
+            data |= self._body_block()
+            data["v2_m_s"] = self._speed(self.result.body.v2)
+            data["v2_floor_release_m_s"] = self.v2_m_s
         if self.provenance is not None:
             data["provenance"] = self.provenance
         return data
@@ -467,14 +784,29 @@ class BounceReport:
     def plot(self, out: str | os.PathLike[str], *, dpi: float | None = None) -> Path:
         """Figure of the drop: floor force, contact angle, centre height, energy books.
 
-        ``out``'s suffix chooses the format (``.png``, ``.pdf``, ``.svg``, ...).
+        With a body (the whole bounce): heights, both contact forces, both
+        velocities (with the ICM's of :attr:`icm_solver`), the energy books, every
+        event marked.  ``out``'s suffix chooses the format (``.png``, ``.pdf``, ...).
         """
         from twoball.verify.output.figures import save_figure
-        from twoball.verify.output.figures.bounce import drop_figure
+        from twoball.verify.output.figures.bounce import drop_figure, whole_figure
 
+        self._require_history()
         title = f"{self.backend}, {self.model['membrane']} membrane"
-        figure = drop_figure(self.result, self.case, self.mass_kg, title)
+        if self.has_body:
+            icm = self.icm_solver
+            lines = None if icm is None else (icm["v1_m_s"], icm["v2_m_s"])
+            figure = whole_figure(self.result, self.case, self.mass_kg, title, lines)
+        else:
+            figure = drop_figure(self.result, self.case, self.mass_kg, title)
         return save_figure(figure, out, "plot", dpi)
+
+    def _require_history(self) -> None:
+        if not self.result.has_history:
+            raise NumericalError(
+                "a light report keeps no history (a sweep point): run twoball.bounce for its "
+                "figure, fields and pictures"
+            )
 
     def _mesh_and_times(self, mesh: Any, frames: int) -> tuple[Any, Any]:
         from twoball.fem_membrane.mesh import sphere_mesh
@@ -482,6 +814,7 @@ class BounceReport:
         from twoball.verify.output.drop_fields import drop_frames
         from twoball.verify.output.fields import check_frames
 
+        self._require_history()
         spec = MeshOptions.of(mesh).require(("sphere",), files=False)
         if spec.order > 2:
             raise ParameterError("order", "1 or 2 for field files and pictures", spec.order)
@@ -555,16 +888,17 @@ class BounceReport:
 
 @dataclass(frozen=True)
 class BounceSweep:
-    """Drops over one parameter (``v0`` or ``drop-height``), in SI.
+    """Drops over one parameter (``v0``, ``drop-height``, ``gap`` or ``mass-ratio``), in SI.
 
     Attributes
     ----------
     parameter : str
-        ``v0`` or ``drop-height``.
+        ``v0``, ``drop-height``, ``gap`` or ``mass-ratio``.
     values : tuple of float
-        Its values (m/s or m).
+        Its values (m/s, m, m or none).
     reports : list of BounceReport or None
-        One drop per value (None where it failed; ``errors`` says why).
+        One run per value without its history (:meth:`BounceReport.light`;
+        None where it failed; ``errors`` says why).
     errors : list of str or None
     provenance : dict
 
@@ -594,47 +928,121 @@ class BounceSweep:
 
     def plot(self, out: str | os.PathLike[str], *, dpi: float | None = None) -> Path:
         """phi_a,max and the flattening against |v0|, with eq. (3.7), pressure x area and the
-        measurements (Table 2; 3.07 mm per m/s)."""
+        measurements (Table 2; 3.07 mm per m/s); for a gap or mass-ratio sweep, v1/|v0|,
+        v2/|v0| and the lift-off time against it with the ICM and the lumped baselines."""
         from twoball.verify.output.figures import save_figure
         from twoball.verify.output.figures.bounce import speeds_figure
 
         done = [r for r in self.reports if r is not None]
         if not done:
             raise ParameterError("values", "at least one drop that ran, to plot", None)
+        if self.parameter in ("gap", "mass-ratio"):
+            from twoball.verify.output.figures.bounce import gap_figure
+
+            pairs = [(v, r) for v, r in zip(self.values, self.reports, strict=True) if r]
+            return save_figure(gap_figure(pairs, self.parameter), out, "plot", dpi)
         rows = [(r.case.v0, r.phi_a_max_rad, r.flattening_max_m) for r in done]
         return save_figure(speeds_figure(rows, done[0].case), out, "plot", dpi)
 
 
 def bounce_sweep(
-    values: Any, case: Case | None, drop: Drop, *, stepping: Any = None, progress: Any = None
+    values: Any,
+    case: Case | None,
+    drop: Drop,
+    *,
+    body: Any = None,
+    pair: str | None = None,
+    stepping: Any = None,
+    workers: int | None = None,
+    scheduler: str | None = None,
+    progress: Any = None,
 ) -> BounceSweep:
-    """Drops over ``values`` (``{"v0": [...]}`` or ``{"drop_height": [...]}``), in SI."""
-    from twoball._common.errors import NumericalError
-    from twoball._common.provenance import block
-    from twoball.verify.sweeps.bounce import bounce_points, bounce_values
+    """Drops over ``values`` (``{"v0": [...]}``, ``drop_height``, ``gap`` or ``mass_ratio``), SI.
 
-    case = Case.preset("basketball") if case is None else case
-    if not isinstance(case, Case):
+    The points run in this process (``workers`` 1 or None), on a local process
+    pool or on a Dask scheduler (:class:`~twoball.verify.sweeps.parallel.Runner`):
+    the numbers do not depend on where.  Each point is kept without its history
+    (:meth:`BounceReport.light`).
+    """
+    from twoball._common.provenance import block
+    from twoball.modal.floor.model import resolve_pair
+    from twoball.verify.sweeps.bounce import bounce_points, bounce_values
+    from twoball.verify.sweeps.parallel import Runner, check_workers
+
+    if case is not None and not isinstance(case, Case):
         raise ParameterError("case", "a twoball.Case", type(case).__name__)
     if not isinstance(drop, Drop):
         raise ParameterError("drop", "a twoball.Drop", type(drop).__name__)
     if not hasattr(values, "items") or not values:
-        raise ParameterError("values", "a mapping of v0 or drop_height to values", values)
+        raise ParameterError(
+            "values", "a mapping of v0, drop_height, gap or mass_ratio to values", values
+        )
     parameter, array = bounce_values(list(values), list(values.values()))
-    points = bounce_points(case, drop, parameter, array)
+    if pair is not None and parameter == "mass-ratio":
+        raise ParameterError("pair", "left out when the mass ratio is swept (it fixes mu)", pair)
+    if parameter == "gap" and body is None and pair is None:
+        raise ParameterError("gap", "swept only with an upper body (body or pair)", None)
+    if scheduler and workers is not None:
+        raise ParameterError("workers", "left out with scheduler (the cluster decides)", workers)
+    workers = 1 if workers is None and not scheduler else workers
+    if workers is not None:
+        check_workers(workers)
+    base, _, _ = resolve_pair(case, None, pair) if pair is not None else (case, None, None)
+    base = Case.preset("basketball") if base is None else base
+    points = [(*point, pair) for point in bounce_points(base, drop, parameter, array, body)]
+    task = BounceTask(stepping=stepping)
     reports: list[Any] = []
     errors: list[str | None] = []
-    for k, (point_case, point_drop) in enumerate(points, start=1):
-        try:
-            reports.append(bounce(point_case, point_drop, stepping=stepping))
-            errors.append(None)
-        except (ParameterError, NumericalError) as error:
-            reports.append(None)
-            errors.append(str(error))
-        if progress is not None:
-            progress(k)
-    arguments = {"values": {parameter: array}, "drop": drop.as_dict()}
+    with Runner(workers=workers, scheduler=scheduler) as runner:
+        outcomes = runner.map(task, points, progress=progress, min_parallel=2, chunk=1)
+        where = runner.describe()
+    for outcome in outcomes:
+        reports.append(outcome.value if outcome.ok else None)
+        errors.append(None if outcome.ok else _short(outcome.error))
+    arguments: dict[str, Any] = {"values": {parameter: array}, "drop": drop.as_dict()}
+    if body is not None:
+        arguments["body"] = body.as_dict()
+    if pair is not None:
+        arguments["pair"] = pair
     if stepping is not None:
         arguments["stepping"] = stepping.as_dict()
-    provenance = block(case, "twoball.sweep", arguments)
+    arguments["runner"] = where
+    provenance = block(base, "twoball.sweep", arguments)
     return BounceSweep(parameter, tuple(float(v) for v in array), reports, errors, provenance)
+
+
+def _short(error: str | None) -> str | None:
+    """``ParameterError: gap must be ...`` -> the message (the type only for other errors)."""
+    if error is None:
+        return None
+    kind, _, text = error.partition(": ")
+    return text if kind in ("ParameterError", "NumericalError") else error
+
+
+@dataclass(frozen=True)
+class BounceTask:
+    """One run of :func:`bounce`, picklable for the process pool or Dask.
+
+    Called with ``(case, drop, body, pair)``, it runs :func:`bounce` with the
+    task's backend, mesh, stepping and damping and returns the report without
+    its history (:meth:`BounceReport.light`, about 0.1 MB) or provenance.
+    """
+
+    backend: str = "legendre"
+    mesh: Any = None
+    stepping: Any = None
+    damping: Any = None
+
+    def __call__(self, item: tuple[Any, Any, Any, Any]) -> BounceReport:
+        case, drop, body, pair = item
+        report = bounce(
+            case,
+            drop,
+            body=body,
+            pair=pair,
+            backend=self.backend,
+            mesh=self.mesh,
+            stepping=self.stepping,
+            damping=self.damping,
+        )
+        return replace(report.light(), provenance=None)

@@ -32,6 +32,8 @@ __getattr__, __dir__ = attach(
         # the upper body
         "ENERGY_OPTIONS": "twoball.modal.contact.body",
         "MAX_MASS_RATIO": "twoball.modal.contact.body",
+        "PAIRS": "twoball.modal.pairs",
+        "pair": "twoball.modal.pairs",
         # the verbs
         "BACKENDS": "twoball._liftoff",
         "FIELD_BACKENDS": ("twoball.verify.output.fields", "BACKENDS"),

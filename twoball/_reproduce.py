@@ -124,6 +124,9 @@ def reproduce(
         workers = check_workers(workers)
     out = DEFAULT_OUT if out is None else out
     check_output(out)  # fail before any work
+    from twoball._bounce import BounceTask
+
     with Runner(workers, scheduler) as runner:
-        target, sections = run_reproduction(out, names, runner, progress, command)
+        tasks = {"bounce": BounceTask()}
+        target, sections = run_reproduction(out, names, runner, progress, command, tasks)
     return Reproduction(target, sections)

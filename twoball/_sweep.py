@@ -120,6 +120,7 @@ def sweep(
     scheduler: str | None = None,
     progress: Callable[[int], None] | None = None,
     drop: Any = None,
+    pair: str | None = None,
     **deprecated: Any,
 ) -> SweepResult | Any:
     """Closed-form lift-off over one parameter or a grid of two (Fig. 11(b), Fig. 12).
@@ -149,9 +150,13 @@ def sweep(
     progress : callable, optional
         Called with the number of points done (e.g. :meth:`twoball.Reporter.update`).
     drop : Drop, optional
-        Sweep the drop on the floor instead (:func:`twoball.bounce` at every
-        point, with these options): one parameter, ``v0`` or ``drop_height``;
-        returns a :class:`~twoball.BounceSweep`.
+        Sweep the drop on the floor, or the whole bounce with ``body`` or
+        ``pair``, instead (:func:`twoball.bounce` at every point, with these
+        options): one parameter, ``v0``, ``drop_height``, ``gap`` or
+        ``mass_ratio``; on ``workers`` processes or the ``scheduler`` like
+        every sweep; returns a :class:`~twoball.BounceSweep`.
+    pair : str, optional
+        With ``drop``: a Table 1 pair (:func:`twoball.bounce`'s ``pair``).
     **deprecated
         ``t_end`` and ``contact_radius`` of version 0.2, with a :class:`DeprecationWarning`.
 
@@ -169,12 +174,24 @@ def sweep(
     if drop is not None:
         from twoball._bounce import bounce_sweep
 
-        if deprecated or body is not None or workers is not None or scheduler is not None:
-            given = ("body", body), ("workers", workers), ("scheduler", scheduler)
-            name, value = next(((n, v) for n, v in given if v is not None), (None, None))
-            name = name or next(iter(deprecated))
-            raise ParameterError(name, "left out in a sweep of the drop", value)
-        return bounce_sweep(values, case, drop, stepping=stepping, progress=progress)
+        if deprecated:
+            raise ParameterError(next(iter(deprecated)), "left out in a sweep of the drop", None)
+        if sigma != "lanczos" or recontact != "window":
+            name, value = ("sigma", sigma) if sigma != "lanczos" else ("recontact", recontact)
+            raise ParameterError(name, "left out in a sweep of the drop (no filter)", value)
+        return bounce_sweep(
+            values,
+            case,
+            drop,
+            body=body,
+            pair=pair,
+            stepping=stepping,
+            workers=workers,
+            scheduler=scheduler,
+            progress=progress,
+        )
+    if pair is not None:
+        raise ParameterError("pair", "given only with drop (a sweep of the whole bounce)", pair)
     import numpy as np
 
     from twoball._common.progress import check_progress

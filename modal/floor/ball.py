@@ -31,6 +31,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 from numpy.polynomial.legendre import legvander
+from twoball.modal.contact.caps import legendre_cap_averages
 from twoball.modal.damping import ModalRatio, Rayleigh
 from twoball.modal.stiffness import Stiffness
 
@@ -103,6 +104,10 @@ class ModalBall:
         ``sampler(phi) -> (len(phi), K)``: every mode at any polar angles (for
         fields and pictures); the Legendre polynomials, or the finite-element
         interpolant.
+    averager : callable, optional
+        ``averager(theta) -> (K,)``: every mode averaged over the polar cap of
+        half-angle theta around the north pole, exactly (where an upper body
+        touches; :meth:`cap_average`).
     """
 
     masses: np.ndarray
@@ -115,6 +120,7 @@ class ModalBall:
     laplace: np.ndarray
     label: str = ""
     sampler: Callable[[np.ndarray], np.ndarray] | None = field(default=None, repr=False)
+    averager: Callable[[float], np.ndarray] | None = field(default=None, repr=False)
 
     def __post_init__(self) -> None:
         k = self.masses.size
@@ -148,6 +154,19 @@ class ModalBall:
         if self.sampler is None:
             raise NumericalError(f"ModalBall {self.label!r}: no sampler of the modes")
         return self.sampler(np.asarray(phi, dtype=float).reshape(-1))
+
+    def cap_average(self, theta: float) -> np.ndarray:
+        """``b_k``: every mode averaged over the cap ``phi <= theta`` [rad] (the pole: theta -> 0).
+
+        The cap's area element is ``dS = d(cos phi) d alpha``, so the average of an
+        axisymmetric function is its plain mean over ``x = cos(phi)`` in ``[cos
+        theta, 1]`` (:mod:`twoball.modal.contact.caps`).
+        """
+        if self.averager is None:
+            raise NumericalError(f"ModalBall {self.label!r}: no cap averages of the modes")
+        if not (math.isfinite(theta) and 0.0 < theta < math.pi / 2):
+            raise ParameterError("contact_radius", "a cap of half-angle in (0, pi/2)", theta)
+        return np.asarray(self.averager(float(theta)), dtype=float)
 
     def amplitude_bound(self) -> np.ndarray:
         """``b_i``: ``|u(phi_i)| <= b_i sqrt(2 E)`` for a membrane energy E (inf if unstable).
@@ -223,4 +242,5 @@ def legendre_ball(
         laplace=laplace,
         label=f"legendre N = {modes}",
         sampler=lambda angles: legvander(np.cos(angles), modes)[:, n],
+        averager=lambda theta: legendre_cap_averages(theta, modes)[n],
     )

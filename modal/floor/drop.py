@@ -26,7 +26,8 @@ from __future__ import annotations
 
 import math
 import time
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
+from typing import TYPE_CHECKING
 
 import numpy as np
 from twoball.modal.floor.measure import (
@@ -38,6 +39,9 @@ from twoball.modal.floor.measure import (
 )
 from twoball.modal.floor.system import FloorSystem
 from twoball.modal.nonsmooth import MoreauJean, Trajectory
+
+if TYPE_CHECKING:
+    from twoball.modal.floor.body import BodyResult
 
 from twoball._common.errors import NumericalError, ParameterError, real_number
 
@@ -149,6 +153,10 @@ class DropResult:
     system : FloorSystem
     wall_s : float
         Wall time of the run [s].
+    body : BodyResult, optional
+        The upper body's measures (:mod:`twoball.modal.floor.body`); then
+        ``v2``/``e2`` are the centre's velocity at its last floor release and
+        ``impulse_balance`` is the whole system's momentum books.
     """
 
     settings: DropSettings
@@ -173,6 +181,7 @@ class DropResult:
     trajectory: Trajectory = field(repr=False)
     system: FloorSystem = field(repr=False)
     wall_s: float = 0.0
+    body: BodyResult | None = None
 
     @property
     def steps(self) -> int:
@@ -180,18 +189,62 @@ class DropResult:
         return int(self.trajectory.t.size - 1)
 
     @property
+    def has_history(self) -> bool:
+        """The states and impulses of every step are kept (False: :meth:`light`)."""
+        return self.trajectory.q is not None
+
+    def light(self) -> DropResult:
+        """The same measures without the history of states and impulses (for sweeps).
+
+        Every number of the result is kept; the force histories, figures and
+        fields need the history and refuse a light result.
+        """
+        tr = self.trajectory
+        empty = np.zeros((tr.impulse.shape[0], 0))
+        stripped = replace(tr, q=None, v=None, impulse=empty, impact_impulse=empty)
+        # the modes' samplers are closures: left out, so that the result pickles
+        ball = replace(self.system.ball, sampler=None, averager=None)
+        return replace(
+            self,
+            trajectory=stripped,
+            edge_t=self.edge_t[:0],
+            edge=self.edge[:0],
+            system=replace(self.system, ball=ball),
+        )
+
+    def _history(self) -> Trajectory:
+        if not self.has_history:
+            raise NumericalError(
+                "a light drop result keeps no history (a sweep point): run it alone for "
+                "its forces, figure and fields"
+            )
+        return self.trajectory
+
+    @property
     def force(self) -> tuple[np.ndarray, np.ndarray]:
         """Mid-step times and the floor force of each step (step impulse / step length)."""
-        tr = self.trajectory
+        tr = self._history()
         h = np.diff(tr.t)
-        step = (tr.impulse - tr.impact_impulse).sum(axis=1)
+        rows = self.system.floor
+        step = (tr.impulse[:, rows] - tr.impact_impulse[:, rows]).sum(axis=1)
+        return 0.5 * (tr.t[1:] + tr.t[:-1]), step / h
+
+    @property
+    def body_force(self) -> tuple[np.ndarray, np.ndarray]:
+        """Mid-step times and the body's contact force of each step (zeros without a body)."""
+        tr = self._history()
+        h = np.diff(tr.t)
+        if self.system.body is None:
+            return 0.5 * (tr.t[1:] + tr.t[:-1]), np.zeros(h.size)
+        row = self.system.body_row
+        step = tr.impulse[:, row] - tr.impact_impulse[:, row]
         return 0.5 * (tr.t[1:] + tr.t[:-1]), step / h
 
     @property
     def impacts(self) -> tuple[np.ndarray, np.ndarray]:
-        """Times of the impacts and their total impulses (Newton's law at touches)."""
-        tr = self.trajectory
-        total = tr.impact_impulse.sum(axis=1)
+        """Times of the floor's impacts and their total impulses (Newton's law at touches)."""
+        tr = self._history()
+        total = tr.impact_impulse[:, self.system.floor].sum(axis=1)
         k = np.flatnonzero(total > 0.0)
         return tr.t[k], total[k]
 
@@ -200,6 +253,16 @@ def _membrane_energy(system: FloorSystem, q: np.ndarray, v: np.ndarray) -> float
     b = system.ball
     a, da = q[system.membrane], v[system.membrane]
     return 0.5 * float(b.masses @ (da * da + b.omega_squared * a * a))
+
+
+def _cap_bound(system: FloorSystem) -> float:
+    """``|<u>_cap| <= b sqrt(2 E)``: ``b^2 = sum_k b_k^2 / (m_k omega_k^2)`` (inf if unstable)."""
+    if system.body is None:
+        return math.nan
+    ball = system.ball
+    if not ball.stable:
+        return math.inf
+    return math.sqrt(float((system.body.cap**2) @ (1.0 / (ball.masses * ball.omega_squared))))
 
 
 def run_drop(system: FloorSystem, settings: DropSettings, **core: object) -> DropResult:
@@ -218,53 +281,105 @@ def run_drop(system: FloorSystem, settings: DropSettings, **core: object) -> Dro
     ball = system.ball
     x = np.cos(ball.phi)
     bound = np.abs(x) * ball.amplitude_bound()
+    floor = system.floor
+    body = system.body
     stepper = MoreauJean(system.problem, settings.dt, **core)
     q0, v0 = system.falling(settings.v0)
-    flags = {"stop": "window", "rising": False}
+    flags = {"stop": "window", "rising": False, "off": False}
+    top_bound = _cap_bound(system)
 
-    def stop(state, record) -> bool:
-        if record.impact_impulse.any() or record.step_impulse.any():
-            flags["rising"] = False
+    def floor_clear(state, record) -> bool:
+        """The ball is off the floor and cannot come back while its centre rises."""
+        if record.impact_impulse[floor].any() or record.step_impulse[floor].any():
+            flags["rising"] = flags["off"] = False
             return False
         rising = state.v[system.centre] > 0.0
         if flags["rising"] and not rising:
             flags["stop"] = "apex"
+            flags["off"] = True
             return True
         flags["rising"] = rising
         if not rising or not np.isfinite(bound).all():
             return False
         reach = math.sqrt(2.0 * _membrane_energy(system, state.q, state.v))
-        if np.min(system.floor_gaps(state.q) - reach * bound) > 0.0:
+        # a point's gap is Z + (1 + u_i) x_i with |u_i| <= b_i sqrt(2 E) from now on,
+        # and Z only grows while the centre rises: Z + x_i - |x_i| b_i sqrt(2 E) > 0
+        lowest = state.q[system.centre] + x - reach * bound
+        if np.min(lowest) > 0.0:
             flags["stop"] = "flight"
+            flags["off"] = True
             return True
+        return False
+
+    def body_clear(state, record) -> bool:
+        """The body moves away from the ball's centre beyond what the membrane can reach.
+
+        In free flight both fall alike, so ``s - Z`` grows linearly; the cap's mean
+        displacement is at most ``b sqrt(2 E)`` (Cauchy-Schwarz, E the membrane's
+        energy, which cannot grow in flight).
+        """
+        row = system.body_row
+        if record.impact_impulse[row] > 0.0 or record.step_impulse[row] > 0.0:
+            return False
+        k = system.body_coordinate
+        if state.v[k] - state.v[system.centre] <= 0.0 or not math.isfinite(top_bound):
+            return False
+        reach = math.sqrt(2.0 * _membrane_energy(system, state.q, state.v))
+        return state.q[k] - state.q[system.centre] - 1.0 - reach * top_bound > 0.0
+
+    def stop(state, record) -> bool:
+        clear = floor_clear(state, record)
+        if body is None or not clear:
+            return clear
+        if body_clear(state, record):
+            return True
+        flags["stop"] = "window"  # the body may still come back: go on
         return False
 
     start = time.perf_counter()
     tr = stepper.run(q0, v0, settings.t_end, stop=stop, keep_states=True)
     wall = time.perf_counter() - start
-    return _measure(system, settings, tr, flags["stop"], wall)
+    return _measure(system, settings, tr, flags["stop"], wall, bool(flags["off"]))
 
 
 def _measure(
-    system: FloorSystem, settings: DropSettings, tr: Trajectory, stop: str, wall: float
+    system: FloorSystem,
+    settings: DropSettings,
+    tr: Trajectory,
+    stop: str,
+    wall: float,
+    off: bool = False,
 ) -> DropResult:
     gamma, v0 = settings.gamma, settings.v0
-    impulses = tr.impulse.sum(axis=1)
+    impulses = tr.impulse[:, system.floor].sum(axis=1)
     intervals = contact_intervals(tr.t, impulses, settings.dt)
     if not intervals:
         raise NumericalError("the ball never touched the floor")
     events: list[FloorEvent] = []
     for iv in intervals:
-        struck = int(np.count_nonzero(tr.impact_impulse[iv.first] > 0.0))
+        struck = int(np.count_nonzero(tr.impact_impulse[iv.first, system.floor] > 0.0))
         events.append(FloorEvent("touch", iv.start, float(tr.v[iv.first, 0]), struck))
-        carrying = int(np.count_nonzero(tr.impulse[iv.last] > 0.0))
+        carrying = int(np.count_nonzero(tr.impulse[iv.last, system.floor] > 0.0))
         speed = float(tr.v[iv.last + 1, 0] + gamma * (tr.t[iv.last + 1] - iv.end))
         events.append(FloorEvent("separation", iv.end, speed, carrying))
     point_events = len(tr.events)
-    left = stop in ("flight", "apex")
+    # the ball has left the floor for good (with a body, the run may go on for it)
+    left = stop in ("flight", "apex") or off
+    apart = stop in ("flight", "apex")
     last = intervals[-1]
     total = float(impulses.sum())
-    if left:
+    body = None
+    if system.body is not None:
+        from twoball.modal.floor.body import measure_body, momentum_balance
+
+        body = measure_body(system, tr, intervals, apart, settings.dt)
+    if left and system.body is not None:
+        contact_time = last.end - intervals[0].start
+        # the centre at its floor release: free flight from the next step end back to it
+        v2 = float(tr.v[last.last + 1, 0] + gamma * (tr.t[last.last + 1] - last.end))
+        e2 = v2 / v0
+        balance = momentum_balance(system, tr)
+    elif left:
         contact_time = last.end - intervals[0].start
         v2 = float(tr.v_final[0] + gamma * (tr.t[-1] - last.end))
         e2 = v2 / v0
@@ -283,14 +398,24 @@ def _measure(
     flattening, t_compression = hermite_peak(tr.t, 1.0 - tr.q[:, 0], -tr.v[:, 0])
     parts = system.energies(tr.q[-1], tr.v[-1])
     final = {name: float(value[0]) for name, value in parts.items()}
+    initial = 0.5 * v0 * v0 + gamma * float(tr.q[0, 0])
+    body_start = {}
+    if system.body is not None:
+        start = system.energies(tr.q[0], tr.v[0])
+        initial += float(start["body_kinetic"][0] + start["body_gravity"][0])
+        body_start = {
+            "body_kinetic_start": float(start["body_kinetic"][0]),
+            "body_gravity_start": float(start["body_gravity"][0]),
+        }
     energy = {
-        "initial": 0.5 * v0 * v0 + gamma * float(tr.q[0, 0]),
+        "initial": initial,
         **final,
         "damped": float(tr.damping_work[-1]),
         "impacts": float(tr.impact_work[-1]),
         "contact": float(tr.contact_work[-1]),
         "vibration": final["membrane_kinetic"] + final["membrane_elastic"] + final["gas"],
         "balance": float(np.max(np.abs(tr.balance))),
+        **body_start,
     }
     return DropResult(
         settings=settings,
@@ -315,4 +440,5 @@ def _measure(
         trajectory=tr,
         system=system,
         wall_s=wall,
+        body=body,
     )

@@ -165,3 +165,97 @@ def _law(damping: Any) -> ModalRatio | Rayleigh | None:
     if damping is None or isinstance(damping, (ModalRatio, Rayleigh)):
         return damping
     raise ParameterError("damping", "a twoball.ModalRatio or twoball.Rayleigh", damping)
+
+
+@dataclass(frozen=True)
+class WholeBody:
+    """The upper body of a whole bounce, resolved (SI).
+
+    Attributes
+    ----------
+    body : Body
+        Mass ratio, contact radius (None: R / 10), Newton's e12.
+    pair : Pair or None
+        The Table 1 pair it comes from.
+    contact_radius : float
+        Cap radius a [m] on the case's ball.
+    cap_angle : float
+        ``arcsin(a / R)`` [rad].
+    notes : tuple of str
+    """
+
+    body: Any
+    pair: Any
+    contact_radius: float
+    cap_angle: float
+    notes: tuple[str, ...] = ()
+
+
+def resolve_pair(case: Case | None, body: Any, pair: str | None) -> tuple[Case | None, Any, Any]:
+    """A Table 1 pair as the case's lower ball and the body (``(case, body, pair)``).
+
+    The pair fixes the lower ball (its preset), mu, e12 and the contact radius
+    (:attr:`~twoball.modal.pairs.Pair.cap_radius`); a body given with it, or a
+    case of another preset, is refused.  Without a pair, ``case`` and ``body``
+    pass through.
+    """
+    if pair is None:
+        return case, body, None
+    from twoball.modal.contact.body import Body
+    from twoball.modal.pairs import pair as find_pair
+
+    chosen = find_pair(pair)
+    if body is not None:
+        raise ParameterError(
+            "body", "left out with pair (the pair fixes mu, e12 and the contact radius)", body
+        )
+    if case is None:
+        case = Case.preset(chosen.lower)
+    elif case.preset_name != chosen.lower:
+        valid = f"a case of the {chosen.lower} preset (the pair's lower ball)"
+        raise ParameterError("case", valid, case.preset_name)
+    body = Body(chosen.mu, contact_radius=chosen.cap_radius, restitution=chosen.e12)
+    return case, body, chosen
+
+
+def resolve_body(case: Case, body: Any, pair: Any, drop: Drop) -> WholeBody | None:
+    """Check an upper body against the whole bounce and the case's ball.
+
+    Raises
+    ------
+    ParameterError
+        A gap without a body, a massless body (the lift-off's criteria are the
+        massless limit: ``twoball liftoff``), ``energy="both"`` (both bodies fall
+        at ``|v0|`` here) or a contact radius outside (0, R).
+    """
+    if body is None:
+        if drop.gap > 0.0:
+            raise ParameterError("gap", "left out without an upper body (mass_ratio)", drop.gap)
+        return None
+    from twoball.modal.contact.body import MAX_MASS_RATIO, Body
+    from twoball.modal.contact.caps import cap_angle
+
+    if not isinstance(body, Body):
+        raise ParameterError("body", "a twoball.Body", type(body).__name__)
+    if body.mass_ratio <= 0.0:
+        raise ParameterError(
+            "mass_ratio",
+            f"a number in (0, {MAX_MASS_RATIO:g}] for the whole bounce "
+            "(the massless body: twoball liftoff)",
+            body.mass_ratio,
+        )
+    if body.energy != "ball":
+        raise ParameterError(
+            "energy", "left out for the whole bounce (both bodies fall at |v0|)", body.energy
+        )
+    radius = body.radius_m(case.radius)
+    notes = []
+    if body.contact_radius is None:
+        notes.append(f"contact radius a = R/10 = {radius:g} m (the default)")
+    if pair is not None:
+        notes.append(
+            f"pair {pair.name} (Table 1 row {pair.row}): mu = {pair.mu:g}, e12 = {pair.e12:g} "
+            f"(Newton's coefficient at the body's impacts), a = {radius * 1e3:.4g} mm "
+            + ("(the flat face's half width)" if pair.body.face_radius is None else "(R*)")
+        )
+    return WholeBody(body, pair, radius, cap_angle(radius, case.radius), tuple(notes))

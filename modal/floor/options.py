@@ -19,6 +19,8 @@ __all__ = ["DEFAULT_MODES", "GAS_LAWS", "Drop"]
 DEFAULT_MODES = 192
 MODES_RANGE = (8, 2000)
 GAS_LAWS: tuple[str, ...] = ("none", "isothermal", "adiabatic")
+#: Largest gap Delta x [m] between the body and the ball's top at the floor impact.
+GAP_MAX = 10.0
 
 
 @dataclass(frozen=True)
@@ -49,12 +51,19 @@ class Drop:
         operator of the lift-off verbs).  ``paper`` takes the paper's n(n + 1)
         for degrees n != 1 (its spring on degree 1 has nothing to act on: the
         translation is the centre's).
+    gap : float
+        The whole bounce (with an upper body): the gap Delta x [m] in [0, 10]
+        between the body's lowest point and the ball's top when the ball first
+        touches the floor, both falling at ``|v0|`` (the paper's Delta x, §2;
+        default 0: touching).  A drop without a body refuses a gap > 0.
 
     Examples
     --------
     >>> import twoball
     >>> twoball.Drop(drop_height=0.857).as_dict()["drop_height"]
     0.857
+    >>> twoball.Drop(gap=0.05).gap
+    0.05
     >>> twoball.Drop(drop_height=-1.0)  # doctest: +ELLIPSIS
     Traceback (most recent call last):
     ...
@@ -66,12 +75,14 @@ class Drop:
     floor_restitution: float = 0.0
     modes: int | None = None
     membrane: Any = None
+    gap: float = 0.0
 
     VALID = {  # noqa: RUF012 -- a class constant, not a field
         "drop_height": "a height > 0 [m] of the lowest point above the floor",
         "gas": "one of " + ", ".join(GAS_LAWS),
         "floor_restitution": "in [0, 1]",
         "modes": f"an integer in [{MODES_RANGE[0]}, {MODES_RANGE[1]}]",
+        "gap": f"a gap in [0, {GAP_MAX:g}] [m] between the body and the ball's top",
     }
 
     def __post_init__(self) -> None:
@@ -96,6 +107,10 @@ class Drop:
             ):
                 raise ParameterError("modes", self.VALID["modes"], self.modes)
             object.__setattr__(self, "modes", int(self.modes))
+        gap = real_number("gap", self.gap, self.VALID["gap"])
+        if not (math.isfinite(gap) and 0.0 <= gap <= GAP_MAX):
+            raise ParameterError("gap", self.VALID["gap"], self.gap)
+        object.__setattr__(self, "gap", gap)
         if self.membrane is not None:
             from twoball.modal.membrane import Membrane
 

@@ -25,6 +25,7 @@ The degree-1 content of F (``a_1 P_1``) is where the two membranes differ:
 from __future__ import annotations
 
 from dataclasses import dataclass
+from typing import Any
 
 import numpy as np
 from twoball.modal.damping import ModalRatio, Rayleigh
@@ -35,7 +36,7 @@ from twoball.modal.liftoff import DEFAULT_T_END, LiftoffResult, SampledPoleMotio
 from twoball.modal.nonsmooth import ContactProblem, MoreauJean
 from twoball.modal.stiffness import Stiffness
 
-__all__ = ["RestitutionRun", "restitution_only"]
+__all__ = ["BodyLiftoff", "RestitutionRun", "body_liftoff", "restitution_only"]
 
 
 @dataclass(frozen=True, eq=False)
@@ -109,3 +110,83 @@ def restitution_only(
         tr.t, tr.q @ top, tr.v @ top, acceleration @ top, interpolation="splines"
     )
     return RestitutionRun(find_liftoff(motion, gamma, t_end=t_end, horizon="window"), motion)
+
+
+@dataclass(frozen=True, eq=False)
+class BodyLiftoff:
+    """A rigid body on the special case's membrane: its last separation (dimensionless).
+
+    Attributes
+    ----------
+    lifted : bool
+        The body separated within the window.
+    t_liftoff : float or None
+        Its last separation in the window (units 1/c).
+    v1 : float or None
+        Its velocity there (units R c).
+    contacts : int
+        Separate contacts in the window.
+    system : FloorSystem
+    trajectory : Trajectory
+    """
+
+    lifted: bool
+    t_liftoff: float | None
+    v1: float | None
+    contacts: int
+    system: Any
+    trajectory: Any
+
+
+def body_liftoff(
+    spectrum: Stiffness,
+    law: ModalRatio | Rayleigh,
+    modes: int,
+    phi_a: float,
+    gamma: float,
+    dt: float,
+    body: Any,
+    *,
+    t_end: float = DEFAULT_T_END,
+    anchored: bool = True,
+    sigma: FilterKind = "lanczos",
+) -> BodyLiftoff:
+    """The whole bounce's body row on the paper's special case: (3.10) at rest, no floor.
+
+    The membrane starts at ``u = F(phi)`` (eq. (3.10), filtered as the closed form
+    filters it) at rest, the body (:class:`~twoball.modal.floor.system.BodyOnTop`,
+    its ``gap`` ignored) resting on the cap at rest, its weight on it alone; the
+    floor rows are removed (``floor_system(..., floor=False)``) and the contact
+    core runs to the window.  ``anchored=True`` keeps degree 1 as the membrane's
+    own mode about a centre that does not move: the finite-mass model of
+    :mod:`twoball.modal.contact` (``twoball.liftoff(case, body=Body(mu))``),
+    reproduced to O(dt^2).
+    """
+    from dataclasses import replace
+
+    from twoball.modal.floor.measure import contact_intervals
+    from twoball.modal.floor.system import floor_system
+
+    ball = legendre_ball(modes, spectrum, law, anchored=anchored)
+    cap = ball.cap_average(body.cap_angle)
+    row = replace(body, cap=cap, gap=0.0)
+    system = floor_system(ball, gamma, body=row, floor=False, centre=not anchored)
+    n = np.arange(modes + 1)
+    a = legendre_coefficients(phi_a, modes) * SpectralFilter(sigma, modes)(legendre_frequency(n))
+    q0 = np.zeros(system.problem.dofs)
+    if anchored:
+        q0[system.membrane] = a
+    else:  # Z carries degree 1
+        q0[system.centre] = a[1]
+        q0[system.membrane] = a[[0, *range(2, modes + 1)]]
+    q0[system.body_coordinate] = (
+        q0[system.centre] * (not anchored) + 1.0 + cap @ q0[system.membrane]
+    )
+    tr = MoreauJean(system.problem, dt).run(q0, np.zeros(q0.size), t_end)
+    intervals = contact_intervals(tr.t, tr.impulse[:, system.body_row], dt)
+    if not intervals or intervals[-1].last + 1 >= tr.t.size - 1:
+        return BodyLiftoff(False, None, None, len(intervals), system, tr)
+    last = intervals[-1]
+    k = last.last + 1
+    v1 = float(tr.v[k, system.body_coordinate] + gamma * (tr.t[k] - last.end))
+    return BodyLiftoff(True, last.end, v1, len(intervals), system, tr)

@@ -19,20 +19,72 @@ on u, ``-gamma cos(phi)``, is pure degree 1).  At an impact Newton's law (N3)
 with restitution e holds at each floor point (default e = 0: the floor stops
 the arriving membrane).
 
-An upper body plugs in as one more coordinate (its height s, mass mu) and one
-more row (the gap ``s - Z - (1 + u(0))`` above the ball's top, restitution
-e12): :func:`floor_system` keeps the layout in :class:`FloorSystem`.
+The upper body (:class:`BodyOnTop`) is one more coordinate, the height s of its
+lowest point above the floor (mass mu = m1 / m2, its weight ``-mu gamma``), and
+one more row, the gap between it and the ball's top averaged over the contact
+cap of half-angle theta::
+
+    mu s'' = -mu gamma - Lambda                                           (B1)
+    g_B = s - Z - 1 - sum_k b_k a_k >= 0,  Lambda >= 0,  Lambda g_B = 0   (B2)
+
+with ``b_k`` mode k averaged over the cap (:meth:`ModalBall.cap_average`), and
+Newton's law with restitution e12 at its impacts.  (B2) is the gap of the
+finite-mass contact of :mod:`twoball.modal.contact` (eq. (C3)) with the centre
+free: the cap sits at ``Z + 1 + <u>_cap`` to first order in the slope, as there.
+:func:`floor_system` keeps the layout in :class:`FloorSystem`: q = (Z, a_1, ...,
+a_K[, s]), the floor rows first, then the body's.
 """
 
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass
 
 import numpy as np
 from twoball.modal.floor.ball import ModalBall
 from twoball.modal.nonsmooth import ContactProblem
 
-__all__ = ["FloorSystem", "floor_system"]
+from twoball._common.errors import NumericalError, ParameterError
+
+__all__ = ["BodyOnTop", "FloorSystem", "floor_system"]
+
+
+@dataclass(frozen=True, eq=False)
+class BodyOnTop:
+    """A rigid upper body resting on (or falling onto) the ball's top (dimensionless).
+
+    Attributes
+    ----------
+    mass : float
+        mu = m1 / m2 > 0.
+    cap : ndarray, shape (K,)
+        ``b_k``: each mode of the ball averaged over the contact cap.
+    cap_angle : float
+        Half-angle theta of the cap [rad] (``arcsin(a / R)``).
+    restitution : float
+        Newton's e12 in [0, 1] at the body's impacts.
+    gap : float
+        Height of the body's lowest point above the ball's top at the first
+        floor touch, ``Delta x / R`` >= 0.
+    weight : bool
+        The body feels gravity (default True; False for the paper's special case
+        in which only the massless criteria see g).
+    """
+
+    mass: float
+    cap: np.ndarray
+    cap_angle: float
+    restitution: float = 0.0
+    gap: float = 0.0
+    weight: bool = True
+
+    def __post_init__(self) -> None:
+        if not (math.isfinite(self.mass) and self.mass > 0.0):
+            raise ParameterError("mass_ratio", "a number > 0 for a body on the ball", self.mass)
+        if not (math.isfinite(self.gap) and self.gap >= 0.0):
+            raise ParameterError("gap", "a finite number >= 0", self.gap)
+        if not np.all(np.isfinite(self.cap)):
+            raise NumericalError("BodyOnTop: the cap averages are not finite")
 
 
 @dataclass(frozen=True, eq=False)
@@ -51,9 +103,26 @@ class FloorSystem:
     ball: ModalBall
     problem: ContactProblem
     gamma: float
+    body: BodyOnTop | None = None
+    floor_rows: int | None = None
 
     #: Index of Z in q.
     centre = 0
+
+    @property
+    def body_coordinate(self) -> int:
+        """Index of the body's height s in q (after the modal amplitudes)."""
+        return 1 + self.ball.modes
+
+    @property
+    def body_row(self) -> int:
+        """Row of the body's constraint (B2) in G (after the floor rows)."""
+        return self.floor.stop
+
+    @property
+    def body_mass(self) -> float:
+        """mu (0 without a body)."""
+        return 0.0 if self.body is None else self.body.mass
 
     @property
     def membrane(self) -> slice:
@@ -62,16 +131,28 @@ class FloorSystem:
 
     @property
     def floor(self) -> slice:
-        """Rows of the floor constraints in G."""
-        return slice(0, self.ball.points)
+        """Rows of the floor constraints in G (none in the paper's special case)."""
+        return slice(0, self.ball.points if self.floor_rows is None else self.floor_rows)
 
     def falling(self, v0: float, height: float = 1.0) -> tuple[np.ndarray, np.ndarray]:
-        """Undeformed state, the centre at ``height`` (1: the pole touching), falling at v0."""
+        """Undeformed state, the centre at ``height`` (1: the pole touching), falling at v0.
+
+        A body starts its gap above the ball's top, falling at the same speed.
+        """
         q = np.zeros(self.problem.dofs)
         v = np.zeros(self.problem.dofs)
         q[self.centre] = height
         v[self.centre] = -abs(v0)
+        if self.body is not None:
+            q[self.body_coordinate] = height + 1.0 + self.body.gap
+            v[self.body_coordinate] = -abs(v0)
         return q, v
+
+    def body_gap(self, q: np.ndarray) -> np.ndarray:
+        """Gap (B2) of the body for states q (last axis), units R."""
+        if self.body is None:
+            raise NumericalError("FloorSystem: no body")
+        return q @ self.problem.constraints[self.body_row] + self.problem.offset[self.body_row]
 
     def floor_gaps(self, q: np.ndarray) -> np.ndarray:
         """Gaps (F3) of the floor points for states q (last axis), dimensionless."""
@@ -90,17 +171,31 @@ class FloorSystem:
         v = np.atleast_2d(v)
         b = self.ball
         a, da = q[:, self.membrane], v[:, self.membrane]
-        return {
+        out = {
             "rigid_kinetic": 0.5 * v[:, self.centre] ** 2,
             "membrane_kinetic": 0.5 * (da**2) @ b.masses,
             "membrane_elastic": 0.5 * (a**2) @ (b.masses * (b.omega_squared - b.gas_squared)),
             "gas": 0.5 * (a**2) @ (b.masses * b.gas_squared),
             "gravity": self.gamma * q[:, self.centre],
         }
+        if self.body is not None:
+            s, ds = q[:, self.body_coordinate], v[:, self.body_coordinate]
+            out["body_kinetic"] = 0.5 * self.body.mass * ds**2
+            weight = self.gamma if self.body.weight else 0.0
+            out["body_gravity"] = self.body.mass * weight * s
+        return out
 
 
-def floor_system(ball: ModalBall, gamma: float, restitution: float = 0.0) -> FloorSystem:
-    """Assemble (F1)-(F3) for ``ball`` under gravity ``gamma`` (dimensionless).
+def floor_system(
+    ball: ModalBall,
+    gamma: float,
+    restitution: float = 0.0,
+    body: BodyOnTop | None = None,
+    *,
+    floor: bool = True,
+    centre: bool = True,
+) -> FloorSystem:
+    """Assemble (F1)-(F3), and (B1)-(B2) with a body, under gravity ``gamma`` (dimensionless).
 
     Parameters
     ----------
@@ -109,13 +204,40 @@ def floor_system(ball: ModalBall, gamma: float, restitution: float = 0.0) -> Flo
         ``g / (R c^2)`` >= 0.
     restitution : float
         Newton's e at every floor point, in [0, 1].
+    body : BodyOnTop, optional
+        The upper body: one more coordinate and one more row.
+    floor : bool
+        False: the paper's special case (§3, eq. (3.10)): no floor rows and no
+        weight of the ball (only the body feels g).
+    centre : bool
+        False (with an anchored ball, degree 1 a mode of the membrane): Z takes
+        no part (no load, not in (B2)), the centre does not move, as in the
+        paper's model and :mod:`twoball.modal.contact`.
     """
     x = np.cos(ball.phi)
     masses = np.concatenate([[1.0], ball.masses])
     stiffness = np.concatenate([[0.0], ball.masses * ball.omega_squared])
     damping = np.concatenate([[0.0], ball.masses * ball.decay])
     load = np.zeros(masses.size)
-    load[0] = -float(gamma)
-    G = np.column_stack([np.ones_like(x), x[:, None] * ball.shapes])
-    problem = ContactProblem.create(masses, damping, stiffness, load, G, x, restitution)
-    return FloorSystem(ball, problem, float(gamma))
+    load[0] = -float(gamma) if (floor and centre) else 0.0
+    if floor:
+        G = np.column_stack([np.ones_like(x), x[:, None] * ball.shapes])
+        offset, e = x, np.full(x.size, float(restitution))
+    else:
+        G, offset, e = np.zeros((0, masses.size)), np.zeros(0), np.zeros(0)
+    rows = G.shape[0]
+    if body is not None:
+        if body.cap.shape != (ball.modes,):
+            raise NumericalError("floor_system: the body's cap needs one average per mode")
+        weight = float(gamma) if body.weight else 0.0
+        masses = np.append(masses, body.mass)
+        stiffness = np.append(stiffness, 0.0)
+        damping = np.append(damping, 0.0)
+        load = np.append(load, -body.mass * weight)
+        G = np.column_stack([G, np.zeros(rows)])
+        link = -1.0 if centre else 0.0
+        G = np.vstack([G, np.concatenate([[link], -body.cap, [1.0]])])
+        offset = np.append(offset, -1.0)
+        e = np.append(e, body.restitution)
+    problem = ContactProblem.create(masses, damping, stiffness, load, G, offset, e)
+    return FloorSystem(ball, problem, float(gamma), body, None if floor else 0)

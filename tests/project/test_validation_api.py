@@ -164,6 +164,7 @@ CALLS: dict[str, dict[str, Callable[[Any, Path], Any]]] = {
         "Drop": lambda v, _: twoball.Drop(drop_height=v),
     },
     "floor_restitution": {"Drop": lambda v, _: twoball.Drop(floor_restitution=v)},
+    "gap": {"Drop": lambda v, _: twoball.Drop(gap=v)},
     "frames": {
         "export": lambda v, tmp: twoball.export(tmp / "x.pvd", CASE, mesh=LEVEL_1, frames=v),
         "render": lambda v, tmp: twoball.render(tmp / "x.gif", CASE, mesh=LEVEL_1, frames=v),
@@ -212,6 +213,7 @@ CALLS: dict[str, dict[str, Callable[[Any, Path], Any]]] = {
         "plot": lambda v, tmp: twoball.plot(
             "pole", tmp / "p.png", CASE, mesh=LEVEL_1, body=twoball.Body(v)
         ),
+        "bounce": lambda v, _: twoball.bounce(CASE, body=twoball.Body(v)),
     },
     "contact_radius": {  # Body refuses a <= 0; the solvers a >= R of the case
         "liftoff": lambda v, _: twoball.liftoff(CASE, body=twoball.Body(0.01, contact_radius=v)),
@@ -224,6 +226,7 @@ CALLS: dict[str, dict[str, Callable[[Any, Path], Any]]] = {
         "plot": lambda v, tmp: twoball.plot(
             "pole", tmp / "p.png", CASE, mesh=LEVEL_1, body=twoball.Body(0.01, contact_radius=v)
         ),
+        "bounce": lambda v, _: twoball.bounce(CASE, body=twoball.Body(0.01, contact_radius=v)),
     },
     "restitution": {
         "Body": lambda v, _: twoball.Body(0.01, restitution=v),
@@ -237,6 +240,7 @@ CALLS: dict[str, dict[str, Callable[[Any, Path], Any]]] = {
         "plot": lambda v, tmp: twoball.plot(
             "pole", tmp / "p.png", CASE, mesh=LEVEL_1, body=twoball.Body(0.01, restitution=v)
         ),
+        "bounce": lambda v, _: twoball.bounce(CASE, body=twoball.Body(0.01, restitution=v)),
     },
     "bending": {"Case": lambda v, _: twoball.Case.preset("tennis").derive(bending=v)},
     "atmosphere": {"Case": lambda v, _: twoball.Case.preset("tennis").derive(atmosphere=v)},

@@ -96,6 +96,7 @@ RANGES: dict[str, Range] = {
     "--poisson": Range(0.0, 0.5),
     "--atmosphere": Range(0.0, 1e12),
     "--floor-restitution": Range(0.0, 1.0),
+    "--gap": Range(0.0, 10.0),
 }
 #: Values that a range accepts but the model refuses anyway, per option.
 ALSO_BAD: dict[str, tuple[str, ...]] = {
@@ -155,9 +156,15 @@ CONTEXT: dict[tuple[str, str], list[str]] = {
     ("bounce", "--elements"): ["--backend", "fem"],
     ("bounce", "--order"): ["--backend", "fem"],
     ("bounce", "--modes"): [],
+    **{
+        ("bounce", flag): ["--mass-ratio", "0.05"]
+        for flag in ("--gap", "--contact-radius", "--restitution")
+    },
+    ("bounce", "--frames"): ["--render", "{tmp}/x.gif"],
+    ("sweep", "--gap"): ["--bounce", "--mass-ratio", "0.05"],  # refused before the --param
 }
 #: Options the base line already gives (a bad value replaces the base's).
-PATH_OPTIONS = ("--out", "--plot", "--mesh-file")
+PATH_OPTIONS = ("--out", "--plot", "--mesh-file", "--export", "--render")
 
 
 def numeric_options(parser: argparse.ArgumentParser) -> dict[str, list[str]]:
@@ -359,6 +366,36 @@ NOT_APPLICABLE: list[tuple[str, list[str]]] = [
     ("--modes", ["bounce", "--backend", "fem", "--modes", "20"]),
     ("--sigma", ["bounce", "--sigma", "none"]),
     ("--recontact", ["bounce", "--recontact", "paper"]),
+    # the whole bounce: a body's options without a body, a pair with what it fixes
+    ("--gap", ["bounce", "--gap", "0.1"]),
+    ("--mass-ratio", ["bounce", "--mass-ratio", "0"]),
+    ("--restitution", ["bounce", "--restitution", "0.5"]),
+    ("--energy", ["bounce", "--mass-ratio", "0.1", "--energy", "both"]),
+    ("--contact-radius", ["bounce", "--mass-ratio", "0.1", "--contact-radius", "0.2"]),
+    ("--pair", ["bounce", "--pair", "bogus"]),
+    ("--mass-ratio", ["bounce", "--pair", "basketball-tennis", "--mass-ratio", "0.1"]),
+    ("--restitution", ["bounce", "--pair", "basketball-tennis", "--restitution", "0.5"]),
+    ("--contact-radius", ["bounce", "--pair", "tennis-coin", "--contact-radius", "0.01"]),
+    ("--preset", ["bounce", "--pair", "tennis-coin", "--preset", "tennis"]),
+    ("--frames", ["bounce", "--frames", "5"]),
+    ("--export", ["bounce", "--export", "{tmp}/x.bogus"]),
+    ("--render", ["bounce", "--render", "{tmp}/x.bogus"]),
+    ("--frames", ["bounce", "--frames", "5", "--export", "{tmp}/x.vtu"]),
+    ("--gap", ["sweep", "--param", "damping", "--values", "0.1", "--gap", "0.1"]),
+    ("--pair", ["sweep", "--param", "damping", "--values", "0.1", "--pair", "tennis-coin"]),
+    ("--param", ["sweep", "--param", "gap", "--values", "0,0.1"]),
+    (
+        "--gap",
+        ["sweep", "--bounce", "--param", "gap", "--values", "0,0.1", "--mass-ratio", "0.1"]
+        + ["--gap", "0.1"],
+    ),
+    ("--gap", ["sweep", "--bounce", "--param", "gap", "--values", "-1,0.1", "--mass-ratio", "0.1"]),
+    ("--gap", ["sweep", "--bounce", "--param", "gap", "--values", "0,0.1"]),
+    (
+        "--pair",
+        ["sweep", "--bounce", "--param", "mass-ratio", "--values", "0.1"]
+        + ["--pair", "basketball-tennis"],
+    ),
     # the collision model
     *[
         (flag, ["icm", "--table1", flag, "0.5"])

@@ -1,7 +1,9 @@
-"""``twoball bounce``: one drop of the lower ball on a rigid floor (SI in and out).
+"""``twoball bounce``: the lower ball dropped on a rigid floor, alone or with a body on top.
 
 A thin layer over :func:`twoball.bounce`: the options become its case, its
-:class:`~twoball.Drop`, its mesh and its time step.
+:class:`~twoball.Drop`, its :class:`~twoball.Body` (``--mass-ratio``,
+``--contact-radius``, ``--restitution``; or ``--pair``), its mesh and its time
+step; ``--plot``, ``--export`` and ``--render`` write the report's files.
 """
 
 from __future__ import annotations
@@ -21,6 +23,7 @@ from twoball.cli.console import (
     print_notes,
     print_warnings,
 )
+from twoball.cli.contact_options import add_contact_options, body_options
 from twoball.cli.mesh_options import damping_options
 from twoball.cli.values import integer
 from twoball.cli.values import number as numeric
@@ -61,6 +64,20 @@ def add_drop_options(parser: argparse.ArgumentParser) -> None:
         metavar="SECONDS",
         help="time step [s] of the Moreau-Jean steps (default 0.005 / c)",
     )
+    group.add_argument(
+        "--gap",
+        type=numeric,
+        metavar="DX",
+        help="the whole bounce: gap Delta x [m] in [0, 10] between the body and the ball's "
+        "top when the ball first touches the floor (default 0: touching)",
+    )
+    group.add_argument(
+        "--pair",
+        metavar="NAME",
+        help="a pair of Table 1: the lower ball, mu, e12 and the contact radius "
+        "(tennis-coin, tennis-nut, tennis-table-tennis, basketball-tennis, "
+        "basketball-tissue, basketball-table-tennis)",
+    )
     mesh = parser.add_argument_group("finite-element mesh (--backend fem)")
     mesh.add_argument("--mesh", help="axisym (the line x = cos phi; default)")
     mesh.add_argument("--elements", type=integer, help="axisymmetric line elements (default 96)")
@@ -76,6 +93,9 @@ DROP_HELP = {
     "--phi-a": "refused: the contact angle is an output of the drop (phi_a_max_rad)",
     "--sigma": "refused: no spectral filter (the drop's modes are not filtered)",
     "--recontact": "refused: no lift-off criteria in a drop",
+    "--energy": "refused: both bodies fall at |v0| in the whole bounce (ball only)",
+    "--restitution": "Newton's e12 in [0, 1] at the body's impacts on the ball (default 0)",
+    "--contact-radius": "radius a [m] of the cap where the body touches (default R/10)",
 }
 
 
@@ -94,6 +114,18 @@ def drop_case(args: argparse.Namespace) -> twoball.Case:
         raise ParameterError(
             "phi_a", "left out for the drop (the contact angle is its output)", args.phi_a
         )
+    pair = getattr(args, "pair", None)
+    if args.preset is None:  # the pair's lower ball, else the basketball
+        if pair is not None:
+            from twoball import _choices
+
+            args.preset = _choices.pair(pair).lower
+        else:
+            args.preset = "basketball"
+    elif pair is not None:
+        raise ParameterError(
+            "preset", "left out with --pair (the pair sets the lower ball)", args.preset
+        )
     if args.drop_height is not None and args.v0 is not None:
         raise ParameterError("drop_height", "given alone, not with --v0", args.drop_height)
     for name, default in (("sigma", "lanczos"), ("recontact", "window")):
@@ -107,11 +139,13 @@ def drop_case(args: argparse.Namespace) -> twoball.Case:
 
 
 def drop_options(args: argparse.Namespace) -> twoball.Drop:
-    """``--drop-height``, ``--gas``, ``--floor-restitution``, ``--modes``, ``--membrane``."""
+    """``--drop-height``, ``--gas``, ``--floor-restitution``, ``--modes``, ``--membrane``,
+    ``--gap``."""
     fields: dict[str, Any] = {
         "drop_height": args.drop_height,
         "gas": args.gas,
         "modes": args.modes,
+        "gap": getattr(args, "gap", None),
     }
     if args.floor_restitution is not None:
         fields["floor_restitution"] = args.floor_restitution
@@ -141,12 +175,26 @@ def _stepping(args: argparse.Namespace) -> twoball.Stepping | None:
     return twoball.Stepping(**fields) if fields else None
 
 
+def whole_body(args: argparse.Namespace) -> twoball.Body | None:
+    """The upper body of ``--mass-ratio`` and its companions; refused with ``--pair``."""
+    if getattr(args, "pair", None) is not None:
+        for name in ("mass_ratio", "contact_radius", "restitution", "energy"):
+            if getattr(args, name, None) is not None:
+                valid = "left out with --pair (the pair fixes mu, e12 and the contact radius)"
+                raise ParameterError(name, valid, getattr(args, name))
+        return None
+    return body_options(args)
+
+
 def bounce_from_options(args: argparse.Namespace) -> twoball.BounceReport:
     """Call :func:`twoball.bounce` with the options."""
+    body = whole_body(args)
     case = drop_case(args)
     return twoball.bounce(
         case,
         drop_options(args),
+        body=body,
+        pair=args.pair,
         backend=args.backend,
         mesh=_mesh(args),
         stepping=_stepping(args),
@@ -186,6 +234,21 @@ def bounce_rows(report: twoball.BounceReport) -> list[tuple[str, str]]:
         ("energy damped [J]", f"{energy['dissipated_damping']:.4g}"),
         ("vibration after leaving [J]", f"{energy['vibration_after_leaving']:.4g}"),
     ]
+    if report.has_body:
+        rows += whole_rows(report)
+        events = report.events
+        shown = events if len(events) <= 12 else events[:4] + events[-6:]
+        for event in shown:
+            rows.append(
+                (
+                    f"{event['contact']} {event['kind']} [ms]",
+                    f"{event['t_s'] * 1e3:.4f} (ball {event['velocity_m_s']:+.4f}, "
+                    f"body {event['body_velocity_m_s']:+.4f} m/s)",
+                )
+            )
+        if len(shown) < len(events):
+            rows.append(("events", f"{len(events)} in all (--json lists every one)"))
+        return rows
     for event in report.events:
         rows.append(
             (
@@ -196,20 +259,63 @@ def bounce_rows(report: twoball.BounceReport) -> list[tuple[str, str]]:
     return rows
 
 
+def whole_rows(report: twoball.BounceReport) -> list[tuple[str, str]]:
+    """The rows of the whole bounce: the body, v1, v2, timing, e12, the baselines (SI)."""
+    data = report.as_dict()
+    body = data["body"]
+    rows = [
+        ("body: mu, mass [g]", f"{body['mass_ratio']:g}, {body['mass_kg'] * 1e3:.4g}"),
+        ("  contact radius a [mm]", f"{body['contact_radius_m'] * 1e3:.4g}"),
+        ("  Newton e12, gap [mm]", f"{body['restitution']:g}, {body['gap_m'] * 1e3:g}"),
+        ("v1 [m/s], v1/|v0|", f"{number(data['v1_m_s'])}, {number(data['v1_ratio'])}"),
+        ("v2 [m/s], v2/|v0|", f"{number(data['v2_m_s'])}, {number(data['v2_ratio'])}"),
+        ("lift-off [ms] after the floor touch", number(data["t_liftoff_s"], 1e3)),
+        (
+            "  after the largest compression [ms]",
+            number(data["t_liftoff_from_max_compression_s"], 1e3),
+        ),
+        ("ball leaves the floor [ms]", number(data["t_floor_release_s"], 1e3)),
+        ("sequence, body left first", f"{data['sequence']}, {data['body_left_first']}"),
+        ("body contacts", str(data["body_contacts"])),
+        ("e12 effective (eq. (2.4))", number(data["e12_effective"])),
+    ]
+    icm = data["icm_solver"]
+    if icm is not None:
+        rows.append(
+            ("ICM (2.5), this e2 and e12_eff", f"{icm['v1_ratio']:.4f} / {icm['v2_ratio']:.4f}")
+        )
+    for name, out in (data["baselines"] or {}).get("models", {}).items():
+        text = out.get("error") or f"{out['v1_ratio']:.4f} / {out['v2_ratio']:.4f}"
+        rows.append((f"{name} v1/|v0| / v2/|v0|", text))
+    return rows
+
+
+def _field_targets(args: argparse.Namespace) -> tuple[Any, Any, int]:
+    """``--export`` and ``--render`` checked before any work, and the frame count."""
+    from twoball._bounce import check_field_targets
+
+    return check_field_targets(args.export, args.render, args.frames)
+
+
 def run(args: argparse.Namespace) -> int:
     """Run ``twoball bounce``."""
     from twoball._files import check_figure_path
 
     plot = None if args.plot is None else check_figure_path(args.plot, "plot")
+    export, render, frames = _field_targets(args)
     report = bounce_from_options(args)
     if plot is not None:
         report.plot(plot)
+    if export is not None:
+        report.export(export, frames=frames)
+    if render is not None:
+        report.render(render, frames=frames)
     print_notes(list(report.notes))
     print_warnings(report.warnings)
     if args.json:
         print_json(report.as_dict())
     else:
-        title = f"Drop on the floor ({report.backend})"
+        title = f"{'Whole bounce' if report.has_body else 'Drop on the floor'} ({report.backend})"
         console().print(key_value_table(title, bounce_rows(report)))
     return 0
 
@@ -221,13 +327,34 @@ def register(parser: argparse.ArgumentParser) -> None:
     )
     add_case_options(parser)
     add_drop_options(parser)
+    add_contact_options(
+        parser, "the whole bounce: mass ratio m1/m2 in (0, 100] of a body on the ball's top"
+    )
     for flag, text in DROP_HELP.items():  # the shared case options, as the drop reads them
         _action(parser, flag).help = text
+    preset = _action(parser, "--preset")
+    preset.default = None  # the pair's lower ball, else the basketball
+    preset.help = "named case: basketball (default), tennis, volleyball; --pair sets it"
     parser.add_argument(
         "--plot",
         metavar="FILE",
-        help="also write the drop's figure (.png, .pdf, .svg, ...): floor force, contact "
-        "angle, the centre's height and the energy books against time",
+        help="also write the figure (.png, .pdf, .svg, ...): floor force, contact angle, the "
+        "centre's height and the energy books against time (with a body: heights, both "
+        "forces, both velocities, the energy books and every event)",
+    )
+    parser.add_argument(
+        "--export",
+        metavar="FILE",
+        help="also write the motion on a sphere mesh: .xdmf (+ .h5), .pvd (+ .vtu) or one "
+        ".vtu frame; with a body its height, gap and force per frame",
+    )
+    parser.add_argument(
+        "--render",
+        metavar="FILE",
+        help="also draw the ball (and the body): .png (the largest compression), .gif or .mp4",
+    )
+    parser.add_argument(
+        "--frames", type=integer, metavar="N", help="instants of --export/--render (default 40)"
     )
     parser.add_argument("--json", action="store_true", help="print one JSON object")
     parser.set_defaults(run=run)

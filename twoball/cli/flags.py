@@ -98,8 +98,13 @@ FLAGS: dict[str, str] = {
     "e12": "--e12",
     "dx": "--dx",
     "drop_height": "--drop-height",
-    # the drop on the floor
+    # the drop on the floor, the whole bounce
     "floor_restitution": "--floor-restitution",
+    "gap": "--gap",
+    "pair": "--pair",
+    "export": "--export",
+    "render": "--render",
+    "body": "--mass-ratio",
 }
 
 

@@ -30,7 +30,8 @@ EXIT_NUMERICAL = 3
 COMMANDS: dict[str, str] = {
     "verify": "check every backend against the closed form; write a report directory",
     "liftoff": "lift-off time and velocity for one case",
-    "bounce": "the lower ball dropped on a rigid floor: contact time, rebound e2, flattening",
+    "bounce": "the lower ball dropped on a rigid floor (contact time, e2, flattening), or the "
+    "whole two-ball bounce with a body on top (--mass-ratio, --pair; v1, v2, timing)",
     "eigen": "finite-element eigenvalues against l (l + 1)",
     "sweep": "lift-off over a range of one parameter, or a grid of two",
     "icm": "independent collision model (§2), Table 1",

@@ -71,12 +71,14 @@ def run(args: argparse.Namespace) -> int:
 
     if args.bounce:
         return _run_bounce(args)
-    if args.floor_restitution is not None:
-        valid = "left out without --bounce (a sweep of the drop)"
-        raise ParameterError("floor_restitution", valid, args.floor_restitution)
-    if "drop-height" in args.param:
-        valid = "a parameter of the lift-off (drop-height needs --bounce, a sweep of the drop)"
-        raise ParameterError("param", valid, "drop-height")
+    for name in ("floor_restitution", "gap", "pair"):
+        if getattr(args, name, None) is not None:
+            valid = "left out without --bounce (a sweep of the drop or the whole bounce)"
+            raise ParameterError(name, valid, getattr(args, name))
+    for name in ("drop-height", "gap"):
+        if name in args.param:
+            valid = f"a parameter of the lift-off ({name} needs --bounce, a sweep of the drop)"
+            raise ParameterError("param", valid, name)
     grid = _choices.make_grid(args.param, args.values)
     for name in grid.parameters:  # the swept parameter's base value would be replaced
         field = _choices.SWEEP_PARAMETERS[name]
@@ -129,41 +131,56 @@ def run(args: argparse.Namespace) -> int:
 
 
 def _run_bounce(args: argparse.Namespace) -> int:
-    """``twoball sweep --bounce``: one drop on the floor per impact speed or drop height."""
+    """``twoball sweep --bounce``: one drop (or whole bounce) per value of one parameter."""
     import twoball
     from twoball._files import check_figure_path
-    from twoball.cli.bounce import drop_case
+    from twoball.cli.bounce import drop_case, drop_options, whole_body
 
-    for name in ("mass_ratio", "contact_radius", "restitution", "energy", "workers"):
-        if getattr(args, name, None) is not None:
-            raise ParameterError(name, "left out with --bounce", getattr(args, name))
     for name in args.param:
-        field = {"v0": "v0", "drop-height": "drop_height"}.get(name)
-        if field == "v0" and args.v0 is not None:
-            raise ParameterError("v0", "left out when --param v0 is swept", args.v0)
-    plot = None if args.plot is None else check_figure_path(args.plot, "plot")
-    args.drop_height = None
-    case = drop_case(args)
-    fields: dict[str, Any] = {"gas": args.gas, "modes": args.modes}
-    if args.membrane is not None:
-        fields["membrane"] = args.membrane
-    if args.floor_restitution is not None:
-        fields["floor_restitution"] = args.floor_restitution
-    drop = twoball.Drop(**{k: v for k, v in fields.items() if v is not None})
+        field = {"v0": "v0", "gap": "gap", "mass-ratio": "mass_ratio"}.get(name)
+        if field is not None and getattr(args, field, None) is not None:
+            raise ParameterError(
+                field, f"left out when --param {name} is swept", getattr(args, field)
+            )
     if len(args.values) != len(args.param):
         raise ParameterError("values", "given once per param, in the same order", args.values)
+    plot = None if args.plot is None else check_figure_path(args.plot, "plot")
+    args.drop_height = None
+    if args.pair is not None and args.preset == "basketball":
+        args.preset = None  # the default: the pair sets the lower ball
+    if "mass-ratio" in args.param:
+        body = _sweep_body(args, tuple(args.param))
+        if args.pair is not None:
+            raise ParameterError("pair", "left out when --param mass-ratio is swept", args.pair)
+    else:
+        body = whole_body(args)
+    case = drop_case(args)
+    drop = drop_options(args)
     pairs = zip(args.param, args.values, strict=True)
     values = {name.replace("-", "_"): text for name, text in pairs}
     stepping = None if args.t_end is None else twoball.Stepping(t_end=args.t_end)
     from twoball._common.progress import QUICK, Reporter
 
     with Reporter("sweep of the drop", delay=QUICK) as bar:
-        result = twoball.sweep(values, case, stepping=stepping, drop=drop, progress=bar.update)
+        result = twoball.sweep(
+            values,
+            case,
+            stepping=stepping,
+            drop=drop,
+            body=body,
+            pair=args.pair,
+            workers=args.workers,
+            scheduler=args.scheduler,
+            progress=bar.update,
+        )
     if plot is not None:
         result.plot(plot)
     if args.json:
         data = result.as_dict()
         print_json(attach(data["points"], result.provenance))
+        return 0
+    if result.parameter in ("gap", "mass-ratio"):
+        _print_whole(result)
         return 0
     table = Table(title=f"Drops on the floor against {result.parameter}")
     for column in (result.parameter, "|v0| [m/s]", "t_c [ms]", "e2", "phi_a,max", "flat. [mm]"):
@@ -182,6 +199,41 @@ def _run_bounce(args: argparse.Namespace) -> int:
         )
     console().print(table)
     return 0
+
+
+def _print_whole(result: Any) -> None:
+    """One row per point of a whole-bounce sweep: v1, v2, timing, sequence, e12_eff, ICM."""
+    unit = " [mm]" if result.parameter == "gap" else ""
+    scale = 1e3 if result.parameter == "gap" else 1.0
+    table = Table(title=f"Whole bounce against {result.parameter}")
+    columns = (
+        f"{result.parameter}{unit}",
+        "v1/|v0|",
+        "v2/|v0|",
+        "t_lift [ms]",
+        "t_l [ms]",
+        "body first",
+        "e12 eff",
+        "ICM v1/v2",
+    )
+    for column in columns:
+        table.add_column(column, justify="right")
+    for value, report, error in zip(result.values, result.reports, result.errors, strict=True):
+        if report is None:
+            table.add_row(f"{value * scale:g}", error or "", *["-"] * 6)
+            continue
+        icm = ((report.baselines or {}).get("models", {}).get("icm")) or {}
+        table.add_row(
+            f"{value * scale:g}",
+            number(report.v1_ratio),
+            number(report.v2_ratio),
+            number(report.t_liftoff_s, 1e3),
+            number(report.t_liftoff_from_max_compression_s, 1e3),
+            str(report.body_left_first),
+            number(report.e12_effective),
+            f"{icm['v1_ratio']:.3f}/{icm['v2_ratio']:.3f}" if "v1_ratio" in icm else "-",
+        )
+    console().print(table)
 
 
 def _sweep_body(args: argparse.Namespace, parameters: tuple[str, ...]) -> Any:
@@ -242,8 +294,9 @@ def register(parser: argparse.ArgumentParser) -> None:
         "--param",
         required=True,
         action="append",
-        choices=(*_choices.SWEEP_PARAMETERS, "drop-height"),
-        help="swept parameter; give twice for a 2-D grid (--bounce: v0 or drop-height, once)",
+        choices=(*_choices.SWEEP_PARAMETERS, "drop-height", "gap"),
+        help="swept parameter; give twice for a 2-D grid (--bounce: v0, drop-height, gap or "
+        "mass-ratio, once)",
     )
     parser.add_argument(
         "--bounce",
@@ -256,6 +309,17 @@ def register(parser: argparse.ArgumentParser) -> None:
         type=number_value,
         metavar="E",
         help="--bounce: Newton's e at every floor point in [0, 1] (default 0)",
+    )
+    parser.add_argument(
+        "--gap",
+        type=number_value,
+        metavar="DX",
+        help="--bounce: gap Delta x [m] between the body and the ball's top (default 0)",
+    )
+    parser.add_argument(
+        "--pair",
+        metavar="NAME",
+        help="--bounce: a pair of Table 1 (the lower ball, mu, e12, the contact radius)",
     )
     parser.add_argument(
         "--values",

@@ -17,7 +17,10 @@ pole on +z) at chosen instants and written through the field machinery of
     Each node's height above the floor [m]: >= 0 at the floor points; a node
     between them may dip below by the resolution's error.
 
-Frame data: ``Z_m`` (the centre's height) and ``floor_force_N``.
+Frame data: ``Z_m`` (the centre's height) and ``floor_force_N``; with an upper
+body (the whole bounce) also ``body_height_m`` (the body's lowest point above
+the floor), ``body_gap_m`` (its gap above the ball's top, eq. (B2)) and
+``body_force_N`` (the contact force between them).
 """
 
 from __future__ import annotations
@@ -33,7 +36,7 @@ from twoball.modal.parameters import Case
 from twoball.verify.output.render import BallScene
 from twoball.verify.output.series import TimeSeries
 
-__all__ = ["DropScene", "drop_frames", "drop_scene", "drop_series"]
+__all__ = ["DropScene", "body_frames", "drop_frames", "drop_scene", "drop_series"]
 
 
 def drop_frames(result: DropResult, count: int, case: Case) -> np.ndarray:
@@ -44,12 +47,37 @@ def drop_frames(result: DropResult, count: int, case: Case) -> np.ndarray:
 
 def _states(result: DropResult, times_s: np.ndarray, case: Case) -> tuple[np.ndarray, ...]:
     """Z and the modal amplitudes at ``times_s`` (linear between step ends), and the force."""
+    q, f = _coordinates(result, times_s, case)
+    return q[:, 0], q[:, result.system.membrane], f
+
+
+def _coordinates(
+    result: DropResult, times_s: np.ndarray, case: Case
+) -> tuple[np.ndarray, np.ndarray]:
+    """Every coordinate at ``times_s`` (linear between step ends) and the floor force."""
     tr = result.trajectory
     t = np.asarray(times_s, dtype=float) * case.wave_speed
     q = np.column_stack([np.interp(t, tr.t, tr.q[:, j]) for j in range(tr.q.shape[1])])
     mid, force = result.force
-    f = np.interp(t, mid, force, left=0.0, right=0.0)
-    return q[:, 0], q[:, 1:], f
+    return q, np.interp(t, mid, force, left=0.0, right=0.0)
+
+
+def body_frames(
+    result: DropResult, times_s: np.ndarray, case: Case, mass: float
+) -> dict[str, np.ndarray]:
+    """The body's frame data at ``times_s`` [s] (SI; empty without a body)."""
+    system = result.system
+    if system.body is None:
+        return {}
+    q, _ = _coordinates(result, times_s, case)
+    t = np.asarray(times_s, dtype=float) * case.wave_speed
+    mid, force = result.body_force
+    force_unit = mass * case.radius * case.wave_speed**2
+    return {
+        "body_height_m": q[:, system.body_coordinate] * case.radius,
+        "body_gap_m": system.body_gap(q) * case.radius,
+        "body_force_N": np.interp(t, mid, force, left=0.0, right=0.0) * force_unit,
+    }
 
 
 def drop_series(
@@ -68,20 +96,38 @@ def drop_series(
     displacement = (lift + u[:, :, None] * normal[None, :, :]) * radius
     height = (z[:, None] + (1.0 + u) * normal[None, :, 2]) * radius
     force_unit = mass * radius * case.wave_speed**2
+    numbers = {
+        "contact_time_s": np.nan
+        if result.contact_time is None
+        else result.contact_time / case.wave_speed,
+        "e2": np.nan if result.e2 is None else result.e2,
+        "phi_a_max_rad": result.phi_a_max,
+    }
+    texts = {"case": text, "mesh": json.dumps({"label": ball.label})}
+    body = result.system.body
+    if body is not None and result.body is not None:
+        b, v0 = result.body, result.settings.v0
+        numbers |= {
+            "mass_ratio": body.mass,
+            "gap_m": body.gap * radius,
+            "cap_angle_rad": body.cap_angle,
+            "v1_ratio": np.nan if b.v1 is None else b.v1 / v0,
+            "v2_ratio": np.nan if b.v2 is None else b.v2 / v0,
+            "t_liftoff_s": np.nan if b.t_liftoff is None else b.t_liftoff / case.wave_speed,
+        }
+        texts["body"] = json.dumps({"restitution": body.restitution, "sequence": b.sequence})
     return TimeSeries(
         points * radius,
         mesh.cells,
         np.asarray(times_s, dtype=float),
         {"u_m": u * radius, "displacement_m": displacement, "height_m": height},
+        numbers,
+        texts,
         {
-            "contact_time_s": np.nan
-            if result.contact_time is None
-            else result.contact_time / case.wave_speed,
-            "e2": np.nan if result.e2 is None else result.e2,
-            "phi_a_max_rad": result.phi_a_max,
+            "Z_m": z * radius,
+            "floor_force_N": force * force_unit,
+            **body_frames(result, times_s, case, mass),
         },
-        {"case": text, "mesh": json.dumps({"label": ball.label})},
-        {"Z_m": z * radius, "floor_force_N": force * force_unit},
     )
 
 
@@ -96,14 +142,20 @@ class DropScene(BallScene):
 
     floor_force: np.ndarray = None  # type: ignore[assignment]
     centre: np.ndarray = None  # type: ignore[assignment]
+    body_force: np.ndarray | None = None
+    t_body: float | None = None
 
     def caption(self, k: int, warp: float) -> str:
-        """Time, the floor force, the centre's height, contact or flight, warp."""
+        """Time, the floor force, the centre's height, contact or flight, the body, warp."""
         t = float(self.times[k])
         text = f"t = {t * 1e3:6.2f} ms\nfloor force {self.floor_force[k]:7.1f} N"
         text += f"\nZ - R = {self.centre[k] * 1e3:+6.2f} mm"
         if self.t_liftoff is not None:
             text += "\nleft the floor" if t >= self.t_liftoff else "\non the floor"
+        if self.body_force is not None:
+            text += f"\nbody force {self.body_force[k]:7.1f} N"
+            if self.t_body is not None and t >= self.t_body:
+                text += "\nbody lifted off"
         return text + (f"\nwarp x{warp:.3g}" if warp != 1.0 else "")
 
 
@@ -115,15 +167,24 @@ def drop_scene(
     u = series.point_data["u_m"]
     top = int(np.argmax(np.asarray(mesh.points)[:, 2]))
     t_left = None if result.contact_time is None else result.contact_time / case.wave_speed
+    frames = series.frame_data
+    body, body_force, t_body = u[:, top], None, None
+    if "body_height_m" in frames:  # the body's lowest point above the undeformed top
+        body = frames["body_height_m"] - frames["Z_m"] - case.radius
+        body_force = frames["body_force_N"]
+        lift = None if result.body is None else result.body.t_liftoff
+        t_body = None if lift is None else lift / case.wave_speed
     return DropScene(
         series.points,
         series.cells,
         series.times,
         u,
-        u[:, top],
+        body,
         case.radius,
         t_left,
         label,
-        floor_force=series.frame_data["floor_force_N"],
-        centre=series.frame_data["Z_m"] - case.radius,
+        floor_force=frames["floor_force_N"],
+        centre=frames["Z_m"] - case.radius,
+        body_force=body_force,
+        t_body=t_body,
     )

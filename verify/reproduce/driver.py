@@ -24,6 +24,7 @@ from typing import Any
 from twoball.verify.reproduce import cem as reproduce_cem
 from twoball.verify.reproduce import contact as reproduce_contact
 from twoball.verify.reproduce import icm as reproduce_icm
+from twoball.verify.reproduce import whole as reproduce_whole
 from twoball.verify.reproduce.common import Context, Section, comparison_table
 from twoball.verify.sweeps.parallel import Runner
 
@@ -41,6 +42,9 @@ PARTS: dict[str, Callable[[Context], Section]] = {
     "table1": reproduce_icm.part_table1,
     "icm": reproduce_icm.part_icm,
     "contact": reproduce_contact.part_contact,
+    "whole_table1": reproduce_whole.part_whole_table1,
+    "whole_gap": reproduce_whole.part_whole_gap,
+    "whole_timing": reproduce_whole.part_whole_timing,
 }
 DEFAULT_OUT = "twoball-reproduction"
 REPORT = "reproduction.md"
@@ -76,12 +80,15 @@ def reproduce(
     runner: Runner | None = None,
     progress: TaskHook | None = None,
     command: str = "twoball reproduce",
+    tasks: dict[str, Callable[[Any], Any]] | None = None,
 ) -> tuple[Path, list[Section]]:
     """Run the selected parts and write figures, ``reproduction.md`` and ``.json`` to ``out``.
 
     Returns the output directory and the sections.  Nothing is written to ``out``
     unless every part succeeded.  ``progress(label, total)`` starts a counted task
     and returns its ``update(done)``: :meth:`twoball._common.progress.Reporter.task`.
+    ``tasks`` are the picklable runs the face lends the parts (``"bounce"``: one
+    whole bounce, :class:`twoball._bounce.BounceTask`).
     """
     from twoball.verify.output.report_files import result_files
 
@@ -95,7 +102,7 @@ def reproduce(
         if own_runner:
             runner = Runner(workers=1).__enter__()
         with staged_folder(target, "out", "twoball reproduce") as staging:
-            ctx = Context(staging, runner)
+            ctx = Context(staging, runner, tasks=dict(tasks or {}))
             if progress is not None:
                 ctx.progress = progress
             sections = []

@@ -1,14 +1,20 @@
-"""Sweeps of the drop on the floor: one drop per impact speed or drop height (SI).
+"""Sweeps of the drop on the floor and of the whole bounce: one run per value (SI).
 
-:func:`bounce_points` turns a base case and drop and one swept parameter into
-the (case, drop) pairs the face drops one by one (``twoball.sweep(...,
-drop=Drop())``); the figure is :func:`twoball.verify.output.figures.bounce.speeds_figure`.
+:func:`bounce_points` turns a base case, drop and body and one swept parameter
+into the (case, drop, body) triples the face runs one by one (``twoball.sweep(...,
+drop=Drop())``) on the process pool or Dask
+(:class:`~twoball.verify.sweeps.parallel.Runner`): the impact speed ``v0``
+[m/s], the drop height ``drop-height`` [m], the gap ``gap`` [m] (Fig. 3, Fig. 8)
+and the mass ratio ``mass-ratio`` of the upper body.  The figures are
+:func:`twoball.verify.output.figures.bounce.speeds_figure` and
+:func:`~twoball.verify.output.figures.bounce.gap_figure`.
 """
 
 from __future__ import annotations
 
 from collections.abc import Sequence
 from dataclasses import replace
+from typing import Any
 
 import numpy as np
 from twoball.modal.floor.options import Drop
@@ -20,7 +26,12 @@ from twoball._common.errors import ParameterError
 __all__ = ["BOUNCE_PARAMETERS", "bounce_points", "bounce_values"]
 
 #: Parameters of a drop sweep (CLI names) and the field each sets.
-BOUNCE_PARAMETERS: dict[str, str] = {"v0": "v0", "drop-height": "drop_height"}
+BOUNCE_PARAMETERS: dict[str, str] = {
+    "v0": "v0",
+    "drop-height": "drop_height",
+    "gap": "gap",
+    "mass-ratio": "mass_ratio",
+}
 
 
 def bounce_values(parameters: Sequence[str], values: Sequence[object]) -> tuple[str, np.ndarray]:
@@ -40,11 +51,28 @@ def bounce_values(parameters: Sequence[str], values: Sequence[object]) -> tuple[
 
 
 def bounce_points(
-    case: Case, drop: Drop, parameter: str, values: np.ndarray
-) -> list[tuple[Case, Drop]]:
-    """One (case, drop) per value: the impact speed (|v0| [m/s]) or the drop height H [m]."""
+    case: Case, drop: Drop, parameter: str, values: np.ndarray, body: Any = None
+) -> list[tuple[Case, Drop, Any]]:
+    """One (case, drop, body) per value of ``parameter`` (validated by the options' classes).
+
+    ``gap`` needs a body (or a pair, which the face resolves: ``body`` is then
+    None and the gap is the drop's); ``mass-ratio`` replaces the body's mu (a
+    body of that mu with the default contact radius and no restitution when
+    none is given).
+    """
     if parameter == "v0":
         if drop.drop_height is not None:
             raise ParameterError("drop_height", "left out when v0 is swept", drop.drop_height)
-        return [(case.derive(v0=float(v)), drop) for v in values]
-    return [(case, replace(drop, drop_height=float(v))) for v in values]
+        return [(case.derive(v0=float(v)), drop, body) for v in values]
+    if parameter == "drop-height":
+        return [(case, replace(drop, drop_height=float(v)), body) for v in values]
+    if parameter == "gap":
+        if drop.gap != 0.0:
+            raise ParameterError("gap", "left out when the gap is swept", drop.gap)
+        return [(case, replace(drop, gap=float(v)), body) for v in values]
+    from twoball.modal.contact.body import Body
+
+    if body is not None and body.mass_ratio != 0.0:
+        raise ParameterError("mass_ratio", "left out when the mass ratio is swept", body.mass_ratio)
+    base = Body(0.0) if body is None else body
+    return [(case, drop, replace(base, mass_ratio=float(v))) for v in values]

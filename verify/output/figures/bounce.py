@@ -1,7 +1,10 @@
 """The drop on the floor: its history, and the contact against the impact speed (SI).
 
 ``drop_figure``: floor force, contact angle, the centre's height and the energy
-books against time.  ``speeds_figure``: the largest contact angle and the
+books against time.  ``whole_figure``: the whole two-ball bounce (a body on the
+ball): heights of the floor contact, the ball's top and the body, both contact
+forces, both velocities with the ICM's, and the energy books with the body's
+share, every event marked.  ``speeds_figure``: the largest contact angle and the
 flattening against ``|v0|`` beside eq. (3.7), pressure x area (Cross 1999) and
 the measurements (Table 2's phi_a = 2.6 at 4.1 m/s; 3.07 mm of compression per
 m/s, Dowell & Krebs 1991).
@@ -23,7 +26,7 @@ from twoball.verify.output.figures.style import REFERENCE_COLOUR, label, styled,
 if TYPE_CHECKING:
     from matplotlib.figure import Figure
 
-__all__ = ["TABLE2", "drop_figure", "speeds_figure"]
+__all__ = ["TABLE2", "drop_figure", "speeds_figure", "whole_figure"]
 
 #: Table 2 of the paper: the basketball's measured contact angle at 4.1 m/s.
 TABLE2 = (4.1, 2.6)
@@ -130,4 +133,199 @@ def speeds_figure(rows: Sequence[tuple[float, float, float]], case: Case) -> Fig
     axes[1].set_xlim(0.0, 1.1 * v0.max())
     if math.isfinite(phi.min()):
         axes[0].set_ylim(min(phi.min(), min(eq37)) - 0.02, math.pi)
+    return fig
+
+
+@styled
+def whole_figure(
+    r: DropResult,
+    case: Case,
+    mass: float,
+    title: str = "",
+    icm: tuple[float, float] | None = None,
+) -> Figure:
+    """Four panels against time [ms] for the whole bounce (``r.body`` set).
+
+    Heights above the floor of the ball's lowest point, centre and top (the
+    cap's mean) and of the body's lowest point; the floor's and the body's
+    contact forces; the centre's and the body's velocities (with ``icm`` =
+    (v1, v2) [m/s] of eq. (2.5) as dashed lines); the energy books, the body's
+    kinetic energy among them.  Touches and separations of both contacts are
+    marked: floor (grey) and body (orange).
+    """
+    system = r.system
+    if system.body is None or r.body is None:
+        raise ValueError("whole_figure needs a run with a body on the ball")
+    to_ms = 1e3 / case.wave_speed
+    R = case.radius
+    speed = case.scalings.velocity
+    force_unit = mass * R * case.wave_speed**2
+    energy_unit = mass * speed**2
+    tr = r.trajectory
+    t_ms = tr.t * to_ms
+    fig = new_figure(6.8, 9.0)
+    axes = fig.subplots(4, 1, sharex=True)
+    cap = system.body.cap
+    z = tr.q[:, system.centre]
+    a = tr.q[:, system.membrane]
+    top = z + 1.0 + a @ cap
+    lowest = np.min(system.floor_gaps(tr.q), axis=1)  # the ball's lowest floor point
+    s = tr.q[:, system.body_coordinate]
+    axes[0].plot(t_ms, s * R * 1e3, color="C1", label="body, lowest point")
+    axes[0].plot(t_ms, top * R * 1e3, color="C0", label="ball's top (cap mean)")
+    axes[0].plot(t_ms, z * R * 1e3, color="C0", ls="--", lw=0.8, label="ball's centre")
+    axes[0].plot(t_ms, lowest * R * 1e3, color="C2", lw=0.8, label="ball's lowest point")
+    axes[0].axhline(0.0, color=REFERENCE_COLOUR, lw=0.8)
+    axes[0].set_ylabel(label("height", "mm"))
+    axes[0].legend(loc="upper left", fontsize=7)
+    mid, floor_force = r.force
+    _, body_force = r.body_force
+    axes[1].plot(mid * to_ms, floor_force * force_unit, color="C2", label="floor on the ball")
+    axes[1].plot(mid * to_ms, body_force * force_unit, color="C1", label="ball on the body")
+    axes[1].set_ylabel(label("$F$", "N"))
+    axes[1].legend(loc="upper right")
+    axes[2].plot(t_ms, tr.v[:, system.centre] * speed, color="C0", label="ball's centre $Z'$")
+    axes[2].plot(t_ms, tr.v[:, system.body_coordinate] * speed, color="C1", label="body $s'$")
+    if icm is not None:
+        axes[2].axhline(icm[0], color="C1", ls="--", lw=0.8, label="ICM (2.5): $v_1$")
+        axes[2].axhline(icm[1], color="C0", ls="--", lw=0.8, label="ICM (2.5): $v_2$")
+    axes[2].set_ylabel(label("velocity", "m/s"))
+    axes[2].legend(loc="lower right", fontsize=7)
+    parts = system.energies(tr.q, tr.v)
+    membrane = parts["membrane_kinetic"] + parts["membrane_elastic"] + parts["gas"]
+    stacks = [
+        (parts["rigid_kinetic"], "ball, rigid kinetic"),
+        (parts["body_kinetic"], "body, kinetic"),
+        (membrane, "membrane and gas"),
+        (-tr.damping_work, "damped"),
+        (-tr.impact_work - tr.contact_work, "lost at impacts"),
+    ]
+    axes[3].stackplot(
+        t_ms, *[x * energy_unit for x, _ in stacks], labels=[n for _, n in stacks], alpha=0.8
+    )
+    gravity = parts["gravity"] + parts["body_gravity"]
+    gravity = gravity - gravity[0]
+    axes[3].plot(t_ms, gravity * energy_unit, color="k", lw=0.8, label="gravity gained")
+    axes[3].set_ylabel(label("$E$", "J"))
+    axes[3].set_xlabel(time_label("after the first floor touch"))
+    axes[3].legend(loc="center right", fontsize=7)
+    for event in r.body.events:
+        colour = REFERENCE_COLOUR if event.contact == "floor" else "C1"
+        style = "-" if event.kind == "touch" else ":"
+        for ax in axes:
+            ax.axvline(event.t * to_ms, color=colour, lw=0.5, ls=style, alpha=0.6)
+    b = r.body
+    v1 = "-" if b.v1 is None else f"{b.v1 / r.settings.v0:.3f}"
+    v2 = "-" if b.v2 is None else f"{b.v2 / r.settings.v0:.3f}"
+    fig.suptitle(
+        f"Whole bounce{': ' + title if title else ''}: |v0| = {case.v0:g} m/s, "
+        f"v1/|v0| = {v1}, v2/|v0| = {v2}"
+    )
+    return fig
+
+
+#: Line styles of the lumped baselines in :func:`gap_figure`.
+BASELINE_STYLES = {
+    "icm": ("k", "-", "ICM (2.5)"),
+    "two-spring-dashpot": ("C4", ":", "two spring-dashpots"),
+    "bartz2020": ("C5", ":", "Bartz 2020"),
+    "hertz-viscoelastic": ("C6", ":", "Hertz, viscoelastic"),
+}
+
+
+@styled
+def gap_figure(
+    points: Sequence[tuple[float, object]],
+    parameter: str = "gap",
+    measured: dict[str, float] | None = None,
+    title: str = "",
+    cem: float | None = None,
+) -> Figure:
+    """v1/|v0|, v2/|v0| and the lift-off times against the gap Delta x [mm] or mu.
+
+    ``points`` are (value, report) of the whole bounce (:class:`twoball.BounceReport`
+    with a body, light or not); each report's lumped baselines are drawn as
+    lines (the ICM (2.5) solid black), :attr:`~twoball.BounceReport.icm_solver`
+    (the ICM with the run's own e2 and e12_effective) as open circles where the
+    collisions do not overlap, and ``measured`` (``{"v1": .., "v2": .., "dx": ..}``,
+    Table 1's ratios) as squares.  Lower panel: the body's lift-off after the
+    floor touch and after the largest compression (Fig. 9's t_l), the ball's
+    floor release and the ICM's eq. (2.2).
+    """
+    if not points:
+        raise ValueError("no whole bounces to draw")
+    scale = 1e3 if parameter == "gap" else 1.0
+    x = np.array([v for v, _ in points]) * scale
+    reports = [r for _, r in points]
+    fig = new_figure(6.8, 7.2)
+    axes = fig.subplots(2, 1, sharex=True)
+    v1 = np.array([np.nan if r.v1_ratio is None else r.v1_ratio for r in reports])
+    v2 = np.array([np.nan if r.v2_ratio is None else r.v2_ratio for r in reports])
+    axes[0].plot(x, v1, "o-", color="C1", ms=3, label="whole bounce: $v_1/|v_0|$")
+    axes[0].plot(x, v2, "s-", color="C0", ms=3, label="whole bounce: $v_2/|v_0|$")
+    for name, (colour, style, text) in BASELINE_STYLES.items():
+        rows = [((r.baselines or {}).get("models", {}).get(name) or {}) for r in reports]
+        b1 = np.array([row.get("v1_ratio", np.nan) for row in rows], dtype=float)
+        b2 = np.array([row.get("v2_ratio", np.nan) for row in rows], dtype=float)
+        if np.all(np.isnan(b1)):
+            continue
+        axes[0].plot(x, b1, color=colour, ls=style, lw=1.0, label=text)
+        axes[0].plot(x, b2, color=colour, ls=style, lw=1.0)
+    icm = [r.icm_solver for r in reports]
+    if any(i is not None for i in icm):
+        s1 = np.array([np.nan if i is None else i["v1_ratio"] for i in icm])
+        s2 = np.array([np.nan if i is None else i["v2_ratio"] for i in icm])
+        axes[0].plot(
+            x, s1, "o", mfc="none", color="k", ms=5, label="ICM, e2 and $e_{12,eff}$ of the run"
+        )
+        axes[0].plot(x, s2, "o", mfc="none", color="k", ms=5)
+    if cem is not None:
+        axes[0].plot([0.0], [cem], "D", color="C2", ms=7, label="CEM (massless), the paper")
+    if measured:
+        at = measured.get("dx", 0.0) * scale
+        axes[0].plot([at], [measured["v1"]], "s", color="C3", ms=8, label="measured (Table 1)")
+        axes[0].plot([at], [measured["v2"]], "s", color="C3", ms=8)
+    axes[0].set_ylabel("$v/|v_0|$")
+    axes[0].legend(fontsize=7, loc="best")
+    to_ms = 1e3
+    t_lift = np.array([np.nan if r.t_liftoff_s is None else r.t_liftoff_s for r in reports])
+    t_l = np.array(
+        [
+            np.nan
+            if r.t_liftoff_from_max_compression_s is None
+            else r.t_liftoff_from_max_compression_s
+            for r in reports
+        ]
+    )
+    floor = np.array(
+        [
+            np.nan
+            if r.result.body is None or r.result.body.t_floor_release is None
+            else r.result.body.t_floor_release / r.case.wave_speed
+            for r in reports
+        ]
+    )
+    axes[1].plot(x, t_lift * to_ms, "o-", color="C1", ms=3, label="lift-off after the floor touch")
+    axes[1].plot(
+        x, t_l * to_ms, "^-", color="C2", ms=3, label="$t_l$: after the largest compression"
+    )
+    axes[1].plot(x, floor * to_ms, "--", color="C0", label="the ball leaves the floor")
+    icm_t = [
+        ((r.baselines or {}).get("models", {}).get("icm") or {}).get("t_liftoff_s") for r in reports
+    ]
+    if any(t is not None for t in icm_t):
+        axes[1].plot(
+            x,
+            np.array([np.nan if t is None else t for t in icm_t]) * to_ms,
+            "k-",
+            lw=1.0,
+            label="ICM, eq. (2.2)",
+        )
+    axes[1].set_ylabel(label("time", "ms"))
+    axes[1].set_xlabel(
+        label(r"gap $\Delta x$", "mm") if parameter == "gap" else r"mass ratio $\mu$"
+    )
+    axes[1].legend(fontsize=7, loc="best")
+    case = reports[0].case
+    fig.suptitle(f"Whole bounce{': ' + title if title else ''} (|v0| = {case.v0:g} m/s)")
     return fig

@@ -1,0 +1,177 @@
+"""The whole bounce's model: the body as one coordinate and one row of the drop's system.
+
+Independent values: the cap average by a separate quadrature and in closed form,
+the finite-element cap functional on polynomials, the drop of the ball alone
+(a body that never touches changes nothing), the closed-form event-driven
+finite-mass solver of :mod:`twoball.modal.contact` (limit (a): the floor removed,
+the start at maximal compression), the ICM's algebra (limit (b): an isolated
+collision without gravity), exact energy and momentum books (limit (c)) and the
+integration continued past the stop (nothing touches again).
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+import pytest
+from numpy.polynomial.legendre import leggauss, legval
+from twoball.fem_membrane.floor import axisym_ball, cap_functional_exact
+from twoball.modal.contact.caps import legendre_cap_averages_closed
+from twoball.modal.damping import ModalRatio
+from twoball.modal.floor.ball import legendre_ball
+from twoball.modal.floor.drop import DropSettings, run_drop
+from twoball.modal.floor.restitution import body_liftoff
+from twoball.modal.floor.system import BodyOnTop, floor_system
+from twoball.modal.nonsmooth import MoreauJean
+from twoball.modal.stiffness import Stiffness
+
+import twoball
+
+R, C = 0.12, 320.0
+V0 = 4.1 / (R * C)
+GAMMA = 9.81 / (R * C**2)
+GAS = 6.0 * 1.4 * (77.2e3 + 101325.0) / 77.2e3
+PRESSURISED = Stiffness(gas=GAS, membrane="pressurised")
+THETA = math.asin(0.0262 / R)  # the tennis ball's cap on the basketball
+
+
+MODAL = ModalRatio(0.13)
+
+
+def _whole(modes=32, mu=0.101, e12=0.89, gap=0.0, law=MODAL, gamma=GAMMA, e=0.0):
+    ball = legendre_ball(modes, PRESSURISED, law)
+    body = BodyOnTop(mu, ball.cap_average(THETA), THETA, e12, gap / R)
+    system = floor_system(ball, gamma, e, body)
+    return system, run_drop(system, DropSettings(V0, gamma, 0.01, 60.0))
+
+
+# --- the model ------------------------------------------------------------------------------
+
+
+def test_cap_average_of_the_legendre_modes_against_closed_form_and_quadrature():
+    ball = legendre_ball(24, PRESSURISED, ModalRatio(0.1))
+    b = ball.cap_average(0.3)
+    n = np.array([0, *range(2, 25)])
+    np.testing.assert_allclose(b, legendre_cap_averages_closed(0.3, 24)[n], atol=1e-12)
+    x, w = leggauss(200)  # a second rule: 200 points on [cos 0.3, 1]
+    c = math.cos(0.3)
+    xs = c + (1 - c) * (x + 1) / 2
+    direct = [0.5 * w @ legval(xs, np.eye(25)[k]) for k in n]
+    np.testing.assert_allclose(b, direct, atol=1e-12)
+    assert b[0] == pytest.approx(1.0, abs=1e-15)
+
+
+def test_finite_element_cap_functional_is_exact_on_the_element_polynomials():
+    """P2 holds x and x^2 exactly: their means over [cos theta, 1] in closed form."""
+    from twoball.fem_membrane.floor import axisym_matrices
+
+    _, _, x = axisym_matrices(12, 2)
+    f = cap_functional_exact(12, 2, 0.41)
+    c = math.cos(0.41)
+    assert f.sum() == pytest.approx(1.0, abs=1e-14)
+    assert f @ x == pytest.approx((1 + c) / 2, abs=1e-14)
+    assert f @ x**2 == pytest.approx((1 + c + c * c) / 3, abs=1e-14)
+    ball = axisym_ball(12, 2, PRESSURISED, ModalRatio(0.1))
+    assert abs(ball.cap_average(0.41)[np.argmin(ball.laplace)]) == pytest.approx(1.0, abs=1e-12)
+
+
+def test_the_body_is_one_coordinate_and_one_row_with_the_gap_of_the_caps_mean():
+    ball = legendre_ball(16, PRESSURISED, ModalRatio(0.1))
+    body = BodyOnTop(0.1, ball.cap_average(THETA), THETA, 0.5, 0.2)
+    alone, system = floor_system(ball, GAMMA), floor_system(ball, GAMMA, 0.0, body)
+    p = system.problem
+    assert p.dofs == alone.problem.dofs + 1 and p.count == alone.problem.count + 1
+    assert system.body_coordinate == 1 + ball.modes and system.body_row == ball.points
+    np.testing.assert_array_equal(p.constraints[: ball.points, :-1], alone.problem.constraints)
+    assert p.restitution[-1] == 0.5 and np.all(p.restitution[:-1] == 0.0)
+    assert p.load[-1] == pytest.approx(-0.1 * GAMMA)
+    q, v = system.falling(V0)
+    assert system.body_gap(q) == pytest.approx(0.2)  # Delta x / R above the top
+    assert v[system.body_coordinate] == v[system.centre] == -V0
+    rng = np.random.default_rng(1)
+    q = q + 1e-3 * rng.standard_normal(q.size)
+    a = q[system.membrane]
+    expected = q[-1] - q[0] - 1.0 - ball.cap_average(THETA) @ a
+    assert system.body_gap(q) == pytest.approx(expected, abs=1e-15)
+    with pytest.raises(twoball.ParameterError):
+        BodyOnTop(0.0, ball.cap_average(THETA), THETA)
+    with pytest.raises(twoball.ParameterError):
+        BodyOnTop(0.1, ball.cap_average(THETA), THETA, gap=-1.0)
+
+
+def test_a_body_that_never_touches_leaves_the_drop_unchanged():
+    """A body 5 m above: the floor phase is the ball alone to rounding."""
+    ball = legendre_ball(24, PRESSURISED, ModalRatio(0.13))
+    alone = run_drop(floor_system(ball, GAMMA), DropSettings(V0, GAMMA, 0.01, 30.0))
+    body = BodyOnTop(0.1, ball.cap_average(THETA), THETA, 0.5, 5.0 / R)
+    whole = run_drop(floor_system(ball, GAMMA, 0.0, body), DropSettings(V0, GAMMA, 0.01, 30.0))
+    assert whole.e2 == pytest.approx(alone.e2, abs=1e-13)
+    assert whole.contact_time == pytest.approx(alone.contact_time, abs=1e-12)
+    assert not whole.body.touched and whole.stop == "window"
+
+
+# --- limits ---------------------------------------------------------------------------------
+
+
+@pytest.mark.parametrize("mu", [1e-2, 1e-3])
+def test_limit_a_floor_removed_start_at_compression_gives_the_finite_mass_solver(mu):
+    """The body row on the paper's special case against ``twoball.liftoff(body=Body(mu))``.
+
+    Same modes (N = 30, paper's operator, D = 0.13, Lanczos filter), same cap
+    (a = 26.2 mm), no floor: v1 to 1e-4 relative at dt = 0.0025 and second
+    order in dt (the error falls by >= 3 when dt halves); the last separation
+    within 2e-5 s (separations are not localised: first order).
+    """
+    case = twoball.Case.preset("basketball")
+    ref = twoball.liftoff(case, body=twoball.Body(mu, contact_radius=0.0262))
+    body = BodyOnTop(mu, np.zeros(1), THETA)
+    errors = []
+    for dt in (0.005, 0.0025):
+        run = body_liftoff(Stiffness(), ModalRatio(0.13), 30, case.phi_a, case.gamma, dt, body)
+        v1 = run.v1 * case.scalings.velocity
+        errors.append(abs(v1 / ref.v_liftoff_m_s - 1.0))
+        assert run.t_liftoff / C == pytest.approx(ref.t_liftoff_s, abs=2e-5)
+    assert errors[1] < 1e-4 and errors[0] / errors[1] > 3.0
+
+
+def test_limit_b_an_isolated_collision_without_gravity_is_the_icm():
+    """g -> 0, a large gap: the ball leaves the floor first, then (2.5) holds exactly with
+    the run's own e2 (the ball alone) and e12_effective (momentum books of the collision)."""
+    system, r = _whole(gap=0.25, gamma=1e-12)
+    b = r.body
+    assert b.sequence == "independent" and b.left and not b.body_left_first
+    mu, e2, e12 = 0.101, r.e2, b.e12_effective
+    u1, u2 = -V0, e2 * V0
+    v1 = (mu * u1 + u2 + e12 * (u2 - u1)) / (mu + 1.0)
+    v2 = (mu * u1 + u2 + mu * e12 * (u1 - u2)) / (mu + 1.0)
+    assert b.v1 == pytest.approx(v1, abs=1e-9 * V0)
+    assert b.v2 == pytest.approx(v2, abs=1e-9 * V0)
+    assert 0.0 < e12 < 0.89  # the membrane keeps part of the collision's energy
+
+
+@pytest.mark.parametrize("floor_e", [0.0, 1.0])
+def test_limit_c_energy_and_momentum_at_d_zero_and_e12_one(floor_e):
+    """D = 0, e12 = 1, Delta x = 0: E + W = E0 to 1e-13 of the impact energy (the scheme's
+    identity), momentum with the floor's impulse to 1e-12; with e = 1 at the floor too no
+    energy is lost at all."""
+    system, r = _whole(e12=1.0, law=ModalRatio(0.0), e=floor_e)
+    tr = r.trajectory
+    scale = tr.kinetic[0]
+    assert np.max(np.abs(tr.balance)) < 1e-13 * scale
+    assert r.impulse_balance < 1e-12
+    assert np.max(np.abs(tr.damping_work)) == 0.0
+    if floor_e == 1.0:
+        assert np.max(np.abs(tr.energy - tr.energy[0])) < 1e-12 * scale
+        assert abs(tr.impact_work[-1]) < 1e-13 * scale
+    else:
+        assert tr.impact_work[-1] < 0.0  # the floor's e = 0 touches lose a little
+
+
+def test_after_the_stop_nothing_touches_again():
+    """The run stops when both are apart for good: integrating on finds no impulse."""
+    system, r = _whole(modes=24, gap=0.02)
+    assert r.stop == "flight" and r.body.left
+    tr = r.trajectory
+    rest = MoreauJean(system.problem, 0.01).run(tr.q_final, tr.v_final, 25.0, t0=tr.t[-1])
+    assert not rest.impulse.any()
