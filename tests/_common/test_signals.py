@@ -69,7 +69,9 @@ def test_interrupted_xdmf_export_keeps_the_pair(tmp_path, signum, status):
     ("command", "stage", "signum", "status"),
     [
         ("verify", "staged", signal.SIGINT, 130),
-        ("verify", "commit", signal.SIGTERM, 143),
+        pytest.param(
+            "verify", "commit", signal.SIGTERM, 143, marks=pytest.mark.slow
+        ),  # commit: reproduce
         ("reproduce", "begin", signal.SIGTERM, 143),
         ("reproduce", "commit", signal.SIGINT, 130),
     ],
@@ -89,7 +91,9 @@ def test_interrupted_report_folder_is_old_or_new_whole(tmp_path, command, stage,
         assert snapshot(tmp_path) == old
 
 
-@pytest.mark.parametrize(("signum", "status"), SIGNALS)
+@pytest.mark.parametrize(
+    ("signum", "status"), [SIGNALS[0], pytest.param(*SIGNALS[1], marks=pytest.mark.slow)]
+)
 def test_interrupted_render_leaves_the_earlier_picture(tmp_path, signum, status):
     out = tmp_path / "ball.png"
     out.write_bytes(b"an earlier picture")
@@ -163,8 +167,21 @@ def interrupted_render(folder: Path, signum: int, delay: float) -> tuple[int, st
     return process.returncode, err.decode(), time.monotonic() - sent
 
 
-@pytest.mark.parametrize("delay", [0.2, 0.35, 0.5, 0.65])
-@pytest.mark.parametrize(("signum", "status"), [(signal.SIGINT, 130), (signal.SIGTERM, 143)])
+@pytest.mark.parametrize(
+    ("signum", "status", "delay"),
+    [
+        (signal.SIGINT, 130, 0.35),
+        (signal.SIGTERM, 143, 0.65),
+        *(
+            pytest.param(signum, status, delay, marks=pytest.mark.slow)
+            for signum, status, delays in [
+                (signal.SIGINT, 130, (0.2, 0.5, 0.65)),
+                (signal.SIGTERM, 143, (0.2, 0.35, 0.5)),
+            ]
+            for delay in delays
+        ),
+    ],
+)
 def test_interrupted_render_exits_cleanly_and_keeps_the_earlier_gif(
     tmp_path, signum, status, delay
 ):

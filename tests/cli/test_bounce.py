@@ -112,3 +112,97 @@ def test_sweep_and_plot_refusals(capsys, argv, flag):
         main(argv)
     err = capsys.readouterr().err
     assert stop.value.code == 2 and err.startswith(f"twoball: error: {flag}"), err
+
+
+# --- ``twoball bounce`` with a body and ``twoball sweep --bounce --param gap|mass-ratio``
+
+
+def test_json_of_a_pair_is_the_apis(capsys):
+    code, out, err = run(capsys, "bounce", "--pair", "basketball-tissue", "--modes", "24", "--json")
+    data = json.loads(out)
+    assert code == 0 and "pair basketball-tissue (Table 1 row 5)" in err
+    for key in (
+        "v1_m_s",
+        "v1_ratio",
+        "v2_ratio",
+        "t_liftoff_s",
+        "t_liftoff_from_max_compression_s",
+    ):
+        assert isinstance(data[key], float), key
+    assert isinstance(data["body_left_first"], bool) and "e12_effective" in data
+    api = twoball.bounce(drop=twoball.Drop(modes=24), pair="basketball-tissue").as_dict()
+    assert data["v1_ratio"] == api["v1_ratio"] and data["events"] == api["events"]
+    assert data["baselines"]["models"]["icm"] == api["baselines"]["models"]["icm"]
+
+
+def test_a_body_by_its_options_with_a_gap_and_the_table(capsys):
+    argv = ["bounce", "--modes", "24", "--mass-ratio", "0.05", "--contact-radius", "0.02"]
+    code, out, _ = run(capsys, *argv, "--restitution", "0.6", "--gap", "0.2")
+    assert code == 0
+    for row in ("v1 [m/s], v1/|v0|", "e12 effective", "sequence, body left first", "icm"):
+        assert row in out, row
+    assert "independent" in out
+
+
+def test_export_render_and_plot_of_the_whole_bounce(capsys, tmp_path):
+    files = [tmp_path / "w.pvd", tmp_path / "w.gif", tmp_path / "w.svg"]
+    code, _, _ = run(
+        capsys,
+        "bounce",
+        "--pair",
+        "tennis-coin",
+        "--modes",
+        "16",
+        "--export",
+        str(files[0]),
+        "--render",
+        str(files[1]),
+        "--frames",
+        "3",
+        "--plot",
+        str(files[2]),
+    )
+    assert code == 0
+    assert all(f.stat().st_size > 400 for f in files)
+    assert len(list(tmp_path.glob("w_frames*/*.vtu"))) == 3  # one per frame beside the .pvd
+
+
+def test_sweep_of_the_gap_on_two_workers(capsys, tmp_path):
+    figure = tmp_path / "gap.png"
+    argv = ["sweep", "--bounce", "--pair", "basketball-table-tennis", "--param", "gap"]
+    code, out, _ = run(
+        capsys, *argv, "--values", "0,0.2", "--modes", "16", "--workers", "2", "--plot", str(figure)
+    )
+    assert code == 0 and "Whole bounce against gap" in out and figure.stat().st_size > 1000
+    code, out, _ = run(capsys, *argv, "--values", "0,0.2", "--modes", "16", "--json")
+    points = json.loads(out)["results"]
+    assert [p["value"] for p in points] == [0.0, 0.2]
+    assert points[1]["sequence"] == "independent" and points[0]["body_left_first"] is True
+
+
+@pytest.mark.parametrize(
+    ("argv", "flag"),
+    [
+        (["bounce", "--pair", "bogus"], "--pair"),
+        (["bounce", "--pair", "tennis-coin", "--mass-ratio", "0.1"], "--mass-ratio"),
+        (["bounce", "--pair", "tennis-coin", "--preset", "basketball"], "--preset"),
+        (["bounce", "--gap", "0.05"], "--gap"),
+        (["bounce", "--mass-ratio", "0.1", "--gap", "-1"], "--gap"),
+        (["bounce", "--mass-ratio", "0"], "--mass-ratio"),
+        (["bounce", "--mass-ratio", "0.1", "--restitution", "1.5"], "--restitution"),
+        (["bounce", "--mass-ratio", "0.1", "--energy", "both"], "--energy"),
+        (["bounce", "--export", "x.bogus"], "--export"),
+        (["bounce", "--render", "x.bogus"], "--render"),
+        (["bounce", "--frames", "3"], "--frames"),
+        (["sweep", "--bounce", "--param", "gap", "--values", "0,0.1"], "--gap"),
+        (["sweep", "--param", "gap", "--values", "0,0.1"], "--param"),
+        (["sweep", "--param", "damping", "--values", "0.1", "--gap", "0.1"], "--gap"),
+    ],
+)
+def test_refusals_are_one_line_naming_the_flag(capsys, argv, flag):
+    with pytest.raises(SystemExit) as stop:
+        main(argv)
+    err = capsys.readouterr().err
+    lines = err.strip().splitlines()
+    assert stop.value.code == 2 and len(lines) == 1, err
+    assert lines[0].startswith(f"twoball: error: {flag}") and "Traceback" not in err

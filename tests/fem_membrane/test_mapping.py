@@ -265,7 +265,7 @@ def test_doflocs_match_mesh_nodes():
     assert math.isclose(float(np.abs(basis.doflocs[2]).max()), 1.0)
 
 
-@pytest.mark.parametrize("order", [3, 4])
+@pytest.mark.parametrize("order", [3, pytest.param(4, marks=pytest.mark.slow)])
 def test_t_l_converges_at_2p_and_v_l_at_the_pointwise_rate(order):
     """Exact sphere, levels 3 -> 4: t_l at 2p, v_l at p + 1 | p + 2 (each +-0.3)."""
     case = twoball.Case.preset("basketball")
@@ -276,6 +276,7 @@ def test_t_l_converges_at_2p_and_v_l_at_the_pointwise_rate(order):
     assert abs(v_rate - POINTWISE_RATE[order]) < BAND, (v3, v4, v_rate)
 
 
+@pytest.mark.slow
 def test_the_kink_of_f_is_not_what_limits_the_pole_amplitudes():
     """P4 level 2: per-degree pole amplitudes of F and of a smooth twin err alike.
 

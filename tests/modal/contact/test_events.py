@@ -188,6 +188,7 @@ def test_local_series_is_the_matrix_exponential(mode):
     assert local.scalar(row)(taus) == pytest.approx(reference @ row, rel=1e-12, abs=1e-13)
 
 
+@pytest.mark.slow
 def test_large_closed_form_contact_agrees_with_the_dense_route(monkeypatch):
     """121 Legendre modes (243 states): the large route against the dense one."""
     case = twoball.Case.preset("basketball", modes=120)
