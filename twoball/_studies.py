@@ -294,8 +294,7 @@ def _paper_model(case: Case, what: str) -> None:
     if case.stiff:  # the studies measure against the membrane's l (l + 1) and eq. (3.16)
         raise ParameterError(
             "bending",
-            f"0 with gas none for {what} (the stiffened ball: tests/test_fem_shell.py, "
-            "docs 'Stiffer balls')",
+            f"0 with gas none for {what} (the stiffened ball: docs 'Stiffer balls')",
             case.bending if case.bending else case.gas,
         )
     if case.rayleigh is not None:

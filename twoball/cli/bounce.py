@@ -325,7 +325,7 @@ def register(parser: argparse.ArgumentParser) -> None:
     parser.add_argument(
         "--backend", default="legendre", help="legendre (Legendre modes, default) or fem"
     )
-    add_case_options(parser)
+    add_case_options(parser, window="10 pi / c + 2 gap / |v0|")
     add_drop_options(parser)
     add_contact_options(
         parser, "the whole bounce: mass ratio m1/m2 in (0, 100] of a body on the ball's top"

@@ -10,8 +10,8 @@ from twoball._common.errors import ParameterError, real_number
 from twoball.cli.values import integer, number
 
 
-def add_case_options(parser: argparse.ArgumentParser) -> None:
-    """Add the case options (all SI) to ``parser``."""
+def add_case_options(parser: argparse.ArgumentParser, window: str = "4 pi / c") -> None:
+    """Add the case options (all SI) to ``parser``; ``window`` names the default ``--t-end``."""
     group = parser.add_argument_group("case (SI units; defaults: the preset)")
     group.add_argument(
         "--preset",
@@ -76,7 +76,7 @@ def add_case_options(parser: argparse.ArgumentParser) -> None:
         help="re-contact horizon: the whole window, or dt < t_l as in §3(a)(ii)",
     )
     model.add_argument(
-        "--t-end", type=number, metavar="SECONDS", help="modelled window [s] (default 4 pi / c)"
+        "--t-end", type=number, metavar="SECONDS", help=f"modelled window [s] (default {window})"
     )
     limits = parser.add_argument_group("resource limits (refused before the work starts)")
     limits.add_argument("--max-memory", metavar="SIZE", help="e.g. 8GiB (default: half the RAM)")
