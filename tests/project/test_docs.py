@@ -191,3 +191,38 @@ def test_every_example_shows_a_figure_made_by_the_build(html: Path) -> None:
         page = (html / "auto_examples" / f"{script.stem}.html").read_text(encoding="utf-8")
         assert f"sphx_glr_{script.stem}_001.png" in page, f"{script.name} shows no figure"
         assert (html / "_images" / f"sphx_glr_{script.stem}_001.png").is_file()
+
+
+# --------------------------------------------------------------------------- the README's counts
+
+
+def test_readme_counts_are_what_pytest_collects() -> None:
+    """The quick start's numbers of default and slow tests are today's collection."""
+    readme = (ROOT / "README.md").read_text()
+    default = re.search(r"(\d[\d,]*) tests in about [\d.]+ minutes", readme)
+    slow = re.search(r"The\s+(\d+) long convergence studies", readme)
+    assert default is not None and slow is not None
+    done = subprocess.run(
+        [
+            sys.executable,
+            "-m",
+            "pytest",
+            "--collect-only",
+            "-q",
+            "-m",
+            "slow",
+            "-p",
+            "no:cacheprovider",
+        ],
+        cwd=ROOT / "tests",
+        capture_output=True,
+        text=True,
+        timeout=300,
+    )
+    counts = re.search(r"(\d+)/(\d+) tests collected", done.stdout)
+    assert counts is not None, done.stdout[-2000:] + done.stderr[-2000:]
+    selected, total = int(counts.group(1)), int(counts.group(2))
+    assert (int(default.group(1).replace(",", "")), int(slow.group(1))) == (
+        total - selected,
+        selected,
+    )

@@ -86,7 +86,8 @@ def test_dask_local_cluster_equals_serial_exactly():
 
 
 @pytest.mark.slow
-def test_fig12_sweeps_finish_in_30_s_on_two_workers():
+def test_fig12_sweeps_on_two_workers_are_those_of_one_process():
+    """The 1,200 lift-offs of Fig. 12 on the pool; their wall time: benchmarks/bench_sweeps.py."""
     from twoball.verify.reproduce.cem.fig12 import FIG12_AXES, FIG12_DAMPING, fig12_base
 
     base = fig12_base()
@@ -97,8 +98,10 @@ def test_fig12_sweeps_finish_in_30_s_on_two_workers():
         for x in values
     ]
     assert len(cs) == 1200
-    start = time.perf_counter()
     with Runner(workers=2) as runner:
         points = run_sweep(cs, SweepSolver(), runner=runner)
-    assert time.perf_counter() - start < 30.0
     assert all(p.error is None for p in points)
+    sample = slice(0, None, 40)  # every axis and damping ratio, in one process
+    alone = dicts(run_sweep(cs[sample], SweepSolver()))
+    pooled = [{**d, "index": None} for d in dicts(points[sample])]
+    assert pooled == [{**d, "index": None} for d in alone]
