@@ -36,17 +36,11 @@ def main(argv: list[str] | None = None) -> int:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--runs", type=int, default=3, help="timed runs per runner (default 3)")
     args = parser.parse_args(argv)
-    from twoball.verify.reproduce.cem.fig12 import FIG12_AXES, FIG12_DAMPING, fig12_base
+    from twoball.verify.reproduce.cem.fig12 import fig12_cases
     from twoball.verify.sweeps.parallel import Runner
     from twoball.verify.sweeps.sweeps import SweepSolver, run_sweep
 
-    base = fig12_base()
-    cases = [
-        base.derive(damping=d, **{field: float(x)})
-        for field, values, _ in FIG12_AXES.values()
-        for d in FIG12_DAMPING
-        for x in values
-    ]
+    _, cases = fig12_cases()
 
     def sweep(workers: int) -> float:
         start = time.perf_counter()

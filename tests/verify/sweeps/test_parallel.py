@@ -88,15 +88,9 @@ def test_dask_local_cluster_equals_serial_exactly():
 @pytest.mark.slow
 def test_fig12_sweeps_on_two_workers_are_those_of_one_process():
     """The 1,200 lift-offs of Fig. 12 on the pool; their wall time: benchmarks/bench_sweeps.py."""
-    from twoball.verify.reproduce.cem.fig12 import FIG12_AXES, FIG12_DAMPING, fig12_base
+    from twoball.verify.reproduce.cem.fig12 import fig12_cases
 
-    base = fig12_base()
-    cs = [
-        base.derive(damping=d, **{field: float(x)})
-        for field, values, _ in FIG12_AXES.values()
-        for d in FIG12_DAMPING
-        for x in values
-    ]
+    _, cs = fig12_cases()
     assert len(cs) == 1200
     with Runner(workers=2) as runner:
         points = run_sweep(cs, SweepSolver(), runner=runner)

@@ -94,8 +94,8 @@ def fig12_base() -> Case:
     return preset("basketball").derive(preset_name=None)
 
 
-def fig12_sweeps(ctx: Context) -> dict[tuple[str, float], list]:
-    """The 3 x 4 x 100 solves of Fig. 12, as sweep points keyed by (panel, D)."""
+def fig12_cases() -> tuple[list[tuple[str, float]], list[Case]]:
+    """The 3 x 4 x 100 cases of Fig. 12 and their keys (panel, D), in sweep order."""
     base = fig12_base()
     keys, cases = [], []
     for panel, (field, values, _) in FIG12_AXES.items():
@@ -103,6 +103,12 @@ def fig12_sweeps(ctx: Context) -> dict[tuple[str, float], list]:
             for x in values:
                 keys.append((panel, d))
                 cases.append(base.derive(damping=d, **{field: float(x)}))
+    return keys, cases
+
+
+def fig12_sweeps(ctx: Context) -> dict[tuple[str, float], list]:
+    """The 3 x 4 x 100 solves of Fig. 12, as sweep points keyed by (panel, D)."""
+    keys, cases = fig12_cases()
     points = run_sweep(
         cases,
         SweepSolver("lanczos", "window"),
