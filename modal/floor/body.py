@@ -134,17 +134,25 @@ def measure_body(
     s, z = system.body_coordinate, system.centre
     impulses = tr.impulse[:, system.body_row]
     intervals = contact_intervals(tr.t, impulses, dt)
+    steps = tr.impulse.shape[0]
+
+    def closed(iv: ContactInterval) -> bool:
+        """A contact still carried in the window's last step has not ended."""
+        return iv.last < steps - 1
+
     events: list[BodyEvent] = []
     for iv in floor:
         events.append(BodyEvent("floor", "touch", iv.start, *_pair(tr, z, s, iv.first)))
-        events.append(BodyEvent("floor", "separation", iv.end, *_at(tr, z, s, iv.end)))
+        if closed(iv):
+            events.append(BodyEvent("floor", "separation", iv.end, *_at(tr, z, s, iv.end)))
     for iv in intervals:
         events.append(BodyEvent("body", "touch", iv.start, *_pair(tr, z, s, iv.first)))
-        k = iv.last + 1
-        body_v = _free_velocity(tr, s, k, iv.end, weight)
-        events.append(BodyEvent("body", "separation", iv.end, _at(tr, z, s, iv.end)[0], body_v))
+        if closed(iv):
+            body_v = _free_velocity(tr, s, iv.last + 1, iv.end, weight)
+            at = _at(tr, z, s, iv.end)[0]
+            events.append(BodyEvent("body", "separation", iv.end, at, body_v))
     events.sort(key=lambda e: (e.t, e.contact != "floor", e.kind != "touch"))
-    t_floor = floor[-1].end if floor else None
+    t_floor = floor[-1].end if floor and closed(floor[-1]) else None
     if not intervals:
         return BodyResult(
             False,

@@ -450,3 +450,18 @@ def test_a_gap_sweep_on_dask_gives_the_same_numbers():
     for a, b in zip(serial.reports, on_dask.reports, strict=True):
         assert a.as_dict()["v1_ratio"] == b.as_dict()["v1_ratio"]
     assert "dask" in on_dask.provenance["call"]["arguments"]["runner"]
+
+
+def test_a_short_window_warns_and_claims_no_release():
+    """A window that ends in the floor contact: warnings, no release, no invented separation."""
+    short = twoball.bounce(
+        drop=twoball.Drop(gap=0.01, modes=48),
+        body=twoball.Body(0.1),
+        stepping=twoball.Stepping(t_end=0.001),
+    )
+    data = short.as_dict()
+    assert any("has not left the floor" in w for w in short.warnings)
+    assert data["t_floor_release_s"] is None and data["v1_m_s"] is None
+    assert [(e["contact"], e["kind"]) for e in data["events"]] == [("floor", "touch")]
+    # the ball-alone reference of the baselines runs in its own window
+    assert data["baselines"]["models"]["icm"]["v1_ratio"] > 0
