@@ -37,6 +37,13 @@ MESH_KEYS = ("level", "elements", "order", "pole", "geometry", "initial")
 STEPPING_KEYS = ("t_end", "dt", "scheme", "route")
 BODY_KEYS = ("mass_ratio", "contact_radius", "restitution", "energy")
 OLD_KEYS = (*MESH_KEYS, *STEPPING_KEYS, *BODY_KEYS, "damping_model")
+#: What each bundle's old keywords are replaced by, as the warning names it.
+REPLACEMENTS = {
+    "mesh": "mesh=MeshOptions(...)",
+    "stepping": "stepping=Stepping(...)",
+    "body": "body=Body(...)",
+    "damping": "damping=Rayleigh() (or ModalRatio(...))",
+}
 
 
 class Bundles:
@@ -100,10 +107,11 @@ def bundles(
             raise TypeError(f"{verb}() got an unexpected keyword argument {key!r}")
     given = {k: v for k, v in old.items() if v is not None}
     if given:
+        instead = [REPLACEMENTS[b] for b in known if any(k in known[b] for k in given)]
         warn_deprecated(
-            f"{verb}: the keywords {', '.join(sorted(given))} are deprecated; pass "
-            "mesh=MeshOptions(...), stepping=Stepping(...), body=Body(...) or "
-            "damping=ModalRatio(...)/Rayleigh(...) instead"
+            f"{verb}: the keyword{'s' if len(given) > 1 else ''} {', '.join(sorted(given))} "
+            f"{'are' if len(given) > 1 else 'is'} deprecated; pass {' and '.join(instead)} "
+            "instead"
         )
     fields = {k: old.get(k) for k in MESH_KEYS}
     if any(v is not None for v in fields.values()) or (mesh is not None and "mesh" in takes):

@@ -180,6 +180,20 @@ def test_old_keywords_that_conflict_are_refused_by_name(call, name):
     assert error.value.name == name, str(error.value)
 
 
+def test_the_warning_names_only_the_bundles_of_the_keywords_given():
+    with pytest.warns(DeprecationWarning) as caught:
+        twoball.liftoff(CASE, t_end=0.03)
+    (text,) = [str(w.message) for w in caught]
+    assert text == (
+        "twoball.liftoff: the keyword t_end is deprecated; pass stepping=Stepping(...) instead"
+    )
+    with pytest.warns(DeprecationWarning) as caught:
+        twoball.fem.solve(CASE, mesh="axisym", elements=50, t_end=0.03)
+    (text,) = [str(w.message) for w in caught]
+    assert "mesh=MeshOptions(...) and stepping=Stepping(...)" in text
+    assert "Body" not in text and "Rayleigh" not in text
+
+
 def test_keywords_that_never_existed_are_a_type_error():
     with pytest.raises(TypeError, match="unexpected keyword argument 'levle'"):
         twoball.liftoff(CASE, levle=2)

@@ -565,12 +565,14 @@ OBJECTS: list[tuple[str, Callable[[], Any]]] = [
     ("restitution", lambda: twoball.Body(0.1, restitution=2)),
     ("restitution", lambda: twoball.Body(0.1, restitution=-0.1)),
     ("energy", lambda: twoball.Body(0.1, energy="x")),
-    ("damping", lambda: twoball.ModalRatio(1.0)),  # the ratio is the case's damping D
-    ("damping", lambda: twoball.ModalRatio(-0.1)),
-    ("damping", lambda: twoball.ModalRatio(math.nan)),
+    ("ratio", lambda: twoball.ModalRatio(1.0)),
+    ("ratio", lambda: twoball.ModalRatio(-0.1)),
+    ("ratio", lambda: twoball.ModalRatio(math.nan)),
     ("alpha", lambda: twoball.Rayleigh(alpha=1)),
     ("beta", lambda: twoball.Rayleigh(beta=1)),
     ("alpha", lambda: twoball.Rayleigh(alpha=-1, beta=0)),
+    ("alpha", lambda: twoball.Rayleigh(alpha=-1)),  # the range before the pairing
+    ("beta", lambda: twoball.Rayleigh(beta=math.inf)),
     ("beta", lambda: twoball.Rayleigh(alpha=0, beta=math.nan)),
     ("warp", lambda: R(warp=-1)),
     ("warp", lambda: R(warp=math.nan)),
