@@ -30,7 +30,7 @@ from pathlib import Path
 
 import numpy as np
 from skfem import MeshTri1
-from twoball.fem_membrane.checks import check_level, check_order
+from twoball.fem_membrane.validate import check_level, check_order
 
 from twoball._common.errors import ParameterError
 

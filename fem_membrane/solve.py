@@ -29,15 +29,6 @@ from typing import Any
 import numpy as np
 from twoball.fem_membrane.alpha import GeneralizedAlpha, automatic_step
 from twoball.fem_membrane.build import build_space
-from twoball.fem_membrane.checks import (
-    DAMPING_MODELS,
-    INITIAL_METHODS,
-    TIME_SCHEMES,
-    check_choice,
-    check_dt,
-    check_rho_inf,
-    check_t_end,
-)
 from twoball.fem_membrane.cost import check_fem
 from twoball.fem_membrane.damping import ModalDamping, rayleigh_matrix, rayleigh_table
 from twoball.fem_membrane.eigen import Eigenpairs, eigenpairs
@@ -47,6 +38,15 @@ from twoball.fem_membrane.mesh import SphereMesh
 from twoball.fem_membrane.modal import filtered_displacement, modal_series
 from twoball.fem_membrane.ritz_field import field_times
 from twoball.fem_membrane.space import Discretisation
+from twoball.fem_membrane.validate import (
+    DAMPING_MODELS,
+    INITIAL_METHODS,
+    TIME_SCHEMES,
+    check_choice,
+    check_dt,
+    check_rho_inf,
+    check_t_end,
+)
 from twoball.modal.damping import RAYLEIGH_LOW, Rayleigh
 from twoball.modal.filters import FilterKind, SpectralFilter
 from twoball.modal.initial import check_phi_a

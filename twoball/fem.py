@@ -107,7 +107,7 @@ def solve(
 
     dt_scaled = None
     if dt is not None:
-        from twoball.fem_membrane.checks import check_dt_in_window
+        from twoball.fem_membrane.validate import check_dt_in_window
 
         dt_scaled = check_dt_in_window(dt, case.scalings.time, t_end_dimensionless(case, t_end))
     if spec.kind != "file":  # the budget in the user's units (the model layer checks again)

@@ -81,9 +81,10 @@ class PlotOptions:
     instants : int, optional
         Curves of the waterfall (default 24, as in Fig. 6), >= 2; ``waterfall`` only.
     levels : sequence of int, optional
-        ``eigen`` only: icosphere levels (default 1, 2, 3).
+        ``eigen`` only: icosphere levels in [0, 10] (default 1, 2, 3), as
+        :class:`~twoball.MeshOptions` takes them.
     orders : sequence of int, optional
-        ``eigen`` only: element orders (default 1, 2).
+        ``eigen`` only: element orders 1 to 4 (default 1, 2).
     max_degree : int, optional
         ``eigen`` only: the largest degree l, >= 1.
 
@@ -114,15 +115,24 @@ class PlotOptions:
             isinstance(instants, bool) or not isinstance(instants, int) or instants < 2
         ):
             raise ParameterError("instants", "an integer >= 2", instants)
-        for name in ("levels", "orders"):
+        from twoball.fem_membrane.validate import LEVEL_RANGE, ORDER_RANGE, check_level, check_order
+
+        low, high = LEVEL_RANGE
+        valid = {
+            "levels": f"a non-empty list of sphere levels, integers in [{low}, {high}]",
+            "orders": f"a non-empty list of element orders, each {ORDER_RANGE}",
+        }
+        for name, check in (("levels", check_level), ("orders", check_order)):
             values = getattr(self, name)
             if values is None:
                 continue
-            if isinstance(values, (str, bytes)) or not hasattr(values, "__len__") or not values:
-                raise ParameterError(name, "a non-empty list of integers", values)
-            if any(isinstance(v, bool) or not isinstance(v, int) for v in values):
-                raise ParameterError(name, "a non-empty list of integers", values)
-            object.__setattr__(self, name, tuple(int(v) for v in values))
+            try:
+                if isinstance(values, (str, bytes, set, frozenset, dict)) or len(values) == 0:
+                    raise TypeError
+                checked = tuple(check(v) for v in values)
+            except (ParameterError, TypeError):
+                raise ParameterError(name, valid[name], values) from None
+            object.__setattr__(self, name, checked)
         degree = self.max_degree
         if degree is not None and (
             isinstance(degree, bool) or not isinstance(degree, int) or degree < 1

@@ -1,4 +1,4 @@
-"""Sphere fit of a user's mesh (fem_membrane/surface_checks.py)."""
+"""Sphere fit of a user's mesh (fem_membrane/surface_validate.py)."""
 
 from __future__ import annotations
 
@@ -9,7 +9,7 @@ import numpy as np
 import pytest
 from twoball.fem_membrane.mesh import icosphere, ring_sphere
 from twoball.fem_membrane.mesh_input import load_sphere_mesh
-from twoball.fem_membrane.surface_checks import (
+from twoball.fem_membrane.surface_validate import (
     MAX_NODE_DEVIATION,
     MAX_POLE_DEVIATION,
     MAX_RADIAL_DEVIATION,
