@@ -453,7 +453,7 @@ def test_a_gap_sweep_on_dask_gives_the_same_numbers():
         n_workers=2, threads_per_worker=1, processes=False, dashboard_address=None
     ) as cluster:
         on_dask = twoball.sweep(
-            values, drop=drop, pair="basketball-tennis", scheduler=cluster.scheduler_address
+            values, drop=drop, pair="basketball-tennis", workers=cluster.scheduler_address
         )
     assert on_dask.errors == [None, None]
     for a, b in zip(serial.reports, on_dask.reports, strict=True):

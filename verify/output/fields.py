@@ -38,6 +38,7 @@ from twoball.modal.legendre import legendre_series, legendre_shapes
 from twoball.modal.parameters import Case
 from twoball.modal.report import LiftoffReport, report_liftoff, t_end_dimensionless
 from twoball.modal.series import ModalSeries
+from twoball.verify.output.options import BACKENDS, MAX_FRAMES
 from twoball.verify.output.render import BallScene
 from twoball.verify.output.series import TimeSeries
 
@@ -46,7 +47,6 @@ from twoball._common.errors import ParameterError
 from twoball._common.progress import Step, silent
 
 BackendName = Literal["fem", "legendre"]
-BACKENDS: tuple[str, ...] = ("fem", "legendre")
 #: A generated mesh kind, or the user's mesh (unit sphere, pole on +z; from a file).
 MeshChoice = str | SphereMesh
 
@@ -725,7 +725,6 @@ def check_frame_budget(case: Case, count: int, name: str, field: FieldMesh) -> N
 
 
 DEFAULT_FRAMES = 25
-MAX_FRAMES = 2000
 
 
 def check_frames(frames: object, name: str = "frames") -> int:
