@@ -87,11 +87,11 @@ class GeneralizedAlpha:
     mass, stiffness : sparse matrices
         M and K (dimensionless).
     dt : float
-        Time step > 0 (``--dt``).
+        Time step > 0.
     damping : ModalDamping, sparse matrix or None
         Low-rank modal damping, a sparse C (e.g. Rayleigh), or none.
     rho_inf : float
-        Spectral radius at infinite frequency in [0, 1] (``--rho-inf``).
+        Spectral radius at infinite frequency in [0, 1].
     """
 
     def __init__(

@@ -106,11 +106,11 @@ def axisym_space(elements: int, phi_a: float, order: int = 2) -> Discretisation:
     Parameters
     ----------
     elements : int
-        Number of line elements E >= 2 (``--elements``).
+        Number of line elements E >= 2.
     phi_a : float
         Contact angle [rad] in (pi/2, pi); a vertex is put at x = cos(phi_a).
     order : {1, 2, 3, 4}
-        Polynomial order (``--order``); P3, P4: :class:`ElementLineLagrange`.
+        Polynomial order; P3, P4: :class:`ElementLineLagrange`.
 
     Returns
     -------

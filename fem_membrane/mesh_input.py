@@ -287,14 +287,14 @@ def load_sphere_mesh(
     Parameters
     ----------
     source : str, Path, meshio.Mesh, skfem.MeshTri1, skfem.MeshTri2 or SphereMesh
-        A file in any format meshio reads (``--mesh-file``) or a mesh object;
+        A file in any format meshio reads or a mesh object;
         scikit-fem meshes carry 3-D points as ``p`` of shape (3, N).  Any
         radius and centre, in any length unit.
     pole : sequence of 3 floats or "X,Y,Z", optional
-        Direction from the centre to the pole (``--pole``), in the file's frame;
+        Direction from the centre to the pole, in the file's frame;
         default +z.  The mesh is rotated so that it points to +z.
     order : {1, 2, 3, 4}, optional
-        Geometric (and element) order of the result (``--order``); default the
+        Geometric (and element) order of the result; default the
         source's.  A mesh raised to 2, 3 or 4 gets its new nodes from its
         vertices (equispaced points of each flat triangle projected radially
         onto the sphere, :func:`twoball.fem_membrane.mesh.elevate`; a 6-node
@@ -310,8 +310,8 @@ def load_sphere_mesh(
     Raises
     ------
     ParameterError
-        Naming ``mesh`` (``--mesh-file``) (what is wrong, and by how much), ``--pole`` or
-        ``--order``.
+        Naming ``mesh`` (what is wrong, and by how much), ``pole`` or
+        ``order``.
     """
     direction = check_pole(pole)
     if order is not None:

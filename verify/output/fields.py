@@ -121,7 +121,7 @@ class BallModel:
         return self.t_end * self.case.scalings.time
 
     def backend(self, name: str) -> Backend:
-        """The backend called ``name`` (ParameterError naming ``--backend`` if absent)."""
+        """The backend called ``name`` (ParameterError naming ``backend`` if absent)."""
         if name not in self.backends:
             raise ParameterError("backend", "one of " + ", ".join(self.backends), name)
         return self.backends[name]
@@ -221,7 +221,7 @@ def fem_nodal_series(
     P1/P2 space of eq. (3.9) on the icosphere (or ring sphere) of ``level``, the
     initial displacement (3.10) projected or interpolated, all eigenpairs below the
     cutoff of the spectral filter, and the damping and filter of the closed form
-    (eqs. (3.14)-(3.16)).  ``route`` (``--route``): ``full`` takes every
+    (eqs. (3.14)-(3.16)).  ``route``: ``full`` takes every
     eigenpair below the cutoff, ``krylov`` the Ritz pairs of the rational Krylov
     route, converged on the whole field over [0, ``t_end``]
     (:mod:`twoball.fem_membrane.ritz_field`), ``auto`` (default) Krylov from
