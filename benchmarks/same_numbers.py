@@ -8,9 +8,12 @@ copied there, ``record``); ``check`` on any later commit compares against it.
 and writes their outputs, with the provenance blocks removed, to
 ``benchmarks/same_numbers.json``, together with SHA-256 hashes of every nodal array of
 one XDMF export.  ``python benchmarks/same_numbers.py check`` runs them again and
-compares: numbers bit for bit, and texts (notes, warnings, labels) separately, so a
-change that rewords a warning is told apart from one that moves a number.  It exits 1
-when a number differs.
+compares: numbers bit for bit, and texts (notes, warnings, labels: strings and lists
+of strings) separately, so a change that rewords a warning is told apart from one that
+moves a number.  The numbers that later changes moved on purpose are listed in
+:data:`ALLOWED`, path by path, each with its reason; ``check`` prints them under that
+reason and exits 1 when any other number differs (or appears, or goes) or when any
+exported array's hash differs.
 
 The commands run as ``python -m twoball`` with this interpreter; run the script from
 outside the checkout with the package installed, or with ``PYTHONPATH`` pointing at it.
@@ -22,10 +25,12 @@ import argparse
 import hashlib
 import json
 import os
+import re
 import subprocess
 import sys
 import tempfile
 import xml.etree.ElementTree as ET
+from dataclasses import dataclass, field
 from pathlib import Path
 
 HERE = Path(__file__).resolve().parent
@@ -213,23 +218,158 @@ def collect() -> dict[str, object]:
     return results
 
 
-def _compare(old: object, new: object, where: str, numbers: list[str], texts: list[str]) -> None:
+@dataclass(frozen=True)
+class Allowance:
+    """Differences from the record that are intended: their paths and the reason."""
+
+    name: str
+    reason: str
+    paths: tuple[str, ...]
+
+    def matches(self, path: str) -> bool:
+        """Whether ``path`` (``/command/json/key[i]/...``) lies under one of :attr:`paths`."""
+        return any(_pattern(p).fullmatch(path) for p in self.paths)
+
+
+def _pattern(glob: str) -> re.Pattern[str]:
+    """A path pattern: ``*`` one key or index of any name, ``**`` any rest; ``[`` is literal."""
+    parts = re.split(r"(\*\*|\*)", glob)
+    regex = "".join(
+        ".*" if part == "**" else r"[^/\[]*" if part == "*" else re.escape(part) for part in parts
+    )
+    return re.compile(regex)
+
+
+#: The JSON paths whose numbers may differ from the record, each with its reason.
+#: A number (or a number added or removed) anywhere else must be bit-identical,
+#: and so must every exported array's hash; texts (strings, lists of strings such
+#: as warnings and notes) are listed but never fail the check.
+ALLOWED: tuple[Allowance, ...] = (
+    Allowance(
+        "converged truncation reference",
+        # The reference beside a closed-form lift-off doubles the filtered N from
+        # the result's own N until the lift-off stays on one root, then follows that
+        # root in the unfiltered series (modal/converged.py).  The record's reference
+        # stopped at a fixed N (60 or 120) and gave no values where it had not settled.
+        "the truncation block is the converged series (N doubled until the lift-off "
+        "settles, modal/converged.py); the record stopped at a fixed N of 60 or 120",
+        (
+            "/liftoff-tennis/json/truncation/*",
+            "/liftoff-volleyball/json/truncation/*",
+            "/liftoff-bending-gas/json/truncation/*",
+            "/liftoff-paper-recontact/json/truncation/*",
+            "/liftoff-unfiltered-60/json/truncation/converged_modes",
+        ),
+    ),
+    Allowance(
+        "contact truncation block",
+        # A body of finite mass gets the same trust check as the massless lift-off:
+        # the closed-form contact solution with more modes beside the result.
+        "contact reports gained a truncation block (the closed-form contact solution "
+        "with more modes beside the result); the record had none",
+        (
+            "/contact-0.1/json/truncation",
+            "/contact-0.05-restitution/json/truncation",
+            "/contact-fem-axisym/json/truncation",
+        ),
+    ),
+    Allowance(
+        "Rayleigh reference",
+        # Under a Rayleigh law C = alpha M + beta K every mode has its own ratio; the
+        # converged reference now solves that law, not the constant ratio D, and the
+        # fitted coefficients are reported in SI beside the dimensionless ones.
+        "under --damping-model rayleigh the converged reference solves the Rayleigh law "
+        "(each mode its own ratio), not the ratio D; alpha_1_s and beta_s added (SI)",
+        (
+            "/fem-alpha-rayleigh/json/truncation/*",
+            "/fem-alpha-rayleigh/json/rayleigh/alpha_1_s",
+            "/fem-alpha-rayleigh/json/rayleigh/beta_s",
+        ),
+    ),
+    Allowance(
+        "one phi_a rule per sweep",
+        # A v0, wave-speed or radius sweep takes phi_a from eq. (3.7) at every point;
+        # the record's points at the preset's own |v0| = 4.1 m/s and c = 320 1/s took
+        # the measured 2.6 rad instead, and so every lift-off number there moved.
+        "phi_a follows eq. (3.7) at every point of a v0, wave-speed or radius sweep; "
+        "the record used the measured 2.6 rad at the preset's own |v0| and c",
+        (
+            "/sweep-v0/json/results[2]/**",
+            "/sweep-grid/json/results[1]/**",
+            "/sweep-grid/json/results[3]/**",
+        ),
+    ),
+    Allowance(
+        "mesh file pole check",
+        # Mesh files are checked for a spike or dent at the pole (within 0.3 rad),
+        # and the block of the file reports that deviation.
+        "the mesh file's block reports the radial deviation near the pole (checked "
+        "against 1e-3 within 0.3 rad of it)",
+        ("/fem-mesh-file/json/mesh_file/pole_radial_deviation",),
+    ),
+)
+
+
+def _has_number(value: object) -> bool:
+    """Whether ``value`` holds a number (bool included) anywhere."""
+    if isinstance(value, dict):
+        return any(_has_number(v) for v in value.values())
+    if isinstance(value, list):
+        return any(_has_number(v) for v in value)
+    return isinstance(value, (int, float))
+
+
+def _is_text(value: object) -> bool:
+    """A string, None, or a list of strings (warnings, notes): a text, not a number."""
+    if isinstance(value, list):
+        return all(isinstance(v, str) for v in value)
+    return value is None or isinstance(value, str)
+
+
+@dataclass
+class Differences:
+    """The differences found, sorted into numbers (allowed or not) and texts."""
+
+    numbers: list[str] = field(default_factory=list)
+    allowed: dict[str, list[str]] = field(default_factory=dict)
+    texts: list[str] = field(default_factory=list)
+
+    def add(self, where: str, line: str, numeric: bool) -> None:
+        if not numeric:
+            self.texts.append(line)
+            return
+        for allowance in ALLOWED:
+            if not where.startswith("/export-hashes") and allowance.matches(where):
+                self.allowed.setdefault(allowance.name, []).append(line)
+                return
+        self.numbers.append(line)
+
+
+def _compare(old: object, new: object, where: str, found: Differences) -> None:
     if isinstance(old, dict) and isinstance(new, dict):
         for key in sorted(set(old) | set(new)):
-            if key not in old or key not in new:
-                side = "added" if key not in old else "removed"
-                texts.append(f"{where}/{key}: {side}")
-                continue
-            _compare(old[key], new[key], f"{where}/{key}", numbers, texts)
-    elif isinstance(old, list) and isinstance(new, list) and len(old) == len(new):
-        for i, (a, b) in enumerate(zip(old, new, strict=True)):
-            _compare(a, b, f"{where}[{i}]", numbers, texts)
-    elif old != new:
-        is_number = isinstance(old, (int, float)) or isinstance(new, (int, float))
-        hashed = where.startswith("/export-hashes")
-        (numbers if is_number or hashed or isinstance(old, list) else texts).append(
-            f"{where}: {old!r} -> {new!r}"
-        )
+            if key in old and key in new:
+                _compare(old[key], new[key], f"{where}/{key}", found)
+            else:
+                value, side = (new[key], "added") if key not in old else (old[key], "removed")
+                numeric = _has_number(value) or where.startswith("/export-hashes")
+                found.add(f"{where}/{key}", f"{where}/{key}: {side} {value!r}", numeric)
+        return
+    if isinstance(old, list) and isinstance(new, list) and not (_is_text(old) and _is_text(new)):
+        for i, (a, b) in enumerate(zip(old, new, strict=False)):
+            _compare(a, b, f"{where}[{i}]", found)
+        longer, side = (new, "added") if len(new) > len(old) else (old, "removed")
+        for i in range(min(len(old), len(new)), len(longer)):
+            line = f"{where}[{i}]: {side} {longer[i]!r}"
+            found.add(f"{where}[{i}]", line, _has_number(longer[i]))
+        return
+    if old != new or type(old) is not type(new):
+        text = _is_text(old) and _is_text(new) and not where.startswith("/export-hashes")
+        found.add(where, f"{where}: {old!r} -> {new!r}", not text)
+
+
+def _short(line: str, width: int = 160) -> str:
+    return line if len(line) <= width else line[: width - 3] + "..."
 
 
 def main() -> int:
@@ -242,19 +382,27 @@ def main() -> int:
         print(f"recorded {len(COMMANDS)} commands and one export in {RECORD}")
         return 0
     old = json.loads(RECORD.read_text())
-    numbers: list[str] = []
-    texts: list[str] = []
-    _compare(old, json.loads(json.dumps(results)), "", numbers, texts)
-    for line in texts:
-        print("text   ", line)
-    for line in numbers:
-        print("NUMBER ", line)
+    found = Differences()
+    _compare(old, json.loads(json.dumps(results)), "", found)
+    for line in found.texts:
+        print("text    ", _short(line))
+    for allowance in ALLOWED:
+        lines = found.allowed.get(allowance.name, [])
+        print(f"allowed  {allowance.name}: {len(lines)} number(s) -- {allowance.reason}")
+        for line in lines:
+            print("           ", _short(line))
+        if not lines:
+            print("           (nothing differs here now: the allowance can go)")
+    for line in found.numbers:
+        print("NUMBER  ", _short(line))
     hashes = len(results["export-hashes"])
+    allowed = sum(len(v) for v in found.allowed.values())
     print(
-        f"{len(COMMANDS)} commands, {hashes} exported arrays: "
-        f"{len(numbers)} numbers differ, {len(texts)} texts differ"
+        f"{len(COMMANDS)} commands, {hashes} exported arrays: {len(found.numbers)} numbers "
+        f"differ outside the allow-list, {allowed} inside it ({len(ALLOWED)} reasons), "
+        f"{len(found.texts)} texts differ"
     )
-    return 1 if numbers else 0
+    return 1 if found.numbers else 0
 
 
 if __name__ == "__main__":

@@ -27,13 +27,14 @@ import twoball
 case = twoball.Case.preset("basketball")
 mesh = twoball.MeshOptions("sphere", level=3, order=2)
 view = twoball.RenderOptions(size=(480, 400))
+at_5_ms = twoball.RenderOptions(size=(480, 400), frames=[0.005])
 folder = Path(tempfile.mkdtemp())
 
 # %%
 # Two instants: 5 ms after maximal compression, while the wave runs up the
 # ball, and the lift-off instant of the finite elements (the default).
 pictures = {
-    "t = 5 ms": twoball.render(folder / "ball_5ms.png", case, mesh=mesh, frames=[0.005], view=view),
+    "t = 5 ms": twoball.render(folder / "ball_5ms.png", case, mesh=mesh, view=at_5_ms),
     "lift-off": twoball.render(folder / "ball_liftoff.png", case, mesh=mesh, view=view),
 }
 for title, result in pictures.items():

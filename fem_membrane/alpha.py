@@ -31,9 +31,9 @@ import numpy as np
 import scipy.linalg as sl
 import scipy.sparse as sp
 from scipy.sparse.linalg import splu
-from twoball.fem_membrane.checks import check_dt, check_rho_inf, check_t_end
 from twoball.fem_membrane.damping import ModalDamping
 from twoball.fem_membrane.space import PoleFunctional, pole_value
+from twoball.fem_membrane.validate import check_dt, check_rho_inf, check_t_end
 
 from twoball._common.budget import check_deadline
 from twoball._common.errors import NumericalError
@@ -87,11 +87,11 @@ class GeneralizedAlpha:
     mass, stiffness : sparse matrices
         M and K (dimensionless).
     dt : float
-        Time step > 0 (``--dt``).
+        Time step > 0.
     damping : ModalDamping, sparse matrix or None
         Low-rank modal damping, a sparse C (e.g. Rayleigh), or none.
     rho_inf : float
-        Spectral radius at infinite frequency in [0, 1] (``--rho-inf``).
+        Spectral radius at infinite frequency in [0, 1].
     """
 
     def __init__(

@@ -22,9 +22,9 @@ import numpy as np
 from skfem import CellBasis, ElementLineP1, ElementLineP2, MeshLine1, asm
 from skfem.element import ElementH1
 from skfem.refdom import RefLine
-from twoball.fem_membrane.checks import check_elements, check_order
 from twoball.fem_membrane.forms import AZIMUTH, axisym_mass, axisym_stiffness
 from twoball.fem_membrane.space import Discretisation, line_polar_cosine
+from twoball.fem_membrane.validate import check_elements, check_order
 from twoball.modal.initial import check_phi_a
 
 
@@ -106,11 +106,11 @@ def axisym_space(elements: int, phi_a: float, order: int = 2) -> Discretisation:
     Parameters
     ----------
     elements : int
-        Number of line elements E >= 2 (``--elements``).
+        Number of line elements E >= 2.
     phi_a : float
         Contact angle [rad] in (pi/2, pi); a vertex is put at x = cos(phi_a).
     order : {1, 2, 3, 4}
-        Polynomial order (``--order``); P3, P4: :class:`ElementLineLagrange`.
+        Polynomial order; P3, P4: :class:`ElementLineLagrange`.
 
     Returns
     -------

@@ -3,7 +3,9 @@
 from __future__ import annotations
 
 from twoball.fem_membrane.axisym import axisym_space
-from twoball.fem_membrane.checks import (
+from twoball.fem_membrane.mesh import SphereMesh, icosphere, ring_sphere
+from twoball.fem_membrane.space import Discretisation, sphere_space
+from twoball.fem_membrane.validate import (
     GEOMETRIES,
     MESH_KINDS,
     check_choice,
@@ -11,8 +13,6 @@ from twoball.fem_membrane.checks import (
     check_level,
     check_order,
 )
-from twoball.fem_membrane.mesh import SphereMesh, icosphere, ring_sphere
-from twoball.fem_membrane.space import Discretisation, sphere_space
 from twoball.modal.initial import check_phi_a
 
 from twoball._common.errors import ParameterError
@@ -41,7 +41,7 @@ def build_space(
         :class:`~twoball.fem_membrane.mesh.SphereMesh` (e.g. the ``mesh`` of
         :func:`twoball.fem_membrane.mesh_input.load_sphere_mesh`) is used as it is.
     level : int, optional
-        Refinement level >= 0 of the generated sphere meshes (default 3).
+        Refinement level of the generated sphere meshes, in [0, 10] (default 3).
     elements : int, optional
         Elements >= 2 of the axisymmetric mesh (default 400).
     order : {1, 2, 3, 4}, optional
@@ -66,8 +66,10 @@ def build_space(
         return sphere_space(mesh, None if order is None else check_order(order), geometry)
     mesh = check_choice("mesh", mesh, MESH_KINDS)
     order = check_order(2 if order is None else order)
-    level = DEFAULT_LEVEL if level is None else check_level(level)
-    elements = DEFAULT_ELEMENTS if elements is None else check_elements(elements)
+    if mesh == "axisym":  # the size that applies (callers may pass one number as both)
+        elements = DEFAULT_ELEMENTS if elements is None else check_elements(elements)
+    else:
+        level = DEFAULT_LEVEL if level is None else check_level(level)
     if mesh != "sphere" and geometry == "exact":
         why = "its ring edges follow phi_a" if mesh == "ring" else "its line is exact"
         raise ParameterError("geometry", f"isoparametric with mesh {mesh} ({why})", geometry)

@@ -96,7 +96,7 @@ def check_fem(
     """Refuse a finite-element run (mesh, eigen solve, and stepping for ``alpha``) that cannot fit.
 
     ``dt`` and ``t_end`` are dimensionless; ``time_unit_s`` (1/c in seconds) only
-    turns dt back into the ``--dt`` the user typed for the message.
+    turns dt back into seconds, as the user gave it, for the message.
     """
     dofs = fem_dofs(mesh, level, elements, order)
     dimension = 1 if mesh == "axisym" else 2

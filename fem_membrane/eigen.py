@@ -214,11 +214,11 @@ def eigen_table(
     mesh : {"sphere", "ring", "axisym"}
         Mesh kind (see :func:`twoball.fem_membrane.build.build_space`).
     level, elements : int, optional
-        Sphere level (``--level``) or axisymmetric element count (``--elements``).
+        Sphere level or axisymmetric element count.
     order : {1, 2, 3, 4}
-        Element order (``--order``).
+        Element order.
     count : int
-        Number of nonzero eigenvalues listed (``--count``), >= 1.
+        Number of nonzero eigenvalues listed, >= 1.
     phi_a : float
         Position of the ring / axisymmetric node at the kink (no effect on the
         exact eigenvalues).

@@ -12,7 +12,7 @@ Time step (generalized-alpha, :mod:`twoball.fem_membrane.alpha`)
     eigenvalues of the scheme's amplification matrix for the given rho_inf, and
     warns above :data:`FREQUENCY_ERROR` = 1 %, i.e. ``omega_max dt > 0.35`` for
     rho_inf = 1.  The automatic step (``omega_cut dt = 0.2``) gives 0.33 %: quiet;
-    ``--dt 3e-3`` (``omega_max dt = 29``, c = 320 1/s) aliases every mode above
+    ``dt`` = 3e-3 s (``omega_max dt = 29``, c = 320 1/s) aliases every mode above
     n = 2: warned.
 
 Mesh (eigenvalue error of the retained modes, eq. (3.11))

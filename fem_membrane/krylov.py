@@ -167,7 +167,7 @@ class KrylovInfo:
 
 
 def choose_route(route: str, dofs: int, threshold: int = AUTO_THRESHOLD) -> str:
-    """Resolve ``--route``: ``full`` or ``krylov`` as given; ``auto`` by problem size.
+    """Resolve the ``route``: ``full`` or ``krylov`` as given; ``auto`` by problem size.
 
     ``auto`` takes the Krylov route from ``threshold`` degrees of freedom on (sphere
     P1 level 4 = 2562 dofs is already 1.6x faster, level 5 about 5x) and the full

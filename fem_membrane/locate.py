@@ -1,6 +1,6 @@
 """Where the pole lies in a curved triangle: Lagrange shape functions and point location.
 
-The pole of the ball need not be a mesh node (a user's mesh, a ``--pole``
+The pole of the ball need not be a mesh node (a user's mesh, a ``pole``
 direction): :func:`locate_pole` finds the element the positive z-axis meets and
 the reference coordinates of the meeting point on the curved (order-p) surface,
 and :func:`shape_functions` gives the values there (dimensionless, unit R).

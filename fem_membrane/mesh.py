@@ -30,7 +30,7 @@ from pathlib import Path
 
 import numpy as np
 from skfem import MeshTri1
-from twoball.fem_membrane.checks import check_level, check_order
+from twoball.fem_membrane.validate import check_level, check_order
 
 from twoball._common.errors import ParameterError
 
@@ -200,7 +200,7 @@ def icosphere(level: int, order: int = 1) -> SphereMesh:
     Parameters
     ----------
     level : int
-        Number of four-fold refinements, >= 0 (``--level``).
+        Number of four-fold refinements, in [0, 10].
     order : {1, 2, 3, 4}
         1: flat triangles; 2, 3, 4: curved isoparametric triangles of that
         order with every node on the sphere (:func:`elevate`).
@@ -249,7 +249,7 @@ def ring_sphere(level: int, phi_a: float, order: int = 1) -> SphereMesh:
     Parameters
     ----------
     level : int
-        Size parameter >= 0 (``--level``); n = ``ring_rows(level)`` rows per hemisphere.
+        Size parameter in [0, 10]; n = ``ring_rows(level)`` rows per hemisphere.
     phi_a : float
         Polar angle of the ring [rad], in (0, pi).
     order : {1, 2, 3, 4}

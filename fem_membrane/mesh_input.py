@@ -10,10 +10,10 @@ dimensionless geometry of eq. (3.9), whose pole motion decides lift-off.
 
 The checks (one closed, manifold, connected surface of sphere topology,
 spherical to :data:`MAX_RADIAL_DEVIATION` on average, to
-:data:`~twoball.fem_membrane.surface_checks.MAX_NODE_DEVIATION` at every node and
-:data:`~twoball.fem_membrane.surface_checks.MAX_POLE_DEVIATION` near the pole,
+:data:`~twoball.fem_membrane.surface_validate.MAX_NODE_DEVIATION` at every node and
+:data:`~twoball.fem_membrane.surface_validate.MAX_POLE_DEVIATION` near the pole,
 consistently oriented) and the
-centre and radius fit are in :mod:`twoball.fem_membrane.surface_checks`; each
+centre and radius fit are in :mod:`twoball.fem_membrane.surface_validate`; each
 failure is a :class:`twoball._common.errors.ParameterError` naming ``mesh``
 with what is wrong and by how much.  Cells: ``triangle`` (3-node) or
 ``triangle6`` (6-node), one kind only; other surface cells (quadrilaterals,
@@ -36,9 +36,8 @@ from pathlib import Path
 from typing import Any
 
 import numpy as np
-from twoball.fem_membrane.checks import check_order
 from twoball.fem_membrane.mesh import SphereMesh, elevate, flatten
-from twoball.fem_membrane.surface_checks import (
+from twoball.fem_membrane.surface_validate import (
     MAX_RADIAL_DEVIATION,
     check_sphere,
     check_topology,
@@ -46,8 +45,8 @@ from twoball.fem_membrane.surface_checks import (
     orient_outward,
     refuse,
 )
-
-from twoball._common.errors import ParameterError
+from twoball.fem_membrane.validate import check_order
+from twoball.fem_membrane.validate import check_pole as check_pole_direction
 
 __all__ = ["MAX_RADIAL_DEVIATION", "MeshInput", "check_pole", "load_sphere_mesh", "rotation_to_z"]
 
@@ -248,25 +247,14 @@ def _read(source: MeshSource) -> _Raw:
 
 
 def check_pole(pole: object) -> np.ndarray:
-    """The pole direction: three finite numbers, not all zero (``--pole X,Y,Z``); unit vector.
+    """The pole direction as a unit vector (:func:`~twoball.fem_membrane.validate.check_pole`).
 
-    A string ``"X,Y,Z"`` is accepted as well.  ``None`` means +z.
+    Three finite numbers, not all zero, or the text ``"X,Y,Z"``; ``None`` means +z.
     """
     if pole is None:
         return np.array([0.0, 0.0, 1.0])
-    valid = "three finite numbers X,Y,Z, not all zero"
-    try:
-        if isinstance(pole, str):
-            values = np.array([float(part) for part in pole.split(",")])
-        else:
-            values = np.asarray(pole, dtype=float).ravel()
-    except (TypeError, ValueError):
-        raise ParameterError(POLE_FLAG, valid, pole) from None
-    if values.shape != (3,) or not np.all(np.isfinite(values)):
-        raise ParameterError(POLE_FLAG, valid, pole)
+    values = np.array(check_pole_direction(pole, POLE_FLAG))
     largest = float(np.abs(values).max())
-    if largest == 0.0:
-        raise ParameterError(POLE_FLAG, valid, pole)
     values = values / largest  # 1e308,1e308,1e308 would overflow the length
     return values / float(np.linalg.norm(values))
 
@@ -299,14 +287,14 @@ def load_sphere_mesh(
     Parameters
     ----------
     source : str, Path, meshio.Mesh, skfem.MeshTri1, skfem.MeshTri2 or SphereMesh
-        A file in any format meshio reads (``--mesh-file``) or a mesh object;
+        A file in any format meshio reads or a mesh object;
         scikit-fem meshes carry 3-D points as ``p`` of shape (3, N).  Any
         radius and centre, in any length unit.
     pole : sequence of 3 floats or "X,Y,Z", optional
-        Direction from the centre to the pole (``--pole``), in the file's frame;
+        Direction from the centre to the pole, in the file's frame;
         default +z.  The mesh is rotated so that it points to +z.
     order : {1, 2, 3, 4}, optional
-        Geometric (and element) order of the result (``--order``); default the
+        Geometric (and element) order of the result; default the
         source's.  A mesh raised to 2, 3 or 4 gets its new nodes from its
         vertices (equispaced points of each flat triangle projected radially
         onto the sphere, :func:`twoball.fem_membrane.mesh.elevate`; a 6-node
@@ -322,8 +310,8 @@ def load_sphere_mesh(
     Raises
     ------
     ParameterError
-        Naming ``mesh`` (``--mesh-file``) (what is wrong, and by how much), ``--pole`` or
-        ``--order``.
+        Naming ``mesh`` (what is wrong, and by how much), ``pole`` or
+        ``order``.
     """
     direction = check_pole(pole)
     if order is not None:

@@ -18,32 +18,51 @@ from __future__ import annotations
 
 import os
 from dataclasses import dataclass
-from numbers import Integral
 from pathlib import Path
 from typing import Any
 
+from twoball.fem_membrane.validate import (
+    GEOMETRIES,
+    INITIAL_METHODS,
+    LEVEL_RANGE,
+    MESH_KINDS,
+    ORDERS,
+    check_elements,
+    check_level,
+    check_mesh_source,
+    check_order,
+    check_pole,
+)
+
 from twoball._common.errors import ParameterError
 
-#: Mesh kinds: icosphere, sphere with a ring of edges at phi_a, axisymmetric line.
-MESH_KINDS: tuple[str, ...] = ("sphere", "ring", "axisym")
+#: Kinds on a sphere (the field outputs draw a sphere, not the axisymmetric line).
 SPHERE_KINDS: tuple[str, ...] = ("sphere", "ring")
 DEFAULT_LEVEL = 3  # icosphere refinement level (1280 triangles)
 DEFAULT_ELEMENTS = 400  # elements of the axisymmetric line
 DEFAULT_ORDER = 2  # isoparametric P2
-ORDERS: tuple[int, ...] = (1, 2, 3, 4)
 #: Discrete sphere: the order-p interpolant through the nodes, or the sphere itself.
-GEOMETRIES: tuple[str, ...] = ("isoparametric", "exact")
 DEFAULT_GEOMETRY = "isoparametric"
 FILE = "file"  # the kind of a user's mesh (path, meshio.Mesh, scikit-fem MeshTri)
 #: Finite-element representation of F, eq. (3.10): L2 projection or nodal interpolation.
-INITIAL_METHODS: tuple[str, ...] = ("projection", "interpolation")
 DEFAULT_INITIAL = "projection"
 
-
-def _integer(name: str, value: object, low: int, valid: str) -> int:
-    if isinstance(value, bool) or not isinstance(value, Integral) or int(value) < low:
-        raise ParameterError(name, valid, value)
-    return int(value)
+__all__ = [
+    "DEFAULT_ELEMENTS",
+    "DEFAULT_GEOMETRY",
+    "DEFAULT_INITIAL",
+    "DEFAULT_LEVEL",
+    "DEFAULT_ORDER",
+    "FILE",
+    "GEOMETRIES",
+    "INITIAL_METHODS",
+    "LEVEL_RANGE",
+    "MESH_KINDS",
+    "ORDERS",
+    "SPHERE_KINDS",
+    "MeshOptions",
+    "refuse_mesh_options",
+]
 
 
 @dataclass(frozen=True)
@@ -57,16 +76,19 @@ class MeshOptions:
         axisymmetric line x = cos(phi), or the user's mesh (``file``; implied
         when ``file`` is given).
     level : int, optional
-        Sphere refinement level >= 0 (default 3); not on the line or a file.
+        Sphere refinement level in [0, 10] (default 3; :data:`LEVEL_RANGE`, the
+        most any budget allows); not on the line or a file.
     elements : int, optional
         Elements >= 2 of the line ``axisym`` (default 400); not on a sphere.
     order : {1, 2, 3, 4}, optional
         Element and geometry order (default 2; a file: its own).
     file : path, meshio.Mesh or scikit-fem MeshTri, optional
-        The user's sphere: a file in any format meshio reads (any radius and
-        centre, 3- or 6-node triangles), a ``meshio.Mesh`` or a ``MeshTri``.
+        The user's sphere: an existing file in any format meshio reads (any
+        radius and centre, 3- or 6-node triangles), a ``meshio.Mesh`` or a
+        ``MeshTri``; its contents are checked when the mesh is loaded.
     pole : (x, y, z) or "X,Y,Z", optional
-        Pole direction in the frame of ``file`` (default +z); a file only.
+        Pole direction in the frame of ``file``, three finite numbers not all
+        zero (default +z); a file only.
     geometry : {"isoparametric", "exact"}
         The order-p interpolant through the nodes (default), or the sphere
         itself (radial projection of the flat triangles; not on the ring
@@ -104,18 +126,18 @@ class MeshOptions:
 
     def __post_init__(self) -> None:
         order, geometry, level, elements = self.order, self.geometry, self.level, self.elements
-        if order is not None and (
-            isinstance(order, bool) or not isinstance(order, Integral) or order not in ORDERS
-        ):
-            raise ParameterError("order", "1, 2, 3 or 4", order)
-        if geometry not in GEOMETRIES:
+        if order is not None:
+            check_order(order)
+        if not isinstance(geometry, str) or geometry not in GEOMETRIES:
             raise ParameterError("geometry", "one of " + ", ".join(GEOMETRIES), geometry)
-        if self.initial is not None and self.initial not in INITIAL_METHODS:
+        if self.initial is not None and (
+            not isinstance(self.initial, str) or self.initial not in INITIAL_METHODS
+        ):
             raise ParameterError("initial", "one of " + ", ".join(INITIAL_METHODS), self.initial)
         kind = self.kind
         if kind is None:
             kind = FILE if self.file is not None else "sphere"
-        if kind not in (*MESH_KINDS, FILE):
+        if not isinstance(kind, str) or kind not in (*MESH_KINDS, FILE):
             raise ParameterError(
                 "mesh", "one of " + ", ".join(MESH_KINDS) + " or a mesh file", kind
             )
@@ -125,6 +147,9 @@ class MeshOptions:
             for name, value in (("level", level), ("elements", elements)):
                 if value is not None:
                     raise ParameterError(name, "left out with a mesh file (its own size)", value)
+            check_mesh_source(self.file)
+            if self.pole is not None:
+                check_pole(self.pole)
             self._set(kind=FILE, order=None if order is None else int(order))
             return
         if self.file is not None:
@@ -141,16 +166,14 @@ class MeshOptions:
                     "level", "left out with mesh axisym (its size is elements)", level
                 )
             size = DEFAULT_ELEMENTS if elements is None else elements
-            self._set(
-                kind=kind, order=order, elements=_integer("elements", size, 2, "an integer >= 2")
-            )
+            self._set(kind=kind, order=order, elements=check_elements(size))
             return
         if elements is not None:
             raise ParameterError(
                 "elements", f"left out with mesh {kind} (its size is level)", elements
             )
         size = DEFAULT_LEVEL if level is None else level
-        self._set(kind=kind, order=order, level=_integer("level", size, 0, "an integer >= 0"))
+        self._set(kind=kind, order=order, level=check_level(size))
 
     def _set(self, **values: Any) -> None:
         for name, value in values.items():
@@ -170,7 +193,12 @@ class MeshOptions:
                 raise ParameterError(name, "left out with a MeshOptions (set it there)", value)
             return mesh
         if _is_source(mesh):
-            return cls(FILE, file=mesh, **given)
+            try:
+                return cls(FILE, file=mesh, **given)
+            except ParameterError as error:  # the verb's argument is mesh, not file
+                if error.name != "file":
+                    raise
+                raise ParameterError("mesh", error.valid, error.got) from None
         return cls(mesh, **given)
 
     def require(self, kinds: tuple[str, ...] = MESH_KINDS, *, files: bool = True) -> MeshOptions:

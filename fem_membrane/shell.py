@@ -41,10 +41,10 @@ import scipy.linalg as sl
 import scipy.sparse as sp
 from scipy.sparse.linalg import LinearOperator, eigsh, splu
 from twoball.fem_membrane.alpha import AlphaParameters, GeneralizedAlpha
-from twoball.fem_membrane.checks import check_dt
 from twoball.fem_membrane.damping import ModalDamping
 from twoball.fem_membrane.eigen import Eigenpairs
 from twoball.fem_membrane.space import Discretisation
+from twoball.fem_membrane.validate import check_dt
 from twoball.modal.damping import Rayleigh
 from twoball.modal.series import ModalSeries
 from twoball.modal.stiffness import Stiffness, stiffen

@@ -29,15 +29,6 @@ from typing import Any
 import numpy as np
 from twoball.fem_membrane.alpha import GeneralizedAlpha, automatic_step
 from twoball.fem_membrane.build import build_space
-from twoball.fem_membrane.checks import (
-    DAMPING_MODELS,
-    INITIAL_METHODS,
-    TIME_SCHEMES,
-    check_choice,
-    check_dt,
-    check_rho_inf,
-    check_t_end,
-)
 from twoball.fem_membrane.cost import check_fem
 from twoball.fem_membrane.damping import ModalDamping, rayleigh_matrix, rayleigh_table
 from twoball.fem_membrane.eigen import Eigenpairs, eigenpairs
@@ -47,6 +38,15 @@ from twoball.fem_membrane.mesh import SphereMesh
 from twoball.fem_membrane.modal import filtered_displacement, modal_series
 from twoball.fem_membrane.ritz_field import field_times
 from twoball.fem_membrane.space import Discretisation
+from twoball.fem_membrane.validate import (
+    DAMPING_MODELS,
+    INITIAL_METHODS,
+    TIME_SCHEMES,
+    check_choice,
+    check_dt,
+    check_rho_inf,
+    check_t_end,
+)
 from twoball.modal.damping import RAYLEIGH_LOW, Rayleigh
 from twoball.modal.filters import FilterKind, SpectralFilter
 from twoball.modal.initial import check_phi_a
@@ -300,9 +300,9 @@ def fem_pole_motion(
     Parameters
     ----------
     phi_a : float
-        Contact angle [rad] in (pi/2, pi) (``--phi-a``).
+        Contact angle [rad] in (pi/2, pi).
     damping : float or Rayleigh
-        Damping ratio D in [0, 1) (``--damping``), or a Rayleigh law in units of c.
+        Damping ratio D in [0, 1), or a Rayleigh law in units of c.
     filter : SpectralFilter or {"lanczos", "printed", "none"}
         Spectral filter; a kind name uses N = 30.  Its ``omega_cut`` is the
         eigenvalue cutoff, also for ``"none"``.
@@ -311,36 +311,36 @@ def fem_pole_motion(
         a unit-sphere mesh such as a loaded file's
         (:func:`twoball.fem_membrane.mesh_input.load_sphere_mesh`).
     level : int, optional
-        Sphere refinement level >= 0 (``--level``, default 3).
+        Sphere refinement level in [0, 10] (default 3).
     elements : int, optional
-        Axisymmetric elements >= 2 (``--elements``, default 400).
+        Axisymmetric elements >= 2 (default 400).
     order : {1, 2, 3, 4}, optional
-        P1 on flat triangles or isoparametric P2, P3, P4 (``--order``); None with a
+        P1 on flat triangles or isoparametric P2, P3, P4; None with a
         SphereMesh: the mesh's own order.
     geometry : {"isoparametric", "exact"}
         The order-p interpolant of the sphere, or the sphere itself (icosphere
-        and SphereMesh only; ``--geometry``).
+        and SphereMesh only).
     scheme : {"modal", "alpha"}
-        Modal superposition or generalized-alpha stepping (``--scheme``).
+        Modal superposition or generalized-alpha stepping.
     route : {"auto", "full", "krylov"}
         ``modal`` only: every eigenpair below the cutoff (``full``, the reference),
         the rational Krylov route of :mod:`twoball.fem_membrane.krylov` (``krylov``), or
-        Krylov from 2000 DOFs on (``auto``, default) (``--route``).  ``alpha``
+        Krylov from 2000 DOFs on (``auto``, default).  ``alpha``
         always uses the full eigenpairs.
     damping_model : {"modal", "rayleigh"}
         With a ratio D as ``damping``: ratio D on every mode (eq. (3.14)), or
         Rayleigh ``C = a M + b K`` of ``rayleigh`` (default: fitted to D at the
-        lowest vibrating mode and omega_N, :func:`fit_band`) (``--damping-model``).
+        lowest vibrating mode and omega_N, :func:`fit_band`).
         A Rayleigh law given as ``damping`` is used as it is.
     dt : float, optional
-        Time step > 0 (``--dt``); default ``omega_cut dt <= 0.2``.
+        Time step > 0; default ``omega_cut dt <= 0.2``.
     rho_inf : float
-        Generalized-alpha spectral radius in [0, 1] (``--rho-inf``); 1 =
+        Generalized-alpha spectral radius in [0, 1]; 1 =
         average acceleration.
     t_end : float
-        End of the stepped window (``--t-end``), default 4 pi.
+        End of the stepped window, default 4 pi.
     initial : {"projection", "interpolation"}
-        Galerkin L2 projection of F, or nodal interpolation (``--initial``).
+        Galerkin L2 projection of F, or nodal interpolation.
     rayleigh : Rayleigh, optional
         The law of ``damping_model="rayleigh"`` (units of c); None or fitted:
         fitted to D at :func:`fit_band`.

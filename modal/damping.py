@@ -57,7 +57,7 @@ class ModalRatio:
     >>> twoball.ModalRatio(1.5)
     Traceback (most recent call last):
     ...
-    twoball.ParameterError: damping must be in [0, 1), got 1.5
+    twoball.ParameterError: ratio must be in [0, 1), got 1.5
     """
 
     ratio: float
@@ -65,9 +65,9 @@ class ModalRatio:
     name = "modal"
 
     def __post_init__(self) -> None:
-        value = real_number("damping", self.ratio, "in [0, 1)")
+        value = real_number("ratio", self.ratio, "in [0, 1)")
         if not 0.0 <= value < 1.0:
-            raise ParameterError("damping", "in [0, 1)", self.ratio)
+            raise ParameterError("ratio", "in [0, 1)", self.ratio)
         object.__setattr__(self, "ratio", value)
 
     def ratios(self, omega: Any) -> Any:
@@ -134,11 +134,6 @@ class Rayleigh:
     name = "rayleigh"
 
     def __post_init__(self) -> None:
-        if (self.alpha is None) != (self.beta is None):
-            given = "alpha" if self.beta is None else "beta"
-            raise ParameterError(
-                given, "given together with the other (or neither: fitted to D)", None
-            )
         for field, unit in (("alpha", "1/s"), ("beta", "s")):
             value = getattr(self, field)
             if value is not None:
@@ -147,6 +142,10 @@ class Rayleigh:
                 if number < 0.0:
                     raise ParameterError(field, valid, value)
                 object.__setattr__(self, field, number)
+        if (self.alpha is None) != (self.beta is None):
+            given, other = ("alpha", "beta") if self.beta is None else ("beta", "alpha")
+            valid = f"given together with {other} (or neither: fitted to D)"
+            raise ParameterError(given, valid, getattr(self, given))
 
     @property
     def fitted(self) -> bool:

@@ -12,11 +12,11 @@ from dataclasses import dataclass
 from typing import Literal
 
 import numpy as np
+from twoball.modal.series_options import FILTER_KINDS
 
 from twoball._common.errors import ParameterError
 
 FilterKind = Literal["lanczos", "printed", "none"]
-FILTER_KINDS: tuple[str, ...] = ("lanczos", "printed", "none")
 
 
 def legendre_frequency(n: int | np.ndarray) -> np.ndarray:
@@ -57,7 +57,7 @@ class SpectralFilter:
 
     def __post_init__(self) -> None:
         if self.kind not in FILTER_KINDS:
-            raise ParameterError("sigma", "one of lanczos, printed, none", self.kind)
+            raise ParameterError("sigma", "one of " + ", ".join(FILTER_KINDS), self.kind)
         if int(self.modes) != self.modes or self.modes < 1:
             raise ParameterError("modes", "an integer >= 1", self.modes)
 

@@ -30,21 +30,21 @@ Re-contact window (§3(a)(ii))
     window's end, ``t_end - t_l < v_l / g``: a body already falling back at t_end
     meets the (bounded) pole after the window, unchecked.  Either failing gives a
     warning.  Basketball default: 29.4 ms after t_l > 19.6 ms, apex at 390 ms:
-    quiet; ``--t-end 0.005``: lift-off at 0.48 ms, 4.5 ms of window < 19.6 ms and
+    quiet; ``t_end`` = 0.005 s: lift-off at 0.48 ms, 4.5 ms of window < 19.6 ms and
     the apex (1.1 ms) passed: warned.
 
 Inputs far from any ball (unit and sign slips)
     SI is read as typed; a value far outside any ball is most likely a unit
     slip, and it is said, with the value probably meant.  R outside
-    :data:`BALL_RADIUS` (2 mm to 2 m: a bead to a push ball): ``--radius 120``
+    :data:`BALL_RADIUS` (2 mm to 2 m: a bead to a push ball): ``radius`` = 120
     (meant mm) is a 120 m ball, warned "did you mean 0.12 m (120 mm)?".  ``|v0|``
     above :data:`IMPACT_SPEED` (100 m/s, beyond the fastest ball sports).  A window
     in which nothing could lift off: longer than the flight ``2 |v0| / g`` of a
     body leaving at the impact speed, with the whole window as the re-contact
-    horizon, every lift-off falls back inside it and is rejected (``--t-end 5``,
+    horizon, every lift-off falls back inside it and is rejected (``t_end`` = 5,
     meant ms: 0.84 s of flight for the basketball; "did you mean 5 ms?"); shorter
     than ``pi / c``, near which the membrane's wave lifts the body, nothing lifted
-    off yet (``--t-end 0.001``: 1 ms < 9.8 ms).  These two only when nothing lifted
+    off yet (``t_end`` = 0.001: 1 ms < 9.8 ms).  These two only when nothing lifted
     off -- except that on a membrane the pole stays still until the wave front
     from the contact edge arrives (unit wave speed, eq. (3.9)) at ``phi_a / c``,
     so a lift-off in a window shorter than that (8.1 ms for the basketball) is

@@ -22,11 +22,11 @@ import numpy as np
 from numpy.typing import ArrayLike
 from twoball.modal.roots import bracketed_roots, newton_bracketed
 from twoball.modal.series import PoleState
+from twoball.modal.series_options import HORIZONS
 
 from twoball._common.errors import NumericalError, ParameterError
 
 Horizon = Literal["window", "paper"]
-HORIZONS: tuple[str, ...] = ("window", "paper")
 DEFAULT_T_END = 4.0 * math.pi  # dimensionless window: two transits of the wave (4 pi / c seconds)
 TIME_TOLERANCE = 1e-12  # dimensionless time accuracy of every refined root
 
@@ -183,7 +183,7 @@ def _check_options(gamma: float, t_end: float, horizon: str, samples_per_period:
     if not (math.isfinite(t_end) and t_end > 0):
         raise ParameterError("t_end", "a finite time > 0", t_end)
     if horizon not in HORIZONS:
-        raise ParameterError("recontact", "one of window, paper", horizon)
+        raise ParameterError("recontact", "one of " + ", ".join(HORIZONS), horizon)
     if samples_per_period < 16:
         raise ParameterError("samples_per_period", "an integer >= 16", samples_per_period)
 

@@ -119,7 +119,7 @@ class Pair:
     Attributes
     ----------
     name : str
-        The preset's name (``"basketball-tennis"``), as ``--pair`` takes it.
+        The preset's name (``"basketball-tennis"``), as ``pair=`` takes it.
     lower : str
         The lower ball's preset in :data:`twoball.modal.presets.MEASURED`.
     body : Body
@@ -197,7 +197,7 @@ def _pair(name: str, lower: str, body: str, row: int) -> Pair:
     return Pair(name=name, lower=lower, body=BODIES[body], row=row)
 
 
-#: The six pairs of Table 1, by ``--pair`` name, in the table's order.
+#: The six pairs of Table 1, by name, in the table's order.
 PAIRS: dict[str, Pair] = {
     p.name: p
     for p in (

@@ -45,8 +45,8 @@ Everything here is dimensionless except :func:`stiffness_from_si`.  The
 classical thin-shell theory of Kraus / Baker (refs [22, 23]) couples the
 radial motion to tangential displacements and to the extensional stiffness
 ``E h``; it has two branches and no radial-only equation, so the radial model
-above (the one the issue proposes, with the shell's bending-energy factor) is
-kept: it reduces exactly to the paper's membrane for beta = 0 and no gas.
+above (radial motion only, with the shell's bending-energy factor) is kept:
+it reduces exactly to the paper's membrane for beta = 0 and no gas.
 """
 
 from __future__ import annotations

@@ -16,8 +16,8 @@ Public names (``twoball.__all__``): the verbs :func:`liftoff`, :func:`sweep`,
 :func:`table1`, :func:`report`, :func:`bounce` (the lower ball dropped on the
 floor); the case and the option and model objects :class:`Case`,
 :class:`MeshOptions`, :class:`Stepping`, :class:`Body`, :class:`Membrane`,
-:class:`ModalRatio`, :class:`Rayleigh`, :class:`Drop`, :class:`RenderOptions`,
-:class:`PlotOptions`; the results; :class:`Reporter` (progress),
+:class:`ModalRatio`, :class:`Rayleigh`, :class:`Series`, :class:`Drop`,
+:class:`RenderOptions`, :class:`PlotOptions`; the results; :class:`Reporter` (progress),
 :class:`ParameterError`, :class:`NumericalError`, ``__version__``.  The
 command line ``twoball`` is a thin layer over these.
 """
@@ -27,14 +27,20 @@ from __future__ import annotations
 import importlib as _importlib
 import os as _os
 import types as _types
-from collections.abc import Callable as _Callable
-from typing import TYPE_CHECKING as _TYPE_CHECKING
 
 from twoball._common.lazy import attach as _attach
 from twoball._version import __version__
 
-if _TYPE_CHECKING:  # annotations only: nothing numerical is imported with the package
+# Annotations only: nothing numerical is imported with the package, nor typing
+# (``twoball --help`` stays fast); type checkers read the block below.
+_TYPE_CHECKING = False
+if _TYPE_CHECKING:
+    import os
+    from collections.abc import Callable
+
+    from twoball.modal.damping import ModalRatio
     from twoball.modal.parameters import Case
+    from twoball.modal.series_options import Series
     from twoball.verify.checks.results import VerifyResult
 
 # In a source checkout the parts (modal/, fem_membrane/, verify/) sit beside this
@@ -55,6 +61,7 @@ _NAMES: dict[str, str | tuple[str, str]] = {
     "Body": "twoball.modal.contact.body",
     "ModalRatio": "twoball.modal.damping",
     "Rayleigh": "twoball.modal.damping",
+    "Series": "twoball.modal.series_options",
     "Membrane": "twoball.modal.membrane",
     "RenderOptions": "twoball.verify.output.options",
     "PlotOptions": "twoball.verify.output.options",
@@ -99,11 +106,12 @@ class _VerifyPackage(_types.ModuleType):
         *,
         thorough: bool = False,
         fast: bool = False,
-        sigma: str = "lanczos",
-        recontact: str = "window",
+        damping: ModalRatio | None = None,
+        series: Series | None = None,
         t_end: float | None = None,
-        out: str | _os.PathLike[str] | None = None,
-        progress: _Callable[[str], None] | None = None,
+        out: str | os.PathLike[str] | None = None,
+        progress: Callable[[str], None] | None = None,
+        **deprecated: object,
     ) -> VerifyResult:
         """Every backend against the closed form, with PASS/FAIL per check.
 
@@ -115,17 +123,26 @@ class _VerifyPackage(_types.ModuleType):
             Finer meshes as well (minutes, not seconds).
         fast : bool
             The small configuration of the test suite.
-        sigma, recontact, t_end
-            As in :func:`twoball.liftoff`.
+        damping : ModalRatio, optional
+            The paper's ratio D on every mode (a Rayleigh law is refused by
+            name: the checks measure against eq. (3.16) with the ratio D).
+        series : Series, optional
+            Filter and re-contact horizon, as in :func:`twoball.liftoff`.
+        t_end : float, optional
+            The modelled window [s] (default 4 pi / c).
         out : path, optional
             Report directory to write (report.md, results.json, CSV, PNG).
         progress : callable, optional
             Called with a short text as each step starts (:class:`twoball.Reporter`).
+        **deprecated
+            ``sigma`` and ``recontact`` of version 0.2, with a :class:`DeprecationWarning`.
 
         Returns
         -------
         VerifyResult
             ``passed`` only if every check passes.
+
+        The Examples are those of the function this calls, :func:`twoball._studies.verify`.
         """
         from twoball._studies import verify as run_verify
 
@@ -133,11 +150,12 @@ class _VerifyPackage(_types.ModuleType):
             case,
             thorough=thorough,
             fast=fast,
-            sigma=sigma,
-            recontact=recontact,
+            damping=damping,
+            series=series,
             t_end=t_end,
             out=out,
             progress=progress,
+            **deprecated,
         )
 
 

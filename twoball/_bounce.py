@@ -955,6 +955,7 @@ def bounce_sweep(
     body: Any = None,
     pair: str | None = None,
     stepping: Any = None,
+    damping: Any = None,
     workers: int | None = None,
     scheduler: str | None = None,
     progress: Any = None,
@@ -992,7 +993,7 @@ def bounce_sweep(
     base, _, _ = resolve_pair(case, None, pair) if pair is not None else (case, None, None)
     base = Case.preset("basketball") if base is None else base
     points = [(*point, pair) for point in bounce_points(base, drop, parameter, array, body)]
-    task = BounceTask(stepping=stepping)
+    task = BounceTask(stepping=stepping, damping=damping)
     reports: list[Any] = []
     errors: list[str | None] = []
     with Runner(workers=workers, scheduler=scheduler) as runner:
@@ -1008,6 +1009,8 @@ def bounce_sweep(
         arguments["pair"] = pair
     if stepping is not None:
         arguments["stepping"] = stepping.as_dict()
+    if damping is not None:
+        arguments["damping"] = damping.as_dict()
     arguments["runner"] = where
     provenance = block(base, "twoball.sweep", arguments)
     return BounceSweep(parameter, tuple(float(v) for v in array), reports, errors, provenance)

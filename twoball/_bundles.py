@@ -2,10 +2,11 @@
 
 Every verb takes its options as small validated objects: the mesh as
 :class:`~twoball.MeshOptions` (or a kind name, or the user's mesh), the time
-options as :class:`~twoball.Stepping`, an upper body as :class:`~twoball.Body`
-and the damping law as :class:`~twoball.ModalRatio` or :class:`~twoball.Rayleigh`.
-The loose keywords of version 0.2 (``level=3``, ``t_end=0.02``,
-``mass_ratio=0.1``, ``damping_model="rayleigh"``, ...) are still taken for one
+options as :class:`~twoball.Stepping`, an upper body as :class:`~twoball.Body`,
+the damping law as :class:`~twoball.ModalRatio` or :class:`~twoball.Rayleigh`
+and the filter and re-contact horizon as :class:`~twoball.Series`.  The loose
+keywords of version 0.2 (``level=3``, ``t_end=0.02``, ``mass_ratio=0.1``,
+``damping_model="rayleigh"``, ``sigma="none"``, ...) are still taken for one
 release, with a :class:`DeprecationWarning`, and turned into those objects here.
 """
 
@@ -36,21 +37,40 @@ def warn_deprecated(message: str) -> None:
 MESH_KEYS = ("level", "elements", "order", "pole", "geometry", "initial")
 STEPPING_KEYS = ("t_end", "dt", "scheme", "route")
 BODY_KEYS = ("mass_ratio", "contact_radius", "restitution", "energy")
-OLD_KEYS = (*MESH_KEYS, *STEPPING_KEYS, *BODY_KEYS, "damping_model")
+SERIES_KEYS = ("sigma", "recontact")
+OLD_KEYS = (*MESH_KEYS, *STEPPING_KEYS, *BODY_KEYS, "damping_model", *SERIES_KEYS)
+#: What each bundle's old keywords are replaced by, as the warning names it.
+REPLACEMENTS = {
+    "mesh": "mesh=MeshOptions(...)",
+    "stepping": "stepping=Stepping(...)",
+    "body": "body=Body(...)",
+    "damping": "damping=Rayleigh() (or ModalRatio(...))",
+    "series": "series=Series(...)",
+}
+#: Every bundle a verb may take.
+ALL = ("mesh", "stepping", "body", "damping", "series")
 
 
 class Bundles:
-    """The mesh, stepping, body and damping of one call, each None when not given."""
+    """The mesh, stepping, body, damping and series of one call, each None when not given."""
 
-    __slots__ = ("body", "damping", "mesh", "stepping")
+    __slots__ = ALL
 
-    def __init__(self, mesh: Any, stepping: Any, body: Any, damping: Any) -> None:
+    def __init__(self, mesh: Any, stepping: Any, body: Any, damping: Any, series: Any) -> None:
         self.mesh, self.stepping, self.body, self.damping = mesh, stepping, body, damping
+        self.series = series
+
+    @property
+    def rules(self) -> Any:
+        """The series rules given, or the defaults (:class:`~twoball.Series`)."""
+        from twoball.modal.series_options import Series
+
+        return Series() if self.series is None else self.series
 
     def as_dict(self) -> dict[str, Any]:
         """Each given bundle's ``as_dict()`` (a mesh kind name as it is), for provenance."""
         out: dict[str, Any] = {}
-        for name in ("mesh", "stepping", "body", "damping"):
+        for name in ALL:
             value = getattr(self, name)
             if value is not None:
                 out[name] = value.as_dict() if hasattr(value, "as_dict") else value
@@ -64,8 +84,9 @@ def bundles(
     stepping: Any = None,
     body: Any = None,
     damping: Any = None,
+    series: Any = None,
     old: dict[str, Any] | None = None,
-    takes: tuple[str, ...] = ("mesh", "stepping", "body", "damping"),
+    takes: tuple[str, ...] = ALL,
 ) -> Bundles:
     """Check the bundles' types and fold the old keywords ``old`` into them.
 
@@ -73,7 +94,7 @@ def bundles(
     ----------
     verb : str
         The verb's name, for the warning (``twoball.liftoff``).
-    mesh, stepping, body, damping
+    mesh, stepping, body, damping, series
         As the verb received them.
     old : dict, optional
         Keywords outside the signature: each of :data:`OLD_KEYS` is folded in
@@ -85,6 +106,7 @@ def bundles(
     from twoball.fem_membrane.options import MeshOptions
     from twoball.modal.contact.body import Body
     from twoball.modal.damping import ModalRatio, Rayleigh
+    from twoball.modal.series_options import Series
     from twoball.modal.stepping import Stepping
 
     old = {k: v for k, v in (old or {}).items()}
@@ -93,6 +115,7 @@ def bundles(
         "stepping": STEPPING_KEYS,
         "body": BODY_KEYS,
         "damping": ("damping_model",),
+        "series": SERIES_KEYS,
     }
     allowed = {k for bundle in takes for k in known[bundle]}
     for key in old:
@@ -100,10 +123,11 @@ def bundles(
             raise TypeError(f"{verb}() got an unexpected keyword argument {key!r}")
     given = {k: v for k, v in old.items() if v is not None}
     if given:
+        instead = [REPLACEMENTS[b] for b in known if any(k in known[b] for k in given)]
         warn_deprecated(
-            f"{verb}: the keywords {', '.join(sorted(given))} are deprecated; pass "
-            "mesh=MeshOptions(...), stepping=Stepping(...), body=Body(...) or "
-            "damping=ModalRatio(...)/Rayleigh(...) instead"
+            f"{verb}: the keyword{'s' if len(given) > 1 else ''} {', '.join(sorted(given))} "
+            f"{'are' if len(given) > 1 else 'is'} deprecated; pass {' and '.join(instead)} "
+            "instead"
         )
     fields = {k: old.get(k) for k in MESH_KEYS}
     if any(v is not None for v in fields.values()) or (mesh is not None and "mesh" in takes):
@@ -134,7 +158,14 @@ def bundles(
         damping = Rayleigh() if model == "rayleigh" else None
     if damping is not None and not isinstance(damping, (ModalRatio, Rayleigh)):
         raise ParameterError("damping", "a twoball.ModalRatio or twoball.Rayleigh", damping)
-    return Bundles(mesh, stepping, body, damping)
+    rules = {k: old[k] for k in SERIES_KEYS if old.get(k) is not None}
+    if rules:
+        if series is not None:
+            raise ParameterError(next(iter(rules)), "left out with series (set it there)", None)
+        series = Series(**rules)
+    if series is not None and not isinstance(series, Series):
+        raise ParameterError("series", "a twoball.Series", type(series).__name__)
+    return Bundles(mesh, stepping, body, damping, series)
 
 
 def with_damping(case: Any, law: Any) -> Any:

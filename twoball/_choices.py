@@ -1,57 +1,74 @@
-"""The choices, defaults and helpers the command line offers, from their one home below.
+"""The choices and defaults the command line offers, with the standard library only.
 
-Every name is loaded on first use (PEP 562), so a subcommand imports only what
-its options need: the command line builds its options from these and never
-reaches below the face.  Each value is defined once, in the model or output
-module that acts on it; this table only names where.
+``twoball SUBCOMMAND --help`` builds its parser from these values, so it
+imports no numerical library (numpy, scipy, scikit-fem).  Each value is
+defined for the model in the module that acts on it (named beside it) and
+repeated here; ``tests/api/test_choices.py`` holds every copy equal to its
+source.  The few helpers the command line calls at run time (not for its
+help) are loaded from their module on first use (PEP 562).
 """
 
 from __future__ import annotations
 
 from twoball._common.lazy import attach
 
+# the case and the model
+STANDARD_GRAVITY = 9.81  # modal/scalings.py
+SIGMAS: tuple[str, ...] = ("lanczos", "printed", "none")  # modal/series_options.py
+HORIZONS: tuple[str, ...] = ("window", "paper")  # modal/series_options.py
+GAS_MODELS: tuple[str, ...] = ("none", "isothermal", "adiabatic")  # modal/stiffness.py
+# finite elements and time
+MESH_KINDS: tuple[str, ...] = ("sphere", "ring", "axisym")  # fem_membrane/validate.py
+SPHERE_KINDS: tuple[str, ...] = ("sphere", "ring")  # fem_membrane/options.py
+DEFAULT_LEVEL = 3  # fem_membrane/options.py
+DEFAULT_ELEMENTS = 400  # fem_membrane/options.py
+DEFAULT_ORDER = 2  # fem_membrane/options.py
+LEVEL_RANGE: tuple[int, int] = (0, 10)  # fem_membrane/validate.py
+# the upper body
+ENERGY_OPTIONS: tuple[str, ...] = ("ball", "both")  # modal/contact/body.py
+MAX_MASS_RATIO = 100.0  # modal/contact/body.py
+# the verbs
+FIELD_BACKENDS: tuple[str, ...] = ("fem", "legendre")  # verify/output/options.py
+DEFAULT_FRAMES = 25  # verify/output/fields.py
+FORMATS: tuple[str, ...] = ("xdmf", "vtu", "pvd")  # verify/output/series.py
+DEFAULT_SIZE: tuple[int, int] = (640, 480)  # verify/output/render.py
+DEFAULT_ANIMATION_FRAMES = 60  # twoball/_files.py
+DPI = 300  # verify/output/figures/__init__.py
+WATERFALL_INSTANTS = 24  # verify/output/figures/waterfall.py
+SWEEP_PARAMETERS: dict[str, str] = {  # verify/sweeps/sweeps.py
+    "damping": "damping",
+    "v0": "v0",
+    "wave-speed": "wave_speed",
+    "radius": "radius",
+    "modes": "modes",
+    "mass-ratio": "mass_ratio",
+    "bending": "bending",
+}
+STUDIES: tuple[str, ...] = ("h", "order", "modes", "dt")  # verify/studies/result.py
+REPRODUCTION_PARTS: tuple[str, ...] = (  # verify/reproduce/driver.py (PARTS)
+    "table2",
+    "fig6",
+    "fig10",
+    "fig11",
+    "fig12",
+    "thresholds",
+    "table1",
+    "icm",
+    "contact",
+    "whole_table1",
+    "whole_gap",
+    "whole_timing",
+)
+REPRODUCTION_DIR = "twoball-reproduction"  # verify/reproduce/driver.py (DEFAULT_OUT)
+REPRODUCTION_REPORT = "reproduction.md"  # verify/reproduce/driver.py (REPORT)
+
 __getattr__, __dir__ = attach(
     __name__,
     {
-        # the case and the model
-        "STANDARD_GRAVITY": "twoball.modal.scalings",
-        "SIGMAS": ("twoball.modal.filters", "FILTER_KINDS"),
-        "HORIZONS": "twoball.modal.liftoff",
-        "GAS_MODELS": "twoball.modal.stiffness",
         "flexural_rigidity": "twoball.modal.stiffness",
-        "DAMPING_LAWS": "twoball.modal.damping",
-        # finite elements and time
-        "MESH_KINDS": "twoball.fem_membrane.options",
-        "SPHERE_KINDS": "twoball.fem_membrane.options",
-        "DEFAULT_LEVEL": "twoball.fem_membrane.options",
-        "DEFAULT_ELEMENTS": "twoball.fem_membrane.options",
-        "DEFAULT_ORDER": "twoball.fem_membrane.options",
-        "INITIAL_METHODS": "twoball.fem_membrane.options",
-        "SCHEMES": "twoball.modal.stepping",
-        "ROUTES": "twoball.modal.stepping",
-        # the upper body
-        "ENERGY_OPTIONS": "twoball.modal.contact.body",
-        "MAX_MASS_RATIO": "twoball.modal.contact.body",
-        "PAIRS": "twoball.modal.pairs",
         "pair": "twoball.modal.pairs",
-        # the verbs
-        "BACKENDS": "twoball._liftoff",
-        "FIELD_BACKENDS": ("twoball.verify.output.fields", "BACKENDS"),
-        "DEFAULT_FRAMES": "twoball.verify.output.fields",
-        "MAX_FRAMES": "twoball.verify.output.fields",
         "parse_times": "twoball.verify.output.fields",
-        "FORMATS": "twoball.verify.output.series",
-        "DEFAULT_SIZE": "twoball.verify.output.render",
-        "DEFAULT_ANIMATION_FRAMES": "twoball._files",
-        "PLOT_KINDS": "twoball.verify.output.figures",
-        "DPI": "twoball.verify.output.figures",
-        "WATERFALL_INSTANTS": "twoball.verify.output.figures.waterfall",
-        "SWEEP_PARAMETERS": "twoball.verify.sweeps.sweeps",
         "make_grid": "twoball.verify.sweeps.sweeps",
-        "STUDIES": "twoball.verify.studies.result",
-        "REPRODUCTION_PARTS": ("twoball.verify.reproduce.driver", "PARTS"),
-        "REPRODUCTION_DIR": ("twoball.verify.reproduce.driver", "DEFAULT_OUT"),
-        "REPRODUCTION_REPORT": ("twoball.verify.reproduce.driver", "REPORT"),
     },
 )
 

@@ -15,7 +15,7 @@ from dataclasses import dataclass, field, replace
 from pathlib import Path
 from typing import Any
 
-from twoball._bundles import bundles, warn_deprecated
+from twoball._bundles import bundles, warn_deprecated, with_damping
 from twoball._common.budget import timed
 from twoball._common.errors import ParameterError
 from twoball._common.progress import Step, check_progress, silent
@@ -37,16 +37,20 @@ def _case(case: Case | None) -> Case:
     return case
 
 
-def _field_bundles(verb: str, mesh: Any, stepping: Any, body: Any, old: dict[str, Any]) -> Any:
-    """The bundles of a field verb: mesh, stepping (window and route only) and body."""
+def _field_bundles(
+    verb: str, mesh: Any, stepping: Any, body: Any, damping: Any, series: Any, old: dict[str, Any]
+) -> Any:
+    """The bundles of a field verb: mesh, stepping (window and route only), body, damping
+    law and series rules."""
     times = old.pop("times", None)
     given = bundles(
         verb,
         mesh=mesh,
         stepping=stepping,
         body=body,
+        damping=damping,
+        series=series,
         old=old,
-        takes=("mesh", "stepping", "body"),
     )
     if given.stepping is not None:
         given.stepping.refuse("with field outputs (modal superposition)", "scheme", "dt")
@@ -60,7 +64,7 @@ def _window(given: Any) -> tuple[float | None, str]:
     return stepping.t_end, stepping.route or "auto"
 
 
-def _frames(frames: Any, legacy_times: Any) -> tuple[int | None, Sequence[float] | None]:
+def _frames(frames: Any, legacy_times: Any = None) -> tuple[int | None, Sequence[float] | None]:
     """``frames`` as a count or as times [s] (the old ``times`` keyword folded in)."""
     if legacy_times is not None:
         warn_deprecated("the keyword times is deprecated; pass the frame times as frames=[...]")
@@ -85,10 +89,9 @@ def export(
     mesh: Any = None,
     stepping: Any = None,
     body: Any = None,
+    damping: Any = None,
+    series: Any = None,
     frames: int | Sequence[float] | None = None,
-    format: str | None = None,
-    sigma: str = "lanczos",
-    recontact: str = "window",
     progress: Step | None = None,
     **deprecated: Any,
 ) -> ExportResult:
@@ -97,7 +100,8 @@ def export(
     Parameters
     ----------
     out : path
-        Main output file: ``.xdmf`` (with ``.h5``), ``.pvd`` (with ``.vtu`` per frame) or ``.vtu``.
+        Main output file; its suffix chooses the format: ``.xdmf`` (with
+        ``.h5``), ``.pvd`` (with ``.vtu`` per frame) or ``.vtu``.
     case : Case, optional
         The impact (default the basketball preset).
     backend : {"fem", "legendre"}
@@ -126,17 +130,20 @@ def export(
         membrane coupled to it (full eigen route), each frame gets field data
         ``s_m`` [m], ``s_t_m_s`` [m/s] and ``contact`` (1/0), and the text
         ``contact_events`` lists every event (JSON, SI).
+    damping : ModalRatio or Rayleigh, optional
+        The damping law, as in :func:`twoball.liftoff` (a Rayleigh law is
+        refused with a body: the contact model takes the ratio D).
+    series : Series, optional
+        Filter and re-contact horizon, as in :func:`twoball.liftoff`.
     frames : int or sequence of float, optional
         A count of frames evenly spaced over [0, t_end] (default 25, plus the
         lift-off), or the frame times [s].
-    format : {"xdmf", "pvd", "vtu"}, optional
-        Default from the suffix of ``out``.
-    sigma, recontact
-        As in :func:`twoball.liftoff`.
     progress : callable, optional
         Called with a short text as each stage starts (:class:`~twoball.Reporter`).
     **deprecated
-        The keywords of version 0.2, with a :class:`DeprecationWarning`.
+        The keywords of version 0.2 (``level``, ``times``, ``sigma``, ...) and
+        ``format`` (the suffix of ``out`` chooses it), with a
+        :class:`DeprecationWarning`.
 
     Every file carries the case and the provenance; field names end in their
     unit (``u_m``, ``u_t_m_s``, ``u_tt_m_s2``, ...).
@@ -171,9 +178,17 @@ def export(
 
     check_path_type(out)
     check_progress(progress)
-    given, legacy_times = _field_bundles("twoball.export", mesh, stepping, body, deprecated)
-    case = _case(case)
-    fmt = series_format(out, format)
+    legacy_format = deprecated.pop("format", None)
+    if legacy_format is not None:
+        warn_deprecated(
+            "twoball.export: the keyword format is deprecated; pass out with its suffix "
+            "(.xdmf, .pvd or .vtu)"
+        )
+    given, legacy_times = _field_bundles(
+        "twoball.export", mesh, stepping, body, damping, series, deprecated
+    )
+    case = with_damping(_case(case), given.damping)
+    fmt = series_format(out, legacy_format)
     target = check_file(out)
     check_side_entries(target, fmt)
     check_backend(backend)
@@ -201,8 +216,8 @@ def export(
         field,
         backends=solved,
         body=given.body,
-        sigma=sigma,
-        recontact=recontact,
+        sigma=given.rules.sigma,
+        recontact=given.rules.recontact,
         t_end_s=t_end,
         route=route,
         progress=say,
@@ -217,7 +232,7 @@ def export(
     series = field_series(model, selected, backend)
     series = series if given.body is None else contact_series(series, model, backend)
     arguments = {"out": out, "backend": backend, "frames": _shown(frames, times), "format": fmt}
-    arguments |= {"sigma": sigma, "recontact": recontact, **given.as_dict()}
+    arguments |= given.as_dict()
     provenance = block(case, "twoball.export", arguments) | mesh_block(field)
     series = replace(series, text={**series.text, "provenance": json.dumps(provenance)})
     say(f"writing {target}")
@@ -236,6 +251,13 @@ def export(
     )
 
 
+def check_export_format(out: str | os.PathLike[str], fmt: str) -> str:
+    """``fmt`` checked against the suffix of ``out``, which chooses the format of :func:`export`."""
+    from twoball.verify.output.series import series_format
+
+    return series_format(out, fmt)
+
+
 def _shown(frames: int | None, times: Any) -> Any:
     return frames if times is None else [float(t) for t in times]
 
@@ -249,10 +271,9 @@ def render(
     mesh: Any = None,
     stepping: Any = None,
     body: Any = None,
-    frames: int | Sequence[float] | None = None,
+    damping: Any = None,
+    series: Any = None,
     view: Any = None,
-    sigma: str = "lanczos",
-    recontact: str = "window",
     progress: Step | None = None,
     **deprecated: Any,
 ) -> RenderResult:
@@ -270,17 +291,16 @@ def render(
         As in :func:`export` (``mesh.initial`` needs ``backend="fem"``); with a
         body it is drawn at its height s(t) over the coupled membrane, the
         caption saying when it is in contact.
-    frames : int or sequence of float, optional
-        A PNG: one time [s] in a sequence (default the lift-off).  An
-        animation: a count of frames over [0, t_end] (default 60), or the
-        frame times [s].
-    view : RenderOptions, optional
-        Warp, image size and frames per second (:class:`~twoball.RenderOptions`).
-    sigma, recontact, progress
+    damping, series, progress
         As in :func:`export`.
+    view : RenderOptions, optional
+        The frames drawn (a PNG: one time, default the lift-off; an
+        animation: a count, default 60, or the times), warp, image size and
+        frames per second (:class:`~twoball.RenderOptions`).
     **deprecated
         The keywords of version 0.2 (``time``, ``warp``, ``size``, ``fps``,
-        ``level``, ...), with a :class:`DeprecationWarning`.
+        ``level``, ``sigma``, ...) and ``frames`` (now ``view.frames``), with a
+        :class:`DeprecationWarning`.
 
     Examples
     --------
@@ -313,27 +333,39 @@ def render(
     check_path_type(out)
     check_progress(progress)
     time = deprecated.pop("time", None)
-    legacy_view = {k: deprecated.pop(k) for k in ("warp", "size", "fps") if k in deprecated}
-    given, legacy_times = _field_bundles("twoball.render", mesh, stepping, body, deprecated)
-    if time is not None or any(v is not None for v in legacy_view.values()):
+    keys = ("warp", "size", "fps", "frames")
+    legacy_view = {k: deprecated.pop(k) for k in keys if deprecated.get(k) is not None}
+    given, legacy_times = _field_bundles(
+        "twoball.render", mesh, stepping, body, damping, series, deprecated
+    )
+    old = {**legacy_view, "time": time, "times": legacy_times}
+    names = sorted(k for k, v in old.items() if v is not None)
+    if names:
         warn_deprecated(
-            "twoball.render: time, warp, size and fps are deprecated; pass frames=[time] "
-            "and view=RenderOptions(...)"
+            f"twoball.render: the keyword{'s' if len(names) > 1 else ''} {', '.join(names)} "
+            f"{'are' if len(names) > 1 else 'is'} deprecated; pass view=RenderOptions(...) "
+            "(frames=[t] for one time)"
         )
+    if legacy_times is not None:
+        if "frames" in legacy_view:
+            raise ParameterError("frames", "left out when times are given", legacy_view["frames"])
+        legacy_view["frames"] = legacy_times
     if time is not None:
-        if frames is not None or legacy_times is not None:
+        if "frames" in legacy_view:
             raise ParameterError("time", "left out with frames", time)
         from twoball._common.errors import real_number
 
-        frames = [real_number("time", time, "a time >= 0 in seconds within the modelled window")]
-    if any(v is not None for v in legacy_view.values()):
+        legacy_view["frames"] = [
+            real_number("time", time, "a time >= 0 in seconds within the modelled window")
+        ]
+    if legacy_view:
         if view is not None:
-            raise ParameterError("view", "left out with warp, size or fps", view)
+            raise ParameterError("view", "left out with " + ", ".join(sorted(legacy_view)), view)
         view = RenderOptions(**legacy_view)
     view = RenderOptions() if view is None else view
     if not isinstance(view, RenderOptions):
         raise ParameterError("view", "a twoball.RenderOptions", type(view).__name__)
-    case = _case(case)
+    case = with_damping(_case(case), given.damping)
     kind = image_kind(out)
     target = check_file(out)
     size = DEFAULT_SIZE if view.size is None else view.size
@@ -348,7 +380,7 @@ def render(
             "left out without the fem backend (it sets the FE initial state)",
             given.mesh.initial,
         )
-    count, times = _frames(frames, legacy_times)
+    count, times = _frames(view.frames)
     if kind == ".png" and count is not None:
         raise ParameterError(
             "frames", "one time [s] in a list with .png (a count: .gif or .mp4)", count
@@ -369,8 +401,8 @@ def render(
         field,
         backends=(backend,),
         body=given.body,
-        sigma=sigma,
-        recontact=recontact,
+        sigma=given.rules.sigma,
+        recontact=given.rules.recontact,
         t_end_s=t_end,
         route=route,
         progress=say,
@@ -385,7 +417,7 @@ def render(
     render_scene(target, scene, warp=view.warp, size=size, fps=fps, progress=drawn)
     shown = round_size(size) if kind == ".mp4" else size
     arguments = {"out": out, "backend": backend, "frames": _shown(count, times)}
-    arguments |= {"view": view.as_dict(), "sigma": sigma, "recontact": recontact}
+    arguments |= {"view": view.as_dict()}
     return RenderResult(
         file=target,
         times_s=[float(t) for t in times],
@@ -405,13 +437,12 @@ def plot(
     out: str | os.PathLike[str],
     case: Case | None = None,
     *,
-    backends: Sequence[str] | None = None,
     mesh: Any = None,
     stepping: Any = None,
     body: Any = None,
+    damping: Any = None,
+    series: Any = None,
     figure: Any = None,
-    sigma: str | None = None,
-    recontact: str | None = None,
     progress: Step | None = None,
     **deprecated: Any,
 ) -> PlotResult:
@@ -429,22 +460,28 @@ def plot(
         writes (``.pdf``, ``.svg``, ``.eps``, ``.png``, ...).
     case : Case, optional
         The impact (default the basketball preset); refused by ``eigen``.
-    backends : sequence of {"fem", "legendre"}, optional
-        Solvers drawn by ``waterfall`` and ``pole`` (default both).
     mesh, stepping : optional
         As in :func:`export` (``waterfall`` and ``pole`` only; a mesh file too).
     body : Body, optional
         ``pole`` only: an upper body of finite mass; the panels show the cap
         average of the coupled membrane with the body's path s(t), every impact
         and separation marked.
+    damping : ModalRatio or Rayleigh, optional
+        The damping law, as in :func:`twoball.liftoff` (not with ``eigen``);
+        ``precursor`` draws it beside the other law matched to it.
+    series : Series, optional
+        Filter and re-contact horizon, as in :func:`twoball.liftoff` (not with
+        ``eigen``; ``waterfall`` draws u(phi) at fixed instants and takes the
+        whole window as horizon).
     figure : PlotOptions, optional
-        Resolution, waterfall instants, eigenvalue meshes and degree
-        (:class:`~twoball.PlotOptions`).
-    sigma, recontact, progress
-        As in :func:`export` (not with ``eigen``).
+        The solvers drawn, resolution, waterfall instants, eigenvalue meshes
+        and degree (:class:`~twoball.PlotOptions`).
+    progress : callable, optional
+        Called with a short text as each stage starts (:class:`~twoball.Reporter`).
     **deprecated
         The keywords of version 0.2 (``dpi``, ``instants``, ``levels``,
-        ``orders``, ``max_degree``, ``level``, ...), with a :class:`DeprecationWarning`.
+        ``orders``, ``max_degree``, ``level``, ``sigma``, ...) and ``backends``
+        (now ``figure.backends``), with a :class:`DeprecationWarning`.
 
     Every argument that the chosen ``kind`` does not use is refused
     (:class:`~twoball.ParameterError`), never ignored.  ``pole`` with both
@@ -457,13 +494,13 @@ def plot(
     >>> import tempfile, pathlib, twoball
     >>> out = pathlib.Path(tempfile.mkdtemp()) / "pole.svg"
     >>> mesh = twoball.MeshOptions("sphere", level=1)
-    >>> result = twoball.plot("pole", out, mesh=mesh, backends=["legendre"])
+    >>> figure = twoball.PlotOptions(backends=["legendre"])
+    >>> result = twoball.plot("pole", out, mesh=mesh, figure=figure)
     >>> result.file.name, result.rows[0][0]
     ('pole.svg', 'lift-off (legendre)')
     """
     from twoball._common.staging import check_file
     from twoball.verify.output.fields import (
-        BACKENDS,
         ball_model,
         check_field_body,
         check_frame_budget,
@@ -476,21 +513,21 @@ def plot(
     from twoball.verify.output.figures.eigen import eigen_figure, eigen_table
     from twoball.verify.output.figures.pole import pole_figure
     from twoball.verify.output.figures.waterfall import WATERFALL_INSTANTS, waterfall_figure
-    from twoball.verify.output.options import PlotOptions
+    from twoball.verify.output.options import BACKENDS, PlotOptions
 
     check_path_type(out)
     check_progress(progress)
     legacy = {k: deprecated.pop(k) for k in tuple(deprecated) if k in PLOT_OPTION_KEYS}
-    given, _ = _field_bundles("twoball.plot", mesh, stepping, body, deprecated)
-    if any(v is not None for v in legacy.values()):
-        import warnings
-
+    legacy = {k: v for k, v in legacy.items() if v is not None}
+    given, _ = _field_bundles("twoball.plot", mesh, stepping, body, damping, series, deprecated)
+    if legacy:
+        names = sorted(legacy)
         warn_deprecated(
-            "twoball.plot: " + ", ".join(sorted(legacy)) + " are deprecated; pass "
-            "figure=PlotOptions(...)"
+            f"twoball.plot: the keyword{'s' if len(names) > 1 else ''} {', '.join(names)} "
+            f"{'are' if len(names) > 1 else 'is'} deprecated; pass figure=PlotOptions(...)"
         )
         if figure is not None:
-            raise ParameterError("figure", "left out with " + ", ".join(sorted(legacy)), figure)
+            raise ParameterError("figure", "left out with " + ", ".join(names), figure)
         figure = PlotOptions(**legacy)
     figure = PlotOptions() if figure is None else figure
     if not isinstance(figure, PlotOptions):
@@ -504,6 +541,7 @@ def plot(
         raise ParameterError(
             "mass_ratio", f"left out with kind {kind} (pole only)", given.body.mass_ratio
         )
+    rules = given.rules
     rows: list[tuple[str, str]] = []
     reports: dict[str, LiftoffReport] = {}
     warnings: list[str] = []
@@ -517,7 +555,7 @@ def plot(
             precursor_rows,
         )
 
-        refused = {"backends": backends, "mesh": given.mesh, "instants": figure.instants}
+        refused = {"backends": figure.backends, "mesh": given.mesh, "instants": figure.instants}
         refused |= {"levels": figure.levels, "orders": figure.orders}
         refused |= {"max_degree": figure.max_degree}
         for name, value in refused.items():
@@ -533,12 +571,10 @@ def plot(
             )
         if given.stepping is not None:
             given.stepping.refuse("with kind precursor (the closed form)", "route")
-        case = _case(case)
-        sigma = "lanczos" if sigma is None else sigma
-        recontact = "window" if recontact is None else recontact
+        case = with_damping(_case(case), given.damping)
         window = t_end_dimensionless(case, t_end)
         say("the closed form under each damping law")
-        curves = law_curves(case, sigma, recontact, window)
+        curves = law_curves(case, rules.sigma, rules.recontact, window)
         drawn = precursor_figure(case, curves, window)
         rows += precursor_rows(case, curves)
     elif kind == "eigen":
@@ -546,12 +582,16 @@ def plot(
             from twoball.modal.stepping import Stepping
 
             given.stepping.refuse("with kind eigen (use levels, orders)", *Stepping.VALID)
-        refused = {"case": case, "backends": backends, "mesh": given.mesh, "sigma": sigma}
-        refused |= {"recontact": recontact, "instants": figure.instants}
+        if given.series is not None:  # the field that was changed, else the bundle
+            name, value = next(iter(given.series.changed().items()), ("series", given.series))
+            raise ParameterError(name, "left out with kind eigen (use levels, orders)", value)
+        refused = {"case": case, "backends": figure.backends, "mesh": given.mesh}
+        refused |= {"damping": given.damping, "instants": figure.instants}
         for name, value in refused.items():
             if value is not None:
                 shown = type(value).__name__ if name == "case" else value
                 shown = shown.label if hasattr(shown, "label") else shown
+                shown = shown.as_dict() if hasattr(shown, "as_dict") else shown
                 raise ParameterError(name, "left out with kind eigen (use levels, orders)", shown)
         levels, orders = eigen_sizes(figure.levels, figure.orders, figure.max_degree)
         tables = []
@@ -567,36 +607,30 @@ def plot(
                 raise ParameterError(
                     name, f"left out with kind {kind} (eigen only)", getattr(figure, name)
                 )
-        if kind == "waterfall" and recontact is not None:
-            raise ParameterError(
-                "recontact",
-                "left out with kind waterfall (it draws u(phi) at fixed instants; the "
+        if kind == "waterfall":
+            rules.refuse(
+                "with kind waterfall (it draws u(phi) at fixed instants; the "
                 "re-contact horizon acts on the lift-off: kind pole)",
-                recontact,
+                "recontact",
             )
         if kind == "pole" and figure.instants is not None:
             raise ParameterError(
                 "instants", "left out with kind pole (waterfall only)", figure.instants
             )
-        case = _case(case)
-        sigma = "lanczos" if sigma is None else sigma
-        recontact = "window" if recontact is None else recontact
-        backends = BACKENDS if backends is None else backends
+        case = with_damping(_case(case), given.damping)
+        chosen = BACKENDS if figure.backends is None else figure.backends
         instants = WATERFALL_INSTANTS if figure.instants is None else figure.instants
-        chosen = tuple(dict.fromkeys(backends))
-        if not chosen or any(b not in BACKENDS for b in chosen):
-            raise ParameterError("backends", "a list of fem, legendre", list(backends))
         field = field_mesh(given.mesh)  # reads a file
         if given.body is not None:
-            check_field_body(case, given.body, field, recontact=recontact, route=route)
+            check_field_body(case, given.body, field, recontact=rules.recontact, route=route)
         check_frame_budget(case, instants, "instants", field)
         model = ball_model(
             case,
             field,
             backends=chosen,
             body=given.body,
-            sigma=sigma,
-            recontact=recontact,
+            sigma=rules.sigma,
+            recontact=rules.recontact,
             t_end_s=t_end,
             route=route,
             progress=say,
@@ -618,8 +652,7 @@ def plot(
             rows.append((f"lift-off ({name})", text))
     say(f"writing {target}")
     save_figure(drawn, target, "out", figure.dpi, "dpi")
-    arguments = {"kind": kind, "out": out, "backends": backends, "sigma": sigma}
-    arguments |= {"recontact": recontact, "figure": figure.as_dict(), **given.as_dict()}
+    arguments = {"kind": kind, "out": out, "figure": figure.as_dict(), **given.as_dict()}
     provenance = block(None if kind == "eigen" else case, "twoball.plot", arguments)
     if field is not None:
         provenance |= mesh_block(field)
@@ -647,7 +680,7 @@ def save_report_figure(report: Any, path: str | os.PathLike[str], name: str = "o
 
 
 #: The old keywords of :func:`plot` that :class:`~twoball.PlotOptions` holds now.
-PLOT_OPTION_KEYS = ("dpi", "instants", "levels", "orders", "max_degree")
+PLOT_OPTION_KEYS = ("dpi", "instants", "levels", "orders", "max_degree", "backends")
 
 
 def mesh_block(field: Any) -> dict[str, object]:
@@ -712,7 +745,8 @@ class RenderResult:
     --------
     >>> import tempfile, pathlib, twoball
     >>> out = pathlib.Path(tempfile.mkdtemp()) / "ball.png"
-    >>> result = twoball.render(out, mesh=twoball.MeshOptions("sphere", level=1), frames=[0.005])
+    >>> mesh, view = twoball.MeshOptions("sphere", level=1), twoball.RenderOptions(frames=[0.005])
+    >>> result = twoball.render(out, mesh=mesh, view=view)
     >>> result.times_s, result.backend
     ([0.005], 'fem')
     """

@@ -31,8 +31,7 @@ def liftoff(
     stepping: Any = None,
     body: Any = None,
     damping: Any = None,
-    sigma: str = "lanczos",
-    recontact: str = "window",
+    series: Any = None,
     progress: Step | None = None,
     **deprecated: Any,
 ) -> LiftoffReport | Any:
@@ -60,16 +59,17 @@ def liftoff(
         eq. (3.14), or its ``rayleigh``); :class:`~twoball.Rayleigh` in SI
         (alpha [1/s], beta [s]; ``Rayleigh()`` fitted to D) on every backend
         and scheme, each mode with its own ratio (docs/pressurised.rst).
-    sigma : {"lanczos", "printed", "none"}
-        Spectral filter, eq. (3.16).
-    recontact : {"window", "paper"}
-        Re-contact horizon of criterion (ii), §3(a).
+    series : Series, optional
+        The spectral filter of eq. (3.16) and the re-contact horizon of
+        criterion (ii), §3(a) (:class:`~twoball.Series`; default Lanczos and
+        the whole window).
     progress : callable, optional
         Called with a short text as each stage of a finite-element solve starts
         (a :class:`~twoball.Reporter`, for instance).
     **deprecated
-        The keywords of version 0.2 (``t_end``, ``level``, ``mass_ratio``, ...),
-        folded into the bundles above with a :class:`DeprecationWarning`.
+        The keywords of version 0.2 (``t_end``, ``level``, ``mass_ratio``,
+        ``sigma``, ``recontact``, ...), folded into the bundles above with a
+        :class:`DeprecationWarning`.
 
     Returns
     -------
@@ -97,8 +97,10 @@ def liftoff(
         stepping=stepping,
         body=body,
         damping=damping,
+        series=series,
         old=deprecated,
     )
+    sigma, recontact = given.rules.sigma, given.rules.recontact
     case = Case.preset("basketball") if case is None else case
     if not isinstance(case, Case):
         raise ParameterError("case", "a twoball.Case", type(case).__name__)
@@ -117,8 +119,7 @@ def liftoff(
             mesh=given.mesh,
             stepping=stepping,
             damping=given.damping,
-            sigma=sigma,
-            recontact=recontact,
+            series=given.series,
             progress=progress,
         )
     else:
@@ -128,7 +129,7 @@ def liftoff(
         report = legendre_liftoff(case, sigma, recontact, t_end)
     from twoball._common.provenance import block
 
-    arguments = {"backend": backend, "sigma": sigma, "recontact": recontact, **given.as_dict()}
+    arguments = {"backend": backend, **given.as_dict()}
     return replace(report, provenance=block(case, "twoball.liftoff", arguments))
 
 

@@ -74,10 +74,10 @@ def reproduce(
     out: str | os.PathLike[str] | None = None,
     *,
     only: str | Sequence[str] | None = None,
-    workers: int | None = None,
-    scheduler: str | None = None,
+    workers: int | str | None = None,
     progress: Callable[[str, int], Callable[[int], None]] | None = None,
     command: str = "twoball reproduce",
+    **deprecated: Any,
 ) -> Reproduction:
     """Recompute the paper's figures, tables and thresholds beside ours, into ``out``.
 
@@ -89,15 +89,17 @@ def reproduce(
         is replaced only when everything is written.
     only : str or sequence of str, optional
         A subset of the parts (``"table1,fig11"`` or a list); default all.
-    workers : int, optional
-        Local worker processes for the sweeps (default: all cores; 1 = serial).
-    scheduler : str, optional
-        Address of a dask.distributed scheduler for the sweeps (not with ``workers``).
+    workers : int or str, optional
+        Local worker processes for the sweeps (default: all cores; 1 = serial),
+        or the address of a dask.distributed scheduler (``"tcp://host:8786"``).
     progress : callable, optional
         ``progress(label, total)`` starts a counted task and returns its
         ``update(done)`` (:meth:`twoball.Reporter.task`).
     command : str
         How the run is named in the report's header.
+    **deprecated
+        ``scheduler`` of version 0.2 (now ``workers``), with a
+        :class:`DeprecationWarning`.
 
     Returns
     -------
@@ -112,11 +114,16 @@ def reproduce(
     (True, 'table1')
     """
     from twoball._common.progress import check_progress
+    from twoball._sweep import where
     from twoball.verify.reproduce.driver import DEFAULT_OUT, check_output, parse_only
     from twoball.verify.reproduce.driver import reproduce as run_reproduction
     from twoball.verify.sweeps.parallel import Runner, check_workers
 
     check_progress(progress)
+    scheduler = deprecated.pop("scheduler", None)
+    for key in deprecated:
+        raise TypeError(f"twoball.reproduce() got an unexpected keyword argument {key!r}")
+    workers, scheduler = where("twoball.reproduce", workers, scheduler)
     if only is not None and not isinstance(only, str):
         only = ",".join(str(part) for part in only)
     names = parse_only(only)

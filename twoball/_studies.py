@@ -9,7 +9,7 @@ from __future__ import annotations
 import os
 from typing import TYPE_CHECKING, Any
 
-from twoball._bundles import warn_deprecated
+from twoball._bundles import warn_deprecated, with_damping
 from twoball._common.budget import timed
 from twoball._common.errors import ParameterError
 from twoball._common.progress import Step, check_progress, silent
@@ -52,8 +52,8 @@ def converge(
     levels: str | None = None,
     modes_list: str | None = None,
     stepping: Any = None,
-    sigma: str = "lanczos",
-    recontact: str = "window",
+    damping: Any = None,
+    series: Any = None,
     out: str | os.PathLike[str] | None = None,
     progress: Step = silent,
     **deprecated: Any,
@@ -79,15 +79,19 @@ def converge(
     stepping : Stepping, optional
         The window ``t_end`` [s] (default 4 pi / c); no time step (``dt`` sets
         its own steps by ``levels``).
-    sigma, recontact
+    damping : ModalRatio, optional
+        The paper's ratio D on every mode (default the case's); a
+        :class:`~twoball.Rayleigh` law is refused by name (``rayleigh``): the
+        studies measure against eq. (3.16) with the ratio D.
+    series : Series, optional
         Filter and re-contact horizon, as in :func:`twoball.liftoff`.
     out : path, optional
         Report directory to write (an earlier report there is replaced).
     progress : callable
         Called with a short text as each step starts (:class:`~twoball.Reporter`).
     **deprecated
-        ``order``, ``geometry`` and ``t_end`` of version 0.2, with a
-        :class:`DeprecationWarning`.
+        ``order``, ``geometry``, ``t_end``, ``sigma`` and ``recontact`` of
+        version 0.2, with a :class:`DeprecationWarning`.
 
     Returns
     -------
@@ -108,10 +112,13 @@ def converge(
     from twoball.verify.studies.time_step import run_dt_study
 
     check_progress(progress)
+    rules = _rules("twoball.converge", damping, series, deprecated)
+    sigma, recontact = rules.rules.sigma, rules.rules.recontact
     mesh, order, geometry, t_end = _study_options(mesh, stepping, deprecated)
     case = Case.preset("basketball") if case is None else case
     if not isinstance(case, Case):
         raise ParameterError("case", "a twoball.Case", type(case).__name__)
+    case = with_damping(case, rules.damping)
     _paper_model(case, "the convergence studies")
     if study not in STUDIES:
         raise ParameterError("study", "one of " + ", ".join(STUDIES), study)
@@ -172,8 +179,8 @@ def converge(
 
     result.warnings = case_warnings(case)
     arguments = {"study": study, "mesh": mesh, "order": order, "levels": levels}
-    arguments |= {"modes_list": modes_list, "sigma": sigma, "recontact": recontact}
-    result.provenance = block(case, "twoball.converge", {**arguments, "t_end": t_end, "out": out})
+    arguments |= {"modes_list": modes_list, **rules.as_dict(), "t_end": t_end, "out": out}
+    result.provenance = block(case, "twoball.converge", arguments)
     if target is not None:
         from twoball.verify.output.report_files import study_files, write_report_dir
 
@@ -188,11 +195,12 @@ def verify(
     *,
     thorough: bool = False,
     fast: bool = False,
-    sigma: str = "lanczos",
-    recontact: str = "window",
+    damping: Any = None,
+    series: Any = None,
     t_end: float | None = None,
     out: str | os.PathLike[str] | None = None,
     progress: Step | None = None,
+    **deprecated: Any,
 ) -> VerifyResult:
     """Every backend against the closed form, with PASS/FAIL per check.
 
@@ -204,13 +212,20 @@ def verify(
         Finer meshes as well (minutes, not seconds).
     fast : bool
         The small configuration of the test suite.
-    sigma, recontact, t_end
-        As in :func:`twoball.liftoff`.
+    damping : ModalRatio, optional
+        The paper's ratio D on every mode, as in :func:`converge` (a Rayleigh
+        law is refused by name).
+    series : Series, optional
+        Filter and re-contact horizon, as in :func:`twoball.liftoff`.
+    t_end : float, optional
+        The modelled window [s] (default 4 pi / c).
     out : path, optional
         Report directory to write (report.md, results.json, CSV, PNG).
     progress : callable, optional
-        Called with a short text as each step starts (:class:`twoball._common.progress.Reporter`;
+        Called with a short text as each step starts (:class:`twoball.Reporter`;
         :func:`verify_steps` counts the calls).
+    **deprecated
+        ``sigma`` and ``recontact`` of version 0.2, with a :class:`DeprecationWarning`.
 
     Returns
     -------
@@ -228,9 +243,14 @@ def verify(
     from twoball.verify.checks.run import run_verify
 
     check_progress(progress)
+    rules = _rules("twoball.verify", damping, series, deprecated)
+    if deprecated:
+        key = next(iter(deprecated))
+        raise TypeError(f"twoball.verify() got an unexpected keyword argument {key!r}")
     case = Case.preset("basketball") if case is None else case
     if not isinstance(case, Case):
         raise ParameterError("case", "a twoball.Case", type(case).__name__)
+    case = with_damping(case, rules.damping)
     _paper_model(case, "verify")
     if thorough and fast:
         raise ParameterError("fast", "left out with thorough", fast)
@@ -246,14 +266,14 @@ def verify(
         target = check_output_dir(out)
     configuration = config("fast" if fast else ("thorough" if thorough else "default"))
     say = progress or silent
-    result = run_verify(case, sigma, recontact, t_end, configuration, say)
+    result = run_verify(case, rules.rules.sigma, rules.rules.recontact, t_end, configuration, say)
     from twoball.modal.guards import case_warnings
 
     result.warnings = case_warnings(case)
     from twoball._common.provenance import block
 
-    arguments = {"thorough": thorough, "fast": fast, "sigma": sigma, "recontact": recontact}
-    result.provenance = block(case, "twoball.verify", {**arguments, "t_end": t_end, "out": out})
+    arguments = {"thorough": thorough, "fast": fast, **rules.as_dict(), "t_end": t_end}
+    result.provenance = block(case, "twoball.verify", {**arguments, "out": out})
     if target is not None:
         from twoball.verify.output.report_files import verify_files, write_report_dir
 
@@ -300,6 +320,20 @@ def _paper_model(case: Case, what: str) -> None:
     if case.rayleigh is not None:
         valid = f"left out for {what} (they check the paper's ratio D, eq. (3.14))"
         raise ParameterError("rayleigh", valid, case.rayleigh.as_dict())
+
+
+def _rules(verb: str, damping: Any, series: Any, deprecated: dict[str, Any]) -> Any:
+    """The damping law and the series rules of a study (the old ``sigma`` and ``recontact``
+    keywords folded in); a Rayleigh law is refused by name, as in the case."""
+    from twoball._bundles import SERIES_KEYS, bundles
+    from twoball.modal.damping import Rayleigh
+
+    old = {k: deprecated.pop(k) for k in SERIES_KEYS if k in deprecated}
+    given = bundles(verb, damping=damping, series=series, old=old, takes=("series",))
+    if isinstance(given.damping, Rayleigh):
+        valid = "left out of the studies (they check the paper's ratio D, eq. (3.14))"
+        raise ParameterError("rayleigh", valid, given.damping.as_dict())
+    return given
 
 
 def _study_options(

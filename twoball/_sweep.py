@@ -13,7 +13,7 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
 
-from twoball._bundles import bundles, warn_deprecated
+from twoball._bundles import bundles, warn_deprecated, with_damping
 from twoball._common.budget import timed
 from twoball._common.errors import ParameterError
 from twoball.modal.parameters import Case
@@ -107,6 +107,27 @@ def _sweep_name(name: str) -> str:
     return name.replace("_", "-")
 
 
+def where(verb: str, workers: Any, scheduler: Any) -> tuple[Any, str | None]:
+    """``workers`` as (process count, None) or (None, scheduler address), the address
+    checked (named ``workers``); the old ``scheduler`` keyword folded in with a
+    :class:`DeprecationWarning` (and named ``scheduler``)."""
+    from twoball.verify.sweeps.parallel import check_scheduler
+
+    if scheduler is not None:
+        warn_deprecated(f"{verb}: the keyword scheduler is deprecated; pass workers=ADDRESS")
+        if workers is not None:
+            valid = "left out with scheduler (the cluster decides)"
+            raise ParameterError("workers", valid, workers)
+        return None, check_scheduler(scheduler)
+    if isinstance(workers, str):
+        try:
+            return None, check_scheduler(workers)
+        except ParameterError as error:
+            valid = "an integer >= 1 (local processes) or " + error.valid
+            raise ParameterError("workers", valid, error.got) from None
+    return workers, None
+
+
 @timed
 def sweep(
     values: Mapping[str, Sequence[float]],
@@ -114,10 +135,9 @@ def sweep(
     *,
     stepping: Any = None,
     body: Any = None,
-    sigma: str = "lanczos",
-    recontact: str = "window",
-    workers: int | None = None,
-    scheduler: str | None = None,
+    damping: Any = None,
+    series: Any = None,
+    workers: int | str | None = None,
     progress: Callable[[int], None] | None = None,
     drop: Any = None,
     pair: str | None = None,
@@ -140,25 +160,28 @@ def sweep(
         An upper body of finite mass on every point (docs/contact.rst); a
         ``mass_ratio`` sweep takes its other fields from it (default: contact
         radius R/10, no restitution, the ball's energy).
-    sigma, recontact
-        As in :func:`~twoball.liftoff`.
-    workers : int, optional
-        Local processes (default 1: serial; the numbers do not depend on it);
-        refused with ``scheduler``.
-    scheduler : str, optional
-        Address of a dask.distributed scheduler.
+    damping : ModalRatio or Rayleigh, optional
+        The damping law of every point, as in :func:`~twoball.liftoff` (a
+        Rayleigh law with alpha, beta of its own refuses a ``damping`` sweep).
+    series : Series, optional
+        Filter and re-contact horizon, as in :func:`~twoball.liftoff`.
+    workers : int or str, optional
+        Local processes (default 1: serial), or the address of a
+        dask.distributed scheduler (``"tcp://host:8786"``) whose workers run
+        the points; the numbers do not depend on where.
     progress : callable, optional
         Called with the number of points done (e.g. :meth:`twoball.Reporter.update`).
     drop : Drop, optional
         Sweep the drop on the floor, or the whole bounce with ``body`` or
         ``pair``, instead (:func:`twoball.bounce` at every point, with these
         options): one parameter, ``v0``, ``drop_height``, ``gap`` or
-        ``mass_ratio``; on ``workers`` processes or the ``scheduler`` like
-        every sweep; returns a :class:`~twoball.BounceSweep`.
+        ``mass_ratio``; on ``workers`` like every sweep; returns a
+        :class:`~twoball.BounceSweep`.
     pair : str, optional
         With ``drop``: a Table 1 pair (:func:`twoball.bounce`'s ``pair``).
     **deprecated
-        ``t_end`` and ``contact_radius`` of version 0.2, with a :class:`DeprecationWarning`.
+        ``t_end``, ``contact_radius``, ``sigma`` and ``recontact`` of version
+        0.2 and ``scheduler`` (now ``workers``), with a :class:`DeprecationWarning`.
 
     Returns
     -------
@@ -171,21 +194,31 @@ def sweep(
     >>> [round(p.ratio, 3) for p in result.points]
     [1.354, 0.935, 0.417]
     """
+    legacy_radius = deprecated.pop("contact_radius", None)
+    workers, scheduler = where("twoball.sweep", workers, deprecated.pop("scheduler", None))
+    given = bundles(
+        "twoball.sweep",
+        stepping=stepping,
+        body=body,
+        damping=damping,
+        series=series,
+        old=deprecated,
+        takes=("stepping", "body", "series"),
+    )
     if drop is not None:
         from twoball._bounce import bounce_sweep
 
-        if deprecated:
-            raise ParameterError(next(iter(deprecated)), "left out in a sweep of the drop", None)
-        if sigma != "lanczos" or recontact != "window":
-            name, value = ("sigma", sigma) if sigma != "lanczos" else ("recontact", recontact)
-            raise ParameterError(name, "left out in a sweep of the drop (no filter)", value)
+        if legacy_radius is not None:
+            raise ParameterError("contact_radius", "left out in a sweep of the drop", None)
+        given.rules.refuse("in a sweep of the drop (no filter)", "sigma", "recontact")
         return bounce_sweep(
             values,
             case,
             drop,
-            body=body,
+            body=given.body,
             pair=pair,
-            stepping=stepping,
+            stepping=given.stepping,
+            damping=given.damping,
             workers=workers,
             scheduler=scheduler,
             progress=progress,
@@ -200,19 +233,16 @@ def sweep(
     from twoball.verify.sweeps.parallel import (
         MIN_PARALLEL_ITEMS,
         Runner,
-        check_scheduler,
         check_workers,
     )
     from twoball.verify.sweeps.sweeps import SWEEP_PARAMETERS, SweepGrid, SweepSolver, run_sweep
 
     check_progress(progress)
-    legacy_radius = deprecated.pop("contact_radius", None)
-    given = bundles(
-        "twoball.sweep", stepping=stepping, body=body, old=deprecated, takes=("stepping", "body")
-    )
+    sigma, recontact = given.rules.sigma, given.rules.recontact
     case = Case.preset("basketball") if case is None else case
     if not isinstance(case, Case):
         raise ParameterError("case", "a twoball.Case", type(case).__name__)
+    case = with_damping(case, given.damping)
     if given.stepping is not None:
         given.stepping.refuse(
             "in a sweep (the closed form: no time steps)", "scheme", "dt", "route"
@@ -231,16 +261,12 @@ def sweep(
         from twoball.modal.contact.body import Body
 
         body = Body(0.0, contact_radius=legacy_radius)
-    if scheduler is not None and workers is not None:
-        raise ParameterError("workers", "left out with scheduler (the cluster decides)", workers)
-    if scheduler is not None:
-        scheduler = check_scheduler(scheduler)
     workers = 1 if workers is None and not scheduler else workers
     if workers is not None:
         check_workers(workers)  # its type and range, before the budget compares it
-    call = {"sigma": sigma, "recontact": recontact, "workers": workers, "scheduler": scheduler}
-    call |= {"stepping": given.stepping, "body": body}
-    call = {k: v.as_dict() if hasattr(v, "as_dict") else v for k, v in call.items()}
+    call = {"workers": workers, "scheduler": scheduler, **given.as_dict()}
+    if body is not None:
+        call["body"] = body.as_dict()
     if not isinstance(values, Mapping) or not 1 <= len(values) <= 2:
         raise ParameterError("values", "a mapping of one or two parameters to values", values)
     parameters = tuple(_sweep_name(k) for k in values)

@@ -29,8 +29,7 @@ def solve(
     mesh: Any = None,
     stepping: Any = None,
     damping: Any = None,
-    sigma: str = "lanczos",
-    recontact: str = "window",
+    series: Any = None,
     progress: Step | None = None,
     **deprecated: Any,
 ) -> LiftoffReport:
@@ -55,15 +54,15 @@ def solve(
         ``Rayleigh()`` fits it to D at the lowest vibrating mode and the
         filter's cutoff), by modal superposition (each mode its ratio) or
         generalized-alpha (the sparse matrix).
-    sigma : {"lanczos", "printed", "none"}
-        Spectral filter, eq. (3.16).
-    recontact : {"window", "paper"}
-        Re-contact horizon of criterion (ii), §3(a).
+    series : Series, optional
+        The spectral filter of eq. (3.16), on the finite-element modes by their
+        frequencies, and the re-contact horizon of criterion (ii), §3(a)
+        (:class:`~twoball.Series`; default Lanczos and the whole window).
     progress : callable, optional
         Called with a short text as each stage starts (:class:`~twoball.Reporter`).
     **deprecated
-        The keywords of version 0.2 (``level``, ``dt``, ``damping_model``, ...),
-        with a :class:`DeprecationWarning`.
+        The keywords of version 0.2 (``level``, ``dt``, ``damping_model``,
+        ``sigma``, ``recontact``, ...), with a :class:`DeprecationWarning`.
 
     Returns
     -------
@@ -87,9 +86,11 @@ def solve(
         mesh=mesh,
         stepping=stepping,
         damping=damping,
+        series=series,
         old=deprecated,
-        takes=("mesh", "stepping", "damping"),
+        takes=("mesh", "stepping", "damping", "series"),
     )
+    sigma, recontact = given.rules.sigma, given.rules.recontact
     case = Case.preset("basketball") if case is None else case
     if not isinstance(case, Case):
         raise ParameterError("case", "a twoball.Case", type(case).__name__)
@@ -107,7 +108,7 @@ def solve(
 
     dt_scaled = None
     if dt is not None:
-        from twoball.fem_membrane.checks import check_dt_in_window
+        from twoball.fem_membrane.validate import check_dt_in_window
 
         dt_scaled = check_dt_in_window(dt, case.scalings.time, t_end_dimensionless(case, t_end))
     if spec.kind != "file":  # the budget in the user's units (the model layer checks again)
@@ -198,8 +199,7 @@ def solve(
 
     from twoball._common.provenance import block
 
-    arguments = {"sigma": sigma, "recontact": recontact, **given.as_dict()}
-    return replace(report, provenance=block(case, "twoball.fem.solve", arguments))
+    return replace(report, provenance=block(case, "twoball.fem.solve", given.as_dict()))
 
 
 @timed

@@ -19,6 +19,8 @@ __all__ = ["DEFAULT_MODES", "GAS_LAWS", "Drop"]
 DEFAULT_MODES = 192
 MODES_RANGE = (8, 2000)
 GAS_LAWS: tuple[str, ...] = ("none", "isothermal", "adiabatic")
+#: Largest drop height H [m] (as ``twoball icm`` takes, :data:`twoball.modal.icm.inputs.UPPER`).
+DROP_HEIGHT_MAX = 1e6
 #: Largest gap Delta x [m] between the body and the ball's top at the floor impact.
 GAP_MAX = 10.0
 
@@ -30,7 +32,7 @@ class Drop:
     Parameters
     ----------
     drop_height : float, optional
-        Height H [m] > 0 of the ball's lowest point above the floor at release
+        Height H [m] in (0, 1e6] of the ball's lowest point above the floor at release
         (as in ``twoball icm``): the impact speed is ``|v0| = sqrt(2 g H)``, eq.
         (2.1), in place of the case's ``v0``.
     gas : {"none", "isothermal", "adiabatic"}, optional
@@ -67,7 +69,7 @@ class Drop:
     >>> twoball.Drop(drop_height=-1.0)  # doctest: +ELLIPSIS
     Traceback (most recent call last):
     ...
-    twoball.ParameterError: drop_height must be a height > 0 [m] ... got -1.0
+    twoball.ParameterError: drop_height must be a height in (0, 1e6] [m] ... got -1.0
     """
 
     drop_height: float | None = None
@@ -78,7 +80,9 @@ class Drop:
     gap: float = 0.0
 
     VALID = {  # noqa: RUF012 -- a class constant, not a field
-        "drop_height": "a height > 0 [m] of the lowest point above the floor",
+        "drop_height": "a height in (0, "
+        + f"{DROP_HEIGHT_MAX:g}".replace("e+0", "e")
+        + "] [m] of the lowest point above the floor",
         "gas": "one of " + ", ".join(GAS_LAWS),
         "floor_restitution": "in [0, 1]",
         "modes": f"an integer in [{MODES_RANGE[0]}, {MODES_RANGE[1]}]",
@@ -88,7 +92,7 @@ class Drop:
     def __post_init__(self) -> None:
         if self.drop_height is not None:
             height = real_number("drop_height", self.drop_height, self.VALID["drop_height"])
-            if not (height > 0.0 and math.isfinite(height) and height <= 1e6):
+            if not (0.0 < height <= DROP_HEIGHT_MAX):
                 raise ParameterError("drop_height", self.VALID["drop_height"], self.drop_height)
             object.__setattr__(self, "drop_height", height)
         if self.gas is not None and self.gas not in GAS_LAWS:

@@ -1,8 +1,8 @@
-"""Input checks of the independent collision model: one line naming the flag and its range.
+"""Input checks of the independent collision model: one line naming the parameter and its range.
 
 Every check returns the value as a float or raises
-:class:`~twoball._common.errors.ParameterError` with the command-line flag
-(``--mu``, ``--e2``, ``--e12``, ``--dx``, ``--drop-height``, ``--g``).
+:class:`~twoball._common.errors.ParameterError` naming the parameter (``mu``,
+``e2``, ``e12``, ``dx``, ``drop_height``, ``g``).
 """
 
 from __future__ import annotations
@@ -36,7 +36,7 @@ def check_mu(mu: float) -> float:
 
 
 def check_restitution(name: str, value: float) -> float:
-    """A restitution coefficient in [0, 1]; ``name`` is its flag (``--e2``, ``--e12``)."""
+    """A restitution coefficient in [0, 1]; ``name`` is its parameter (``e2``, ``e12``)."""
     valid = "in [0, 1]"
     value = _as_float(name, valid, value)
     if not 0.0 <= value <= 1.0:

@@ -129,8 +129,8 @@ def icm(
     Raises
     ------
     ParameterError
-        If any input is out of range; the name is the CLI flag
-        (``--mu``, ``--e2``, ``--e12``, ``--dx``, ``--drop-height``, ``--g``).
+        If any input is out of range, naming the parameter (``mu``, ``e2``,
+        ``e12``, ``dx``, ``drop_height``, ``g``).
 
     Examples
     --------

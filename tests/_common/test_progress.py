@@ -9,6 +9,7 @@ from __future__ import annotations
 
 import io
 import json
+import math
 import os
 import re
 import subprocess
@@ -23,6 +24,7 @@ from twoball.verify.output.report_files import split_provenance
 from twoball.verify.output.series import read_series
 
 from tests import ROOT
+from twoball._common.errors import ParameterError
 from twoball._common.progress import INTERVAL, Reporter, is_quiet, set_quiet
 
 LINE = re.compile(r"twoball: (?P<name>[\w -]+): (?P<text>.*) \((?P<seconds>\d+) s\)")
@@ -168,3 +170,28 @@ def test_progress_lines_in_a_log_and_none_when_quiet(tmp_path, name):
         drop = ("seconds", "provenance", "out")
         a, b = (split_provenance(json.loads(text), drop)[0] for text in (loud_out, quiet_out))
         assert a == b and a["passed"] is True
+
+
+@pytest.mark.parametrize(
+    ("name", "options", "valid"),
+    [
+        ("total", {"total": -1}, "an integer >= 0"),
+        ("total", {"total": 2.5}, "an integer >= 0"),
+        ("total", {"total": True}, "an integer >= 0"),
+        ("interval", {"interval": math.nan}, "a finite number of seconds > 0"),
+        ("interval", {"interval": 0.0}, "a finite number of seconds > 0"),
+        ("interval", {"interval": "3"}, "a finite number of seconds > 0"),
+        ("delay", {"delay": -1.0}, "a finite number of seconds >= 0"),
+        ("delay", {"delay": math.inf}, "a finite number of seconds >= 0"),
+    ],
+)
+def test_a_reporter_refuses_a_bad_argument_when_built(name, options, valid):
+    with pytest.raises(ParameterError) as caught:
+        Reporter("demo", **options)
+    assert caught.value.name == name
+    assert str(caught.value).startswith(f"{name} must be {valid}")
+
+
+def test_a_reporter_keeps_the_edges_of_its_ranges():
+    report = Reporter("demo", total=0, interval=1e-9, delay=0)
+    assert (report.total, report.interval, report.delay) == (0, 1e-9, 0.0)

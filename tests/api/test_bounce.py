@@ -88,6 +88,7 @@ def test_paper_membrane_without_gas_is_warned_pressurised_refused():
     [
         ("drop_height", lambda: twoball.Drop(drop_height=-1.0)),
         ("drop_height", lambda: twoball.Drop(drop_height=0.0)),
+        ("drop_height", lambda: twoball.Drop(drop_height=1.5e6)),
         ("floor_restitution", lambda: twoball.Drop(floor_restitution=2.0)),
         ("modes", lambda: twoball.Drop(modes=4)),
         ("membrane", lambda: twoball.Drop(membrane="flat")),
@@ -114,6 +115,14 @@ def test_bad_input_is_refused_naming_the_parameter(name, call):
     with pytest.raises(twoball.ParameterError) as caught:
         call()
     assert caught.value.name == name, str(caught.value)
+
+
+def test_the_drop_height_message_states_its_whole_range():
+    """Both ends of (0, 1e6] m are in the message; the upper end itself is a valid height."""
+    for height in (0.0, 2e6):
+        with pytest.raises(twoball.ParameterError, match=r"a height in \(0, 1e6\] \[m\]"):
+            twoball.Drop(drop_height=height)
+    assert twoball.Drop(drop_height=1e6).drop_height == 1e6
 
 
 def test_both_backends_agree_at_their_defaults():
@@ -444,7 +453,7 @@ def test_a_gap_sweep_on_dask_gives_the_same_numbers():
         n_workers=2, threads_per_worker=1, processes=False, dashboard_address=None
     ) as cluster:
         on_dask = twoball.sweep(
-            values, drop=drop, pair="basketball-tennis", scheduler=cluster.scheduler_address
+            values, drop=drop, pair="basketball-tennis", workers=cluster.scheduler_address
         )
     assert on_dask.errors == [None, None]
     for a, b in zip(serial.reports, on_dask.reports, strict=True):

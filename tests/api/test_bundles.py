@@ -110,7 +110,7 @@ def test_render_time_and_view_keywords(tmp_path, monkeypatch):
     )
     new = twoball.render(
         tmp_path / "new.png", CASE, backend="legendre", mesh=MeshOptions(level=1),
-        frames=[2e-3], view=RenderOptions(size=(64, 48)),
+        view=RenderOptions(size=(64, 48), frames=[2e-3]),
     )  # fmt: skip
     assert (legacy.times_s, legacy.size, legacy.warp) == (new.times_s, new.size, new.warp)
     assert legacy.times_s == [2e-3] and legacy.size == (64, 48)
@@ -138,7 +138,9 @@ def test_plot_figure_keywords(tmp_path):
             tmp / "x.png", CASE, backend="legendre", mesh=MeshOptions(level=1), size=(64, 48)
         ),
         lambda tmp: twoball.render(tmp / "z.png", CASE, backend="legendre", level=1),
-        lambda tmp: twoball.plot("pole", tmp / "p.png", CASE, backends=["legendre"], level=1),
+        lambda tmp: twoball.plot(
+            "pole", tmp / "p.png", CASE, figure=PlotOptions(backends=["legendre"]), level=1
+        ),
         lambda tmp: twoball.plot("eigen", tmp / "e.png", dpi=60, levels=[0], orders=[1]),
     ],
     ids=[
@@ -172,12 +174,82 @@ def test_the_warning_points_at_the_callers_line(call, tmp_path, monkeypatch):
         (lambda: twoball.liftoff(CASE, damping_model="viscous"), "damping_model"),
         (lambda: twoball.fem.solve(CASE, mesh=MeshOptions("axisym"), elements=50), "elements"),
         (lambda: twoball.sweep({"damping": [0.1]}, CASE, contact_radius=0.01), "contact_radius"),
+        (lambda: twoball.liftoff(CASE, sigma="none", series=twoball.Series()), "sigma"),
+        (lambda: twoball.liftoff(CASE, sigma="gauss"), "sigma"),
+        (lambda: twoball.sweep({"damping": [0.1]}, CASE, workers=2, scheduler="::::"), "workers"),
     ],
 )
 def test_old_keywords_that_conflict_are_refused_by_name(call, name):
     with pytest.warns(DeprecationWarning), pytest.raises(twoball.ParameterError) as error:
         call()
     assert error.value.name == name, str(error.value)
+
+
+def test_sigma_and_recontact_become_a_series():
+    series = twoball.Series(sigma="none", recontact="paper")
+    legacy = old(lambda: twoball.liftoff(CASE, sigma="none", recontact="paper"), "sigma")
+    new = twoball.liftoff(CASE, series=series)
+    assert (legacy.t_liftoff_s, legacy.v_liftoff_m_s) == (new.t_liftoff_s, new.v_liftoff_m_s)
+    assert legacy.provenance["call"] == new.provenance["call"]
+    assert new.provenance["call"]["arguments"]["series"] == {"sigma": "none", "recontact": "paper"}
+    values = {"damping": [0.1, 0.2]}
+    legacy = old(lambda: twoball.sweep(values, CASE, recontact="paper"), "recontact")
+    new = twoball.sweep(values, CASE, series=twoball.Series(recontact="paper"))
+    assert [p.as_dict() for p in legacy.points] == [p.as_dict() for p in new.points]
+    legacy = old(
+        lambda: twoball.converge(CASE, study="modes", modes_list="30,60,120", sigma="printed"),
+        "sigma",
+    )
+    new = twoball.converge(
+        CASE, study="modes", modes_list="30,60,120", series=twoball.Series(sigma="printed")
+    )
+    strip = [{k: v for k, v in run.items() if k != "seconds"} for run in legacy.runs]
+    assert strip == [{k: v for k, v in run.items() if k != "seconds"} for run in new.runs]
+    assert legacy.settings == new.settings
+
+
+def test_format_frames_backends_and_scheduler_moved_into_objects(tmp_path, monkeypatch):
+    monkeypatch.setenv("VTK_DEFAULT_OPENGL_WINDOW", "vtkEGLRenderWindow")
+    mesh = MeshOptions(level=1)
+    written = old(
+        lambda: twoball.export(
+            tmp_path / "a.vtu", CASE, backend="legendre", mesh=mesh, format="vtu"
+        ),
+        "format",
+    )
+    assert written.format == "vtu"
+    drawn = old(
+        lambda: twoball.render(
+            tmp_path / "a.png", CASE, backend="legendre", mesh=mesh, frames=[2e-3], size=(64, 48)
+        ),
+        "frames",
+    )
+    assert drawn.times_s == [2e-3]
+    plotted = old(
+        lambda: twoball.plot("pole", tmp_path / "p.png", CASE, mesh=mesh, backends=["legendre"]),
+        "backends",
+    )
+    assert list(plotted.reports) == ["legendre"]
+    with (
+        pytest.warns(DeprecationWarning, match="scheduler"),
+        pytest.raises(twoball.ParameterError) as caught,
+    ):
+        twoball.sweep({"damping": [0.1]}, CASE, scheduler="::::")
+    assert caught.value.name == "scheduler"
+
+
+def test_the_warning_names_only_the_bundles_of_the_keywords_given():
+    with pytest.warns(DeprecationWarning) as caught:
+        twoball.liftoff(CASE, t_end=0.03)
+    (text,) = [str(w.message) for w in caught]
+    assert text == (
+        "twoball.liftoff: the keyword t_end is deprecated; pass stepping=Stepping(...) instead"
+    )
+    with pytest.warns(DeprecationWarning) as caught:
+        twoball.fem.solve(CASE, mesh="axisym", elements=50, t_end=0.03)
+    (text,) = [str(w.message) for w in caught]
+    assert "mesh=MeshOptions(...) and stepping=Stepping(...)" in text
+    assert "Body" not in text and "Rayleigh" not in text
 
 
 def test_keywords_that_never_existed_are_a_type_error():

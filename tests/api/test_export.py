@@ -249,3 +249,21 @@ def test_closed_form_export_refuses_the_finite_elements_route(tmp_path):
         )
     assert error.value.name == "route"
     assert list(tmp_path.iterdir()) == []
+
+
+def test_a_damping_law_and_the_series_rules_act_as_in_the_case(tmp_path):
+    """``damping=`` and ``series=`` give the fields the case and the old keywords gave."""
+    law = twoball.Rayleigh(20.0, 2e-5)
+    rules = twoball.Series(sigma="none")
+    options = {"backend": "legendre", "mesh": MESH, "frames": 2}
+    given = twoball.export(tmp_path / "a.pvd", BASKETBALL, damping=law, series=rules, **options)
+    inside = twoball.export(
+        tmp_path / "b.pvd", BASKETBALL.derive(rayleigh=law), series=rules, **options
+    )
+    a, b = read_series(given.file), read_series(inside.file)
+    for name in a.point_data:
+        assert np.array_equal(a.point_data[name], b.point_data[name]), name
+    plain = read_series(twoball.export(tmp_path / "c.pvd", BASKETBALL, **options).file)
+    assert not np.array_equal(a.point_data["u_m"], plain.point_data["u_m"])
+    assert given.provenance["call"]["arguments"]["series"] == rules.as_dict()
+    assert given.report.sigma == "none"

@@ -56,7 +56,8 @@ def test_every_file_result_has_files_and_file(tmp_path: Path) -> None:
     rendered = twoball.render(
         tmp_path / "ball.png", mesh=ONE, view=twoball.RenderOptions(size="64x48")
     )
-    plotted = twoball.plot("pole", tmp_path / "pole.png", mesh=ONE, backends=["legendre"])
+    legendre = twoball.PlotOptions(backends=["legendre"])
+    plotted = twoball.plot("pole", tmp_path / "pole.png", mesh=ONE, figure=legendre)
     assert exported.file == exported.files[0] == tmp_path / "ball.xdmf"
     assert [f.name for f in exported.files] == ["ball.xdmf", "ball.h5"]
     for result in (rendered, plotted):

@@ -144,7 +144,7 @@ def test_liftoff_without_mass_ratio_is_unchanged():
             lambda: _contact(Body(0.1), backend="fem", mesh=twoball.MeshOptions("axisym", level=2)),
             "level",
         ),
-        (lambda: _contact(Body(0.1), recontact="paper"), "recontact"),
+        (lambda: _contact(Body(0.1), series=twoball.Series(recontact="paper")), "recontact"),
         (lambda: _contact(Body(0.1), damping=twoball.Rayleigh()), "rayleigh"),
     ],
 )

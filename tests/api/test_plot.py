@@ -43,3 +43,13 @@ def test_an_output_that_is_not_a_path_is_refused_by_name(tmp_path, monkeypatch):
     with pytest.raises(ParameterError, match=r"^out must be a file path \(str or os.PathLike\)"):
         twoball.plot("pole", None)
     assert not any(tmp_path.iterdir())
+
+
+def test_the_precursor_draws_the_damping_law_given(tmp_path):
+    """``damping=Rayleigh()`` on the precursor is the case's Rayleigh law, row for row."""
+    law = twoball.Rayleigh()
+    given = twoball.plot("precursor", tmp_path / "a.png", BASKETBALL, damping=law)
+    inside = twoball.plot("precursor", tmp_path / "b.png", BASKETBALL.derive(rayleigh=law))
+    assert given.rows == inside.rows
+    plain = twoball.plot("precursor", tmp_path / "c.png", BASKETBALL)
+    assert given.rows != plain.rows

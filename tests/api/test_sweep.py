@@ -45,3 +45,18 @@ def test_mass_ratio_sweep_equals_single_runs():
     with pytest.raises(twoball.ParameterError) as info:
         twoball.sweep({"mass_ratio": [0.1]}, BASKETBALL, body=Body(0.0, contact_radius=0.2))
     assert info.value.name == "contact_radius"  # a >= R = 0.12 m
+
+
+def test_a_damping_law_applies_at_every_point_as_the_cases_own():
+    """``damping=`` gives the points the case would give with that law in it."""
+    values = {"v0": [3.0, 4.1]}
+    law = twoball.Rayleigh(20.0, 2e-5)
+    given = twoball.sweep(values, BASKETBALL, damping=law)
+    inside = twoball.sweep(values, BASKETBALL.derive(rayleigh=law))
+    assert [p.as_dict() for p in given.points] == [p.as_dict() for p in inside.points]
+    assert given.provenance["call"]["arguments"]["damping"] == law.as_dict()
+    ratio = twoball.sweep(values, BASKETBALL, damping=twoball.ModalRatio(0.2))
+    assert [p.ratio for p in ratio.points] == [
+        p.ratio for p in twoball.sweep(values, BASKETBALL.derive(damping=0.2)).points
+    ]
+    assert ratio.points[0].ratio != given.points[0].ratio

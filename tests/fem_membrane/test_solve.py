@@ -91,8 +91,8 @@ def test_fem_pole_motion_alpha_with_automatic_step():
 @pytest.mark.parametrize(
     ("options", "flag", "valid"),
     [
-        ({"mesh": "sphere", "level": -1}, "level", "an integer >= 0"),
-        ({"mesh": "sphere", "level": 1.5}, "level", "an integer >= 0"),
+        ({"mesh": "sphere", "level": -1}, "level", "an integer in [0, 10]"),
+        ({"mesh": "sphere", "level": 1.5}, "level", "an integer in [0, 10]"),
         ({"mesh": "axisym", "order": 5}, "order", "1, 2, 3 or 4"),
         ({"mesh": "axisym", "order": 0}, "order", "1, 2, 3 or 4"),
         ({"mesh": "axisym", "elements": 1}, "elements", "an integer >= 2"),

@@ -191,3 +191,13 @@ def test_bad_laws_and_combinations_are_refused_in_one_line(call, name):
         call()
     assert caught.value.name == name
     assert "\n" not in str(caught.value)
+
+
+def test_each_law_names_its_own_field_and_states_its_range():
+    with pytest.raises(ParameterError, match=r"^ratio must be in \[0, 1\), got 1.5$"):
+        ModalRatio(1.5)
+    # a bad value is told by its range, before the missing partner
+    with pytest.raises(ParameterError, match=r"^alpha must be a finite number >= 0 \[1/s\]"):
+        Rayleigh(alpha=-1.0)
+    with pytest.raises(ParameterError, match=r"^beta must be given together with alpha"):
+        Rayleigh(beta=0.01)

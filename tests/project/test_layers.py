@@ -4,8 +4,11 @@ The layers, from the top: the command line (``twoball/cli``), the face (the
 public verbs and objects in ``twoball/``), ``verify``, ``fem_membrane``,
 ``modal``, and the ground floor of stdlib-only helpers (``twoball/_common``).
 Every import of every module is read from its source, those inside functions
-and under ``TYPE_CHECKING`` included; a module may import its own layer or any
-layer below, and the command line only the face and the ground floor.
+and under ``TYPE_CHECKING`` included, and so are the imports made by name at
+run time: the lazy name maps of :func:`twoball._common.lazy.attach` (a
+package's ``{"Case": ".parameters", ...}``) and ``importlib.import_module``
+with a constant name.  A module may import its own layer or any layer below,
+and the command line only the face and the ground floor.
 """
 
 from __future__ import annotations
@@ -55,13 +58,81 @@ def layer(module: str) -> str:
     return "face"
 
 
+#: The module of the lazy name maps, and the functions that import a module by name.
+LAZY = "twoball._common.lazy"
+BY_NAME = ("import_module", "__import__")
+
+
+def _resolve(name: str, anchor: str) -> str:
+    """``name`` as importlib resolves it against the package ``anchor`` (``.x``, ``..x``)."""
+    level = len(name) - len(name.lstrip("."))
+    if not level:
+        return name
+    base = anchor.rsplit(".", level - 1)[0] if level > 1 else anchor
+    rest = name[level:]
+    return f"{base}.{rest}" if rest else base
+
+
+def _strings(node: ast.AST | None) -> str | None:
+    """A constant string, or the first one of a constant tuple (``(module, attribute)``)."""
+    if isinstance(node, ast.Constant) and isinstance(node.value, str):
+        return node.value
+    if isinstance(node, ast.Tuple) and node.elts:
+        return _strings(node.elts[0])
+    return None
+
+
+def by_name(module: str, tree: ast.Module, package: str) -> list[str]:
+    """The modules ``module`` imports at run time by name.
+
+    The values of every mapping handed to ``attach`` (imported from
+    :data:`LAZY`; the mapping written in the call or bound to a module-level
+    name), resolved against the module's ``__name__`` as ``attach`` does, and
+    the constant first argument of ``import_module`` or ``__import__``.
+    """
+    attach_names: set[str] = set()
+    mappings: dict[str, ast.Dict] = {}
+    for node in ast.walk(tree):
+        if isinstance(node, ast.ImportFrom):
+            base = node.module or ""
+            if node.level:
+                base = _resolve("." * node.level + base, package)
+            if base == LAZY:
+                attach_names |= {a.asname or a.name for a in node.names if a.name == "attach"}
+    for node in tree.body:  # module-level mappings (``_NAMES = {...}``)
+        value = node.value if isinstance(node, (ast.Assign, ast.AnnAssign)) else None
+        targets = node.targets if isinstance(node, ast.Assign) else [getattr(node, "target", None)]
+        if isinstance(value, ast.Dict):
+            mappings |= {t.id: value for t in targets if isinstance(t, ast.Name)}
+    names: list[str] = []
+    for node in ast.walk(tree):
+        if not isinstance(node, ast.Call):
+            continue
+        func = node.func
+        called = func.id if isinstance(func, ast.Name) else getattr(func, "attr", None)
+        if called in attach_names and len(node.args) >= 2:
+            table = node.args[1]
+            table = mappings.get(table.id) if isinstance(table, ast.Name) else table
+            if isinstance(table, ast.Dict):
+                values = [_strings(v) for v in table.values]
+                names += [_resolve(v, module) for v in values if v]
+        elif called in BY_NAME and node.args:
+            name = _strings(node.args[0])
+            if name:
+                names.append(_resolve(name, module) if name.startswith(".") else name)
+    return names
+
+
 def imports(module: str, path: Path, known: dict[str, Path]) -> set[str]:
-    """The package's modules that ``module`` imports, anywhere in its source."""
+    """The package's modules that ``module`` imports, anywhere in its source or by name."""
     package = module if path.name == "__init__.py" else module.rpartition(".")[0]
     found: set[str] = set()
-    for node in ast.walk(ast.parse(path.read_text(encoding="utf-8"))):
+    tree = ast.parse(path.read_text(encoding="utf-8"))
+    for node in [*ast.walk(tree), None]:
         names: list[str] = []
-        if isinstance(node, ast.Import):
+        if node is None:  # after the import statements, the imports by name
+            names = by_name(module, tree, package)
+        elif isinstance(node, ast.Import):
             names = [alias.name for alias in node.names]
         elif isinstance(node, ast.ImportFrom):
             base = node.module or ""
@@ -162,6 +233,26 @@ def test_at_most_two_exceptions_each_with_a_reason():
         ("modal", "from twoball.verify.output.fields import ball_model", "verify"),
         ("twoball/_common", "    import twoball.modal.parameters", "modal"),
         ("twoball/cli", "from twoball.fem_membrane.options import MeshOptions", "fem_membrane"),
+        # imports by name: a lazy name map (written in the call or bound to a name), and
+        # import_module inside a function
+        (
+            "modal",
+            "from twoball._common.lazy import attach\n"
+            "__getattr__, __dir__ = attach(__name__, {'f': 'twoball.verify.output.fields'})",
+            "verify",
+        ),
+        (
+            "fem_membrane",
+            "from twoball._common.lazy import attach as _attach\n"
+            "_NAMES = {'figure': ('twoball.verify.output.figures', 'save_figure')}\n"
+            "_getattr, _dir = _attach(__name__, _NAMES)",
+            "verify",
+        ),
+        (
+            "twoball/_common",
+            "    importlib.import_module('twoball.fem_membrane.mesh')",
+            "fem_membrane",
+        ),
     ],
 )
 def test_a_planted_upward_import_is_found(tmp_path, folder, line, arrow):
@@ -178,14 +269,34 @@ def test_a_planted_upward_import_is_found(tmp_path, folder, line, arrow):
     assert upward(graph(ROOT)) == []
 
 
-def test_a_planted_circle_is_found(tmp_path):
+@pytest.mark.parametrize(
+    "second",
+    [
+        "from twoball.modal import planted_a\n",
+        "from twoball._common.lazy import attach\n"
+        "__getattr__, __dir__ = attach(__name__, {'a': '..planted_a'})\n",
+        "import importlib\n\ndef late():\n    importlib.import_module('twoball.modal.planted_a')\n",
+    ],
+    ids=["import", "lazy-map", "import_module"],
+)
+def test_a_planted_circle_is_found(tmp_path, second):
     import shutil
 
     for part in PARTS:
         shutil.copytree(ROOT / part, tmp_path / part, ignore=shutil.ignore_patterns("__pycache__"))
     (tmp_path / "modal" / "planted_a.py").write_text("from twoball.modal import planted_b\n")
-    (tmp_path / "modal" / "planted_b.py").write_text("from twoball.modal import planted_a\n")
+    if "attach" in second:  # a lazy map is a package's: planted_b is one, '..' its parent
+        (tmp_path / "modal" / "planted_b").mkdir()
+        (tmp_path / "modal" / "planted_b" / "__init__.py").write_text(second)
+    else:
+        (tmp_path / "modal" / "planted_b.py").write_text(second)
     assert circles(graph(tmp_path)) == [["twoball.modal.planted_a", "twoball.modal.planted_b"]]
+
+
+def test_relative_names_resolve_as_importlib_resolves_them():
+    assert _resolve(".parameters", "twoball.modal") == "twoball.modal.parameters"
+    assert _resolve("..options", "twoball.modal.floor") == "twoball.modal.options"
+    assert _resolve("twoball.fem", "twoball") == "twoball.fem"
 
 
 def test_the_ground_floor_imports_the_standard_library_only():

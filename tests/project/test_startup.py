@@ -23,6 +23,7 @@ from twoball.modal.parameters import preset
 from twoball.modal.report import legendre_liftoff
 
 from tests import ROOT
+from twoball.cli.main import COMMANDS
 
 
 def _modules_after(code: str) -> set[str]:
@@ -96,6 +97,15 @@ def test_help_loads_no_numerical_library(argv):
     packages, report = imported_by(argv)
     assert report["status"] == 0
     assert "liftoff" in report["stdout"] or "twoball" in report["stdout"]
+    assert not packages & {"numpy", *HEAVY}, sorted(packages & {"numpy", *HEAVY})
+
+
+@pytest.mark.parametrize("command", sorted(COMMANDS))
+def test_subcommand_help_loads_no_numerical_library(command):
+    """Each ``--help`` takes its choices and defaults from twoball/_choices.py (stdlib only)."""
+    packages, report = imported_by([command, "--help"])
+    assert report["status"] == 0
+    assert f"usage: twoball {command}" in report["stdout"]
     assert not packages & {"numpy", *HEAVY}, sorted(packages & {"numpy", *HEAVY})
 
 

@@ -167,10 +167,15 @@ CALLS: dict[str, dict[str, Callable[[Any, Path], Any]]] = {
     "gap": {"Drop": lambda v, _: twoball.Drop(gap=v)},
     "frames": {
         "export": lambda v, tmp: twoball.export(tmp / "x.pvd", CASE, mesh=LEVEL_1, frames=v),
-        "render": lambda v, tmp: twoball.render(tmp / "x.gif", CASE, mesh=LEVEL_1, frames=v),
+        "RenderOptions": lambda v, _: twoball.RenderOptions(frames=v),
+        "render": lambda v, tmp: twoball.render(
+            tmp / "x.gif", CASE, mesh=LEVEL_1, view=twoball.RenderOptions(frames=v)
+        ),
     },
     "time": {  # the instant of a PNG is its one frame time
-        "render": lambda v, tmp: twoball.render(tmp / "x.png", CASE, mesh=LEVEL_1, frames=[v])
+        "render": lambda v, tmp: twoball.render(
+            tmp / "x.png", CASE, mesh=LEVEL_1, view=twoball.RenderOptions(frames=[v])
+        )
     },
     "fps": {
         "RenderOptions": lambda v, _: twoball.RenderOptions(fps=v),
@@ -250,8 +255,13 @@ CALLS: dict[str, dict[str, Callable[[Any, Path], Any]]] = {
 }
 
 
-#: The API's name of a flag's value where it differs from the flag's own parameter name.
-API_NAME = {"time": "frames"}
+#: The API's name of a flag's value where it differs from the flag's own parameter name
+#: (for every entry point, or for one): the ratio D of --damping is ModalRatio's ``ratio``.
+API_NAME: dict[str | tuple[str, str], str] = {
+    "time": "frames",
+    ("damping", "ModalRatio"): "ratio",
+    ("damping", "liftoff"): "ratio",
+}
 
 
 def api_cases() -> list[tuple[str, str, Any]]:
@@ -275,7 +285,7 @@ def call_refused(name: str, entry: str, value: Any, tmp: Path) -> str | None:
             CALLS[name][entry](value, tmp)
         return "returned"
     except twoball.ParameterError as error:
-        expected = API_NAME.get(name, name)
+        expected = API_NAME.get((name, entry), API_NAME.get(name, name))
         return None if error.name == expected else f"named {error.name!r}: {error}"
     except Ran:
         return "started the work"
@@ -338,7 +348,10 @@ EXTRA: list[tuple[str, Callable[[Path], Any]]] = [
             twoball.Case(rayleigh=twoball.Rayleigh()), fast=True, out=tmp / "r"
         ),
     ),
-    ("backends", lambda tmp: twoball.plot("precursor", tmp / "p.png", CASE, backends=["fem"])),
+    (
+        "backends",
+        lambda tmp: twoball.plot("precursor", tmp / "p.png", CASE, figure=P(backends=["fem"])),
+    ),
     (
         "param",
         lambda _: twoball.sweep(
@@ -363,10 +376,11 @@ EXTRA: list[tuple[str, Callable[[Path], Any]]] = [
     ("modes_list", lambda tmp: twoball.converge(CASE, study="h", modes_list="30,60,120")),
     ("levels", lambda tmp: twoball.converge(CASE, study="h", levels="0:1", out=tmp / "c")),
     ("fast", lambda tmp: twoball._studies.verify(CASE, fast=True, thorough=True)),
-    ("workers", lambda _: twoball.sweep({"damping": [0.1]}, CASE, workers=2, scheduler="x:1")),
+    ("workers", lambda _: twoball.sweep({"damping": [0.1]}, CASE, workers=0)),
+    ("workers", lambda _: twoball.sweep({"damping": [0.1]}, CASE, workers=2.5)),
     ("fps", lambda tmp: twoball.render(tmp / "x.png", CASE, mesh=LEVEL_1, view=R(fps=10))),
-    ("frames", lambda tmp: twoball.render(tmp / "x.png", CASE, mesh=LEVEL_1, frames=5)),
-    ("frames", lambda tmp: twoball.render(tmp / "x.png", CASE, frames=[0.001, 0.002])),
+    ("frames", lambda tmp: twoball.render(tmp / "x.png", CASE, mesh=LEVEL_1, view=R(frames=5))),
+    ("frames", lambda tmp: twoball.render(tmp / "x.png", CASE, view=R(frames=[0.001, 0.002]))),
     (
         "initial",
         lambda tmp: twoball.render(
@@ -374,8 +388,16 @@ EXTRA: list[tuple[str, Callable[[Path], Any]]] = [
         ),
     ),
     ("case", lambda tmp: twoball.plot("eigen", tmp / "p.png", CASE)),
-    ("sigma", lambda tmp: twoball.plot("eigen", tmp / "p.png", sigma="none")),
-    ("backends", lambda tmp: twoball.plot("eigen", tmp / "p.png", backends=["fem"])),
+    ("sigma", lambda tmp: twoball.plot("eigen", tmp / "p.png", series=twoball.Series("none"))),
+    ("series", lambda _: twoball.liftoff(series="lanczos")),
+    ("series", lambda tmp: twoball.export(tmp / "x.vtu", mesh=ONE, series={"sigma": "none"})),
+    ("damping", lambda tmp: twoball.export(tmp / "x.vtu", mesh=ONE, damping=0.2)),
+    ("damping", lambda _: twoball.sweep({"v0": [3.0]}, damping="rayleigh")),
+    ("rayleigh", lambda _: twoball.converge(study="modes", damping=twoball.Rayleigh())),
+    ("rayleigh", lambda tmp: twoball._studies.verify(fast=True, damping=twoball.Rayleigh(1, 0))),
+    ("series", lambda tmp: twoball.plot("eigen", tmp / "p.png", series=twoball.Series())),
+    ("damping", lambda tmp: twoball.plot("eigen", tmp / "p.png", damping=twoball.Rayleigh())),
+    ("backends", lambda tmp: twoball.plot("eigen", tmp / "p.png", figure=P(backends=["fem"]))),
     ("t_end", lambda tmp: twoball.plot("eigen", tmp / "p.png", stepping=S(t_end=0.01))),
     ("levels", lambda tmp: twoball.plot("pole", tmp / "p.png", CASE, figure=P(levels=[1, 2]))),
     ("max_degree", lambda tmp: twoball.plot("waterfall", tmp / "p.png", figure=P(max_degree=5))),
@@ -474,7 +496,7 @@ NO_LONGER_IGNORED: list[tuple[str, Callable[[Path], Any]]] = [
     ("out", lambda _: twoball.verify(fast=True, out=[1])),
     ("frames", lambda tmp: twoball.export(tmp / "x.pvd", mesh=ONE, frames="0,1")),
     ("frames", lambda tmp: twoball.export(tmp / "x.pvd", mesh=ONE, frames=[[0.0]])),
-    ("frames", lambda tmp: twoball.render(tmp / "x.gif", mesh=ONE, frames=[["0.001"]])),
+    ("frames", lambda tmp: twoball.render(tmp / "x.gif", mesh=ONE, view=R(frames=[["0.001"]]))),
     (
         "mesh",
         lambda _: twoball.liftoff(
@@ -485,14 +507,16 @@ NO_LONGER_IGNORED: list[tuple[str, Callable[[Path], Any]]] = [
     ("phi_a", lambda _: twoball.sweep({"wave_speed": [300.0]}, twoball.Case(phi_a=2.5))),
     (
         "recontact",
-        lambda tmp: twoball.plot("waterfall", tmp / "p.png", mesh=ONE, recontact="paper"),
+        lambda tmp: twoball.plot(
+            "waterfall", tmp / "p.png", mesh=ONE, series=twoball.Series(recontact="paper")
+        ),
     ),
     ("levels", lambda tmp: twoball.converge(study="h", levels="", out=tmp / "c")),
     ("modes_list", lambda tmp: twoball.converge(study="modes", modes_list="", out=tmp / "c")),
     ("modes_list", lambda tmp: twoball.converge(study="modes", modes_list="30,100000,1000000")),
-    ("scheduler", lambda _: twoball.sweep({"damping": [0.1]}, scheduler="")),
-    ("scheduler", lambda _: twoball.sweep({"damping": [0.1]}, scheduler="::::")),
-    ("scheduler", lambda tmp: twoball.reproduce(tmp / "rep", only="table1", scheduler="")),
+    ("workers", lambda _: twoball.sweep({"damping": [0.1]}, workers="")),
+    ("workers", lambda _: twoball.sweep({"damping": [0.1]}, workers="::::")),
+    ("workers", lambda tmp: twoball.reproduce(tmp / "rep", only="table1", workers="")),
     (
         "warp",
         lambda tmp: twoball.render(tmp / "x.png", mesh=ONE, view=twoball.RenderOptions(warp=1e308)),
@@ -540,6 +564,21 @@ OBJECTS: list[tuple[str, Callable[[], Any]]] = [
     ("file", lambda: M("sphere", file="ball.msh")),
     ("level", lambda: M(file="ball.msh", level=1)),
     ("pole", lambda: M(pole=(0, 0, 1))),
+    ("level", lambda: M(level=11)),  # beyond any budget (fem_membrane/validate.py)
+    ("level", lambda: M(level=10**9)),
+    ("file", lambda: M(file=123)),
+    ("file", lambda: M(file=[1, 2])),
+    ("file", lambda: M(file=b"ball.msh")),
+    ("file", lambda: M(file="/no/such/folder/ball.msh")),
+    ("file", lambda: M(file=Path(__file__).parent)),  # a folder, not a file
+    # any readable file passes the construction (its contents are read when loaded)
+    ("pole", lambda: M(file=__file__, pole=(0, 0, 0))),
+    ("pole", lambda: M(file=__file__, pole=(math.nan, 0, 1))),
+    ("pole", lambda: M(file=__file__, pole=(0, math.inf, 1))),
+    ("pole", lambda: M(file=__file__, pole="north")),
+    ("pole", lambda: M(file=__file__, pole=(0, 1))),
+    ("pole", lambda: M(file=__file__, pole=(0, 0, 1, 0))),
+    ("pole", lambda: M(file=__file__, pole=1.0)),
     ("geometry", lambda: M(geometry="bogus")),
     ("geometry", lambda: M("ring", geometry="exact")),
     ("geometry", lambda: M("axisym", geometry="exact")),
@@ -565,12 +604,14 @@ OBJECTS: list[tuple[str, Callable[[], Any]]] = [
     ("restitution", lambda: twoball.Body(0.1, restitution=2)),
     ("restitution", lambda: twoball.Body(0.1, restitution=-0.1)),
     ("energy", lambda: twoball.Body(0.1, energy="x")),
-    ("damping", lambda: twoball.ModalRatio(1.0)),  # the ratio is the case's damping D
-    ("damping", lambda: twoball.ModalRatio(-0.1)),
-    ("damping", lambda: twoball.ModalRatio(math.nan)),
+    ("ratio", lambda: twoball.ModalRatio(1.0)),
+    ("ratio", lambda: twoball.ModalRatio(-0.1)),
+    ("ratio", lambda: twoball.ModalRatio(math.nan)),
     ("alpha", lambda: twoball.Rayleigh(alpha=1)),
     ("beta", lambda: twoball.Rayleigh(beta=1)),
     ("alpha", lambda: twoball.Rayleigh(alpha=-1, beta=0)),
+    ("alpha", lambda: twoball.Rayleigh(alpha=-1)),  # the range before the pairing
+    ("beta", lambda: twoball.Rayleigh(beta=math.inf)),
     ("beta", lambda: twoball.Rayleigh(alpha=0, beta=math.nan)),
     ("warp", lambda: R(warp=-1)),
     ("warp", lambda: R(warp=math.nan)),
@@ -590,6 +631,31 @@ OBJECTS: list[tuple[str, Callable[[], Any]]] = [
     ("levels", lambda: P(levels="1,2")),
     ("levels", lambda: P(levels=[1.5])),
     ("orders", lambda: P(orders=[True])),
+    ("levels", lambda: P(levels=[-1])),
+    ("levels", lambda: P(levels=[11])),
+    ("levels", lambda: P(levels={1, 2})),
+    ("orders", lambda: P(orders=[0])),
+    ("orders", lambda: P(orders=[5])),
+    ("sigma", lambda: twoball.Series(sigma="gauss")),
+    ("sigma", lambda: twoball.Series(sigma=None)),
+    ("recontact", lambda: twoball.Series(recontact="never")),
+    ("recontact", lambda: twoball.Series(recontact=1)),
+    ("frames", lambda: R(frames=0)),
+    ("frames", lambda: R(frames=2001)),
+    ("frames", lambda: R(frames=True)),
+    ("frames", lambda: R(frames=[])),
+    ("frames", lambda: R(frames=[-1e-3])),
+    ("frames", lambda: R(frames=[math.inf])),
+    ("frames", lambda: R(frames="0.001")),
+    ("backends", lambda: P(backends=["spectral"])),
+    ("backends", lambda: P(backends="fem")),
+    ("backends", lambda: P(backends=[])),
+    ("total", lambda: twoball.Reporter("demo", total=-1)),
+    ("total", lambda: twoball.Reporter("demo", total=2.5)),
+    ("interval", lambda: twoball.Reporter("demo", interval=math.nan)),
+    ("interval", lambda: twoball.Reporter("demo", interval=0)),
+    ("delay", lambda: twoball.Reporter("demo", delay=-1)),
+    ("name", lambda: twoball.Reporter(3)),
     ("max_degree", lambda: P(max_degree=0)),
 ]
 

@@ -101,16 +101,21 @@ class Reporter:
     name : str
         What runs, first word of every line (``verify``, ``export``, ...).
     total : int, optional
-        Number of steps, if known (shown as ``k/total``).
+        Number of steps >= 0, if known (shown as ``k/total``).
     stream : file, optional
         Where to write (default: standard error at the time of entering).
     terminal : bool, optional
         Draw one status line (True) or print lines (False); default: whether
         ``stream`` is a terminal.
     interval : float
-        Seconds between two lines.
+        Seconds between two lines, a finite number > 0.
     delay : float
-        Print nothing unless the work lasts longer than this [s].
+        Print nothing unless the work lasts longer than this [s], a finite number >= 0.
+
+    Raises
+    ------
+    ParameterError
+        Naming the argument and its valid range.
     enabled : bool, optional
         Default: not :func:`is_quiet`.
 
@@ -135,10 +140,26 @@ class Reporter:
         delay: float = 0.0,
         enabled: bool | None = None,
     ) -> None:
+        from numbers import Integral
+
+        from twoball._common.errors import ParameterError, real_number
+
+        if not isinstance(name, str):
+            raise ParameterError("name", "a text (what runs)", name)
+        if total is not None and (
+            isinstance(total, bool) or not isinstance(total, Integral) or total < 0
+        ):
+            raise ParameterError("total", "an integer >= 0 (or None: unknown)", total)
+        seconds = real_number("interval", interval, "a finite number of seconds > 0")
+        if not seconds > 0.0:
+            raise ParameterError("interval", "a finite number of seconds > 0", interval)
+        wait = real_number("delay", delay, "a finite number of seconds >= 0")
+        if not wait >= 0.0:
+            raise ParameterError("delay", "a finite number of seconds >= 0", delay)
         self.name = name
-        self.total = total
-        self.interval = interval
-        self.delay = delay
+        self.total = None if total is None else int(total)
+        self.interval = seconds
+        self.delay = wait
         self.enabled = (not _QUIET) if enabled is None else bool(enabled)
         self._stream = stream
         self._terminal = terminal

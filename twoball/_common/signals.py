@@ -20,7 +20,6 @@ import contextlib
 import os
 import signal
 import sys
-import threading
 import time
 from collections.abc import Iterator
 
@@ -42,8 +41,18 @@ class Interrupted(KeyboardInterrupt):
 
 
 _HANDLED = (signal.SIGINT, signal.SIGTERM)
-_state = threading.local()
 _deferral = {"depth": 0, "pending": None}
+
+
+def _in_main_thread() -> bool:
+    """Whether this is the main thread (Python runs signal handlers only there).
+
+    A process that never imported :mod:`threading` has started no thread through
+    it, so it runs in its main thread; threading is not imported for the answer
+    (the command line's ``--help`` does without it).
+    """
+    threading = sys.modules.get("threading")
+    return threading is None or threading.current_thread() is threading.main_thread()
 
 
 def _raise_interrupted(signum: int, frame: object) -> None:
@@ -60,7 +69,7 @@ def raise_on_signals() -> Iterator[None]:
     Outside the main thread this does nothing (Python runs signal handlers
     only there).  The previous handlers come back on exit.
     """
-    if threading.current_thread() is not threading.main_thread():
+    if not _in_main_thread():
         yield
         return
     previous = {s: signal.getsignal(s) for s in _HANDLED}
@@ -76,10 +85,7 @@ def raise_on_signals() -> Iterator[None]:
 @contextlib.contextmanager
 def sigterm_raises() -> Iterator[None]:
     """Make SIGTERM raise (for API callers) unless someone already handles it."""
-    if (
-        threading.current_thread() is threading.main_thread()
-        and signal.getsignal(signal.SIGTERM) == signal.SIG_DFL
-    ):
+    if _in_main_thread() and signal.getsignal(signal.SIGTERM) == signal.SIG_DFL:
         with raise_on_signals():
             yield
     else:
@@ -121,7 +127,7 @@ def held_signals() -> Iterator[None]:
     alone), so API callers are covered as well as the command line.
     """
     installed = {}
-    if threading.current_thread() is threading.main_thread():
+    if _in_main_thread():
         for s in _HANDLED:
             current = signal.getsignal(s)
             if current in (signal.default_int_handler, signal.SIG_DFL):

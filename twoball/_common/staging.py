@@ -23,7 +23,7 @@ Folders twoball writes carry one marker file, :data:`MARKER`: JSON naming the
 writer and listing every file it wrote.  An existing target folder is replaced
 only if it is empty or holds the marker and nothing but the files it lists; any
 other entry (a user's file, a symbolic link) makes :func:`check_folder` raise
-:class:`~twoball._common.errors.ParameterError` naming ``--out`` and the entry.
+:class:`~twoball._common.errors.ParameterError` naming ``out`` and the entry.
 A target that is a symbolic link is refused, never followed.
 
 Scratch entries are named ``.NAME.twoball-scratch-PID-TOKEN`` and removed on

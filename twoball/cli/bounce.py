@@ -129,8 +129,9 @@ def drop_case(args: argparse.Namespace) -> twoball.Case:
     if args.drop_height is not None and args.v0 is not None:
         raise ParameterError("drop_height", "given alone, not with --v0", args.drop_height)
     for name, default in (("sigma", "lanczos"), ("recontact", "window")):
-        if getattr(args, name, default) != default:
-            raise ParameterError(name, "left out for the drop (no lift-off criteria)", args.sigma)
+        if getattr(args, name, None) not in (None, default):
+            valid = "left out for the drop (no lift-off criteria)"
+            raise ParameterError(name, valid, getattr(args, name))
     case_args = copy(args)
     case_args.gas = None
     case_args.modes = None

@@ -67,13 +67,12 @@ def add_case_options(parser: argparse.ArgumentParser, window: str = "4 pi / c") 
     )
     model = parser.add_argument_group("model")
     model.add_argument(
-        "--sigma", choices=_choices.SIGMAS, default="lanczos", help="spectral filter (eq. (3.16))"
+        "--sigma", choices=_choices.SIGMAS, help="spectral filter (eq. (3.16)); default lanczos"
     )
     model.add_argument(
         "--recontact",
         choices=_choices.HORIZONS,
-        default="window",
-        help="re-contact horizon: the whole window, or dt < t_l as in §3(a)(ii)",
+        help="re-contact horizon: the whole window (default), or dt < t_l as in §3(a)(ii)",
     )
     model.add_argument(
         "--t-end", type=number, metavar="SECONDS", help=f"modelled window [s] (default {window})"
@@ -137,6 +136,12 @@ def case_options_given(args: argparse.Namespace) -> bool:
     )
 
 
+def series_options(args: argparse.Namespace) -> twoball.Series | None:
+    """``--sigma`` and ``--recontact`` as :class:`~twoball.Series` (None when neither is given)."""
+    fields = {n: getattr(args, n) for n in ("sigma", "recontact") if getattr(args, n, None)}
+    return twoball.Series(**fields) if fields else None
+
+
 def rayleigh_option(text: str) -> twoball.Rayleigh:
     """``--rayleigh ALPHA,BETA`` (SI: alpha [1/s], beta [s]) as a :class:`~twoball.Rayleigh`."""
     parts = [p.strip() for p in str(text).split(",")]
@@ -190,4 +195,5 @@ __all__ = [
     "case_from_options",
     "case_options_given",
     "rayleigh_option",
+    "series_options",
 ]

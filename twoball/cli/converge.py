@@ -10,14 +10,12 @@ import sys
 from pathlib import Path
 from typing import Any
 
-from rich.table import Table
-
 import twoball
 from twoball import _choices
 from twoball._common.errors import ParameterError
 from twoball._common.strict_json import json_text
-from twoball.cli.case_options import add_case_options, case_from_options
-from twoball.cli.console import console, print_notes, print_warnings
+from twoball.cli.case_options import add_case_options, case_from_options, series_options
+from twoball.cli.console import Table, console, print_notes, print_warnings
 
 MESHES = ("sphere", "axisym")
 
@@ -54,8 +52,7 @@ def run(args: argparse.Namespace) -> int:
         "levels": args.levels,
         "modes_list": args.modes_list,
         "stepping": None if args.t_end is None else twoball.Stepping(t_end=args.t_end),
-        "sigma": args.sigma,
-        "recontact": args.recontact,
+        "series": series_options(args),
         "out": out,
     }
     if args.study == "modes" and args.modes is not None:

@@ -8,7 +8,7 @@ from __future__ import annotations
 import argparse
 
 from twoball import _choices
-from twoball.cli.case_options import add_case_options, case_from_options
+from twoball.cli.case_options import add_case_options, case_from_options, series_options
 from twoball.cli.console import console, key_value_table, number, print_notes, print_warnings
 from twoball.cli.contact_options import add_contact_options, body_options
 from twoball.cli.mesh_options import (
@@ -51,6 +51,10 @@ def run(args: argparse.Namespace) -> int:
     from twoball._common.progress import Reporter
 
     frames = args.frames if args.times is None else _choices.parse_times(args.times)
+    if args.format is not None:  # the API takes the suffix of --out; --format must agree
+        from twoball._files import check_export_format
+
+        check_export_format(args.out, args.format)
     with Reporter("export") as progress:
         result = twoball.export(
             args.out,
@@ -59,10 +63,8 @@ def run(args: argparse.Namespace) -> int:
             mesh=mesh_options(args),
             stepping=stepping_options(args),
             body=body_options(args),
+            series=series_options(args),
             frames=frames,
-            format=args.format,
-            sigma=args.sigma,
-            recontact=args.recontact,
             progress=progress,
         )
     files, report, selected = result.files, result.report, result.times_s

@@ -38,6 +38,7 @@ FLAGS: dict[str, str] = {
     # model
     "sigma": "--sigma",
     "recontact": "--recontact",
+    "series": "--sigma",
     "t_end": "--t-end",
     "backend": "--backend",
     "backends": "--backend",
@@ -127,6 +128,12 @@ def flag_of(name: str, args: Namespace | None = None) -> str:
     if name == "rayleigh" and getattr(args, "rayleigh", None) is None:
         if getattr(args, "damping_model", None) is not None:
             return "--damping-model"  # the fitted law of --damping-model rayleigh
+    if name == "series" and getattr(args, "sigma", None) is None:
+        if getattr(args, "recontact", None) is not None:
+            return "--recontact"  # the rules came from --recontact alone
+    if name == "workers" and getattr(args, "scheduler", None) is not None:
+        if getattr(args, "workers", None) is None:
+            return "--scheduler"  # the API's workers took the scheduler's address
     if name == "frames" and getattr(args, "times", None) is not None:
         return "--times"
     if name == "frames" and getattr(args, "time", None) is not None:

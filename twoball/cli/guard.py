@@ -20,9 +20,12 @@ import errno
 import os
 import sys
 from collections.abc import Callable
-from typing import Any
 
 from twoball._common.signals import raise_on_signals
+
+TYPE_CHECKING = False  # typing is not imported at start-up: annotations only
+if TYPE_CHECKING:
+    from typing import Any
 
 EXIT_USAGE = 2
 EXIT_NUMERICAL = 3

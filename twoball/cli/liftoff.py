@@ -8,7 +8,7 @@ from __future__ import annotations
 import argparse
 
 import twoball
-from twoball.cli.case_options import add_case_options, case_from_options
+from twoball.cli.case_options import add_case_options, case_from_options, series_options
 from twoball.cli.console import (
     console,
     key_value_table,
@@ -146,8 +146,7 @@ def solve_from_options(args: argparse.Namespace) -> twoball.LiftoffReport:
         refuse_mesh_flags(args, "with backend legendre (no mesh)")
     options = {
         "backend": args.backend,
-        "sigma": args.sigma,
-        "recontact": args.recontact,
+        "series": series_options(args),
         "mesh": mesh_options(args),
         "stepping": stepping_options(args),
         "body": body_options(args),

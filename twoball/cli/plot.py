@@ -15,6 +15,7 @@ from twoball.cli.case_options import (
     apply_limits,
     case_from_options,
     case_options_given,
+    series_options,
 )
 from twoball.cli.console import console, key_value_table, print_notes, print_warnings
 from twoball.cli.contact_options import add_contact_options, body_options
@@ -71,19 +72,18 @@ def run(args: argparse.Namespace) -> int:
             args.kind,
             args.out,
             case,
-            backends=None if args.backend is None else parse_backends(args.backend),
             mesh=mesh_options(args),
             stepping=stepping_options(args),
             body=body_options(args),
+            series=series_options(args),
             figure=twoball.PlotOptions(
                 dpi=args.dpi,
                 instants=args.instants,
                 levels=levels,
                 orders=orders,
                 max_degree=args.max_degree,
+                backends=None if args.backend is None else parse_backends(args.backend),
             ),
-            sigma=args.sigma,
-            recontact=args.recontact,
             progress=progress,
         )
     rows = [("file", str(result.file)), ("plot", result.kind), *result.rows]
@@ -108,7 +108,7 @@ def register(parser: argparse.ArgumentParser) -> None:
     add_case_options(parser)
     add_mesh_options(parser, _choices.SPHERE_KINDS, initial=True, geometry=True)
     # None when not given: the API fills in the defaults and refuses what the kind does not use
-    parser.set_defaults(sigma=None, recontact=None, initial=None)
+    parser.set_defaults(initial=None)
     add_route_option(parser)
     parser.add_argument(
         "--backend", help="solvers drawn: fem, legendre or both (default fem,legendre)"

@@ -9,7 +9,7 @@ import argparse
 
 import twoball
 from twoball import _choices
-from twoball.cli.case_options import add_case_options, case_from_options
+from twoball.cli.case_options import add_case_options, case_from_options, series_options
 from twoball.cli.console import console, key_value_table, print_notes, print_warnings
 from twoball.cli.contact_options import add_contact_options, body_options
 from twoball.cli.export import add_backend_option
@@ -32,7 +32,7 @@ def run(args: argparse.Namespace) -> int:
         valid = "used with .png only (--frames for an animation)"
         raise twoball.ParameterError("time", valid, args.time)
     frames = args.frames if args.time is None else [args.time]
-    view = twoball.RenderOptions(warp=args.warp, size=args.size, fps=args.fps)
+    view = twoball.RenderOptions(warp=args.warp, size=args.size, fps=args.fps, frames=frames)
     with Reporter("render") as progress:
         result = twoball.render(
             args.out,
@@ -41,10 +41,8 @@ def run(args: argparse.Namespace) -> int:
             mesh=mesh_options(args),
             stepping=stepping_options(args),
             body=body_options(args),
-            frames=frames,
+            series=series_options(args),
             view=view,
-            sigma=args.sigma,
-            recontact=args.recontact,
             progress=progress,
         )
     times = result.times_s

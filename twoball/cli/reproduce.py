@@ -7,6 +7,7 @@ import shlex
 
 from twoball import _choices
 from twoball.cli.console import console
+from twoball.cli.sweep import workers
 from twoball.cli.values import integer
 
 __all__ = ["register", "run"]
@@ -21,8 +22,7 @@ def run(args: argparse.Namespace) -> int:
         done = twoball.reproduce(
             args.out,
             only=args.only,
-            workers=args.workers,
-            scheduler=args.scheduler,
+            workers=workers(args),
             progress=bar.task,
             command=command_line(args),
         )

@@ -8,7 +8,7 @@ from typing import Any
 from twoball import _choices
 from twoball._common.errors import ParameterError
 from twoball._common.provenance import attach
-from twoball.cli.case_options import add_case_options, case_from_options
+from twoball.cli.case_options import add_case_options, case_from_options, series_options
 from twoball.cli.console import (
     Table,
     console,
@@ -110,10 +110,8 @@ def run(args: argparse.Namespace) -> int:
             base,
             stepping=stepping,
             body=body,
-            sigma=args.sigma,
-            recontact=args.recontact,
-            workers=args.workers,
-            scheduler=args.scheduler,
+            series=series_options(args),
+            workers=workers(args),
             progress=bar.update,
         )
     points = result.points
@@ -128,6 +126,14 @@ def run(args: argparse.Namespace) -> int:
         if plot is not None:
             console().print(f"plot written to {plot}")
     return 0
+
+
+def workers(args: argparse.Namespace) -> int | str | None:
+    """``--workers N`` or ``--scheduler ADDRESS`` as the API's one ``workers`` (not both)."""
+    if args.scheduler is not None and args.workers is not None:
+        valid = "left out with --scheduler (the cluster decides)"
+        raise ParameterError("workers", valid, args.workers)
+    return args.workers if args.scheduler is None else args.scheduler
 
 
 def _run_bounce(args: argparse.Namespace) -> int:
@@ -169,8 +175,7 @@ def _run_bounce(args: argparse.Namespace) -> int:
             drop=drop,
             body=body,
             pair=args.pair,
-            workers=args.workers,
-            scheduler=args.scheduler,
+            workers=workers(args),
             progress=bar.update,
         )
     if plot is not None:

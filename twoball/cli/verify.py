@@ -10,11 +10,9 @@ import sys
 from pathlib import Path
 from typing import Any
 
-from rich.table import Table
-
 from twoball._common.strict_json import json_text
-from twoball.cli.case_options import add_case_options, case_from_options
-from twoball.cli.console import console, print_notes, print_warnings
+from twoball.cli.case_options import add_case_options, case_from_options, series_options
+from twoball.cli.console import Table, console, print_notes, print_warnings
 
 DEFAULT_OUT = "twoball-report"
 
@@ -75,8 +73,7 @@ def run(args: argparse.Namespace) -> int:
     options = {
         "thorough": args.thorough,
         "fast": args.fast,
-        "sigma": args.sigma,
-        "recontact": args.recontact,
+        "series": series_options(args),
         "t_end": args.t_end,
         "out": args.out,
     }

@@ -106,8 +106,9 @@ THOROUGH_EXTRA: tuple[FEMTarget, ...] = (
     FEMTarget(FEMSpec("sphere", 3, 2), liftoff=2e-3, eigen=5e-4, energy=0.1),
     FEMTarget(FEMSpec("sphere", 4, 2), liftoff=3e-5, eigen=1e-5, energy=6e-2),
 )
-# The fast route on the finest meshes: lift-off against Legendre N = 30 (the issue-3 ladder
-# 1e-3, 1e-4 continued to 1e-5 at level 5) and, where the full route ran too, route agreement.
+# The fast route on the finest meshes: lift-off against Legendre N = 30 (the P2 sphere's
+# ladder above, 1e-3 at level 3 and 1e-4 at level 4, continued to 1e-5 at level 5) and,
+# where the full route ran too, route agreement.
 THOROUGH_KRYLOV: tuple[FEMTarget, ...] = (
     FEMTarget(FEMSpec("sphere", 2, 4), liftoff=1e-4, eigen=0.0, energy=0.0),
     FEMTarget(FEMSpec("sphere", 2, 5), liftoff=1e-5, eigen=0.0, energy=0.0),

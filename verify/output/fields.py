@@ -38,6 +38,7 @@ from twoball.modal.legendre import legendre_series, legendre_shapes
 from twoball.modal.parameters import Case
 from twoball.modal.report import LiftoffReport, report_liftoff, t_end_dimensionless
 from twoball.modal.series import ModalSeries
+from twoball.verify.output.options import BACKENDS, MAX_FRAMES
 from twoball.verify.output.render import BallScene
 from twoball.verify.output.series import TimeSeries
 
@@ -46,7 +47,6 @@ from twoball._common.errors import ParameterError
 from twoball._common.progress import Step, silent
 
 BackendName = Literal["fem", "legendre"]
-BACKENDS: tuple[str, ...] = ("fem", "legendre")
 #: A generated mesh kind, or the user's mesh (unit sphere, pole on +z; from a file).
 MeshChoice = str | SphereMesh
 
@@ -121,7 +121,7 @@ class BallModel:
         return self.t_end * self.case.scalings.time
 
     def backend(self, name: str) -> Backend:
-        """The backend called ``name`` (ParameterError naming ``--backend`` if absent)."""
+        """The backend called ``name`` (ParameterError naming ``backend`` if absent)."""
         if name not in self.backends:
             raise ParameterError("backend", "one of " + ", ".join(self.backends), name)
         return self.backends[name]
@@ -221,7 +221,7 @@ def fem_nodal_series(
     P1/P2 space of eq. (3.9) on the icosphere (or ring sphere) of ``level``, the
     initial displacement (3.10) projected or interpolated, all eigenpairs below the
     cutoff of the spectral filter, and the damping and filter of the closed form
-    (eqs. (3.14)-(3.16)).  ``route`` (``--route``): ``full`` takes every
+    (eqs. (3.14)-(3.16)).  ``route``: ``full`` takes every
     eigenpair below the cutoff, ``krylov`` the Ritz pairs of the rational Krylov
     route, converged on the whole field over [0, ``t_end``]
     (:mod:`twoball.fem_membrane.ritz_field`), ``auto`` (default) Krylov from
@@ -725,7 +725,6 @@ def check_frame_budget(case: Case, count: int, name: str, field: FieldMesh) -> N
 
 
 DEFAULT_FRAMES = 25
-MAX_FRAMES = 2000
 
 
 def check_frames(frames: object, name: str = "frames") -> int:

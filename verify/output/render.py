@@ -171,7 +171,7 @@ def check_warp(warp: float | None, flag: str = "warp") -> float | None:
 
 def check_scene_warp(scene: BallScene, warp: float | None, flag: str = "warp") -> None:
     """Refuse a warp that draws the largest displacement beyond R (the ball folds through
-    its centre and leaves the picture: ``--warp 1e308`` drew no ball at all).
+    its centre and leaves the picture: ``warp=1e308`` draws no ball at all).
 
     Checked once the displacements are known, before anything is drawn or written.
     """
@@ -519,9 +519,9 @@ def render_scene(
     scene : BallScene
         What to draw (SI).
     warp : float or None
-        Displacement magnification (``--warp``); None for :meth:`BallScene.auto_warp`.
+        Displacement magnification; None for :meth:`BallScene.auto_warp`.
     size : (int, int) or "WxH"
-        Image size [px] (``--size``); rounded up to multiples of 16 for MP4.
+        Image size [px]; rounded up to multiples of 16 for MP4.
     fps : float
         Frames per second of an animation.
     progress : callable, optional

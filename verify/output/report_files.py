@@ -167,7 +167,7 @@ def quantity_markdown(q: QuantityResult, time_unit_s: float | None = None) -> st
     """One quantity of a study: per-grid table and the summary line.
 
     ``time_unit_s`` (1/c [s], the time-step study): the step is shown as the
-    time step in seconds, as ``--dt`` takes it, with ``c dt`` beside it.
+    time step in seconds, as ``dt`` takes it, with ``c dt`` beside it.
     """
     a = q.analysis
     show_value = not q.spec.error_norm

@@ -4,7 +4,7 @@ The writers store whatever numbers they are given; the ``twoball export`` comman
 passes SI values (node coordinates in m, displacements in m, velocities in m/s,
 accelerations in m/s^2, times in s), see :func:`twoball.verify.output.fields.field_series`.
 
-Three layouts, chosen by :func:`series_format` from ``--format`` or the suffix:
+Three layouts, chosen by :func:`series_format` from ``format`` or the suffix:
 
 ``xdmf``
     ``NAME.xdmf`` (XML) with its arrays in ``NAME.h5`` beside it, written with
@@ -185,7 +185,7 @@ def series_format(path: str | os.PathLike[str], fmt: str | None = None) -> str:
     Raises
     ------
     ParameterError
-        ``--format`` unknown, or ``--out`` with a suffix that is not ``.FORMAT``.
+        ``format`` unknown, or ``out`` with a suffix that is not ``.FORMAT``.
     """
     suffix = Path(path).suffix.lower()
     if fmt is not None:

@@ -53,7 +53,7 @@ PROVENANCE = "provenance.json"
 
 
 def parse_only(text: str | None) -> list[str]:
-    """``--only a,b`` -> part names in report order; None or empty -> all parts."""
+    """``only="a,b"`` -> part names in report order; None or empty -> all parts."""
     if text is None:
         return list(PARTS)
     names = [t.strip() for t in text.split(",") if t.strip()]
@@ -67,7 +67,7 @@ def check_output(out: str | os.PathLike) -> Path:
     """The output folder, checked before any work (:func:`twoball._common.staging.check_folder`).
 
     It may be missing, empty, or an earlier twoball output holding only the
-    files its marker lists; anything else raises ParameterError naming ``--out``.
+    files its marker lists; anything else raises ParameterError naming ``out``.
     """
     from twoball._common.staging import check_folder
 

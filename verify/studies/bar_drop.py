@@ -306,7 +306,8 @@ def run_bar(
 
 BAR_BANDS = {
     # least-squares orders in h over 40 to 320 elements at dt = h (measured:
-    # clamped 0.668, 0.716, 0.659; free 0.683, 0.742, 0.664; NOTES-core.md).  The
+    # clamped 0.668, 0.716, 0.659; free 0.683, 0.742, 0.664; the orders docs/bounce.rst
+    # states for the bar of Doyen, Ern & Piperno, SIAM J. Sci. Comput. 33:223, 2011).  The
     # solution's velocity and stress jump, so no order-2 rate is reachable; the
     # force in L1(0, T) is the least regular (0.4 at dt = h/2: the consistent
     # mass lets the contact force oscillate).

@@ -31,7 +31,7 @@ def time_step_text(dt: float, time_unit_s: float) -> str:
     """A time step as the user types it: ``dt = 7.8125e-06 s (c dt = 0.0025)``.
 
     ``dt`` is dimensionless (unit 1/c, ``time_unit_s`` seconds): the seconds
-    come first, as ``--dt`` takes them, the dimensionless ``c dt`` beside them.
+    come first, as ``dt`` takes them, the dimensionless ``c dt`` beside them.
     """
     return f"dt = {dt * time_unit_s:.6g} s (c dt = {dt:g})"
 

@@ -65,5 +65,5 @@ def check_sweep(
 
 
 def check_count(option: str, count: float, bytes_each: float = 8.0) -> Estimate:
-    """Refuse an array of ``count`` items (e.g. the values of ``--values``) that cannot fit."""
+    """Refuse an array of ``count`` items (e.g. the swept values) that cannot fit."""
     return check(option, Estimate(BASE_MEMORY + bytes_each * count, 0.0))

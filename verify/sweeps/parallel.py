@@ -49,7 +49,7 @@ MAX_CHUNK = 32
 CHUNKS_PER_WORKER = 8
 
 VALID_RANGES = {"workers": "an integer >= 1"}
-#: How long to try reaching a Dask scheduler before giving up (``--scheduler``).
+#: How long to try reaching a Dask scheduler before giving up.
 CONNECT_TIMEOUT = "10s"
 
 
@@ -97,7 +97,7 @@ def chunk_size(count: int, workers: int) -> int:
 
 
 def check_workers(workers: int | None) -> int:
-    """``workers`` validated (default: all cores); ParameterError names ``--workers``."""
+    """``workers`` validated (default: all cores); ParameterError names ``workers``."""
     if workers is None:
         return default_workers()
     if isinstance(workers, bool) or not isinstance(workers, Integral) or workers < 1:

@@ -165,10 +165,10 @@ class SweepGrid:
 
 
 def make_grid(parameters: Sequence[str], values: Sequence[str]) -> SweepGrid:
-    """Check ``--param``/``--values`` as given on the command line and build the grid.
+    """Check ``param``/``values`` as the command line gives them and build the grid.
 
-    One ``--param`` gives a 1-D sweep, two give a grid; ``--values`` must be given
-    once per ``--param``, in the same order, and the two parameters must differ.
+    One ``param`` gives a 1-D sweep, two give a grid; ``values`` must be given
+    once per ``param``, in the same order, and the two parameters must differ.
     """
     parameters = list(parameters or [])
     values = list(values or [])

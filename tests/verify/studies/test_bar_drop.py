@@ -1,7 +1,9 @@
 """The bar against a rigid obstacle: exact solutions, and the contact core's convergence to them.
 
-Orders are observed on meshes of 40 to 320 elements with dt = h (NOTES-core.md
-gives the measured tables); each band fails when the order is too high too.
+Orders are observed on meshes of 40 to 320 elements with dt = h (the bands of
+:data:`twoball.verify.studies.bar_drop.BAR_BANDS`, the orders docs/bounce.rst states for
+the bar of Doyen, Ern & Piperno, SIAM J. Sci. Comput. 33:223, 2011); each band fails
+when the order is too high too.
 """
 
 from __future__ import annotations

@@ -265,7 +265,7 @@ def test_fig11b_legend_is_plain_text() -> None:
 
     dampings = {"damping": [0.1, 0.13, 0.3]}
     window = twoball.sweep(dampings).points
-    paper = twoball.sweep(dampings, recontact="paper").points
+    paper = twoball.sweep(dampings, series=twoball.Series(recontact="paper")).points
     figure = fig11b_figure(window, paper, window[1])
     texts = [
         t.get_text()
