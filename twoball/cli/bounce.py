@@ -202,6 +202,14 @@ def bounce_from_options(args: argparse.Namespace) -> twoball.BounceReport:
     )
 
 
+def _damping_text(law: dict[str, Any]) -> str:
+    """The damping law of the JSON block as one line (SI)."""
+    if law["law"] != "rayleigh":
+        return f"modal, D = {law['ratio']:g}"
+    fitted = " (fitted to D)" if law["fitted"] else ""
+    return f"rayleigh, alpha {law['alpha_1_s']:.4g} 1/s, beta {law['beta_s']:.4g} s{fitted}"
+
+
 def bounce_rows(report: twoball.BounceReport) -> list[tuple[str, str]]:
     """The human-readable rows of a drop (SI)."""
     case, model = report.case, report.model
@@ -213,7 +221,7 @@ def bounce_rows(report: twoball.BounceReport) -> list[tuple[str, str]]:
         ("P [Pa], m2 [kg]", f"{report.pressure:g}, {report.mass_kg:.4g}"),
         ("membrane, gas", f"{model['membrane']}, {model['gas']}"),
         ("omega_0^2 (units c^2)", f"{model['omega0_squared']:.4g}"),
-        ("damping", ", ".join(f"{k} {v:g}" for k, v in model["damping"].items() if k != "law")),
+        ("damping", _damping_text(model["damping"])),
         ("resolution", f"{model['resolution']} ({model['floor_points']} floor points)"),
         ("dt [s]", f"{model['dt_s']:.4g}"),
         ("left the floor", "yes" if report.left_floor else "no"),
