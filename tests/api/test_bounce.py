@@ -68,6 +68,19 @@ def test_drop_height_sets_the_impact_speed():
     assert abs(twoball.icm(0.5, 0.8, 0.9, drop_height=0.5).v0) == pytest.approx(report.case.v0)
 
 
+def test_a_drop_height_below_the_radius_is_refused_naming_the_range():
+    """H < R of the case is refused in the API (the message gives R and the v0 route);
+    H = R is taken, and the tennis ball (R = 33.5 mm) takes 0.05 m."""
+    with pytest.raises(twoball.ParameterError) as caught:
+        twoball.bounce(drop=twoball.Drop(drop_height=0.05, modes=16))
+    text = str(caught.value)
+    assert caught.value.name == "drop_height" and ">= R = 0.12 m" in text and "v0" in text
+    at_radius = twoball.bounce(drop=twoball.Drop(drop_height=0.12, modes=16))
+    assert at_radius.case.v0 == pytest.approx(math.sqrt(2 * 9.81 * 0.12), rel=1e-15)
+    tennis = twoball.bounce(twoball.Case.preset("tennis"), twoball.Drop(drop_height=0.05, modes=16))
+    assert tennis.case.v0 == pytest.approx(math.sqrt(2 * 9.81 * 0.05), rel=1e-15)
+
+
 def test_restitution_one_keeps_the_mechanical_energy():
     report = twoball.bounce(
         drop=twoball.Drop(modes=16, floor_restitution=1.0), damping=twoball.ModalRatio(0.0)

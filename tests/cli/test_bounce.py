@@ -67,6 +67,14 @@ def test_json_damping_and_bending_in_si_under_their_own_names(capsys):
     assert "rayleigh, alpha 94.5 1/s, beta 0.0001133 s" in out
 
 
+def test_a_drop_height_below_the_radius_names_the_range_and_v0(capsys):
+    with pytest.raises(SystemExit) as stop:
+        main(["bounce", "--drop-height", "0.05"])
+    (line,) = capsys.readouterr().err.strip().splitlines()
+    assert stop.value.code == 2 and line.startswith("twoball: error: --drop-height must be")
+    assert ">= R = 0.12 m" in line and "--v0" in line and line.endswith("got 0.05")
+
+
 def test_fem_backend_with_its_mesh(capsys):
     code, out, _ = run(capsys, "bounce", "--backend", "fem", "--elements", "8", "--json")
     data = json.loads(out)
@@ -77,6 +85,7 @@ def test_fem_backend_with_its_mesh(capsys):
     ("argv", "flag"),
     [
         (["--drop-height", "-1"], "--drop-height"),
+        (["--drop-height", "0.05"], "--drop-height"),
         (["--v0", "3", "--drop-height", "1"], "--drop-height"),
         (["--gas", "none", "--membrane", "pressurised"], "--gas"),
         (["--membrane", "flat"], "--membrane"),

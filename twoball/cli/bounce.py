@@ -46,8 +46,8 @@ def add_drop_options(parser: argparse.ArgumentParser) -> None:
         "--drop-height",
         type=numeric,
         metavar="H",
-        help="height [m] of the lowest point above the floor at release: |v0| = sqrt(2 g H), "
-        "eq. (2.1) (instead of --v0)",
+        help="height [m] of the lowest point above the floor at release, at least the radius "
+        "R: |v0| = sqrt(2 g H), eq. (2.1) (instead of --v0; a slower impact: --v0)",
     )
     group.add_argument(
         "--floor-restitution",
