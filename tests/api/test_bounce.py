@@ -177,6 +177,30 @@ def test_figure_fields_and_pictures_of_the_drop(tmp_path):
     assert picture.stat().st_size > 1000
 
 
+def test_the_contact_angle_panel_shows_eq_3_7_and_pressure_times_area():
+    """The phi_a panel of the drop figure draws, for the drop's |v0|, eq. (3.7) and the
+    pressure x area angle (independent closed forms) as labelled levels, an axis in rad,
+    and a legend that covers no line: it sits below the lowest level."""
+    from twoball.modal.initial import phi_a_from_v0
+    from twoball.verify.output.figures.bounce import drop_figure
+
+    report = twoball.bounce(drop=QUICK)
+    case = report.case
+    fig = drop_figure(report.result, case, report.mass_kg)
+    ax = fig.axes[1]
+    levels = {line.get_label(): line.get_ydata()[0] for line in ax.get_lines()[1:]}
+    eq37 = phi_a_from_v0(4.1, 0.12, 320.0)
+    x = 4.1 / 320.0  # pressure x area: the cap through the plane at depth |v0|/c
+    area = math.pi - math.acos(1.0 - x / 0.12)
+    assert levels[f"eq. (3.7): {eq37:.4f} rad"] == pytest.approx(eq37, rel=1e-14)
+    assert levels[f"pressure x area: {area:.4f} rad"] == pytest.approx(area, rel=1e-14)
+    assert "[rad]" in ax.get_ylabel()
+    fig.canvas.draw()
+    legend = ax.get_legend().get_window_extent()
+    lowest = ax.transData.transform((0.0, min(eq37, area)))[1]
+    assert legend.y1 < lowest and ax.get_ylim()[1] < math.pi + 0.05
+
+
 def test_sweep_of_the_drop():
     """twoball.sweep with a Drop: one drop per speed; the flattening grows with |v0|."""
     result = twoball.sweep({"v0": [2.0, 4.1]}, drop=QUICK)
