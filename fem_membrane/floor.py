@@ -159,6 +159,7 @@ def axisym_ball(
         top=V[top, :],
         laplace=laplace,
         label=f"axisym {elements} P{order}",
+        bending=spectrum.beta > 0.0,
         sampler=sampler,
         averager=lambda theta: cap_functional_exact(elements, order, theta) @ V,
     )

@@ -169,9 +169,9 @@ def bounce(
         "resolution": resolution,
         "floor_points": ball.points,
         "modes": ball.modes,
-        **spectrum.as_dict(),
+        **_spectrum_block(case, spectrum),
         "gas": model_in.gas,
-        "damping": law.as_dict(),
+        "damping": _damping_block(case, law),
         "floor_restitution": drop.floor_restitution,
         "scheme": "moreau-jean",
         "dt_s": dt / case.wave_speed,
@@ -197,6 +197,48 @@ def bounce(
     if pair is not None:
         arguments["pair"] = pair
     return replace(report, provenance=block(case, "twoball.bounce", arguments))
+
+
+def _spectrum_block(case: Case, spectrum: Any) -> dict[str, Any]:
+    """The spectrum of the drop for the JSON: the bending by its own names, SI and ratio.
+
+    ``bending_N_m`` is the flexural rigidity B [N m], ``bending_beta`` the
+    dimensionless ratio ``beta = B / (T R^2)`` of the spectrum, ``omega0_squared``
+    the breathing mode's ``omega_0^2`` in units of ``c^2`` and ``membrane`` the
+    operator.
+    """
+    data = spectrum.as_dict()
+    return {
+        "membrane": data["membrane"],
+        "bending_N_m": case.bending,
+        "bending_beta": data["beta"],
+        "omega0_squared": data["omega0_squared"],
+    }
+
+
+def _damping_block(case: Case, law: Any) -> dict[str, Any]:
+    """The damping law of the drop for the JSON, in SI.
+
+    The modal ratio: ``{"law": "modal", "ratio": D}``.  Rayleigh's law as
+    :meth:`twoball.Case.rayleigh_dict` gives it: ``alpha_1_s`` [1/s] and
+    ``beta_s`` [s] (the decay of a mode of angular frequency omega [rad/s] is
+    ``alpha + beta omega^2``), the same law in units of c as ``alpha_c_units``
+    (``alpha / c``) and ``beta_c_units`` (``beta c``), and ``fitted`` (True when
+    fitted to D at :meth:`~twoball.modal.stiffness.Stiffness.fit_band`).
+    """
+    from twoball.modal.damping import Rayleigh
+
+    if not isinstance(law, Rayleigh):
+        return law.as_dict()
+    si = case.rayleigh_dict()
+    return {
+        "law": law.name,
+        "alpha_1_s": si["alpha_1_s"],
+        "beta_s": si["beta_s"],
+        "alpha_c_units": si["alpha"],
+        "beta_c_units": si["beta"],
+        "fitted": si["fitted"],
+    }
 
 
 def _body_row(ball: Any, whole: Any, gap: float) -> Any:
@@ -429,8 +471,10 @@ class BounceReport:
     backend : str
         ``legendre`` or ``fem``.
     model : dict
-        The model that ran: resolution, membrane operator, gas, omega_0^2, beta,
-        damping law, floor restitution, time step and window (SI).
+        The model that ran: resolution, membrane operator, bending (``bending_N_m``
+        [N m] and its ratio ``bending_beta = B / (T R^2)``), gas, omega_0^2 (units
+        c^2), damping law (Rayleigh's ``alpha_1_s`` [1/s] and ``beta_s`` [s]),
+        floor restitution, time step and window (SI).
     pressure : float
         Excess pressure P [Pa] behind the tension ``T = P R / 2`` and the mass.
     warnings : tuple of str

@@ -100,6 +100,11 @@ class ModalBall:
         Laplace-Beltrami eigenvalue of each mode (``n (n + 1)`` or the FE one).
     label : str
         ``"legendre N = 128"``, ``"axisym 64 P2"``, ...
+    bending : bool
+        The spectrum has bending stiffness (``beta > 0``): the membrane then
+        leaves the floor with its curvature continuous too, and the gap outside
+        the contact grows like the cube of the distance from the edge instead of
+        its square (:func:`~twoball.modal.floor.measure.contact_edge`).
     sampler : callable, optional
         ``sampler(phi) -> (len(phi), K)``: every mode at any polar angles (for
         fields and pictures); the Legendre polynomials, or the finite-element
@@ -119,6 +124,7 @@ class ModalBall:
     top: np.ndarray
     laplace: np.ndarray
     label: str = ""
+    bending: bool = False
     sampler: Callable[[np.ndarray], np.ndarray] | None = field(default=None, repr=False)
     averager: Callable[[float], np.ndarray] | None = field(default=None, repr=False)
 
@@ -241,6 +247,7 @@ def legendre_ball(
         top=np.ones(n.size),
         laplace=laplace,
         label=f"legendre N = {modes}",
+        bending=spectrum.beta > 0.0,
         sampler=lambda angles: legvander(np.cos(angles), modes)[:, n],
         averager=lambda theta: legendre_cap_averages(theta, modes)[n],
     )

@@ -34,6 +34,7 @@ from twoball.modal.floor.measure import (
     ContactInterval,
     contact_edge,
     contact_intervals,
+    edge_law,
     hermite_peak,
     smoothed_minimum,
 )
@@ -124,7 +125,8 @@ class DropResult:
         The centre's velocity when it leaves (upward positive), and ``v2 / |v0|``.
     phi_a_max : float
         Contact angle of the largest contact [rad]: the smallest edge angle
-        (:func:`~twoball.modal.floor.measure.contact_edge`), averaged over a
+        (:func:`~twoball.modal.floor.measure.contact_edge` with the points and
+        power of :func:`~twoball.modal.floor.measure.edge_law`), averaged over a
         window of :data:`EDGE_WINDOW` of the contact time.
     phi_a_extreme : float
         The smallest edge angle of any step end (no averaging).
@@ -391,7 +393,8 @@ def _measure(
     gaps = system.floor_gaps(tr.q)
     carried = np.flatnonzero(impulses > 0.0)
     ends = carried + 1
-    edge = np.array([contact_edge(system.ball.phi, gaps[k], GAP_TOLERANCE) for k in ends])
+    law = edge_law(system.ball.bending)
+    edge = np.array([contact_edge(system.ball.phi, gaps[k], GAP_TOLERANCE, **law) for k in ends])
     edge_t = tr.t[ends]
     window = EDGE_WINDOW * (last.end - intervals[0].start)
     phi_a_max, t_phi = smoothed_minimum(edge_t, edge, window)

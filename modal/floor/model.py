@@ -19,7 +19,7 @@ from twoball.modal.stiffness import Stiffness
 
 from twoball._common.errors import ParameterError
 
-__all__ = ["DropModel", "resolve_drop"]
+__all__ = ["DropModel", "check_drop_height", "resolve_drop"]
 
 
 @dataclass(frozen=True)
@@ -84,8 +84,8 @@ def resolve_drop(case: Case, drop: Drop, damping: Any = None) -> DropModel:
     Raises
     ------
     ParameterError
-        A drop height whose speed the case refuses, no pressure known, the
-        pressurised membrane without gas.
+        A drop height below the case's radius R or whose speed the case refuses,
+        no pressure known, the pressurised membrane without gas.
     """
     notes: list[str] = []
     warnings: list[str] = []
@@ -123,10 +123,34 @@ def resolve_drop(case: Case, drop: Drop, damping: Any = None) -> DropModel:
     )
 
 
+def check_drop_height(case: Case, height: float) -> float:
+    """A drop height H [m] for ``case``'s ball: at least its radius R, else refused.
+
+    H is the height of the lowest point above the floor at release (as in
+    ``twoball icm``).  A height below one radius is refused: it is easily the
+    centre's height or a slip of units, and an impact slower than ``sqrt(2 g R)``
+    is given by its speed (the case's ``v0``; ``--v0`` on the command line).
+
+    Raises
+    ------
+    ParameterError
+        Naming ``drop_height`` (``--drop-height`` on the command line), with the
+        valid range ``>= R`` of the case.
+    """
+    if not height >= case.radius:
+        valid = (
+            f"a height >= R = {case.radius:g} m of the lowest point above the floor (a slower "
+            "impact is given by its speed: the case's v0, --v0 on the command line)"
+        )
+        raise ParameterError("drop_height", valid, height)
+    return height
+
+
 def _impact(case: Case, drop: Drop) -> Case:
     """The case at the drop's impact speed ``sqrt(2 g H)``, eq. (2.1), if a height is given."""
     if drop.drop_height is None:
         return case
+    check_drop_height(case, drop.drop_height)
     speed = math.sqrt(2.0 * case.g * drop.drop_height)
     try:
         return case.derive(v0=speed)

@@ -32,9 +32,11 @@ class Drop:
     Parameters
     ----------
     drop_height : float, optional
-        Height H [m] in (0, 1e6] of the ball's lowest point above the floor at release
-        (as in ``twoball icm``): the impact speed is ``|v0| = sqrt(2 g H)``, eq.
-        (2.1), in place of the case's ``v0``.
+        Height H [m] in (0, 1e6] of the ball's lowest point above the floor at release (as
+        in ``twoball icm``): the impact speed is ``|v0| = sqrt(2 g H)``, eq.
+        (2.1), in place of the case's ``v0``.  ``twoball.bounce`` refuses a
+        height below the case's radius R (a slower impact is given by its speed,
+        the case's ``v0``).
     gas : {"none", "isothermal", "adiabatic"}, optional
         The enclosed gas (:mod:`twoball.modal.stiffness`); default the case's own,
         else ``adiabatic`` at the case's excess pressure and ambient pressure:

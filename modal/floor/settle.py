@@ -39,7 +39,8 @@ class RestResult:
         point in contact and through the next point out (units R^2).
     edge_area : float
         The cap through the contact edge estimated between the points
-        (:func:`~twoball.modal.floor.measure.contact_edge`), units R^2.
+        (:func:`~twoball.modal.floor.measure.contact_edge` from the free points
+        next to the contact, ``skip=0``: the contact spans a few points), units R^2.
     pressure_area : float
         ``m2 g / P = 2 pi gamma`` in units R^2.
     residual_speed : float
@@ -82,7 +83,9 @@ def settle(system: FloorSystem, dt: float = 0.2, t_end: float = 800.0) -> RestRe
     psi_in = math.pi - phi[i] if inside.size else 0.0
     psi_out = math.pi - phi[i - 1]
     gaps = system.floor_gaps(tr.q_final)
-    psi_edge = math.pi - contact_edge(phi, gaps, 1e-10)
+    # a resting contact spans a few points: the edge from the free points next to it
+    power = 3.0 if ball.bending else 2.0
+    psi_edge = math.pi - contact_edge(phi, gaps, 1e-10, skip=0, power=power)
     return RestResult(
         floor_force=float(last.sum() / h),
         weight=gamma,

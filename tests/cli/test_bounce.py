@@ -38,6 +38,43 @@ def test_drop_height_and_table(capsys):
     assert f"{math.sqrt(2 * 9.81 * 0.5):g}" in out
 
 
+def test_json_damping_and_bending_in_si_under_their_own_names(capsys):
+    """--rayleigh ALPHA,BETA comes back as given in SI (alpha_1_s, beta_s), the same law in
+    units of c as alpha / c and beta c; the bending has its own keys (B in N m and the
+    ratio B / (T R^2)), so no key of the model block is Rayleigh's and the bending's at once."""
+    code, out, err = run(capsys, "bounce", "--modes", "16", "--rayleigh", "94.5,1.133e-4", "--json")
+    assert code == 0, err
+    model = json.loads(out)["model"]
+    law = model["damping"]
+    assert law["law"] == "rayleigh" and law["fitted"] is False
+    assert law["alpha_1_s"] == 94.5 and law["beta_s"] == 1.133e-4
+    assert law["alpha_c_units"] == pytest.approx(94.5 / 320.0, rel=1e-15)
+    assert law["beta_c_units"] == pytest.approx(1.133e-4 * 320.0, rel=1e-15)
+    assert "alpha" not in law and "beta" not in law and "beta" not in model
+    assert model["bending_N_m"] == 0.0 and model["bending_beta"] == 0.0
+    code, out, _ = run(capsys, "bounce", "--modes", "16", "--preset", "tennis", "--json")
+    data = json.loads(out)
+    model, case = data["model"], twoball.Case.preset("tennis")
+    tension = data["pressure_Pa"] * case.radius / 2.0  # T = P R / 2
+    assert model["bending_N_m"] == case.bending > 0.0
+    assert model["bending_beta"] == pytest.approx(case.bending / (tension * case.radius**2))
+    code, out, _ = run(capsys, "bounce", "--modes", "16", "--damping-model", "rayleigh", "--json")
+    law = json.loads(out)["model"]["damping"]
+    assert law["fitted"] is True
+    assert law["alpha_1_s"] == pytest.approx(law["alpha_c_units"] * 320.0, rel=1e-14)
+    assert law["beta_s"] == pytest.approx(law["beta_c_units"] / 320.0, rel=1e-14)
+    code, out, _ = run(capsys, "bounce", "--modes", "16", "--rayleigh", "94.5,1.133e-4")
+    assert "rayleigh, alpha 94.5 1/s, beta 0.0001133 s" in out
+
+
+def test_a_drop_height_below_the_radius_names_the_range_and_v0(capsys):
+    with pytest.raises(SystemExit) as stop:
+        main(["bounce", "--drop-height", "0.05"])
+    (line,) = capsys.readouterr().err.strip().splitlines()
+    assert stop.value.code == 2 and line.startswith("twoball: error: --drop-height must be")
+    assert ">= R = 0.12 m" in line and "--v0" in line and line.endswith("got 0.05")
+
+
 def test_fem_backend_with_its_mesh(capsys):
     code, out, _ = run(capsys, "bounce", "--backend", "fem", "--elements", "8", "--json")
     data = json.loads(out)
@@ -48,6 +85,7 @@ def test_fem_backend_with_its_mesh(capsys):
     ("argv", "flag"),
     [
         (["--drop-height", "-1"], "--drop-height"),
+        (["--drop-height", "0.05"], "--drop-height"),
         (["--v0", "3", "--drop-height", "1"], "--drop-height"),
         (["--gas", "none", "--membrane", "pressurised"], "--gas"),
         (["--membrane", "flat"], "--membrane"),

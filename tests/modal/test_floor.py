@@ -20,6 +20,7 @@ from twoball.modal.floor.drop import DropSettings, run_drop
 from twoball.modal.floor.measure import (
     contact_edge,
     contact_intervals,
+    edge_law,
     hermite_peak,
     separation_time,
     smoothed_minimum,
@@ -167,18 +168,22 @@ def test_paper_operator_without_gas_does_not_bounce():
 # --- convergence ------------------------------------------------------------------------------
 
 
-def test_time_step_order_of_flattening_and_impact_loss():
-    """Second order in dt (N = 20; errors against dt/16): flattening, impact loss, t_c."""
+def test_time_step_order_of_flattening_impact_loss_and_contact_angle():
+    """Second order in dt (N = 20; errors against dt/16): flattening, impact loss and
+    phi_a,max (docs/bounce.rst: 2.0 at the defaults); t_c and e2 have no clean order in dt
+    (the release of the last floor points), so their errors at dt = 0.005 are held below
+    the tolerances the docs state (3e-4 relative, 1e-5)."""
     ref = _drop(dt=0.00125)
     steps = (0.02, 0.01, 0.005)
     runs = [_drop(dt=dt) for dt in steps]
-    for name in ("flattening_max", "impacts"):
-        values = [r.flattening_max if name == "flattening_max" else r.energy[name] for r in runs]
-        exact = ref.flattening_max if name == "flattening_max" else ref.energy[name]
+    for name in ("flattening_max", "impacts", "phi_a_max"):
+        values = [r.energy[name] if name == "impacts" else getattr(r, name) for r in runs]
+        exact = ref.energy[name] if name == "impacts" else getattr(ref, name)
         errors = np.abs(np.array(values) - exact)
         order = np.polyfit(np.log(steps), np.log(errors), 1)[0]
-        assert OrderBand(2.0, 0.4, 0.4).contains(order), (name, order)
-    assert abs(runs[-1].contact_time - ref.contact_time) < 2e-4 * ref.contact_time
+        band = OrderBand(2.0, 0.5, 0.5) if name == "phi_a_max" else OrderBand(2.0, 0.4, 0.4)
+        assert band.contains(order), (name, order)
+    assert abs(runs[-1].contact_time - ref.contact_time) < 3e-4 * ref.contact_time
     assert abs(runs[-1].e2 - ref.e2) < 1e-5
 
 
@@ -187,6 +192,18 @@ def test_modes_order_of_restitution():
     v = [_drop(modes=n, dt=0.01).e2 for n in (16, 32, 64)]
     order = math.log2((v[1] - v[0]) / (v[2] - v[1]))
     assert OrderBand(2.0, 0.5, 0.5).contains(order), order
+
+
+def test_modes_order_of_contact_time_and_the_contact_angle_within_its_tolerance():
+    """t_c converges at about order 1 in 1/N (docs/bounce.rst: 1.0; here N = 32, 64, 128 at
+    dt = 0.0025, successive differences, measured 0.81), in the band 1 +- 0.5; phi_a,max
+    has no asymptotic order (the phase of the edge between the floor points), and from
+    N = 192 it is within the stated 1e-3 rad of a resolution twice as fine."""
+    t_c = [_drop(modes=n, dt=0.0025).contact_time for n in (32, 64, 128)]
+    order = math.log2((t_c[1] - t_c[0]) / (t_c[2] - t_c[1]))
+    assert OrderBand(1.0, 0.5, 0.5).contains(order), order
+    default, finer = (_drop(modes=n, dt=0.0025).phi_a_max for n in (192, 384))
+    assert abs(default - finer) < 1e-3
 
 
 @pytest.mark.slow
@@ -205,6 +222,43 @@ def test_modes_orders_of_contact_time_flattening_and_restitution():
         errors = [abs(getattr(runs[n], name) - getattr(ref, name)) for n in used]
         order = -np.polyfit(np.log(used), np.log(errors), 1)[0]
         assert band.contains(order), (name, order)
+
+
+# --- energy without damping -------------------------------------------------------------------
+
+
+@pytest.mark.slow
+def test_the_plastic_floor_loses_the_energy_of_the_supersonic_start():
+    """D = 0, e = 0: the impact loss over its continuum estimate KE0 (v0 / (R c))^2 / 4 (the
+    material the supersonic contact edge sweeps, docs/bounce.rst) is a property of the
+    model, not of the step: (i) at N = 192 it changes by less than 1 % from dt = 0.0025 to
+    0.000625 (measured 0.59 %), and by less each time dt halves; (ii) at N = 384 it is of
+    order one and the same at 2 and 8 m/s within 20 % (measured 0.64 and 0.55)."""
+    from twoball.verify.studies.floor import normalised_loss, plastic_loss
+
+    steps = (0.005, 0.0025, 0.00125, 0.000625)
+    ratios = np.array([normalised_loss(plastic_loss(4.1, 192, dt)) for dt in steps])
+    changes = np.abs(np.diff(ratios))
+    assert np.all(np.diff(changes) < 0.0), ratios
+    assert abs(ratios[1] / ratios[-1] - 1.0) < 0.01, ratios
+    slow, fast = (normalised_loss(plastic_loss(v, 384, 0.0025)) for v in (2.0, 8.0))
+    assert 0.4 < fast < slow < 1.0
+    assert slow / fast < 1.2, (slow, fast)
+
+
+def test_a_floor_with_restitution_one_keeps_the_energy_at_every_step():
+    """D = 0, e = 1: the mechanical energy E = kinetic + elastic + gravity stays at its start
+    to rounding at every step end, for every dt (no loss at impacts to converge away):
+    within 1e-12 of the initial kinetic energy over 1200 to 5000 steps (measured 3e-15 at
+    dt = 0.02, 1.2e-13 at dt = 0.00125)."""
+    from twoball.verify.studies.floor import plastic_loss
+
+    for dt in (0.02, 0.005, 0.00125):
+        r = plastic_loss(4.1, 64, dt, 1.0)
+        kinetic = 0.5 * r.settings.v0**2
+        drift = np.abs(r.trajectory.energy - r.trajectory.energy[0]).max() / kinetic
+        assert drift < 1e-12, (dt, drift)
+        assert abs(r.energy["impacts"]) < 1e-15 * kinetic and r.energy["damped"] == 0.0
 
 
 # --- at rest on the floor ---------------------------------------------------------------------
@@ -284,7 +338,26 @@ def test_contact_edge_of_a_tangential_gap():
     edge = 2.71
     gap = np.where(phi < edge, 0.3 * (edge - phi) ** 2, 0.0)
     assert contact_edge(phi, gap, 1e-14) == pytest.approx(edge, abs=1e-12)
+    assert contact_edge(phi, gap, 1e-14, skip=0) == pytest.approx(edge, abs=1e-12)
     assert contact_edge(phi, np.ones_like(phi), 1e-14) == math.pi  # no contact
+    # with bending the gap grows like the cube of the distance: its cube root is linear
+    cubic = np.where(phi < edge, 0.3 * (edge - phi) ** 3, 0.0)
+    assert contact_edge(phi, cubic, 1e-14, skip=0, power=3.0) == pytest.approx(edge, abs=1e-12)
+    assert abs(contact_edge(phi, cubic, 1e-14) - edge) > 1e-4  # the square root misses it
+    assert edge_law(False) == {"skip": 1, "power": 2.0}
+    assert edge_law(True) == {"skip": 0, "power": 3.0}
+
+
+def test_the_contact_angle_of_a_ball_with_bending_from_the_cube_root_of_the_gap():
+    """The tennis ball (bending): the gap leaves the floor like the cube of the distance,
+    and the edge from its cube root at N = 96 and 192 is within 3e-3 rad of N = 384
+    (measured 2.6695, 2.6739 against 2.6715); the square root's edge moved by 1.9e-2 over
+    the same N."""
+    from twoball.verify.studies.floor import drop_model, run
+
+    model = drop_model("tennis", "pressurised", "modal")
+    *coarse, fine = (run(model, "legendre", n, 0.005).result.phi_a_max for n in (96, 192, 384))
+    assert all(abs(angle - fine) < 3e-3 for angle in coarse), (coarse, fine)
 
 
 def test_smoothed_minimum_and_hermite_peak():

@@ -316,6 +316,16 @@ EXTRA: list[tuple[str, Callable[[Path], Any]]] = [
     ("mesh", lambda _: twoball.fem.solve(CASE, mesh=3)),
     ("view", lambda tmp: twoball.render(tmp / "x.png", CASE, mesh=LEVEL_1, view=(320, 240))),
     ("figure", lambda tmp: twoball.plot("eigen", tmp / "p.png", figure={"dpi": 100})),
+    # a drop height below the case's radius R, where the case and the drop meet
+    ("drop_height", lambda _: twoball.bounce(CASE, twoball.Drop(drop_height=0.05))),
+    (
+        "drop_height",
+        lambda _: twoball.bounce(twoball.Case.preset("tennis"), twoball.Drop(drop_height=0.03)),
+    ),
+    (
+        "drop_height",
+        lambda _: twoball.sweep({"drop_height": [0.5, 0.05]}, CASE, drop=twoball.Drop(modes=16)),
+    ),
     # the membrane operator and the damping law (docs/pressurised.rst)
     ("membrane", lambda _: twoball.Case(membrane="flat")),
     ("gas", lambda _: twoball.Case(membrane="pressurised")),

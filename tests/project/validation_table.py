@@ -359,6 +359,10 @@ NOT_APPLICABLE: list[tuple[str, list[str]]] = [
     ("--gas", ["bounce", "--gas", "none", "--membrane", "pressurised"]),
     ("--drop-height", ["bounce", "--v0", "3", "--drop-height", "1"]),
     ("--drop-height", ["bounce", "--drop-height", "-0.5"]),
+    # a drop height below the case's radius R (0.12 m for the basketball)
+    ("--drop-height", ["bounce", "--drop-height", "0.05"]),
+    ("--drop-height", ["bounce", "--preset", "tennis", "--drop-height", "0.03"]),
+    ("--drop-height", ["sweep", "--bounce", "--param", "drop-height", "--values", "0.05,0.5"]),
     ("--drop-height", ["liftoff", "--drop-height", "1"]),
     ("--floor-restitution", ["liftoff", "--floor-restitution", "1"]),
     ("--elements", ["bounce", "--elements", "20"]),

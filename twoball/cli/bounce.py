@@ -46,8 +46,8 @@ def add_drop_options(parser: argparse.ArgumentParser) -> None:
         "--drop-height",
         type=numeric,
         metavar="H",
-        help="height [m] of the lowest point above the floor at release: |v0| = sqrt(2 g H), "
-        "eq. (2.1) (instead of --v0)",
+        help="height [m] of the lowest point above the floor at release, at least the radius "
+        "R: |v0| = sqrt(2 g H), eq. (2.1) (instead of --v0; a slower impact: --v0)",
     )
     group.add_argument(
         "--floor-restitution",
@@ -203,6 +203,14 @@ def bounce_from_options(args: argparse.Namespace) -> twoball.BounceReport:
     )
 
 
+def _damping_text(law: dict[str, Any]) -> str:
+    """The damping law of the JSON block as one line (SI)."""
+    if law["law"] != "rayleigh":
+        return f"modal, D = {law['ratio']:g}"
+    fitted = " (fitted to D)" if law["fitted"] else ""
+    return f"rayleigh, alpha {law['alpha_1_s']:.4g} 1/s, beta {law['beta_s']:.4g} s{fitted}"
+
+
 def bounce_rows(report: twoball.BounceReport) -> list[tuple[str, str]]:
     """The human-readable rows of a drop (SI)."""
     case, model = report.case, report.model
@@ -214,7 +222,7 @@ def bounce_rows(report: twoball.BounceReport) -> list[tuple[str, str]]:
         ("P [Pa], m2 [kg]", f"{report.pressure:g}, {report.mass_kg:.4g}"),
         ("membrane, gas", f"{model['membrane']}, {model['gas']}"),
         ("omega_0^2 (units c^2)", f"{model['omega0_squared']:.4g}"),
-        ("damping", ", ".join(f"{k} {v:g}" for k, v in model["damping"].items() if k != "law")),
+        ("damping", _damping_text(model["damping"])),
         ("resolution", f"{model['resolution']} ({model['floor_points']} floor points)"),
         ("dt [s]", f"{model['dt_s']:.4g}"),
         ("left the floor", "yes" if report.left_floor else "no"),

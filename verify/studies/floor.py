@@ -1,10 +1,11 @@
 """Tables of the drop on the floor: presets, speeds, convergence, energy, rest, special case.
 
 ``python -m twoball.verify.studies.floor [names...]`` prints Markdown tables of
-every number docs/bounce.rst quotes (a full run takes a few minutes on one
-core).  The drops start from the SI case (:func:`twoball.modal.floor.model.resolve_drop`,
-as ``twoball.bounce`` does) and run on the Legendre modes and on axisymmetric
-P2 elements; convergence tables are dimensionless (R, 1/c, m2), the others SI.
+every number docs/bounce.rst quotes (a full run takes about half an hour on one
+core, most of it the fine references of the convergence studies).  The drops
+start from the SI case (:func:`twoball.modal.floor.model.resolve_drop`, as
+``twoball.bounce`` does) and run on the Legendre modes and on axisymmetric P2
+elements; convergence tables are dimensionless (R, 1/c, m2), the others SI.
 """
 
 from __future__ import annotations
@@ -13,7 +14,7 @@ import math
 import sys
 import time
 from collections.abc import Callable, Sequence
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 
 import numpy as np
 from twoball.fem_membrane.floor import axisym_ball
@@ -26,9 +27,24 @@ from twoball.modal.floor.references import MEASURED_COMPRESSION, TABLE1_E2, pres
 from twoball.modal.floor.settle import settle
 from twoball.modal.floor.system import floor_system
 from twoball.modal.parameters import Case
-from twoball.verify.studies.orders import least_squares_order
+from twoball.verify.studies.orders import least_squares_order, step_orders
 
-__all__ = ["TABLES", "FloorRun", "drop_model", "main", "run"]
+__all__ = [
+    "DT_RESOLUTION",
+    "QUANTITIES",
+    "RESOLUTION",
+    "STEPS",
+    "TABLES",
+    "Convergence",
+    "FloorRun",
+    "drop_model",
+    "main",
+    "normalised_loss",
+    "plastic_loss",
+    "resolution_study",
+    "run",
+    "time_step_study",
+]
 
 #: The defaults of ``twoball.bounce``: Legendre N, P2 elements, time step (units 1/c), window.
 MODES, ELEMENTS, DT, WINDOW = 192, 96, 0.005, 10.0 * math.pi
@@ -89,6 +105,177 @@ def _si(run_: FloorRun) -> dict[str, float]:
         "flattening [mm]": r.flattening_max * case.radius * 1e3,
         "t_max [ms]": r.t_max_compression / case.wave_speed * 1e3,
     }
+
+
+#: The measured quantities whose convergence the studies follow (attributes of DropResult).
+QUANTITIES = ("contact_time", "e2", "phi_a_max")
+#: Time step [1/c] of the resolution studies: its own error of t_c stays below the
+#: resolution's up to N = 1536 (at dt = 0.005 it does not from N = 384: the last floor
+#: points are then released within one or two steps).
+DT_RESOLUTION = 0.00125
+#: Each backend's resolution study: the sizes (Legendre N, P2 elements E = N / 2) and the
+#: fine reference.
+RESOLUTION: dict[str, tuple[tuple[int, ...], int]] = {
+    "legendre": ((32, 48, 64, 96, 128, 192, 256, 384, 768), 1536),
+    "fem": ((16, 24, 32, 48, 64, 96, 128, 192), 384),
+}
+#: The time steps [1/c] of the time-step studies and their fine reference.
+STEPS: tuple[tuple[float, ...], float] = ((0.04, 0.02, 0.01, 0.005, 0.0025, 0.00125), 0.0003125)
+
+
+@dataclass(frozen=True)
+class Convergence:
+    """A refinement study of one backend: the quantities against N (or E) or dt.
+
+    Attributes
+    ----------
+    backend : {"legendre", "fem"}
+    parameter : {"N", "dt"}
+        What is refined: the resolution (Legendre degree N, P2 elements E) or the
+        time step [1/c].
+    sizes : tuple of float
+        N (or E), or dt, coarse to fine.
+    values : dict
+        Each quantity of :data:`QUANTITIES` (and ``flattening_max``) at each size.
+    reference : dict
+        The same at the fine reference.
+    reference_size : float
+    fixed : float
+        The time step of a resolution study, the size of a time-step study.
+    """
+
+    backend: str
+    parameter: str
+    sizes: tuple[float, ...]
+    values: dict[str, np.ndarray] = field(repr=False)
+    reference: dict[str, float]
+    reference_size: float
+    fixed: float
+
+    @property
+    def steps(self) -> np.ndarray:
+        """The refinement's step sizes h: 1/N (or 1/E) or dt."""
+        sizes = np.asarray(self.sizes, dtype=float)
+        return 1.0 / sizes if self.parameter == "N" else sizes
+
+    def errors(self, name: str) -> np.ndarray:
+        """``|value - reference|`` of quantity ``name`` at each size."""
+        return np.abs(self.values[name] - self.reference[name])
+
+    def order(self, name: str, first: int = 0, last: int | None = None) -> float:
+        """Least-squares order in h of quantity ``name`` over ``sizes[first:last]``."""
+        window = slice(first, last)
+        return float(least_squares_order(self.steps[window], self.errors(name)[window]).order)
+
+    def step_orders(self, name: str) -> np.ndarray:
+        """The observed order of every refinement step (errors against the reference)."""
+        return step_orders(self.steps, self.errors(name))
+
+    def difference_orders(self, name: str) -> np.ndarray:
+        """Orders of successive differences over triples in a ratio-2 chain, no reference.
+
+        ``log2((f(h) - f(h/2)) / (f(h/2) - f(h/4)))`` for the sizes that halve twice.
+        """
+        h = self.steps
+        f = self.values[name]
+        out = []
+        for i in range(h.size):
+            j = np.flatnonzero(np.isclose(h, h[i] / 2.0))
+            k = np.flatnonzero(np.isclose(h, h[i] / 4.0))
+            if j.size and k.size:
+                a, b = f[i] - f[j[0]], f[j[0]] - f[k[0]]
+                out.append(math.log2(abs(a / b)) if a * b > 0.0 else math.nan)
+        return np.array(out)
+
+
+def _measure(result: DropResult) -> dict[str, float]:
+    return {name: float(getattr(result, name)) for name in (*QUANTITIES, "flattening_max")}
+
+
+def resolution_study(
+    backend: str,
+    sizes: Sequence[int] | None = None,
+    reference: int | None = None,
+    dt: float = DT_RESOLUTION,
+    model: DropModel | None = None,
+) -> Convergence:
+    """The quantities against the resolution (Legendre N, or P2 elements E) at one dt.
+
+    Defaults: :data:`RESOLUTION` of the backend at :data:`DT_RESOLUTION`, the basketball
+    at 4.1 m/s, pressurised, modal D = 0.13 (``drop_model("basketball", "pressurised")``).
+    """
+    default_sizes, default_reference = RESOLUTION[backend]
+    sizes = tuple(default_sizes if sizes is None else sizes)
+    reference = default_reference if reference is None else reference
+    model = drop_model("basketball", "pressurised", "modal") if model is None else model
+    rows = [_measure(run(model, backend, n, dt).result) for n in sizes]
+    values = {name: np.array([row[name] for row in rows]) for name in rows[0]}
+    ref = _measure(run(model, backend, reference, dt).result)
+    return Convergence(backend, "N", tuple(float(n) for n in sizes), values, ref, reference, dt)
+
+
+def time_step_study(
+    backend: str,
+    size: int,
+    steps: Sequence[float] | None = None,
+    reference: float | None = None,
+    model: DropModel | None = None,
+) -> Convergence:
+    """The quantities against the time step at one resolution (defaults: :data:`STEPS`)."""
+    default_steps, default_reference = STEPS
+    steps = tuple(default_steps if steps is None else steps)
+    reference = default_reference if reference is None else reference
+    model = drop_model("basketball", "pressurised", "modal") if model is None else model
+    rows = [_measure(run(model, backend, size, dt).result) for dt in steps]
+    values = {name: np.array([row[name] for row in rows]) for name in rows[0]}
+    ref = _measure(run(model, backend, size, reference).result)
+    return Convergence(backend, "dt", tuple(steps), values, ref, reference, float(size))
+
+
+def _convergence_lines(study: Convergence) -> list[str]:
+    what = "N" if study.backend == "legendre" else "E"
+    head = what if study.parameter == "N" else "dt"
+    lines = [
+        f"{study.backend}, against {head} "
+        + (f"at dt = {study.fixed:g}" if study.parameter == "N" else f"at {what} = {study.fixed:g}")
+        + f", reference {head} = {study.reference_size:g}",
+        "",
+        f"| {head} | t_c | e2 | phi_a,max | t_c error | e2 error | phi_a,max error |",
+        "|---|---|---|---|---|---|---|",
+    ]
+    for k, size in enumerate(study.sizes):
+        v = {name: study.values[name][k] for name in QUANTITIES}
+        e = {name: study.errors(name)[k] for name in QUANTITIES}
+        lines.append(
+            f"| {size:g} | {v['contact_time']:.6f} | {v['e2']:.7f} | {v['phi_a_max']:.6f} | "
+            f"{e['contact_time']:.2e} | {e['e2']:.2e} | {e['phi_a_max']:.2e} |"
+        )
+    ref = study.reference
+    lines.append(
+        f"| {study.reference_size:g} (ref) | {ref['contact_time']:.6f} | {ref['e2']:.7f} | "
+        f"{ref['phi_a_max']:.6f} | | | |"
+    )
+    lines.append("")
+    for name in QUANTITIES:
+        steps = ", ".join(f"{o:.2f}" for o in study.step_orders(name))
+        halves = ", ".join(f"{o:.2f}" for o in study.difference_orders(name))
+        lines.append(
+            f"- {name}: least-squares order {study.order(name):.2f} (all sizes); "
+            f"step orders {steps}; orders of successive differences {halves or '-'}"
+        )
+    return lines
+
+
+def convergence_table(parameter: str = "N") -> str:
+    """Both backends against N / E (at :data:`DT_RESOLUTION`) or dt (at N = 192, E = 96)."""
+    lines: list[str] = []
+    for backend, size in (("legendre", MODES), ("fem", ELEMENTS)):
+        if parameter == "N":
+            study = resolution_study(backend)
+        else:
+            study = time_step_study(backend, size)
+        lines += [*_convergence_lines(study), ""]
+    return "\n".join(lines)
 
 
 def presets_table(v0: float = 4.1) -> str:
@@ -207,52 +394,55 @@ def resolution_table(
     return "\n".join(lines)
 
 
-def time_step_table(
-    modes: int = 64, steps: Sequence[float] = (0.04, 0.02, 0.01, 0.005, 0.0025, 0.00125)
+def plastic_loss(v0: float, modes: int, dt: float, restitution: float = 0.0) -> DropResult:
+    """The basketball at ``v0`` [m/s] without damping (D = 0), pressurised, Legendre N."""
+    model = drop_model("basketball", "pressurised", "modal", v0, restitution, ratio=0.0)
+    return run(model, "legendre", modes, dt).result
+
+
+def normalised_loss(r: DropResult) -> float:
+    """The energy lost at impacts over ``KE0 (v0 / (R c))^2 / 4``.
+
+    A sphere falling on a plane touches along ``a(t) = sqrt(2 R V0 t)``; while that edge
+    outruns the membrane's waves (speed ``c R``), ``t < V0 / (2 c^2 R)``, the material it
+    sweeps, a mass fraction ``V0^2 / (4 c^2 R^2)``, meets the floor at V0 and is stopped
+    (e = 0).  This estimate of the loss is ``KE0 V0^2 / (4 c^2 R^2)``: the ratio is 1.
+    """
+    v = r.settings.v0
+    return -r.energy["impacts"] / (0.5 * v * v) / (0.25 * v * v)
+
+
+def energy_table(
+    speeds: Sequence[float] = (2.05, 4.1, 8.2),
+    modes: Sequence[int] = (128, 192, 384),
+    steps: Sequence[float] = (0.01, 0.005, 0.0025, 0.00125),
 ) -> str:
-    """One resolution against dt: errors against the finest step and least-squares orders."""
-    model = drop_model("basketball", "pressurised", "modal")
+    """D = 0: the loss at impacts with e = 0 over its continuum estimate, and e = 1."""
     lines = [
-        "| dt | backend | t_c | e2 | phi_a,max | flattening | impact loss / KE0 | steps |",
-        "|---|---|---|---|---|---|---|---|",
+        "| N | dt | " + " | ".join(f"{v:g} m/s" for v in speeds) + " |",
+        "|---|---|" + "---|" * len(speeds),
     ]
-    for backend, size in (("legendre", modes), ("fem", modes // 2)):
-        results = [run(model, backend, size, dt).result for dt in steps]
-        for dt, x in zip(steps, results, strict=True):
-            lines.append(
-                f"| {dt:g} | {backend} | {x.contact_time:.7f} | {x.e2:.9f} | "
-                f"{x.phi_a_max:.6f} | {x.flattening_max:.9f} | {_impact_loss(x):.5e} | "
-                f"{x.steps} |"
-            )
-        ref = results[-1]
-        parts = []
-        for name in (*FIELDS, "impact loss"):
-            get = _impact_loss if name == "impact loss" else (lambda r, n=name: getattr(r, n))
-            errors = [abs(get(x) - get(ref)) for x in results[:-1]]
-            parts.append(
-                f"{name} {least_squares_order(steps[:-1], errors).order:.2f} "
-                f"(errors {errors[0]:.1e} ... {errors[-1]:.1e})"
-            )
-        lines.append(f"\n- {backend}: least-squares orders in dt: " + "; ".join(parts))
-    return "\n".join(lines)
-
-
-def energy_table(modes: Sequence[int] = (32, 64, 128, 256)) -> str:
-    """D = 0: the mechanical energy lost at impacts (e = 0) or kept (e = 1), the books."""
-    lines = [
-        "| e | N | dt | impact loss / KE0 | books error / KE0 | e2 |",
-        "|---|---|---|---|---|---|",
+    for n in modes:
+        for dt in steps:
+            ratios = [normalised_loss(plastic_loss(v, n, dt)) for v in speeds]
+            lines.append(f"| {n} | {dt:g} | " + " | ".join(f"{x:.4f}" for x in ratios) + " |")
+    ratios = [normalised_loss(plastic_loss(v, 768, 0.005)) for v in speeds]
+    lines.append("| 768 | 0.005 | " + " | ".join(f"{x:.4f}" for x in ratios) + " |")
+    lines += [
+        "",
+        "e = 1 (4.1 m/s, N = 192): impact loss / KE0, largest |E - E0| / KE0 over the run",
+        "",
+        "| dt | impact loss / KE0 | max |E - E0| / KE0 | e2 |",
+        "|---|---|---|---|",
     ]
-    for e in (0.0, 1.0):
-        model = drop_model("basketball", "pressurised", "modal", restitution=e, ratio=0.0)
-        for n in modes:
-            for dt in (0.01, 0.005, 0.0025):
-                x = run(model, "legendre", n, dt).result
-                kinetic = 0.5 * x.settings.v0**2
-                lines.append(
-                    f"| {e:g} | {n} | {dt:g} | {_impact_loss(x):.4e} | "
-                    f"{x.energy['balance'] / kinetic:.1e} | {x.e2:.6f} |"
-                )
+    for dt in (0.02, 0.01, 0.005, 0.0025, 0.00125):
+        r = plastic_loss(4.1, 192, dt, 1.0)
+        kinetic = 0.5 * r.settings.v0**2
+        drift = float(np.max(np.abs(r.trajectory.energy - r.trajectory.energy[0])))
+        lines.append(
+            f"| {dt:g} | {-r.energy['impacts'] / kinetic:.1e} | {drift / kinetic:.1e} | "
+            f"{r.e2:.6f} |"
+        )
     return "\n".join(lines)
 
 
@@ -323,11 +513,12 @@ def special_case_table(steps: Sequence[float] = (0.02, 0.01, 0.005, 0.0025)) -> 
 
 
 TABLES: dict[str, Callable[[], str]] = {
+    "orders_resolution": lambda: convergence_table("N"),
+    "orders_time_step": lambda: convergence_table("dt"),
     "presets": presets_table,
     "speeds": speeds_table,
     "resolution": resolution_table,
     "resolution_paper": lambda: resolution_table("paper", (64, 128, 256), 384),
-    "time_step": time_step_table,
     "energy": energy_table,
     "rest": rest_table,
     "special_case": special_case_table,

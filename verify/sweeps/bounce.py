@@ -65,7 +65,12 @@ def bounce_points(
             raise ParameterError("drop_height", "left out when v0 is swept", drop.drop_height)
         return [(case.derive(v0=float(v)), drop, body) for v in values]
     if parameter == "drop-height":
-        return [(case, replace(drop, drop_height=float(v)), body) for v in values]
+        from twoball.modal.floor.model import check_drop_height
+
+        points = [(case, replace(drop, drop_height=float(v)), body) for v in values]
+        for _, point, _ in points:  # a height below the case's radius: before the first run
+            check_drop_height(case, point.drop_height)
+        return points
     if parameter == "gap":
         if drop.gap != 0.0:
             raise ParameterError("gap", "left out when the gap is swept", drop.gap)

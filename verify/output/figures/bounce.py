@@ -14,7 +14,7 @@ from __future__ import annotations
 
 import math
 from collections.abc import Sequence
-from typing import TYPE_CHECKING
+from typing import TYPE_CHECKING, Any
 
 import numpy as np
 from twoball.modal.floor.drop import DropResult
@@ -22,6 +22,8 @@ from twoball.modal.floor.references import MEASURED_COMPRESSION, pressure_area
 from twoball.modal.parameters import Case
 from twoball.verify.output.figures import new_figure
 from twoball.verify.output.figures.style import REFERENCE_COLOUR, label, styled, time_label
+
+from twoball._common.errors import ParameterError
 
 if TYPE_CHECKING:
     from matplotlib.figure import Figure
@@ -50,14 +52,7 @@ def drop_figure(r: DropResult, case: Case, mass: float, title: str = "") -> Figu
     axes[0].axhline(weight, color=REFERENCE_COLOUR, lw=0.8, ls=":", label="weight $m_2 g$")
     axes[0].set_ylabel(label("$F$", "N"))
     axes[0].legend(loc="upper right")
-    pa = pressure_area(case.v0, case.radius, case.wave_speed)
-    axes[1].plot(r.edge_t * to_ms, r.edge, ".", ms=2, label=r"contact edge $\phi_a(t)$")
-    axes[1].axhline(r.phi_a_max, color="C1", lw=0.8, label=rf"$\phi_{{a,max}}$ = {r.phi_a_max:.4f}")
-    axes[1].axhline(
-        pa["phi_a_max_rad"], color=REFERENCE_COLOUR, lw=0.8, ls="--", label="pressure x area"
-    )
-    axes[1].set_ylabel(label(r"$\phi_a$", "rad"))
-    axes[1].legend(loc="lower right")
+    _contact_angle_panel(axes[1], r, case, to_ms)
     height = (tr.q[:, 0] - 1.0) * case.radius * 1e3
     axes[2].plot(tr.t * to_ms, height, label="centre $Z - R$")
     axes[2].axhline(0.0, color=REFERENCE_COLOUR, lw=0.6)
@@ -85,12 +80,44 @@ def drop_figure(r: DropResult, case: Case, mass: float, title: str = "") -> Figu
     axes[3].plot(t_ms, gravity * energy_unit, color="k", lw=0.8, label="gravity $m_2 g (Z - R)$")
     axes[3].set_ylabel(label("$E$", "J"))
     axes[3].set_xlabel(time_label("after the first touch"))
-    axes[3].legend(loc="center right", ncols=1)
+    # the stacks fill the panel up to the initial energy: the legend sits above them
+    top = float(np.max(sum(s for s, _ in stacks))) * energy_unit
+    axes[3].set_ylim(top=1.55 * top)
+    axes[3].legend(loc="upper center", ncols=3, fontsize="small")
     e2 = "-" if r.e2 is None else f"{r.e2:.4f}"
     fig.suptitle(
         f"Drop on the floor{': ' + title if title else ''}: |v0| = {case.v0:g} m/s, e2 = {e2}"
     )
     return fig
+
+
+def _contact_angle_panel(ax: Any, r: DropResult, case: Case, to_ms: float) -> None:
+    """The contact edge phi_a(t) [rad], its largest contact phi_a,max and, for the drop's
+    |v0|, the contact angles of eq. (3.7) and of pressure x area as reference levels."""
+    from twoball.modal.initial import phi_a_from_v0
+
+    ax.plot(r.edge_t * to_ms, r.edge, ".", ms=2, label=r"contact edge $\phi_a(t)$")
+    ax.axhline(r.phi_a_max, color="C1", lw=0.9, label=rf"$\phi_{{a,max}}$ = {r.phi_a_max:.4f} rad")
+    levels = [r.phi_a_max]
+    try:
+        eq37 = phi_a_from_v0(case.v0, case.radius, case.wave_speed)
+    except ParameterError:  # beyond the largest speed eq. (3.7) can store
+        eq37 = None
+    if eq37 is not None:
+        ax.axhline(
+            eq37, color=REFERENCE_COLOUR, lw=0.9, ls="--", label=f"eq. (3.7): {eq37:.4f} rad"
+        )
+        levels.append(eq37)
+    pa = pressure_area(case.v0, case.radius, case.wave_speed)["phi_a_max_rad"]
+    ax.axhline(pa, color=REFERENCE_COLOUR, lw=0.9, ls=":", label=f"pressure x area: {pa:.4f} rad")
+    levels.append(pa)
+    low = min(levels)
+    # the edge starts and ends at the pole (pi) and stays above phi_a,max, the reference
+    # levels lie below it: the legend takes the free band under the lowest level
+    span = math.pi - low
+    ax.set_ylim(low - 0.9 * span, math.pi + 0.05 * span)
+    ax.set_ylabel(label(r"$\phi_a$", "rad"))
+    ax.legend(loc="lower center", ncols=2, fontsize="small")
 
 
 @styled
