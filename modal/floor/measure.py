@@ -145,11 +145,14 @@ def contact_edge(phi: np.ndarray, gap: np.ndarray, tolerance: float) -> float:
     if i - low < 2:
         return float(phi[i])
     angles, roots = phi[low:i], np.sqrt(np.maximum(gap[low:i], 0.0))
-    slope, offset = np.polyfit(angles, roots, 1)
+    # the least-squares line in closed form (centred sums): its slope and its zero
+    da = angles - angles.mean()
+    slope = float(da @ (roots - roots.mean())) / float(da @ da)
     if slope >= 0.0:
         return float(phi[i])
+    zero = float(angles.mean()) - float(roots.mean()) / slope
     upper = phi[i + 1] if i + 1 < phi.size else phi[i]
-    return float(min(max(-offset / slope, phi[i - 1]), upper))
+    return float(min(max(zero, phi[i - 1]), upper))
 
 
 def smoothed_minimum(t: np.ndarray, values: np.ndarray, window: float) -> tuple[float, float]:
