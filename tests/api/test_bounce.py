@@ -508,3 +508,32 @@ def test_a_short_window_warns_and_claims_no_release():
     assert [(e["contact"], e["kind"]) for e in data["events"]] == [("floor", "touch")]
     # the ball-alone reference of the baselines runs in its own window
     assert data["baselines"]["models"]["icm"]["v1_ratio"] > 0
+
+
+def test_the_picture_draws_the_floor_and_a_short_footer(tmp_path):
+    """render of the whole bounce: the floor drawn where the membrane touches it (in the
+    centre's frame, magnified like the membrane), one mention of the backend, no overlap of
+    the floor and the footer (the footer's band below the floor holds no floor pixel)."""
+    import imageio.v3 as iio
+    from twoball.fem_membrane.mesh import sphere_mesh
+    from twoball.verify.output.drop_fields import drop_frames, drop_scene
+    from twoball.verify.output.render import FLOOR_COLOUR
+
+    report = twoball.bounce(drop=twoball.Drop(modes=64), pair="basketball-tennis")
+    assert report._text.count("legendre") == 1
+    times = drop_frames(report.result, 3, report.case)
+    mesh = sphere_mesh(1, 2, None)
+    scene = drop_scene(report.result, report.case, mesh, times, report.mass_kg, report._text)
+    # the lowest node in contact sits on the drawn floor for any warp
+    k = 1  # mid-run: on the floor
+    z = report.result.trajectory.q[:, 0]
+    assert scene.floor_level(0, 3.0) == pytest.approx(-0.12, abs=1e-15)  # Z = R at the touch
+    centre = np.interp(times[k] * 320.0, report.result.trajectory.t, z) * 0.12 - 0.12
+    assert scene.floor_level(k, 2.0) == pytest.approx(-0.12 - 2.0 * centre, rel=1e-12)
+    out = report.render(tmp_path / "whole.png", mesh=twoball.MeshOptions(level=1))
+    image = iio.imread(out)[..., :3]
+    grey = int(FLOOR_COLOUR[1:3], 16)
+    floor = np.all(image == grey, axis=-1)
+    assert floor.sum() > 1000  # the floor is drawn, unlit, in its own colour
+    rows = np.flatnonzero(floor.sum(axis=1) > 20)  # (text edges have a few such pixels)
+    assert rows.max() < 0.85 * image.shape[0]  # above the footer's band

@@ -232,3 +232,19 @@ def test_a_body_released_later_starts_higher_and_slower():
     assert v[-1] == -body_speed and v[0] == -v0 / scale
     with pytest.raises(twoball.ParameterError):
         release_delay(1e3, 0.1, 0.01)  # the body would be rising
+
+
+def test_a_body_started_touching_records_its_separation_at_the_start():
+    """Delta x = 0: the top drops away at once with no impulse (the degree-1 response), so
+    the events list a body touch and separation at t = 0, not counted as a contact; with a
+    gap the body's first event is its first real touch."""
+    for gap, first in ((0.0, 0.0), (0.01, None)):
+        _, r = _whole(modes=64, gap=gap)
+        body = [e for e in r.body.events if e.contact == "body"]
+        if first is None:
+            assert body[0].kind == "touch" and body[0].t > 1.0
+            continue
+        assert [(e.kind, e.t) for e in body[:2]] == [("touch", 0.0), ("separation", 0.0)]
+        assert body[0].body_velocity == body[0].ball_velocity == -V0
+        assert body[2].kind == "touch" and body[2].t > 1.0
+        assert r.body.contacts == sum(1 for e in body[2:] if e.kind == "touch")
