@@ -13,7 +13,8 @@ fits of the lumped baselines), with the closed-form lift-off as the same-run
 baseline; then a 50-point sweep of Delta x in [0, 250] mm
 (``twoball.sweep({"gap": ...}, drop=Drop(), pair=...)``) in one process, on
 the local process pool (all cores) and on a Dask ``LocalCluster`` of as many
-worker processes (its start-up timed apart), once each, with the speed-ups and
+worker processes (its start-up and the warm-up of its workers, one point
+each, timed apart), once each, with the speed-ups and
 whether the numbers are those of one process.  The machine's load average is
 printed before and after: on a shared machine the wall times follow it.
 Exit status 0.
@@ -42,15 +43,16 @@ if str(ROOT) not in sys.path:
 PAIR = "basketball-tennis"
 
 
-def timed(task: Callable[[], object], repeats: int) -> np.ndarray:
-    """Wall times [s] of ``repeats`` runs after one untimed warm-up."""
+def timed(task: Callable[[], object], repeats: int) -> tuple[np.ndarray, np.ndarray]:
+    """Wall and CPU times [s] of ``repeats`` runs after one untimed warm-up."""
     task()
-    samples = []
+    wall, cpu = [], []
     for _ in range(repeats):
-        start = time.perf_counter()
+        start, start_cpu = time.perf_counter(), time.process_time()
         task()
-        samples.append(time.perf_counter() - start)
-    return np.array(samples)
+        wall.append(time.perf_counter() - start)
+        cpu.append(time.process_time() - start_cpu)
+    return np.array(wall), np.array(cpu)
 
 
 def main(argv: list[str] | None = None) -> int:
@@ -78,9 +80,8 @@ def main(argv: list[str] | None = None) -> int:
     )
     base = None
     for name, task, target in tasks:
-        cpu_start = time.process_time()
-        samples = timed(task, repeats)
-        cpu = (time.process_time() - cpu_start) / (repeats + 1)  # the warm-up included
+        samples, cpu_samples = timed(task, repeats)
+        cpu = float(np.median(cpu_samples))
         median = float(np.median(samples))
         q25, q75 = np.percentile(samples, [25, 75])
         base = median if base is None else base
@@ -110,13 +111,26 @@ def main(argv: list[str] | None = None) -> int:
             n_workers=workers, threads_per_worker=1, processes=True, dashboard_address=None
         ) as cluster:
             started = time.perf_counter() - start
+            # one point per worker first (untimed apart): the workers import twoball and
+            # build the lumped baselines' fits once, as the forked pool inherits them
+            start = time.perf_counter()
+            twoball.sweep(
+                {"gap": gaps[:workers]},
+                drop=twoball.Drop(),
+                pair=PAIR,
+                scheduler=cluster.scheduler_address,
+            )
+            warmed = time.perf_counter() - start
             label = f"Dask LocalCluster ({workers})"
             start = time.perf_counter()
             results[label] = twoball.sweep(
                 {"gap": gaps}, drop=twoball.Drop(), pair=PAIR, scheduler=cluster.scheduler_address
             )
             times[label] = time.perf_counter() - start
-        print(f"sweep of {count} gaps, {label:22s} {times[label]:8.2f} s (start {started:.1f} s)")
+        print(
+            f"sweep of {count} gaps, {label:22s} {times[label]:8.2f} s "
+            f"(cluster start {started:.1f} s, warm-up of the workers {warmed:.1f} s)"
+        )
     one = results["one process"]
     for label, result in results.items():
         if label == "one process":
