@@ -11,8 +11,13 @@ of each backend -- Legendre modes N = 192 (target <= 2 s) and axisymmetric P2 wi
 96 elements (target <= 20 s) -- after one untimed warm-up (imports, the Hertz
 fits of the lumped baselines), with the closed-form lift-off as the same-run
 baseline; then a 50-point sweep of Delta x in [0, 250] mm
-(``twoball.sweep({"gap": ...}, drop=Drop(), pair=...)``) in one process and on
-the local process pool (all cores), once each, with the speed-up.  Exit status 0.
+(``twoball.sweep({"gap": ...}, drop=Drop(), pair=...)``) in one process, on
+the local process pool (all cores) and on a Dask ``LocalCluster`` of as many
+worker processes (its start-up and the warm-up of its workers, one point
+each, timed apart), once each, with the speed-ups and
+whether the numbers are those of one process.  The machine's load average is
+printed before and after: on a shared machine the wall times follow it.
+Exit status 0.
 """
 
 from __future__ import annotations
@@ -38,15 +43,16 @@ if str(ROOT) not in sys.path:
 PAIR = "basketball-tennis"
 
 
-def timed(task: Callable[[], object], repeats: int) -> np.ndarray:
-    """Wall times [s] of ``repeats`` runs after one untimed warm-up."""
+def timed(task: Callable[[], object], repeats: int) -> tuple[np.ndarray, np.ndarray]:
+    """Wall and CPU times [s] of ``repeats`` runs after one untimed warm-up."""
     task()
-    samples = []
+    wall, cpu = [], []
     for _ in range(repeats):
-        start = time.perf_counter()
+        start, start_cpu = time.perf_counter(), time.process_time()
         task()
-        samples.append(time.perf_counter() - start)
-    return np.array(samples)
+        wall.append(time.perf_counter() - start)
+        cpu.append(time.process_time() - start_cpu)
+    return np.array(wall), np.array(cpu)
 
 
 def main(argv: list[str] | None = None) -> int:
@@ -74,13 +80,14 @@ def main(argv: list[str] | None = None) -> int:
     )
     base = None
     for name, task, target in tasks:
-        samples = timed(task, repeats)
+        samples, cpu_samples = timed(task, repeats)
+        cpu = float(np.median(cpu_samples))
         median = float(np.median(samples))
         q25, q75 = np.percentile(samples, [25, 75])
         base = median if base is None else base
         verdict = "" if target is None else ("PASS" if median <= target else "FAIL")
         print(
-            f"{name:34s} median {median:8.4f} s  IQR {q75 - q25:7.4f} s  "
+            f"{name:34s} median {median:8.4f} s  IQR {q75 - q25:7.4f} s  CPU {cpu:7.3f} s  "
             f"x baseline {median / base:8.1f}  {verdict} "
             + ("" if target is None else f"(target <= {target:g} s)")
         )
@@ -94,13 +101,47 @@ def main(argv: list[str] | None = None) -> int:
         results[label] = twoball.sweep({"gap": gaps}, drop=twoball.Drop(), pair=PAIR, workers=w)
         times[label] = time.perf_counter() - start
         print(f"sweep of {count} gaps, {label:22s} {times[label]:8.2f} s")
-    one, pool = results.values()
-    same = all(
-        a.v1_ratio == b.v1_ratio and a.v2_ratio == b.v2_ratio
-        for a, b in zip(one.reports, pool.reports, strict=True)
-    )
-    first, second = times.values()
-    print(f"speed-up {first / second:.2f} on {workers} workers; same numbers: {same}")
+    try:
+        from distributed import LocalCluster
+    except ImportError:  # pragma: no cover - the dask extra is not installed
+        LocalCluster = None
+    if LocalCluster is not None:
+        start = time.perf_counter()
+        with LocalCluster(
+            n_workers=workers, threads_per_worker=1, processes=True, dashboard_address=None
+        ) as cluster:
+            started = time.perf_counter() - start
+            # one point per worker first (untimed apart): the workers import twoball and
+            # build the lumped baselines' fits once, as the forked pool inherits them
+            start = time.perf_counter()
+            twoball.sweep(
+                {"gap": gaps[:workers]},
+                drop=twoball.Drop(),
+                pair=PAIR,
+                scheduler=cluster.scheduler_address,
+            )
+            warmed = time.perf_counter() - start
+            label = f"Dask LocalCluster ({workers})"
+            start = time.perf_counter()
+            results[label] = twoball.sweep(
+                {"gap": gaps}, drop=twoball.Drop(), pair=PAIR, scheduler=cluster.scheduler_address
+            )
+            times[label] = time.perf_counter() - start
+        print(
+            f"sweep of {count} gaps, {label:22s} {times[label]:8.2f} s "
+            f"(cluster start {started:.1f} s, warm-up of the workers {warmed:.1f} s)"
+        )
+    one = results["one process"]
+    for label, result in results.items():
+        if label == "one process":
+            continue
+        same = all(
+            a.v1_ratio == b.v1_ratio and a.v2_ratio == b.v2_ratio
+            for a, b in zip(one.reports, result.reports, strict=True)
+        )
+        speed = times["one process"] / times[label]
+        print(f"{label}: speed-up {speed:.2f}; same numbers as one process: {same}")
+    print(f"load after: {os.getloadavg()[0]:.2f}")
     return 0
 
 

@@ -879,7 +879,10 @@ class BounceReport:
 
         Point data ``u_m``, ``displacement_m`` (the centre's fall and the
         membrane's flattening: warp by it), ``height_m``; frame data ``Z_m``,
-        ``floor_force_N``; every field in SI (:mod:`twoball.verify.output.drop_fields`).
+        ``floor_force_N`` (with a body ``body_height_m``, ``body_gap_m``,
+        ``body_force_N``); field data the results and the events of both
+        contacts (the text ``contact_events``, JSON of :attr:`events`, and their
+        counts); every field in SI (:mod:`twoball.verify.output.drop_fields`).
         ``mesh``: a sphere (default the level-3 P2 icosphere); ``frames``
         instants from the first touch to the end of the run.
         """
@@ -889,7 +892,9 @@ class BounceReport:
         from twoball.verify.output.series import write_series
 
         sphere, times = self._mesh_and_times(mesh, frames)
-        series = drop_series(self.result, self.case, sphere, times, self.mass_kg, self._text)
+        series = drop_series(
+            self.result, self.case, sphere, times, self.mass_kg, self._text, self.events
+        )
         if self.provenance is not None:
             series = replace(
                 series, text={**series.text, "provenance": json.dumps(self.provenance)}
@@ -926,9 +931,9 @@ class BounceReport:
     def _text(self) -> str:
         c = self.case
         return (
-            f"twoball bounce ({self.backend}, {self.model['resolution']}): R = {c.radius:g} m, "
-            f"c = {c.wave_speed:g} 1/s, v0 = {c.v0:g} m/s, membrane {self.model['membrane']}, "
-            f"gas {self.model['gas']}"
+            f"twoball bounce, {self.model['resolution']}: R = {c.radius:g} m, "
+            f"c = {c.wave_speed:g} 1/s, v0 = {c.v0:g} m/s, {self.model['membrane']} membrane, "
+            f"{self.model['gas']} gas"
         )
 
 

@@ -91,7 +91,11 @@ class BodyResult:
         Total impulse of the body's contact (on the body, upward).
     intervals : tuple of ContactInterval
     events : tuple of BodyEvent
-        Every touch and separation of both contacts, in time order.
+        Every touch and separation of both contacts, in time order.  A body
+        started touching (``gap = 0``) that the top leaves at once, with no
+        impulse, has a touch and a separation at t = 0 (not counted in
+        ``contacts``): the top moves down at the first floor force (the
+        radial membrane's degree-1 response, docs/whole_bounce.rst).
     before, after : tuple of float or None
         ``(u1, u2)`` before the first touch and ``(v1, v2)`` after the last
         separation (body, centre): the velocities behind ``e12_effective``.
@@ -141,6 +145,11 @@ def measure_body(
         return iv.last < steps - 1
 
     events: list[BodyEvent] = []
+    if body.gap == 0.0 and not (intervals and intervals[0].first == 0):
+        # started touching, the top dropped away at once with no impulse (the degree-1
+        # response of the radial membrane): a touch and a separation at t = 0
+        events.append(BodyEvent("body", "touch", float(tr.t[0]), *_pair(tr, z, s, 0)))
+        events.append(BodyEvent("body", "separation", float(tr.t[0]), *_pair(tr, z, s, 0)))
     for iv in floor:
         events.append(BodyEvent("floor", "touch", iv.start, *_pair(tr, z, s, iv.first)))
         if closed(iv):

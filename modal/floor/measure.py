@@ -165,11 +165,14 @@ def contact_edge(
         return float(phi[i])
     angles = phi[low:high]
     roots = np.maximum(gap[low:high], 0.0) ** (1.0 / power)
-    slope, offset = np.polyfit(angles, roots, 1)
+    # the least-squares line in closed form (centred sums): its slope and its zero
+    da = angles - angles.mean()
+    slope = float(da @ (roots - roots.mean())) / float(da @ da)
     if slope >= 0.0:
         return float(phi[i])
+    zero = float(angles.mean()) - float(roots.mean()) / slope
     upper = phi[i + 1] if i + 1 < phi.size else phi[i]
-    return float(min(max(-offset / slope, phi[i - 1]), upper))
+    return float(min(max(zero, phi[i - 1]), upper))
 
 
 def edge_law(bending: bool) -> dict[str, float]:

@@ -46,7 +46,40 @@ from twoball.modal.nonsmooth import ContactProblem
 
 from twoball._common.errors import NumericalError, ParameterError
 
-__all__ = ["BodyOnTop", "FloorSystem", "floor_system"]
+__all__ = ["BodyOnTop", "FloorSystem", "floor_system", "release_delay"]
+
+
+def release_delay(tau: float, v0: float, gamma: float) -> tuple[float, float]:
+    """Gap and falling speed at the ball's floor touch of a body released ``tau`` later.
+
+    Both start at rest, touching; the ball is let go first, the body ``tau``
+    later.  When the ball touches the floor at ``|v0|`` the body has fallen for
+    ``tau`` less: it is ``|v0| tau - gamma tau^2 / 2`` higher than the ball's
+    top and falls at ``|v0| - gamma tau`` (dimensionless: units R, 1/c, R c).
+
+    Parameters
+    ----------
+    tau : float
+        The body's release after the ball's, in [0, |v0| / gamma] (units 1/c).
+    v0 : float
+        The ball's impact speed ``|v0| / (R c)`` > 0.
+    gamma : float
+        ``g / (R c^2)`` >= 0.
+
+    Returns
+    -------
+    gap, speed : float
+        For :class:`BodyOnTop` (``gap``, ``speed``).
+
+    Examples
+    --------
+    >>> release_delay(2.0, 0.5, 0.125)  # 1 - 0.25 higher, 0.5 - 0.25 slower
+    (0.75, 0.25)
+    """
+    tau, v0, gamma = float(tau), abs(float(v0)), float(gamma)
+    if not (math.isfinite(tau) and tau >= 0.0 and gamma * tau <= v0):
+        raise ParameterError("tau", "a delay in [0, |v0| / g] (the body still falls)", tau)
+    return v0 * tau - 0.5 * gamma * tau * tau, v0 - gamma * tau
 
 
 @dataclass(frozen=True, eq=False)
@@ -69,6 +102,11 @@ class BodyOnTop:
     weight : bool
         The body feels gravity (default True; False for the paper's special case
         in which only the massless criteria see g).
+    speed : float, optional
+        The body's falling speed at the first floor touch, ``|v| / (R c)`` >= 0
+        (None: the ball's ``|v0|``, both released together).  A body released a
+        time tau after the ball falls ``g tau`` slower and starts ``|v0| tau - g
+        tau^2 / 2`` higher (:func:`release_delay`).
     """
 
     mass: float
@@ -77,12 +115,15 @@ class BodyOnTop:
     restitution: float = 0.0
     gap: float = 0.0
     weight: bool = True
+    speed: float | None = None
 
     def __post_init__(self) -> None:
         if not (math.isfinite(self.mass) and self.mass > 0.0):
             raise ParameterError("mass_ratio", "a number > 0 for a body on the ball", self.mass)
         if not (math.isfinite(self.gap) and self.gap >= 0.0):
             raise ParameterError("gap", "a finite number >= 0", self.gap)
+        if self.speed is not None and not (math.isfinite(self.speed) and self.speed >= 0.0):
+            raise ParameterError("speed", "a finite number >= 0 (units R c)", self.speed)
         if not np.all(np.isfinite(self.cap)):
             raise NumericalError("BodyOnTop: the cap averages are not finite")
 
@@ -137,7 +178,8 @@ class FloorSystem:
     def falling(self, v0: float, height: float = 1.0) -> tuple[np.ndarray, np.ndarray]:
         """Undeformed state, the centre at ``height`` (1: the pole touching), falling at v0.
 
-        A body starts its gap above the ball's top, falling at the same speed.
+        A body starts its gap above the ball's top, falling at the same speed
+        (or at its own :attr:`BodyOnTop.speed`).
         """
         q = np.zeros(self.problem.dofs)
         v = np.zeros(self.problem.dofs)
@@ -145,7 +187,8 @@ class FloorSystem:
         v[self.centre] = -abs(v0)
         if self.body is not None:
             q[self.body_coordinate] = height + 1.0 + self.body.gap
-            v[self.body_coordinate] = -abs(v0)
+            speed = abs(v0) if self.body.speed is None else self.body.speed
+            v[self.body_coordinate] = -speed
         return q, v
 
     def body_gap(self, q: np.ndarray) -> np.ndarray:

@@ -1,15 +1,38 @@
 """The damped-oscillator model of the two-ball bounce after Bartz (2020), in dimensionless form.
 
 Source: S. P. Bartz, "Delayed rebounds in the two-ball bounce problem",
-arXiv:2007.15005 (2020).  What its abstract states, and this module follows:
-each contact is a damped harmonic oscillator (linear spring and dashpot, the
-contact lasting while the bodies overlap, so the dashpot may pull at the end);
-the equations are made dimensionless to reduce the parameters; a "delayed
-rebound" -- a low first release of the body and a higher second one after the
-lower ball catches it again -- appears for some parameters.  The paper's body
-(its exact dimensionless groups and worked examples) could not be consulted
-here: the groups below are this module's choice, and no number of that paper
-is claimed to be reproduced.
+arXiv:2007.15005 (2020).  Only its abstract and introduction could be
+consulted here.  What the abstract states: the independent contact model
+(ICM) is reviewed and found accurate for a wide variety of cases, even when
+the collisions are not truly independent; the dynamical model is based on the
+solution of the damped harmonic oscillator; its equations of motion are made
+dimensionless to reduce the number of parameters and initial conditions; a
+"delayed rebound effect" -- a small first bounce followed by a higher second
+bounce -- is found for a range of parameters, most commonly where the first
+bounce is lower than the ICM's prediction.
+
+What is this module's choice, not the abstract's:
+
+* each contact is a linear spring and dashpot, the damped harmonic
+  oscillator read as a contact law;
+* a contact lasts while the bodies overlap (``tensile=True`` of
+  :class:`~twoball.modal.lumped.laws.LinearLaw`), so the dashpot may pull at
+  its end: the rule under which an isolated contact restitutes
+  ``e = exp(-pi zeta / sqrt(1 - zeta^2))``, the textbook damped oscillator's.
+  This is what tells the model from
+  :class:`~twoball.modal.lumped.spring_dashpot.TwoSpringDashpot`, whose
+  contacts open when their force vanishes (Schwager & Pöschel 2007); with the
+  same springs and dashpots the two give different restitutions and rebounds
+  when damped, and the same motion when elastic (tested);
+* the units and the five groups below, and the inputs of a Table 1 pair
+  (:meth:`Bartz2020.from_pair`).
+
+The paper's own dimensionless groups and worked examples could not be
+consulted: no number of that paper is claimed to be reproduced.  The
+abstract's qualitative claim is: with ``zeta`` from e2 = 0.8, e12 = 0.6,
+``g = 0``, ``mu = 0.01``, ``kappa = 1`` and a gap of 0.5 ``|v0| / w2`` the
+body leaves the lower ball at 0.68 ``|v0|``, is caught again and leaves at
+0.87 ``|v0|``, both below the ICM's 1.85 (tested).
 
 Dimensionless units: mass m2, impact speed ``|v0|``, time ``1 / w2`` with
 ``w2 = sqrt(k2 / m2)`` (the floor contact's undamped frequency; for a

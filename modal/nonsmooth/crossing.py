@@ -49,6 +49,66 @@ def first_crossing(h: float, g0: float, u0: float, g1: float, u1: float) -> floa
     return float(inside[0]) if inside.size else h
 
 
+def first_crossings(
+    h: float, g0: np.ndarray, u0: np.ndarray, g1: np.ndarray, u1: np.ndarray
+) -> np.ndarray:
+    """:func:`first_crossing` of several gaps over one step, at once (same numbers).
+
+    The cubics' companion matrices are stacked and their eigenvalues found in
+    one LAPACK call per size (what :func:`numpy.roots` does for each alone, so
+    the roots are the same to the last bit); a gap whose cubic has a vanishing
+    leading coefficient or is not finite takes :func:`first_crossing`.
+
+    Parameters
+    ----------
+    h : float
+        Step length (dimensionless time), > 0.
+    g0, u0, g1, u1 : ndarray, shape (k,)
+        Each gap and its rate at the step's start and end (``g1 < 0``).
+
+    Returns
+    -------
+    ndarray, shape (k,)
+        The first crossing of each gap in (0, h].
+    """
+    g0 = np.maximum(np.asarray(g0, dtype=float), 0.0)
+    u0, g1, u1 = (np.asarray(x, dtype=float) for x in (u0, g1, u1))
+    c2 = (3.0 * (g1 - g0) / h - 2.0 * u0 - u1) / h
+    c3 = (2.0 * (g0 - g1) / h + u0 + u1) / (h * h)
+    out = np.full(g0.size, np.nan)
+    start = g0 == 0.0
+    finite = np.isfinite(c2) & np.isfinite(c3) & np.isfinite(u0) & np.isfinite(g0)
+    regular = finite & (c3 != 0.0)
+    out[start & (u0 <= 0.0) & finite] = h  # the root 0 alone: no crossing inside
+    roots = np.full((g0.size, 3), np.nan + 0j)
+    quadratic = regular & start & (u0 > 0.0)
+    cubic = regular & ~start
+    for mask, size in ((quadratic, 2), (cubic, 3)):
+        k = np.flatnonzero(mask)
+        if not k.size:
+            continue
+        companion = np.zeros((k.size, size, size))
+        for i in range(1, size):
+            companion[:, i, i - 1] = 1.0
+        companion[:, 0, 0] = -c2[k] / c3[k]
+        companion[:, 0, 1] = -u0[k] / c3[k]
+        if size == 3:
+            companion[:, 0, 2] = -g0[k] / c3[k]
+        roots[k, :size] = np.linalg.eigvals(companion)
+    solved = quadratic | cubic
+    real = np.where(np.abs(roots.imag) <= 1e-12 * h, roots.real, np.nan)
+    inside = (real > 0.0) & (real <= h)
+    probe = np.minimum(np.where(inside, real, 0.0) * (1.0 + 1e-9) + 1e-15 * h, h)
+    below = hermite_gap(probe, h, g0[:, None], u0[:, None], g1[:, None], u1[:, None]) < 0.0
+    passing = np.where(inside & below, real, np.inf).min(axis=1)
+    smallest = np.where(inside, real, np.inf).min(axis=1)
+    chosen = np.where(np.isfinite(passing), passing, np.where(np.isfinite(smallest), smallest, h))
+    out[solved] = chosen[solved]
+    for i in np.flatnonzero(np.isnan(out)):  # the rare cases numpy.roots handles alone
+        out[i] = first_crossing(h, g0[i], u0[i], g1[i], u1[i])
+    return out
+
+
 def hermite_rate(
     s: np.ndarray | float, h: float, g0: float, u0: float, g1: float, u1: float
 ) -> np.ndarray:
@@ -61,4 +121,4 @@ def hermite_rate(
     return d00 * g0 + d10 * u0 + d01 * g1 + d11 * u1
 
 
-__all__ = ["first_crossing", "hermite_gap", "hermite_rate"]
+__all__ = ["first_crossing", "first_crossings", "hermite_gap", "hermite_rate"]

@@ -21,6 +21,7 @@ exact for any positive semi-definite D with b in its range.
 
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass
 
 import numpy as np
@@ -60,7 +61,7 @@ def _solve_block(D: np.ndarray, b: np.ndarray, active: np.ndarray) -> np.ndarray
     idx = np.flatnonzero(active)
     if idx.size == 0:
         return z
-    block = D[np.ix_(idx, idx)]
+    block = D[idx[:, None], idx]
     diag = np.diag(block)
     if diag.min() <= 0.0:
         return None
@@ -69,9 +70,14 @@ def _solve_block(D: np.ndarray, b: np.ndarray, active: np.ndarray) -> np.ndarray
     except np.linalg.LinAlgError:
         return None
     # a near-singular block (dependent constraint rows) shows as a large residual
-    # or huge impulses: leave it to NNLS
-    if not np.all(np.isfinite(z_a)) or np.linalg.norm(block @ z_a + b[idx]) > 1e-9 * (
-        np.linalg.norm(b[idx]) + np.linalg.norm(block, 1) * np.linalg.norm(z_a)
+    # or huge impulses: leave it to NNLS (2-norms of the vectors, 1-norm of the block)
+    if not np.all(np.isfinite(z_a)):
+        return None
+    residual = block @ z_a + b[idx]
+    b_a = b[idx]
+    column_sum = float(np.abs(block).sum(axis=0).max())
+    if math.sqrt(residual @ residual) > 1e-9 * (
+        math.sqrt(b_a @ b_a) + column_sum * math.sqrt(z_a @ z_a)
     ):
         return None
     z[idx] = z_a

@@ -64,7 +64,7 @@ from collections.abc import Callable
 from dataclasses import dataclass, field
 
 import numpy as np
-from twoball.modal.nonsmooth.crossing import first_crossing
+from twoball.modal.nonsmooth.crossing import first_crossings
 from twoball.modal.nonsmooth.lcp import solve_lcp
 from twoball.modal.nonsmooth.linear import Factorised, combine
 from twoball.modal.nonsmooth.problem import ContactProblem
@@ -309,7 +309,7 @@ class MoreauJean:
         if not striking.any():
             return touching
         idx = np.flatnonzero(touching)
-        D = self._mass_delassus[np.ix_(idx, idx)]
+        D = self._mass_delassus[idx[:, None], idx]
         b = (1.0 + p.restitution[idx]) * U[idx]
         sol = solve_lcp(D, b, guess=striking[idx])
         dv = self._mass_y[:, idx] @ sol.z
@@ -335,7 +335,7 @@ class MoreauJean:
         if active.any():
             idx = np.flatnonzero(active)
             if full is not None:
-                Y_a, D = full[0][:, idx], full[1][np.ix_(idx, idx)]
+                Y_a, D = full[0][:, idx], full[1][idx[:, None], idx]
             else:
                 Y_a = factor.solve(p.constraints[idx].T.copy())
                 D = p.constraints[idx] @ Y_a
@@ -448,9 +448,8 @@ class MoreauJean:
         for _ in range(_MAX_LOCALISATIONS):
             gap1, U1 = p.gap(q1) - level, p.normal_velocity(v1)
             candidates = np.flatnonzero(crossing)
-            times = np.array(
-                [first_crossing(h, gap0[i], U0[i], gap1[i], U1[i]) for i in candidates]
-            )
+            c = candidates
+            times = first_crossings(h, gap0[c], U0[c], gap1[c], U1[c])
             j = int(candidates[int(np.argmin(times))])
             s = float(times.min())
             found = self._root(state, active, j, level[j], s, h, (gap0[j], gap1[j]))

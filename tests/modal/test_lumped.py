@@ -286,6 +286,87 @@ def test_bartz_elastic_equals_spring_model_elastic():
     assert [e.kind for e in bartz.events] == [e.kind for e in spring.events]
 
 
+def _same_springs_and_dashpots(e2: float, e12: float) -> tuple[Bartz2020, TwoSpringDashpot]:
+    """Bartz2020 of basketball-tennis and the TwoSpringDashpot with the same k and c.
+
+    TwoSpringDashpot is built from the (tau, e) that its force rule gives for those k, c
+    (Schwager & Pöschel 2007: with ``q = zeta / sqrt(1 - zeta^2)`` the force vanishes at
+    ``w t = pi - 2 arctan q``, ``e = exp(-q (pi - 2 arctan q))``, ``tau w0 = sqrt(1 + q^2)
+    (pi - 2 arctan q)``).
+    """
+    c = pair_contacts(PAIRS["basketball-tennis"])
+    bartz = Bartz2020.from_stiffness(c.m1, c.m2, c.k2, c.k12, e2, e12)
+    force_rule = []
+    for k, zeta, mass in ((c.k2, bartz.zeta2, c.m2), (c.k12, bartz.zeta12, c.reduced_mass)):
+        q = zeta / math.sqrt(1.0 - zeta * zeta)
+        angle = math.pi - 2.0 * math.atan(q)
+        force_rule.append(
+            (math.exp(-q * angle), math.sqrt(1 + q * q) * angle * math.sqrt(mass / k))
+        )
+    (ef, tf), (ep, tp) = force_rule
+    spring = TwoSpringDashpot(c.m1, c.m2, ef, ep, tf, tp)
+    for law, k, zeta, mass in (
+        (spring.floor_law, c.k2, bartz.zeta2, c.m2),
+        (spring.pair_law, c.k12, bartz.zeta12, c.reduced_mass),
+    ):
+        assert law.stiffness == pytest.approx(k, rel=1e-12)
+        assert law.damping == pytest.approx(2.0 * zeta * math.sqrt(k * mass), rel=1e-12, abs=1e-12)
+    return bartz, spring
+
+
+def test_bartz_and_the_spring_dashpots_differ_by_their_end_of_contact_rule():
+    """The same springs and dashpots, two rules: Bartz2020's contact lasts while the bodies
+    overlap (the dashpot pulls at the end), TwoSpringDashpot's opens when the force vanishes.
+
+    Isolated floor contact (g = 0, the body far away): Bartz restitutes the damped
+    oscillator's ``exp(-pi zeta / sqrt(1 - zeta^2))``, the force rule
+    ``exp(-q (pi - 2 arctan q))`` (closed forms); released at zero overlap, resp. with the
+    spring still compressed.  Touching with gravity: different rebounds when damped, the
+    same when elastic.
+    """
+    bartz, spring = _same_springs_and_dashpots(0.8, 0.6)
+    zeta = bartz.zeta2
+    q = zeta / math.sqrt(1.0 - zeta * zeta)
+    for model, expected in (
+        (bartz, math.exp(-math.pi * q)),
+        (spring, math.exp(-q * (math.pi - 2.0 * math.atan(q)))),
+    ):
+        far = model.run(v0=SPEED, dx=1.0, g=0.0)
+        release = next(e for e in far.events if e.contact == "floor" and e.kind == "release")
+        assert release.v2 / SPEED == pytest.approx(expected, rel=1e-8)
+    assert math.exp(-math.pi * q) == pytest.approx(0.8, rel=1e-12)  # Bartz: e2 as given
+    assert math.exp(-q * (math.pi - 2.0 * math.atan(q))) > 0.805  # the force rule: livelier
+    b_far = bartz.run(v0=SPEED, dx=1.0, g=0.0)
+    s_far = spring.run(v0=SPEED, dx=1.0, g=0.0)
+    releases = [e for e in b_far.events if e.kind == "release"]
+    assert max(abs(e.overlap) for e in releases) < 1e-12
+    assert all(e.overlap > 1e-6 for e in s_far.events if e.kind == "release")
+    damped = bartz.run(v0=SPEED, dx=0.0), spring.run(v0=SPEED, dx=0.0)
+    assert abs(damped[0].v1_ratio - damped[1].v1_ratio) > 1e-2
+    bartz, spring = _same_springs_and_dashpots(1.0, 1.0)
+    elastic = bartz.run(v0=SPEED, dx=0.0), spring.run(v0=SPEED, dx=0.0)
+    assert elastic[0].v1 == pytest.approx(elastic[1].v1, rel=1e-8)
+    assert elastic[0].v2 == pytest.approx(elastic[1].v2, rel=1e-8)
+
+
+def test_bartz_shows_the_abstracts_delayed_rebound_below_the_icm():
+    """Bartz (2020), abstract: a small first bounce followed by a higher second one, most
+    commonly where the first bounce is below the ICM.  Found here (the paper's own examples
+    could not be consulted): mu = 0.01, kappa = 1, zeta from e2 = 0.8 and e12 = 0.6, g = 0,
+    gap 0.5 |v0| / w2: the body leaves upwards at 0.68 |v0|, is caught by the rising lower
+    ball and leaves at 0.87 |v0|, both below eq. (2.5)'s 1.85."""
+    zeta2 = -math.log(0.8) / math.sqrt(math.pi**2 + math.log(0.8) ** 2)  # e = exp(-pi q)
+    zeta12 = -math.log(0.6) / math.sqrt(math.pi**2 + math.log(0.6) ** 2)
+    model = Bartz2020(mu=0.01, kappa=1.0, zeta2=zeta2, zeta12=zeta12)
+    r = model.run_dimensionless(0.5, 0.0)
+    releases = [e.v1 for e in r.events if e.contact == "pair" and e.kind == "release"]
+    assert len(releases) == 2 and r.delayed_rebound
+    assert 0.6 < releases[0] < 0.75 and 0.8 < releases[1] < 0.95
+    icm = (0.01 * -1.0 + 0.8 + 0.6 * (0.8 + 1.0)) / 1.01  # eq. (2.5), u1 = -1, u2 = e2
+    assert icm == pytest.approx(1.8515, abs=1e-4)
+    assert releases[0] < releases[1] < icm
+
+
 def test_touching_differs_from_icm_and_large_gap_does_not():
     """dx = 0 lowers the body's rebound below (2.6) in every contact model; dx = 0.25 m does not."""
     p = PAIRS["basketball-table-tennis"]

@@ -60,6 +60,29 @@ def test_lcp_with_dependent_rows_is_complementary():
     assert abs(sol.w @ sol.z) <= 1e-10 * max(1.0, sol.z.sum())
 
 
+def test_first_crossings_of_many_gaps_are_the_scalar_ones_to_the_bit():
+    """The stacked companion matrices give numpy.roots' roots: the same crossing times,
+    bit for bit, including gaps that start at zero and a vanishing cubic term."""
+    from twoball.modal.nonsmooth.crossing import first_crossing, first_crossings
+
+    rng = np.random.default_rng(11)
+    for _ in range(400):
+        k = int(rng.integers(1, 9))
+        h = 10.0 ** rng.uniform(-4, -1)
+        scale = h * 10.0 ** rng.uniform(-3, 0)
+        g0 = np.where(rng.random(k) < 0.3, 0.0, scale * np.abs(rng.normal(size=k)))
+        u0, u1 = rng.normal(size=k), rng.normal(size=k)
+        g1 = -scale * np.abs(rng.normal(size=k))
+        if rng.random() < 0.1:
+            u0[:] = 0.0
+        expected = [first_crossing(h, *x) for x in zip(g0, u0, g1, u1, strict=True)]
+        assert first_crossings(h, g0, u0, g1, u1).tolist() == expected
+    # a straight line: the cubic and quadratic terms vanish (numpy.roots trims them)
+    assert first_crossings(
+        1.0, np.array([1.0]), np.array([-2.0]), np.array([-1.0]), np.array([-2.0])
+    ).tolist() == [0.5]
+
+
 # --- the problem bundle ------------------------------------------------------------
 
 

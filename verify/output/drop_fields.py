@@ -21,6 +21,15 @@ Frame data: ``Z_m`` (the centre's height) and ``floor_force_N``; with an upper
 body (the whole bounce) also ``body_height_m`` (the body's lowest point above
 the floor), ``body_gap_m`` (its gap above the ball's top, eq. (B2)) and
 ``body_force_N`` (the contact force between them).
+
+Field data: ``contact_time_s``, ``e2``, ``phi_a_max_rad``; with a body
+``mass_ratio``, ``gap_m``, ``cap_angle_rad``, ``v1_ratio``, ``v2_ratio``,
+``t_liftoff_s``.  The events of both contacts (every touch and separation:
+``contact`` floor or body, ``kind``, ``t_s``, ``velocity_m_s`` of the centre,
+``body_velocity_m_s``) are the text ``contact_events``, a JSON list stored as
+its UTF-8 bytes (what meshio, pyvista and VTK all read back:
+:func:`twoball.verify.output.series.text_value`), with the counts ``events``,
+``floor_contacts`` and ``body_contacts`` as numbers.
 """
 
 from __future__ import annotations
@@ -37,6 +46,9 @@ from twoball.verify.output.render import BallScene
 from twoball.verify.output.series import TimeSeries
 
 __all__ = ["DropScene", "body_frames", "drop_frames", "drop_scene", "drop_series"]
+
+#: The drop's footer in two lines below the floor (characters per line at the default size).
+DROP_FOOTER_CHARS = 64
 
 
 def drop_frames(result: DropResult, count: int, case: Case) -> np.ndarray:
@@ -81,9 +93,21 @@ def body_frames(
 
 
 def drop_series(
-    result: DropResult, case: Case, mesh: SphereMesh, times_s: np.ndarray, mass: float, text: str
+    result: DropResult,
+    case: Case,
+    mesh: SphereMesh,
+    times_s: np.ndarray,
+    mass: float,
+    text: str,
+    events: list[dict[str, Any]] | None = None,
 ) -> TimeSeries:
-    """The drop at the nodes of ``mesh`` (unit sphere) at ``times_s`` [s], in SI."""
+    """The drop at the nodes of ``mesh`` (unit sphere) at ``times_s`` [s], in SI.
+
+    ``events``: the touches and separations in SI (:attr:`twoball.BounceReport.events`:
+    ``contact``, ``kind``, ``t_s``, ``velocity_m_s`` and, with a body,
+    ``body_velocity_m_s``), written as the text ``contact_events`` (JSON) with
+    the counts ``events``, ``floor_contacts`` and ``body_contacts`` as field data.
+    """
     ball = result.system.ball
     points = np.asarray(mesh.points, dtype=float)
     normal = points / np.linalg.norm(points, axis=1, keepdims=True)
@@ -116,6 +140,15 @@ def drop_series(
             "t_liftoff_s": np.nan if b.t_liftoff is None else b.t_liftoff / case.wave_speed,
         }
         texts["body"] = json.dumps({"restitution": body.restitution, "sequence": b.sequence})
+    if events is not None:
+        texts["contact_events"] = json.dumps(events)
+        numbers["events"] = float(len(events))
+        for contact in ("floor", "body"):
+            touches = [e for e in events if e.get("contact", "floor") == contact]
+            if contact == "floor" or body is not None:
+                numbers[f"{contact}_contacts"] = float(
+                    sum(1 for e in touches if e["kind"] == "touch")
+                )
     return TimeSeries(
         points * radius,
         mesh.cells,
@@ -137,7 +170,8 @@ class DropScene(BallScene):
 
     ``u`` is the radial displacement from the centre, ``body`` the top's, and
     ``t_liftoff`` the separation from the floor; ``floor_force`` (F,) [N] and
-    ``centre`` (F,) the centre's height above R [m] go into the caption.
+    ``centre`` (F,) the centre's height above R [m] go into the caption; the
+    floor is drawn at :meth:`floor_level`.
     """
 
     floor_force: np.ndarray = None  # type: ignore[assignment]
@@ -146,17 +180,22 @@ class DropScene(BallScene):
     t_body: float | None = None
 
     def caption(self, k: int, warp: float) -> str:
-        """Time, the floor force, the centre's height, contact or flight, the body, warp."""
+        """Short lines: time, the floor's force (or "left"), the centre's height, the body's
+        force (or "lifted off"), warp."""
         t = float(self.times[k])
-        text = f"t = {t * 1e3:6.2f} ms\nfloor force {self.floor_force[k]:7.1f} N"
-        text += f"\nZ - R = {self.centre[k] * 1e3:+6.2f} mm"
-        if self.t_liftoff is not None:
-            text += "\nleft the floor" if t >= self.t_liftoff else "\non the floor"
+        left = self.t_liftoff is not None and t >= self.t_liftoff
+        floor = "left" if left else f"{self.floor_force[k]:.0f} N"
+        text = f"t = {t * 1e3:.2f} ms\nfloor: {floor}\nZ - R: {self.centre[k] * 1e3:+.1f} mm"
         if self.body_force is not None:
-            text += f"\nbody force {self.body_force[k]:7.1f} N"
-            if self.t_body is not None and t >= self.t_body:
-                text += "\nbody lifted off"
+            lifted = self.t_body is not None and t >= self.t_body
+            body = "lifted off" if lifted else f"{self.body_force[k]:.0f} N"
+            text += f"\nbody: {body}"
         return text + (f"\nwarp x{warp:.3g}" if warp != 1.0 else "")
+
+    def floor_level(self, k: int, warp: float) -> float:
+        """The floor in the centre's frame, magnified like the membrane: ``-R - warp (Z - R)``
+        [m] (a floor point in contact has ``u = Z - R``, drawn at ``-R - warp u``)."""
+        return -self.radius - warp * float(self.centre[k])
 
 
 def drop_scene(
@@ -187,4 +226,5 @@ def drop_scene(
         centre=frames["Z_m"] - case.radius,
         body_force=body_force,
         t_body=t_body,
+        footer_chars=DROP_FOOTER_CHARS,
     )

@@ -42,6 +42,10 @@ BODY_VIEW = 1.0  # the camera frames the body's flight up to this many R above t
 MAX_SIZE = 4096  # largest accepted image side [px]
 COLOUR_MAP = "coolwarm"  # of the displacement, drawn on the ball and in the colour bar
 FOOTER_CHARS = 30  # longest footer line at the default size [characters]
+FLOOR_SIZE = 1.25  # radius of the drawn floor disc, in R
+FLOOR_VIEW = 2.0  # the camera frames the floor down to this many R below the centre
+FLOOR_MARGIN = 0.55  # free band below the floor for the footer, in R
+FLOOR_COLOUR = "#b0b0b0"
 
 
 @dataclass(frozen=True)
@@ -71,6 +75,8 @@ class BallScene:
         Time [s] after which the initial flattening has travelled round the ball
         (``pi / c``); the automatic warp is measured on the frames from then on
         (:meth:`auto_warp`).  None: on every frame.
+    footer_chars : int
+        Longest line of the footer (``label``) at the default size [characters].
     """
 
     points: np.ndarray
@@ -82,6 +88,7 @@ class BallScene:
     t_liftoff: float | None = None
     label: str = ""
     settle_time: float | None = None
+    footer_chars: int = FOOTER_CHARS
 
     def __post_init__(self) -> None:
         times = np.atleast_1d(np.asarray(self.times, dtype=float))
@@ -103,6 +110,10 @@ class BallScene:
             text += f"\nlift-off {self.t_liftoff * 1e3:.2f} ms\nbody "
             text += "in flight" if self.times[k] >= self.t_liftoff - 1e-12 else "on the pole"
         return text + (f"\nwarp x{warp:.3g}" if warp != 1.0 else "")
+
+    def floor_level(self, k: int, warp: float) -> float | None:
+        """Height [m] of a floor plane below the ball in frame ``k`` (None: no floor drawn)."""
+        return None
 
     def auto_warp(self) -> float:
         """Warp factor that makes the vibration visible: the wave, not the flattening.
@@ -315,8 +326,20 @@ class _Renderer:
         self.drawn = self.actor.mapper.dataset  # what the mapper draws (normals added)
         body = pv.Sphere(radius=self.body_radius, theta_resolution=32, phi_resolution=32)
         self.body = self.plotter.add_mesh(body, color="gold", smooth_shading=True)
+        self.floor = None
+        if scene.floor_level(0, warp) is not None:
+            # a disc of floor under the ball, moved to its height in each frame
+            disc = pv.Disc(
+                center=(0.0, 0.0, 0.0),
+                inner=0.0,
+                outer=FLOOR_SIZE * radius,
+                normal=(0.0, 0.0, 1.0),
+                c_res=96,
+            )
+            self.floor = self.plotter.add_mesh(disc, color=FLOOR_COLOUR, lighting=False)
         # short lines: a corner annotation shrinks its font until its longest line fits
-        footer = wrap_footer(scene.label, max(FOOTER_CHARS, round(FOOTER_CHARS * scale)))
+        chars = scene.footer_chars
+        footer = wrap_footer(scene.label, max(chars, round(chars * scale)))
         self.plotter.add_text(footer, position="lower_left", font_size=small, color="black")
         self.clock = self.plotter.add_text(
             "", position="upper_left", font_size=large, color="black"
@@ -330,6 +353,11 @@ class _Renderer:
         reach = min(self.warp * float(self.scene.body.max()), BODY_VIEW * radius)
         top = radius + reach + 2.0 * self.body_radius
         bottom = -radius * (1.0 + 0.2)
+        levels = [self.scene.floor_level(k, self.warp) for k in range(self.scene.times.size)]
+        floors = [z for z in levels if z is not None]
+        if floors:  # frame the floor too (down to FLOOR_VIEW radii), the footer below it
+            lowest = max(min(floors), -FLOOR_VIEW * radius)
+            bottom = min(bottom, lowest) - FLOOR_MARGIN * radius
         centre = 0.5 * (top + bottom)
         height = top - bottom
         distance = 1.25 * max(height, 2.4 * radius) / (2.0 * math.tan(math.radians(15.0)))
@@ -359,6 +387,9 @@ class _Renderer:
         self.drawn.point_data.active_normals_name = "Normals"
         height = scene.radius + self.warp * float(scene.body[k]) + self.body_radius
         self.body.position = (0.0, 0.0, height)
+        if self.floor is not None:
+            level = scene.floor_level(k, self.warp)
+            self.floor.position = (0.0, 0.0, level)
         self.clock.set_text("upper_left", scene.caption(k, self.warp))
         self.plotter.render()
         return np.asarray(self.plotter.screenshot(return_img=True))[..., :3].copy()

@@ -175,3 +175,76 @@ def test_after_the_stop_nothing_touches_again():
     tr = r.trajectory
     rest = MoreauJean(system.problem, 0.01).run(tr.q_final, tr.v_final, 25.0, t0=tr.t[-1])
     assert not rest.impulse.any()
+
+
+# --- the degree-1 artefact of the radial membrane --------------------------------------------
+
+
+def test_the_tops_first_response_is_the_degree_one_artefact():
+    """The known defect of the radial membrane, pinned: a floor force F accelerates the
+    centre by F / m2 and, through the degree-1 content the radial field may not carry, every
+    point's radial displacement by -3 F cos(phi) / m2 at once.  The mean over a cap of
+    half-angle theta at the top then starts at ``-(1 + 3 cos theta) / 2`` times the centre's
+    velocity change (-2 for a point; closed form, independent of the run), where a causal
+    membrane would leave the top at rest until the wave arrives at about pi / c.
+
+    D = 0, the ball alone, N = 128: within 3 % at t = 0.05 and 0.1 (units 1/c; the
+    truncation's ringing before, the gas's breathing after).  The top then sinks below a body
+    falling freely from touching it and comes back to it before pi / c.
+    """
+    ball = legendre_ball(128, PRESSURISED, ModalRatio(0.0))
+    cap = ball.cap_average(THETA)
+    run = run_drop(floor_system(ball, GAMMA), DropSettings(V0, GAMMA, 0.005, math.pi))
+    tr = run.trajectory
+    top, rate = tr.q[:, 0] + 1.0 + tr.q[:, 1:] @ cap, tr.v[:, 0] + tr.v[:, 1:] @ cap
+    body, body_rate = 2.0 - V0 * tr.t - 0.5 * GAMMA * tr.t**2, -V0 - GAMMA * tr.t
+    closed = -(1.0 + 3.0 * math.cos(THETA)) / 2.0
+    assert closed == pytest.approx(-1.964, abs=1e-3)
+    for t in (0.05, 0.1):
+        k = int(np.searchsorted(tr.t, t))
+        ratio = (rate[k] - body_rate[k]) / (tr.v[k, 0] - body_rate[k])
+        assert ratio == pytest.approx(closed, rel=0.03), (t, ratio)
+    depth = body - top  # > 0: the top below the free-falling body
+    deepest = int(np.argmax(depth))
+    assert depth[deepest] * R > 1e-3  # more than a millimetre (2.4 mm)
+    back = deepest + int(np.flatnonzero(depth[deepest:] <= 0.0)[0])
+    assert tr.t[back] < math.pi - 0.5  # back at the body before the wave can be there
+
+
+def test_a_body_released_later_starts_higher_and_slower():
+    """The tower lets the body go tau after the ball (both at rest, touching): at the ball's
+    floor touch after a fall H, the body has fallen for T - tau, T = sqrt(2 H / g)."""
+    from twoball.modal.floor.system import release_delay
+
+    g, height, tau = 9.81, 0.86, 0.003
+    fall = math.sqrt(2.0 * height / g)
+    gap = 0.5 * g * (fall**2 - (fall - tau) ** 2)  # how much less the body has fallen
+    speed = g * (fall - tau)
+    v0 = g * fall
+    scale = R * C  # dimensionless: units R, 1/c, R c
+    start, body_speed = release_delay(tau * C, v0 / scale, g / (R * C**2))
+    assert start * R == pytest.approx(gap, rel=1e-12)
+    assert body_speed * scale == pytest.approx(speed, rel=1e-12)
+    ball = legendre_ball(8, PRESSURISED, MODAL)
+    row = BodyOnTop(0.1, ball.cap_average(THETA), THETA, 0.5, start, speed=body_speed)
+    q, v = floor_system(ball, GAMMA, 0.0, row).falling(v0 / scale)
+    assert q[-1] - q[0] - 1.0 == pytest.approx(start, rel=1e-15)
+    assert v[-1] == -body_speed and v[0] == -v0 / scale
+    with pytest.raises(twoball.ParameterError):
+        release_delay(1e3, 0.1, 0.01)  # the body would be rising
+
+
+def test_a_body_started_touching_records_its_separation_at_the_start():
+    """Delta x = 0: the top drops away at once with no impulse (the degree-1 response), so
+    the events list a body touch and separation at t = 0, not counted as a contact; with a
+    gap the body's first event is its first real touch."""
+    for gap, first in ((0.0, 0.0), (0.01, None)):
+        _, r = _whole(modes=64, gap=gap)
+        body = [e for e in r.body.events if e.contact == "body"]
+        if first is None:
+            assert body[0].kind == "touch" and body[0].t > 1.0
+            continue
+        assert [(e.kind, e.t) for e in body[:2]] == [("touch", 0.0), ("separation", 0.0)]
+        assert body[0].body_velocity == body[0].ball_velocity == -V0
+        assert body[2].kind == "touch" and body[2].t > 1.0
+        assert r.body.contacts == sum(1 for e in body[2:] if e.kind == "touch")

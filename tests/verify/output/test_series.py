@@ -567,3 +567,48 @@ def test_pvd_refuses_a_frames_folder_it_did_not_write(tmp_path):
     (tmp_path / "x_frames-fedcba987654").write_text("a file, not a folder")
     with pytest.raises(twoball.ParameterError):
         write_series(out, small_series())
+
+
+# --------------------------------------------------------------------------- the whole bounce
+@pytest.fixture(scope="module")
+def whole_exports(tmp_path_factory):
+    """One whole bounce (basketball and tennis ball, touching, N = 64) in every format."""
+    folder = tmp_path_factory.mktemp("whole")
+    report = twoball.bounce(drop=twoball.Drop(modes=64), pair="basketball-tennis")
+    mesh = twoball.MeshOptions("sphere", level=1)
+    files = {}
+    for fmt in FORMATS:
+        frames = 1 if fmt == "vtu" else 3
+        files[fmt] = report.export(folder / f"w.{fmt}", frames=frames, mesh=mesh)[0]
+    return report, files
+
+
+@pytest.mark.parametrize("reader", READERS)
+@pytest.mark.parametrize("fmt", FORMATS)
+def test_the_whole_bounces_events_travel_with_every_export(whole_exports, fmt, reader):
+    """Both contacts' events (contact, kind, time, both velocities) read back in meshio,
+    pyvista and VTK as the report gives them: the JSON text ``contact_events`` (UTF-8
+    bytes) and the counts as numbers; the body's start in contact at t = 0 among them."""
+    report, files = whole_exports
+    out = files[fmt]
+    if reader == "meshio" and fmt == "xdmf":  # the metadata: XML and HDF5 beside meshio
+        with h5py.File(out.with_suffix(".h5"), "r") as h5:
+            fields = {name: h5[f"text/{name}"][()] for name in h5["text"]}
+            numbers = {k: v for k, v in h5.attrs.items() if not isinstance(v, str)}
+            fields |= {name: np.array([value]) for name, value in numbers.items()}
+        frames = [{"field_data": fields}]
+    else:
+        frames = read_with(reader, fmt, out)
+    expected = json.loads(json.dumps(report.events))
+    body = [e for e in expected if e["contact"] == "body"]
+    assert body[0]["kind"] == "touch" and body[0]["t_s"] == 0.0  # started touching
+    assert body[1]["kind"] == "separation" and body[1]["t_s"] == 0.0  # the top dropped away
+    for frame in frames:
+        fields = frame["field_data"]
+        events = json.loads(text_value(fields["contact_events"]))
+        assert events == expected
+        assert {e["contact"] for e in events} == {"floor", "body"}
+        assert float(np.ravel(fields["events"])[0]) == len(expected)
+        touches = sum(1 for e in expected if e["contact"] == "body" and e["kind"] == "touch")
+        assert float(np.ravel(fields["body_contacts"])[0]) == touches
+        assert float(np.ravel(fields["v1_ratio"])[0]) == report.v1_ratio

@@ -55,6 +55,22 @@ def test_table1_every_row_beside_every_model(ctx):
         }
         assert 0.5 < r["whole"][0] < 3.0 and 0.3 < r["whole"][1] < 1.0
     assert len(sec.comparisons) == 12 and "ICM v1/|u0|" in sec.tables[0]
+    for column in ("v1: TSD / Bartz / Hertz", "v2: TSD / Bartz / Hertz", "v2 at the floor release"):
+        assert column in sec.tables[0], column
+    assert "e2 in the run" not in sec.tables[0]
+    for r in rows:  # the baselines' v2 beside their v1
+        for name in ("two-spring-dashpot", "bartz2020", "hertz-viscoelastic"):
+            assert 0.3 < r["baselines"][name][1] < 1.0, (r["pair"], name)
+        assert r["whole_v2_floor_release"] == pytest.approx(r["whole"][1], rel=1e-12)
+    assert [f for f, _ in sec.figures] == ["whole_table1.png"]
+    assert ctx.path("whole_table1.png").stat().st_size > 1000
+
+
+def test_the_preamble_names_the_model_of_the_parts_that_ran():
+    whole = driver.models_line(["whole_table1", "whole_gap"])
+    assert "N = 192" in whole and "Moreau-Jean" in whole and "Lanczos" not in whole
+    cem = driver.models_line(["fig6"])
+    assert "Lanczos filter, N = 30" in cem and "N = 192" not in cem
 
 
 def test_gap_curves_and_timing(ctx):
@@ -66,6 +82,22 @@ def test_gap_curves_and_timing(ctx):
         assert far["e12_effective"] is not None
     timing = part.part_whole_timing(ctx)
     assert ctx.path(timing.figures[0][0]).stat().st_size > 1000
+    # eq. (2.2) with each pair's own e2 (Table 1: 0.80 and 0.90), the measured window only
+    # over the small gaps
+    figure = part.timing_figure(part._curves(ctx))
+    wide = figure.axes[0]
+    icm = {ln.get_label(): ln for ln in wide.get_lines() if ln.get_label().startswith("ICM")}
+    assert sorted(icm) == [
+        "ICM, eq. (2.2), $e_2$ = 0.8 (tennis)",
+        "ICM, eq. (2.2), $e_2$ = 0.9 (tissue, table-tennis)",
+    ]
+    for e2, line in zip((0.8, 0.9), sorted(icm.items()), strict=True):
+        gap, t_ms = line[1].get_xdata()[-1] * 1e-3, line[1].get_ydata()[-1] * 1e-3
+        # eq. (2.2) with gravity as the ICM baseline has it: above gap / ((1 + e2) |v0|)
+        assert t_ms == pytest.approx(gap / ((1.0 + e2) * 4.1), rel=0.05)
+    (band,) = wide.collections
+    xs = band.get_paths()[0].vertices[:, 0]
+    assert xs.min() == 0.0 and xs.max() == pytest.approx(part.MEASURED_TL_GAP * 1e3)
     near = timing.data["basketball-tissue"][0]
     assert near["t_l_s"] > 0 and near["body_left_first"] is True
 

@@ -21,7 +21,14 @@ from twoball.modal.floor.drop import DropResult
 from twoball.modal.floor.references import MEASURED_COMPRESSION, pressure_area
 from twoball.modal.parameters import Case
 from twoball.verify.output.figures import new_figure
-from twoball.verify.output.figures.style import REFERENCE_COLOUR, label, styled, time_label
+from twoball.verify.output.figures.style import (
+    COLOURS,
+    DIMENSIONLESS,
+    REFERENCE_COLOUR,
+    label,
+    styled,
+    time_label,
+)
 
 from twoball._common.errors import ParameterError
 
@@ -44,7 +51,7 @@ def drop_figure(r: DropResult, case: Case, mass: float, title: str = "") -> Figu
     force_unit = mass * case.radius * case.wave_speed**2  # m2 R c^2 [N]
     energy_unit = mass * case.scalings.velocity**2
     tr, system = r.trajectory, r.system
-    fig = new_figure(6.8, 8.0)
+    fig = new_figure(8.0, 8.0)
     axes = fig.subplots(4, 1, sharex=True)
     mid, force = r.force
     axes[0].plot(mid * to_ms, force * force_unit, label="floor force")
@@ -80,13 +87,10 @@ def drop_figure(r: DropResult, case: Case, mass: float, title: str = "") -> Figu
     axes[3].plot(t_ms, gravity * energy_unit, color="k", lw=0.8, label="gravity $m_2 g (Z - R)$")
     axes[3].set_ylabel(label("$E$", "J"))
     axes[3].set_xlabel(time_label("after the first touch"))
-    # the stacks fill the panel up to the initial energy: the legend sits above them
-    top = float(np.max(sum(s for s, _ in stacks))) * energy_unit
-    axes[3].set_ylim(top=1.55 * top)
-    axes[3].legend(loc="upper center", ncols=3, fontsize="small")
-    e2 = "-" if r.e2 is None else f"{r.e2:.4f}"
+    axes[3].legend(loc="upper left", bbox_to_anchor=(1.01, 1.0))  # beside the stack
+    e2 = "–" if r.e2 is None else f"{r.e2:.4f}"
     fig.suptitle(
-        f"Drop on the floor{': ' + title if title else ''}: |v0| = {case.v0:g} m/s, e2 = {e2}"
+        f"Drop on the floor{': ' + title if title else ''}\n$|v_0|$ = {case.v0:g} m/s, $e_2$ = {e2}"
     )
     return fig
 
@@ -145,7 +149,7 @@ def speeds_figure(rows: Sequence[tuple[float, float, float]], case: Case) -> Fig
     axes[0].legend()
     axes[1].plot(v0, flat, "o-", label="the drop: largest flattening")
     axes[1].plot(
-        grid, grid / case.wave_speed * 1e3, color=REFERENCE_COLOUR, ls=":", label="|v0| / c"
+        grid, grid / case.wave_speed * 1e3, color=REFERENCE_COLOUR, ls=":", label="$|v_0|/c$"
     )
     axes[1].plot(
         grid,
@@ -171,14 +175,16 @@ def whole_figure(
     title: str = "",
     icm: tuple[float, float] | None = None,
 ) -> Figure:
-    """Four panels against time [ms] for the whole bounce (``r.body`` set).
+    """Five panels against time [ms] for the whole bounce (``r.body`` set).
 
     Heights above the floor of the ball's lowest point, centre and top (the
-    cap's mean) and of the body's lowest point; the floor's and the body's
-    contact forces; the centre's and the body's velocities (with ``icm`` =
-    (v1, v2) [m/s] of eq. (2.5) as dashed lines); the energy books, the body's
-    kinetic energy among them.  Touches and separations of both contacts are
-    marked: floor (grey) and body (orange).
+    cap's mean) and of the body's lowest point; the gap between the body and
+    the top (eq. (B2): the degree-1 precursor opens it at once when they start
+    touching); the floor's and the body's contact forces; the centre's and the
+    body's velocities (with ``icm`` = (v1, v2) [m/s] of eq. (2.5) as dashed
+    lines); the energy books, the body's kinetic energy among them.  Touches
+    and separations of both contacts are marked: floor (grey) and body
+    (orange).  Legends stand beside the panels.
     """
     system = r.system
     if system.body is None or r.body is None:
@@ -190,8 +196,9 @@ def whole_figure(
     energy_unit = mass * speed**2
     tr = r.trajectory
     t_ms = tr.t * to_ms
-    fig = new_figure(6.8, 9.0)
-    axes = fig.subplots(4, 1, sharex=True)
+    fig = new_figure(8.2, 10.4)
+    axes = fig.subplots(5, 1, sharex=True, height_ratios=(1.2, 0.8, 1.0, 1.0, 1.2))
+    beside = {"loc": "upper left", "bbox_to_anchor": (1.01, 1.0)}
     cap = system.body.cap
     z = tr.q[:, system.centre]
     a = tr.q[:, system.membrane]
@@ -204,20 +211,24 @@ def whole_figure(
     axes[0].plot(t_ms, lowest * R * 1e3, color="C2", lw=0.8, label="ball's lowest point")
     axes[0].axhline(0.0, color=REFERENCE_COLOUR, lw=0.8)
     axes[0].set_ylabel(label("height", "mm"))
-    axes[0].legend(loc="upper left", fontsize=7)
+    axes[0].legend(**beside)
+    axes[1].plot(t_ms, system.body_gap(tr.q) * R * 1e3, color="C1", label="body above the top")
+    axes[1].axhline(0.0, color=REFERENCE_COLOUR, lw=0.8)
+    axes[1].set_ylabel(label("gap", "mm"))
+    axes[1].legend(**beside)
     mid, floor_force = r.force
     _, body_force = r.body_force
-    axes[1].plot(mid * to_ms, floor_force * force_unit, color="C2", label="floor on the ball")
-    axes[1].plot(mid * to_ms, body_force * force_unit, color="C1", label="ball on the body")
-    axes[1].set_ylabel(label("$F$", "N"))
-    axes[1].legend(loc="upper right")
-    axes[2].plot(t_ms, tr.v[:, system.centre] * speed, color="C0", label="ball's centre $Z'$")
-    axes[2].plot(t_ms, tr.v[:, system.body_coordinate] * speed, color="C1", label="body $s'$")
+    axes[2].plot(mid * to_ms, floor_force * force_unit, color="C2", label="floor on the ball")
+    axes[2].plot(mid * to_ms, body_force * force_unit, color="C1", label="ball on the body")
+    axes[2].set_ylabel(label("$F$", "N"))
+    axes[2].legend(**beside)
+    axes[3].plot(t_ms, tr.v[:, system.centre] * speed, color="C0", label="ball's centre $Z'$")
+    axes[3].plot(t_ms, tr.v[:, system.body_coordinate] * speed, color="C1", label="body $s'$")
     if icm is not None:
-        axes[2].axhline(icm[0], color="C1", ls="--", lw=0.8, label="ICM (2.5): $v_1$")
-        axes[2].axhline(icm[1], color="C0", ls="--", lw=0.8, label="ICM (2.5): $v_2$")
-    axes[2].set_ylabel(label("velocity", "m/s"))
-    axes[2].legend(loc="lower right", fontsize=7)
+        axes[3].axhline(icm[0], color="C1", ls="--", lw=0.8, label="ICM (2.5): $v_1$")
+        axes[3].axhline(icm[1], color="C0", ls="--", lw=0.8, label="ICM (2.5): $v_2$")
+    axes[3].set_ylabel(label("velocity", "m/s"))
+    axes[3].legend(**beside)
     parts = system.energies(tr.q, tr.v)
     membrane = parts["membrane_kinetic"] + parts["membrane_elastic"] + parts["gas"]
     stacks = [
@@ -227,37 +238,47 @@ def whole_figure(
         (-tr.damping_work, "damped"),
         (-tr.impact_work - tr.contact_work, "lost at impacts"),
     ]
-    axes[3].stackplot(
+    axes[4].stackplot(
         t_ms, *[x * energy_unit for x, _ in stacks], labels=[n for _, n in stacks], alpha=0.8
     )
     gravity = parts["gravity"] + parts["body_gravity"]
     gravity = gravity - gravity[0]
-    axes[3].plot(t_ms, gravity * energy_unit, color="k", lw=0.8, label="gravity gained")
-    axes[3].set_ylabel(label("$E$", "J"))
-    axes[3].set_xlabel(time_label("after the first floor touch"))
-    axes[3].legend(loc="center right", fontsize=7)
+    axes[4].plot(t_ms, gravity * energy_unit, color="k", lw=0.8, label="gravity gained")
+    axes[4].set_ylabel(label("$E$", "J"))
+    axes[4].set_xlabel(time_label("after the first floor touch"))
+    axes[4].legend(**beside)
     for event in r.body.events:
         colour = REFERENCE_COLOUR if event.contact == "floor" else "C1"
         style = "-" if event.kind == "touch" else ":"
         for ax in axes:
-            ax.axvline(event.t * to_ms, color=colour, lw=0.5, ls=style, alpha=0.6)
+            ax.axvline(event.t * to_ms, color=colour, lw=0.4, ls=style, alpha=0.5)
     b = r.body
-    v1 = "-" if b.v1 is None else f"{b.v1 / r.settings.v0:.3f}"
-    v2 = "-" if b.v2 is None else f"{b.v2 / r.settings.v0:.3f}"
+    v1 = "–" if b.v1 is None else f"{b.v1 / r.settings.v0:.3f}"
+    v2 = "–" if b.v2 is None else f"{b.v2 / r.settings.v0:.3f}"
     fig.suptitle(
-        f"Whole bounce{': ' + title if title else ''}: |v0| = {case.v0:g} m/s, "
-        f"v1/|v0| = {v1}, v2/|v0| = {v2}"
+        f"Whole bounce{': ' + title if title else ''}\n$|v_0|$ = {case.v0:g} m/s, "
+        f"$v_1/|v_0|$ = {v1}, $v_2/|v_0|$ = {v2}"
     )
     return fig
 
 
-#: Line styles of the lumped baselines in :func:`gap_figure`.
+#: Colour, line style, marker and name of each lumped baseline in :func:`gap_figure`:
+#: distinct in colour, dash and marker (also in greyscale print).
 BASELINE_STYLES = {
-    "icm": ("k", "-", "ICM (2.5)"),
-    "two-spring-dashpot": ("C4", ":", "two spring-dashpots"),
-    "bartz2020": ("C5", ":", "Bartz 2020"),
-    "hertz-viscoelastic": ("C6", ":", "Hertz, viscoelastic"),
+    "icm": ("k", "-", None, "ICM (2.5)"),
+    "two-spring-dashpot": (COLOURS[3], "--", "v", "two spring-dashpots"),
+    "bartz2020": (COLOURS[4], "-.", "^", "Bartz 2020"),
+    "hertz-viscoelastic": (COLOURS[5], ":", "D", "Hertz, viscoelastic"),
 }
+#: Colours of the whole bounce's v1 and v2, the paper's CEM and the measurements.
+WHOLE_V1, WHOLE_V2, CEM_COLOUR = COLOURS[1], COLOURS[0], COLOURS[2]
+MEASURED_COLOUR = "#882255"
+
+
+def _baseline(reports: Sequence[object], name: str, key: str) -> np.ndarray:
+    """One baseline's value ``key`` in every report (nan where it has none)."""
+    rows = [((r.baselines or {}).get("models", {}).get(name) or {}) for r in reports]
+    return np.array([row.get(key, np.nan) for row in rows], dtype=float)
 
 
 @styled
@@ -271,49 +292,52 @@ def gap_figure(
     """v1/|v0|, v2/|v0| and the lift-off times against the gap Delta x [mm] or mu.
 
     ``points`` are (value, report) of the whole bounce (:class:`twoball.BounceReport`
-    with a body, light or not); each report's lumped baselines are drawn as
-    lines (the ICM (2.5) solid black), :attr:`~twoball.BounceReport.icm_solver`
-    (the ICM with the run's own e2 and e12_effective) as open circles where the
-    collisions do not overlap, and ``measured`` (``{"v1": .., "v2": .., "dx": ..}``,
-    Table 1's ratios) as squares.  Lower panel: the body's lift-off after the
-    floor touch and after the largest compression (Fig. 9's t_l), the ball's
-    floor release and the ICM's eq. (2.2).
+    with a body, light or not).  Upper two panels, v1 and v2: the whole bounce,
+    each report's lumped baselines (the ICM (2.5) solid black, the others
+    dashed, dash-dotted and dotted with their own markers),
+    :attr:`~twoball.BounceReport.icm_solver` (the ICM with the run's own e2 and
+    e12_effective) as open circles where the collisions do not overlap,
+    ``cem`` (the paper's massless CEM, v1 only) and ``measured``
+    (``{"v1": .., "v2": .., "dx": ..}``, Table 1's ratios) as markers.  Lower
+    panel: the body's lift-off after the floor touch and after the largest
+    compression (Fig. 9's t_l), the ball's floor release and the ICM's eq.
+    (2.2).  The legends stand beside the panels, clear of the data.
     """
     if not points:
         raise ValueError("no whole bounces to draw")
     scale = 1e3 if parameter == "gap" else 1.0
     x = np.array([v for v, _ in points]) * scale
     reports = [r for _, r in points]
-    fig = new_figure(6.8, 7.2)
-    axes = fig.subplots(2, 1, sharex=True)
-    v1 = np.array([np.nan if r.v1_ratio is None else r.v1_ratio for r in reports])
-    v2 = np.array([np.nan if r.v2_ratio is None else r.v2_ratio for r in reports])
-    axes[0].plot(x, v1, "o-", color="C1", ms=3, label="whole bounce: $v_1/|v_0|$")
-    axes[0].plot(x, v2, "s-", color="C0", ms=3, label="whole bounce: $v_2/|v_0|$")
-    for name, (colour, style, text) in BASELINE_STYLES.items():
-        rows = [((r.baselines or {}).get("models", {}).get(name) or {}) for r in reports]
-        b1 = np.array([row.get("v1_ratio", np.nan) for row in rows], dtype=float)
-        b2 = np.array([row.get("v2_ratio", np.nan) for row in rows], dtype=float)
-        if np.all(np.isnan(b1)):
-            continue
-        axes[0].plot(x, b1, color=colour, ls=style, lw=1.0, label=text)
-        axes[0].plot(x, b2, color=colour, ls=style, lw=1.0)
+    fig = new_figure(8.4, 8.6)
+    axes = fig.subplots(3, 1, sharex=True)
+    beside = {"loc": "upper left", "bbox_to_anchor": (1.01, 1.0)}
     icm = [r.icm_solver for r in reports]
-    if any(i is not None for i in icm):
-        s1 = np.array([np.nan if i is None else i["v1_ratio"] for i in icm])
-        s2 = np.array([np.nan if i is None else i["v2_ratio"] for i in icm])
-        axes[0].plot(
-            x, s1, "o", mfc="none", color="k", ms=5, label="ICM, e2 and $e_{12,eff}$ of the run"
-        )
-        axes[0].plot(x, s2, "o", mfc="none", color="k", ms=5)
-    if cem is not None:
-        axes[0].plot([0.0], [cem], "D", color="C2", ms=7, label="CEM (massless), the paper")
-    if measured:
-        at = measured.get("dx", 0.0) * scale
-        axes[0].plot([at], [measured["v1"]], "s", color="C3", ms=8, label="measured (Table 1)")
-        axes[0].plot([at], [measured["v2"]], "s", color="C3", ms=8)
-    axes[0].set_ylabel("$v/|v_0|$")
-    axes[0].legend(fontsize=7, loc="best")
+    for k, (key, ax, colour, marker) in enumerate(
+        (("v1_ratio", axes[0], WHOLE_V1, "o"), ("v2_ratio", axes[1], WHOLE_V2, "s"))
+    ):
+        which = f"$v_{k + 1}/|v_0|$"
+        whole = [getattr(r, key) for r in reports]
+        whole = np.array([np.nan if v is None else v for v in whole], dtype=float)
+        ax.plot(x, whole, color=colour, ls="-", marker=marker, ms=4, label="whole bounce")
+        for name, (c, style, mark, text) in BASELINE_STYLES.items():
+            values = _baseline(reports, name, key)
+            if np.all(np.isnan(values)):
+                continue
+            ax.plot(x, values, color=c, ls=style, lw=1.0, marker=mark, ms=3.5, mfc="none",
+                    label=text)  # fmt: skip
+        if any(i is not None for i in icm):
+            solver = np.array([np.nan if i is None else i[key] for i in icm])
+            ax.plot(x, solver, "o", mfc="none", color="k", ms=7, ls="none",
+                    label="ICM, $e_2$ and $e_{12,eff}$ of the run")  # fmt: skip
+        if cem is not None and k == 0:
+            ax.plot([0.0], [cem], "D", color=CEM_COLOUR, ms=7, ls="none",
+                    label="CEM (massless), the paper")  # fmt: skip
+        if measured:
+            at = measured.get("dx", 0.0) * scale
+            ax.plot([at], [measured[f"v{k + 1}"]], "s", color=MEASURED_COLOUR, ms=8, ls="none",
+                    label="measured (Table 1)")  # fmt: skip
+        ax.set_ylabel(which + " " + DIMENSIONLESS)
+        ax.legend(**beside)
     to_ms = 1e3
     t_lift = np.array([np.nan if r.t_liftoff_s is None else r.t_liftoff_s for r in reports])
     t_l = np.array(
@@ -332,27 +356,19 @@ def gap_figure(
             for r in reports
         ]
     )
-    axes[1].plot(x, t_lift * to_ms, "o-", color="C1", ms=3, label="lift-off after the floor touch")
-    axes[1].plot(
+    axes[2].plot(x, t_lift * to_ms, "o-", color="C1", ms=3, label="lift-off after the floor touch")
+    axes[2].plot(
         x, t_l * to_ms, "^-", color="C2", ms=3, label="$t_l$: after the largest compression"
     )
-    axes[1].plot(x, floor * to_ms, "--", color="C0", label="the ball leaves the floor")
-    icm_t = [
-        ((r.baselines or {}).get("models", {}).get("icm") or {}).get("t_liftoff_s") for r in reports
-    ]
-    if any(t is not None for t in icm_t):
-        axes[1].plot(
-            x,
-            np.array([np.nan if t is None else t for t in icm_t]) * to_ms,
-            "k-",
-            lw=1.0,
-            label="ICM, eq. (2.2)",
-        )
-    axes[1].set_ylabel(label("time", "ms"))
-    axes[1].set_xlabel(
-        label(r"gap $\Delta x$", "mm") if parameter == "gap" else r"mass ratio $\mu$"
+    axes[2].plot(x, floor * to_ms, "--", color="C0", label="the ball leaves the floor")
+    icm_t = _baseline(reports, "icm", "t_liftoff_s")
+    if not np.all(np.isnan(icm_t)):
+        axes[2].plot(x, icm_t * to_ms, "k-", lw=1.0, label="ICM, eq. (2.2)")
+    axes[2].set_ylabel(label("time", "ms"))
+    axes[2].set_xlabel(
+        label(r"gap $\Delta x$", "mm") if parameter == "gap" else r"mass ratio $\mu$ [–]"
     )
-    axes[1].legend(fontsize=7, loc="best")
+    axes[2].legend(**beside)
     case = reports[0].case
-    fig.suptitle(f"Whole bounce{': ' + title if title else ''} (|v0| = {case.v0:g} m/s)")
+    fig.suptitle(f"Whole bounce{': ' + title if title else ''} ($|v_0|$ = {case.v0:g} m/s)")
     return fig

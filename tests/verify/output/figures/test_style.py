@@ -135,6 +135,36 @@ def every_figure(case, coarse, monkeypatch):
     paper = run_sweep(d_cases, SweepSolver("lanczos", "paper"))
     yield "reproduce fig11b", fig11.fig11b_figure(window, paper, liftoff(case))
     yield "reproduce fig12", fig12.fig12_figure(*_fig12_inputs(monkeypatch))
+    yield from _whole_bounce_figures()
+
+
+def _whole_bounce_figures():
+    """The drop's and the whole bounce's figures (coarse runs: N = 16)."""
+    from twoball.verify.output.figures.bounce import drop_figure, gap_figure, whole_figure
+    from twoball.verify.reproduce import whole as whole_part
+
+    drop = twoball.bounce(drop=twoball.Drop(modes=16))
+    yield "plot bounce", drop_figure(drop.result, drop.case, drop.mass_kg, "legendre")
+    whole = twoball.bounce(drop=twoball.Drop(modes=16), pair="basketball-tennis")
+    icm = (1.0, 2.0)
+    yield "plot whole bounce", whole_figure(whole.result, whole.case, whole.mass_kg, "x", icm)
+    curves = {}
+    for name in whole_part.GAP_PAIRS:
+        runs = [(g, twoball.bounce(drop=twoball.Drop(gap=g, modes=16), pair=name).light())
+                for g in (0.0, 0.005, 0.02, 0.2)]  # fmt: skip
+        curves[name] = runs
+    measured = {"v1": 1.8, "v2": 0.61, "dx": 0.0}
+    yield "sweep gap", gap_figure(curves["basketball-tennis"], "gap", measured, "x", 0.9)
+    yield "reproduce whole timing", whole_part.timing_figure(curves)
+    rows = []
+    for name, runs in curves.items():
+        report = runs[0][1]
+        base = {k: [m.get("v1_ratio"), m.get("v2_ratio")]
+                for k, m in report.baselines["models"].items()}  # fmt: skip
+        rows.append({"pair": name, "measured": [1.8, 0.61], "icm_printed": [2.1, 0.56],
+                     "icm_2_6": [2.09, 0.49], "baselines": base, "cem_massless_v1": 0.935,
+                     "whole": [report.v1_ratio, report.v2_ratio]})  # fmt: skip
+    yield "reproduce whole table 1", whole_part.table1_figure(rows)
 
 
 def axis_labels(axis) -> list[str]:
@@ -176,7 +206,7 @@ def test_every_figure_labels_units_and_counts_curves(case, coarse, monkeypatch):
         for text in texts:
             box = text.get_window_extent(renderer)
             assert box.x0 >= -1 and box.x1 <= width + 1, f"{name}: {text.get_text()!r} cut off"
-    assert len(seen) == 18
+    assert len(seen) == 23
 
 
 def test_crowded_data_becomes_small_multiples(case, coarse):
