@@ -215,7 +215,7 @@ def report_liftoff(
         extra["truncation"] = block.as_dict()
     else:
         notes += window_warnings(case, result)
-    notes += case_warnings(case) + span_warnings(case, result)
+    notes += case_warnings(case) + span_warnings(case, result, t_end_s is not None)
     return LiftoffReport(case, result, backend, sigma, recontact, extra, tuple(notes))
 
 

@@ -130,7 +130,8 @@ def drop_case(args: argparse.Namespace) -> twoball.Case:
         raise ParameterError("drop_height", "given alone, not with --v0", args.drop_height)
     for name, default in (("sigma", "lanczos"), ("recontact", "window")):
         if getattr(args, name, default) != default:
-            raise ParameterError(name, "left out for the drop (no lift-off criteria)", args.sigma)
+            valid = "left out for the drop (no lift-off criteria)"
+            raise ParameterError(name, valid, getattr(args, name))
     case_args = copy(args)
     case_args.gas = None
     case_args.modes = None
@@ -303,6 +304,10 @@ def run(args: argparse.Namespace) -> int:
 
     plot = None if args.plot is None else check_figure_path(args.plot, "plot")
     export, render, frames = _field_targets(args)
+    from twoball._common.staging import check_distinct
+
+    outputs = {"plot": args.plot, "export": args.export, "render": args.render}  # one path each
+    check_distinct(outputs, labels={name: f"--{name}" for name in outputs})
     report = bounce_from_options(args)
     if plot is not None:
         report.plot(plot)
