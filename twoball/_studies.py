@@ -171,6 +171,7 @@ def converge(
     from twoball.modal.guards import case_warnings
 
     result.warnings = case_warnings(case)
+    result.notes[:0] = [n for n in case.notes if n not in result.notes]  # how the case was read
     arguments = {"study": study, "mesh": mesh, "order": order, "levels": levels}
     arguments |= {"modes_list": modes_list, "sigma": sigma, "recontact": recontact}
     result.provenance = block(case, "twoball.converge", {**arguments, "t_end": t_end, "out": out})
@@ -250,6 +251,7 @@ def verify(
     from twoball.modal.guards import case_warnings
 
     result.warnings = case_warnings(case)
+    result.notes[:0] = [n for n in case.notes if n not in result.notes]  # how the case was read
     from twoball._common.provenance import block
 
     arguments = {"thorough": thorough, "fast": fast, "sigma": sigma, "recontact": recontact}
