@@ -327,7 +327,7 @@ def check_field_targets(
         except ParameterError as error:  # named after the API's "out"
             raise ParameterError("export", error.valid, os.fspath(export)) from None
         target = check_file(export, "export")
-        check_side_entries(target, fmt)
+        check_side_entries(target, fmt, "export")
         if fmt == "vtu":
             if frames not in (None, 1):
                 raise ParameterError("frames", "1 for a single .vtu file", frames)

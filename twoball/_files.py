@@ -53,6 +53,13 @@ def _field_bundles(verb: str, mesh: Any, stepping: Any, body: Any, old: dict[str
     return given, times
 
 
+def _not_the_mesh(out: str | os.PathLike[str], given: Any, name: str = "out") -> None:
+    """Refuse an output onto the user's mesh file (it would replace the input)."""
+    from twoball._common.staging import check_distinct
+
+    check_distinct({name: out}, {"the input mesh file": getattr(given.mesh, "file", None)})
+
+
 def _window(given: Any) -> tuple[float | None, str]:
     stepping = given.stepping
     if stepping is None:
@@ -176,6 +183,7 @@ def export(
     fmt = series_format(out, format)
     target = check_file(out)
     check_side_entries(target, fmt)
+    _not_the_mesh(out, given)
     check_backend(backend)
     t_end, route = _window(given)
     solved = BACKENDS if backend == "fem" else (backend,)  # the closed form needs no FE solve
@@ -336,6 +344,7 @@ def render(
     case = _case(case)
     kind = image_kind(out)
     target = check_file(out)
+    _not_the_mesh(out, given)
     size = DEFAULT_SIZE if view.size is None else view.size
     check_backend(backend)
     if kind == ".png" and view.fps is not None:
@@ -499,6 +508,7 @@ def plot(
         raise ParameterError("kind", "one of " + ", ".join(PLOT_KINDS), kind)
     figure_format(out, "out")
     target = check_file(out)
+    _not_the_mesh(out, given)
     t_end, route = _window(given)
     if given.body is not None and kind != "pole":
         raise ParameterError(
