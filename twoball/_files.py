@@ -67,20 +67,29 @@ def _window(given: Any) -> tuple[float | None, str]:
     return stepping.t_end, stepping.route or "auto"
 
 
-def _frames(frames: Any, legacy_times: Any) -> tuple[int | None, Sequence[float] | None]:
-    """``frames`` as a count or as times [s] (the old ``times`` keyword folded in)."""
+def _frames(frames: Any, legacy_times: Any) -> tuple[int | None, Sequence[float] | None, str]:
+    """``frames`` as a count or as times [s] (the old ``times`` keyword folded in).
+
+    Returns the count, the times and the name the user gave them by (``frames``,
+    or ``times`` for the old keyword), for the errors.
+    """
+    name = "frames"
     if legacy_times is not None:
-        warn_deprecated("the keyword times is deprecated; pass the frame times as frames=[...]")
         if frames is not None:
             raise ParameterError("frames", "left out when times are given", frames)
-        frames = legacy_times
+        if isinstance(legacy_times, (str, bytes)) or not (
+            isinstance(legacy_times, Sequence) or hasattr(legacy_times, "__array__")
+        ):  # refused before the deprecation is said
+            raise ParameterError("times", "a list of times [s]", legacy_times)
+        warn_deprecated("the keyword times is deprecated; pass the frame times as frames=[...]")
+        frames, name = legacy_times, "times"
     if frames is None:
-        return None, None
+        return None, None, name
     if isinstance(frames, (str, bytes)):
-        raise ParameterError("frames", "a frame count or a list of times [s]", frames)
+        raise ParameterError(name, "a frame count or a list of times [s]", frames)
     if isinstance(frames, Sequence) or hasattr(frames, "__array__"):
-        return None, frames
-    return frames, None
+        return None, frames, name
+    return frames, None, name
 
 
 @timed
@@ -190,14 +199,14 @@ def export(
     if "fem" not in solved and route != "auto":
         raise ParameterError("route", "left out with backend legendre (no finite elements)", route)
     field = field_mesh(given.mesh, cells=True, load=False)
-    frames, times = _frames(frames, legacy_times)
+    frames, times, name = _frames(frames, legacy_times)
     if times is not None:
-        times = check_times(window_s(case, t_end), times, "frames")
+        times = check_times(window_s(case, t_end), times, name)
     frames = None if frames is None else check_frames(frames)
     if fmt == "vtu" and frames is not None and frames != 1:
         raise ParameterError("frames", "1 for a single .vtu file (or give one time)", frames)
     if fmt == "vtu" and times is not None and len(times) != 1:
-        raise ParameterError("frames", "exactly one time for a single .vtu file", list(times))
+        raise ParameterError(name, "exactly one time for a single .vtu file", list(times))
     field = field_mesh(given.mesh, cells=True)  # reads a file
     if times is not None:
         check_frame_budget(case, len(times), "times", field)
@@ -351,23 +360,25 @@ def render(
         raise ParameterError("fps", "used with .gif or .mp4 only", view.fps)
     fps = DEFAULT_FPS if view.fps is None else view.fps
     t_end, route = _window(given)
+    if backend != "fem" and route != "auto":
+        raise ParameterError("route", "left out with backend legendre (no finite elements)", route)
     if given.mesh is not None and given.mesh.initial is not None and backend != "fem":
         raise ParameterError(
             "initial",
             "left out without the fem backend (it sets the FE initial state)",
             given.mesh.initial,
         )
-    count, times = _frames(frames, legacy_times)
+    count, times, name = _frames(frames, legacy_times)
     if kind == ".png" and count is not None:
         raise ParameterError(
             "frames", "one time [s] in a list with .png (a count: .gif or .mp4)", count
         )
     if kind == ".png" and times is not None and len(times) != 1:
-        raise ParameterError("frames", "exactly one time [s] with .png", list(times))
+        raise ParameterError(name, "exactly one time [s] with .png", list(times))
     count = None if count is None else check_frames(count)
     field = field_mesh(given.mesh, cells=True, load=False)
     if times is not None:
-        times = check_times(window_s(case, t_end), times, "frames")
+        times = check_times(window_s(case, t_end), times, name)
     field = field_mesh(given.mesh, cells=True)  # reads a file
     if kind != ".png":
         number = len(times) if times is not None else count or DEFAULT_ANIMATION_FRAMES
@@ -414,7 +425,7 @@ def plot(
     out: str | os.PathLike[str],
     case: Case | None = None,
     *,
-    backends: Sequence[str] | None = None,
+    backends: str | Sequence[str] | None = None,
     mesh: Any = None,
     stepping: Any = None,
     body: Any = None,
@@ -438,8 +449,9 @@ def plot(
         writes (``.pdf``, ``.svg``, ``.eps``, ``.png``, ...).
     case : Case, optional
         The impact (default the basketball preset); refused by ``eigen``.
-    backends : sequence of {"fem", "legendre"}, optional
-        Solvers drawn by ``waterfall`` and ``pole`` (default both).
+    backends : {"fem", "legendre"} or a sequence of them, optional
+        Solvers drawn by ``waterfall`` and ``pole`` (default both); one name is
+        one backend.
     mesh, stepping : optional
         As in :func:`export` (``waterfall`` and ``pole`` only; a mesh file too).
     body : Body, optional
@@ -560,7 +572,7 @@ def plot(
         refused |= {"recontact": recontact, "instants": figure.instants}
         for name, value in refused.items():
             if value is not None:
-                shown = type(value).__name__ if name == "case" else value
+                shown = None if name == "case" else value  # a Case is not a value to show
                 shown = shown.label if hasattr(shown, "label") else shown
                 raise ParameterError(name, "left out with kind eigen (use levels, orders)", shown)
         levels, orders = eigen_sizes(figure.levels, figure.orders, figure.max_degree)
@@ -593,9 +605,18 @@ def plot(
         recontact = "window" if recontact is None else recontact
         backends = BACKENDS if backends is None else backends
         instants = WATERFALL_INSTANTS if figure.instants is None else figure.instants
-        chosen = tuple(dict.fromkeys(backends))
-        if not chosen or any(b not in BACKENDS for b in chosen):
-            raise ParameterError("backends", "a list of fem, legendre", list(backends))
+        valid = "fem, legendre, or a list of them"
+        if isinstance(backends, str):  # one name (or "fem,legendre", as on the command line)
+            chosen = tuple(dict.fromkeys(b.strip() for b in backends.split(",")))
+        else:
+            try:
+                chosen = tuple(dict.fromkeys(backends))
+            except TypeError:  # not iterable, or unhashable items
+                raise ParameterError("backends", valid, backends) from None
+        if not chosen or any(not isinstance(b, str) or b not in BACKENDS for b in chosen):
+            raise ParameterError("backends", valid, backends)
+        if "fem" not in chosen and route != "auto":
+            raise ParameterError("route", "left out without the fem backend", route)
         field = field_mesh(given.mesh)  # reads a file
         if given.body is not None:
             check_field_body(case, given.body, field, recontact=recontact, route=route)

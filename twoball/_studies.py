@@ -233,6 +233,9 @@ def verify(
     if not isinstance(case, Case):
         raise ParameterError("case", "a twoball.Case", type(case).__name__)
     _paper_model(case, "verify")
+    for name, value in (("thorough", thorough), ("fast", fast)):
+        if not isinstance(value, bool):  # "yes", 1, None: never read as a truth value
+            raise ParameterError(name, "True or False", value)
     if thorough and fast:
         raise ParameterError("fast", "left out with thorough", fast)
     from twoball.verify.studies.fem_runs import EIGEN_DEGREES
@@ -319,7 +322,9 @@ def _study_options(
 
     unknown = set(deprecated) - {"order", "geometry", "t_end"}
     if unknown:
-        raise TypeError(f"twoball.converge() got an unexpected keyword argument {unknown.pop()!r}")
+        from twoball._common.errors import UnknownKeywordError
+
+        raise UnknownKeywordError(sorted(unknown)[0], "twoball.converge")
     given = {k: v for k, v in deprecated.items() if v is not None}
     if given:
         warn_deprecated(

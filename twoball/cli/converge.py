@@ -85,7 +85,8 @@ def chosen_study(positional: str | None, option: str | None) -> str:
         raise ParameterError("study", "given once, as STUDY or --study", f"{positional}, {option}")
     study = positional if positional is not None else option
     if study is None:
-        raise ParameterError("study", "one of " + ", ".join(_choices.STUDIES), "none")
+        valid = "given (none was): one of " + ", ".join(_choices.STUDIES)
+        raise ParameterError("study", valid, None)
     return study
 
 
