@@ -227,5 +227,6 @@ def test_outputs_onto_inputs_or_each_other_are_refused(capsys, tmp_path):
     assert line.startswith("twoball: error: --out must be a path other than the input mesh file")
     same = str(tmp_path / "same.png")
     line = refused(capsys, ["bounce", "--plot", same, "--render", same])
-    assert line.startswith("twoball: error: --render must be a path other than the output of --plot")
+    assert line.startswith("twoball: error: --render must be a path other than the output of")
+    assert line.endswith("--plot, got '" + same + "'")
     assert snapshot(tmp_path) == before

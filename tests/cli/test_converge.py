@@ -128,8 +128,10 @@ def test_converge_h_cli_axisym(capsys, tmp_path):
 
 def test_the_case_note_is_printed_once(capsys, tmp_path):
     """A negative v0 is noted on standard error once, not again among the study's notes."""
-    code = main(["converge", "modes", "--modes-list", "30,60,120", "--v0=-4.1"]
-                + ["--out", str(tmp_path / "c")])
+    code = main(
+        ["converge", "modes", "--modes-list", "30,60,120", "--v0=-4.1"]
+        + ["--out", str(tmp_path / "c")]
+    )
     out, err = capsys.readouterr()
     assert code == 0
     text = out + err

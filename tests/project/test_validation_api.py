@@ -516,7 +516,10 @@ NO_LONGER_IGNORED: list[tuple[str, Callable[[Path], Any]]] = [
         "v0",
         lambda _: twoball.sweep({"drop_height": [1, 2]}, twoball.Case(v0=3.0), drop=twoball.Drop()),
     ),
-    ("phi_a", lambda _: twoball.sweep({"v0": [3, 4]}, twoball.Case(phi_a=2.5), drop=twoball.Drop())),
+    (
+        "phi_a",
+        lambda _: twoball.sweep({"v0": [3, 4]}, twoball.Case(phi_a=2.5), drop=twoball.Drop()),
+    ),
     # the closed form alone has no eigen route
     (
         "route",

@@ -720,4 +720,3 @@ UNIT_SLIPS: list[tuple[list[str], tuple[str, ...]]] = [
     ),
     (["liftoff", "--radius", "120"], ("R = 120 m", "did you mean 0.12 m (120 mm)")),
 ]
-
