@@ -43,3 +43,14 @@ def test_an_output_that_is_not_a_path_is_refused_by_name(tmp_path, monkeypatch):
     with pytest.raises(ParameterError, match=r"^out must be a file path \(str or os.PathLike\)"):
         twoball.plot("pole", None)
     assert not any(tmp_path.iterdir())
+
+
+def test_one_backend_may_be_given_as_a_name(tmp_path):
+    """``backends="legendre"`` is the closed form alone, as ``["legendre"]`` (never its letters)."""
+    mesh = twoball.MeshOptions("sphere", level=1)
+    named = twoball.plot("pole", tmp_path / "a.png", BASKETBALL, mesh=mesh, backends="legendre")
+    listed = twoball.plot("pole", tmp_path / "b.png", BASKETBALL, mesh=mesh, backends=["legendre"])
+    assert list(named.reports) == list(listed.reports) == ["legendre"]
+    assert named.reports["legendre"].t_liftoff_s == listed.reports["legendre"].t_liftoff_s
+    with pytest.raises(ParameterError, match=r"^backends must be .*got 'fme'$"):
+        twoball.plot("pole", tmp_path / "c.png", BASKETBALL, mesh=mesh, backends="fme")
