@@ -178,6 +178,13 @@ def test_a_default_window_is_no_slip_to_guess_at(capsys) -> None:
     assert any("did you mean" in w for w in typed["warnings"])  # the window typed: said
 
 
+def test_a_default_window_is_no_slip_in_the_field_outputs_either(tmp_path) -> None:
+    slow = twoball.Case.preset("basketball", v0=0.0041)
+    result = twoball.export(tmp_path / "e.vtu", slow, backend="legendre")
+    (text,) = [w for w in result.warnings if "the window t_end" in w]
+    assert "did you mean" not in text
+
+
 def test_drop_height_and_gap_far_from_any_drop_are_said() -> None:
     """H = 1000 m falls at sqrt(2 g H) = 140.07 m/s; a 5 m gap between stacked balls."""
     from twoball.modal.guards import case_warnings
