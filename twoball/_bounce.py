@@ -216,7 +216,7 @@ def check_drop_case(case: Case, drop: Drop) -> None:
         speed = case.v0 if case.v0_given is None else case.v0_given
         valid = (
             f"given alone, not with the case's own v0 = {speed:g} m/s (the height sets "
-            "|v0| = sqrt(2 g H); leave v0 at the preset's)"
+            "|v0| = sqrt(2 g H); build the case without a v0 of its own)"
         )
         raise ParameterError("drop_height", valid, drop.drop_height)
 

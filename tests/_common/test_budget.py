@@ -330,3 +330,5 @@ def test_budget_refusals_name_this_subcommands_flags_and_its_defaults() -> None:
     # an option this subcommand does not have stays a name
     assert budget_flags("t_end 0.02", argparse.Namespace(_given_once={})) == "t_end 0.02"
     assert budget_flags("modes 30") == "--modes 30"  # no command line: the flag
+    sweep = argparse.Namespace(values=["0:0.5:1000000"], _given_once={})  # given in turns
+    assert budget_flags("values (1000000 points)", sweep) == "--values (1000000 points)"

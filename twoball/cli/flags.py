@@ -194,8 +194,9 @@ def _budget_flag(name: str, args: Namespace | None) -> tuple[str, bool]:
     if args is None or not flag.startswith("--"):
         return flag, False
     dest = flag[2:].replace("-", "_")
-    if dest in getattr(args, "_given_once", {}):
-        return flag, False
+    value = getattr(args, dest, None)
+    if dest in getattr(args, "_given_once", {}) or isinstance(value, list):
+        return flag, False  # given (an option given in turns, like --values, is a list)
     if dest in vars(args):  # an option of this subcommand, left at its default
         return flag, True
     return name, False
