@@ -38,7 +38,13 @@ Inputs far from any ball (unit and sign slips)
     slip, and it is said, with the value probably meant.  R outside
     :data:`BALL_RADIUS` (2 mm to 2 m: a bead to a push ball): ``radius`` = 120
     (meant mm) is a 120 m ball, warned "did you mean 0.12 m (120 mm)?".  ``|v0|``
-    above :data:`IMPACT_SPEED` (100 m/s, beyond the fastest ball sports).  A window
+    above :data:`IMPACT_SPEED` (100 m/s, beyond the fastest ball sports).  For the
+    drop on the floor, a drop height above :data:`DROP_HEIGHT` (100 m: a ball
+    dropped from a tower; ``--drop-height 1000``, meant mm, falls at 140 m/s)
+    takes the place of the speed's check, and a gap between the body and the
+    ball above :data:`GAP_LARGE` (1 m, several ball diameters; ``--gap 5``, meant
+    mm) is said as well.  Each guess is the value read in mm (and cm, for a
+    length) that lands inside the range.  A window
     in which nothing could lift off: longer than the flight ``2 |v0| / g`` of a
     body leaving at the impact speed, with the whole window as the re-contact
     horizon, every lift-off falls back inside it and is rejected (``t_end`` = 5,
@@ -67,6 +73,8 @@ from twoball.modal.parameters import Case
 TRUNCATION_WARNING = 0.05  # relative difference of t_l or v_l from the converged series
 BALL_RADIUS = (2e-3, 2.0)  # m: a 4 mm bead to a 4 m push ball
 IMPACT_SPEED = 100.0  # m/s: above the fastest ball sports (golf, jai alai ~80 m/s)
+DROP_HEIGHT = 100.0  # m: a drop from a tower (44 m/s without air drag)
+GAP_LARGE = 1.0  # m: several ball diameters between the body and the ball's top
 REFOCUS_PERIOD = 2.0 * math.pi  # dimensionless: the wave is back at the pole after 2 pi / c
 
 
@@ -262,35 +270,64 @@ def _inside(value: float, bounds: tuple[float, float]) -> bool:
     return bounds[0] <= value <= bounds[1]
 
 
-def case_warnings(case: Case) -> list[str]:
-    """R or ``|v0|`` far outside any ball, with the value probably meant (module docstring)."""
+def _lengths_meant(value: float, bounds: tuple[float, float]) -> str:
+    """``"; did you mean 0.12 m (120 mm)?"``: ``value`` read in mm or cm inside ``bounds``."""
+    meant = [
+        f"{value * factor:g} m ({value:g} {unit})"
+        for factor, unit in ((1e-3, "mm"), (1e-2, "cm"))
+        if _inside(value * factor, bounds)
+    ]
+    return f"; did you mean {' or '.join(meant)}?" if meant else ""
+
+
+def case_warnings(
+    case: Case, *, drop_height: float | None = None, gap: float | None = None
+) -> list[str]:
+    """R or ``|v0|`` far outside any ball, with the value probably meant (module docstring).
+
+    ``drop_height`` [m]: the drop's height, which set ``|v0| = sqrt(2 g H)``; it is
+    judged in place of the speed (the user typed the height).  ``gap`` [m]: the
+    whole bounce's gap between the body and the ball's top.
+    """
     warnings = []
     radius = case.radius
     if not _inside(radius, BALL_RADIUS):
         size = "larger" if radius > BALL_RADIUS[1] else "smaller"
-        meant = [
-            f"{radius * factor:g} m ({radius:g} {unit})"
-            for factor, unit in ((1e-3, "mm"), (1e-2, "cm"))
-            if _inside(radius * factor, BALL_RADIUS)
-        ]
-        guess = f"; did you mean {' or '.join(meant)}?" if meant else ""
         warnings.append(
             f"R = {radius:g} m is far {size} than any ball ({BALL_RADIUS[0]:g} to "
-            f"{BALL_RADIUS[1]:g} m; lengths are in metres){guess}"
+            f"{BALL_RADIUS[1]:g} m; lengths are in metres){_lengths_meant(radius, BALL_RADIUS)}"
         )
-    if case.v0 > IMPACT_SPEED:
+    if drop_height is not None:
+        if drop_height > DROP_HEIGHT:
+            guess = _lengths_meant(drop_height, (0.0, DROP_HEIGHT))
+            warnings.append(
+                f"the drop height H = {drop_height:g} m is far higher than any drop of a ball "
+                f"(up to {DROP_HEIGHT:g} m; heights are in metres), an impact at |v0| = "
+                f"sqrt(2 g H) = {case.v0:.4g} m/s{guess}"
+            )
+    elif case.v0 > IMPACT_SPEED:
         meant = case.v0 * 1e-3
         warnings.append(
             f"|v0| = {case.v0:g} m/s is far faster than any ball's impact (up to "
             f"{IMPACT_SPEED:g} m/s; speeds are in m/s); did you mean {meant:g} m/s "
             f"({case.v0:g} mm/s)?"
         )
+    if gap is not None and gap > GAP_LARGE:
+        guess = _lengths_meant(gap, (0.0, GAP_LARGE))
+        warnings.append(
+            f"the gap Delta x = {gap:g} m between the body and the ball's top is far larger "
+            f"than in any stacked drop (up to {GAP_LARGE:g} m; lengths are in metres){guess}"
+        )
     return warnings
 
 
-def span_warnings(case: Case, result: LiftoffResult) -> list[str]:
+def span_warnings(case: Case, result: LiftoffResult, window_given: bool = True) -> list[str]:
     """A window in which nothing could lift off: longer than the flight, or shorter than
-    the wave's transit to the pole (module docstring)."""
+    the wave's transit to the pole (module docstring).
+
+    ``window_given``: whether the user gave the window t_end; only then is a unit
+    slip in it suggested ("did you mean 5 ms?"): the default window is no slip.
+    """
     scale = case.scalings
     t_end = result.t_end * scale.time  # [s]
     flight = 2.0 * case.v0 / case.g  # [s]: a body leaving at |v0| is back after this
@@ -298,12 +335,16 @@ def span_warnings(case: Case, result: LiftoffResult) -> list[str]:
     front = case.phi_a * scale.time  # [s]: the membrane's wave front reaches the pole
     horizon = getattr(result, "horizon", "window")  # a contact history: the whole window
     if not result.lifted and horizon == "window" and t_end >= flight:
-        return [
+        said = (
             f"the window t_end = {t_end:g} s is {t_end * case.wave_speed:.3g} / c "
             f"({t_end / (2 * math.pi * scale.time):.3g} wave periods 2 pi / c): a body lifted "
             f"at up to |v0| = {case.v0:g} m/s falls back onto the ball within it "
-            f"(2 |v0| / g = {flight:.3g} s), so every lift-off is rejected as a re-contact; "
-            f"did you mean {t_end:g} ms (t_end = {t_end * 1e-3:g} s)?"
+            f"(2 |v0| / g = {flight:.3g} s), so every lift-off is rejected as a re-contact"
+        )
+        if not window_given:  # the default window: no slip to guess at
+            return [f"{said}; only a window shorter than the flight can accept one"]
+        return [
+            f"{said}; did you mean {t_end:g} ms (t_end = {t_end * 1e-3:g} s)?"
             + (
                 f" (that window too would end before the wave reaches the pole, ~pi / c = "
                 f"{transit * 1e3:.3g} ms; the default is 4 pi / c = {4 * transit * 1e3:.3g} ms)"

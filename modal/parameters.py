@@ -142,6 +142,8 @@ class Case:
     rayleigh: Rayleigh | None = None
     #: The v0 as given when it was negative (the paper's sign: downwards), else None.
     v0_given: float | None = field(default=None, compare=False, repr=False)
+    #: True when c came from the pressure and the mass (:meth:`from_pressure`).
+    pressure_sets_c: bool = field(default=False, compare=False, repr=False)
 
     def __post_init__(self) -> None:
         object.__setattr__(self, "radius", check_radius(self.radius))
@@ -151,6 +153,16 @@ class Case:
         object.__setattr__(self, "v0", check_v0(self.v0))
         if given != self.v0:  # negative: kept to say how it was read
             object.__setattr__(self, "v0_given", float(given))
+        elif self.v0_given is not None and not (  # kept through a copy: still -|v0|?
+            isinstance(self.v0_given, float) and self.v0_given == -self.v0
+        ):
+            valid = "None (set by the class from a negative v0)"
+            raise ParameterError("v0_given", valid, self.v0_given)
+        if not isinstance(self.pressure_sets_c, bool) or (
+            self.pressure_sets_c and self.pressure is None
+        ):
+            valid = "False (set by Case.from_pressure)"
+            raise ParameterError("pressure_sets_c", valid, self.pressure_sets_c)
         damping = _number("damping", self.damping, "in [0, 1)")
         if not (0.0 <= damping < 1.0):
             raise ParameterError("damping", "in [0, 1)", self.damping)
@@ -322,9 +334,27 @@ class Case:
         )
 
     @property
+    def pressure_note(self) -> str | None:
+        """That the excess pressure acts on nothing here, or None.
+
+        P acts with bending or gas (the tension ``T = P R / 2`` and the gas's
+        pressure) and sets c with the mass (:meth:`from_pressure`); on the paper's
+        membrane with c given, the lift-off does not depend on it.  (The drop on
+        the floor uses it for the ball's mass and gas: :func:`twoball.bounce`.)
+        """
+        if self.pressure is None or self.stiff or self.pressure_sets_c:
+            return None
+        return (
+            f"P = {self.pressure:g} Pa has no effect on this lift-off: the paper's membrane "
+            "takes its tension through c alone (P acts with bending or gas, and sets c "
+            "with the mass through Case.from_pressure)"
+        )
+
+    @property
     def notes(self) -> list[str]:
-        """The remarks on how the case was read: :attr:`phi_a_note`, :attr:`v0_note`."""
-        return [note for note in (self.phi_a_note, self.v0_note) if note]
+        """The remarks on how the case was read: :attr:`phi_a_note`, :attr:`v0_note`,
+        :attr:`pressure_note`."""
+        return [note for note in (self.phi_a_note, self.v0_note, self.pressure_note) if note]
 
     @property
     def scalings(self) -> Scalings:
@@ -400,7 +430,7 @@ class Case:
         """
         if "phi_a_source" in changes:
             raise ParameterError("phi_a_source", "set by the class, not given", None)
-        hidden = ("phi_a_source", "pressure", "v0_given")
+        hidden = ("phi_a_source", "pressure", "v0_given", "pressure_sets_c")
         known = [f for f in self.__dataclass_fields__ if f not in hidden]
         for name in changes:
             if name not in known:
@@ -416,6 +446,8 @@ class Case:
             changes = {"phi_a": None, **changes, "phi_a_source": None}
         if "v0" in changes:
             changes["v0_given"] = None
+        if "wave_speed" in changes or "radius" in changes:  # c no longer P's and m's
+            changes["pressure_sets_c"] = False
         return replace(self, **changes)
 
     @classmethod
@@ -450,7 +482,8 @@ class Case:
         wave_speed = wave_speed_from_pressure(pressure, mass, radius)
         # P also sets T = P R / 2 of bending and gas (and the gas's energy in eq. (3.7))
         base = replace(base, pressure=float(pressure), phi_a=None, phi_a_source=None)
-        return base.derive(**changes, wave_speed=wave_speed)
+        case = base.derive(**changes, wave_speed=wave_speed)
+        return replace(case, pressure_sets_c=True)
 
     @classmethod
     def from_measurements(

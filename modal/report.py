@@ -193,8 +193,12 @@ def report_liftoff(
     extra: dict[str, Any] | None = None,
     warnings: Sequence[str] = (),
     reference: bool = True,
+    window_given: bool | None = None,
 ) -> LiftoffReport:
     """Apply the shared lift-off criteria to any backend's pole motion; report in SI.
+
+    ``window_given``: whether the user gave the window (default: ``t_end_s`` is
+    given); a unit slip in it is suggested only then.
 
     ``warnings`` come from the backend (time step, mesh); the closed-form guards
     (:mod:`twoball.modal.guards`) add the re-contact window's and, with
@@ -215,7 +219,8 @@ def report_liftoff(
         extra["truncation"] = block.as_dict()
     else:
         notes += window_warnings(case, result)
-    notes += case_warnings(case) + span_warnings(case, result)
+    given = t_end_s is not None if window_given is None else window_given
+    notes += case_warnings(case) + span_warnings(case, result, given)
     return LiftoffReport(case, result, backend, sigma, recontact, extra, tuple(notes))
 
 

@@ -149,10 +149,17 @@ def bounce(
     if backend not in BACKENDS:
         raise ParameterError("backend", "one of " + ", ".join(BACKENDS), backend)
     whole = resolve_body(case, body, chosen, drop)
-    given_phi_a = case.phi_a if case.phi_a_source == "given" else None
+    check_drop_case(case, drop)
+    given_v0_note = case.v0_note
     model_in = resolve_drop(case, drop, given.damping)
     case, spectrum, law = model_in.case, model_in.spectrum, model_in.law
-    warnings = list(model_in.warnings)
+    from twoball.modal.guards import case_warnings
+
+    # inputs far from any ball first (unit slips), then the model's and the accuracy's
+    warnings = case_warnings(
+        case, drop_height=drop.drop_height, gap=None if whole is None else drop.gap
+    )
+    warnings += model_in.warnings
     step = given.stepping if given.stepping is not None else Stepping()
     gap = drop.gap / case.radius
     dt, t_end = _times(case, step, gap)
@@ -179,12 +186,8 @@ def bounce(
     }
     from twoball._common.provenance import block
 
-    notes = model_in.notes
-    if given_phi_a is not None:
-        notes += (
-            f"the case's phi_a = {given_phi_a:g} rad is not used: the drop computes "
-            "the contact angle (phi_a_max_rad)",
-        )
+    # how the case was read (a negative v0: the paper's sign), then the drop's own notes
+    notes = tuple(n for n in (given_v0_note,) if n) + model_in.notes
     extra: dict[str, Any] = {}
     if whole is not None:
         notes += whole.notes
@@ -239,6 +242,48 @@ def _damping_block(case: Case, law: Any) -> dict[str, Any]:
         "beta_c_units": si["beta"],
         "fitted": si["fitted"],
     }
+
+
+def check_drop_case(case: Case, drop: Drop) -> None:
+    """Refuse what the drop would not use: a given phi_a, a v0 set beside a drop height.
+
+    The drop computes its contact angle (``phi_a_max_rad``), so a given phi_a would be
+    ignored; a drop height sets ``|v0| = sqrt(2 g H)``, eq. (2.1), so a case whose v0 is
+    not its preset's own (the user set one) would be overridden.
+    """
+    if case.phi_a_source == "given":
+        valid = "left out for the drop (the contact angle is its output, phi_a_max_rad)"
+        raise ParameterError("phi_a", valid, case.phi_a)
+    if drop.drop_height is not None and v0_set(case):
+        speed = case.v0 if case.v0_given is None else case.v0_given
+        valid = (
+            f"given alone, not with the case's own v0 = {speed:g} m/s (the height sets "
+            "|v0| = sqrt(2 g H); build the case without a v0 of its own)"
+        )
+        raise ParameterError("drop_height", valid, drop.drop_height)
+
+
+def check_point(
+    case: Case, drop: Drop, body: Any, pair: str | None, *, stepping: Any = None
+) -> None:
+    """The checks :func:`bounce` makes before its work, for one point of a sweep."""
+    from twoball.modal.floor.model import resolve_body, resolve_drop, resolve_pair
+    from twoball.modal.stepping import Stepping
+
+    case, body, chosen = resolve_pair(case, body, pair)
+    resolve_body(case, body, chosen, drop)
+    check_drop_case(case, drop)
+    ball = resolve_drop(case, drop).case
+    _times(ball, Stepping() if stepping is None else stepping, drop.gap / ball.radius)
+
+
+def v0_set(case: Case) -> bool:
+    """Whether ``case``'s v0 was set: not its preset's own measured speed (or the default)."""
+    from twoball.modal.presets import MEASURED
+
+    measured = MEASURED.get(case.preset_name or "")
+    default = measured.v0 if measured is not None else Case.__dataclass_fields__["v0"].default
+    return case.v0_given is not None or not math.isclose(case.v0, default, rel_tol=1e-12)
 
 
 def _body_row(ball: Any, whole: Any, gap: float) -> Any:
@@ -324,7 +369,7 @@ def check_field_targets(
         except ParameterError as error:  # named after the API's "out"
             raise ParameterError("export", error.valid, os.fspath(export)) from None
         target = check_file(export, "export")
-        check_side_entries(target, fmt)
+        check_side_entries(target, fmt, "export")
         if fmt == "vtu":
             if frames not in (None, 1):
                 raise ParameterError("frames", "1 for a single .vtu file", frames)
@@ -1041,7 +1086,14 @@ def bounce_sweep(
         check_workers(workers)
     base, _, _ = resolve_pair(case, None, pair) if pair is not None else (case, None, None)
     base = Case.preset("basketball") if base is None else base
+    if parameter == "drop-height" and v0_set(base):
+        speed = base.v0 if base.v0_given is None else base.v0_given
+        valid = "left out when drop_height is swept (each height sets |v0| = sqrt(2 g H))"
+        raise ParameterError("v0", valid, speed)
+    check_drop_case(base, drop)  # a given phi_a: a v0 sweep would drop it unsaid
     points = [(*point, pair) for point in bounce_points(base, drop, parameter, array, body)]
+    for point in points:  # every point's values refused here, before the first run
+        check_point(*point, stepping=stepping)
     task = BounceTask(stepping=stepping, damping=damping)
     reports: list[Any] = []
     errors: list[str | None] = []

@@ -15,7 +15,7 @@ from __future__ import annotations
 import warnings
 from typing import Any
 
-from twoball._common.errors import ParameterError
+from twoball._common.errors import ParameterError, UnknownKeywordError
 
 __all__ = ["Bundles", "bundles", "warn_deprecated", "with_damping"]
 
@@ -98,8 +98,9 @@ def bundles(
         As the verb received them.
     old : dict, optional
         Keywords outside the signature: each of :data:`OLD_KEYS` is folded in
-        with a :class:`DeprecationWarning`; any other is a ``TypeError``, as
-        Python gives for an unknown keyword.
+        with a :class:`DeprecationWarning`; any other is refused by name
+        (:class:`~twoball._common.errors.UnknownKeywordError`, a ParameterError
+        that is also the ``TypeError`` Python gives for an unknown keyword).
     takes : tuple of str
         The bundles this verb has (an old keyword of another is unknown).
     """
@@ -120,7 +121,7 @@ def bundles(
     allowed = {k for bundle in takes for k in known[bundle]}
     for key in old:
         if key not in allowed:
-            raise TypeError(f"{verb}() got an unexpected keyword argument {key!r}")
+            raise UnknownKeywordError(key, verb)
     given = {k: v for k, v in old.items() if v is not None}
     if given:
         instead = [REPLACEMENTS[b] for b in known if any(k in known[b] for k in given)]

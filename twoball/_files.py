@@ -57,6 +57,13 @@ def _field_bundles(
     return given, times
 
 
+def _not_the_mesh(out: str | os.PathLike[str], given: Any, name: str = "out") -> None:
+    """Refuse an output onto the user's mesh file (it would replace the input)."""
+    from twoball._common.staging import check_distinct
+
+    check_distinct({name: out}, {"the input mesh file": getattr(given.mesh, "file", None)})
+
+
 def _window(given: Any) -> tuple[float | None, str]:
     stepping = given.stepping
     if stepping is None:
@@ -64,20 +71,31 @@ def _window(given: Any) -> tuple[float | None, str]:
     return stepping.t_end, stepping.route or "auto"
 
 
-def _frames(frames: Any, legacy_times: Any = None) -> tuple[int | None, Sequence[float] | None]:
-    """``frames`` as a count or as times [s] (the old ``times`` keyword folded in)."""
+def _frames(
+    frames: Any, legacy_times: Any = None
+) -> tuple[int | None, Sequence[float] | None, str]:
+    """``frames`` as a count or as times [s] (the old ``times`` keyword folded in).
+
+    Returns the count, the times and the name the user gave them by (``frames``,
+    or ``times`` for the old keyword), for the errors.
+    """
+    name = "frames"
     if legacy_times is not None:
-        warn_deprecated("the keyword times is deprecated; pass the frame times as frames=[...]")
         if frames is not None:
             raise ParameterError("frames", "left out when times are given", frames)
-        frames = legacy_times
+        if isinstance(legacy_times, (str, bytes)) or not (
+            isinstance(legacy_times, Sequence) or hasattr(legacy_times, "__array__")
+        ):  # refused before the deprecation is said
+            raise ParameterError("times", "a list of times [s]", legacy_times)
+        warn_deprecated("the keyword times is deprecated; pass the frame times as frames=[...]")
+        frames, name = legacy_times, "times"
     if frames is None:
-        return None, None
+        return None, None, name
     if isinstance(frames, (str, bytes)):
-        raise ParameterError("frames", "a frame count or a list of times [s]", frames)
+        raise ParameterError(name, "a frame count or a list of times [s]", frames)
     if isinstance(frames, Sequence) or hasattr(frames, "__array__"):
-        return None, frames
-    return frames, None
+        return None, frames, name
+    return frames, None, name
 
 
 @timed
@@ -191,20 +209,21 @@ def export(
     fmt = series_format(out, legacy_format)
     target = check_file(out)
     check_side_entries(target, fmt)
+    _not_the_mesh(out, given)
     check_backend(backend)
     t_end, route = _window(given)
     solved = BACKENDS if backend == "fem" else (backend,)  # the closed form needs no FE solve
     if "fem" not in solved and route != "auto":
         raise ParameterError("route", "left out with backend legendre (no finite elements)", route)
     field = field_mesh(given.mesh, cells=True, load=False)
-    frames, times = _frames(frames, legacy_times)
+    frames, times, name = _frames(frames, legacy_times)
     if times is not None:
-        times = check_times(window_s(case, t_end), times, "frames")
+        times = check_times(window_s(case, t_end), times, name)
     frames = None if frames is None else check_frames(frames)
     if fmt == "vtu" and frames is not None and frames != 1:
         raise ParameterError("frames", "1 for a single .vtu file (or give one time)", frames)
     if fmt == "vtu" and times is not None and len(times) != 1:
-        raise ParameterError("frames", "exactly one time for a single .vtu file", list(times))
+        raise ParameterError(name, "exactly one time for a single .vtu file", list(times))
     field = field_mesh(given.mesh, cells=True)  # reads a file
     if times is not None:
         check_frame_budget(case, len(times), "times", field)
@@ -368,29 +387,32 @@ def render(
     case = with_damping(_case(case), given.damping)
     kind = image_kind(out)
     target = check_file(out)
+    _not_the_mesh(out, given)
     size = DEFAULT_SIZE if view.size is None else view.size
     check_backend(backend)
     if kind == ".png" and view.fps is not None:
         raise ParameterError("fps", "used with .gif or .mp4 only", view.fps)
     fps = DEFAULT_FPS if view.fps is None else view.fps
     t_end, route = _window(given)
+    if backend != "fem" and route != "auto":
+        raise ParameterError("route", "left out with backend legendre (no finite elements)", route)
     if given.mesh is not None and given.mesh.initial is not None and backend != "fem":
         raise ParameterError(
             "initial",
             "left out without the fem backend (it sets the FE initial state)",
             given.mesh.initial,
         )
-    count, times = _frames(view.frames)
+    count, times, name = _frames(view.frames)
     if kind == ".png" and count is not None:
         raise ParameterError(
             "frames", "one time [s] in a list with .png (a count: .gif or .mp4)", count
         )
     if kind == ".png" and times is not None and len(times) != 1:
-        raise ParameterError("frames", "exactly one time [s] with .png", list(times))
+        raise ParameterError(name, "exactly one time [s] with .png", list(times))
     count = None if count is None else check_frames(count)
     field = field_mesh(given.mesh, cells=True, load=False)
     if times is not None:
-        times = check_times(window_s(case, t_end), times, "frames")
+        times = check_times(window_s(case, t_end), times, name)
     field = field_mesh(given.mesh, cells=True)  # reads a file
     if kind != ".png":
         number = len(times) if times is not None else count or DEFAULT_ANIMATION_FRAMES
@@ -536,6 +558,7 @@ def plot(
         raise ParameterError("kind", "one of " + ", ".join(PLOT_KINDS), kind)
     figure_format(out, "out")
     target = check_file(out)
+    _not_the_mesh(out, given)
     t_end, route = _window(given)
     if given.body is not None and kind != "pole":
         raise ParameterError(
@@ -589,7 +612,7 @@ def plot(
         refused |= {"damping": given.damping, "instants": figure.instants}
         for name, value in refused.items():
             if value is not None:
-                shown = type(value).__name__ if name == "case" else value
+                shown = None if name == "case" else value  # a Case is not a value to show
                 shown = shown.label if hasattr(shown, "label") else shown
                 shown = shown.as_dict() if hasattr(shown, "as_dict") else shown
                 raise ParameterError(name, "left out with kind eigen (use levels, orders)", shown)
@@ -620,6 +643,8 @@ def plot(
         case = with_damping(_case(case), given.damping)
         chosen = BACKENDS if figure.backends is None else figure.backends
         instants = WATERFALL_INSTANTS if figure.instants is None else figure.instants
+        if "fem" not in chosen and route != "auto":
+            raise ParameterError("route", "left out without the fem backend", route)
         field = field_mesh(given.mesh)  # reads a file
         if given.body is not None:
             check_field_body(case, given.body, field, recontact=rules.recontact, route=route)

@@ -178,6 +178,7 @@ def converge(
     from twoball.modal.guards import case_warnings
 
     result.warnings = case_warnings(case)
+    result.notes[:0] = [n for n in case.notes if n not in result.notes]  # how the case was read
     arguments = {"study": study, "mesh": mesh, "order": order, "levels": levels}
     arguments |= {"modes_list": modes_list, **rules.as_dict(), "t_end": t_end, "out": out}
     result.provenance = block(case, "twoball.converge", arguments)
@@ -252,6 +253,9 @@ def verify(
         raise ParameterError("case", "a twoball.Case", type(case).__name__)
     case = with_damping(case, rules.damping)
     _paper_model(case, "verify")
+    for name, value in (("thorough", thorough), ("fast", fast)):
+        if not isinstance(value, bool):  # "yes", 1, None: never read as a truth value
+            raise ParameterError(name, "True or False", value)
     if thorough and fast:
         raise ParameterError("fast", "left out with thorough", fast)
     from twoball.verify.studies.fem_runs import EIGEN_DEGREES
@@ -270,6 +274,7 @@ def verify(
     from twoball.modal.guards import case_warnings
 
     result.warnings = case_warnings(case)
+    result.notes[:0] = [n for n in case.notes if n not in result.notes]  # how the case was read
     from twoball._common.provenance import block
 
     arguments = {"thorough": thorough, "fast": fast, **rules.as_dict(), "t_end": t_end}
@@ -351,7 +356,9 @@ def _study_options(
 
     unknown = set(deprecated) - {"order", "geometry", "t_end"}
     if unknown:
-        raise TypeError(f"twoball.converge() got an unexpected keyword argument {unknown.pop()!r}")
+        from twoball._common.errors import UnknownKeywordError
+
+        raise UnknownKeywordError(sorted(unknown)[0], "twoball.converge")
     given = {k: v for k, v in deprecated.items() if v is not None}
     if given:
         warn_deprecated(

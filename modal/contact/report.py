@@ -350,15 +350,18 @@ def contact_guards(
     report: ContactReport,
     reference_modes: int | None = None,
     reference: ContactReport | None = None,
+    window_given: bool = True,
 ) -> tuple[list[str], dict[str, Any] | None]:
     """Warnings of a contact result and its ``truncation`` block (module docstring).
 
-    ``reference_modes`` None: no truncation check (sweeps), the block is None.
+    ``reference_modes`` None: no truncation check (sweeps), the block is None;
+    ``window_given``: whether the user gave the window t_end (a slip in it is
+    suggested only then).
     """
     from twoball.modal.guards import case_warnings, span_warnings, window_warnings
 
     case, result = report.case, report.result
-    warnings = case_warnings(case) + span_warnings(case, result)
+    warnings = case_warnings(case) + span_warnings(case, result, window_given)
     history = report.history
     last = history.events[-1] if history is not None and history.events else None
     scale = case.scalings
@@ -433,7 +436,7 @@ def guarded(report: ContactReport, body: Body, t_end_s: float | None, *, more=()
     from dataclasses import replace
 
     modes, reference = contact_reference(report.case, body, t_end_s)
-    warnings, block = contact_guards(report, modes, reference)
+    warnings, block = contact_guards(report, modes, reference, t_end_s is not None)
     extra = {**report.extra, "truncation": block}
     return replace(report, extra=extra, warnings=(*more, *warnings))
 
@@ -489,4 +492,5 @@ def legendre_contact(
         return guarded(report, body, t_end_s)
     from dataclasses import replace
 
-    return replace(report, warnings=tuple(contact_guards(report)[0]))
+    guards = contact_guards(report, window_given=t_end_s is not None)
+    return replace(report, warnings=tuple(guards[0]))

@@ -140,7 +140,7 @@ def table1_check(rows: tuple[Table1Row, ...] = TABLE1) -> tuple[Table1Check, ...
     Parameters
     ----------
     rows : tuple of Table1Row, optional
-        Rows to check; default the whole table.
+        Rows to check (one row alone is one); default the whole table.
 
     Returns
     -------
@@ -154,6 +154,15 @@ def table1_check(rows: tuple[Table1Row, ...] = TABLE1) -> tuple[Table1Check, ...
     >>> [(c.row.upper, round(c.v1, 3), c.row.icm_v1) for c in rows[:3]]
     [('Coin', 1.516, 1.5), ('Nut', 1.493, 1.5), ('Table tennis', 1.771, 1.8)]
     """
+    valid = "a tuple of Table1Row (rows of twoball.modal.icm.table1.TABLE1)"
+    if isinstance(rows, Table1Row):
+        rows = (rows,)
+    try:
+        rows = tuple(rows)
+    except TypeError:  # not iterable
+        raise ParameterError("rows", valid, rows) from None
+    if not rows or not all(isinstance(row, Table1Row) for row in rows):
+        raise ParameterError("rows", valid, rows)
     out = []
     for i, row in enumerate(rows, start=1):
         v1, v2 = touching_ratios(row.mu, row.e2, row.e12)

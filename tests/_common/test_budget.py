@@ -311,3 +311,25 @@ def test_address_space_limit_refuses_before_work_or_ends_in_one_line(tmp_path: P
     assert done.returncode == 3, done.stderr
     assert done.stderr.splitlines()[-1].startswith("twoball: error: out of memory (")
     assert "Traceback" not in done.stderr
+
+
+def test_budget_refusals_name_this_subcommands_flags_and_its_defaults() -> None:
+    """A name becomes its flag where the subcommand has the option, marked as the default
+    when the user did not give it; the words of a value in parentheses stay words."""
+    import argparse
+
+    from twoball.cli.flags import budget_flags
+
+    bounce = argparse.Namespace(modes=100, dt=None, t_end=None, _given_once={"modes": 100})
+    assert budget_flags("modes 100 dt 1.5625e-05 t_end 0.0981748", bounce) == (
+        "--modes 100 --dt 1.5625e-05 (the default) --t-end 0.0981748 (the default)"
+    )
+    render = argparse.Namespace(frames=None, _given_once={})
+    assert budget_flags("frames (60 frames)", render) == "--frames (60 frames) (the default)"
+    given = argparse.Namespace(frames=60, _given_once={"frames": 60})
+    assert budget_flags("frames (60 frames)", given) == "--frames (60 frames)"
+    # an option this subcommand does not have stays a name
+    assert budget_flags("t_end 0.02", argparse.Namespace(_given_once={})) == "t_end 0.02"
+    assert budget_flags("modes 30") == "--modes 30"  # no command line: the flag
+    sweep = argparse.Namespace(values=["0:0.5:1000000"], _given_once={})  # given in turns
+    assert budget_flags("values (1000000 points)", sweep) == "--values (1000000 points)"

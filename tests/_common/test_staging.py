@@ -167,3 +167,66 @@ def test_same_inputs_give_byte_identical_data_files(capsys, tmp_path):
         assert runs["a"][name] == runs["b"][name], name
     provenance = json.loads(runs["a"]["v/provenance.json"])
     assert provenance["seconds"]["seconds"] > 0 and "generated" in provenance
+
+
+# --------------------------------------------------------------------------- read-only mounts
+@pytest.fixture
+def read_only_mounts(tmp_path):
+    """A read-only tmpfs folder and a file bind-mounted read-only (root and mount only)."""
+    folder, source, file = tmp_path / "ro-folder", tmp_path / "source.png", tmp_path / "ro.png"
+    folder.mkdir()
+    source.write_bytes(b"earlier picture")
+    file.write_bytes(b"")
+    steps = [
+        ["mount", "-t", "tmpfs", "-o", "size=64k", "tmpfs", str(folder)],
+        ["mount", "-o", "remount,ro", str(folder)],
+        ["mount", "--bind", str(source), str(file)],
+        ["mount", "-o", "remount,bind,ro", str(file)],
+    ]
+    for step in steps:
+        if subprocess.run(step, capture_output=True).returncode != 0:
+            for mounted in (file, folder):
+                subprocess.run(["umount", str(mounted)], capture_output=True)
+            pytest.skip("cannot mount here")
+    yield folder, file
+    for mounted in (file, folder):
+        subprocess.run(["umount", str(mounted)], check=False)
+
+
+@pytest.mark.parametrize(
+    ("argv", "flag", "which"),
+    [
+        (FOLDER_WRITERS["converge"], "--out", "folder"),
+        (FILE_WRITERS["plot"], "--out", "file"),
+        (["liftoff", "--mass-ratio", "0.1", "--modes", "10", "--plot"], "--plot", "file"),
+        (["bounce", "--modes", "16", "--render"], "--render", "file"),
+    ],
+)
+def test_an_existing_output_on_a_read_only_mount_is_refused_before_work(
+    capsys, read_only_mounts, argv, flag, which
+):
+    """The rename that would replace a mount point fails: said before any work, naming it."""
+    folder, file = read_only_mounts
+    target = folder if which == "folder" else file
+    line = refused(capsys, [*argv, str(target)])
+    assert line.startswith(f"twoball: error: {flag} must be ") and "mount point" in line, line
+    assert file.read_bytes() == b"earlier picture"
+
+
+def test_outputs_onto_inputs_or_each_other_are_refused(capsys, tmp_path):
+    """--out onto the --mesh-file, --render onto --plot: refused, nothing replaced."""
+    import meshio
+    from twoball.fem_membrane.mesh import icosphere
+
+    ball = icosphere(2)
+    mesh = tmp_path / "in.vtu"
+    meshio.write(mesh, meshio.Mesh(0.12 * ball.points, [("triangle", ball.cells)]))
+    (tmp_path / "same.png").write_bytes(b"earlier picture")
+    before = snapshot(tmp_path)
+    line = refused(capsys, ["export", "--mesh-file", str(mesh), "--out", str(mesh)])
+    assert line.startswith("twoball: error: --out must be a path other than the input mesh file")
+    same = str(tmp_path / "same.png")
+    line = refused(capsys, ["bounce", "--plot", same, "--render", same])
+    assert line.startswith("twoball: error: --render must be a path other than the output of")
+    assert line.endswith("--plot, got '" + same + "'")
+    assert snapshot(tmp_path) == before

@@ -596,3 +596,15 @@ def test_the_picture_draws_the_floor_and_a_short_footer(tmp_path):
     assert floor.sum() > 1000  # the floor is drawn, unlit, in its own colour
     rows = np.flatnonzero(floor.sum(axis=1) > 20)  # (text edges have a few such pixels)
     assert rows.max() < 0.85 * image.shape[0]  # above the footer's band
+
+
+def test_the_case_is_read_as_every_verb_reads_it():
+    """A negative v0 is the paper's downward velocity, noted once, as by twoball.liftoff;
+    the drop's result equals the positive speed's."""
+    down = twoball.bounce(twoball.Case(v0=-4.1), QUICK)
+    up = twoball.bounce(twoball.Case(v0=4.1), QUICK)
+    note = twoball.liftoff(twoball.Case(v0=-4.1)).notes[0]
+    assert note.startswith("v0 = -4.1 m/s read as an impact at 4.1 m/s downwards")
+    assert [n for n in down.notes if n.startswith("v0 = ")] == [note]
+    assert not [n for n in up.notes if n.startswith("v0 = ")]
+    assert down.contact_time_s == up.contact_time_s and down.e2 == up.e2

@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+import math
+
 import pytest
 from twoball.modal.parameters import Case
 
@@ -152,3 +154,28 @@ def test_bad_contact_input_names_the_parameter(call, name):
     with pytest.raises(twoball.ParameterError) as info:
         call()
     assert info.value.name == name
+
+
+def test_a_pressure_that_acts_on_nothing_is_noted():
+    """On the paper's membrane with c given, P enters no equation of the lift-off: the
+    result equals the one without it, and a note says so; through Case.from_pressure P
+    sets c (eq. (3.8)) and no such note is made."""
+    plain = twoball.liftoff(twoball.Case())
+    pressed = twoball.liftoff(twoball.Case(pressure=70000.0))
+    assert pressed.t_liftoff_s == plain.t_liftoff_s and pressed.v_liftoff_m_s == plain.v_liftoff_m_s
+    (note,) = [n for n in pressed.notes if n.startswith("P = ")]
+    assert note.startswith("P = 70000 Pa has no effect on this lift-off")
+    assert not [n for n in plain.notes if n.startswith("P = ")]
+    measured = twoball.Case.from_pressure(77200.0, 0.567)
+    assert measured.wave_speed == pytest.approx(math.sqrt(2 * math.pi * 77200.0 * 0.12 / 0.567))
+    assert not [n for n in twoball.liftoff(measured).notes if n.startswith("P = ")]
+    moved = measured.derive(wave_speed=300.0)  # c no longer P's: the note is back
+    assert [n for n in moved.notes if n.startswith("P = ")]
+    stiff = twoball.Case.preset("tennis")  # bending and gas: P acts
+    assert stiff.pressure is not None and not [n for n in stiff.notes if n.startswith("P = ")]
+
+
+def test_converge_carries_the_case_notes_once():
+    case = twoball.Case(v0=-4.1)
+    study = twoball.converge(case, study="modes", modes_list="30,60,120")
+    assert study.notes.count(case.v0_note) == 1 and study.as_dict()["notes"][0] == case.v0_note

@@ -53,3 +53,26 @@ def test_the_precursor_draws_the_damping_law_given(tmp_path):
     assert given.rows == inside.rows
     plain = twoball.plot("precursor", tmp_path / "c.png", BASKETBALL)
     assert given.rows != plain.rows
+
+
+def test_one_backend_may_be_given_as_a_name(tmp_path):
+    """``backends="legendre"`` is the closed form alone, as ``["legendre"]`` (never its letters)."""
+    mesh = twoball.MeshOptions("sphere", level=1)
+    named = twoball.plot(
+        "pole",
+        tmp_path / "a.png",
+        BASKETBALL,
+        mesh=mesh,
+        figure=twoball.PlotOptions(backends="legendre"),
+    )
+    listed = twoball.plot(
+        "pole",
+        tmp_path / "b.png",
+        BASKETBALL,
+        mesh=mesh,
+        figure=twoball.PlotOptions(backends=["legendre"]),
+    )
+    assert list(named.reports) == list(listed.reports) == ["legendre"]
+    assert named.reports["legendre"].t_liftoff_s == listed.reports["legendre"].t_liftoff_s
+    with pytest.raises(ParameterError, match=r"^backends must be .*got 'fme'$"):
+        twoball.PlotOptions(backends="fme")

@@ -124,3 +124,16 @@ def test_converge_h_cli_axisym(capsys, tmp_path):
     assert code == 0 and data["study"] == "h" and data["passed"]
     assert {p.name for p in out.iterdir()} == FILES | {".twoball-output", "provenance.json"}
     assert "lambda_6" in (out / "report.md").read_text()
+
+
+def test_the_case_note_is_printed_once(capsys, tmp_path):
+    """A negative v0 is noted on standard error once, not again among the study's notes."""
+    code = main(
+        ["converge", "modes", "--modes-list", "30,60,120", "--v0=-4.1"]
+        + ["--out", str(tmp_path / "c")]
+    )
+    out, err = capsys.readouterr()
+    assert code == 0
+    text = out + err
+    assert text.count("v0 = -4.1 m/s read as an impact at 4.1 m/s downwards") == 1
+    assert "twoball: note: v0 = -4.1 m/s" in err

@@ -39,7 +39,7 @@ from twoball.cli.main import full_parser, join_negative_values, main
         (["sweep", "--param", "damping", "--values", "0:0.5:0"], "--values"),
         (["sweep", "--param", "modes", "--values", "1:2:3"], "--values"),
         (["sweep", "--param", "mass", "--values", "0:1:3"], "--param"),
-        (["sweep", "--param", "damping", "--values", "0:1:3"], "--damping"),
+        (["sweep", "--param", "damping", "--values", "0:1:3"], "--values"),  # typed there
     ],
 )
 def test_bad_input_is_one_line_exit_2(capsys, argv, flag):

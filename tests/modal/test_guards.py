@@ -164,3 +164,40 @@ def test_converge_says_it_too() -> None:
     assert [w for w in study.warnings if w.startswith("R = 120 m")]
     assert study.as_dict()["warnings"] == study.warnings
     assert twoball.converge(study="modes", modes_list="30,60,120").warnings == []
+
+
+def test_a_default_window_is_no_slip_to_guess_at(capsys) -> None:
+    """|v0| = 4.1 mm/s: every lift-off falls back inside the default 4 pi / c window; the
+    warning says so, but suggests no t_end the user never typed."""
+    data, lines = cli(capsys, "--v0", "0.0041")
+    (text,) = [w for w in data["warnings"] if w.startswith("the window t_end")]
+    flight = 2 * 0.0041 / 9.81  # s: 2 |v0| / g
+    assert f"2 |v0| / g = {flight:.3g} s" in text and "did you mean" not in text
+    assert f"twoball: warning: {text}" in lines
+    typed, _ = cli(capsys, "--v0", "0.0041", "--t-end", str(4 * math.pi / 320))
+    assert any("did you mean" in w for w in typed["warnings"])  # the window typed: said
+
+
+def test_a_default_window_is_no_slip_in_the_field_outputs_either(tmp_path) -> None:
+    slow = twoball.Case.preset("basketball", v0=0.0041)
+    result = twoball.export(tmp_path / "e.vtu", slow, backend="legendre")
+    (text,) = [w for w in result.warnings if "the window t_end" in w]
+    assert "did you mean" not in text
+
+
+def test_drop_height_and_gap_far_from_any_drop_are_said() -> None:
+    """H = 1000 m falls at sqrt(2 g H) = 140.07 m/s; a 5 m gap between stacked balls."""
+    from twoball.modal.guards import case_warnings
+
+    case = preset("basketball").derive(v0=math.sqrt(2 * 9.81 * 1000.0))
+    (text,) = case_warnings(case, drop_height=1000.0)
+    assert text.startswith("the drop height H = 1000 m") and "= 140.1 m/s" in text
+    assert text.endswith("did you mean 1 m (1000 mm) or 10 m (1000 cm)?")
+    # the speed came from the height: judged by the height, not as a typed |v0|
+    assert not [w for w in case_warnings(case, drop_height=1000.0) if w.startswith("|v0|")]
+    # 500 m is 99 m/s, under the speed's bound, yet far above any drop
+    slower = preset("basketball").derive(v0=math.sqrt(2 * 9.81 * 500.0))
+    assert case_warnings(slower) == [] and case_warnings(slower, drop_height=500.0)
+    (gap,) = case_warnings(preset("basketball"), gap=5.0)
+    assert "did you mean 0.005 m (5 mm) or 0.05 m (5 cm)?" in gap
+    assert case_warnings(preset("basketball"), drop_height=1.0, gap=0.005) == []

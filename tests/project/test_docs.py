@@ -226,3 +226,22 @@ def test_readme_counts_are_what_pytest_collects() -> None:
         total - selected,
         selected,
     )
+
+
+# --------------------------------------------------------------------------- the committed report
+
+
+def test_committed_verification_report_gives_time_steps_in_seconds() -> None:
+    """docs/_static/verification is today's ``twoball verify --thorough``: every time step
+    in seconds first, as ``--dt`` takes it, the dimensionless c dt beside it."""
+    from twoball.verify.studies.result import time_step_text
+
+    folder = ROOT / "docs" / "_static" / "verification"
+    texts = {p.name: p.read_text() for p in sorted(folder.iterdir()) if p.suffix != ".png"}
+    steps = [m for text in texts.values() for m in re.finditer(r"(?<!c )\bdt = [^,;)\"|]*", text)]
+    assert steps, "no time step in the committed report"
+    for match in steps:
+        seconds, _, rest = match.group(0).partition(" s (c dt = ")
+        assert rest, f"a dimensionless dt without its seconds: {match.group(0)!r}"
+        dt = float(rest)  # the seconds are c dt / c of the basketball (c = 320 1/s)
+        assert time_step_text(dt, 1 / 320.0) == f"{seconds} s (c dt = {rest})"

@@ -157,6 +157,36 @@ def test_the_base_lines_run(tmp_path: Path) -> None:
         ), (argv, result["stderr"])
 
 
+def test_refusals_name_the_value_given(tmp_path: Path) -> None:
+    """The line shows the value the user typed, under the flag they typed it with; a
+    budget refusal names this subcommand's flags and says which values are defaults."""
+    cases = [("", argv) for argv, _, _ in table.MESSAGES]
+    results = run_child(cases, tmp_path)
+    for (argv, held, absent), result in zip(table.MESSAGES, results, strict=True):
+        err = result["stderr"].strip()
+        assert result["status"] == 2 and len(err.splitlines()) == 1, (argv, err)
+        assert err.startswith("twoball: error: ") and not result["left"], (argv, err)
+        assert all(words in err for words in held), (argv, err)
+        assert not any(words in err for words in absent), (argv, err)
+
+
+def test_unit_slips_warn_with_the_value_meant(tmp_path: Path) -> None:
+    """A value far outside any ball runs (exit 0) and says, on standard error and in the
+    JSON, what was probably meant."""
+    cases = [("", [*argv, "--json"]) for argv, _ in table.UNIT_SLIPS]
+    results = run_child(cases, tmp_path)
+    for (argv, words), result in zip(table.UNIT_SLIPS, results, strict=True):
+        err = result["stderr"]
+        assert result["status"] == 0 and "Traceback" not in err, (argv, err[-600:])
+        said = [line for line in err.splitlines() if line.startswith("twoball: warning: ")]
+        assert any(all(w in line for w in words) for line in said), (argv, said)
+        data = json.loads(result["stdout"])
+        points = data["results"] if "results" in data else [data]
+        kept = [w for point in points for w in point["warnings"]]
+        first = words[2:] if argv[0] == "sweep" else words  # per point: the warning itself
+        assert any(all(w in text for w in first) for text in kept), (argv, kept)
+
+
 @pytest.mark.parametrize("flag", ["--phi-a", "--radius", "--wave-speed", "--v0", "--t-end"])
 def test_api_and_cli_share_the_message(flag: str) -> None:
     """The CLI prints the API's ParameterError with the flag in place of the parameter name."""

@@ -539,7 +539,138 @@ NO_LONGER_IGNORED: list[tuple[str, Callable[[Path], Any]]] = [
         lambda _: twoball.liftoff(twoball.Case(modes=60), backend="fem", body=twoball.Body(0.1)),
     ),
     ("modes", lambda _: _limited("20s", twoball.liftoff, twoball.Case.preset("tennis", modes=960))),
+    # the drop: a v0 a drop height would override, a phi_a it would not use
+    ("drop_height", lambda _: twoball.bounce(twoball.Case(v0=3.0), twoball.Drop(drop_height=1))),
+    ("drop_height", lambda _: twoball.bounce(twoball.Case(v0=-4.1), twoball.Drop(drop_height=1))),
+    ("phi_a", lambda _: twoball.bounce(twoball.Case(phi_a=2.5))),
+    ("phi_a", lambda _: twoball.bounce(twoball.Case(phi_a=2.5), pair="basketball-tennis")),
+    # sweeps of the drop: refused before the first point, never an error inside a point
+    ("mass_ratio", lambda _: twoball.sweep({"mass_ratio": [0.0, 0.1]}, drop=twoball.Drop())),
+    (
+        "v0",
+        lambda _: twoball.sweep({"drop_height": [1, 2]}, twoball.Case(v0=3.0), drop=twoball.Drop()),
+    ),
+    (
+        "phi_a",
+        lambda _: twoball.sweep({"v0": [3, 4]}, twoball.Case(phi_a=2.5), drop=twoball.Drop()),
+    ),
+    # the closed form alone has no eigen route
+    (
+        "route",
+        lambda tmp: twoball.render(
+            tmp / "x.png", backend="legendre", stepping=twoball.Stepping(route="full")
+        ),
+    ),
+    (
+        "route",
+        lambda tmp: twoball.plot(
+            "pole", tmp / "p.png", backends="legendre", stepping=twoball.Stepping(route="full")
+        ),
+    ),
+    # the name the user gave, the value they gave
+    ("times", lambda tmp: twoball.export(tmp / "x.pvd", mesh=ONE, times="0,1")),
+    ("backends", lambda tmp: twoball.plot("pole", tmp / "p.png", mesh=ONE, backends="bogus")),
+    ("backends", lambda tmp: twoball.plot("pole", tmp / "p.png", mesh=ONE, backends=5)),
+    # an output onto the input mesh file
+    (
+        "out",
+        lambda tmp: twoball.export(tmp / "in.vtu", mesh=twoball.MeshOptions(file=tmp / "in.vtu")),
+    ),
+    # bare exceptions and silently accepted values of the API
+    ("bogus", lambda _: twoball.liftoff(bogus=1)),
+    ("bogus", lambda tmp: twoball.converge(study="modes", bogus=1, out=tmp / "c")),
+    ("additional", lambda _: twoball.report(5)),
+    ("additional", lambda _: twoball.report([5])),
+    ("rows", lambda _: twoball.table1(5)),
+    ("rows", lambda _: twoball.table1(["row"])),
+    ("thorough", lambda tmp: twoball.verify(thorough="yes", out=tmp / "r")),
+    ("fast", lambda tmp: twoball.verify(fast=1, out=tmp / "r")),
+    ("v0_given", lambda _: twoball.Case(v0_given="x")),
+    ("v0_given", lambda _: twoball.Case(v0=4.1, v0_given=-3.0)),
+    ("pressure_sets_c", lambda _: twoball.Case(pressure_sets_c="yes")),
+    ("pressure_sets_c", lambda _: twoball.Case(pressure_sets_c=True)),  # without a pressure
 ]
+
+
+#: Refusals whose message must say the value given, not another: (call, name, held, absent).
+MESSAGES: list[tuple[Callable[[Path], Any], str, tuple[str, ...], tuple[str, ...]]] = [
+    (lambda tmp: twoball.plot("eigen", tmp / "p.png", CASE), "case", ("kind eigen",), ("Case",)),
+    (
+        lambda tmp: twoball.export(tmp / "x.pvd", mesh=ONE, times="0,1"),
+        "times",
+        ("times must be a list of times", "got '0,1'"),
+        ("frames",),
+    ),
+    (
+        lambda tmp: twoball.plot("pole", tmp / "p.png", mesh=ONE, backends="fme"),
+        "backends",
+        ("got 'fme'",),
+        ("['f'",),
+    ),
+    (
+        lambda _: twoball.liftoff(bogus=1),
+        "bogus",
+        ("twoball.liftoff() got an unexpected keyword argument 'bogus'",),
+        (),
+    ),
+]
+
+#: Inputs far outside any ball that run and must warn with the value meant: (call, words).
+DROP = twoball.Drop(modes=16)
+UNIT_SLIPS: list[tuple[Callable[[], Any], tuple[str, ...]]] = [
+    (
+        lambda: twoball.bounce(twoball.Case(), twoball.Drop(drop_height=1000, modes=16)),
+        ("H = 1000 m", "did you mean 1 m (1000 mm) or 10 m (1000 cm)?"),
+    ),
+    (lambda: twoball.bounce(twoball.Case(v0=140.0), DROP), ("did you mean 0.14 m/s",)),
+    (lambda: twoball.bounce(twoball.Case(v0=4100.0), DROP), ("did you mean 4.1 m/s",)),
+    (lambda: twoball.bounce(twoball.Case(radius=120.0), DROP), ("did you mean 0.12 m (120 mm)",)),
+    (
+        lambda: twoball.bounce(drop=twoball.Drop(modes=16, gap=5.0), body=twoball.Body(0.1)),
+        ("gap Delta x = 5 m", "did you mean 0.005 m (5 mm)"),
+    ),
+    (
+        lambda: twoball.sweep({"drop_height": [500.0, 1000.0]}, drop=DROP).reports[0],
+        ("H = 500 m", "did you mean 0.5 m (500 mm)"),
+    ),
+]
+
+
+def test_refusals_say_the_value_given(tmp_path: Path) -> None:
+    for call, name, held, absent in MESSAGES:
+        with warnings.catch_warnings():
+            warnings.simplefilter("error")
+            with pytest.raises(twoball.ParameterError) as caught:
+                call(tmp_path)
+        text = str(caught.value)
+        assert caught.value.name == name and "\n" not in text, text
+        assert all(w in text for w in held) and not any(w in text for w in absent), text
+    assert list(tmp_path.iterdir()) == []
+
+
+def test_unknown_keywords_stay_a_type_error_too() -> None:
+    """Refused by name as a ParameterError, and still the TypeError Python gives."""
+    with pytest.raises(TypeError, match="unexpected keyword argument 'bogus'"):
+        twoball.liftoff(bogus=1)
+
+
+@pytest.mark.parametrize("call, words", UNIT_SLIPS, ids=[str(k) for k in range(len(UNIT_SLIPS))])
+def test_unit_slips_warn_with_the_value_meant(call: Any, words: tuple[str, ...]) -> None:
+    report = call()
+    assert any(all(w in text for w in words) for text in report.warnings), report.warnings
+    assert report.as_dict()["warnings"] == list(report.warnings)
+    assert report.warnings[0].startswith(("R = ", "|v0| = ", "the drop height", "the gap"))
+
+
+def test_the_meant_values_are_quiet() -> None:
+    """The same inputs in the units meant carry no such warning."""
+    meant = [
+        twoball.bounce(twoball.Case(), twoball.Drop(drop_height=1.0, modes=16)),
+        twoball.bounce(twoball.Case(radius=0.12), DROP),
+        twoball.bounce(drop=twoball.Drop(modes=16, gap=0.005), body=twoball.Body(0.1)),
+    ]
+    for report in meant:
+        assert not [w for w in report.warnings if "did you mean" in w], report.warnings
 
 
 def _limited(max_time: str, function: Callable[..., Any], *args: Any) -> Any:

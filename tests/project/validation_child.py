@@ -5,7 +5,8 @@ Usage: ``python validation_child.py CASES.json RESULTS.json``; each case is
 working directory (``{tmp}`` in ``argv`` is that folder) and a CPU-time alarm,
 so a value that slips through the checks and starts the work is reported as
 ``"status": "ran"`` instead of taking minutes.  Each result holds the exit
-status, standard error, the CPU seconds used and the files left in the folder.
+status, standard error and output, the CPU seconds used and the files left in
+the folder.
 """
 
 from __future__ import annotations
@@ -84,6 +85,7 @@ def main() -> None:
             {
                 "status": status,
                 "stderr": err.getvalue(),
+                "stdout": out.getvalue(),
                 "cpu_s": cpu() - start,
                 "wall_s": time.perf_counter() - wall,
                 "left": left_in(folder, seeded),

@@ -350,10 +350,11 @@ NOT_APPLICABLE: list[tuple[str, list[str]]] = [
         + ["--scheduler", "tcp://127.0.0.1:1"],
     ),
     # swept values outside the parameter's range: refused before the first point
-    ("--damping", ["sweep", "--param", "damping", "--values", "0:2:3"]),
-    ("--v0", ["sweep", "--param", "v0", "--values", "0:5:3"]),
-    ("--radius", ["sweep", "--param", "radius", "--values", "1e-308:1:3"]),
-    ("--modes", ["sweep", "--param", "modes", "--values", "0:30:3"]),
+    # (named as the option they were typed in: --values, with the parameter)
+    ("--values", ["sweep", "--param", "damping", "--values", "0:2:3"]),
+    ("--values", ["sweep", "--param", "v0", "--values", "0:5:3"]),
+    ("--values", ["sweep", "--param", "radius", "--values", "1e-308:1:3"]),
+    ("--values", ["sweep", "--param", "modes", "--values", "0:30:3"]),
     ("--t-end", ["sweep", "--param", "damping", "--values", "0:0.5:3", "--t-end", "0"]),
     # the drop on the floor: a floor option with a model that cannot use it
     ("--gas", ["bounce", "--gas", "none", "--membrane", "pressurised"]),
@@ -393,7 +394,10 @@ NOT_APPLICABLE: list[tuple[str, list[str]]] = [
         ["sweep", "--bounce", "--param", "gap", "--values", "0,0.1", "--mass-ratio", "0.1"]
         + ["--gap", "0.1"],
     ),
-    ("--gap", ["sweep", "--bounce", "--param", "gap", "--values", "-1,0.1", "--mass-ratio", "0.1"]),
+    (
+        "--values",
+        ["sweep", "--bounce", "--param", "gap", "--values", "-1,0.1", "--mass-ratio", "0.1"],
+    ),
     ("--gap", ["sweep", "--bounce", "--param", "gap", "--values", "0,0.1"]),
     (
         "--pair",
@@ -631,5 +635,92 @@ NO_LONGER_IGNORED: list[tuple[str, list[str]]] = [
     ("--modes", ["liftoff", "--mass-ratio", "0.1", "--modes", "2000", "--max-time", "30s"]),
     ("--modes", ["liftoff", "--preset", "tennis", "--modes", "960", "--max-time", "20s"]),
     ("--radius", ["liftoff", "--radius", "1", "--radius", "2"]),
+    # a base value the sweep would replace: the height sets |v0|, E and h set B
+    ("--v0", ["sweep", "--bounce", "--param", "drop-height", "--values", "1,2", "--v0", "3"]),
+    (
+        "--youngs-modulus",
+        ["sweep", "--param", "bending", "--values", "0,1"]
+        + ["--youngs-modulus", "1e6", "--thickness", "0.001"],
+    ),
+    # the closed form alone has no finite elements: no eigen route
+    ("--route", ["render", "--backend", "legendre", "--route", "full", "--out", "{tmp}/x.png"]),
+    (
+        "--route",
+        ["plot", "pole", "--backend", "legendre", "--route", "full", "--out", "{tmp}/p.png"],
+    ),
+    # a massless body in a sweep of the whole bounce: refused before the first point
+    ("--values", ["sweep", "--bounce", "--param", "mass-ratio", "--values", "0,0.1"]),
+    # the eigen plot has no case: the stiff ball's options too
+    ("--bending", ["plot", "eigen", "--bending", "1", "--out", "{tmp}/p.png"]),
+    ("--gas", ["plot", "eigen", "--gas", "adiabatic", "--out", "{tmp}/p.png"]),
+    # an output onto an input, two outputs with one path
+    ("--out", ["export", "--mesh-file", "{tmp}/in.vtu", "--out", "{tmp}/in.vtu"]),
+    ("--out", ["render", "--mesh-file", "{tmp}/in.png", "--out", "{tmp}/in.png"]),
+    ("--render", ["bounce", "--plot", "{tmp}/same.png", "--render", "{tmp}/same.png"]),
 ]
 NOT_APPLICABLE.extend(NO_LONGER_IGNORED)
+
+#: Refusals whose line must also say the right value or leave out a wrong one:
+#: (argv, words the line holds, words it must not hold).
+MESSAGES: list[tuple[list[str], tuple[str, ...], tuple[str, ...]]] = [
+    (["bounce", "--recontact", "paper"], ("--recontact", "got 'paper'"), ("lanczos",)),
+    (["bounce", "--sigma", "none"], ("--sigma", "got 'none'"), ()),
+    (
+        ["plot", "eigen", "--v0", "3", "--out", "{tmp}/p.png"],
+        ("--v0 must be left out with kind eigen", "got 3.0"),
+        ("Case",),
+    ),
+    (
+        ["sweep", "--param", "v0", "--values", "0,1"],
+        ("--values must be a nonzero speed", "for --param v0", "got 0.0"),
+        ("--v0 ",),
+    ),
+    (
+        ["sweep", "--bounce", "--param", "mass-ratio", "--values", "0,0.1"],
+        ("--values must be a number in (0, 100]", "for --param mass-ratio", "got 0.0"),
+        (),
+    ),
+    (["converge", "--out", "{tmp}/c"], ("converge STUDY must be given", "h, order"), ("'none'",)),
+    # budget refusals: this subcommand's flags, the defaults said to be defaults
+    (
+        ["bounce", "--max-time", "0.01s"],
+        ("--dt 1.5625e-05 (the default) --t-end 0.0981748 (the default) needs ~",),
+        (),
+    ),
+    (
+        ["bounce", "--modes", "100", "--dt", "1e-5", "--max-time", "0.01s"],
+        ("--modes 100 --dt 1e-05 --t-end 0.0981748 (the default) needs ~",),
+        (),
+    ),
+    (
+        ["render", "--level", "1", "--out", "{tmp}/x.gif", "--max-time", "0.01s"],
+        ("--frames (60 frames) (the default) needs ~",),
+        ("--frames)",),
+    ),
+    (
+        ["liftoff", "--max-time", "0.001s"],
+        ("--modes 30 (the default) needs ~",),
+        (),
+    ),
+]
+
+#: Unit slips that run (exit 0) and must warn with the value probably meant:
+#: (argv, words of the warning).  ``--modes 16`` keeps the drops short.
+UNIT_SLIPS: list[tuple[list[str], tuple[str, ...]]] = [
+    (
+        ["bounce", "--modes", "16", "--drop-height", "1000"],
+        ("H = 1000 m", "140.1 m/s", "did you mean 1 m (1000 mm)"),
+    ),
+    (["bounce", "--modes", "16", "--v0", "140"], ("|v0| = 140 m/s", "did you mean 0.14 m/s")),
+    (["bounce", "--modes", "16", "--v0", "4100"], ("did you mean 4.1 m/s (4100 mm/s)",)),
+    (["bounce", "--modes", "16", "--radius", "120"], ("R = 120 m", "did you mean 0.12 m (120 mm)")),
+    (
+        ["bounce", "--modes", "16", "--mass-ratio", "0.1", "--gap", "5"],
+        ("gap Delta x = 5 m", "did you mean 0.005 m (5 mm)"),
+    ),
+    (
+        ["sweep", "--bounce", "--modes", "16", "--param", "drop-height", "--values", "500,1000"],
+        ("2 of 2 points", "drop-height = 500", "H = 500 m", "did you mean 0.5 m (500 mm)"),
+    ),
+    (["liftoff", "--radius", "120"], ("R = 120 m", "did you mean 0.12 m (120 mm)")),
+]

@@ -43,6 +43,32 @@ class ParameterError(ValueError):
         return (type(self), (self.name, self.valid, self.got))
 
 
+class UnknownKeywordError(ParameterError, TypeError):
+    """A keyword the function does not take: a :class:`ParameterError` naming it.
+
+    Also a :class:`TypeError`, what Python raises for an unexpected keyword, so
+    code that catches that keeps working.
+
+    Examples
+    --------
+    >>> import twoball
+    >>> try:
+    ...     twoball.liftoff(bogus=1)
+    ... except twoball.ParameterError as error:
+    ...     print(error.name, "|", error)
+    bogus | bogus must be left out: twoball.liftoff() got an unexpected keyword argument 'bogus'
+    """
+
+    def __init__(self, name: str, function: str, got: object = None) -> None:
+        valid = f"left out: {function}() got an unexpected keyword argument {name!r}"
+        ParameterError.__init__(self, name, valid, None)
+        self.function = function
+
+    def __reduce__(self) -> tuple[type, tuple[str, str, object]]:
+        """Pickled with its name and function."""
+        return (type(self), (self.name, self.function))
+
+
 class NumericalError(RuntimeError):
     """A computation produced NaN/inf or did not converge; never passed on silently.
 

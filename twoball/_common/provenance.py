@@ -264,13 +264,14 @@ class Report:
         return f"<table><caption>twoball report {self.generated}</caption>{cells}</table>"
 
 
-def report(additional: Sequence[str] = ()) -> Report:
+def report(additional: str | Sequence[str] = ()) -> Report:
     """Versions of twoball, Python and its dependencies, and the platform.
 
     Parameters
     ----------
-    additional : sequence of str
-        More distributions to list (names as installed, e.g. ``"pandas"``).
+    additional : str or sequence of str
+        More distributions to list (names as installed, e.g. ``"pandas"``; one
+        name alone is one distribution).
 
     Returns
     -------
@@ -284,8 +285,18 @@ def report(additional: Sequence[str] = ()) -> Report:
     >>> sorted(twoball.report().as_dict())[:2]
     ['generated', 'packages']
     """
+    from twoball._common.errors import ParameterError
+
+    valid = "distribution names (a str or a sequence of str)"
+    names = (additional,) if isinstance(additional, str) else additional
+    try:
+        names = tuple(names)
+    except TypeError:  # not iterable
+        raise ParameterError("additional", valid, additional) from None
+    if not all(isinstance(name, str) and name for name in names):
+        raise ParameterError("additional", valid, additional)
     return Report(
         dict(platform_info()),
-        versions(tuple(additional)),
+        versions(names),
         datetime.now(UTC).isoformat(timespec="seconds"),
     )

@@ -129,8 +129,76 @@ def _usable_target(path: str | os.PathLike[str], param: str, valid: str) -> Path
         raise _parameter_error(
             param, valid + f" (the folder is not writable: {reason})", str(path)
         ) from None
+    if (out.exists() or out.is_symlink()) and mount_point(out):
+        raise _parameter_error(
+            param,
+            valid + " (it is a mount point: the output replaces it by a rename, which a "
+            "mount point refuses)",
+            str(path),
+        )
     sweep_stale(out)
     return out
+
+
+def mount_point(path: Path) -> bool:
+    """Whether ``path`` (absolute, existing) is a mount point: a rename cannot replace it.
+
+    :func:`os.path.ismount` sees a file system mounted there; a file or folder
+    bind-mounted from the same file system is found in ``/proc/self/mountinfo``.
+    """
+    if os.path.ismount(path):
+        return True
+    try:
+        real = os.path.join(os.path.realpath(path.parent), path.name)
+        with open("/proc/self/mountinfo", encoding="utf-8", errors="replace") as stream:
+            for line in stream:
+                fields = line.split(" ")
+                if len(fields) > 4 and _unescape(fields[4]) == real:
+                    return True
+    except OSError:  # no /proc: ismount's answer stands
+        return False
+    return False
+
+
+def _unescape(text: str) -> str:
+    """A mountinfo path: ``\\040`` is a space (octal escapes of space, tab, newline, backslash)."""
+    return re.sub(r"\\([0-7]{3})", lambda m: chr(int(m.group(1), 8)), text)
+
+
+def same_path(a: str | os.PathLike[str], b: str | os.PathLike[str]) -> bool:
+    """Whether ``a`` and ``b`` name one file: the same inode, or the same absolute path."""
+    first, second = Path(a).expanduser(), Path(b).expanduser()
+    with contextlib.suppress(OSError):
+        if first.exists() and second.exists():
+            return os.path.samefile(first, second)
+    return os.path.abspath(first) == os.path.abspath(second)
+
+
+def check_distinct(
+    outputs: dict[str, str | os.PathLike[str] | None],
+    inputs: dict[str, object] | None = None,
+    labels: dict[str, str] | None = None,
+) -> None:
+    """Refuse, before any work, two outputs with one path, or an output onto an input.
+
+    ``outputs`` maps each output's parameter (``plot``, ``render``) to its path
+    (None: not given); ``inputs`` maps a description (``the input mesh file``)
+    to its path (not a path: skipped).  The error names the later output and
+    what it collides with (``labels``: how to show an output's name there, e.g.
+    its flag).
+    """
+    labels = labels or {}
+    seen: list[tuple[str, Path]] = []
+    for what, path in (inputs or {}).items():
+        if isinstance(path, str | os.PathLike) and os.fspath(path):
+            seen.append((what, Path(path)))
+    for name, path in outputs.items():
+        if path is None:
+            continue
+        for what, earlier in seen:
+            if same_path(path, earlier):
+                raise _parameter_error(name, f"a path other than {what}", os.fspath(path))
+        seen.append((f"the output of {labels.get(name, name)}", Path(path)))
 
 
 def check_path_type(path: object, param: str = "out") -> str | os.PathLike[str]:

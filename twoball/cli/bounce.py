@@ -312,6 +312,10 @@ def run(args: argparse.Namespace) -> int:
 
     plot = None if args.plot is None else check_figure_path(args.plot, "plot")
     export, render, frames = _field_targets(args)
+    from twoball._common.staging import check_distinct
+
+    outputs = {"plot": args.plot, "export": args.export, "render": args.render}  # one path each
+    check_distinct(outputs, labels={name: f"--{name}" for name in outputs})
     report = bounce_from_options(args)
     if plot is not None:
         report.plot(plot)

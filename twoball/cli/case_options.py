@@ -129,11 +129,20 @@ CASE_OPTIONS = (
 
 def case_options_given(args: argparse.Namespace) -> bool:
     """Whether any option of the case (or a preset or g other than the default) was given."""
-    return (
-        any(getattr(args, name) is not None for name in CASE_OPTIONS)
-        or args.preset != "basketball"
-        or args.g != _choices.STANDARD_GRAVITY
-    )
+    return first_case_option(args) is not None
+
+
+def first_case_option(args: argparse.Namespace) -> tuple[str, object] | None:
+    """The first option of the case given (name and value as typed), or None."""
+    if args.preset != "basketball":
+        return "preset", args.preset
+    stiffness = ("bending", "youngs_modulus", "thickness", "poisson", "gas", "atmosphere")
+    for name in (*CASE_OPTIONS, *stiffness):
+        if getattr(args, name, None) is not None:
+            return name, getattr(args, name)
+    if args.g != _choices.STANDARD_GRAVITY:
+        return "g", args.g
+    return None
 
 
 def series_options(args: argparse.Namespace) -> twoball.Series | None:

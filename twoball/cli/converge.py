@@ -7,6 +7,7 @@ from __future__ import annotations
 
 import argparse
 import sys
+from collections.abc import Sequence
 from pathlib import Path
 from typing import Any
 
@@ -20,8 +21,8 @@ from twoball.cli.console import Table, console, print_notes, print_warnings
 MESHES = ("sphere", "axisym")
 
 
-def print_study(study: Any, out: Path) -> None:
-    """The summary table, the notes and where the files went."""
+def print_study(study: Any, out: Path, said: Sequence[str] = ()) -> None:
+    """The summary table, the notes (but those ``said`` already) and where the files went."""
     from twoball._studies import summary_rows
 
     header, rows = summary_rows(study)
@@ -35,7 +36,8 @@ def print_study(study: Any, out: Path) -> None:
     settings = study.settings
     out_console.print(f"phi_a = {settings['phi_a_rad']:.6f} rad ({settings['phi_a_source']})")
     for note in study.notes:
-        out_console.print("* " + note)
+        if note not in said:
+            out_console.print("* " + note)
     verdict = "PASS" if study.passed else "FAIL"
     out_console.print(f"{verdict} ({study.seconds:.1f} s); report in {out}/")
 
@@ -70,7 +72,7 @@ def run(args: argparse.Namespace) -> int:
         data["out"] = str(target)
         sys.stdout.write(json_text(data))
     else:
-        print_study(study, target)
+        print_study(study, target, case.notes)
     return 0 if study.passed else 1
 
 
@@ -80,7 +82,8 @@ def chosen_study(positional: str | None, option: str | None) -> str:
         raise ParameterError("study", "given once, as STUDY or --study", f"{positional}, {option}")
     study = positional if positional is not None else option
     if study is None:
-        raise ParameterError("study", "one of " + ", ".join(_choices.STUDIES), "none")
+        valid = "given (none was): one of " + ", ".join(_choices.STUDIES)
+        raise ParameterError("study", valid, None)
     return study
 
 

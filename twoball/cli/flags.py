@@ -160,11 +160,7 @@ def cli_message(error: ParameterError, args: Namespace | None = None) -> str:
 
     if isinstance(error, BudgetError):  # "modes 100000 t_end 2 needs ...": every name a flag
         asked, needs, rest = text.partition(" needs ")
-        words = asked.split(" ")
-        asked = " ".join(
-            flag_of(w.rstrip(")"), args) + w[len(w.rstrip(")")) :] if w.rstrip(")") in FLAGS else w
-            for w in words
-        )
+        asked = budget_flags(asked, args)
         for name in ("max_memory", "max_time"):  # the advice names the limit's flag
             rest = rest.replace(name, FLAGS[name])
         return asked + needs + rest
@@ -172,3 +168,42 @@ def cli_message(error: ParameterError, args: Namespace | None = None) -> str:
     if text.startswith(name):
         return flag_of(name, args) + text[len(name) :]
     return text
+
+
+def budget_flags(asked: str, args: Namespace | None = None) -> str:
+    """The work a budget refusal names, in this subcommand's flags.
+
+    ``dt 1.5625e-05 t_end 0.098`` -> ``--dt 1.5625e-05 (the default) --t-end 0.098
+    (the default)``: a name becomes its flag when the subcommand has that option,
+    marked ``(the default)`` when the user did not give it; a name the subcommand
+    has no option for stays a name.  Words inside parentheses (``frames (25
+    frames)``) are the value's own.
+    """
+    out: list[str] = []
+    depth, pending = 0, False
+    for word in asked.split(" "):
+        bare = word.rstrip("),")
+        if depth == 0 and not pending and bare in FLAGS:
+            shown, pending = _budget_flag(bare, args)
+            out.append(shown + word[len(bare) :])
+        else:
+            out.append(word)
+            if pending and depth + word.count("(") - word.count(")") == 0:
+                out[-1] += " (the default)"
+                pending = False
+        depth += word.count("(") - word.count(")")
+    return " ".join(out)
+
+
+def _budget_flag(name: str, args: Namespace | None) -> tuple[str, bool]:
+    """``(flag, is the default)`` of ``name`` for this subcommand, or ``(name, False)``."""
+    flag = flag_of(name, args)
+    if args is None or not flag.startswith("--"):
+        return flag, False
+    dest = flag[2:].replace("-", "_")
+    value = getattr(args, dest, None)
+    if dest in getattr(args, "_given_once", {}) or isinstance(value, list):
+        return flag, False  # given (an option given in turns, like --values, is a list)
+    if dest in vars(args):  # an option of this subcommand, left at its default
+        return flag, True
+    return name, False

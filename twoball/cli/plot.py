@@ -14,7 +14,7 @@ from twoball.cli.case_options import (
     add_case_options,
     apply_limits,
     case_from_options,
-    case_options_given,
+    first_case_option,
     series_options,
 )
 from twoball.cli.console import console, key_value_table, print_notes, print_warnings
@@ -59,10 +59,14 @@ def run(args: argparse.Namespace) -> int:
     orders = None
     if args.orders is not None:
         orders = parse_list(args.orders, "orders", "comma-separated orders 1 to 4", {1, 2, 3, 4})
-    if args.kind == "eigen":  # no case: every case option given is passed on and refused
+    if args.kind == "eigen":  # no case: every case option given is refused by its flag
         refuse_mesh_flags(args, "with kind eigen (use --levels, --orders)")
         apply_limits(args)
-        case = case_from_options(args) if case_options_given(args) else None
+        given = first_case_option(args)
+        if given is not None:
+            valid = "left out with kind eigen (use --levels, --orders)"
+            raise ParameterError(given[0], valid, given[1])
+        case = None
         steps = len(levels or (1, 2, 3)) * len(orders or (1, 2)) + 1
     else:
         case = case_from_options(args)

@@ -3,6 +3,8 @@
 from __future__ import annotations
 
 import argparse
+from collections.abc import Iterator, Sequence
+from contextlib import contextmanager
 from typing import Any
 
 from twoball import _choices
@@ -82,10 +84,14 @@ def run(args: argparse.Namespace) -> int:
     grid = _choices.make_grid(args.param, args.values)
     for name in grid.parameters:  # the swept parameter's base value would be replaced
         field = _choices.SWEEP_PARAMETERS[name]
-        if getattr(args, field, None) is not None:
-            raise ParameterError(
-                field, f"left out when --param {name} is swept", getattr(args, field)
-            )
+        fields = (field,)
+        if field == "bending":  # B also comes from the wall's material: E and h (and nu)
+            fields += ("youngs_modulus", "thickness", "poisson")
+        for given in fields:
+            if getattr(args, given, None) is not None:
+                raise ParameterError(
+                    given, f"left out when --param {name} is swept", getattr(args, given)
+                )
     why = {  # --pressure and --mass give c by eq. (3.8) at the base radius, once
         "wave-speed": "the swept values would replace the c they give by eq. (3.8)",
         "radius": "the c they give by eq. (3.8) would stay that of the base radius",
@@ -104,7 +110,10 @@ def run(args: argparse.Namespace) -> int:
     total = 1
     for n in grid.shape:
         total *= n
-    with Reporter(f"sweep {' x '.join(grid.parameters)}", total=total, delay=QUICK) as bar:
+    with (
+        Reporter(f"sweep {' x '.join(grid.parameters)}", total=total, delay=QUICK) as bar,
+        swept_values(grid.parameters),
+    ):
         result = twoball.sweep(
             values,
             base,
@@ -142,8 +151,9 @@ def _run_bounce(args: argparse.Namespace) -> int:
     from twoball._files import check_figure_path
     from twoball.cli.bounce import drop_case, drop_options, whole_body
 
-    for name in args.param:
-        field = {"v0": "v0", "gap": "gap", "mass-ratio": "mass_ratio"}.get(name)
+    for name in args.param:  # the base value the swept one replaces (a height sets |v0|)
+        replaced = {"v0": "v0", "gap": "gap", "mass-ratio": "mass_ratio", "drop-height": "v0"}
+        field = replaced.get(name)
         if field is not None and getattr(args, field, None) is not None:
             raise ParameterError(
                 field, f"left out when --param {name} is swept", getattr(args, field)
@@ -167,7 +177,7 @@ def _run_bounce(args: argparse.Namespace) -> int:
     stepping = None if args.t_end is None else twoball.Stepping(t_end=args.t_end)
     from twoball._common.progress import QUICK, Reporter
 
-    with Reporter("sweep of the drop", delay=QUICK) as bar:
+    with Reporter("sweep of the drop", delay=QUICK) as bar, swept_values(args.param):
         result = twoball.sweep(
             values,
             case,
@@ -178,6 +188,9 @@ def _run_bounce(args: argparse.Namespace) -> int:
             workers=workers(args),
             progress=bar.update,
         )
+    done = [r for r in result.reports if r is not None]
+    print_notes(list(dict.fromkeys(n for r in done for n in r.notes)))
+    print_warnings(bounce_sweep_warnings(result))
     if plot is not None:
         result.plot(plot)
     if args.json:
@@ -204,6 +217,50 @@ def _run_bounce(args: argparse.Namespace) -> int:
         )
     console().print(table)
     return 0
+
+
+@contextmanager
+def swept_values(parameters: Sequence[str]) -> Iterator[None]:
+    """A swept value refused is named as the option the user typed it in: ``--values``.
+
+    The API names the parameter (``v0 must be a nonzero speed ...``); on the command
+    line the value came from ``--values``, so the line says ``--values must be ...
+    for --param v0, got 0.0``.  Budget refusals, and refusals of the parameter
+    itself (no value shown), keep their own names.
+    """
+    from twoball._common.budget import BudgetError
+
+    fields = {name.replace("-", "_"): name for name in parameters}
+    try:
+        yield
+    except BudgetError:
+        raise
+    except ParameterError as error:
+        name = fields.get(str(error.name))
+        if name is None or error.got is None:  # not a value: the parameter itself refused
+            raise
+        valid = f"{error.valid} for --param {name}"
+        raise ParameterError("values", valid, error.got) from None
+
+
+def bounce_sweep_warnings(result: Any) -> list[str]:
+    """One warning for a sweep of the drop: how many points carry warnings, the first.
+
+    The first is named by its swept value (``drop-height = 500``); each point's
+    warnings are in the JSON.
+    """
+    flagged = [
+        (value, report)
+        for value, report in zip(result.values, result.reports, strict=True)
+        if report is not None and report.warnings
+    ]
+    if not flagged:
+        return []
+    value, report = flagged[0]
+    return [
+        f"{len(flagged)} of {len(result.values)} points carry warnings (see --json), the first "
+        f"at {result.parameter} = {value:g}: {report.warnings[0]}"
+    ]
 
 
 def _print_whole(result: Any) -> None:

@@ -186,9 +186,17 @@ def build_mesh(
 
 
 def legendre_backend(
-    case: Case, mesh: SphereMesh, sigma: str, recontact: str, t_end: float
+    case: Case,
+    mesh: SphereMesh,
+    sigma: str,
+    recontact: str,
+    t_end: float,
+    window_given: bool = True,
 ) -> Backend:
-    """The closed form of eq. (3.16) with its Legendre modes at the nodes of ``mesh``."""
+    """The closed form of eq. (3.16) with its Legendre modes at the nodes of ``mesh``.
+
+    ``window_given``: whether the user gave the window ``t_end`` (for its warnings).
+    """
     series = legendre_series(
         case.phi_a, case.damping_law, SpectralFilter(sigma, case.modes), stiffness=case.stiffness
     )
@@ -200,6 +208,7 @@ def legendre_backend(
         sigma=sigma,
         recontact=recontact,
         t_end_s=t_end * case.scalings.time,
+        window_given=window_given,
     )
     return Backend("legendre", series, shapes, report, {"modes": float(case.modes)})
 
@@ -296,10 +305,12 @@ def fem_backend(
     initial: str = "projection",
     route: str = "auto",
     geometry: str = "isoparametric",
+    window_given: bool = True,
 ) -> tuple[SphereMesh, Backend]:
     """The finite-element backend and its mesh, see :func:`fem_nodal_series`.
 
-    Lift-off by the shared :func:`twoball.modal.report.report_liftoff`.
+    Lift-off by the shared :func:`twoball.modal.report.report_liftoff`
+    (``window_given``: whether the user gave the window, for its warnings).
     """
     nodes, series, shapes, details = fem_nodal_series(
         case, level, order, mesh, sigma, initial, route, t_end, geometry
@@ -311,6 +322,7 @@ def fem_backend(
         sigma=sigma,
         recontact=recontact,
         t_end_s=t_end * case.scalings.time,
+        window_given=window_given,
     )
     return nodes, Backend("fem", series, shapes, report, details)
 
@@ -324,12 +336,14 @@ def solve_backends(
     recontact: str,
     t_end: float,
     route: str,
+    window_given: bool = True,
 ) -> BallModel:
     """``case`` solved by ``backends`` on the sphere mesh ``field`` (no upper body).
 
     The finite elements (when asked) give the mesh whose nodes carry the
     fields (:func:`fem_backend`); the closed form is evaluated at those nodes,
-    or at the generated mesh's nodes without finite elements.
+    or at the generated mesh's nodes without finite elements.  ``window_given``:
+    whether the user gave the window ``t_end`` (for its warnings).
     """
     spec = field.spec
     initial = spec.initial or DEFAULT_INITIAL
@@ -346,11 +360,14 @@ def solve_backends(
             initial,
             route,
             spec.geometry,
+            window_given,
         )
     else:
         unit_mesh = build_mesh(case, spec.level, field.order, field.mesh, spec.geometry)
     if "legendre" in backends:
-        solved["legendre"] = legendre_backend(case, unit_mesh, sigma, recontact, t_end)
+        solved["legendre"] = legendre_backend(
+            case, unit_mesh, sigma, recontact, t_end, window_given
+        )
     return BallModel(case, unit_mesh, solved, t_end, sigma, recontact, source=field.source)
 
 
@@ -428,7 +445,14 @@ def ball_model(
         field = replace(field, loaded=field.spec.load())
     say(f"solving {solved_text(backends)} on {field.spec.label}")
     return solve_backends(
-        case, field, tuple(backends), sigma=sigma, recontact=recontact, t_end=t_end, route=route
+        case,
+        field,
+        tuple(backends),
+        sigma=sigma,
+        recontact=recontact,
+        t_end=t_end,
+        route=route,
+        window_given=t_end_s is not None,
     )
 
 

@@ -190,10 +190,10 @@ class PlotOptions:
             raise ParameterError("max_degree", "an integer >= 1", degree)
         if self.backends is not None:
             chosen = self.backends
-            valid = "a non-empty list of " + ", ".join(BACKENDS)
-            if isinstance(chosen, (str, bytes, set, frozenset, dict)) or not hasattr(
-                chosen, "__len__"
-            ):
+            valid = "one of " + ", ".join(BACKENDS) + " or a non-empty list of them"
+            if isinstance(chosen, str):  # one name (or "fem,legendre", as typed on a command line)
+                chosen = [b.strip() for b in chosen.split(",")]
+            if isinstance(chosen, (bytes, set, frozenset, dict)) or not hasattr(chosen, "__len__"):
                 raise ParameterError("backends", valid, chosen)
             chosen = tuple(dict.fromkeys(chosen))
             if not chosen or any(not isinstance(b, str) or b not in BACKENDS for b in chosen):

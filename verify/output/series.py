@@ -708,7 +708,9 @@ def is_twoball_h5(path: Path) -> bool:
     return isinstance(versions, dict) and "twoball" in block
 
 
-def check_side_entries(path: str | os.PathLike[str], fmt: str | None = None) -> None:
+def check_side_entries(
+    path: str | os.PathLike[str], fmt: str | None = None, param: str = "out"
+) -> None:
     """Refuse, before any work, a side entry of ``path`` that twoball did not write.
 
     ``NAME.xdmf`` writes ``NAME.h5`` beside it: an existing ``NAME.h5`` must be
@@ -720,9 +722,10 @@ def check_side_entries(path: str | os.PathLike[str], fmt: str | None = None) -> 
     Raises
     ------
     ParameterError
-        Naming ``out`` and the entry, for the one-line command-line error.
+        Naming ``param`` (the option of the path) and the entry, for the one-line
+        command-line error.
     """
-    from twoball._common.staging import foreign_entry
+    from twoball._common.staging import foreign_entry, mount_point
 
     out = Path(path).expanduser().absolute()
     fmt = series_format(out, fmt)
@@ -730,9 +733,15 @@ def check_side_entries(path: str | os.PathLike[str], fmt: str | None = None) -> 
         side = out.with_suffix(".h5")
         if side.is_symlink() or side.is_dir() or (side.exists() and not is_twoball_h5(side)):
             raise ParameterError(
-                "out",
+                param,
                 "a path whose side file NAME.h5 is missing or one twoball wrote",
                 f"{path} ({side.name} is there and twoball did not write it)",
+            )
+        if side.exists() and mount_point(side):  # a rename cannot replace it
+            raise ParameterError(
+                param,
+                "a path whose side file NAME.h5 is not a mount point",
+                f"{path} ({side.name} is one)",
             )
     elif fmt == "pvd":
         pattern = _frames_pattern(out)
@@ -743,7 +752,7 @@ def check_side_entries(path: str | os.PathLike[str], fmt: str | None = None) -> 
                 ours = entry.is_dir() and not entry.is_symlink() and foreign_entry(entry) is None
                 if not ours:
                     raise ParameterError(
-                        "out",
+                        param,
                         "a path whose side folders NAME_frames-* are ones twoball wrote",
                         f"{path} ({entry.name} is there and twoball did not write it)",
                     )
