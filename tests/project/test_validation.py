@@ -18,8 +18,10 @@ import sys
 from pathlib import Path
 
 import pytest
+from twoball.fem_membrane.mesh import icosphere
 
 from tests import ROOT
+from tests.meshes import on_ball, write
 from tests.project import validation_table as table
 from twoball.cli.main import COMMANDS, full_parser
 
@@ -29,12 +31,16 @@ REFUSAL_CPU_S = 2.0
 
 
 def run_child(cases: list[tuple[str, list[str]]], tmp_path: Path) -> list[dict]:
-    """Run ``cases`` in one child interpreter; each in a fresh folder holding ``a-file``."""
+    """Run ``cases`` in one child interpreter; each in a fresh folder holding ``a-file``
+    (and ``ball.vtu``, a readable sphere mesh, where the case names it)."""
     items = []
     for k, (_, argv) in enumerate(cases):
         folder = tmp_path / f"case{k}"
         folder.mkdir()
         (folder / "a-file").write_text("")
+        if any("{tmp}/ball.vtu" in word for word in argv):
+            mesh = icosphere(1)
+            write(folder / "ball.vtu", on_ball(mesh), mesh.cells)
         items.append({"argv": argv, "folder": str(folder)})
     (tmp_path / "cases.json").write_text(json.dumps(items))
     env = dict(os.environ, OPENBLAS_NUM_THREADS="1", MPLBACKEND="Agg", PYTHONPATH=str(ROOT))

@@ -197,7 +197,10 @@ class PlotOptions:
                 raise ParameterError("backends", valid, chosen)
             chosen = tuple(dict.fromkeys(chosen))
             if not chosen or any(not isinstance(b, str) or b not in BACKENDS for b in chosen):
-                raise ParameterError("backends", valid, list(self.backends))
+                given = self.backends
+                raise ParameterError(
+                    "backends", valid, given if isinstance(given, str) else list(given)
+                )
             object.__setattr__(self, "backends", chosen)
 
     def given(self) -> dict[str, Any]:
