@@ -30,6 +30,7 @@ __all__ = [
     "DEFAULT_ELEMENTS",
     "DEFAULT_WINDOW",
     "BounceReport",
+    "drop_elements",
     "bounce",
     "bounce_sweep",
 ]
@@ -39,8 +40,23 @@ BACKENDS: tuple[str, ...] = ("legendre", "fem")
 DEFAULT_DT = 0.005
 #: Window in units of 1/c: ten pressure x area contact times pi / c.
 DEFAULT_WINDOW = 10.0 * math.pi
-#: Axisymmetric elements of the finite-element drop (P2: node spacing pi / 192, as N = 192).
+#: Axisymmetric elements of the finite-element drop at P2: node spacing pi / 192, as N = 192.
 DEFAULT_ELEMENTS = 96
+#: Nodes of the drop's default line at every order: ``NODE_INTERVALS / order`` elements.
+NODE_INTERVALS = 2 * DEFAULT_ELEMENTS
+
+
+def drop_elements(order: int) -> int:
+    """Default axisymmetric elements of the drop at ``order``: the node spacing pi / 192.
+
+    192 at P1, 96 at P2, 64 at P3, 48 at P4: the floor points (the nodes of the
+    lower hemisphere) are the same 96 whatever the order, so the contact is
+    resolved alike and an order given explicitly changes the polynomial, not
+    the floor.
+    """
+    return -(-NODE_INTERVALS // int(order))
+
+
 #: Largest time step in units of 1/c (a twentieth of the pressure x area contact time).
 MAX_DT = math.pi / 20.0
 #: Fewest floor points across the largest contact before the result is flagged.
@@ -93,7 +109,11 @@ def bounce(
         Legendre modes (floor points at the Gauss-Radau nodes) or axisymmetric
         finite elements (floor points at the nodes).
     mesh : MeshOptions or "axisym", optional
-        Finite elements only: the line ``axisym`` (default 96 elements, P2).
+        Finite elements only: the line ``axisym`` (default, or ``"axisym"``: 96
+        P2 elements, node spacing pi / 192).  A :class:`MeshOptions` is used as
+        given: give its ``elements`` (:func:`drop_elements` is the drop's
+        default at each order, as the command line takes it; MeshOptions' own
+        default of 400 line elements is the lift-off's).
     stepping : Stepping, optional
         ``dt`` [s] (default 0.005 / c) with ``scheme="moreau-jean"`` (the only
         scheme of the drop), and the window ``t_end`` [s] (default 10 pi / c,
@@ -129,6 +149,10 @@ def bounce(
     """
     from twoball.modal.stepping import Stepping
 
+    if isinstance(mesh, str) and mesh == "axisym":  # the kind named: the drop's own default line
+        from twoball.fem_membrane.options import MeshOptions
+
+        mesh = MeshOptions("axisym", elements=DEFAULT_ELEMENTS)
     given = bundles(
         "twoball.bounce",
         mesh=mesh,
