@@ -180,14 +180,23 @@ def bounce(
     step = given.stepping if given.stepping is not None else Stepping()
     gap = drop.gap / case.radius
     dt, t_end = _times(case, step, gap)
-    ball, resolution = _ball(case, drop, backend, given.mesh, spectrum, law, dt, t_end)
+    from twoball.modal.floor.cost import expected_span
+
+    v0 = case.v0 / case.scalings.velocity
+    work = {  # the likely cost (the step loop watches the deadline beyond it)
+        "span": expected_span(whole is not None, gap, v0),
+        "v0": v0,
+        # a body that is not a Table 1 pair: the ball alone is dropped again (baselines)
+        "runs": 2 if whole is not None and whole.pair is None else 1,
+    }
+    ball, resolution = _ball(case, drop, backend, given.mesh, spectrum, law, dt, t_end, work)
     from twoball.modal.floor.drop import DropSettings, run_drop
     from twoball.modal.floor.system import floor_system
 
     row = None if whole is None else _body_row(ball, whole, gap)
     system = floor_system(ball, case.gamma, drop.floor_restitution, row)
     settings = DropSettings(case.v0 / case.scalings.velocity, case.gamma, dt, t_end)
-    result = run_drop(system, settings)
+    result = run_drop(system, settings, label="the whole bounce" if row is not None else "the drop")
     warnings += _warnings(result, ball, dt)
     model = {
         "resolution": resolution,
@@ -272,7 +281,7 @@ def _e2_alone(result: Any) -> tuple[float, str]:
     alone = floor_system(system.ball, system.gamma, float(system.problem.restitution[0]))
     # the ball alone is a reference: its own default window, whatever window the run had
     settings = replace(result.settings, t_end=max(result.settings.t_end, DEFAULT_WINDOW))
-    run = run_drop(alone, settings)
+    run = run_drop(alone, settings, label="the ball alone (the baselines' e2)")
     if run.e2 is None:
         raise NumericalError("the ball alone did not leave the floor within the window")
     return float(run.e2), "a drop of the ball alone at the same resolution"
@@ -353,8 +362,13 @@ def _ball(
     law: Any,
     dt: float,
     t_end: float,
+    work: dict[str, float],
 ) -> tuple[Any, str]:
-    """The ball in modal coordinates on the chosen backend (after the budget check)."""
+    """The ball in modal coordinates on the chosen backend (after the budget check).
+
+    ``work``: the expected span, the dimensionless |v0| and the number of drops
+    (:func:`~twoball.modal.floor.cost.check_drop`).
+    """
     from twoball.modal.floor.cost import check_drop
 
     if backend == "legendre":
@@ -364,7 +378,8 @@ def _ball(
         from twoball.modal.floor.ball import legendre_ball
 
         modes = DEFAULT_MODES if drop.modes is None else drop.modes
-        check_drop(modes, modes // 2, t_end, dt, **_asked(case, drop.modes, "modes", dt, t_end))
+        asked = _asked(case, drop.modes, "modes", dt, t_end)
+        check_drop(modes, modes // 2, t_end, dt, **work, **asked)
         return legendre_ball(modes, spectrum, law), f"legendre N = {modes}"
     if drop.modes is not None:
         raise ParameterError("modes", "left out with backend fem (the mesh sets it)", drop.modes)
@@ -380,7 +395,7 @@ def _ball(
         )
     dofs = options.elements * options.order
     asked = _asked(case, options.elements, "elements", dt, t_end)
-    check_drop(dofs, dofs // 2, t_end, dt, dense=True, **asked)
+    check_drop(dofs, dofs // 2, t_end, dt, dense=True, **work, **asked)
     return axisym_ball(options.elements, options.order, spectrum, law), options.label
 
 

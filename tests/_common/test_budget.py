@@ -251,6 +251,69 @@ def test_dense_eigenpairs_in_a_child_stop_at_the_deadline() -> None:
         assert time.monotonic() - start < 1.5
 
 
+def test_the_drops_eigenpairs_and_steps(monkeypatch) -> None:
+    """The drop, the whole bounce and the finite elements' dense eigenpairs stop at the
+    deadline; from 500 unknowns the eigenpairs run in a child (its check comes first)."""
+    from twoball.fem_membrane.floor import axisym_ball
+    from twoball.modal.damping import ModalRatio
+    from twoball.modal.stiffness import Stiffness
+
+    from twoball._common.budget import Budget
+
+    monkeypatch.setattr(Budget, "check", lambda self, option, estimate: estimate)
+    quick = twoball.Drop(modes=16)
+    assert "while the drop: step 0, 0 % of the window" in past_the_deadline(
+        lambda: twoball.bounce(drop=quick)
+    )
+    assert "while the whole bounce: step 0," in past_the_deadline(
+        lambda: twoball.bounce(drop=quick, body=twoball.Body(0.1))
+    )
+    text = past_the_deadline(lambda: axisym_ball(300, 2, Stiffness(), ModalRatio(0.1)))
+    assert "while dense eigenpairs of the drop's 601 unknowns (LAPACK)" in text
+
+
+@pytest.mark.parametrize(
+    "call",
+    [
+        {"drop": twoball.Drop(modes=64)},
+        {"drop": twoball.Drop(modes=64, drop_height=300.0)},  # 77 m/s: the points rattle
+        {"drop": twoball.Drop(modes=64), "body": twoball.Body(0.1)},
+        {"backend": "fem", "mesh": twoball.MeshOptions("axisym", elements=32, order=3)},
+        {"backend": "fem", "mesh": twoball.MeshOptions("axisym", elements=24, order=4),
+         "pair": "tennis-coin"},
+    ],
+)  # fmt: skip
+def test_the_drops_cost_model_counts_its_steps(call) -> None:
+    """The estimate's steps (span, localised touches) against the steps taken: 0.5-2.5x
+    (measured 1.1-2.2x); its seconds per step are calibrated in modal/floor/cost.py."""
+    from twoball.modal.floor.cost import drop_steps, expected_span
+
+    report = twoball.bounce(**call)
+    case, model = report.case, report.model
+    v0 = case.v0 / case.scalings.velocity
+    span = expected_span("body" in call or "pair" in call, 0.0, v0)
+    steps = drop_steps(model["floor_points"], span, model["dt_s"] * case.wave_speed, v0)
+    assert 0.5 <= steps / report.result.steps <= 2.5, (steps, report.result.steps)
+
+
+def test_the_drop_on_the_command_line_stops_at_the_deadline(tmp_path, monkeypatch, capsys):
+    """With its estimate let through, a 140 m/s drop (thousands of steps) meets the deadline
+    in its step loop: one line, exit 3."""
+    import contextlib
+
+    from twoball._common.budget import Budget
+    from twoball.cli.main import main
+
+    monkeypatch.setattr(Budget, "check", lambda self, option, estimate: estimate)
+    monkeypatch.chdir(tmp_path)
+    with pytest.raises(SystemExit) as stop, contextlib.suppress(KeyboardInterrupt):
+        main(["--quiet", "bounce", "--max-time", "1s", "--drop-height", "1000"])
+    [line] = capsys.readouterr().err.splitlines()
+    assert stop.value.code == 3
+    assert line.startswith("twoball: error: stopped at the time limit 1 s after 1")
+    assert ", while the drop: step " in line and line.endswith("(raise the time limit, --max-time)")
+
+
 def run_cli(argv: list[str], cwd: Path, **kwargs) -> tuple[subprocess.CompletedProcess, float]:
     env = dict(os.environ, OPENBLAS_NUM_THREADS="1", MPLBACKEND="Agg", PYTHONPATH=str(ROOT))
     for name in ("TWOBALL_MAX_MEMORY", "TWOBALL_MAX_TIME"):

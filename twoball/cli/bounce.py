@@ -308,17 +308,24 @@ def _field_targets(args: argparse.Namespace) -> tuple[Any, Any, int]:
 
 def run(args: argparse.Namespace) -> int:
     """Run ``twoball bounce``."""
+    from twoball._common.progress import QUICK, Reporter
     from twoball._files import check_figure_path
 
     plot = None if args.plot is None else check_figure_path(args.plot, "plot")
     export, render, frames = _field_targets(args)
-    report = bounce_from_options(args)
-    if plot is not None:
-        report.plot(plot)
-    if export is not None:
-        report.export(export, frames=frames)
-    if render is not None:
-        report.render(render, frames=frames)
+    # the solvers say what they do (eigenpairs, the steps of the drop) through the
+    # activity of the progress line; quick runs print nothing
+    with Reporter("bounce", delay=QUICK) as progress:
+        progress(args.backend)
+        report = bounce_from_options(args)
+        for name, target, write in (
+            ("figure", plot, report.plot),
+            ("export", export, lambda out: report.export(out, frames=frames)),
+            ("render", render, lambda out: report.render(out, frames=frames)),
+        ):
+            if target is not None:
+                progress(f"{name} {target.name}")
+                write(target)
     print_notes(list(report.notes))
     print_warnings(report.warnings)
     if args.json:
