@@ -152,3 +152,12 @@ def test_bad_contact_input_names_the_parameter(call, name):
     with pytest.raises(twoball.ParameterError) as info:
         call()
     assert info.value.name == name
+
+
+def test_the_closed_form_reports_its_step():
+    """The closed form says what it does (its converged reference may sum thousands of modes),
+    so the command line's progress line starts with it."""
+    steps = []
+    case = twoball.Case.preset("basketball")
+    twoball.liftoff(case, progress=steps.append)
+    assert steps == [f"the closed form on {case.modes} Legendre modes"]

@@ -32,7 +32,7 @@ import os
 import signal
 import sys
 from collections.abc import Callable, Sequence
-from concurrent.futures import ProcessPoolExecutor, as_completed
+from concurrent.futures import FIRST_COMPLETED, ProcessPoolExecutor, wait
 from dataclasses import dataclass
 from numbers import Integral
 from typing import Any
@@ -47,6 +47,8 @@ MIN_PARALLEL_ITEMS = 16
 MAX_CHUNK = 32
 #: Chunks aimed at per worker (load balance and progress granularity).
 CHUNKS_PER_WORKER = 8
+#: Seconds between two checks of the time limit while the pool's chunks run.
+POLL_SECONDS = 0.5
 
 VALID_RANGES = {"workers": "an integer >= 1"}
 #: How long to try reaching a Dask scheduler before giving up (``--scheduler``).
@@ -354,6 +356,8 @@ class Runner:
         items per message (use 1 for tasks that take much longer than a solve).
         """
         items = list(items)
+        if progress is not None:  # the progress line starts now (any pool has forked)
+            progress(0)
         parallel = self._pool is not None or self._client is not None
         if not parallel or len(items) < max(1, min_parallel):
             return self._serial(func, items, progress)
@@ -362,7 +366,13 @@ class Runner:
         chunks = [items[s : s + size] for s in starts]
         results: list[Outcome | None] = [None] * len(items)
         done = 0
-        for start, outcomes in self._chunks(func, starts, chunks):
+        workers = f"{self.capacity} workers" if self.capacity > 1 else "1 worker"
+
+        def waiting() -> None:  # while no chunk finishes: the deadline, what runs
+            check_deadline(f"item {done + 1} of {len(items)} ({workers})")
+
+        waiting()
+        for start, outcomes in self._chunks(func, starts, chunks, waiting):
             check_deadline(f"item {done + 1} of {len(items)}")
             results[start : start + len(outcomes)] = outcomes
             done += len(outcomes)
@@ -379,8 +389,11 @@ class Runner:
                 progress(k + 1)
         return out
 
-    def _chunks(self, func, starts, chunks):
-        """Yield ``(start, outcomes)`` per chunk as they finish; failures become errors."""
+    def _chunks(self, func, starts, chunks, waiting=None):
+        """Yield ``(start, outcomes)`` per chunk as they finish; failures become errors.
+
+        ``waiting()`` is called every :data:`POLL_SECONDS` while no local chunk
+        finishes (the deadline of the time limit)."""
         if self._client is not None:
             from distributed import as_completed as dask_completed
 
@@ -396,9 +409,14 @@ class Runner:
             self._pool.submit(run_chunk, func, chunk): (start, len(chunk))
             for start, chunk in zip(starts, chunks, strict=True)
         }
-        for future in as_completed(futures):
-            start, length = futures[future]
-            yield start, _result(future, length)
+        pending = set(futures)
+        while pending:
+            finished, pending = wait(pending, timeout=POLL_SECONDS, return_when=FIRST_COMPLETED)
+            if not finished and waiting is not None:
+                waiting()
+            for future in finished:
+                start, length = futures[future]
+                yield start, _result(future, length)
 
 
 def _terminate(pool: ProcessPoolExecutor) -> None:

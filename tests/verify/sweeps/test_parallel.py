@@ -187,3 +187,23 @@ def test_a_scheduler_that_fails_the_client_is_one_line_without_a_traceback(tmp_p
     lines = run.stderr.strip().splitlines()
     assert run.returncode == 2 and len(lines) == 1, run.stderr
     assert "--scheduler" in lines[0] and "Traceback" not in run.stderr
+
+
+@pytest.mark.parametrize("workers", [1, 2])
+def test_progress_starts_with_the_map(workers):
+    """``progress(0)`` before the first item ends: the progress line (its thread) starts with
+    the work, after the pool has forked, not when the first point is done."""
+    seen = []
+    with Runner(workers=workers) as runner:
+        runner.map(slow_identity, range(MIN_PARALLEL_ITEMS), progress=seen.append)
+    assert seen[0] == 0 and seen[-1] == MIN_PARALLEL_ITEMS
+
+
+def test_the_pool_watches_the_deadline_while_its_chunks_run():
+    """Past the time limit the pool's map stops while it waits, naming the item and workers."""
+    from twoball._common.budget import DeadlineError, limits, running
+
+    with Runner(workers=2) as runner, limits(max_time="1s"), running():
+        time.sleep(1.05)
+        with pytest.raises(DeadlineError, match=r"while item 1 of 40 \(2 workers\)"):
+            runner.map(slow_identity, range(40), min_parallel=2)
