@@ -337,8 +337,10 @@ def check_deadline(doing: str) -> None:
     a second).
     """
     from twoball._common.progress import set_activity
+    from twoball._common.signals import resume
 
     set_activity(doing)
+    resume()  # work goes on after a commit: a signal held since then acts here
     start = _clock["start"]
     if start is None:
         return
