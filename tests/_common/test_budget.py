@@ -367,9 +367,36 @@ def test_address_space_limit_refuses_before_work_or_ends_in_one_line(tmp_path: P
     done, seconds = run_cli(argv, tmp_path, preexec_fn=_address_space(10_000_000 * 1024))
     assert done.returncode == 2 and seconds < 5, done.stderr
     assert done.stderr.startswith("twoball: error: --level 5 --order 4 needs ~")
-    # told to go ahead anyway: the allocation that fails is one line, exit 3
-    argv = [*argv[:-4], "--level", "5", "--max-memory", "100GiB"]
-    done, _ = run_cli(argv, tmp_path, preexec_fn=_address_space(1_500_000_000))
-    assert done.returncode == 3, done.stderr
-    assert done.stderr.splitlines()[-1].startswith("twoball: error: out of memory (")
-    assert "Traceback" not in done.stderr
+    # a memory limit of its own does not lift the address-space limit: with --max-memory
+    # 9GiB the run mapped 9.5 GB and died in a SuperLU allocation after 39 s; now its
+    # address space (84 kB per P4 DOF, measured 73) is refused at once
+    done, _ = run_cli(
+        [*argv, "--max-memory", "9GiB"], tmp_path, preexec_fn=_address_space(10_000_000 * 1024)
+    )
+    assert done.returncode == 2, done.stderr
+    [line] = done.stderr.splitlines()
+    assert line.startswith("twoball: error: --level 5 --order 4 needs ~13.5 GiB of address space")
+    assert "left under the address-space limit (ulimit -v)" in line
+    # level 6, P2 has the same memory estimate (3.22 GiB) but maps 6.6 GB (it runs): the
+    # address estimates against the measured VmPeak [GiB]
+    from twoball.fem_membrane.cost import fem_dofs, fem_estimate
+
+    for level, order, mapped in ((6, 2, 6.58), (5, 4, 11.82), (5, 3, 5.24), (4, 4, 3.25)):
+        estimate = fem_estimate(fem_dofs("sphere", level, None, order), 30, "krylov", 2, order)
+        assert mapped < estimate.address / 2**30 < 1.3 * mapped, (level, order, estimate)
+
+
+def test_an_allocation_the_estimates_missed_is_one_line_exit_3(capsys) -> None:
+    """A MemoryError (or SuperLU's failed malloc) that got past the estimates: one line."""
+    from twoball.cli.guard import guarded
+
+    def short_of_memory() -> int:
+        raise MemoryError("Unable to allocate 7.45 GiB for an array")
+
+    def superlu() -> int:
+        raise RuntimeError("SUPERLU_MALLOC fails for buf in intMalloc()")
+
+    for command in (short_of_memory, superlu):
+        assert guarded(command) == 3
+        [line] = capsys.readouterr().err.splitlines()
+        assert line.startswith("twoball: error: out of memory (")
