@@ -52,13 +52,18 @@ class ElementLineLagrange(ElementH1):
         self._nodes = nodes
 
     def lbasis(self, X: np.ndarray, i: int) -> tuple[np.ndarray, np.ndarray]:
-        """Value and derivative of the i-th Lagrange polynomial at reference points X (1, Q)."""
+        """Value and derivative of the i-th Lagrange polynomial at reference points X.
+
+        ``X`` is ``(1, Q)`` in assembly and ``(1, N, 1)`` when scikit-fem probes
+        points (``Basis.probes``, as the cap average does); any shape after the
+        first axis is kept, as scikit-fem's own elements do.
+        """
         if not 0 <= i < self.p + 1:
             self._index_error()
-        x = X[0]
+        x = np.asarray(X[0])
         others = np.delete(self._nodes, i)
         scale = np.prod(self._nodes[i] - others)
-        factors = x[None, :] - others[:, None]  # (p, Q)
+        factors = x[None, ...] - others.reshape((-1,) + (1,) * x.ndim)  # (p, *x.shape)
         phi = np.prod(factors, axis=0) / scale
         dphi = np.zeros_like(x)
         for k in range(others.size):

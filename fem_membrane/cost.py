@@ -20,6 +20,12 @@ from twoball._common.budget import BASE_MEMORY, Estimate, KiB, check, options
 __all__ = ["alpha_estimate", "check_fem", "fem_dofs", "fem_estimate"]
 
 FE_BYTES_PER_DOF = 20 * KiB  # Krylov basis, LU fill, mesh and assembly (P1/P2, L3-L5)
+#: Address space mapped per DOF on a sphere, by order: SuperLU reserves (calloc) its fill
+#: estimate, far more than it touches.  Measured VmPeak less the 350 MiB of a level-1
+#: run: P2 L4 / L5 / L6 47 / 44 / 40 kB, P3 L4 / L5 60 / 56 kB, P4 L3 / L4 / L5
+#: 80 / 74 / 73 kB per DOF (resident: 12-14 kB).
+FE_ADDRESS_PER_DOF = {1: 48 * KiB, 2: 48 * KiB, 3: 64 * KiB, 4: 84 * KiB}
+BASE_ADDRESS = 400 * 2**20  # interpreter, numpy, scipy, BLAS buffers (measured 352 MiB)
 FE_SECONDS_PER_DOF = 6e-4
 FULL_ROUTE_SECONDS = 3e-6  # per DOF and eigenpair of the full eigen route
 STEP_SECONDS = 3e-4  # per generalized-alpha step: Python overhead
@@ -50,21 +56,29 @@ def fem_dofs(mesh: object, level: int | None, elements: int | None, order: int) 
     return 10 * 4**level * order * order + 2
 
 
-def fem_estimate(dofs: int, modes: int = 30, route: str = "krylov", dimension: int = 2) -> Estimate:
+def fem_estimate(
+    dofs: int, modes: int = 30, route: str = "krylov", dimension: int = 2, order: int = 2
+) -> Estimate:
     """Assembly, eigen solve (or Krylov series) and lift-off of a FE space of ``dofs``.
 
     Memory ``base + 20 kB/DOF`` (measured P1/P2, levels 3-5); time ``0.6 ms/DOF``
     on the Krylov route, plus ``3 us x DOFs x (N + 1)^2`` on the full route
     (every eigenpair below the cutoff: ``(N + 1)^2`` on the sphere, ``N + 1`` on
-    the axisymmetric line, ``dimension`` 2 or 1).
+    the axisymmetric line, ``dimension`` 2 or 1).  Address space on a sphere:
+    :data:`FE_ADDRESS_PER_DOF` of ``order`` (SuperLU's reserve), what an
+    address-space limit (``ulimit -v``) must hold.
     """
     pairs = (modes + 1) ** 2 if dimension == 2 else modes + 1
     memory = BASE_MEMORY + FE_BYTES_PER_DOF * dofs
     seconds = FE_SECONDS_PER_DOF * dofs
+    address = 0.0
+    if dimension == 2:
+        address = BASE_ADDRESS + FE_ADDRESS_PER_DOF.get(int(order), FE_ADDRESS_PER_DOF[4]) * dofs
     if route == "full":
         memory += 8.0 * dofs * pairs
         seconds += FULL_ROUTE_SECONDS * dofs * pairs
-    return Estimate(memory, seconds)
+        address += 8.0 * dofs * pairs if address else 0.0
+    return Estimate(memory, seconds, address)
 
 
 def alpha_estimate(dofs: int, pairs: int, t_end: float, dt: float) -> Estimate:
@@ -105,7 +119,8 @@ def check_fem(
     if scheme == "alpha":
         route = "full"
     size = options(level=level, elements=elements, order=order) or "the finite-element mesh"
-    estimate = check(size, fem_estimate(dofs, modes, route, dimension))
+    fe_order = order if order is not None else getattr(mesh, "order", 2)
+    estimate = check(size, fem_estimate(dofs, modes, route, dimension, fe_order))
     if scheme != "alpha":
         return estimate
     omega_cut = 0.5 * (legendre_omega(modes) + legendre_omega(modes + 1))

@@ -100,6 +100,28 @@ def axisym_matrices(elements: int, order: int) -> tuple[np.ndarray, np.ndarray, 
     return 0.5 * (K + K.T), 0.5 * (M + M.T), basis.doflocs[0].copy()
 
 
+def _dense_eigenpairs(K: np.ndarray, M: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """``K V = M V diag(lambda)``, every pair (LAPACK through scipy, which holds the GIL).
+
+    From :data:`~twoball.fem_membrane.slicing.DENSE_CHILD` unknowns on (seconds on a
+    loaded machine: 8 s at 1200) the call runs in a forked child
+    (:func:`~twoball._common.child.in_child`): the same numbers, while the progress
+    line moves, an interrupt acts at once and the time limit is watched.
+    """
+    from twoball.fem_membrane.slicing import DENSE_CHILD
+
+    from twoball._common.budget import check_deadline
+
+    n = K.shape[0]
+    doing = f"dense eigenpairs of the drop's {n} unknowns (LAPACK)"
+    if n < DENSE_CHILD:
+        check_deadline(doing)
+        return sla.eigh(K, M)
+    from twoball._common.child import in_child
+
+    return in_child(sla.eigh, K, M, doing=doing)
+
+
 def axisym_ball(
     elements: int, order: int, spectrum: Stiffness, law: ModalRatio | Rayleigh
 ) -> ModalBall:
@@ -125,7 +147,7 @@ def axisym_ball(
         points: the nodes with ``x < 0``, ascending in phi.
     """
     K, M, x = axisym_matrices(elements, order)
-    laplace, V = sla.eigh(K, M)
+    laplace, V = _dense_eigenpairs(K, M)
     first = int(np.argmin(np.abs(laplace - 2.0)))
     moment = V[:, first] @ (M @ x) / math.sqrt(x @ M @ x)
     if abs(laplace[first] - 2.0) > 1e-8 or abs(abs(moment) - 1.0) > 1e-8:

@@ -212,12 +212,18 @@ def mesh_warnings(
             if mesh == "axisym"
             else f"level {3 if level is None else level}"
         )
+    quality = []
+    if surface is not None:  # a user's mesh: its triangles near the pole
+        from twoball.fem_membrane.quality import pole_quality_warnings
+
+        quality = pole_quality_warnings(*surface)
     if error is None or error <= EIGENVALUE_ERROR:
-        return []
+        return quality
     return [
         f"mesh under-resolves the retained modes: estimated eigenvalue error "
         f"{min(error, 9.99):.0%} at degree l = {degree} (P{order}, {size}; limit "
-        f"{EIGENVALUE_ERROR:.0%}); refine the mesh or raise the element order"
+        f"{EIGENVALUE_ERROR:.0%}); refine the mesh or raise the element order",
+        *quality,
     ]
 
 

@@ -12,7 +12,9 @@ The checks (one closed, manifold, connected surface of sphere topology,
 spherical to :data:`MAX_RADIAL_DEVIATION` on average, to
 :data:`~twoball.fem_membrane.surface_validate.MAX_NODE_DEVIATION` at every node and
 :data:`~twoball.fem_membrane.surface_validate.MAX_POLE_DEVIATION` near the pole,
-consistently oriented) and the
+consistently oriented, no triangle with an angle below
+:data:`~twoball.fem_membrane.quality.DEGENERATE_ANGLE` -- poor ones near the pole
+are warned about, :mod:`twoball.fem_membrane.quality`) and the
 centre and radius fit are in :mod:`twoball.fem_membrane.surface_validate`; each
 failure is a :class:`twoball._common.errors.ParameterError` naming ``mesh``
 with what is wrong and by how much.  Cells: ``triangle`` (3-node) or
@@ -28,6 +30,7 @@ from __future__ import annotations
 
 import contextlib
 import io
+import math
 import os
 import warnings
 from collections.abc import Sequence
@@ -80,6 +83,9 @@ class MeshInput:
         Mean and largest ``|r_i - radius| / radius`` over the source's nodes.
     pole_radial_deviation : float
         The largest of them within 0.3 rad of the pole (and its 7 nearest nodes).
+    smallest_angle_deg : float
+        The smallest angle of any triangle [deg] (below 0.1 the mesh is refused;
+        :mod:`twoball.fem_membrane.quality`).
     triangles, vertices : int
         Counts after merging coincident points.
     merged_points : int
@@ -113,6 +119,7 @@ class MeshInput:
     ignored_cells: dict[str, int] = field(default_factory=dict)
     description: str = ""
     pole_radial_deviation: float = 0.0
+    smallest_angle_deg: float = 60.0
 
     def as_dict(self) -> dict[str, Any]:
         """Plain summary (no arrays but short lists) for ``info`` dictionaries and JSON."""
@@ -128,6 +135,7 @@ class MeshInput:
             "mean_radial_deviation": self.mean_radial_deviation,
             "max_radial_deviation": self.max_radial_deviation,
             "pole_radial_deviation": self.pole_radial_deviation,
+            "smallest_angle_deg": self.smallest_angle_deg,
             "merged_points": self.merged_points,
             "unused_points": self.unused_points,
             "flipped": self.flipped,
@@ -322,6 +330,9 @@ def load_sphere_mesh(
     check_topology(name, cells)
     fit = check_sphere(name, points, direction)
     cells, flipped = orient_outward(name, points, cells, fit, raw.orientation_known)
+    from twoball.fem_membrane.quality import check_angles  # degenerate triangles: refused
+
+    smallest = check_angles(name, (points - fit.center) / fit.radius, cells, direction)
     source_order = 1 if cells.shape[1] == 3 else 2
     if raw.order is not None:
         source_order = raw.order
@@ -353,6 +364,7 @@ def load_sphere_mesh(
         flipped=flipped,
         pole_at_node=mesh.pole_node is not None,
         ignored_cells={k: v for k, v in raw.ignored.items()},
+        smallest_angle_deg=math.degrees(smallest),
     )
     return replace(result, description=describe(result, name))
 
@@ -373,6 +385,7 @@ def describe(result: MeshInput, name: str) -> str:
         f"{result.pole_radial_deviation:.1e})",
         f"pole ({px:.6g}, {py:.6g}, {pz:.6g}) "
         + ("at a node" if result.pole_at_node else "inside an element"),
+        f"smallest triangle angle {result.smallest_angle_deg:.3g} deg",
     ]
     if result.flipped:
         parts.append("triangles faced inward and were reversed")

@@ -30,6 +30,7 @@ __all__ = [
     "DEFAULT_ELEMENTS",
     "DEFAULT_WINDOW",
     "BounceReport",
+    "drop_elements",
     "bounce",
     "bounce_sweep",
 ]
@@ -39,8 +40,23 @@ BACKENDS: tuple[str, ...] = ("legendre", "fem")
 DEFAULT_DT = 0.005
 #: Window in units of 1/c: ten pressure x area contact times pi / c.
 DEFAULT_WINDOW = 10.0 * math.pi
-#: Axisymmetric elements of the finite-element drop (P2: node spacing pi / 192, as N = 192).
+#: Axisymmetric elements of the finite-element drop at P2: node spacing pi / 192, as N = 192.
 DEFAULT_ELEMENTS = 96
+#: Nodes of the drop's default line at every order: ``NODE_INTERVALS / order`` elements.
+NODE_INTERVALS = 2 * DEFAULT_ELEMENTS
+
+
+def drop_elements(order: int) -> int:
+    """Default axisymmetric elements of the drop at ``order``: the node spacing pi / 192.
+
+    192 at P1, 96 at P2, 64 at P3, 48 at P4: the floor points (the nodes of the
+    lower hemisphere) are the same 96 whatever the order, so the contact is
+    resolved alike and an order given explicitly changes the polynomial, not
+    the floor.
+    """
+    return -(-NODE_INTERVALS // int(order))
+
+
 #: Largest time step in units of 1/c (a twentieth of the pressure x area contact time).
 MAX_DT = math.pi / 20.0
 #: Fewest floor points across the largest contact before the result is flagged.
@@ -93,7 +109,11 @@ def bounce(
         Legendre modes (floor points at the Gauss-Radau nodes) or axisymmetric
         finite elements (floor points at the nodes).
     mesh : MeshOptions or "axisym", optional
-        Finite elements only: the line ``axisym`` (default 96 elements, P2).
+        Finite elements only: the line ``axisym`` (default, or ``"axisym"``: 96
+        P2 elements, node spacing pi / 192).  A :class:`MeshOptions` is used as
+        given: give its ``elements`` (:func:`drop_elements` is the drop's
+        default at each order, as the command line takes it; MeshOptions' own
+        default of 400 line elements is the lift-off's).
     stepping : Stepping, optional
         ``dt`` [s] (default 0.005 / c) with ``scheme="moreau-jean"`` (the only
         scheme of the drop), and the window ``t_end`` [s] (default 10 pi / c,
@@ -129,6 +149,10 @@ def bounce(
     """
     from twoball.modal.stepping import Stepping
 
+    if isinstance(mesh, str) and mesh == "axisym":  # the kind named: the drop's own default line
+        from twoball.fem_membrane.options import MeshOptions
+
+        mesh = MeshOptions("axisym", elements=DEFAULT_ELEMENTS)
     given = bundles(
         "twoball.bounce",
         mesh=mesh,
@@ -163,14 +187,23 @@ def bounce(
     step = given.stepping if given.stepping is not None else Stepping()
     gap = drop.gap / case.radius
     dt, t_end = _times(case, step, gap)
-    ball, resolution = _ball(case, drop, backend, given.mesh, spectrum, law, dt, t_end)
+    from twoball.modal.floor.cost import expected_span
+
+    v0 = case.v0 / case.scalings.velocity
+    work = {  # the likely cost (the step loop watches the deadline beyond it)
+        "span": expected_span(whole is not None, gap, v0),
+        "v0": v0,
+        # a body that is not a Table 1 pair: the ball alone is dropped again (baselines)
+        "runs": 2 if whole is not None and whole.pair is None else 1,
+    }
+    ball, resolution = _ball(case, drop, backend, given.mesh, spectrum, law, dt, t_end, work)
     from twoball.modal.floor.drop import DropSettings, run_drop
     from twoball.modal.floor.system import floor_system
 
     row = None if whole is None else _body_row(ball, whole, gap)
     system = floor_system(ball, case.gamma, drop.floor_restitution, row)
     settings = DropSettings(case.v0 / case.scalings.velocity, case.gamma, dt, t_end)
-    result = run_drop(system, settings)
+    result = run_drop(system, settings, label="the whole bounce" if row is not None else "the drop")
     warnings += _warnings(result, ball, dt)
     model = {
         "resolution": resolution,
@@ -335,7 +368,7 @@ def _e2_alone(result: Any) -> tuple[float, str]:
     alone = floor_system(system.ball, system.gamma, float(system.problem.restitution[0]))
     # the ball alone is a reference: its own default window, whatever window the run had
     settings = replace(result.settings, t_end=max(result.settings.t_end, DEFAULT_WINDOW))
-    run = run_drop(alone, settings)
+    run = run_drop(alone, settings, label="the ball alone (the baselines' e2)")
     if run.e2 is None:
         raise NumericalError("the ball alone did not leave the floor within the window")
     return float(run.e2), "a drop of the ball alone at the same resolution"
@@ -416,8 +449,13 @@ def _ball(
     law: Any,
     dt: float,
     t_end: float,
+    work: dict[str, float],
 ) -> tuple[Any, str]:
-    """The ball in modal coordinates on the chosen backend (after the budget check)."""
+    """The ball in modal coordinates on the chosen backend (after the budget check).
+
+    ``work``: the expected span, the dimensionless |v0| and the number of drops
+    (:func:`~twoball.modal.floor.cost.check_drop`).
+    """
     from twoball.modal.floor.cost import check_drop
 
     if backend == "legendre":
@@ -427,7 +465,8 @@ def _ball(
         from twoball.modal.floor.ball import legendre_ball
 
         modes = DEFAULT_MODES if drop.modes is None else drop.modes
-        check_drop(modes, modes // 2, t_end, dt, **_asked(case, drop.modes, "modes", dt, t_end))
+        asked = _asked(case, drop.modes, "modes", dt, t_end)
+        check_drop(modes, modes // 2, t_end, dt, **work, **asked)
         return legendre_ball(modes, spectrum, law), f"legendre N = {modes}"
     if drop.modes is not None:
         raise ParameterError("modes", "left out with backend fem (the mesh sets it)", drop.modes)
@@ -443,7 +482,7 @@ def _ball(
         )
     dofs = options.elements * options.order
     asked = _asked(case, options.elements, "elements", dt, t_end)
-    check_drop(dofs, dofs // 2, t_end, dt, dense=True, **asked)
+    check_drop(dofs, dofs // 2, t_end, dt, dense=True, **work, **asked)
     return axisym_ball(options.elements, options.order, spectrum, law), options.label
 
 

@@ -126,6 +126,8 @@ def liftoff(
         _refuse_fem_options(given)
         from twoball.modal.report import legendre_liftoff
 
+        if progress is not None:  # the truncation guard's reference may take a while
+            progress(f"the closed form on {case.modes} Legendre modes")
         report = legendre_liftoff(case, sigma, recontact, t_end)
     from twoball._common.provenance import block
 

@@ -259,7 +259,8 @@ def eigen(
     if spec.kind != "file":  # refuse absurd meshes before building them
         dofs = fem_dofs(spec.kind, spec.level, spec.elements, spec.order)
         size = options(level=spec.level, elements=spec.elements, order=spec.order)
-        check(size, fem_estimate(dofs, 30, "krylov"))
+        dimension = 1 if spec.kind == "axisym" else 2
+        check(size, fem_estimate(dofs, 30, "krylov", dimension, spec.order))
     (progress or silent)(f"{count} eigenvalues on {spec.label}")
     loaded = spec.load()
     if loaded is not None:

@@ -69,6 +69,7 @@ from twoball.modal.nonsmooth.lcp import solve_lcp
 from twoball.modal.nonsmooth.linear import Factorised, combine
 from twoball.modal.nonsmooth.problem import ContactProblem
 
+from twoball._common.budget import check_deadline
 from twoball._common.errors import NumericalError, ParameterError, real_number
 
 _MAX_LOCALISATIONS = 64  # shortened sub-steps inside one step (a guard)
@@ -556,6 +557,7 @@ class MoreauJean:
         stop: Callable[[StepperState, StepRecord], bool] | None = None,
         keep_states: bool = True,
         max_steps: int | None = None,
+        label: str = "contact",
     ) -> Trajectory:
         """Integrate from ``(q0, v0)`` at ``t0`` to ``t_end`` or until ``stop`` returns True.
 
@@ -571,6 +573,9 @@ class MoreauJean:
             Keep q and v of every step (else only the final state).
         max_steps : int, optional
             Guard on the number of steps (default: 100 (t_end - t0)/dt + 1000).
+        label : str
+            What the run is called where the progress line shows its steps, and in
+            the message of the time limit (checked at every step).
 
         Returns
         -------
@@ -588,9 +593,14 @@ class MoreauJean:
         wd, wc, wi = [0.0], [0.0], [0.0]
         events: list[ContactEvent] = []
         end_tol = 1e-12 * max(1.0, abs(t_end))
-        for _ in range(limit):
+        span = t_end - t0
+        for taken in range(limit):
             if state.t >= t_end - end_tol:
                 break
+            # the time limit, and what the progress line shows, at every step
+            check_deadline(
+                f"{label}: step {taken}, {100.0 * (state.t - t0) / span:.0f} % of the window"
+            )
             h = min(self.dt, t_end - state.t)
             if t_end - (state.t + h) < end_tol:
                 h = t_end - state.t

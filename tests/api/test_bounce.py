@@ -608,3 +608,31 @@ def test_the_case_is_read_as_every_verb_reads_it():
     assert [n for n in down.notes if n.startswith("v0 = ")] == [note]
     assert not [n for n in up.notes if n.startswith("v0 = ")]
     assert down.contact_time_s == up.contact_time_s and down.e2 == up.e2
+
+
+@pytest.mark.parametrize(("elements", "order"), [(32, 3), (24, 4)])
+def test_whole_bounce_at_orders_three_and_four(elements, order):
+    """P3 and P4 carry the body (their cap average probes the line): v1, v2 within 5e-4 of
+    P2 at the same node spacing and of Legendre N = 96 (measured 2e-4 and 1e-4)."""
+    pair = "tennis-coin"
+    mesh = twoball.MeshOptions("axisym", elements=elements, order=order)
+    high = twoball.bounce(pair=pair, backend="fem", mesh=mesh)
+    p2 = twoball.bounce(pair=pair, backend="fem", mesh=twoball.MeshOptions("axisym", elements=48))
+    modal = twoball.bounce(pair=pair, drop=twoball.Drop(modes=96))
+    for reference in (p2, modal):
+        assert high.v1_m_s == pytest.approx(reference.v1_m_s, rel=5e-4)
+        assert high.v2_m_s == pytest.approx(reference.v2_m_s, rel=5e-4)
+        assert high.t_liftoff_s == pytest.approx(reference.t_liftoff_s, rel=1e-3)
+
+
+def test_the_drops_default_line_keeps_its_node_spacing_at_every_order():
+    """No mesh, ``"axisym"`` and the CLI's ``--order 2`` are one line (96 P2 elements); the
+    default at order p is 192 / p elements (the same floor points)."""
+    from twoball._bounce import drop_elements
+
+    assert [drop_elements(p) for p in (1, 2, 3, 4)] == [192, 96, 64, 48]
+    short = twoball.Stepping(t_end=2e-3)  # the same first 2 ms of the drop
+    default = twoball.bounce(backend="fem", stepping=short)
+    named = twoball.bounce(backend="fem", mesh="axisym", stepping=short)
+    assert named.as_dict()["model"]["resolution"] == "axisym 96 P2"
+    assert named.flattening_max_m == default.flattening_max_m

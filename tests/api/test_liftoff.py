@@ -179,3 +179,41 @@ def test_converge_carries_the_case_notes_once():
     case = twoball.Case(v0=-4.1)
     study = twoball.converge(case, study="modes", modes_list="30,60,120")
     assert study.notes.count(case.v0_note) == 1 and study.as_dict()["notes"][0] == case.v0_note
+
+
+def test_the_closed_form_reports_its_step():
+    """The closed form says what it does (its converged reference may sum thousands of modes),
+    so the command line's progress line starts with it."""
+    steps = []
+    case = twoball.Case.preset("basketball")
+    twoball.liftoff(case, progress=steps.append)
+    assert steps == [f"the closed form on {case.modes} Legendre modes"]
+
+
+@pytest.mark.parametrize(
+    ("preset", "dampings"),
+    [("tennis", (0.01, 0.02, 0.05)), ("volleyball", (0.002, 0.01, 0.02, 0.05))],
+)
+def test_small_damping_gives_a_liftoff_or_reasons(preset, dampings):
+    """Valid damping ratios near the presets' end in an answer, never a failed root search.
+
+    Tennis at D = 0.01 stopped with "a bracket does not change sign": a re-contact
+    bracket of the truncation reference (N = 3840) had gaps of 1e-18 at both ends
+    (rounding), of one sign.  Each answer lifts off, v_l falls as D grows (the damped
+    membrane returns less), and t_l stays within 5 % across the range.
+    """
+    reports = [twoball.liftoff(twoball.Case.preset(preset, damping=d)) for d in dampings]
+    assert all(r.lifted for r in reports), [r.warnings for r in reports]
+    speeds = [r.v_liftoff_m_s for r in reports]
+    assert speeds == sorted(speeds, reverse=True), speeds
+    times = [r.t_liftoff_s for r in reports]
+    assert max(times) / min(times) < 1.05, times
+
+
+def test_a_grazing_recontact_bracket_is_closed_at_rounding():
+    """The reference series of tennis at D = 0.01, N = 3840: its lift-off is found."""
+    from twoball.modal.converged import filtered_liftoff
+
+    case = twoball.Case.preset("tennis", damping=0.01)
+    result = filtered_liftoff(case, 3840)
+    assert result.t is not None and 0.02 < result.t < 0.025  # 0.0218 (units 1/c)

@@ -244,3 +244,28 @@ def test_refusals_are_one_line_naming_the_flag(capsys, argv, flag):
     lines = err.strip().splitlines()
     assert stop.value.code == 2 and len(lines) == 1, err
     assert lines[0].startswith(f"twoball: error: {flag}") and "Traceback" not in err
+
+
+@pytest.mark.parametrize(
+    ("argv", "resolution"),
+    [
+        ([], "axisym 96 P2"),
+        (["--order", "2"], "axisym 96 P2"),
+        (["--mesh", "axisym"], "axisym 96 P2"),
+        (["--order", "3"], "axisym 64 P3"),
+        (["--order", "4", "--elements", "20"], "axisym 20 P4"),
+    ],
+)
+def test_an_explicit_default_order_is_the_default_line(capsys, argv, resolution):
+    """``--order 2`` is what no ``--order`` gives; other orders keep the node spacing pi/192."""
+    window = ["--t-end", "0.002"]
+    code, out, _ = run(capsys, "bounce", "--backend", "fem", *argv, *window, "--json")
+    assert code == 0 and json.loads(out)["model"]["resolution"] == resolution
+
+
+@pytest.mark.parametrize("argv", [["--mass-ratio", "0.1"], ["--pair", "tennis-coin"]])
+def test_the_whole_bounce_runs_at_order_three(capsys, argv):
+    """P3 with a body (its cap average probes the line) ends in a report, not a traceback."""
+    fem = ["--backend", "fem", "--order", "3", "--elements", "16", "--t-end", "0.004"]
+    code, out, _ = run(capsys, "bounce", *fem, *argv, "--json")
+    assert code == 0 and json.loads(out)["model"]["resolution"] == "axisym 16 P3"

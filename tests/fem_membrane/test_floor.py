@@ -170,3 +170,37 @@ def test_resting_contact_area_on_elements_tends_to_pressure_times_area():
     assert inner[0] < 0.15 and inner[1] < 0.06 and inner[0] / inner[1] > 2.0, inner
     for r in runs:
         assert r.floor_force == pytest.approx(r.weight, rel=1e-8)
+
+
+@pytest.mark.parametrize("order", [1, 2, 3, 4])
+def test_cap_average_is_exact_for_polynomials_of_the_order(order):
+    """The cap average of u = x^k (k <= p: in the space) is (1 - c^(k+1)) / ((k + 1)(1 - c)).
+
+    P3 and P4 (twoball's own Lagrange line element) are probed at points, as
+    the whole bounce does for its cap: the shape scikit-fem's ``probes`` hands in.
+    """
+    from twoball.fem_membrane.floor import cap_functional_exact
+
+    elements, theta = 7, 0.35
+    _, _, x = axisym_matrices(elements, order)
+    c = math.cos(theta)
+    f = cap_functional_exact(elements, order, theta)
+    for k in range(order + 1):
+        exact = (1.0 - c ** (k + 1)) / ((k + 1) * (1.0 - c))
+        assert f @ x**k == pytest.approx(exact, rel=1e-12, abs=1e-14)
+
+
+@pytest.mark.parametrize("order", [3, 4])
+def test_lagrange_line_basis_takes_probe_shaped_points(order):
+    """The values at points shaped (1, N, 1) are those at (1, N): the same polynomial."""
+    from twoball.fem_membrane.axisym import ElementLineLagrange
+
+    element = ElementLineLagrange(order)
+    points = np.linspace(0.0, 1.0, 9)
+    for i in range(order + 1):
+        flat, dflat = element.lbasis(points[None, :], i)
+        deep, ddeep = element.lbasis(points[None, :, None], i)
+        np.testing.assert_array_equal(deep[:, 0], flat)
+        np.testing.assert_array_equal(ddeep[0, :, 0], dflat[0])
+        nodal = element.lbasis(element.doflocs.T, i)[0]
+        np.testing.assert_allclose(nodal, np.eye(order + 1)[i], atol=1e-14)

@@ -18,6 +18,10 @@ Limits
     meets the OOM killer -- or, under an address-space limit (``ulimit -v``), a
     third of the address space still free if that is less (sparse LU reserves
     about three times what the estimates count, :data:`ADDRESS_SPACE_PER_RESIDENT`).
+    Under such a limit the address space an estimate maps (its ``address``, from
+    the finite elements' cost model; else its memory) must also fit in what is
+    left, whatever ``max_memory`` says: a run that would fail its allocations
+    after a minute is refused at once.
     Time: ``max_time`` or ``TWOBALL_MAX_TIME`` (``3600``, ``90min``, ``2h``);
     default five minutes -- more than five times the slowest documented single
     run, so no ordinary run is refused, while a run that would look hung is
@@ -175,14 +179,24 @@ def format_seconds(seconds: float) -> str:
 
 @dataclass(frozen=True)
 class Estimate:
-    """Peak memory [bytes] and wall time [s] a piece of work is expected to need."""
+    """Peak memory [bytes] and wall time [s] a piece of work is expected to need.
+
+    ``address``: the address space it maps [bytes] where that is far above its
+    resident memory (sparse LU reserves its fill estimate: the finite elements'
+    cost model), 0 when it maps about what it uses.
+    """
 
     memory: float
     seconds: float
+    address: float = 0.0
 
     def __add__(self, other: Estimate) -> Estimate:
         """Work done one after the other: memories of the larger, times added."""
-        return Estimate(max(self.memory, other.memory), self.seconds + other.seconds)
+        return Estimate(
+            max(self.memory, other.memory),
+            self.seconds + other.seconds,
+            max(self.address, other.address),
+        )
 
 
 @dataclass(frozen=True)
@@ -239,6 +253,15 @@ class Budget:
                 option.split()[0] if option else "max_time",
                 f"{option} needs ~{format_seconds(estimate.seconds)}; "
                 f"limit {format_seconds(self.max_seconds)} (raise the time limit, max_time)",
+            )
+        left = address_space_left()  # ``ulimit -v``: whatever the memory limit says
+        mapped = max(estimate.address, estimate.memory)
+        if left is not None and not (mapped <= left):
+            raise BudgetError(
+                option.split()[0] if option else "max_memory",
+                f"{option} needs ~{format_bytes(mapped)} of address space (sparse LU "
+                f"reserves its fill); {format_bytes(left)} left under the address-space "
+                "limit (ulimit -v): choose a smaller size, or raise that limit",
             )
         return estimate
 
@@ -337,8 +360,10 @@ def check_deadline(doing: str) -> None:
     a second).
     """
     from twoball._common.progress import set_activity
+    from twoball._common.signals import resume
 
     set_activity(doing)
+    resume()  # work goes on after a commit: a signal held since then acts here
     start = _clock["start"]
     if start is None:
         return

@@ -8,6 +8,21 @@ commits output (see :mod:`twoball._common.staging`) and raises afterwards;
 imports, renders and callbacks) and :func:`checkpoint` raises them at a safe
 point in between (between two frames).
 
+After a commit
+    The output is in place: a signal that arrives during the commit, or after
+    it while the command finishes (its summary, its return), no longer undoes
+    anything, so it is *held* (:func:`committed_signals`): raised at the next
+    piece of work (:func:`resume`, called by every long loop through the
+    deadline check and by the next writer), or, if the command ends first,
+    dropped -- the run reports the success it had.  A held signal is delivered
+    again after :data:`HOLD_SECONDS` if the work goes on without a check, so an
+    interrupt still acts within a second.
+The end of a run
+    :func:`finish` marks the run's status as decided: from then on both
+    signals are ignored (the command line ignores them through the interpreter's
+    teardown), so a signal in the last moments can neither print a traceback
+    nor kill the process with the raw signal after its output was committed.
+
 Testing hook: with ``TWOBALL_TEST_PAUSE=STAGE`` in the environment,
 :func:`pause` prints ``twoball-test-pause: STAGE`` on standard error at that
 stage and sleeps (up to 60 s) so a test can signal the process at a known
@@ -41,7 +56,11 @@ class Interrupted(KeyboardInterrupt):
 
 
 _HANDLED = (signal.SIGINT, signal.SIGTERM)
-_deferral = {"depth": 0, "pending": None}
+#: depth: nested blocks holding signals back; pending: the signal held; hold: an output
+#: was committed and no work has started since; finished: the run's status is decided.
+_deferral: dict[str, object] = {"depth": 0, "pending": None, "hold": False, "finished": False}
+#: Seconds a signal held after a commit waits for the next check before it is delivered again.
+HOLD_SECONDS = 0.5
 
 
 def _in_main_thread() -> bool:
@@ -56,18 +75,42 @@ def _in_main_thread() -> bool:
 
 
 def _raise_interrupted(signum: int, frame: object) -> None:
-    if _deferral["depth"] > 0:  # inside a commit or clean-up: raise when it is over
+    if _deferral["finished"]:  # the run's status is decided: it stands
+        return
+    if _deferral["depth"] > 0 or _deferral["hold"]:  # a commit, a clean-up, or just after
         _deferral["pending"] = signum
+        if not _deferral["depth"]:
+            _redeliver_later()
         return
     raise Interrupted(signum)
 
 
+def _redeliver_later() -> None:
+    """Deliver a signal held after a commit again in :data:`HOLD_SECONDS` if still held."""
+    import threading
+
+    main = threading.main_thread().ident
+
+    def again() -> None:
+        signum = _deferral["pending"]
+        if _deferral["hold"] and signum is not None and not _deferral["finished"]:
+            _deferral["hold"], _deferral["pending"] = False, None
+            with contextlib.suppress(OSError, ValueError, RuntimeError):
+                signal.pthread_kill(main, signum)  # type: ignore[arg-type]
+
+    timer = threading.Timer(HOLD_SECONDS, again)
+    timer.daemon = True
+    timer.start()
+
+
 @contextlib.contextmanager
-def raise_on_signals() -> Iterator[None]:
+def raise_on_signals(restore: bool = True) -> Iterator[None]:
     """While active, SIGINT and SIGTERM raise :class:`Interrupted` in the main thread.
 
     Outside the main thread this does nothing (Python runs signal handlers
-    only there).  The previous handlers come back on exit.
+    only there).  The previous handlers come back on exit, unless ``restore`` is
+    False: the command line keeps its handler through the interpreter's teardown,
+    where, after :func:`finish`, it ignores both signals.
     """
     if not _in_main_thread():
         yield
@@ -78,8 +121,11 @@ def raise_on_signals() -> Iterator[None]:
     try:
         yield
     finally:
-        for s, handler in previous.items():
-            signal.signal(s, handler)
+        if restore:
+            for s, handler in previous.items():
+                signal.signal(s, handler)
+            if previous[signal.SIGINT] is not _raise_interrupted:  # the outermost: afresh
+                _deferral.update(pending=None, hold=False, finished=False)
 
 
 @contextlib.contextmanager
@@ -107,8 +153,53 @@ def deferred_signals() -> Iterator[None]:
         _deferral["depth"] -= 1
         pending = _deferral["pending"]
         if _deferral["depth"] == 0 and pending is not None:
+            if _deferral["hold"]:  # after a commit: held until the next work, or dropped
+                _redeliver_later()
+            else:
+                _deferral["pending"] = None
+                raise Interrupted(pending)
+
+
+@contextlib.contextmanager
+def committed_signals() -> Iterator[None]:
+    """:func:`deferred_signals` around the commit of an output, then hold them.
+
+    Once the block has run to its end the output is in place: a signal that
+    arrived meanwhile, or arrives before the next work starts (:func:`resume`),
+    is held -- raised there, or dropped when the run ends first, so the run
+    reports the success it had (see the module documentation).  If the block
+    raises, a pending signal is raised as :func:`deferred_signals` does.
+    """
+    with deferred_signals():
+        yield
+        _deferral["hold"] = True
+
+
+def resume() -> None:
+    """Work starts again after a commit: end the hold, raising a signal held meanwhile."""
+    if _deferral["hold"] and not _deferral["depth"]:
+        _deferral["hold"] = False
+        pending = _deferral["pending"]
+        if pending is not None:
             _deferral["pending"] = None
             raise Interrupted(pending)
+
+
+def finish(process: bool = False) -> None:
+    """The run's status is decided: signals from now on are ignored, a held one is dropped.
+
+    Called by the command line when its command has ended (any way); the
+    outermost :func:`raise_on_signals` starts afresh when it restores the
+    previous handlers (a run called in process, as the tests do).  ``process``:
+    the process ends with this run, and both signals are ignored by the system
+    (``SIG_IGN``) -- the interpreter's finalisation puts back the default action
+    for Python handlers (measured: killed by the raw signal after the output was
+    written), not for an ignored signal.
+    """
+    _deferral.update(finished=True, pending=None, hold=False)
+    if process and _in_main_thread():
+        for s in _HANDLED:
+            signal.signal(s, signal.SIG_IGN)
 
 
 @contextlib.contextmanager
@@ -149,12 +240,15 @@ def checkpoint() -> None:
         raise Interrupted(pending)
 
 
-def pause(stage: str) -> None:
-    """Test hook: stop at ``stage`` if ``TWOBALL_TEST_PAUSE`` names it (see the module doc)."""
+def pause(stage: str, seconds: float = PAUSE_SECONDS) -> None:
+    """Test hook: stop at ``stage`` if ``TWOBALL_TEST_PAUSE`` names it (see the module doc).
+
+    ``seconds``: the longest stop (where signals are ignored, the whole of it).
+    """
     if os.environ.get(PAUSE_ENV) != stage:
         return
     sys.stderr.write(f"twoball-test-pause: {stage}\n")
     sys.stderr.flush()
-    end = time.monotonic() + PAUSE_SECONDS
+    end = time.monotonic() + seconds
     while time.monotonic() < end and _deferral["pending"] is None:
         time.sleep(0.02)  # a signal's handler raises here (or is held back: then stop)

@@ -30,7 +30,9 @@ Scratch entries are named ``.NAME.twoball-scratch-PID-TOKEN`` and removed on
 every exit path: exceptions and, through
 :func:`twoball._common.signals.raise_on_signals` (which turns SIGINT and SIGTERM
 into :class:`~twoball._common.signals.Interrupted`), signals; commits and clean-ups
-run with signals held back (:func:`deferred_signals`).  Scratch left by a killed
+run with signals held back (:func:`deferred_signals`), and once a commit is done a
+signal is held until the next work starts (:func:`committed_signals`): a run
+whose last output is in place reports success, never "interrupted".  Scratch left by a killed
 (SIGKILL) process is swept by the next run that writes the same target, once
 its process id is gone.
 
@@ -59,7 +61,13 @@ import sys
 from collections.abc import Callable, Iterator, Sequence
 from pathlib import Path
 
-from twoball._common.signals import deferred_signals, pause, sigterm_raises
+from twoball._common.signals import (
+    committed_signals,
+    deferred_signals,
+    pause,
+    resume,
+    sigterm_raises,
+)
 
 MARKER = ".twoball-output"
 #: Marker of report folders written by twoball before 0.x; such a folder is
@@ -358,6 +366,7 @@ def _scratch_dir(out: Path) -> Iterator[Path]:
     """A fresh scratch folder beside ``out``, removed on every exit path."""
     name = f".{out.name[:_NAME_KEEP]}.{SCRATCH_TAG}-{os.getpid()}-{secrets.token_hex(4)}"
     scratch = out.parent / name
+    resume()  # new work after an earlier commit: a signal held since then acts now
     with sigterm_raises():
         try:
             scratch.mkdir(mode=0o700)
@@ -397,7 +406,7 @@ def staged_file(path: str | os.PathLike[str], param: str = "out") -> Iterator[Pa
         if not target.is_file():
             raise FileNotFoundError(errno.ENOENT, "the writer wrote no file", str(out))
         pause("staged")
-        with deferred_signals():
+        with committed_signals():  # once replaced, the file stands (see signals)
             pause("commit")
             os.replace(target, out)
 
@@ -431,7 +440,7 @@ def staged_collection(
             _check_side(scratch / name, out.parent / name, param, ours)
         old = list(retire(out, sides)) if retire is not None else []
         pause("staged")
-        with deferred_signals():
+        with committed_signals():
             for k, name in enumerate(sides):
                 _move_side(scratch / name, out.parent / name)
                 if k == len(sides) // 2:
@@ -508,7 +517,7 @@ def staged_folder(
         _public_mode(scratch, folder=True)
         pause("staged")
         check_folder(out, param)
-        with deferred_signals():
+        with committed_signals():
             pause("commit")
             if out.is_dir():
                 _exchange(scratch, out)  # scratch now holds the old folder: removed on exit

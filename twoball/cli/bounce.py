@@ -80,7 +80,11 @@ def add_drop_options(parser: argparse.ArgumentParser) -> None:
     )
     mesh = parser.add_argument_group("finite-element mesh (--backend fem)")
     mesh.add_argument("--mesh", help="axisym (the line x = cos phi; default)")
-    mesh.add_argument("--elements", type=integer, help="axisymmetric line elements (default 96)")
+    mesh.add_argument(
+        "--elements",
+        type=integer,
+        help="axisymmetric line elements (default 192 / order: 96 at P2, node spacing pi / 192)",
+    )
     mesh.add_argument("--order", type=integer, help="element order 1, 2, 3 or 4 (default 2)")
 
 
@@ -164,6 +168,11 @@ def _mesh(args: argparse.Namespace) -> twoball.MeshOptions | None:
         name, value = ("mesh", args.mesh) if args.mesh is not None else next(iter(fields.items()))
         valid = "left out with backend legendre (no mesh: --modes sets its resolution)"
         raise ParameterError(name, valid, value)
+    order = fields.get("order", 2)
+    if "elements" not in fields and args.mesh in (None, "axisym") and order in (1, 2, 3, 4):
+        from twoball._bounce import drop_elements  # the drop's default line, not the lift-off's
+
+        fields["elements"] = drop_elements(order)
     return twoball.MeshOptions(args.mesh or "axisym", **fields)
 
 
@@ -308,6 +317,7 @@ def _field_targets(args: argparse.Namespace) -> tuple[Any, Any, int]:
 
 def run(args: argparse.Namespace) -> int:
     """Run ``twoball bounce``."""
+    from twoball._common.progress import QUICK, Reporter
     from twoball._files import check_figure_path
 
     plot = None if args.plot is None else check_figure_path(args.plot, "plot")
@@ -316,13 +326,19 @@ def run(args: argparse.Namespace) -> int:
 
     outputs = {"plot": args.plot, "export": args.export, "render": args.render}  # one path each
     check_distinct(outputs, labels={name: f"--{name}" for name in outputs})
-    report = bounce_from_options(args)
-    if plot is not None:
-        report.plot(plot)
-    if export is not None:
-        report.export(export, frames=frames)
-    if render is not None:
-        report.render(render, frames=frames)
+    # the solvers say what they do (eigenpairs, the steps of the drop) through the
+    # activity of the progress line; quick runs print nothing
+    with Reporter("bounce", delay=QUICK) as progress:
+        progress(args.backend)
+        report = bounce_from_options(args)
+        for name, target, write in (
+            ("figure", plot, report.plot),
+            ("export", export, lambda out: report.export(out, frames=frames)),
+            ("render", render, lambda out: report.render(out, frames=frames)),
+        ):
+            if target is not None:
+                progress(f"{name} {target.name}")
+                write(target)
     print_notes(list(report.notes))
     print_warnings(report.warnings)
     if args.json:

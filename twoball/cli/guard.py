@@ -21,7 +21,7 @@ import os
 import sys
 from collections.abc import Callable
 
-from twoball._common.signals import raise_on_signals
+from twoball._common.signals import finish, pause, raise_on_signals
 
 TYPE_CHECKING = False  # typing is not imported at start-up: annotations only
 if TYPE_CHECKING:
@@ -50,36 +50,61 @@ USER_ERRNOS = frozenset(
 )
 
 
-def guarded(command: Callable[..., int], *args: Any) -> int:
-    """Run ``command(*args)`` and map interrupts and I/O failures to one line and a status."""
-    with raise_on_signals():
+def guarded(command: Callable[..., int], *args: Any, process: bool = False) -> int:
+    """Run ``command(*args)`` and map interrupts and I/O failures to one line and a status.
+
+    The signal handlers are installed first and the status, once decided, stands
+    (:func:`~twoball._common.signals.finish`): a signal after the last output was
+    committed is held and then dropped, and with ``process`` (the console script:
+    the whole process is this run) the handler stays through the interpreter's
+    teardown and ignores both signals there -- no traceback, no death by the raw
+    signal after the output was written.
+    """
+    with raise_on_signals(restore=not process):
         try:
-            status = command(*args)
-            _flush_stdout()
-            return status
-        except KeyboardInterrupt as interrupt:
-            _quiet_stdout()
-            sys.stderr.write("twoball: interrupted\n")
-            return int(getattr(interrupt, "exit_status", 130))
-        except (MemoryError, RuntimeError) as error:
-            # an allocation the estimates did not foresee; SuperLU reports its own
-            # failed allocations as RuntimeError("SUPERLU_MALLOC failed ...")
-            if isinstance(error, RuntimeError) and "MALLOC" not in str(error):
-                raise
-            _quiet_stdout()
-            detail = " ".join(str(error).split()) or "an allocation failed"
-            sys.stderr.write(
-                f"twoball: error: out of memory ({detail}); choose a smaller size, or give "
-                "the process more memory\n"
-            )
-            return EXIT_NUMERICAL
-        except BrokenPipeError:  # output piped into a reader that stopped (e.g. `head`)
-            _quiet_stdout()
-            return 0
-        except OSError as error:
-            _quiet_stdout()
-            sys.stderr.write(f"twoball: error: {describe(error)}\n")
-            return EXIT_USAGE if error.errno in USER_ERRNOS else EXIT_NUMERICAL
+            return _outcome(command, *args)
+        finally:
+            finish(process)
+            pause("finished", 1.0)  # test hook: a signal now changes nothing
+
+
+def _outcome(command: Callable[..., int], *args: Any) -> int:
+    """The status of ``command(*args)``, interrupts and I/O failures mapped to one line.
+
+    Each failure is reported with the status already decided (signals ignored), so
+    a second Ctrl-C cannot cut its one line short.
+    """
+    try:
+        status = command(*args)
+        _flush_stdout()
+        return status
+    except KeyboardInterrupt as interrupt:
+        finish()
+        _quiet_stdout()
+        sys.stderr.write("twoball: interrupted\n")
+        return int(getattr(interrupt, "exit_status", 130))
+    except (MemoryError, RuntimeError) as error:
+        # an allocation the estimates did not foresee; SuperLU reports its own
+        # failed allocations as RuntimeError("SUPERLU_MALLOC failed ...")
+        if isinstance(error, RuntimeError) and "MALLOC" not in str(error):
+            raise
+        finish()
+        _quiet_stdout()
+        detail = " ".join(str(error).split()) or "an allocation failed"
+        sys.stderr.write(
+            f"twoball: error: out of memory ({detail}); choose a smaller size, or give "
+            "the process more memory\n"
+        )
+        return EXIT_NUMERICAL
+    except BrokenPipeError:  # output piped into a reader that stopped (e.g. `head`)
+        finish()
+        _quiet_stdout()
+        return 0
+    except OSError as error:
+        finish()
+        _quiet_stdout()
+        sys.stderr.write(f"twoball: error: {describe(error)}\n")
+        return EXIT_USAGE if error.errno in USER_ERRNOS else EXIT_NUMERICAL
 
 
 def describe(error: OSError) -> str:

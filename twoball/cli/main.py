@@ -232,7 +232,8 @@ def main(argv: Sequence[str] | None = None) -> int:
     """
     from twoball.cli.guard import guarded
 
-    return guarded(_main, argv)
+    # the console script (no argv): this process is the run, its handlers last to the end
+    return guarded(_main, argv, process=argv is None)
 
 
 def _main(argv: Sequence[str] | None = None) -> int:

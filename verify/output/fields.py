@@ -723,7 +723,8 @@ def eigen_sizes(
                 name = "levels" if error.name == "level" else "orders"
                 raise ParameterError(name, f"a list of {error.valid}", error.got) from None
             size = options(level=spec.level, order=spec.order)
-            check(size, fem_estimate(fem_dofs("sphere", spec.level, None, spec.order), 30))
+            dofs = fem_dofs("sphere", spec.level, None, spec.order)
+            check(size, fem_estimate(dofs, 30, "krylov", 2, spec.order))
     return list(levels), list(orders)
 
 

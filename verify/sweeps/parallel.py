@@ -32,7 +32,7 @@ import os
 import signal
 import sys
 from collections.abc import Callable, Sequence
-from concurrent.futures import ProcessPoolExecutor, as_completed
+from concurrent.futures import FIRST_COMPLETED, ProcessPoolExecutor, wait
 from dataclasses import dataclass
 from numbers import Integral
 from typing import Any
@@ -47,6 +47,8 @@ MIN_PARALLEL_ITEMS = 16
 MAX_CHUNK = 32
 #: Chunks aimed at per worker (load balance and progress granularity).
 CHUNKS_PER_WORKER = 8
+#: Seconds between two checks of the time limit while the pool's chunks run.
+POLL_SECONDS = 0.5
 
 VALID_RANGES = {"workers": "an integer >= 1"}
 #: How long to try reaching a Dask scheduler before giving up.
@@ -125,9 +127,10 @@ def check_scheduler(address: object) -> str:
     """A scheduler address in the form dask reads, checked before anything connects.
 
     Empty, malformed (``::::``) or out-of-range ports are refused by their form;
-    a well-formed address is probed with one TCP connection (``PROBE_SECONDS``),
-    so a scheduler that is not there is reported at once and no dask client is
-    left waiting for it.
+    a well-formed address is probed with one TCP connection (``PROBE_SECONDS``)
+    which must greet as a dask scheduler does (:func:`_dask_handshake`; not over
+    TLS), so a scheduler that is not there -- or a web server, a proxy, a silent
+    port -- is reported at once and no dask client is left waiting for it.
     """
     import re
     import socket
@@ -151,14 +154,53 @@ def check_scheduler(address: object) -> str:
         raise ParameterError("scheduler", SCHEDULER_VALID, address)
     host = match["host"].strip("[]")
     try:
-        with socket.create_connection((host, port or 8786), timeout=PROBE_SECONDS):
-            pass
+        with socket.create_connection((host, port or 8786), timeout=PROBE_SECONDS) as probe:
+            if match["protocol"] != "tls":  # TLS speaks after the client's hello
+                _dask_handshake(probe, address)
     except OSError as error:
         reason = error.strerror or type(error).__name__
         raise ParameterError(
             "scheduler", SCHEDULER_VALID + f"; none answers there ({reason})", address
         ) from None
     return address.strip()
+
+
+#: Largest first message of a dask scheduler's handshake [bytes] (measured: 58).
+HANDSHAKE_BYTES = 1 << 20
+
+
+def _dask_handshake(probe: Any, address: str) -> None:
+    """Refuse what listens at ``address`` unless it greets as a dask scheduler does.
+
+    A dask TCP listener writes its handshake first, unasked: an 8-byte length
+    (little-endian) of a short message.  A web server, a proxy or a port that
+    accepts and stays silent says nothing for :data:`PROBE_SECONDS` (or something
+    else), which the dask client would wait on, or read as a length of exabytes.
+    """
+    import struct
+
+    head = b""
+    try:
+        while len(head) < 8:
+            chunk = probe.recv(8 - len(head))
+            if not chunk:
+                break
+            head += chunk
+    except TimeoutError:
+        raise ParameterError(
+            "scheduler",
+            SCHEDULER_VALID + f"; what listens there said nothing in {PROBE_SECONDS:g} s "
+            "(not a dask scheduler)",
+            address,
+        ) from None
+    size = struct.unpack("<Q", head)[0] if len(head) == 8 else 0
+    if not 0 < size <= HANDSHAKE_BYTES:
+        shown = head.decode("ascii", "replace").split("\n")[0].strip() or "nothing"
+        raise ParameterError(
+            "scheduler",
+            SCHEDULER_VALID + f"; what listens there is not a dask scheduler (it said {shown!r})",
+            address,
+        )
 
 
 def _inproc_listening(address: str) -> bool:
@@ -314,6 +356,8 @@ class Runner:
         items per message (use 1 for tasks that take much longer than a solve).
         """
         items = list(items)
+        if progress is not None:  # the progress line starts now (any pool has forked)
+            progress(0)
         parallel = self._pool is not None or self._client is not None
         if not parallel or len(items) < max(1, min_parallel):
             return self._serial(func, items, progress)
@@ -322,7 +366,13 @@ class Runner:
         chunks = [items[s : s + size] for s in starts]
         results: list[Outcome | None] = [None] * len(items)
         done = 0
-        for start, outcomes in self._chunks(func, starts, chunks):
+        workers = f"{self.capacity} workers" if self.capacity > 1 else "1 worker"
+
+        def waiting() -> None:  # while no chunk finishes: the deadline, what runs
+            check_deadline(f"item {done + 1} of {len(items)} ({workers})")
+
+        waiting()
+        for start, outcomes in self._chunks(func, starts, chunks, waiting):
             check_deadline(f"item {done + 1} of {len(items)}")
             results[start : start + len(outcomes)] = outcomes
             done += len(outcomes)
@@ -339,8 +389,11 @@ class Runner:
                 progress(k + 1)
         return out
 
-    def _chunks(self, func, starts, chunks):
-        """Yield ``(start, outcomes)`` per chunk as they finish; failures become errors."""
+    def _chunks(self, func, starts, chunks, waiting=None):
+        """Yield ``(start, outcomes)`` per chunk as they finish; failures become errors.
+
+        ``waiting()`` is called every :data:`POLL_SECONDS` while no local chunk
+        finishes (the deadline of the time limit)."""
         if self._client is not None:
             from distributed import as_completed as dask_completed
 
@@ -356,9 +409,14 @@ class Runner:
             self._pool.submit(run_chunk, func, chunk): (start, len(chunk))
             for start, chunk in zip(starts, chunks, strict=True)
         }
-        for future in as_completed(futures):
-            start, length = futures[future]
-            yield start, _result(future, length)
+        pending = set(futures)
+        while pending:
+            finished, pending = wait(pending, timeout=POLL_SECONDS, return_when=FIRST_COMPLETED)
+            if not finished and waiting is not None:
+                waiting()
+            for future in finished:
+                start, length = futures[future]
+                yield start, _result(future, length)
 
 
 def _terminate(pool: ProcessPoolExecutor) -> None:
@@ -393,14 +451,41 @@ def _connect(address: str | None) -> Any:
         raise ParameterError(
             "scheduler", "used with dask installed (pip install 'twoball[dask]')", address
         ) from None
+    import dask
+
     try:
-        return Client(address, timeout=CONNECT_TIMEOUT, set_as_default=False)
-    except (OSError, TimeoutError, ValueError) as exc:
+        with dask.config.set({"distributed.comm.timeouts.connect": CONNECT_TIMEOUT}):
+            return Client(address, timeout=CONNECT_TIMEOUT, set_as_default=False)
+    except BaseException as exc:  # noqa: BLE001 -- one line, and no half-built client left
+        _close_unfinished(exc)
+        if not isinstance(exc, Exception):  # an interrupt: the client is closed, pass it on
+            raise
         raise ParameterError(
             "scheduler",
-            f"the address of a running dask.distributed scheduler ({type(exc).__name__})",
+            f"the address of a running dask.distributed scheduler ({type(exc).__name__}: "
+            f"{' '.join(str(exc).split())[:120]})",
             address,
         ) from None
+
+
+def _close_unfinished(error: BaseException) -> None:
+    """Close the dask client whose constructor raised ``error`` (found in its traceback).
+
+    Left alone, its ``__del__`` closes it at exit and prints a traceback when the
+    scheduler is gone or never answered.
+    """
+    from distributed import Client
+
+    trace = error.__traceback__
+    while trace is not None:
+        client = trace.tb_frame.f_locals.get("self")
+        if isinstance(client, Client):
+            with contextlib.suppress(BaseException):
+                client.close(timeout=2)
+            with contextlib.suppress(BaseException):  # __del__ finds it closed, says nothing
+                client.status = "closed"
+            return
+        trace = trace.tb_next
 
 
 def dask_available() -> bool:
