@@ -63,3 +63,21 @@ def ball_files_liftoff(ball_files):
         name: twoball.liftoff(basketball, backend="fem", mesh=ball_files[name])
         for name in ("vtu", "msh")
     }
+
+
+@pytest.fixture(autouse=True)
+def _signals_left_as_found():
+    """Every test leaves the process's signal handlers and held-signal state as it found them.
+
+    A leaked handler (SIGINT ignored, a run's status left decided) makes later
+    tests of the signal mechanism fail far from their cause: this names the test.
+    """
+    import signal
+
+    from twoball._common.signals import _deferral
+
+    before = {s: signal.getsignal(s) for s in (signal.SIGINT, signal.SIGTERM)}
+    yield
+    after = {s: signal.getsignal(s) for s in (signal.SIGINT, signal.SIGTERM)}
+    assert after == before, f"signal handlers changed: {before} -> {after}"
+    assert not _deferral["finished"] and not _deferral["hold"], dict(_deferral)

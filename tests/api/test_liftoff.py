@@ -192,7 +192,10 @@ def test_the_closed_form_reports_its_step():
 
 @pytest.mark.parametrize(
     ("preset", "dampings"),
-    [("tennis", (0.01, 0.02, 0.05)), ("volleyball", (0.002, 0.01, 0.02, 0.05))],
+    [
+        pytest.param("tennis", (0.01, 0.02, 0.05), marks=pytest.mark.slow),
+        ("volleyball", (0.002, 0.01, 0.02, 0.05)),
+    ],
 )
 def test_small_damping_gives_a_liftoff_or_reasons(preset, dampings):
     """Valid damping ratios near the presets' end in an answer, never a failed root search.

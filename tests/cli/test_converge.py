@@ -103,6 +103,7 @@ def test_unwritable_out_is_one_line_exit_2(capsys, tmp_path):
     assert [p.name for p in tmp_path.iterdir()] == ["file"]
 
 
+@pytest.mark.slow
 def test_converge_cli_takes_orders_3_4_and_the_exact_geometry(capsys, tmp_path):
     code, stdout, _ = run(
         capsys, "converge", "h", "--mesh", "sphere", "--order", "3", "--geometry",

@@ -110,21 +110,19 @@ COMMANDS = {
 @pytest.mark.parametrize(
     ("name", "terminal"),
     [
-        pytest.param("verify", True, id="terminal-verify"),
+        pytest.param("verify", True, id="terminal-verify", marks=pytest.mark.slow),
         pytest.param("bounce whole", False, id="log-bounce whole"),
         pytest.param("bounce whole", True, id="terminal-bounce whole", marks=pytest.mark.slow),
         pytest.param("liftoff --mesh-file", False, id="log-liftoff --mesh-file"),
         pytest.param("verify", False, id="log-verify", marks=pytest.mark.slow),
-        pytest.param(
-            "liftoff --mesh-file", True, id="terminal-liftoff --mesh-file", marks=pytest.mark.slow
-        ),
+        pytest.param("liftoff --mesh-file", True, id="terminal-liftoff --mesh-file"),
     ],
 )
 def test_progress_never_freezes(name: str, terminal: bool, tmp_path: Path) -> None:
     process, fd = start(COMMANDS[name](tmp_path), tmp_path, terminal)
     times, text = watch(process, fd)
     assert process.wait(60) == 0, text[-2000:]
-    assert len(times) >= 3, text
+    assert len(times) >= 2, text  # at least what starts and its end (a quick run: no more)
     gap = largest_gap(times)
     assert gap <= (TERMINAL_GAP_S if terminal else LOG_GAP_S), (gap, text[-2000:])
     if name.startswith("bounce"):  # the steps of both runs: the body's, then the ball alone's

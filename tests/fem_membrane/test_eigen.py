@@ -145,6 +145,7 @@ def test_lowest_eigenpairs_with_a_tie_across_the_cut():
     assert np.allclose(values, dense, rtol=1e-9, atol=1e-9)
 
 
+@pytest.mark.slow
 def test_sphere_clusters_up_to_the_cutoff():
     pairs = model("sphere", 2, 3).pairs
     counts = np.bincount(sphere_degree(pairs.values))

@@ -84,7 +84,7 @@ def test_default_time_step_is_quiet(capsys) -> None:
         ("sphere", 1, 10, {"level": 3}),
         ("sphere", 2, 5, {"level": 2}),
         ("sphere", 3, 17, {"level": 2}),
-        ("sphere", 4, 14, {"level": 2}),
+        pytest.param("sphere", 4, 14, {"level": 2}, marks=pytest.mark.slow),
         ("axisym", 3, 17, {"elements": 25}),
         ("axisym", 4, 20, {"elements": 50}),
     ],

@@ -265,7 +265,8 @@ def test_doflocs_match_mesh_nodes():
     assert math.isclose(float(np.abs(basis.doflocs[2]).max()), 1.0)
 
 
-@pytest.mark.parametrize("order", [3, pytest.param(4, marks=pytest.mark.slow)])
+@pytest.mark.slow
+@pytest.mark.parametrize("order", [3, 4])
 def test_t_l_converges_at_2p_and_v_l_at_the_pointwise_rate(order):
     """Exact sphere, levels 3 -> 4: t_l at 2p, v_l at p + 1 | p + 2 (each +-0.3)."""
     case = twoball.Case.preset("basketball")

@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import numpy as np
+import pytest
 from twoball.fem_membrane.build import build_space
 from twoball.fem_membrane.eigen import eigenpairs
 from twoball.fem_membrane.initial import initial_moments
@@ -23,6 +24,7 @@ def _m_norm(M, fields: np.ndarray) -> np.ndarray:
     return np.sqrt(np.einsum("ti,ti->t", fields @ M, fields))
 
 
+@pytest.mark.slow
 def test_ritz_fields_agree_with_full_route_at_level_3():
     """u, u_t, u_tt on every node: Ritz basis vs all eigenpairs, 1e-8 in the M-norm."""
     space = build_space("sphere", level=3, order=2, phi_a=PHI_A)  # 2562 unknowns

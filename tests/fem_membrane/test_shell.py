@@ -135,6 +135,7 @@ def test_axisymmetric_p2_liftoff_agrees_with_the_closed_form(route):
     assert fem.v_liftoff_m_s == pytest.approx(ref.v_liftoff_m_s, rel=1e-6)
 
 
+@pytest.mark.slow
 def test_sphere_p2_liftoff_error_falls_at_the_eigenvalue_order():
     case = Case.preset("tennis", modes=12)
     ref = twoball.liftoff(case)
@@ -332,6 +333,7 @@ def test_axisymmetric_liftoff_converges_to_the_closed_form_at_order_4():
     assert find_liftoff(krylov, 8e-4).t == pytest.approx(found.t, rel=1e-9)
 
 
+@pytest.mark.slow
 def test_sphere_routes_agree_and_approach_the_closed_form():
     reference = find_liftoff(legendre_series(PHI_A, DAMPING, FILTER, stiffness=BALL), 8e-4)
     errors = []

@@ -213,6 +213,7 @@ def test_sphere_p2_level3_to_1e3_and_shrinking(reference):
     assert np.all(fine < coarse / 8)
 
 
+@pytest.mark.slow
 def test_sphere_p1_level4_to_2_percent_and_shrinking(reference):
     coarse = lift("sphere", 1, 3, reference)
     fine = lift("sphere", 1, 4, reference)

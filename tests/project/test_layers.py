@@ -14,6 +14,7 @@ and the command line only the face and the ground floor.
 from __future__ import annotations
 
 import ast
+import functools
 import sys
 from pathlib import Path
 
@@ -123,11 +124,17 @@ def by_name(module: str, tree: ast.Module, package: str) -> list[str]:
     return names
 
 
+@functools.cache
+def _parse(text: str) -> ast.Module:
+    """The syntax tree of a source text (the planted copies share their unchanged files')."""
+    return ast.parse(text)
+
+
 def imports(module: str, path: Path, known: dict[str, Path]) -> set[str]:
     """The package's modules that ``module`` imports, anywhere in its source or by name."""
     package = module if path.name == "__init__.py" else module.rpartition(".")[0]
     found: set[str] = set()
-    tree = ast.parse(path.read_text(encoding="utf-8"))
+    tree = _parse(path.read_text(encoding="utf-8"))
     for node in [*ast.walk(tree), None]:
         names: list[str] = []
         if node is None:  # after the import statements, the imports by name

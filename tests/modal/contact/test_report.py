@@ -30,6 +30,7 @@ def test_energy_option_both_deforms_more():
     assert both.as_dict()["phi_a_rad"] < ball.as_dict()["phi_a_rad"]  # eq. (3.7) at larger v0
 
 
+@pytest.mark.slow
 def test_converges_in_modes_at_second_order():
     """a = R/10, mu = 0.101: v1(N) converges like N^-2 (the Lanczos filter); band 1.6-2.6."""
     v = {}

@@ -73,6 +73,7 @@ def test_the_preamble_names_the_model_of_the_parts_that_ran():
     assert "Lanczos filter, N = 30" in cem and "N = 192" not in cem
 
 
+@pytest.mark.slow
 def test_gap_curves_and_timing(ctx):
     gap = part.part_whole_gap(ctx)
     assert len(gap.figures) == 3 and all(ctx.path(f).stat().st_size > 1000 for f, _ in gap.figures)

@@ -3,11 +3,12 @@
 docs/bounce.rst states the observed orders (least squares against a fine reference,
 :func:`twoball.verify.studies.floor.resolution_study` and
 :func:`~twoball.verify.studies.floor.time_step_study`); each is held here in a band of
-+- 0.5 around the stated order (too high fails too).  Where the docs show that a quantity
-has no asymptotic order (phi_a,max in N: the phase of the contact edge between the floor
-points; t_c and e2 in dt: the release of the last floor points within a step), its error
-against the fine reference is held below the docs' tolerance instead, which is tighter
-than the 1e-3 to which the backends agree.  The studies here are shorter than the docs'
++- 0.5 around the stated order (too high fails too).  Where the docs show that the single
+refinement steps have no clean order (phi_a,max in N: the phase of the contact edge
+between the floor points; t_c and e2 in dt: the release of the last floor points at step
+ends), the least-squares order is held in its band and the error against the fine
+reference below the docs' tolerance as well, which is tighter than the 1e-3 to which the
+backends agree.  The studies here are shorter than the docs'
 (sizes up to N = 256 / E = 128 against N = 768 / E = 256, dt = 0.0025).
 """
 
@@ -43,6 +44,10 @@ def test_orders_in_the_resolution(backend):
     assert OrderBand(t_c, 0.5, 0.5).contains(order), ("t_c", order)
     order = study.order("e2", 0, 6)
     assert OrderBand(e2, 0.5, 0.5).contains(order), ("e2", order)
+    # least squares over the whole sequence: 2.2 (measured 2.24 Legendre, 2.17 P2), its
+    # steps irregular once the error is below 1e-3 rad
+    order = study.order("phi_a_max")
+    assert OrderBand(2.0, 0.5, 0.5).contains(order), ("phi_a_max", order)
     errors = study.errors("phi_a_max")
     fine = np.asarray(study.sizes) >= PHI_A_FROM[backend]
     assert errors[fine].max() < PHI_A_TOLERANCE, errors
@@ -53,11 +58,17 @@ def test_orders_in_the_resolution(backend):
 @pytest.mark.parametrize(("backend", "size"), [("legendre", 192), ("fem", 96)])
 def test_the_time_step_at_the_defaults(backend, size):
     """N = 192 / E = 96, dt = 0.02 ... 0.0025 against 0.000625: phi_a,max at order 2 +- 0.5;
-    t_c and e2 (no clean order: the last floor points are released within a step) within
-    3e-4 relative and 1e-5 of the reference at every dt <= 0.005."""
+    t_c and e2 at least-squares order 2 +- 0.5 (their single steps irregular: the last floor
+    points are released at step ends) and within 3e-4 relative and 1e-5 of the reference at
+    every dt <= 0.005."""
     study = time_step_study(backend, size, (0.02, 0.01, 0.005, 0.0025), 0.000625)
     order = study.order("phi_a_max")
     assert OrderBand(2.0, 0.5, 0.5).contains(order), ("phi_a_max", order)
+    # t_c and e2: least squares 2 +- 0.5 (measured 2.26, 2.17 Legendre; 2.10, 2.28 P2),
+    # although the single steps' orders are irregular
+    for name in ("contact_time", "e2"):
+        order = study.order(name)
+        assert OrderBand(2.0, 0.5, 0.5).contains(order), (name, order)
     fine = np.asarray(study.sizes) <= 0.005
     t_c = study.errors("contact_time")[fine] / study.reference["contact_time"]
     assert t_c.max() < 3e-4, t_c

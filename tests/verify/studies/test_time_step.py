@@ -11,6 +11,7 @@ import twoball
 from tests.helpers import by_key
 
 
+@pytest.mark.slow
 def test_dt_study_is_second_order_for_generalized_alpha():
     study = run_dt_study(preset("basketball"), mesh="axisym", order=2, levels=(1, 2, 3))
     assert study.passed
