@@ -81,3 +81,65 @@ def _signals_left_as_found():
     after = {s: signal.getsignal(s) for s in (signal.SIGINT, signal.SIGTERM)}
     assert after == before, f"signal handlers changed: {before} -> {after}"
     assert not _deferral["finished"] and not _deferral["hold"], dict(_deferral)
+
+
+class _FileLines:
+    """One line per test file as it finishes, when the suite runs on several workers.
+
+    pytest-xdist's own output is a stream of dots; with ``--dist loadfile`` each
+    file runs whole on one worker, so the line says which file is done, its
+    counts and how long it took.
+    """
+
+    def __init__(self, config) -> None:
+        import collections
+        import time
+
+        self.config = config
+        self.clock = time.monotonic
+        self.total: dict[str, int] = {}
+        self.seen: dict[str, int] = collections.Counter()
+        self.outcomes: dict[str, collections.Counter] = collections.defaultdict(collections.Counter)
+        self.started: dict[str, float] = {}
+
+    @pytest.hookimpl
+    def pytest_xdist_node_collection_finished(self, node, ids) -> None:
+        if not self.total:  # every worker collects the same items
+            for nodeid in ids:
+                name = nodeid.split("::")[0]
+                self.total[name] = self.total.get(name, 0) + 1
+
+    @pytest.hookimpl
+    def pytest_report_teststatus(self, report):
+        if not report.passed:
+            return None  # failures, errors and skips as pytest shows them
+        return ("passed" if report.when == "call" else ""), "", ""  # the file's line says it
+
+    @pytest.hookimpl
+    def pytest_runtest_logreport(self, report) -> None:
+        name = report.nodeid.split("::")[0]
+        self.started.setdefault(name, self.clock())
+        if report.when == "call" or (report.when == "setup" and not report.passed):
+            self.outcomes[name][report.outcome] += 1
+        elif report.when == "teardown" and report.failed:
+            self.outcomes[name]["errors at teardown"] += 1
+        if report.when != "teardown":
+            return
+        self.seen[name] += 1
+        if self.seen[name] == self.total.get(name):
+            counts = ", ".join(f"{n} {k}" for k, n in sorted(self.outcomes[name].items()))
+            seconds = self.clock() - self.started[name]
+            done = sum(self.seen.values())
+            share = 100 * done // max(1, sum(self.total.values()))
+            reporter = self.config.pluginmanager.get_plugin("terminalreporter")
+            reporter.ensure_newline()  # after a skip's or a failure's letter
+            reporter.write_line(f"[{share:3d}%] {name}: {counts} ({seconds:.1f} s)")
+
+
+def pytest_configure(config) -> None:
+    """On the controller of several workers, report progress one file at a time."""
+    if getattr(config.option, "numprocesses", None) and not hasattr(config, "workerinput"):
+        if config.option.collectonly:
+            return
+        if config.option.verbose <= 0:
+            config.pluginmanager.register(_FileLines(config), "twoball-file-lines")

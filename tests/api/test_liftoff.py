@@ -193,7 +193,7 @@ def test_the_closed_form_reports_its_step():
 @pytest.mark.parametrize(
     ("preset", "dampings"),
     [
-        pytest.param("tennis", (0.01, 0.02, 0.05), marks=pytest.mark.slow),
+        ("tennis", (0.01, 0.02, 0.05)),
         ("volleyball", (0.002, 0.01, 0.02, 0.05)),
     ],
 )

@@ -110,7 +110,7 @@ COMMANDS = {
 @pytest.mark.parametrize(
     ("name", "terminal"),
     [
-        pytest.param("verify", True, id="terminal-verify", marks=pytest.mark.slow),
+        pytest.param("verify", True, id="terminal-verify"),
         pytest.param("bounce whole", False, id="log-bounce whole"),
         pytest.param("bounce whole", True, id="terminal-bounce whole", marks=pytest.mark.slow),
         pytest.param("liftoff --mesh-file", False, id="log-liftoff --mesh-file"),

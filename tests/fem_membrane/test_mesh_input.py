@@ -50,7 +50,7 @@ CENTRE = (0.01, -0.02, 0.03)  # m
 
 def gmsh_ball(path: Path, size: float, order: int) -> Path:
     """Write gmsh's own triangulation of the ball (element size ``size`` in m)."""
-    gmsh.initialize()
+    gmsh.initialize(interruptible=False)  # leaves the process's SIGINT handler alone
     try:
         gmsh.option.setNumber("General.Terminal", 0)
         gmsh.model.add("ball")

@@ -26,7 +26,9 @@ The end of a run
 Testing hook: with ``TWOBALL_TEST_PAUSE=STAGE`` in the environment,
 :func:`pause` prints ``twoball-test-pause: STAGE`` on standard error at that
 stage and sleeps (up to 60 s) so a test can signal the process at a known
-point.  Only the standard library is imported.
+point (the stages of :mod:`twoball._common.staging`: ``begin``, ``staged``,
+``commit``, and ``commit-folder`` for a report folder, whose files may be
+committed inside it first).  Only the standard library is imported.
 """
 
 from __future__ import annotations

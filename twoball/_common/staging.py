@@ -518,7 +518,7 @@ def staged_folder(
         pause("staged")
         check_folder(out, param)
         with committed_signals():
-            pause("commit")
+            pause("commit-folder")  # not "commit": the folder's files may be committed within
             if out.is_dir():
                 _exchange(scratch, out)  # scratch now holds the old folder: removed on exit
             else:

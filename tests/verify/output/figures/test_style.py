@@ -9,7 +9,6 @@ import re
 from pathlib import Path
 
 import numpy as np
-import pytest
 from twoball.modal.legendre import displacement
 from twoball.verify.output.fields import ball_model, coupled_model, field_mesh
 from twoball.verify.output.figures.contact_pole import contact_pole_figure
@@ -175,7 +174,6 @@ def axis_labels(axis) -> list[str]:
     return [text for text in labels if text]
 
 
-@pytest.mark.slow
 def test_every_figure_labels_units_and_counts_curves(case, coarse, monkeypatch):
     seen = []
     for name, figure in every_figure(case, coarse, monkeypatch):
@@ -256,7 +254,6 @@ def _drawn(figure):
     return canvas.get_renderer()
 
 
-@pytest.mark.slow
 def test_waterfall_tick_labels_inside_and_svg_small(tmp_path: Path) -> None:
     from twoball.verify.output.figures.waterfall import waterfall_figure
 
