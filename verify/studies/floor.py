@@ -207,10 +207,7 @@ def resolution_study(
     default_sizes, default_reference = RESOLUTION[backend]
     sizes = tuple(default_sizes if sizes is None else sizes)
     reference = default_reference if reference is None else reference
-    model = drop_model("basketball", "pressurised", "modal") if model is None else model
-    rows = [_measure(run(model, backend, n, dt).result) for n in sizes]
-    values = {name: np.array([row[name] for row in rows]) for name in rows[0]}
-    ref = _measure(run(model, backend, reference, dt).result)
+    values, ref = _measured(model, backend, [(n, dt) for n in sizes], (reference, dt))
     return Convergence(backend, "N", tuple(float(n) for n in sizes), values, ref, reference, dt)
 
 
@@ -225,11 +222,24 @@ def time_step_study(
     default_steps, default_reference = STEPS
     steps = tuple(default_steps if steps is None else steps)
     reference = default_reference if reference is None else reference
-    model = drop_model("basketball", "pressurised", "modal") if model is None else model
-    rows = [_measure(run(model, backend, size, dt).result) for dt in steps]
-    values = {name: np.array([row[name] for row in rows]) for name in rows[0]}
-    ref = _measure(run(model, backend, size, reference).result)
+    values, ref = _measured(model, backend, [(size, dt) for dt in steps], (size, reference))
     return Convergence(backend, "dt", tuple(steps), values, ref, reference, float(size))
+
+
+def _measured(
+    model: DropModel | None,
+    backend: str,
+    runs: Sequence[tuple[int, float]],
+    reference: tuple[int, float],
+) -> tuple[dict[str, np.ndarray], dict[str, float]]:
+    """The quantities of each (size, dt) run, by name, and those of the reference run.
+
+    ``model``: default the basketball at 4.1 m/s, pressurised, modal D = 0.13.
+    """
+    model = drop_model("basketball", "pressurised", "modal") if model is None else model
+    rows = [_measure(run(model, backend, size, dt).result) for size, dt in runs]
+    values = {name: np.array([row[name] for row in rows]) for name in rows[0]}
+    return values, _measure(run(model, backend, *reference).result)
 
 
 def _convergence_lines(study: Convergence) -> list[str]:
