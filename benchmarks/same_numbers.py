@@ -1,8 +1,13 @@
 """The same numbers before and after a change: JSON of representative commands, array hashes.
 
-The record in ``same_numbers.json`` was made on the last commit before the
-package was reshaped (``git worktree add /tmp/before c695646``, this script
-copied there, ``record``); ``check`` on any later commit compares against it.
+The record in ``same_numbers.json`` was made on the last commit before balls and
+solvers became objects (``git worktree add /tmp/before 57892be``, the package
+installed from there into its own virtual environment, this script copied there,
+``record``); ``check`` on any later commit compares against it.  It covers the
+lift-off on every backend and route, the contact of a finite-mass body, the
+sweeps, the drop on the floor and the whole two-ball bounce on both backends
+(alone, with a gap, with a pair's body, with a body of any mass) and the bounce
+sweeps.
 
 ``python benchmarks/same_numbers.py record`` runs every command below with ``--json``
 and writes their outputs, with the provenance blocks removed, to
@@ -93,6 +98,33 @@ COMMANDS: dict[str, list[str]] = {
     "eigen-sphere": ["eigen", "--level", "2"],
     "eigen-axisym": ["eigen", "--mesh", "axisym", "--elements", "50", "--order", "3"],
     "converge-modes": ["converge", "modes", "--modes-list", "30,60,120", "--out", "{tmp}/cm"],
+    "bounce": ["bounce"],
+    "bounce-fem": ["bounce", "--backend", "fem"],
+    "bounce-fem-p3": ["bounce", "--backend", "fem", "--order", "3", "--elements", "48"],
+    "bounce-drop-height": [
+        "bounce", "--drop-height", "0.92", "--floor-restitution", "0.5", "--damping", "0.05",
+    ],
+    "bounce-paper-membrane": ["bounce", "--membrane", "paper", "--damping", "0.05"],
+    "bounce-rayleigh": ["bounce", "--damping-model", "rayleigh", "--modes", "96"],
+    "bounce-tennis": ["bounce", "--preset", "tennis"],
+    "bounce-tennis-fem": ["bounce", "--preset", "tennis", "--backend", "fem"],
+    "whole-pair": ["bounce", "--pair", "basketball-tennis"],
+    "whole-pair-fem": ["bounce", "--pair", "basketball-tennis", "--backend", "fem"],
+    "whole-gap": ["bounce", "--pair", "basketball-tissue", "--gap", "0.05"],
+    "whole-gap-fem": ["bounce", "--pair", "basketball-tissue", "--gap", "0.05", "--backend", "fem"],
+    "whole-mass-ratio": [
+        "bounce", "--mass-ratio", "0.1", "--restitution", "0.5", "--contact-radius", "0.015",
+    ],
+    "whole-tennis-coin": ["bounce", "--pair", "tennis-coin"],
+    "whole-tennis-coin-fem": ["bounce", "--pair", "tennis-coin", "--backend", "fem"],
+    "sweep-bounce-gap": [
+        "sweep", "--bounce", "--pair", "basketball-table-tennis", "--param", "gap",
+        "--values", "0,0.02,0.1", "--workers", "1",
+    ],
+    "sweep-bounce-v0": ["sweep", "--bounce", "--param", "v0", "--values", "2,4.1", "--workers", "1"],
+    "sweep-bounce-mass-ratio": [
+        "sweep", "--bounce", "--param", "mass-ratio", "--values", "0.05,0.2", "--workers", "1",
+    ],
 }  # fmt: skip
 
 #: One export whose nodal arrays are hashed.
@@ -245,68 +277,6 @@ def _pattern(glob: str) -> re.Pattern[str]:
 #: and so must every exported array's hash; texts (strings, lists of strings such
 #: as warnings and notes) are listed but never fail the check.
 ALLOWED: tuple[Allowance, ...] = (
-    Allowance(
-        "converged truncation reference",
-        # The reference beside a closed-form lift-off doubles the filtered N from
-        # the result's own N until the lift-off stays on one root, then follows that
-        # root in the unfiltered series (modal/converged.py).  The record's reference
-        # stopped at a fixed N (60 or 120) and gave no values where it had not settled.
-        "the truncation block is the converged series (N doubled until the lift-off "
-        "settles, modal/converged.py); the record stopped at a fixed N of 60 or 120",
-        (
-            "/liftoff-tennis/json/truncation/*",
-            "/liftoff-volleyball/json/truncation/*",
-            "/liftoff-bending-gas/json/truncation/*",
-            "/liftoff-paper-recontact/json/truncation/*",
-            "/liftoff-unfiltered-60/json/truncation/converged_modes",
-        ),
-    ),
-    Allowance(
-        "contact truncation block",
-        # A body of finite mass gets the same trust check as the massless lift-off:
-        # the closed-form contact solution with more modes beside the result.
-        "contact reports gained a truncation block (the closed-form contact solution "
-        "with more modes beside the result); the record had none",
-        (
-            "/contact-0.1/json/truncation",
-            "/contact-0.05-restitution/json/truncation",
-            "/contact-fem-axisym/json/truncation",
-        ),
-    ),
-    Allowance(
-        "Rayleigh reference",
-        # Under a Rayleigh law C = alpha M + beta K every mode has its own ratio; the
-        # converged reference now solves that law, not the constant ratio D, and the
-        # fitted coefficients are reported in SI beside the dimensionless ones.
-        "under --damping-model rayleigh the converged reference solves the Rayleigh law "
-        "(each mode its own ratio), not the ratio D; alpha_1_s and beta_s added (SI)",
-        (
-            "/fem-alpha-rayleigh/json/truncation/*",
-            "/fem-alpha-rayleigh/json/rayleigh/alpha_1_s",
-            "/fem-alpha-rayleigh/json/rayleigh/beta_s",
-        ),
-    ),
-    Allowance(
-        "one phi_a rule per sweep",
-        # A v0, wave-speed or radius sweep takes phi_a from eq. (3.7) at every point;
-        # the record's points at the preset's own |v0| = 4.1 m/s and c = 320 1/s took
-        # the measured 2.6 rad instead, and so every lift-off number there moved.
-        "phi_a follows eq. (3.7) at every point of a v0, wave-speed or radius sweep; "
-        "the record used the measured 2.6 rad at the preset's own |v0| and c",
-        (
-            "/sweep-v0/json/results[2]/**",
-            "/sweep-grid/json/results[1]/**",
-            "/sweep-grid/json/results[3]/**",
-        ),
-    ),
-    Allowance(
-        "mesh file pole check",
-        # Mesh files are checked for a spike or dent at the pole (within 0.3 rad),
-        # and the block of the file reports that deviation.
-        "the mesh file's block reports the radial deviation near the pole (checked "
-        "against 1e-3 within 0.3 rad of it)",
-        ("/fem-mesh-file/json/mesh_file/pole_radial_deviation",),
-    ),
 )
 
 
