@@ -7,7 +7,6 @@ from twoball.fem_membrane.mesh import SphereMesh, icosphere, ring_sphere
 from twoball.fem_membrane.space import Discretisation, sphere_space
 from twoball.fem_membrane.validate import (
     GEOMETRIES,
-    MESH_KINDS,
     check_choice,
     check_elements,
     check_level,
@@ -15,10 +14,8 @@ from twoball.fem_membrane.validate import (
 )
 from twoball.modal.initial import check_phi_a
 
+from twoball._common.choices import DEFAULT_ELEMENTS, DEFAULT_LEVEL, MESH_KINDS
 from twoball._common.errors import ParameterError
-
-DEFAULT_LEVEL = 3
-DEFAULT_ELEMENTS = 400
 
 
 def build_space(

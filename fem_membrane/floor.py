@@ -36,11 +36,13 @@ import scipy.linalg as sla
 from skfem import Basis, MeshLine1, asm
 from twoball.fem_membrane.axisym import LINE_ELEMENTS
 from twoball.fem_membrane.forms import axisym_mass, axisym_stiffness
+from twoball.modal.balls.description import ModalBall
+from twoball.modal.balls.membrane import membrane_rows, mode_decay, mode_spectrum
 from twoball.modal.damping import ModalRatio, Rayleigh
-from twoball.modal.floor.ball import ModalBall, mode_decay, mode_spectrum
 from twoball.modal.stiffness import Stiffness
 
 from twoball._common.errors import NumericalError, ParameterError
+from twoball._common.monitor import Monitor, long_call
 
 __all__ = ["axisym_ball", "axisym_matrices", "cap_functional_exact"]
 
@@ -100,30 +102,36 @@ def axisym_matrices(elements: int, order: int) -> tuple[np.ndarray, np.ndarray, 
     return 0.5 * (K + K.T), 0.5 * (M + M.T), basis.doflocs[0].copy()
 
 
-def _dense_eigenpairs(K: np.ndarray, M: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+def _dense_eigenpairs(
+    K: np.ndarray, M: np.ndarray, monitor: Monitor | None = None
+) -> tuple[np.ndarray, np.ndarray]:
     """``K V = M V diag(lambda)``, every pair (LAPACK through scipy, which holds the GIL).
 
     From :data:`~twoball.fem_membrane.slicing.DENSE_CHILD` unknowns on (seconds on a
-    loaded machine: 8 s at 1200) the call runs in a forked child
-    (:func:`~twoball._common.child.in_child`): the same numbers, while the progress
-    line moves, an interrupt acts at once and the time limit is watched.
+    loaded machine: 8 s at 1200) the call is handed to the monitor as a long call
+    (:func:`~twoball._common.monitor.long_call`: at the edge it runs where the
+    progress line moves, an interrupt acts at once and the time limit is watched,
+    with the same numbers).
     """
     from twoball.fem_membrane.slicing import DENSE_CHILD
-
-    from twoball._common.budget import check_deadline
 
     n = K.shape[0]
     doing = f"dense eigenpairs of the drop's {n} unknowns (LAPACK)"
     if n < DENSE_CHILD:
-        check_deadline(doing)
+        if monitor is not None:
+            monitor(doing)
         return sla.eigh(K, M)
-    from twoball._common.child import in_child
-
-    return in_child(sla.eigh, K, M, doing=doing)
+    return long_call(monitor, sla.eigh, K, M, doing=doing)
 
 
 def axisym_ball(
-    elements: int, order: int, spectrum: Stiffness, law: ModalRatio | Rayleigh
+    elements: int,
+    order: int,
+    spectrum: Stiffness,
+    law: ModalRatio | Rayleigh,
+    *,
+    anchored: bool = False,
+    monitor: Monitor | None = None,
 ) -> ModalBall:
     """The finite-element ball in its eigenvectors, with the floor at its lower nodes.
 
@@ -135,25 +143,34 @@ def axisym_ball(
         Lagrange order.
     spectrum : Stiffness
         Membrane operator, bending, gas: omega_k^2 from each lambda_h
-        (:func:`~twoball.modal.floor.ball.mode_spectrum`; the discrete area
+        (:func:`~twoball.modal.balls.membrane.mode_spectrum`; the discrete area
         ``1^T M 1 / 4 pi`` is 1 on the line, so the gas needs no correction).
     law : ModalRatio or Rayleigh
         The damping law (dimensionless, fitted already).
+    anchored : bool
+        Keep the degree-1 eigenvector as a mode of the membrane about a centre
+        that does not move (omega^2 from its Laplace eigenvalue 2) and no
+        coordinate Z: the paper's special case, a body on its start.
+    monitor : Monitor, optional
+        Told of the eigenpairs (a long call at the edge).
 
     Returns
     -------
     ModalBall
-        Modes: every eigenvector but the degree-1 one (unit masses); floor
-        points: the nodes with ``x < 0``, ascending in phi.
+        Coordinates: the centre's height Z, then every eigenvector but the
+        degree-1 one (unit masses); floor points: the nodes with ``x < 0``,
+        ascending in phi.
     """
     K, M, x = axisym_matrices(elements, order)
-    laplace, V = _dense_eigenpairs(K, M)
+    laplace, V = _dense_eigenpairs(K, M, monitor)
     first = int(np.argmin(np.abs(laplace - 2.0)))
     moment = V[:, first] @ (M @ x) / math.sqrt(x @ M @ x)
     if abs(laplace[first] - 2.0) > 1e-8 or abs(abs(moment) - 1.0) > 1e-8:
         raise NumericalError(
             f"axisym_ball: the degree-1 eigenvector is not x (lambda = {laplace[first]:.3g})"
         )
+    if anchored:
+        return _anchored(x, laplace, V, elements, order, spectrum, law)
     keep = np.delete(np.arange(laplace.size), first)
     laplace, V = laplace[keep], V[:, keep]
     laplace[np.abs(laplace) < 1e-9] = 0.0  # the constant vector: K 1 = 0 to rounding
@@ -169,19 +186,57 @@ def axisym_ball(
     def sampler(angles: np.ndarray) -> np.ndarray:
         """The modes at any polar angles: piecewise linear between the nodes (pictures)."""
         where = np.cos(angles)
-        return np.column_stack([np.interp(where, sorted_x, col) for col in sorted_v.T])
+        columns = [np.interp(where, sorted_x, col) for col in sorted_v.T]
+        return np.column_stack([np.zeros(where.size), *columns])
 
+    masses = np.ones(laplace.size)
+    phi = np.arccos(np.clip(x[floor], -1.0, 1.0))
+    rows, reach = membrane_rows(phi, V[floor, :], masses, w2)
+    return ModalBall(
+        masses=np.concatenate([[1.0], masses]),
+        omega_squared=np.concatenate([[0.0], w2]),
+        gas_squared=np.concatenate([[0.0], gas2]),
+        decay=np.concatenate([[0.0], mode_decay(law, w2)]),
+        centre=0,
+        phi=phi,
+        floor_rows=rows,
+        top=np.concatenate([[1.0], V[top, :]]),
+        label=f"axisym {elements} P{order}",
+        bending=spectrum.beta > 0.0,
+        laplace=np.concatenate([[2.0], laplace]),
+        reach=reach,
+        sampler=sampler,
+        averager=lambda theta: np.concatenate(
+            [[1.0], cap_functional_exact(elements, order, theta) @ V]
+        ),
+    )
+
+
+def _anchored(
+    x: np.ndarray,
+    laplace: np.ndarray,
+    V: np.ndarray,
+    elements: int,
+    order: int,
+    spectrum: Stiffness,
+    law: ModalRatio | Rayleigh,
+) -> ModalBall:
+    """Every eigenvector a mode about a held centre, no floor (the paper's special case)."""
+    laplace = laplace.copy()
+    laplace[np.abs(laplace) < 1e-9] = 0.0
+    w2, gas2 = mode_spectrum(spectrum, laplace)
+    top = int(np.argmax(x))
     return ModalBall(
         masses=np.ones(laplace.size),
         omega_squared=w2,
         gas_squared=gas2,
         decay=mode_decay(law, w2),
-        phi=np.arccos(np.clip(x[floor], -1.0, 1.0)),
-        shapes=V[floor, :],
-        top=V[top, :],
-        laplace=laplace,
+        centre=None,
+        phi=np.zeros(0),
+        floor_rows=np.zeros((0, laplace.size)),
+        top=V[top, :].copy(),
         label=f"axisym {elements} P{order}",
         bending=spectrum.beta > 0.0,
-        sampler=sampler,
+        laplace=laplace,
         averager=lambda theta: cap_functional_exact(elements, order, theta) @ V,
     )

@@ -85,13 +85,13 @@ from twoball.modal.liftoff import DEFAULT_T_END
 from twoball.modal.series import ModalSeries, check_law
 
 from twoball._common.budget import check_deadline
+from twoball._common.choices import ROUTES
 from twoball._common.errors import NumericalError, ParameterError
 
 TOLERANCE = 1e-10  # relative change of the filtered pole trajectory (u and u_tt)
 SHIFT_COUNT = 3  # default number of shifts (factorisations of K - sigma M)
 FIRST_SHIFT = -1.0  # below the constant mode lambda = 0 (K is singular)
 AUTO_THRESHOLD = 2000  # --route auto: Krylov from this many degrees of freedom on
-ROUTES = ("full", "krylov", "auto")
 MAX_BASIS = 1200  # give up beyond this many basis vectors
 FIRST_COLUMNS = 128  # basis columns reserved at first (doubled when full)
 DEPENDENT = 1e-10  # drop a new direction whose norm falls below this fraction

@@ -24,8 +24,6 @@ from typing import Any
 from twoball.fem_membrane.validate import (
     GEOMETRIES,
     INITIAL_METHODS,
-    LEVEL_RANGE,
-    MESH_KINDS,
     ORDERS,
     check_elements,
     check_level,
@@ -34,13 +32,16 @@ from twoball.fem_membrane.validate import (
     check_pole,
 )
 
+from twoball._common.choices import (
+    DEFAULT_ELEMENTS,
+    DEFAULT_LEVEL,
+    DEFAULT_ORDER,
+    LEVEL_RANGE,
+    MESH_KINDS,
+    SPHERE_KINDS,
+)
 from twoball._common.errors import ParameterError
 
-#: Kinds on a sphere (the field outputs draw a sphere, not the axisymmetric line).
-SPHERE_KINDS: tuple[str, ...] = ("sphere", "ring")
-DEFAULT_LEVEL = 3  # icosphere refinement level (1280 triangles)
-DEFAULT_ELEMENTS = 400  # elements of the axisymmetric line
-DEFAULT_ORDER = 2  # isoparametric P2
 #: Discrete sphere: the order-p interpolant through the nodes, or the sphere itself.
 DEFAULT_GEOMETRY = "isoparametric"
 FILE = "file"  # the kind of a user's mesh (path, meshio.Mesh, scikit-fem MeshTri)

@@ -14,21 +14,20 @@ import os
 from numbers import Integral, Real
 from pathlib import Path
 
+from twoball._common.choices import LEVEL_RANGE
 from twoball._common.errors import ParameterError
 
 ORDERS: tuple[int, ...] = (1, 2, 3, 4)
 ORDER_RANGE = "1, 2, 3 or 4"
-MESH_KINDS: tuple[str, ...] = ("sphere", "ring", "axisym")
 GEOMETRIES: tuple[str, ...] = ("isoparametric", "exact")
 TIME_SCHEMES: tuple[str, ...] = ("modal", "alpha")
 DAMPING_MODELS: tuple[str, ...] = ("modal", "rayleigh")
 INITIAL_METHODS: tuple[str, ...] = ("projection", "interpolation")
-#: Sphere refinement levels.  Level L has 20 4^L triangles and 10 4^L p^2 + 2
-#: unknowns at order p: level 10 at P1 holds 1.0e7 of them, about 210 GB and two
-#: hours on the Krylov route by the cost model of :mod:`twoball.fem_membrane.cost`
-#: -- the most a budget raised to a large machine's memory can allow; the
-#: default budget stops earlier (level 7 at P1, level 6 at P2).
-LEVEL_RANGE: tuple[int, int] = (0, 10)
+# Sphere refinement levels (LEVEL_RANGE).  Level L has 20 4^L triangles and 10 4^L p^2
+# + 2 unknowns at order p: level 10 at P1 holds 1.0e7 of them, about 210 GB and two
+# hours on the Krylov route by the cost model of twoball.fem_membrane.cost -- the most a
+# budget raised to a large machine's memory can allow; the default budget stops earlier
+# (level 7 at P1, level 6 at P2).
 #: Elements of the axisymmetric line: at least two.
 MIN_ELEMENTS = 2
 #: What a user's mesh may be (the reader is :mod:`twoball.fem_membrane.mesh_input`).

@@ -13,9 +13,9 @@ import math
 from dataclasses import dataclass
 from numbers import Real
 
+from twoball._common.choices import STANDARD_GRAVITY
 from twoball._common.errors import ParameterError, bounded, real_number
 
-STANDARD_GRAVITY = 9.81  # m/s^2, the value used in the paper (§2)
 # Physically meaningful magnitudes (SI).  They also keep the dimensionless numbers
 # of the model (gamma = g / (R c^2), |v0| / (R c), t_end c) far from overflow.
 RADIUS_RANGE = (1e-6, 1e6)  # m: a micrometre bubble to a 1000 km balloon
@@ -109,6 +109,22 @@ class Scalings:
     def gamma(self) -> float:
         """Dimensionless gravity ``gamma = g / (R c^2) = R g rho / T`` (§3(b))."""
         return self.g / self.acceleration
+
+
+def membrane_mass(radius: float, pressure: float, wave_speed: float) -> float:
+    """The mass m [kg] of a pressurised membrane ball: ``m = 2 pi R P / c^2``.
+
+    The inverse of :func:`wave_speed_from_pressure`: with the tension ``T = P R /
+    2`` (§4(b)) and ``c^2 = T / (rho R^2)``, eq. (3.8), the surface density is ``rho
+    = P / (2 R c^2)`` and ``m = 4 pi R^2 rho``.  The paper's basketball: R = 0.12
+    m, P = 77200 Pa, c = 320.4 1/s give m = 0.567 kg.
+
+    Examples
+    --------
+    >>> round(membrane_mass(0.12, 77200.0, 320.4), 4)
+    0.5667
+    """
+    return 2.0 * math.pi * radius * pressure / wave_speed**2
 
 
 def wave_speed_from_pressure(pressure: float, mass: float, radius: float) -> float:

@@ -11,14 +11,11 @@ from __future__ import annotations
 from dataclasses import dataclass
 from typing import Any
 
+from twoball._common.choices import FILTER_KINDS, HORIZONS
 from twoball._common.errors import ParameterError
 
 __all__ = ["FILTER_KINDS", "HORIZONS", "Series"]
 
-#: Spectral filters of eq. (3.16) (:class:`twoball.modal.filters.SpectralFilter`).
-FILTER_KINDS: tuple[str, ...] = ("lanczos", "printed", "none")
-#: Re-contact horizons of criterion (ii), §3(a) (:func:`twoball.modal.liftoff.find_liftoff`).
-HORIZONS: tuple[str, ...] = ("window", "paper")
 
 
 @dataclass(frozen=True)

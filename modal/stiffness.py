@@ -58,9 +58,10 @@ import numpy as np
 from twoball.modal.membrane import Membrane
 from twoball.modal.series import ModalSeries
 
+from twoball._common.choices import GAS_MODELS as GAS_LAWS
 from twoball._common.errors import NumericalError, ParameterError
 
-GAS_MODELS: dict[str, float] = {"none": 0.0, "isothermal": 1.0, "adiabatic": 1.4}
+GAS_MODELS: dict[str, float] = dict(zip(GAS_LAWS, (0.0, 1.0, 1.4), strict=True))
 """Polytropic exponent kappa of the enclosed gas (0: no gas term)."""
 
 ATMOSPHERE = 101325.0  # Pa, standard atmosphere (ISO 2533)

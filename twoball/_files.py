@@ -17,6 +17,7 @@ from typing import Any
 
 from twoball._bundles import bundles, warn_deprecated, with_damping
 from twoball._common.budget import timed
+from twoball._common.choices import DEFAULT_ANIMATION_FRAMES
 from twoball._common.errors import ParameterError
 from twoball._common.progress import Step, check_progress, silent
 from twoball._common.provenance import block
@@ -26,7 +27,6 @@ from twoball.modal.report import LiftoffReport
 
 __all__ = ["ExportResult", "PlotResult", "RenderResult", "export", "plot", "render"]
 
-DEFAULT_ANIMATION_FRAMES = 60
 DEFAULT_FPS = 20.0
 
 

@@ -131,9 +131,8 @@ def reproduce(
         workers = check_workers(workers)
     out = DEFAULT_OUT if out is None else out
     check_output(out)  # fail before any work
-    from twoball._bounce import BounceTask
+    from twoball._common.watch import Watch
 
     with Runner(workers, scheduler) as runner:
-        tasks = {"bounce": BounceTask()}
-        target, sections = run_reproduction(out, names, runner, progress, command, tasks)
+        target, sections = run_reproduction(out, names, runner, progress, command, Watch())
     return Reproduction(target, sections)

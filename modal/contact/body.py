@@ -6,14 +6,13 @@ import math
 from dataclasses import asdict, dataclass
 from typing import Any
 
+from twoball._common.choices import ENERGY_OPTIONS, MAX_MASS_RATIO
 from twoball._common.errors import ParameterError, real_number
 
 __all__ = ["ENERGY_OPTIONS", "MAX_MASS_RATIO", "Body"]
 
 #: Largest mass ratio mu = m1 / m2 accepted (a body 100 times the lower ball).
-MAX_MASS_RATIO = 100.0
 #: Energy at t = 0: eq. (3.6) for the lower ball alone, or with the body's kinetic energy.
-ENERGY_OPTIONS: tuple[str, ...] = ("ball", "both")
 #: Default contact radius as a fraction of R (docs/contact.rst, "The contact radius").
 DEFAULT_RADIUS_FRACTION = 0.1
 

@@ -1,21 +1,17 @@
 """The lower ball dropped on a rigid floor (dimensionless: R, 1/c, m2).
 
-:mod:`~twoball.modal.floor.ball` describes the ball in modal coordinates (the
-Legendre modes here, the finite elements in :mod:`twoball.fem_membrane.floor`),
+The ball comes as a modal description (:mod:`twoball.modal.balls`: the
+Legendre membrane, and the finite elements in :mod:`twoball.fem_membrane.floor`);
 :mod:`~twoball.modal.floor.system` assembles the contact problem with the
-centre's height and the floor's points, :mod:`~twoball.modal.floor.drop` runs
+floor's points and a body's row, :mod:`~twoball.modal.floor.drop` runs
 one drop on the contact core and :mod:`~twoball.modal.floor.measure` defines its
-measures; :mod:`~twoball.modal.floor.options`, :mod:`~twoball.modal.floor.model` and
+measures; :mod:`~twoball.modal.floor.options`, :mod:`~twoball.modal.floor.inputs` and
 :mod:`~twoball.modal.floor.references` are its SI edge.  Names load on first use.
 """
 
 from twoball._common.lazy import attach
 
 _NAMES = {
-    "mode_spectrum": "twoball.modal.floor.ball",
-    "ModalBall": "twoball.modal.floor.ball",
-    "legendre_ball": "twoball.modal.floor.ball",
-    "mode_decay": "twoball.modal.floor.ball",
     "DropResult": "twoball.modal.floor.drop",
     "DropSettings": "twoball.modal.floor.drop",
     "FloorEvent": "twoball.modal.floor.drop",

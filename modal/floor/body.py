@@ -236,9 +236,9 @@ def momentum_balance(system: FloorSystem, tr: Trajectory) -> float:
     body = system.body
     mu = 0.0 if body is None else body.mass
     weight = system.gamma * (1.0 + (mu if body is not None and body.weight else 0.0))
-    s = system.body_coordinate
-    start = tr.v[0, 0] + (mu * tr.v[0, s] if body is not None else 0.0)
-    end = tr.v_final[0] + (mu * tr.v_final[s] if body is not None else 0.0)
+    s, z = system.body_coordinate, system.centre
+    start = tr.v[0, z] + (mu * tr.v[0, s] if body is not None else 0.0)
+    end = tr.v_final[z] + (mu * tr.v_final[s] if body is not None else 0.0)
     floor = float(tr.impulse[:, system.floor].sum())
     change = end - start + weight * (tr.t[-1] - tr.t[0])
     return abs(floor - change) / max(abs(floor), math.ulp(1.0))

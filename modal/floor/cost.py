@@ -5,9 +5,9 @@ A drop usually ends soon after its contact (the ball is seen to leave, see
 (twice the pressure x area contact time ``pi / c``, three times with a body on
 top, plus the gap's fall) rather than of the whole window, plus the shortened
 steps of its localised touches.  A run that goes on (a ball that does not leave,
-a long window) meets the deadline of the time limit in its step loop
-(:func:`twoball._common.budget.check_deadline`, exit 3), so the estimate may be
-the likely cost rather than the worst.
+a long window) meets the deadline of the time limit in its step loop (its
+monitor, exit 3), so the estimate may be the likely cost rather than the worst.
+The estimate only estimates; ``twoball.bounce`` refuses at the edge.
 
 Steps
     ``span / dt + points (1 + 8 v0^2)`` (``v0 = |v0| / (R c)``): floor points
@@ -58,9 +58,9 @@ from __future__ import annotations
 
 import math
 
-from twoball._common.budget import BASE_MEMORY, Estimate, check, options
+from twoball._common.estimate import BASE_MEMORY, Estimate
 
-__all__ = ["check_drop", "drop_estimate", "drop_steps", "expected_span"]
+__all__ = ["drop_estimate", "drop_steps", "expected_span", "likely_drop"]
 
 SECONDS_PER_STEP = 6e-4  # a step with its LCP and stop test, localisations included
 SECONDS_PER_ENTRY = 7e-9  # per entry of the constraint matrix G, per step
@@ -105,7 +105,7 @@ def drop_estimate(
     return Estimate(memory, seconds)
 
 
-def check_drop(
+def likely_drop(
     dofs: int,
     points: int,
     window: float,
@@ -115,19 +115,14 @@ def check_drop(
     span: float | None = None,
     v0: float = 0.0,
     runs: int = 1,
-    **asked: object,
 ) -> Estimate:
-    """Refuse a drop (window, span and step in units of 1/c) that cannot fit the budget.
+    """A drop's likely cost (window, span and step in units of 1/c).
 
     ``span`` is the expected length of the run (:func:`expected_span`; default the
     whole window), ``v0`` the dimensionless impact speed, ``runs`` the number of
-    drops.  ``asked`` names the work as the user asked for it (``modes=128``,
-    ``dt=1e-5``).
+    drops; the states of the whole window count for the memory.
     """
     likely = window if span is None else min(window, span)
     steps = drop_steps(points, likely, step, v0)
     stored = drop_steps(points, window, step, v0)
-    return check(
-        options(**asked),
-        drop_estimate(dofs, points, steps, dense, stored=stored, runs=runs),
-    )
+    return drop_estimate(dofs, points, steps, dense, stored=stored, runs=runs)

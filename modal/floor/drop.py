@@ -10,7 +10,7 @@ and stops as soon as the ball is known to have left the floor:
     No floor impulse in the last step, the centre moving up, and every floor
     point higher than the membrane's vibration can reach: with E the membrane's
     energy (kinetic, elastic and gas; it cannot grow in flight), ``|u(phi_i)| <=
-    b_i sqrt(2 E)`` (:meth:`~twoball.modal.floor.ball.ModalBall.amplitude_bound`),
+    b_i sqrt(2 E)`` (:meth:`~twoball.modal.balls.description.ModalBall.floor_reach`),
     and while the centre rises no point can come back to the floor.
 ``apex``
     The centre reached the top of its flight without touching again.
@@ -45,6 +45,7 @@ if TYPE_CHECKING:
     from twoball.modal.floor.body import BodyResult
 
 from twoball._common.errors import NumericalError, ParameterError, real_number
+from twoball._common.monitor import Monitor
 
 __all__ = ["DropResult", "DropSettings", "FloorEvent", "run_drop"]
 
@@ -205,7 +206,7 @@ class DropResult:
         empty = np.zeros((tr.impulse.shape[0], 0))
         stripped = replace(tr, q=None, v=None, impulse=empty, impact_impulse=empty)
         # the modes' samplers are closures: left out, so that the result pickles
-        ball = replace(self.system.ball, sampler=None, averager=None)
+        ball = self.system.ball.without_samplers()
         return replace(
             self,
             trajectory=stripped,
@@ -252,23 +253,27 @@ class DropResult:
 
 
 def _membrane_energy(system: FloorSystem, q: np.ndarray, v: np.ndarray) -> float:
+    """The ball's vibration energy (kinetic, elastic and gas; the translation left out)."""
     b = system.ball
-    a, da = q[system.membrane], v[system.membrane]
-    return 0.5 * float(b.masses @ (da * da + b.omega_squared * a * a))
+    d = system.membrane
+    a, da = q[d], v[d]
+    return 0.5 * float(b.masses[d] @ (da * da + b.omega_squared[d] * a * a))
 
 
 def _cap_bound(system: FloorSystem) -> float:
     """``|<u>_cap| <= b sqrt(2 E)``: ``b^2 = sum_k b_k^2 / (m_k omega_k^2)`` (inf if unstable)."""
     if system.body is None:
         return math.nan
-    ball = system.ball
-    if not ball.stable:
-        return math.inf
-    return math.sqrt(float((system.body.cap**2) @ (1.0 / (ball.masses * ball.omega_squared))))
+    return float(system.ball.bound(system.body.cap)[0])
 
 
 def run_drop(
-    system: FloorSystem, settings: DropSettings, label: str = "the drop", **core: object
+    system: FloorSystem,
+    settings: DropSettings,
+    label: str = "the drop",
+    *,
+    monitor: Monitor | None = None,
+    **core: object,
 ) -> DropResult:
     """Drop the ball of ``system`` on the floor and measure the bounce (dimensionless).
 
@@ -277,7 +282,10 @@ def run_drop(
     system : FloorSystem
     settings : DropSettings
     label : str
-        What the progress line calls the run (``"the ball alone"``).
+        What the monitor is told the run is (``"the ball alone"``).
+    monitor : Monitor, optional
+        Told of every step (:class:`~twoball._common.monitor.Monitor`; it may stop
+        the run by raising).
     **core
         Options of :class:`~twoball.modal.nonsmooth.MoreauJean` (``theta``,
         ``localise``, tolerances), for studies.
@@ -286,7 +294,7 @@ def run_drop(
         raise ParameterError("system", "a FloorSystem", type(system).__name__)
     ball = system.ball
     x = np.cos(ball.phi)
-    bound = np.abs(x) * ball.amplitude_bound()
+    bound = ball.floor_reach()
     floor = system.floor
     body = system.body
     stepper = MoreauJean(system.problem, settings.dt, **core)
@@ -308,8 +316,9 @@ def run_drop(
         if not rising or not np.isfinite(bound).all():
             return False
         reach = math.sqrt(2.0 * _membrane_energy(system, state.q, state.v))
-        # a point's gap is Z + (1 + u_i) x_i with |u_i| <= b_i sqrt(2 E) from now on,
-        # and Z only grows while the centre rises: Z + x_i - |x_i| b_i sqrt(2 E) > 0
+        # a point's gap is Z + x_i + (its vertical vibration) with the vibration at most
+        # r_i sqrt(2 E) from now on (ModalBall.floor_reach), and Z only grows while the
+        # centre rises: Z + x_i - r_i sqrt(2 E) > 0
         lowest = state.q[system.centre] + x - reach * bound
         if np.min(lowest) > 0.0:
             flags["stop"] = "flight"
@@ -348,7 +357,9 @@ def run_drop(
     # thin products with G and small solves: BLAS threads only contend on a loaded
     # machine (measured 11x slower steps for 1200 unknowns with both cores busy)
     with threadpool_limits(limits=1, user_api="blas"):
-        tr = stepper.run(q0, v0, settings.t_end, stop=stop, keep_states=True, label=label)
+        tr = stepper.run(
+            q0, v0, settings.t_end, stop=stop, keep_states=True, label=label, monitor=monitor
+        )
     wall = time.perf_counter() - start
     return _measure(system, settings, tr, flags["stop"], wall, bool(flags["off"]))
 
@@ -362,6 +373,7 @@ def _measure(
     off: bool = False,
 ) -> DropResult:
     gamma, v0 = settings.gamma, settings.v0
+    centre = system.centre
     impulses = tr.impulse[:, system.floor].sum(axis=1)
     intervals = contact_intervals(tr.t, impulses, settings.dt)
     if not intervals:
@@ -369,9 +381,9 @@ def _measure(
     events: list[FloorEvent] = []
     for iv in intervals:
         struck = int(np.count_nonzero(tr.impact_impulse[iv.first, system.floor] > 0.0))
-        events.append(FloorEvent("touch", iv.start, float(tr.v[iv.first, 0]), struck))
+        events.append(FloorEvent("touch", iv.start, float(tr.v[iv.first, centre]), struck))
         carrying = int(np.count_nonzero(tr.impulse[iv.last, system.floor] > 0.0))
-        speed = float(tr.v[iv.last + 1, 0] + gamma * (tr.t[iv.last + 1] - iv.end))
+        speed = float(tr.v[iv.last + 1, centre] + gamma * (tr.t[iv.last + 1] - iv.end))
         events.append(FloorEvent("separation", iv.end, speed, carrying))
     point_events = len(tr.events)
     # the ball has left the floor for good (with a body, the run may go on for it)
@@ -387,12 +399,12 @@ def _measure(
     if left and system.body is not None:
         contact_time = last.end - intervals[0].start
         # the centre at its floor release: free flight from the next step end back to it
-        v2 = float(tr.v[last.last + 1, 0] + gamma * (tr.t[last.last + 1] - last.end))
+        v2 = float(tr.v[last.last + 1, centre] + gamma * (tr.t[last.last + 1] - last.end))
         e2 = v2 / v0
         balance = momentum_balance(system, tr)
     elif left:
         contact_time = last.end - intervals[0].start
-        v2 = float(tr.v_final[0] + gamma * (tr.t[-1] - last.end))
+        v2 = float(tr.v_final[centre] + gamma * (tr.t[-1] - last.end))
         e2 = v2 / v0
         balance = abs(total - (v2 + v0 + gamma * last.end)) / total
     else:
@@ -407,10 +419,10 @@ def _measure(
     edge_t = tr.t[ends]
     window = EDGE_WINDOW * (last.end - intervals[0].start)
     phi_a_max, t_phi = smoothed_minimum(edge_t, edge, window)
-    flattening, t_compression = hermite_peak(tr.t, 1.0 - tr.q[:, 0], -tr.v[:, 0])
+    flattening, t_compression = hermite_peak(tr.t, 1.0 - tr.q[:, centre], -tr.v[:, centre])
     parts = system.energies(tr.q[-1], tr.v[-1])
     final = {name: float(value[0]) for name, value in parts.items()}
-    initial = 0.5 * v0 * v0 + gamma * float(tr.q[0, 0])
+    initial = 0.5 * v0 * v0 + gamma * float(tr.q[0, centre])
     body_start = {}
     if system.body is not None:
         start = system.energies(tr.q[0], tr.v[0])

@@ -10,6 +10,7 @@ from dataclasses import asdict, dataclass
 from numbers import Integral
 from typing import Any
 
+from twoball._common.choices import GAS_MODELS as GAS_LAWS
 from twoball._common.errors import ParameterError, real_number
 
 __all__ = ["DEFAULT_MODES", "GAS_LAWS", "Drop"]
@@ -18,7 +19,6 @@ __all__ = ["DEFAULT_MODES", "GAS_LAWS", "Drop"]
 #: Gauss-Radau nodes on the lower hemisphere).
 DEFAULT_MODES = 192
 MODES_RANGE = (8, 2000)
-GAS_LAWS: tuple[str, ...] = ("none", "isothermal", "adiabatic")
 #: Largest drop height H [m] (as ``twoball icm`` takes, :data:`twoball.modal.icm.inputs.UPPER`).
 DROP_HEIGHT_MAX = 1e6
 #: Largest gap Delta x [m] between the body and the ball's top at the floor impact.

@@ -1,21 +1,23 @@
 """The lower ball on a rigid floor as one contact problem for the nonsmooth core.
 
-Dimensionless (R, 1/c, m2).  Coordinates ``q = (Z, a_1, ..., a_K)``: Z the
-height of the ball's centre of mass above the floor, a_k the membrane's modal
-amplitudes (:class:`~twoball.modal.floor.ball.ModalBall`), u measured from the
-centre so that a translation is carried by Z alone.
+Dimensionless (R, 1/c, m2).  Coordinates ``q``: those of the ball
+(:class:`~twoball.modal.balls.description.ModalBall`: masses ``m_k``, decays
+``d_k``, frequencies ``omega_k``, the rigid translation among them as the
+coordinate ``centre`` whose value is the centre of mass's height Z), then, with
+an upper body, its height s.
 
 Equations (the contact core's (N1)-(N3), :mod:`twoball.modal.nonsmooth`)::
 
-    Z'' = -gamma + sum_i lambda_i                                          (F1)
-    m_k (a_k'' + d_k a_k' + omega_k^2 a_k) = sum_i lambda_i x_i S_ik       (F2)
-    g_i = Z + (1 + u(phi_i)) x_i >= 0,  lambda_i >= 0,  lambda_i g_i = 0   (F3)
+    m_k (q_k'' + d_k q_k' + omega_k^2 q_k) = -gamma [k = centre] + sum_i lambda_i V_ik  (F1-F2)
+    g_i = cos(phi_i) + V_i . q >= 0,  lambda_i >= 0,  lambda_i g_i = 0                 (F3)
 
-with ``x_i = cos(phi_i) < 0`` and ``u(phi_i) = sum_k S_ik a_k``.  (F3) is exact:
-the material point of polar angle phi_i sits at distance ``R (1 + u)`` from the
-centre along its radius, so its height is ``Z + (1 + u) cos(phi_i)``, linear in q.
-Gravity, uniform over the membrane, acts on the centre of mass only (its load
-on u, ``-gamma cos(phi)``, is pure degree 1).  At an impact Newton's law (N3)
+with ``V_ik`` the vertical displacement of floor point i per unit of coordinate
+k (:attr:`ModalBall.floor_rows`).  For the radial membranes ``q = (Z, a_1, ...,
+a_K)`` and ``V_i = (1, cos(phi_i) S_ik)``: the material point of polar angle
+phi_i sits at distance ``R (1 + u)`` from the centre along its radius, so its
+height is ``Z + (1 + u) cos(phi_i)``, linear in q and exact.  Gravity, uniform
+over the ball, acts on the centre of mass only (its load on a deformation is the
+deformation's centre-of-mass motion, zero).  At an impact Newton's law (N3)
 with restitution e holds at each floor point (default e = 0: the floor stops
 the arriving membrane).
 
@@ -25,14 +27,14 @@ one more row, the gap between it and the ball's top averaged over the contact
 cap of half-angle theta::
 
     mu s'' = -mu gamma - Lambda                                           (B1)
-    g_B = s - Z - 1 - sum_k b_k a_k >= 0,  Lambda >= 0,  Lambda g_B = 0   (B2)
+    g_B = s - 1 - b . q >= 0,  Lambda >= 0,  Lambda g_B = 0              (B2)
 
-with ``b_k`` mode k averaged over the cap (:meth:`ModalBall.cap_average`), and
-Newton's law with restitution e12 at its impacts.  (B2) is the gap of the
-finite-mass contact of :mod:`twoball.modal.contact` (eq. (C3)) with the centre
-free: the cap sits at ``Z + 1 + <u>_cap`` to first order in the slope, as there.
-:func:`floor_system` keeps the layout in :class:`FloorSystem`: q = (Z, a_1, ...,
-a_K[, s]), the floor rows first, then the body's.
+with ``b_k`` coordinate k's vertical displacement averaged over the cap
+(:meth:`ModalBall.cap_average`; for the membranes ``(1, <P_n>_cap)``: the cap
+sits at ``Z + 1 + <u>_cap`` to first order in the slope, eq. (C3) of
+:mod:`twoball.modal.contact` with the centre free), and Newton's law with
+restitution e12 at its impacts.  :func:`floor_system` keeps the layout in
+:class:`FloorSystem`: the floor rows first, then the body's.
 """
 
 from __future__ import annotations
@@ -41,7 +43,7 @@ import math
 from dataclasses import dataclass
 
 import numpy as np
-from twoball.modal.floor.ball import ModalBall
+from twoball.modal.balls.description import ModalBall
 from twoball.modal.nonsmooth import ContactProblem
 
 from twoball._common.errors import NumericalError, ParameterError
@@ -91,7 +93,8 @@ class BodyOnTop:
     mass : float
         mu = m1 / m2 > 0.
     cap : ndarray, shape (K,)
-        ``b_k``: each mode of the ball averaged over the contact cap.
+        ``b_k``: each coordinate's vertical displacement averaged over the contact
+        cap (:meth:`~twoball.modal.balls.description.ModalBall.cap_average`).
     cap_angle : float
         Half-angle theta of the cap [rad] (``arcsin(a / R)``).
     restitution : float
@@ -136,9 +139,12 @@ class FloorSystem:
     ----------
     ball : ModalBall
     problem : ContactProblem
-        M, C, K diagonal; rows of G: the floor points (ascending phi).
+        M, C, K diagonal; rows of G: the floor points (ascending phi), then the body's.
     gamma : float
         ``g / (R c^2)``.
+    body : BodyOnTop, optional
+    floor_rows : int, optional
+        0 in the paper's special case (no floor rows); None: every floor point.
     """
 
     ball: ModalBall
@@ -147,13 +153,17 @@ class FloorSystem:
     body: BodyOnTop | None = None
     floor_rows: int | None = None
 
-    #: Index of Z in q.
-    centre = 0
+    @property
+    def centre(self) -> int:
+        """Index of the centre of mass's height Z in q (the ball's translation)."""
+        if self.ball.centre is None:
+            raise NumericalError("FloorSystem: the ball's centre is held (no coordinate Z)")
+        return self.ball.centre
 
     @property
     def body_coordinate(self) -> int:
-        """Index of the body's height s in q (after the modal amplitudes)."""
-        return 1 + self.ball.modes
+        """Index of the body's height s in q (after the ball's coordinates)."""
+        return self.ball.modes
 
     @property
     def body_row(self) -> int:
@@ -166,9 +176,12 @@ class FloorSystem:
         return 0.0 if self.body is None else self.body.mass
 
     @property
-    def membrane(self) -> slice:
-        """Indices of the modal amplitudes in q."""
-        return slice(1, 1 + self.ball.modes)
+    def membrane(self) -> np.ndarray | slice:
+        """Indices in q of the ball's deformation (its coordinates but the translation)."""
+        centre, k = self.ball.centre, self.ball.modes
+        if centre == 0:
+            return slice(1, k)
+        return slice(0, k) if centre is None else self.ball.deformation
 
     @property
     def floor(self) -> slice:
@@ -183,7 +196,7 @@ class FloorSystem:
         """
         q = np.zeros(self.problem.dofs)
         v = np.zeros(self.problem.dofs)
-        q[self.centre] = height
+        q[self.centre] = height  # a translation of the undeformed ball
         v[self.centre] = -abs(v0)
         if self.body is not None:
             q[self.body_coordinate] = height + 1.0 + self.body.gap
@@ -205,21 +218,25 @@ class FloorSystem:
     def energies(self, q: np.ndarray, v: np.ndarray) -> dict[str, np.ndarray]:
         """Energy parts of states (rows of q, v), in units of ``m2 (R c)^2``.
 
-        ``rigid_kinetic`` 1/2 Z'^2, ``membrane_kinetic`` 1/2 sum m_k a_k'^2,
-        ``membrane_elastic`` 1/2 sum m_k (omega_k^2 - gas_k) a_k^2 (negative
-        parts: the pressurised breathing mode without its gas), ``gas``
-        1/2 sum m_k gas_k a_k^2 and ``gravity`` gamma Z (from the floor level).
+        ``rigid_kinetic`` 1/2 Z'^2, ``membrane_kinetic`` 1/2 sum m_k a_k'^2 over
+        the deformation, ``membrane_elastic`` 1/2 sum m_k (omega_k^2 - gas_k)
+        a_k^2 (negative parts: the pressurised breathing mode without its gas),
+        ``gas`` 1/2 sum m_k gas_k a_k^2 and ``gravity`` gamma Z (from the floor
+        level).  The names say membrane for any ball: its vibration.
         """
         q = np.atleast_2d(q)
         v = np.atleast_2d(v)
         b = self.ball
-        a, da = q[:, self.membrane], v[:, self.membrane]
+        d = self.membrane
+        a, da = q[:, d], v[:, d]
+        masses, w2, gas = b.masses[d], b.omega_squared[d], b.gas_squared[d]
+        c = self.centre
         out = {
-            "rigid_kinetic": 0.5 * v[:, self.centre] ** 2,
-            "membrane_kinetic": 0.5 * (da**2) @ b.masses,
-            "membrane_elastic": 0.5 * (a**2) @ (b.masses * (b.omega_squared - b.gas_squared)),
-            "gas": 0.5 * (a**2) @ (b.masses * b.gas_squared),
-            "gravity": self.gamma * q[:, self.centre],
+            "rigid_kinetic": 0.5 * b.masses[c] * v[:, c] ** 2,
+            "membrane_kinetic": 0.5 * (da**2) @ masses,
+            "membrane_elastic": 0.5 * (a**2) @ (masses * (w2 - gas)),
+            "gas": 0.5 * (a**2) @ (masses * gas),
+            "gravity": self.gamma * q[:, c],
         }
         if self.body is not None:
             s, ds = q[:, self.body_coordinate], v[:, self.body_coordinate]
@@ -236,7 +253,6 @@ def floor_system(
     body: BodyOnTop | None = None,
     *,
     floor: bool = True,
-    centre: bool = True,
 ) -> FloorSystem:
     """Assemble (F1)-(F3), and (B1)-(B2) with a body, under gravity ``gamma`` (dimensionless).
 
@@ -251,35 +267,32 @@ def floor_system(
         The upper body: one more coordinate and one more row.
     floor : bool
         False: the paper's special case (§3, eq. (3.10)): no floor rows and no
-        weight of the ball (only the body feels g).
-    centre : bool
-        False (with an anchored ball, degree 1 a mode of the membrane): Z takes
-        no part (no load, not in (B2)), the centre does not move, as in the
-        paper's model and :mod:`twoball.modal.contact`.
+        weight of the ball (only the body feels g).  A ball whose centre is held
+        (``ball.centre is None``, degree 1 a mode of the membrane) has no weight
+        to carry either: the paper's model and :mod:`twoball.modal.contact`.
     """
-    x = np.cos(ball.phi)
-    masses = np.concatenate([[1.0], ball.masses])
-    stiffness = np.concatenate([[0.0], ball.masses * ball.omega_squared])
-    damping = np.concatenate([[0.0], ball.masses * ball.decay])
+    masses = ball.masses
+    stiffness = ball.masses * ball.omega_squared
+    damping = ball.masses * ball.decay
     load = np.zeros(masses.size)
-    load[0] = -float(gamma) if (floor and centre) else 0.0
+    if floor and ball.centre is not None:
+        load[ball.centre] = -float(gamma) * ball.masses[ball.centre]
     if floor:
-        G = np.column_stack([np.ones_like(x), x[:, None] * ball.shapes])
-        offset, e = x, np.full(x.size, float(restitution))
+        G, offset = ball.floor_rows, np.cos(ball.phi)
+        e = np.full(offset.size, float(restitution))
     else:
         G, offset, e = np.zeros((0, masses.size)), np.zeros(0), np.zeros(0)
     rows = G.shape[0]
     if body is not None:
         if body.cap.shape != (ball.modes,):
-            raise NumericalError("floor_system: the body's cap needs one average per mode")
+            raise NumericalError("floor_system: the body's cap needs one average per coordinate")
         weight = float(gamma) if body.weight else 0.0
         masses = np.append(masses, body.mass)
         stiffness = np.append(stiffness, 0.0)
         damping = np.append(damping, 0.0)
         load = np.append(load, -body.mass * weight)
         G = np.column_stack([G, np.zeros(rows)])
-        link = -1.0 if centre else 0.0
-        G = np.vstack([G, np.concatenate([[link], -body.cap, [1.0]])])
+        G = np.vstack([G, np.concatenate([-body.cap, [1.0]])])
         offset = np.append(offset, -1.0)
         e = np.append(e, body.restitution)
     problem = ContactProblem.create(masses, damping, stiffness, load, G, offset, e)

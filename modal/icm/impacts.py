@@ -149,7 +149,46 @@ def second_impact_delay(
             f"<= 4 e2 (1 + e2) H = {limit:.6g} m (lower ball airborne at 2nd impact)",
             dx,
         )
-    return -dx / ((1.0 + e2) * v0)
+    return impact_delay(dx, -v0, e2)
+
+
+def impact_delay(gap: float, speed: float, e2: float) -> float:
+    """The delay ``Delta x / ((1 + e2) |v0|)`` from the floor impact to the second, eq. (2.2).
+
+    After the floor impact the gap closes at ``(1 + e2) |v0|`` (both fall alike,
+    so gravity drops out of the relative motion).  Any consistent units: SI (m,
+    m/s, s) or dimensionless (R, R c, 1/c).  The one home of the formula: the
+    ICM (:func:`second_impact_delay`), the whole bounce's ICM with the solver's
+    own e2 and the studies call it.
+
+    Examples
+    --------
+    >>> impact_delay(0.05, 4.1, 0.8)  # 5 cm at 4.1 m/s: 6.8 ms
+    0.006775067750677507
+    """
+    return gap / ((1.0 + e2) * speed)
+
+
+def approach_velocities(gap: float, speed: float, e2: float, g: float) -> tuple[float, float]:
+    """``(u1, u2)`` just before the second impact, eqs. (2.1)-(2.2), positive upwards.
+
+    The upper body falls at ``|v0|`` and the lower one rises at ``e2 |v0|`` from
+    the floor impact; gravity acts on both during :func:`impact_delay`.  Any
+    consistent units (``g`` as ``gamma = g / (R c^2)`` when dimensionless).
+    """
+    delay = impact_delay(gap, speed, e2)
+    return -speed - g * delay, e2 * speed - g * delay
+
+
+def icm_velocities(
+    gap: float, speed: float, e2: float, e12: float, mu: float, g: float
+) -> tuple[float, float]:
+    """``(v1, v2)`` of the ICM, eqs. (2.1)-(2.5): the floor impact, the delay, the collision.
+
+    ``speed`` is ``|v0|``; units as :func:`approach_velocities`.
+    """
+    u1, u2 = approach_velocities(gap, speed, e2, g)
+    return post_impact_velocities(u1, u2, mu, e12)
 
 
 def post_impact_velocities(u1: float, u2: float, mu: float, e12: float) -> tuple[float, float]:

@@ -69,8 +69,8 @@ from twoball.modal.nonsmooth.lcp import solve_lcp
 from twoball.modal.nonsmooth.linear import Factorised, combine
 from twoball.modal.nonsmooth.problem import ContactProblem
 
-from twoball._common.budget import check_deadline
 from twoball._common.errors import NumericalError, ParameterError, real_number
+from twoball._common.monitor import Monitor
 
 _MAX_LOCALISATIONS = 64  # shortened sub-steps inside one step (a guard)
 _ROOT_ITERATIONS = 60  # Illinois iterations of one localisation (a guard)
@@ -558,6 +558,7 @@ class MoreauJean:
         keep_states: bool = True,
         max_steps: int | None = None,
         label: str = "contact",
+        monitor: Monitor | None = None,
     ) -> Trajectory:
         """Integrate from ``(q0, v0)`` at ``t0`` to ``t_end`` or until ``stop`` returns True.
 
@@ -574,8 +575,11 @@ class MoreauJean:
         max_steps : int, optional
             Guard on the number of steps (default: 100 (t_end - t0)/dt + 1000).
         label : str
-            What the run is called where the progress line shows its steps, and in
-            the message of the time limit (checked at every step).
+            What the run is called where the monitor is told of its steps.
+        monitor : Monitor, optional
+            Called before every step with the run's label, the step and the share
+            of the window done (:class:`~twoball._common.monitor.Monitor`: it may
+            stop the run by raising).
 
         Returns
         -------
@@ -597,10 +601,10 @@ class MoreauJean:
         for taken in range(limit):
             if state.t >= t_end - end_tol:
                 break
-            # the time limit, and what the progress line shows, at every step
-            check_deadline(
-                f"{label}: step {taken}, {100.0 * (state.t - t0) / span:.0f} % of the window"
-            )
+            if monitor is not None:
+                monitor(
+                    f"{label}: step {taken}, {100.0 * (state.t - t0) / span:.0f} % of the window"
+                )
             h = min(self.dt, t_end - state.t)
             if t_end - (state.t + h) < end_tol:
                 h = t_end - state.t

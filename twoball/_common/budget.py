@@ -1,10 +1,12 @@
 """The resource guard: refuse, before it starts, work that cannot fit in memory or time.
 
-Every expensive path asks its own cost model for an :class:`Estimate` (the
-closed-form series: :mod:`twoball.modal.cost`; the finite elements:
-:mod:`twoball.fem_membrane.cost`; sweeps and worker pools:
+Every expensive path's verb asks the work's cost model for an
+:class:`~twoball._common.estimate.Estimate` (the closed-form series:
+:mod:`twoball.modal.cost`; the finite elements: :mod:`twoball.fem_membrane.cost`;
+the drop: :mod:`twoball.modal.floor.cost`; sweeps and worker pools:
 :mod:`twoball.verify.sweeps.cost`; field frames: :mod:`twoball.verify.output.fields`)
-and passes it to :func:`check` *before* it allocates anything.  Above the limit it
+and passes it to :func:`check` *before* anything is allocated.  The cost models
+only estimate; the refusal is the edge's.  Above the limit it
 raises :class:`BudgetError` (a :class:`~twoball._common.errors.ParameterError`,
 so the command line prints one line and exits with status 2)::
 
@@ -32,7 +34,9 @@ The deadline
     also a deadline: the outermost public verb (or command) starts its clock
     (:func:`running`), and the long loops of every solver -- the series
     evaluation chunks, the contact event loop, the generalized-alpha steps, the
-    Krylov iterations, sweep points, study runs -- call :func:`check_deadline`.
+    Krylov iterations, the drop's steps, sweep points, study runs -- tell their
+    monitor what they do (:mod:`twoball._common.monitor`); the edge's monitor
+    (:class:`twoball._common.watch.Watch`) calls :func:`check_deadline`.
     Past the limit it raises :class:`DeadlineError` (a
     :class:`~twoball._common.errors.NumericalError`: exit status 3, one line
     naming what was running).  Nested verbs share the outer clock.
@@ -53,15 +57,34 @@ from dataclasses import dataclass
 from typing import Any, TypeVar
 
 from twoball._common.errors import NumericalError, ParameterError
+from twoball._common.estimate import BASE_MEMORY, Estimate, GiB, KiB, MiB, TiB, options
 
-KiB, MiB, GiB, TiB = 2**10, 2**20, 2**30, 2**40
+__all__ = [
+    "BASE_MEMORY",
+    "Budget",
+    "BudgetError",
+    "DeadlineError",
+    "Estimate",
+    "GiB",
+    "KiB",
+    "MiB",
+    "TiB",
+    "check",
+    "check_deadline",
+    "current_budget",
+    "limits",
+    "options",
+    "running",
+    "set_budget",
+    "timed",
+]
+
 DEFAULT_MEMORY_SHARE = 0.5  # of physical memory
 FALLBACK_MEMORY = 4 * GiB  # when the machine's memory cannot be read
 DEFAULT_MAX_SECONDS = 300.0
 MEMORY_ENV = "TWOBALL_MAX_MEMORY"
 TIME_ENV = "TWOBALL_MAX_TIME"
 
-BASE_MEMORY = 100 * MiB  # interpreter, numpy, scipy (measured 89 MiB)
 #: Address space mapped per byte of the estimates (resident memory): SuperLU reserves
 #: (calloc) its fill estimate for every factorisation and touches a fraction; measured
 #: sphere L5 P4: 9.5 GB mapped at 1.6 GB resident, estimate 3.3 GB.
@@ -178,28 +201,6 @@ def format_seconds(seconds: float) -> str:
 
 
 @dataclass(frozen=True)
-class Estimate:
-    """Peak memory [bytes] and wall time [s] a piece of work is expected to need.
-
-    ``address``: the address space it maps [bytes] where that is far above its
-    resident memory (sparse LU reserves its fill estimate: the finite elements'
-    cost model), 0 when it maps about what it uses.
-    """
-
-    memory: float
-    seconds: float
-    address: float = 0.0
-
-    def __add__(self, other: Estimate) -> Estimate:
-        """Work done one after the other: memories of the larger, times added."""
-        return Estimate(
-            max(self.memory, other.memory),
-            self.seconds + other.seconds,
-            max(self.address, other.address),
-        )
-
-
-@dataclass(frozen=True)
 class Budget:
     """Memory [bytes] and time [s] one run may use.
 
@@ -297,15 +298,6 @@ def limits(
 def check(option: str, estimate: Estimate) -> Estimate:
     """:meth:`Budget.check` with the budget in force."""
     return current_budget().check(option, estimate)
-
-
-def options(**values: object) -> str:
-    """``modes 100000 t_end 1e+06`` from keyword values (None skipped): the work asked for."""
-    return " ".join(
-        f"{name} {value:g}" if isinstance(value, float) else f"{name} {value}"
-        for name, value in values.items()
-        if value is not None
-    )
 
 
 class DeadlineError(NumericalError):

@@ -32,8 +32,10 @@ __all__ = [
     "add_drop_options",
     "bounce_rows",
     "bounce_from_options",
+    "drop_ball",
     "drop_case",
     "drop_options",
+    "drop_solver",
     "register",
     "run",
 ]
@@ -144,12 +146,10 @@ def drop_case(args: argparse.Namespace) -> twoball.Case:
 
 
 def drop_options(args: argparse.Namespace) -> twoball.Drop:
-    """``--drop-height``, ``--gas``, ``--floor-restitution``, ``--modes``, ``--membrane``,
-    ``--gap``."""
+    """``--drop-height``, ``--gas``, ``--floor-restitution``, ``--membrane``, ``--gap``."""
     fields: dict[str, Any] = {
         "drop_height": args.drop_height,
         "gas": args.gas,
-        "modes": args.modes,
         "gap": getattr(args, "gap", None),
     }
     if args.floor_restitution is not None:
@@ -159,30 +159,31 @@ def drop_options(args: argparse.Namespace) -> twoball.Drop:
     return twoball.Drop(**{k: v for k, v in fields.items() if v is not None})
 
 
-def _mesh(args: argparse.Namespace) -> twoball.MeshOptions | None:
-    """``--mesh``, ``--elements``, ``--order`` as mesh options (the line ``axisym`` by default)."""
+def drop_ball(args: argparse.Namespace) -> Any:
+    """The lower ball of ``--backend``: ``--modes`` on Legendre modes, the mesh options on
+    finite elements (the axisymmetric line, 192 / order elements by default)."""
     fields = {n: getattr(args, n) for n in ("elements", "order") if getattr(args, n) is not None}
-    if args.mesh is None and not fields:
-        return None
+    if args.backend == "legendre":
+        if args.mesh is not None or fields:
+            name, value = (
+                ("mesh", args.mesh) if args.mesh is not None else next(iter(fields.items()))
+            )
+            valid = "left out with backend legendre (no mesh: --modes sets its resolution)"
+            raise ParameterError(name, valid, value)
+        return twoball.LegendreBall(args.modes)
     if args.backend != "fem":
-        name, value = ("mesh", args.mesh) if args.mesh is not None else next(iter(fields.items()))
-        valid = "left out with backend legendre (no mesh: --modes sets its resolution)"
-        raise ParameterError(name, valid, value)
+        raise ParameterError("backend", "one of legendre, fem", args.backend)
+    if args.modes is not None:
+        raise ParameterError("modes", "left out with backend fem (the mesh sets it)", args.modes)
     order = fields.get("order", 2)
     if "elements" not in fields and args.mesh in (None, "axisym") and order in (1, 2, 3, 4):
-        from twoball._bounce import drop_elements  # the drop's default line, not the lift-off's
-
-        fields["elements"] = drop_elements(order)
-    return twoball.MeshOptions(args.mesh or "axisym", **fields)
+        fields["elements"] = twoball.drop_elements(order)  # the drop's line, not the lift-off's
+    return twoball.FEBall(twoball.MeshOptions(args.mesh or "axisym", **fields))
 
 
-def _stepping(args: argparse.Namespace) -> twoball.Stepping | None:
-    fields: dict[str, Any] = {}
-    if args.t_end is not None:
-        fields["t_end"] = args.t_end
-    if args.dt is not None:
-        fields.update(dt=args.dt, scheme="moreau-jean")
-    return twoball.Stepping(**fields) if fields else None
+def drop_solver(args: argparse.Namespace) -> twoball.MoreauJean:
+    """The Moreau-Jean steps of ``--dt`` and ``--t-end`` on the ball of the options."""
+    return twoball.MoreauJean(drop_ball(args), dt=args.dt, t_end=args.t_end)
 
 
 def whole_body(args: argparse.Namespace) -> twoball.Body | None:
@@ -203,11 +204,9 @@ def bounce_from_options(args: argparse.Namespace) -> twoball.BounceReport:
     return twoball.bounce(
         case,
         drop_options(args),
+        solver=drop_solver(args),
         body=body,
         pair=args.pair,
-        backend=args.backend,
-        mesh=_mesh(args),
-        stepping=_stepping(args),
         damping=damping_options(args),
     )
 

@@ -43,6 +43,7 @@ from twoball.verify.output.render import BallScene
 from twoball.verify.output.series import TimeSeries
 
 from twoball._common.budget import BASE_MEMORY, Estimate, check
+from twoball._common.choices import DEFAULT_FRAMES
 from twoball._common.errors import ParameterError
 from twoball._common.progress import Step, silent
 
@@ -749,7 +750,6 @@ def check_frame_budget(case: Case, count: int, name: str, field: FieldMesh) -> N
     )
 
 
-DEFAULT_FRAMES = 25
 
 
 def check_frames(frames: object, name: str = "frames") -> int:

@@ -10,6 +10,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 from typing import Any
 
+from twoball._common.choices import FIELD_BACKENDS
 from twoball._common.errors import ParameterError
 
 __all__ = [
@@ -26,7 +27,7 @@ FPS_RANGE = (1e-3, 1e3)
 #: Most frames of an export or an animation.
 MAX_FRAMES = 2000
 #: The solvers of the field outputs: finite elements and the closed form.
-BACKENDS: tuple[str, ...] = ("fem", "legendre")
+BACKENDS = FIELD_BACKENDS
 
 
 def check_frame_choice(frames: Any, name: str = "frames") -> int | tuple[float, ...] | None:

@@ -27,12 +27,12 @@ from pathlib import Path
 
 import numpy as np
 
+from twoball._common.choices import DEFAULT_SIZE
 from twoball._common.errors import ParameterError
 from twoball._common.signals import checkpoint, held_signals
 from twoball._common.staging import staged_file
 
 IMAGE_KINDS: tuple[str, ...] = (".png", ".gif", ".mp4")
-DEFAULT_SIZE = (640, 480)
 MACRO_BLOCK = 16  # MP4 (H.264, yuv420p) frame sizes must be multiples of this
 AUTO_WARP_SHARE = 0.15  # auto warp: the largest displacement drawn at 15 % of R
 MAX_WARP_SHARE = 1.0  # a given warp may draw the largest displacement at R at most

@@ -61,10 +61,10 @@ import numpy as np
 from meshio._common import write_xml
 from meshio.xdmf import TimeSeriesWriter
 
+from twoball._common.choices import FORMATS
 from twoball._common.errors import ParameterError
 from twoball._common.staging import staged_collection, staged_file, write_marker
 
-FORMATS: tuple[str, ...] = ("xdmf", "vtu", "pvd")
 SUFFIXES: dict[str, str] = {"xdmf": ".xdmf", "vtu": ".vtu", "pvd": ".pvd"}
 CELL_TYPES: dict[int, str] = {3: "triangle", 6: "triangle6"}
 TIME_VALUE = "TimeValue"  # the VTK/ParaView name of a dataset's time in field data

@@ -325,7 +325,7 @@ class Context:
     directory: Path
     runner: Runner
     progress: TaskHook = lambda label, total: _ignore  # twoball._common.progress.Reporter.task
-    tasks: dict[str, Any] = field(default_factory=dict)  # the face's picklable runs
+    monitor: Any = None  # handed to the runs (twoball._common.monitor.Monitor)
 
     def path(self, name: str) -> Path:
         """A file in the output directory."""

@@ -28,26 +28,33 @@ from twoball.verify.reproduce import whole as reproduce_whole
 from twoball.verify.reproduce.common import Context, Section, comparison_table
 from twoball.verify.sweeps.parallel import Runner
 
+from twoball._common.choices import REPRODUCTION_DIR, REPRODUCTION_PARTS, REPRODUCTION_REPORT
 from twoball._common.errors import ParameterError
 from twoball._common.progress import TaskHook
 
-#: Part name -> function(Context) -> Section, in report order.
-PARTS: dict[str, Callable[[Context], Section]] = {
-    "table2": reproduce_icm.part_table2,
-    "fig6": reproduce_cem.part_fig6,
-    "fig10": reproduce_cem.part_fig10,
-    "fig11": reproduce_cem.part_fig11,
-    "fig12": reproduce_cem.part_fig12,
-    "thresholds": reproduce_cem.part_thresholds,
-    "table1": reproduce_icm.part_table1,
-    "icm": reproduce_icm.part_icm,
-    "contact": reproduce_contact.part_contact,
-    "whole_table1": reproduce_whole.part_whole_table1,
-    "whole_gap": reproduce_whole.part_whole_gap,
-    "whole_timing": reproduce_whole.part_whole_timing,
-}
-DEFAULT_OUT = "twoball-reproduction"
-REPORT = "reproduction.md"
+#: Part name -> function(Context) -> Section, in report order (the names: REPRODUCTION_PARTS).
+PARTS: dict[str, Callable[[Context], Section]] = dict(
+    zip(
+        REPRODUCTION_PARTS,
+        (
+            reproduce_icm.part_table2,
+            reproduce_cem.part_fig6,
+            reproduce_cem.part_fig10,
+            reproduce_cem.part_fig11,
+            reproduce_cem.part_fig12,
+            reproduce_cem.part_thresholds,
+            reproduce_icm.part_table1,
+            reproduce_icm.part_icm,
+            reproduce_contact.part_contact,
+            reproduce_whole.part_whole_table1,
+            reproduce_whole.part_whole_gap,
+            reproduce_whole.part_whole_timing,
+        ),
+        strict=True,
+    )
+)
+DEFAULT_OUT = REPRODUCTION_DIR
+REPORT = REPRODUCTION_REPORT
 DATA = "reproduction.json"
 PROVENANCE = "provenance.json"
 
@@ -80,15 +87,15 @@ def reproduce(
     runner: Runner | None = None,
     progress: TaskHook | None = None,
     command: str = "twoball reproduce",
-    tasks: dict[str, Callable[[Any], Any]] | None = None,
+    monitor: Any = None,
 ) -> tuple[Path, list[Section]]:
     """Run the selected parts and write figures, ``reproduction.md`` and ``.json`` to ``out``.
 
     Returns the output directory and the sections.  Nothing is written to ``out``
     unless every part succeeded.  ``progress(label, total)`` starts a counted task
     and returns its ``update(done)``: :meth:`twoball._common.progress.Reporter.task`.
-    ``tasks`` are the picklable runs the face lends the parts (``"bounce"``: one
-    whole bounce, :class:`twoball._bounce.BounceTask`).
+    ``monitor`` (:class:`~twoball._common.monitor.Monitor`) is handed to the runs
+    of the parts (the whole bounce's drops).
     """
     from twoball.verify.output.report_files import result_files
 
@@ -102,7 +109,7 @@ def reproduce(
         if own_runner:
             runner = Runner(workers=1).__enter__()
         with staged_folder(target, "out", "twoball reproduce") as staging:
-            ctx = Context(staging, runner, tasks=dict(tasks or {}))
+            ctx = Context(staging, runner, monitor=monitor)
             if progress is not None:
                 ctx.progress = progress
             sections = []

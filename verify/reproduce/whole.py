@@ -70,14 +70,13 @@ _CURVES: dict[str, dict[str, list[tuple[float, Any]]]] = {}
 
 
 def _run(ctx: Context, items: list[tuple[str, float]], label: str) -> list[Any]:
-    """Whole bounces of Table 1 pairs at gaps [m], through the face's task on the runner."""
+    """Whole bounces of Table 1 pairs at gaps [m], on the context's runner."""
     from twoball.modal.floor.options import Drop
+    from twoball.verify.sweeps.bounce import BounceTask
 
-    from twoball._common.errors import NumericalError, ParameterError
+    from twoball._common.errors import NumericalError
 
-    task = ctx.tasks.get("bounce")
-    if task is None:
-        raise ParameterError("only", "the whole-bounce parts run through twoball.reproduce", None)
+    task = BounceTask(monitor=ctx.monitor)
     runs = [(None, Drop(gap=gap), None, pair) for pair, gap in items]
     update = ctx.progress(label, len(runs))
     outcomes = ctx.runner.map(task, runs, progress=update, min_parallel=2, chunk=1)

@@ -3,7 +3,7 @@
 ``python -m twoball.verify.studies.floor [names...]`` prints Markdown tables of
 every number docs/bounce.rst quotes (a full run takes about half an hour on one
 core, most of it the fine references of the convergence studies).  The drops
-start from the SI case (:func:`twoball.modal.floor.model.resolve_drop`, as
+start from the SI case (:func:`twoball.modal.floor.inputs.resolve_drop`, as
 ``twoball.bounce`` does) and run on the Legendre modes and on axisymmetric P2
 elements; convergence tables are dimensionless (R, 1/c, m2), the others SI.
 """
@@ -18,10 +18,10 @@ from dataclasses import dataclass, field
 
 import numpy as np
 from twoball.fem_membrane.floor import axisym_ball
+from twoball.modal.balls.membrane import legendre_ball
 from twoball.modal.damping import ModalRatio, Rayleigh
-from twoball.modal.floor.ball import legendre_ball
 from twoball.modal.floor.drop import DropResult, DropSettings, run_drop
-from twoball.modal.floor.model import DropModel, resolve_drop
+from twoball.modal.floor.inputs import DropModel, resolve_drop
 from twoball.modal.floor.options import Drop
 from twoball.modal.floor.references import MEASURED_COMPRESSION, TABLE1_E2, pressure_area
 from twoball.modal.floor.settle import settle

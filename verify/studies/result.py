@@ -13,12 +13,12 @@ from typing import Any
 from twoball.modal.parameters import Case
 from twoball.verify.studies.quantities import QuantityResult
 
+from twoball._common.choices import STUDIES
 from twoball._common.progress import (
     Step as Progress,  # the one progress mechanism (twoball._common.progress)
 )
 from twoball._common.progress import silent as quiet
 
-STUDIES: tuple[str, ...] = ("h", "order", "modes", "dt")
 __all__ = ["STUDIES", "Progress", "StudyResult", "case_settings", "quiet", "si", "time_step_text"]
 
 

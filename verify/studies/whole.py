@@ -4,7 +4,7 @@
 the numbers docs/whole_bounce.rst quotes that the reproduction does not print
 (Table 1 and the gap curves: ``twoball reproduce --only whole_table1,whole_gap``).
 The runs start from the SI pair or body as ``twoball.bounce`` resolves them
-(:func:`twoball.modal.floor.model.resolve_pair`, ``resolve_body``,
+(:func:`twoball.modal.floor.inputs.resolve_pair`, ``resolve_body``,
 ``resolve_drop``) and run on the Legendre modes or axisymmetric P2 elements.
 A full run takes a few minutes on one core.
 """
@@ -18,11 +18,11 @@ from dataclasses import dataclass
 
 import numpy as np
 from twoball.fem_membrane.floor import axisym_ball
+from twoball.modal.balls.membrane import legendre_ball
 from twoball.modal.contact.body import Body
 from twoball.modal.damping import ModalRatio
-from twoball.modal.floor.ball import legendre_ball
 from twoball.modal.floor.drop import DropResult, DropSettings, run_drop
-from twoball.modal.floor.model import resolve_body, resolve_drop, resolve_pair
+from twoball.modal.floor.inputs import resolve_body, resolve_drop, resolve_pair
 from twoball.modal.floor.options import Drop
 from twoball.modal.floor.restitution import body_liftoff
 from twoball.modal.floor.system import BodyOnTop, floor_system, release_delay
@@ -139,7 +139,7 @@ def limit_a_table(masses: Sequence[float] = (0.05, 0.01, 1e-3, 1e-4)) -> str:
 
 def limit_b_table(gaps: Sequence[float] = (0.1, 0.15, 0.2, 0.25, 0.5)) -> str:
     """Limit (b): large gaps against eqs. (2.1)-(2.5) with the run's e2 and e12_effective."""
-    from twoball.modal.icm.impacts import post_impact_velocities
+    from twoball.modal.icm.impacts import icm_velocities
 
     body = Body(0.101, contact_radius=0.0262, restitution=0.89)
     lines = [
@@ -156,11 +156,8 @@ def limit_b_table(gaps: Sequence[float] = (0.1, 0.15, 0.2, 0.25, 0.5)) -> str:
                 lines.append(f"| {g:g} | {gap * 1e3:g} | {b.sequence} | - | | | | | |")
                 continue
             v0 = r.settings.v0
-            delay = (gap / run_.case.radius) / ((1.0 + e2) * v0)
             gamma = r.settings.gamma
-            v1, v2 = post_impact_velocities(
-                -v0 - gamma * delay, e2 * v0 - gamma * delay, 0.101, e12
-            )
+            v1, v2 = icm_velocities(gap / run_.case.radius, v0, e2, e12, 0.101, gamma)
             bound = gamma * r.contact_time / v0
             lines.append(
                 f"| {g:g} | {gap * 1e3:g} | {b.sequence} | {e12:.3f} | {run_.v1:.4f} | "

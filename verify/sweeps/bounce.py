@@ -1,8 +1,9 @@
 """Sweeps of the drop on the floor and of the whole bounce: one run per value (SI).
 
 :func:`bounce_points` turns a base case, drop and body and one swept parameter
-into the (case, drop, body) triples the face runs one by one (``twoball.sweep(...,
-drop=Drop())``) on the process pool or Dask
+into the (case, drop, body) triples that :func:`bounce_sweep` runs one by one
+(:class:`BounceTask`, the run of :mod:`twoball.modal.floor.bounce`) in process,
+on the process pool or on Dask
 (:class:`~twoball.verify.sweeps.parallel.Runner`): the impact speed ``v0``
 [m/s], the drop height ``drop-height`` [m], the gap ``gap`` [m] (Fig. 3, Fig. 8)
 and the mass ratio ``mass-ratio`` of the upper body.  The figures are
@@ -12,18 +13,29 @@ and the mass ratio ``mass-ratio`` of the upper body.  The figures are
 
 from __future__ import annotations
 
+import os
 from collections.abc import Sequence
-from dataclasses import replace
+from dataclasses import dataclass, field, replace
+from pathlib import Path
 from typing import Any
 
 import numpy as np
 from twoball.modal.floor.options import Drop
+from twoball.modal.floor.report import BounceReport
 from twoball.modal.parameters import Case
 from twoball.verify.sweeps.sweeps import parse_range
 
 from twoball._common.errors import ParameterError
 
-__all__ = ["BOUNCE_PARAMETERS", "bounce_points", "bounce_values"]
+__all__ = [
+    "BOUNCE_PARAMETERS",
+    "BounceSweep",
+    "BounceTask",
+    "bounce_points",
+    "bounce_sweep",
+    "bounce_values",
+    "check_point",
+]
 
 #: Parameters of a drop sweep (CLI names) and the field each sets.
 BOUNCE_PARAMETERS: dict[str, str] = {
@@ -65,7 +77,7 @@ def bounce_points(
             raise ParameterError("drop_height", "left out when v0 is swept", drop.drop_height)
         return [(case.derive(v0=float(v)), drop, body) for v in values]
     if parameter == "drop-height":
-        from twoball.modal.floor.model import check_drop_height
+        from twoball.modal.floor.inputs import check_drop_height
 
         points = [(case, replace(drop, drop_height=float(v)), body) for v in values]
         for _, point, _ in points:  # a height below the case's radius: before the first run
@@ -81,3 +93,193 @@ def bounce_points(
         raise ParameterError("mass_ratio", "left out when the mass ratio is swept", body.mass_ratio)
     base = Body(0.0) if body is None else body
     return [(case, drop, replace(base, mass_ratio=float(v))) for v in values]
+
+
+@dataclass(frozen=True)
+class BounceSweep:
+    """Drops over one parameter (``v0``, ``drop-height``, ``gap`` or ``mass-ratio``), in SI.
+
+    Attributes
+    ----------
+    parameter : str
+        ``v0``, ``drop-height``, ``gap`` or ``mass-ratio``.
+    values : tuple of float
+        Its values (m/s, m, m or none).
+    reports : list of BounceReport or None
+        One run per value without its history
+        (:meth:`~twoball.modal.floor.report.BounceReport.light`; None where it
+        failed; ``errors`` says why).
+    errors : list of str or None
+    provenance : dict
+
+    Examples
+    --------
+    >>> import twoball
+    >>> solver = twoball.MoreauJean(twoball.LegendreBall(32))
+    >>> result = twoball.sweep({"v0": [2.0, 4.1]}, drop=twoball.Drop(), solver=solver)
+    >>> [round(r.flattening_max_m * 1e3, 1) for r in result.reports]
+    [12.0, 20.5]
+    """
+
+    parameter: str
+    values: tuple[float, ...]
+    reports: list[Any]
+    errors: list[str | None]
+    provenance: dict[str, Any] | None = field(default=None, compare=False, repr=False)
+
+    def as_dict(self) -> dict[str, Any]:
+        """JSON-ready: the parameter and one drop per value (SI), with the provenance."""
+        points = []
+        for value, report, error in zip(self.values, self.reports, self.errors, strict=True):
+            data = {"parameter": self.parameter, "value": value, "error": error}
+            if report is not None:
+                data |= {k: v for k, v in report.as_dict().items() if k != "provenance"}
+            points.append(data)
+        return {"parameter": self.parameter, "points": points, "provenance": self.provenance}
+
+    def plot(self, out: str | os.PathLike[str], *, dpi: float | None = None) -> Path:
+        """phi_a,max and the flattening against |v0|, with eq. (3.7), pressure x area and the
+        measurements (Table 2; 3.07 mm per m/s); for a gap or mass-ratio sweep, v1/|v0|,
+        v2/|v0| and the lift-off time against it with the ICM and the lumped baselines."""
+        from twoball.verify.output.figures import save_figure
+        from twoball.verify.output.figures.bounce import speeds_figure
+
+        done = [r for r in self.reports if r is not None]
+        if not done:
+            raise ParameterError("values", "at least one drop that ran, to plot", None)
+        if self.parameter in ("gap", "mass-ratio"):
+            from twoball.verify.output.figures.bounce import gap_figure
+
+            pairs = [(v, r) for v, r in zip(self.values, self.reports, strict=True) if r]
+            return save_figure(gap_figure(pairs, self.parameter), out, "plot", dpi)
+        rows = [(r.case.v0, r.phi_a_max_rad, r.flattening_max_m) for r in done]
+        return save_figure(speeds_figure(rows, done[0].case), out, "plot", dpi)
+
+
+def check_point(
+    case: Case | None, drop: Drop, body: Any, pair: str | None, *, solver: Any = None
+) -> None:
+    """The checks a drop makes before its work (:func:`~twoball.modal.floor.bounce.bounce_problem`),
+    for one point of a sweep."""
+    from twoball.modal.floor.bounce import bounce_problem
+
+    bounce_problem(case, drop, body=body, pair=pair, **_solver_options(solver))
+
+
+def _solver_options(solver: Any) -> dict[str, Any]:
+    """A Moreau-Jean solver's ball, step and window as the drop's arguments."""
+    if solver is None:
+        return {}
+    return {"ball": solver.ball, "dt": solver.dt, "t_end": solver.t_end}
+
+
+def bounce_sweep(
+    values: Any,
+    case: Case | None,
+    drop: Drop,
+    *,
+    body: Any = None,
+    pair: str | None = None,
+    solver: Any = None,
+    damping: Any = None,
+    workers: int | None = None,
+    scheduler: str | None = None,
+    progress: Any = None,
+    monitor: Any = None,
+) -> BounceSweep:
+    """Drops over ``values`` (``{"v0": [...]}``, ``drop_height``, ``gap`` or ``mass_ratio``), SI.
+
+    The points run in this process (``workers`` 1 or None), on a local process
+    pool or on a Dask scheduler (:class:`~twoball.verify.sweeps.parallel.Runner`):
+    the numbers do not depend on where.  Each point is kept without its history
+    (:meth:`BounceReport.light`).  ``solver`` is the Moreau-Jean solver of every
+    point (its ball, step and window); ``monitor`` is handed to each run.
+    """
+    from twoball.modal.floor.inputs import check_drop_case, resolve_pair, v0_set
+    from twoball.verify.sweeps.parallel import Runner, check_workers
+
+    if case is not None and not isinstance(case, Case):
+        raise ParameterError("case", "a twoball.Case", type(case).__name__)
+    if not isinstance(drop, Drop):
+        raise ParameterError("drop", "a twoball.Drop", type(drop).__name__)
+    if not hasattr(values, "items") or not values:
+        raise ParameterError(
+            "values", "a mapping of v0, drop_height, gap or mass_ratio to values", values
+        )
+    parameter, array = bounce_values(list(values), list(values.values()))
+    if pair is not None and parameter == "mass-ratio":
+        raise ParameterError("pair", "left out when the mass ratio is swept (it fixes mu)", pair)
+    if parameter == "gap" and body is None and pair is None:
+        raise ParameterError("gap", "swept only with an upper body (body or pair)", None)
+    if scheduler and workers is not None:
+        raise ParameterError("workers", "left out with scheduler (the cluster decides)", workers)
+    workers = 1 if workers is None and not scheduler else workers
+    if workers is not None:
+        check_workers(workers)
+    base, _, _ = resolve_pair(case, None, pair) if pair is not None else (case, None, None)
+    base = Case.preset("basketball") if base is None else base
+    if parameter == "drop-height" and v0_set(base):
+        speed = base.v0 if base.v0_given is None else base.v0_given
+        valid = "left out when drop_height is swept (each height sets |v0| = sqrt(2 g H))"
+        raise ParameterError("v0", valid, speed)
+    check_drop_case(base, drop)  # a given phi_a: a v0 sweep would drop it unsaid
+    points = [(*point, pair) for point in bounce_points(base, drop, parameter, array, body)]
+    for point in points:  # every point's values refused here, before the first run
+        check_point(*point, solver=solver)
+    task = BounceTask(solver=solver, damping=damping, monitor=monitor)
+    reports: list[Any] = []
+    errors: list[str | None] = []
+    with Runner(workers=workers, scheduler=scheduler) as runner:
+        outcomes = runner.map(task, points, progress=progress, min_parallel=2, chunk=1)
+        where = runner.describe()
+    for outcome in outcomes:
+        reports.append(outcome.value if outcome.ok else None)
+        errors.append(None if outcome.ok else _short(outcome.error))
+    arguments: dict[str, Any] = {"values": {parameter: array}, "drop": drop.as_dict()}
+    if body is not None:
+        arguments["body"] = body.as_dict()
+    if pair is not None:
+        arguments["pair"] = pair
+    if solver is not None:
+        arguments["solver"] = solver.as_dict()
+    if damping is not None:
+        arguments["damping"] = damping.as_dict()
+    arguments["runner"] = where
+    from twoball._common.provenance import block
+
+    provenance = block(base, "twoball.sweep", arguments)
+    return BounceSweep(parameter, tuple(float(v) for v in array), reports, errors, provenance)
+
+
+def _short(error: str | None) -> str | None:
+    """``ParameterError: gap must be ...`` -> the message (the type only for other errors)."""
+    if error is None:
+        return None
+    kind, _, text = error.partition(": ")
+    return text if kind in ("ParameterError", "NumericalError") else error
+
+
+@dataclass(frozen=True)
+class BounceTask:
+    """One drop or whole bounce, picklable for the process pool or Dask.
+
+    Called with ``(case, drop, body, pair)``, it resolves and runs the drop
+    (:func:`~twoball.modal.floor.bounce.bounce_problem`,
+    :func:`~twoball.modal.floor.bounce.simulate`) with the task's solver (a
+    Moreau-Jean solver's ball, step and window), damping law and monitor, and
+    returns the report without its history (:meth:`BounceReport.light`, about
+    0.1 MB) or provenance.
+    """
+
+    solver: Any = None
+    damping: Any = None
+    monitor: Any = None
+
+    def __call__(self, item: tuple[Any, Any, Any, Any]) -> BounceReport:
+        from twoball.modal.floor.bounce import bounce_problem, simulate
+
+        case, drop, body, pair = item
+        problem = bounce_problem(
+            case, drop, body=body, pair=pair, damping=self.damping, **_solver_options(self.solver)
+        )
+        return simulate(problem, self.monitor).light()

@@ -28,18 +28,9 @@ from twoball.modal.parameters import FROM_V0, Case
 from twoball.modal.report import LiftoffReport, legendre_liftoff
 from twoball.verify.sweeps.parallel import Runner
 
+from twoball._common.choices import SWEEP_PARAMETERS
 from twoball._common.errors import ParameterError
 
-# CLI name -> Case field; v0, c and R re-derive phi_a from eq. (3.7) (Case.derive).
-SWEEP_PARAMETERS: dict[str, str] = {
-    "damping": "damping",
-    "v0": "v0",
-    "wave-speed": "wave_speed",
-    "radius": "radius",
-    "modes": "modes",
-    "mass-ratio": "mass_ratio",  # not a Case field: the points become ContactCase
-    "bending": "bending",
-}
 #: Axis labels (SI) of the swept parameters.
 PARAMETER_LABELS: dict[str, str] = {
     "damping": "damping ratio D",

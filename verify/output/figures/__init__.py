@@ -28,8 +28,9 @@ import os
 from pathlib import Path
 from typing import Any
 
+from twoball._common.choices import DPI
+
 #: Resolution of raster files (PNG, JPEG, TIFF, ...) unless asked otherwise [dots per inch].
-DPI = 300
 #: Accepted resolutions [dots per inch]; outside, a figure is too coarse to read or too big.
 DPI_RANGE = (50, 1200)
 #: Resolution of the PNGs of the verify, converge and reproduce reports (read on screen).

@@ -10,12 +10,12 @@ from twoball.verify.output.fields import BallModel, node_polar_angles
 from twoball.verify.output.figures import LABELS, new_figure
 from twoball.verify.output.figures.style import STACKED, difference_unit, label, styled
 
+from twoball._common.choices import WATERFALL_INSTANTS
 from twoball._common.errors import ParameterError
 
 if TYPE_CHECKING:
     from matplotlib.figure import Figure
 
-WATERFALL_INSTANTS = 24  # as in Fig. 6
 
 
 def waterfall_times(model: BallModel, instants: int = WATERFALL_INSTANTS) -> np.ndarray:

@@ -1,7 +1,10 @@
-"""From a case in SI to the dimensionless drop: impact speed, pressure, mass, spectrum, damping.
+"""The drop's inputs resolved: from a case, a drop and a body in SI to what the run needs.
 
 The one place where the drop reads the ball's membrane operator, its gas and
-its damping law (:func:`resolve_drop`); the face (``twoball.bounce``) and the
+its damping law (:func:`resolve_drop`), the upper body and a Table 1 pair
+(:func:`resolve_pair`, :func:`resolve_body`), the time step and the window
+(:func:`drop_times`), and refuses what the drop would not use
+(:func:`check_drop_case`).  The run (:mod:`twoball.modal.floor.bounce`) and the
 studies (:mod:`twoball.verify.studies.floor`) both start here.
 """
 
@@ -19,7 +22,27 @@ from twoball.modal.stiffness import Stiffness
 
 from twoball._common.errors import ParameterError
 
-__all__ = ["DropModel", "check_drop_height", "resolve_drop"]
+__all__ = [
+    "DEFAULT_DT",
+    "DEFAULT_WINDOW",
+    "MAX_DT",
+    "DropModel",
+    "WholeBody",
+    "check_drop_case",
+    "check_drop_height",
+    "drop_times",
+    "resolve_body",
+    "resolve_drop",
+    "resolve_pair",
+    "v0_set",
+]
+
+#: Time step of the drop in units of 1/c (the basketball: 15.6 microseconds).
+DEFAULT_DT = 0.005
+#: Window of the drop in units of 1/c: ten pressure x area contact times pi / c.
+DEFAULT_WINDOW = 10.0 * math.pi
+#: Largest time step in units of 1/c (a twentieth of the pressure x area contact time).
+MAX_DT = math.pi / 20.0
 
 
 @dataclass(frozen=True)
@@ -56,8 +79,10 @@ class DropModel:
 
     @property
     def mass(self) -> float:
-        """The ball's mass ``m2 = 2 pi R P / c^2`` [kg] (``T = P R / 2 = rho c^2 R^2``)."""
-        return 2.0 * math.pi * self.case.radius * self.pressure / self.case.wave_speed**2
+        """The membrane's mass ``m2 = 2 pi R P / c^2`` [kg] (``T = P R / 2 = rho c^2 R^2``)."""
+        from twoball.modal.scalings import membrane_mass
+
+        return membrane_mass(self.case.radius, self.pressure, self.case.wave_speed)
 
     @property
     def v0(self) -> float:
@@ -176,7 +201,9 @@ def _pressure(case: Case, notes: list[str]) -> float:
             "and the gas): Case.from_pressure, or a preset",
             None,
         )
-    mass = 2.0 * math.pi * case.radius * measured.pressure / case.wave_speed**2
+    from twoball.modal.scalings import membrane_mass
+
+    mass = membrane_mass(case.radius, measured.pressure, case.wave_speed)
     notes.append(
         f"P = {measured.pressure:g} Pa, the {case.preset_name} preset's measured excess "
         f"pressure: m2 = 2 pi R P / c^2 = {mass:.4g} kg"
@@ -283,3 +310,65 @@ def resolve_body(case: Case, body: Any, pair: Any, drop: Drop) -> WholeBody | No
             + ("(the flat face's half width)" if pair.body.face_radius is None else "(R*)")
         )
     return WholeBody(body, pair, radius, cap_angle(radius, case.radius), tuple(notes))
+
+
+def v0_set(case: Case) -> bool:
+    """Whether ``case``'s v0 was set: not its preset's own measured speed (or the default)."""
+    from twoball.modal.presets import MEASURED
+
+    measured = MEASURED.get(case.preset_name or "")
+    default = measured.v0 if measured is not None else Case.__dataclass_fields__["v0"].default
+    return case.v0_given is not None or not math.isclose(case.v0, default, rel_tol=1e-12)
+
+
+def check_drop_case(case: Case, drop: Drop) -> None:
+    """Refuse what the drop would not use: a given phi_a, a v0 set beside a drop height.
+
+    The drop computes its contact angle (``phi_a_max_rad``), so a given phi_a would be
+    ignored; a drop height sets ``|v0| = sqrt(2 g H)``, eq. (2.1), so a case whose v0 is
+    not its preset's own (the user set one) would be overridden.
+    """
+    if case.phi_a_source == "given":
+        valid = "left out for the drop (the contact angle is its output, phi_a_max_rad)"
+        raise ParameterError("phi_a", valid, case.phi_a)
+    if drop.drop_height is not None and v0_set(case):
+        speed = case.v0 if case.v0_given is None else case.v0_given
+        valid = (
+            f"given alone, not with the case's own v0 = {speed:g} m/s (the height sets "
+            "|v0| = sqrt(2 g H); build the case without a v0 of its own)"
+        )
+        raise ParameterError("drop_height", valid, drop.drop_height)
+
+
+def drop_times(
+    case: Case, dt: float | None, t_end: float | None, gap: float = 0.0
+) -> tuple[float, float]:
+    """The time step and the window of a drop in units of 1/c, checked.
+
+    Parameters
+    ----------
+    case : Case
+        The ball (its c and |v0|).
+    dt, t_end : float or None
+        The step and the window [s] as given (None: :data:`DEFAULT_DT`, and
+        :data:`DEFAULT_WINDOW` plus twice the gap's closing time).
+    gap : float
+        ``Delta x / R`` of a body above the ball.
+    """
+    from twoball.modal.report import t_end_dimensionless
+
+    # the body needs about Delta x / ((1 + e2) |v0|) to reach the ball, eq. (2.2)
+    window = DEFAULT_WINDOW + 2.0 * gap / (case.v0 / case.scalings.velocity)
+    t_end_c = window if t_end is None else t_end_dimensionless(case, t_end)
+    if dt is None:
+        dt_c = DEFAULT_DT
+    else:
+        dt_c = dt * case.wave_speed
+        high = min(MAX_DT, 0.1 * t_end_c)
+        if not dt_c <= high:
+            valid = f"a time step in (0, {high / case.wave_speed:.3g}] s for the drop"
+            raise ParameterError("dt", valid, dt)
+    if t_end_c <= 10.0 * dt_c:
+        valid = f"a window longer than 10 time steps ({10.0 * dt_c / case.wave_speed:.3g} s)"
+        raise ParameterError("t_end", valid, t_end)
+    return dt_c, t_end_c
