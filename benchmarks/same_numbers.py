@@ -121,7 +121,9 @@ COMMANDS: dict[str, list[str]] = {
         "sweep", "--bounce", "--pair", "basketball-table-tennis", "--param", "gap",
         "--values", "0,0.02,0.1", "--workers", "1",
     ],
-    "sweep-bounce-v0": ["sweep", "--bounce", "--param", "v0", "--values", "2,4.1", "--workers", "1"],
+    "sweep-bounce-v0": [
+        "sweep", "--bounce", "--param", "v0", "--values", "2,4.1", "--workers", "1",
+    ],
     "sweep-bounce-mass-ratio": [
         "sweep", "--bounce", "--param", "mass-ratio", "--values", "0.05,0.2", "--workers", "1",
     ],
@@ -276,8 +278,7 @@ def _pattern(glob: str) -> re.Pattern[str]:
 #: A number (or a number added or removed) anywhere else must be bit-identical,
 #: and so must every exported array's hash; texts (strings, lists of strings such
 #: as warnings and notes) are listed but never fail the check.
-ALLOWED: tuple[Allowance, ...] = (
-)
+ALLOWED: tuple[Allowance, ...] = ()
 
 
 def _has_number(value: object) -> bool:

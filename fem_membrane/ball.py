@@ -98,7 +98,10 @@ class FEBall:
         return dofs, dofs // 2
 
     def mass(self, case: Case) -> float:
-        """The ball's mass ``m2 = 2 pi R P / c^2`` [kg] (:func:`~twoball.modal.scalings.membrane_mass`)."""
+        """The ball's mass ``m2 = 2 pi R P / c^2`` [kg] (``membrane_mass`` of the scalings).
+
+        The tension ``T = P R / 2`` with ``c^2 = T / (rho R^2)``, eq. (3.8).
+        """
         from twoball.modal.scalings import membrane_mass
 
         return membrane_mass(case.radius, case.pressure, case.wave_speed)

@@ -135,6 +135,8 @@ def fem_contact_solution(
     *,
     sigma: str = "lanczos",
     t_end_s: float | None = None,
+    dt: float | None = None,
+    monitor: Any = None,
 ) -> tuple[Any, Any]:
     """The finite-element modal model (full eigen route) and its contact report (SI).
 
@@ -143,9 +145,9 @@ def fem_contact_solution(
     ``mesh`` a :class:`~twoball.fem_membrane.options.MeshOptions` (or a kind
     name): ``sphere`` (default, level 3), ``ring`` or ``axisym`` (default 400
     elements), no mesh file.  The model holds the eigenvectors the contact
-    solver moved (fields of :mod:`twoball.fem_membrane.contact_fields`).
+    solver moved.  ``dt`` is the contact core's step (units 1/c), ``monitor``
+    is told of the eigenpairs and the steps.  The budget is the caller's.
     """
-    from twoball.fem_membrane.cost import check_fem
     from twoball.fem_membrane.options import MeshOptions
     from twoball.modal.contact.caps import cap_angle
     from twoball.modal.contact.report import check_contact_options, membrane_case, solve_contact
@@ -156,17 +158,7 @@ def fem_contact_solution(
     spec = MeshOptions.of(mesh).require(files=False)
     if spec.geometry != "isoparametric":
         raise ParameterError("geometry", "isoparametric with a body of finite mass", spec.geometry)
-    check_fem(spec.kind, spec.level, spec.elements, spec.order, case.modes, "full")
     t_end = t_end_dimensionless(case, t_end_s)
-    if body.mass_ratio > 0.0:  # the event loop on every FE mode below the cutoff
-        from twoball.fem_membrane.cost import fem_dofs
-        from twoball.modal.contact.cost import check_contact
-        from twoball.modal.cost import legendre_omega
-
-        dofs = fem_dofs(spec.kind, spec.level, spec.elements, spec.order)
-        pairs = case.modes + 1 if spec.kind == "axisym" else (case.modes + 1) ** 2
-        top = legendre_omega(case.modes + 1)  # the cutoff lies between N and N + 1
-        check_contact(min(dofs, pairs), top, t_end, modes=case.modes, mass_ratio=body.mass_ratio)
     membrane = membrane_case(case, body.mass_ratio, body.energy)
     theta = cap_angle(radius, case.radius)
     model, contact, info = fem_contact_model(
@@ -193,6 +185,8 @@ def fem_contact_solution(
         t_end=t_end,
         membrane=membrane,
         extra={"cap_angle_rad": theta, **info},
+        dt=dt,
+        monitor=monitor,
     )
     # the mesh guard of the massless path, and the closed-form contact solution beside it
     from twoball.fem_membrane.guards import mesh_warnings
@@ -201,7 +195,7 @@ def fem_contact_solution(
     mesh_said = mesh_warnings(
         spec.kind, spec.level, spec.elements, model.space.order, SpectralFilter(sigma, case.modes)
     )
-    return model, guarded(report, body, t_end_s, more=mesh_said)
+    return model, guarded(report, body, t_end_s, more=mesh_said, dt=dt, monitor=monitor)
 
 
 def fem_contact_fields(
@@ -211,6 +205,8 @@ def fem_contact_fields(
     *,
     sigma: str = "lanczos",
     t_end_s: float | None = None,
+    dt: float | None = None,
+    monitor: Any = None,
 ) -> tuple[Any, Any, Any, Any]:
     """The node mesh, the mode shapes at its nodes and the contact report (SI).
 
@@ -239,17 +235,19 @@ def fem_contact_fields(
         Unit sphere whose nodes are the degrees of freedom (as
         :func:`twoball.verify.output.fields.fem_nodal_series`).
     shapes : ndarray, shape (K, P)
-        M-orthonormal eigenvectors at the nodes, one row per mode of the report's system.
+        M-orthonormal eigenvectors at the nodes, one row per mode of the report's motion.
     series : ModalSeries
         The free membrane's filtered modal series on these modes (eq. (3.16)).
     report : ContactReport
-        The contact solution on these modes (``report.system``, ``report.history``).
+        The contact solution on these modes (``report.motion``, ``report.history``).
     """
     from twoball.fem_membrane.options import MeshOptions
     from twoball.fem_membrane.space import dof_mesh
 
     spec = MeshOptions.of(mesh)
-    model, report = fem_contact_solution(case, body, spec, sigma=sigma, t_end_s=t_end_s)
+    model, report = fem_contact_solution(
+        case, body, spec, sigma=sigma, t_end_s=t_end_s, dt=dt, monitor=monitor
+    )
     kind = "icosphere" if spec.kind == "sphere" else "ring sphere"
     ring = report.membrane.phi_a if spec.kind == "ring" else None
     nodes = dof_mesh(model.space.basis, f"{kind} level {spec.level}, P{model.space.order}", ring)

@@ -83,6 +83,11 @@ def _omegas(modes: int, stiffness: Stiffness | None) -> np.ndarray:
     return np.sqrt(n * (n + 1.0))
 
 
+def legendre_top(modes: int, stiffness: Stiffness | None = None) -> float:
+    """The highest frequency of N Legendre modes (units c), stiffened where bending or gas act."""
+    return float(_omegas(modes, stiffness)[-1])
+
+
 def _decaying_blocks(omega: np.ndarray, damping: float, t_end: float) -> list[tuple[int, int]]:
     """(samples, modes summed) of each block of a blockwise-decayed series.
 

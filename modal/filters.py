@@ -12,8 +12,8 @@ from dataclasses import dataclass
 from typing import Literal
 
 import numpy as np
-from twoball.modal.series_options import FILTER_KINDS
 
+from twoball._common.choices import FILTER_KINDS
 from twoball._common.errors import ParameterError
 
 FilterKind = Literal["lanczos", "printed", "none"]

@@ -22,8 +22,8 @@ import numpy as np
 from numpy.typing import ArrayLike
 from twoball.modal.roots import bracketed_roots, newton_bracketed
 from twoball.modal.series import PoleState
-from twoball.modal.series_options import HORIZONS
 
+from twoball._common.choices import HORIZONS
 from twoball._common.errors import NumericalError, ParameterError
 
 Horizon = Literal["window", "paper"]

@@ -1,4 +1,4 @@
-"""twoball -- lift-off from a vibrating spherical membrane (the two-ball bounce).
+"""twoball -- the two-ball bounce from first principles: a vibrating ball and a body on it.
 
 The public API is loaded lazily: ``import twoball`` costs almost nothing, and
 each name below imports its module on first use::
@@ -7,41 +7,31 @@ each name below imports its module on first use::
 
     case = twoball.Case.preset("basketball", v0=3.0)   # SI; phi_a by eq. (3.7)
     result = twoball.liftoff(case)                      # closed form (Legendre series)
-    fe = twoball.liftoff(case, backend="fem", mesh="axisym")
+    fe = twoball.liftoff(case, solver=twoball.Superposition("axisym"))
+    drop = twoball.bounce(case, solver=twoball.MoreauJean(twoball.FEBall()))
     print(result.t_liftoff_s, result.v_liftoff_m_s, result.case.phi_a_source)
 
-Public names (``twoball.__all__``): the verbs :func:`liftoff`, :func:`sweep`,
-``fem.solve``, ``fem.eigen``, :func:`export`, :func:`render`, :func:`plot`,
-:func:`converge`, :func:`verify`, :func:`reproduce`, :func:`icm`,
-:func:`table1`, :func:`report`, :func:`bounce` (the lower ball dropped on the
-floor); the case and the option and model objects :class:`Case`,
-:class:`MeshOptions`, :class:`Stepping`, :class:`Body`, :class:`Membrane`,
-:class:`ModalRatio`, :class:`Rayleigh`, :class:`Series`, :class:`Drop`,
-:class:`RenderOptions`, :class:`PlotOptions`; the results; :class:`Reporter` (progress),
-:class:`ParameterError`, :class:`NumericalError`, ``__version__``.  The
-command line ``twoball`` is a thin layer over these.
+Public names (``twoball.__all__``): the verbs :func:`liftoff`, :func:`bounce`
+(the lower ball dropped on the floor, alone or with a body), :func:`sweep`,
+:func:`export`, :func:`render`, :func:`plot`, :func:`converge`, :func:`check`
+(every backend against the closed form), :func:`reproduce`, :func:`icm`,
+:func:`table1`, :func:`report`, ``fem.eigen``; the solvers :class:`ClosedForm`,
+:class:`Superposition`, :class:`GeneralizedAlpha`, :class:`MoreauJean`; the
+balls :class:`Ball` (the protocol), :class:`LegendreBall`, :class:`FEBall`; the
+case and the option and model objects :class:`Case`, :class:`MeshOptions`,
+:class:`Body`, :class:`Membrane`, :class:`ModalRatio`, :class:`Rayleigh`,
+:class:`Drop`, :class:`RenderOptions`, :class:`PlotOptions`; the results;
+:class:`Reporter` (progress), :class:`ParameterError`, :class:`NumericalError`,
+``__version__``.  The command line ``twoball`` is a thin layer over these.
 """
 
 from __future__ import annotations
 
 import importlib as _importlib
 import os as _os
-import types as _types
 
 from twoball._common.lazy import attach as _attach
 from twoball._version import __version__
-
-# Annotations only: nothing numerical is imported with the package, nor typing
-# (``twoball --help`` stays fast); type checkers read the block below.
-_TYPE_CHECKING = False
-if _TYPE_CHECKING:
-    import os
-    from collections.abc import Callable
-
-    from twoball.modal.damping import ModalRatio
-    from twoball.modal.parameters import Case
-    from twoball.modal.series_options import Series
-    from twoball.verify.checks.results import VerifyResult
 
 # In a source checkout the parts (modal/, fem_membrane/, verify/) sit beside this
 # folder; installed, setuptools maps them to twoball/modal, ... (pyproject.toml).
@@ -49,19 +39,15 @@ _HERE = _os.path.dirname(__file__)
 if not _os.path.isdir(_os.path.join(_HERE, "modal")):
     __path__.append(_os.path.dirname(_HERE))  # noqa: F821 -- the package's own __path__
 
-from twoball import verify  # noqa: E402 -- a light package; made callable below
-
 _NAMES: dict[str, str | tuple[str, str]] = {
     "Case": "twoball.modal.parameters",
     "LiftoffReport": "twoball.modal.report",
     "ParameterError": "twoball._common.errors",
     "NumericalError": "twoball._common.errors",
     "MeshOptions": "twoball.fem_membrane.options",
-    "Stepping": "twoball.modal.stepping",
     "Body": "twoball.modal.contact.body",
     "ModalRatio": "twoball.modal.damping",
     "Rayleigh": "twoball.modal.damping",
-    "Series": "twoball.modal.series_options",
     "Membrane": "twoball.modal.membrane",
     "RenderOptions": "twoball.verify.output.options",
     "PlotOptions": "twoball.verify.output.options",
@@ -83,6 +69,7 @@ _NAMES: dict[str, str | tuple[str, str]] = {
     "sweep": "twoball._sweep",
     "SweepResult": "twoball._sweep",
     "converge": "twoball._studies",
+    "check": "twoball._studies",
     "export": "twoball._files",
     "render": "twoball._files",
     "plot": "twoball._files",
@@ -101,76 +88,6 @@ _NAMES: dict[str, str | tuple[str, str]] = {
 _getattr, _dir = _attach(__name__, _NAMES)
 
 
-class _VerifyPackage(_types.ModuleType):
-    """The subpackage :mod:`twoball.verify`, callable as the verb :func:`twoball.verify`.
-
-    A function and a subpackage cannot share the name ``twoball.verify``: the
-    import system sets the attribute to the subpackage whenever one of its
-    modules is imported.  So the subpackage itself is made callable here.
-    """
-
-    def __call__(
-        self,
-        case: Case | None = None,
-        *,
-        thorough: bool = False,
-        fast: bool = False,
-        damping: ModalRatio | None = None,
-        series: Series | None = None,
-        t_end: float | None = None,
-        out: str | os.PathLike[str] | None = None,
-        progress: Callable[[str], None] | None = None,
-        **deprecated: object,
-    ) -> VerifyResult:
-        """Every backend against the closed form, with PASS/FAIL per check.
-
-        Parameters
-        ----------
-        case : Case, optional
-            The impact (default the basketball preset).
-        thorough : bool
-            Finer meshes as well (minutes, not seconds).
-        fast : bool
-            The small configuration of the test suite.
-        damping : ModalRatio, optional
-            The paper's ratio D on every mode (a Rayleigh law is refused by
-            name: the checks measure against eq. (3.16) with the ratio D).
-        series : Series, optional
-            Filter and re-contact horizon, as in :func:`twoball.liftoff`.
-        t_end : float, optional
-            The modelled window [s] (default 4 pi / c).
-        out : path, optional
-            Report directory to write (report.md, results.json, CSV, PNG).
-        progress : callable, optional
-            Called with a short text as each step starts (:class:`twoball.Reporter`).
-        **deprecated
-            ``sigma`` and ``recontact`` of version 0.2, with a :class:`DeprecationWarning`.
-
-        Returns
-        -------
-        VerifyResult
-            ``passed`` only if every check passes.
-
-        The Examples are those of the function this calls, :func:`twoball._studies.verify`.
-        """
-        from twoball._studies import verify as run_verify
-
-        return run_verify(
-            case,
-            thorough=thorough,
-            fast=fast,
-            damping=damping,
-            series=series,
-            t_end=t_end,
-            out=out,
-            progress=progress,
-            **deprecated,
-        )
-
-
-verify.__class__ = _VerifyPackage
-
-
 def __getattr__(name: str) -> object:
     if name == "fem":
         return _importlib.import_module("twoball.fem")
@@ -178,7 +95,7 @@ def __getattr__(name: str) -> object:
 
 
 def __dir__() -> list[str]:
-    return sorted([*_dir(), "fem", "verify", "__version__"])
+    return sorted([*_dir(), "fem", "__version__"])
 
 
-__all__ = ["__version__", "fem", "verify", *_NAMES]
+__all__ = ["__version__", "fem", *_NAMES]

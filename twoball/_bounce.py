@@ -16,7 +16,7 @@ from dataclasses import dataclass, replace
 from pathlib import Path
 from typing import Any
 
-from twoball._common.errors import ParameterError
+from twoball._common.errors import NumericalError, ParameterError
 from twoball.modal.floor.options import Drop
 from twoball.modal.floor.report import BounceReport as Numbers
 from twoball.modal.parameters import Case
@@ -226,8 +226,6 @@ def check_field_targets(
     return target, picture, count
 
 
-
-
 @dataclass(frozen=True)
 class BounceReport(Numbers):
     """One drop of the lower ball on the floor, in SI, with its files.
@@ -365,7 +363,6 @@ class BounceReport(Numbers):
             f"c = {c.wave_speed:g} 1/s, v0 = {c.v0:g} m/s, {self._physics}, "
             f"{self.model['gas']} gas"
         )
-
 
 
 _FIELDS = tuple(f for f in Numbers.__dataclass_fields__)

@@ -15,7 +15,6 @@ from dataclasses import dataclass, field, replace
 from pathlib import Path
 from typing import Any
 
-from twoball._bundles import bundles, warn_deprecated, with_damping
 from twoball._common.budget import timed
 from twoball._common.choices import DEFAULT_ANIMATION_FRAMES
 from twoball._common.errors import ParameterError
@@ -37,24 +36,42 @@ def _case(case: Case | None) -> Case:
     return case
 
 
-def _field_bundles(
-    verb: str, mesh: Any, stepping: Any, body: Any, damping: Any, series: Any, old: dict[str, Any]
-) -> Any:
-    """The bundles of a field verb: mesh, stepping (window and route only), body, damping
-    law and series rules."""
-    times = old.pop("times", None)
-    given = bundles(
-        verb,
-        mesh=mesh,
-        stepping=stepping,
-        body=body,
-        damping=damping,
-        series=series,
-        old=old,
-    )
-    if given.stepping is not None:
-        given.stepping.refuse("with field outputs (modal superposition)", "scheme", "dt")
-    return given, times
+@dataclass(frozen=True)
+class _Given:
+    """A field verb's options: the solver's mesh, window, route and rules, the body, the law."""
+
+    solver: Any
+    body: Any
+    damping: Any
+
+    @property
+    def mesh(self) -> Any:
+        """The solver's mesh (None when it is the default: the level-3 P2 icosphere)."""
+        from twoball.fem_membrane.options import MeshOptions
+
+        return None if self.solver.mesh == MeshOptions() else self.solver.mesh
+
+    def as_dict(self) -> dict[str, Any]:
+        out: dict[str, Any] = {"solver": self.solver.as_dict()}
+        if self.body is not None:
+            out["body"] = self.body.as_dict()
+        if self.damping is not None:
+            out["damping"] = self.damping.as_dict()
+        return out
+
+
+def _field_options(solver: Any, body: Any, damping: Any) -> _Given:
+    """A field verb's solver (:class:`~twoball.Superposition`, default), body and damping law."""
+    from twoball._solvers import Superposition
+    from twoball.modal.contact.body import Body
+
+    solver = Superposition() if solver is None else solver
+    if not isinstance(solver, Superposition):
+        valid = "a twoball.Superposition (the fields: finite elements beside the closed form)"
+        raise ParameterError("solver", valid, solver)
+    if body is not None and not isinstance(body, Body):
+        raise ParameterError("body", "a twoball.Body", type(body).__name__)
+    return _Given(solver, body, damping)
 
 
 def _not_the_mesh(out: str | os.PathLike[str], given: Any, name: str = "out") -> None:
@@ -64,31 +81,13 @@ def _not_the_mesh(out: str | os.PathLike[str], given: Any, name: str = "out") ->
     check_distinct({name: out}, {"the input mesh file": getattr(given.mesh, "file", None)})
 
 
-def _window(given: Any) -> tuple[float | None, str]:
-    stepping = given.stepping
-    if stepping is None:
-        return None, "auto"
-    return stepping.t_end, stepping.route or "auto"
+def _window(given: _Given) -> tuple[float | None, str]:
+    return given.solver.t_end, given.solver.route
 
 
-def _frames(
-    frames: Any, legacy_times: Any = None
-) -> tuple[int | None, Sequence[float] | None, str]:
-    """``frames`` as a count or as times [s] (the old ``times`` keyword folded in).
-
-    Returns the count, the times and the name the user gave them by (``frames``,
-    or ``times`` for the old keyword), for the errors.
-    """
+def _frames(frames: Any) -> tuple[int | None, Sequence[float] | None, str]:
+    """``frames`` as a count or as times [s]; the name the errors give them by."""
     name = "frames"
-    if legacy_times is not None:
-        if frames is not None:
-            raise ParameterError("frames", "left out when times are given", frames)
-        if isinstance(legacy_times, (str, bytes)) or not (
-            isinstance(legacy_times, Sequence) or hasattr(legacy_times, "__array__")
-        ):  # refused before the deprecation is said
-            raise ParameterError("times", "a list of times [s]", legacy_times)
-        warn_deprecated("the keyword times is deprecated; pass the frame times as frames=[...]")
-        frames, name = legacy_times, "times"
     if frames is None:
         return None, None, name
     if isinstance(frames, (str, bytes)):
@@ -104,14 +103,11 @@ def export(
     case: Case | None = None,
     *,
     backend: str = "fem",
-    mesh: Any = None,
-    stepping: Any = None,
+    solver: Any = None,
     body: Any = None,
     damping: Any = None,
-    series: Any = None,
     frames: int | Sequence[float] | None = None,
     progress: Step | None = None,
-    **deprecated: Any,
 ) -> ExportResult:
     """Write u, u_t, u_tt (SI) of both backends on the sphere mesh over time.
 
@@ -127,22 +123,23 @@ def export(
         (default) also solves the closed form for the comparison fields
         ``u_legendre_m`` and ``u_diff_m``; ``legendre`` solves the closed form
         alone (no finite elements: ``u_legendre_m``, no ``u_fem_m``/``u_diff_m``),
-        and refuses the finite elements' options (``stepping.route``,
+        and refuses the finite elements' options (the solver's ``route``,
         ``mesh.initial``).
-    mesh : MeshOptions, {"sphere", "ring"} or the user's mesh, optional
-        The sphere (default the level-3 P2 icosphere; orders 1 and 2), or the
-        user's sphere: a file any format meshio reads, of any radius, centre
+    solver : Superposition, optional
+        The finite elements and the options of both backends
+        (:class:`~twoball.Superposition`): its ``mesh`` is the sphere (default
+        the level-3 P2 icosphere; orders 1 and 2, ``sphere`` or ``ring``), or
+        the user's sphere: a file any format meshio reads, of any radius, centre
         and length unit, 3- or 6-node triangles, checked as by
         :func:`twoball.liftoff` (a broken or non-spherical mesh raises
-        :class:`~twoball.ParameterError` naming ``mesh``).  The fields are in SI
+        :class:`~twoball.ParameterError` naming ``mesh``); the fields are in SI
         in the case's frame: nodes at R times the unit sphere, the pole on +z;
         the file's radius, centre, pole and path are in the file's metadata
-        (field data ``mesh_file_*``, text ``mesh_file``) and provenance.
-    stepping : Stepping, optional
-        The window ``t_end`` [s] (default 4 pi / c) and the finite elements'
-        eigen ``route``: every pair below the cutoff (``full``), the Ritz pairs
-        of the rational Krylov route converged on the whole field (``krylov``),
-        or Krylov from 2000 unknowns on (``auto``, default).
+        (field data ``mesh_file_*``, text ``mesh_file``) and provenance.  Its
+        ``route`` (every pair below the cutoff, ``full``; the Ritz pairs of the
+        rational Krylov route converged on the whole field, ``krylov``; Krylov
+        from 2000 unknowns on, ``auto``), the filter ``sigma``, the re-contact
+        horizon and the window ``t_end`` [s] (default 4 pi / c).
     body : Body, optional
         An upper body of finite mass (docs/contact.rst): the fields are the
         membrane coupled to it (full eigen route), each frame gets field data
@@ -151,17 +148,11 @@ def export(
     damping : ModalRatio or Rayleigh, optional
         The damping law, as in :func:`twoball.liftoff` (a Rayleigh law is
         refused with a body: the contact model takes the ratio D).
-    series : Series, optional
-        Filter and re-contact horizon, as in :func:`twoball.liftoff`.
     frames : int or sequence of float, optional
         A count of frames evenly spaced over [0, t_end] (default 25, plus the
         lift-off), or the frame times [s].
     progress : callable, optional
         Called with a short text as each stage starts (:class:`~twoball.Reporter`).
-    **deprecated
-        The keywords of version 0.2 (``level``, ``times``, ``sigma``, ...) and
-        ``format`` (the suffix of ``out`` chooses it), with a
-        :class:`DeprecationWarning`.
 
     Every file carries the case and the provenance; field names end in their
     unit (``u_m``, ``u_t_m_s``, ``u_tt_m_s2``, ...).
@@ -170,12 +161,13 @@ def export(
     --------
     >>> import tempfile, pathlib, twoball
     >>> folder = pathlib.Path(tempfile.mkdtemp())
-    >>> mesh = twoball.MeshOptions("sphere", level=1)
-    >>> result = twoball.export(folder / "ball.xdmf", mesh=mesh, frames=3)
+    >>> solver = twoball.Superposition(twoball.MeshOptions("sphere", level=1))
+    >>> result = twoball.export(folder / "ball.xdmf", solver=solver, frames=3)
     >>> [f.name for f in result.files], result.point_data[:3]
     (['ball.xdmf', 'ball.h5'], ['u_m', 'u_t_m_s', 'u_tt_m_s2'])
     """
     from twoball._common.staging import check_file
+    from twoball._liftoff import with_damping
     from twoball.verify.output.fields import (
         BACKENDS,
         DEFAULT_FRAMES,
@@ -196,17 +188,9 @@ def export(
 
     check_path_type(out)
     check_progress(progress)
-    legacy_format = deprecated.pop("format", None)
-    if legacy_format is not None:
-        warn_deprecated(
-            "twoball.export: the keyword format is deprecated; pass out with its suffix "
-            "(.xdmf, .pvd or .vtu)"
-        )
-    given, legacy_times = _field_bundles(
-        "twoball.export", mesh, stepping, body, damping, series, deprecated
-    )
+    given = _field_options(solver, body, damping)
     case = with_damping(_case(case), given.damping)
-    fmt = series_format(out, legacy_format)
+    fmt = series_format(out, None)
     target = check_file(out)
     check_side_entries(target, fmt)
     _not_the_mesh(out, given)
@@ -216,7 +200,7 @@ def export(
     if "fem" not in solved and route != "auto":
         raise ParameterError("route", "left out with backend legendre (no finite elements)", route)
     field = field_mesh(given.mesh, cells=True, load=False)
-    frames, times, name = _frames(frames, legacy_times)
+    frames, times, name = _frames(frames)
     if times is not None:
         times = check_times(window_s(case, t_end), times, name)
     frames = None if frames is None else check_frames(frames)
@@ -235,8 +219,8 @@ def export(
         field,
         backends=solved,
         body=given.body,
-        sigma=given.rules.sigma,
-        recontact=given.rules.recontact,
+        sigma=given.solver.sigma,
+        recontact=given.solver.recontact,
         t_end_s=t_end,
         route=route,
         progress=say,
@@ -287,14 +271,11 @@ def render(
     case: Case | None = None,
     *,
     backend: str = "fem",
-    mesh: Any = None,
-    stepping: Any = None,
+    solver: Any = None,
     body: Any = None,
     damping: Any = None,
-    series: Any = None,
     view: Any = None,
     progress: Step | None = None,
-    **deprecated: Any,
 ) -> RenderResult:
     """Off-screen picture (``.png``) or animation (``.gif``, ``.mp4``) of the bouncing ball.
 
@@ -306,33 +287,30 @@ def render(
         The impact (default the basketball preset).
     backend : {"fem", "legendre"}
         Which solver's displacement is drawn.
-    mesh, stepping, body
+    solver, body
         As in :func:`export` (``mesh.initial`` needs ``backend="fem"``); with a
         body it is drawn at its height s(t) over the coupled membrane, the
         caption saying when it is in contact.
-    damping, series, progress
+    damping, progress
         As in :func:`export`.
     view : RenderOptions, optional
         The frames drawn (a PNG: one time, default the lift-off; an
         animation: a count, default 60, or the times), warp, image size and
         frames per second (:class:`~twoball.RenderOptions`).
-    **deprecated
-        The keywords of version 0.2 (``time``, ``warp``, ``size``, ``fps``,
-        ``level``, ``sigma``, ...) and ``frames`` (now ``view.frames``), with a
-        :class:`DeprecationWarning`.
 
     Examples
     --------
     >>> import tempfile, pathlib, twoball
     >>> out = pathlib.Path(tempfile.mkdtemp()) / "ball.png"
-    >>> mesh = twoball.MeshOptions("sphere", level=1)
-    >>> result = twoball.render(out, mesh=mesh, view=twoball.RenderOptions(size="320x240"))
+    >>> solver = twoball.Superposition(twoball.MeshOptions("sphere", level=1))
+    >>> result = twoball.render(out, solver=solver, view=twoball.RenderOptions(size="320x240"))
     >>> result.file.name, result.size
     ('ball.png', (320, 240))
     """
     import numpy as np
 
     from twoball._common.staging import check_file
+    from twoball._liftoff import with_damping
     from twoball.verify.output.fields import (
         ball_model,
         ball_scene,
@@ -351,36 +329,7 @@ def render(
 
     check_path_type(out)
     check_progress(progress)
-    time = deprecated.pop("time", None)
-    keys = ("warp", "size", "fps", "frames")
-    legacy_view = {k: deprecated.pop(k) for k in keys if deprecated.get(k) is not None}
-    given, legacy_times = _field_bundles(
-        "twoball.render", mesh, stepping, body, damping, series, deprecated
-    )
-    old = {**legacy_view, "time": time, "times": legacy_times}
-    names = sorted(k for k, v in old.items() if v is not None)
-    if names:
-        warn_deprecated(
-            f"twoball.render: the keyword{'s' if len(names) > 1 else ''} {', '.join(names)} "
-            f"{'are' if len(names) > 1 else 'is'} deprecated; pass view=RenderOptions(...) "
-            "(frames=[t] for one time)"
-        )
-    if legacy_times is not None:
-        if "frames" in legacy_view:
-            raise ParameterError("frames", "left out when times are given", legacy_view["frames"])
-        legacy_view["frames"] = legacy_times
-    if time is not None:
-        if "frames" in legacy_view:
-            raise ParameterError("time", "left out with frames", time)
-        from twoball._common.errors import real_number
-
-        legacy_view["frames"] = [
-            real_number("time", time, "a time >= 0 in seconds within the modelled window")
-        ]
-    if legacy_view:
-        if view is not None:
-            raise ParameterError("view", "left out with " + ", ".join(sorted(legacy_view)), view)
-        view = RenderOptions(**legacy_view)
+    given = _field_options(solver, body, damping)
     view = RenderOptions() if view is None else view
     if not isinstance(view, RenderOptions):
         raise ParameterError("view", "a twoball.RenderOptions", type(view).__name__)
@@ -423,8 +372,8 @@ def render(
         field,
         backends=(backend,),
         body=given.body,
-        sigma=given.rules.sigma,
-        recontact=given.rules.recontact,
+        sigma=given.solver.sigma,
+        recontact=given.solver.recontact,
         t_end_s=t_end,
         route=route,
         progress=say,
@@ -459,14 +408,11 @@ def plot(
     out: str | os.PathLike[str],
     case: Case | None = None,
     *,
-    mesh: Any = None,
-    stepping: Any = None,
+    solver: Any = None,
     body: Any = None,
     damping: Any = None,
-    series: Any = None,
     figure: Any = None,
     progress: Step | None = None,
-    **deprecated: Any,
 ) -> PlotResult:
     """Figures: ``waterfall`` (Fig. 6), ``pole`` motion, FE ``eigen`` errors, ``precursor``.
 
@@ -482,8 +428,11 @@ def plot(
         writes (``.pdf``, ``.svg``, ``.eps``, ``.png``, ...).
     case : Case, optional
         The impact (default the basketball preset); refused by ``eigen``.
-    mesh, stepping : optional
-        As in :func:`export` (``waterfall`` and ``pole`` only; a mesh file too).
+    solver : Superposition or ClosedForm, optional
+        ``waterfall`` and ``pole``: as in :func:`export` (a
+        :class:`~twoball.Superposition`; a mesh file too); ``precursor``: a
+        :class:`~twoball.ClosedForm` (its filter, horizon and window); ``eigen``
+        takes none (use the figure's levels and orders).
     body : Body, optional
         ``pole`` only: an upper body of finite mass; the panels show the cap
         average of the coupled membrane with the body's path s(t), every impact
@@ -491,19 +440,11 @@ def plot(
     damping : ModalRatio or Rayleigh, optional
         The damping law, as in :func:`twoball.liftoff` (not with ``eigen``);
         ``precursor`` draws it beside the other law matched to it.
-    series : Series, optional
-        Filter and re-contact horizon, as in :func:`twoball.liftoff` (not with
-        ``eigen``; ``waterfall`` draws u(phi) at fixed instants and takes the
-        whole window as horizon).
     figure : PlotOptions, optional
         The solvers drawn, resolution, waterfall instants, eigenvalue meshes
         and degree (:class:`~twoball.PlotOptions`).
     progress : callable, optional
         Called with a short text as each stage starts (:class:`~twoball.Reporter`).
-    **deprecated
-        The keywords of version 0.2 (``dpi``, ``instants``, ``levels``,
-        ``orders``, ``max_degree``, ``level``, ``sigma``, ...) and ``backends``
-        (now ``figure.backends``), with a :class:`DeprecationWarning`.
 
     Every argument that the chosen ``kind`` does not use is refused
     (:class:`~twoball.ParameterError`), never ignored.  ``pole`` with both
@@ -515,13 +456,15 @@ def plot(
     --------
     >>> import tempfile, pathlib, twoball
     >>> out = pathlib.Path(tempfile.mkdtemp()) / "pole.svg"
-    >>> mesh = twoball.MeshOptions("sphere", level=1)
+    >>> solver = twoball.Superposition(twoball.MeshOptions("sphere", level=1))
     >>> figure = twoball.PlotOptions(backends=["legendre"])
-    >>> result = twoball.plot("pole", out, mesh=mesh, figure=figure)
+    >>> result = twoball.plot("pole", out, solver=solver, figure=figure)
     >>> result.file.name, result.rows[0][0]
     ('pole.svg', 'lift-off (legendre)')
     """
     from twoball._common.staging import check_file
+    from twoball._liftoff import with_damping
+    from twoball._solvers import ClosedForm
     from twoball.verify.output.fields import (
         ball_model,
         check_field_body,
@@ -539,23 +482,25 @@ def plot(
 
     check_path_type(out)
     check_progress(progress)
-    legacy = {k: deprecated.pop(k) for k in tuple(deprecated) if k in PLOT_OPTION_KEYS}
-    legacy = {k: v for k, v in legacy.items() if v is not None}
-    given, _ = _field_bundles("twoball.plot", mesh, stepping, body, damping, series, deprecated)
-    if legacy:
-        names = sorted(legacy)
-        warn_deprecated(
-            f"twoball.plot: the keyword{'s' if len(names) > 1 else ''} {', '.join(names)} "
-            f"{'are' if len(names) > 1 else 'is'} deprecated; pass figure=PlotOptions(...)"
-        )
-        if figure is not None:
-            raise ParameterError("figure", "left out with " + ", ".join(names), figure)
-        figure = PlotOptions(**legacy)
+    if kind not in PLOT_KINDS:
+        raise ParameterError("kind", "one of " + ", ".join(PLOT_KINDS), kind)
+    closed = None
+    if kind == "precursor":  # the closed form: its filter, horizon and window
+        closed = ClosedForm() if solver is None else solver
+        if not isinstance(closed, ClosedForm):
+            valid = "a twoball.ClosedForm with kind precursor (the closed form only)"
+            raise ParameterError("solver", valid, solver)
+        given = _field_options(None, body, damping)
+    elif kind == "eigen":
+        if solver is not None:
+            shown = solver.as_dict() if hasattr(solver, "as_dict") else solver
+            raise ParameterError("solver", "left out with kind eigen (use levels, orders)", shown)
+        given = _field_options(None, body, damping)
+    else:
+        given = _field_options(solver, body, damping)
     figure = PlotOptions() if figure is None else figure
     if not isinstance(figure, PlotOptions):
         raise ParameterError("figure", "a twoball.PlotOptions", type(figure).__name__)
-    if kind not in PLOT_KINDS:
-        raise ParameterError("kind", "one of " + ", ".join(PLOT_KINDS), kind)
     figure_format(out, "out")
     target = check_file(out)
     _not_the_mesh(out, given)
@@ -564,7 +509,6 @@ def plot(
         raise ParameterError(
             "mass_ratio", f"left out with kind {kind} (pole only)", given.body.mass_ratio
         )
-    rules = given.rules
     rows: list[tuple[str, str]] = []
     reports: dict[str, LiftoffReport] = {}
     warnings: list[str] = []
@@ -592,23 +536,14 @@ def plot(
                 "left out with kind precursor (a massless body)",
                 given.body.mass_ratio,
             )
-        if given.stepping is not None:
-            given.stepping.refuse("with kind precursor (the closed form)", "route")
         case = with_damping(_case(case), given.damping)
-        window = t_end_dimensionless(case, t_end)
+        window = t_end_dimensionless(case, closed.t_end)
         say("the closed form under each damping law")
-        curves = law_curves(case, rules.sigma, rules.recontact, window)
+        curves = law_curves(case, closed.sigma, closed.recontact, window)
         drawn = precursor_figure(case, curves, window)
         rows += precursor_rows(case, curves)
     elif kind == "eigen":
-        if given.stepping is not None:  # the window and the time options name themselves
-            from twoball.modal.stepping import Stepping
-
-            given.stepping.refuse("with kind eigen (use levels, orders)", *Stepping.VALID)
-        if given.series is not None:  # the field that was changed, else the bundle
-            name, value = next(iter(given.series.changed().items()), ("series", given.series))
-            raise ParameterError(name, "left out with kind eigen (use levels, orders)", value)
-        refused = {"case": case, "backends": figure.backends, "mesh": given.mesh}
+        refused = {"case": case, "backends": figure.backends}
         refused |= {"damping": given.damping, "instants": figure.instants}
         for name, value in refused.items():
             if value is not None:
@@ -630,12 +565,12 @@ def plot(
                 raise ParameterError(
                     name, f"left out with kind {kind} (eigen only)", getattr(figure, name)
                 )
-        if kind == "waterfall":
-            rules.refuse(
-                "with kind waterfall (it draws u(phi) at fixed instants; the "
-                "re-contact horizon acts on the lift-off: kind pole)",
-                "recontact",
+        if kind == "waterfall" and given.solver.recontact != "window":
+            valid = (
+                "left out with kind waterfall (it draws u(phi) at fixed instants; the "
+                "re-contact horizon acts on the lift-off: kind pole)"
             )
+            raise ParameterError("recontact", valid, given.solver.recontact)
         if kind == "pole" and figure.instants is not None:
             raise ParameterError(
                 "instants", "left out with kind pole (waterfall only)", figure.instants
@@ -647,15 +582,15 @@ def plot(
             raise ParameterError("route", "left out without the fem backend", route)
         field = field_mesh(given.mesh)  # reads a file
         if given.body is not None:
-            check_field_body(case, given.body, field, recontact=rules.recontact, route=route)
+            check_field_body(case, given.body, field, recontact=given.solver.recontact, route=route)
         check_frame_budget(case, instants, "instants", field)
         model = ball_model(
             case,
             field,
             backends=chosen,
             body=given.body,
-            sigma=rules.sigma,
-            recontact=rules.recontact,
+            sigma=given.solver.sigma,
+            recontact=given.solver.recontact,
             t_end_s=t_end,
             route=route,
             progress=say,
@@ -678,6 +613,10 @@ def plot(
     say(f"writing {target}")
     save_figure(drawn, target, "out", figure.dpi, "dpi")
     arguments = {"kind": kind, "out": out, "figure": figure.as_dict(), **given.as_dict()}
+    if kind in ("precursor", "eigen"):  # the closed form's options, or none
+        arguments.pop("solver")
+        if closed is not None:
+            arguments["solver"] = closed.as_dict()
     provenance = block(None if kind == "eigen" else case, "twoball.plot", arguments)
     if field is not None:
         provenance |= mesh_block(field)
@@ -705,7 +644,6 @@ def save_report_figure(report: Any, path: str | os.PathLike[str], name: str = "o
 
 
 #: The old keywords of :func:`plot` that :class:`~twoball.PlotOptions` holds now.
-PLOT_OPTION_KEYS = ("dpi", "instants", "levels", "orders", "max_degree", "backends")
 
 
 def mesh_block(field: Any) -> dict[str, object]:

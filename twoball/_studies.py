@@ -7,9 +7,9 @@ write a report directory (report.md, results.json, CSV tables, PNG plots).
 from __future__ import annotations
 
 import os
+from dataclasses import dataclass
 from typing import TYPE_CHECKING, Any
 
-from twoball._bundles import warn_deprecated, with_damping
 from twoball._common.budget import timed
 from twoball._common.errors import ParameterError
 from twoball._common.progress import Step, check_progress, silent
@@ -19,7 +19,7 @@ if TYPE_CHECKING:
     from twoball.verify.checks.results import VerifyResult
     from twoball.verify.studies.result import StudyResult
 
-__all__ = ["converge", "parse_levels", "verify", "verify_steps"]
+__all__ = ["check", "converge", "parse_levels", "verify_steps"]
 
 
 def parse_levels(text: str, mesh: str, study: str = "h") -> tuple[int, ...]:
@@ -51,12 +51,10 @@ def converge(
     mesh: Any = None,
     levels: str | None = None,
     modes_list: str | None = None,
-    stepping: Any = None,
+    solver: Any = None,
     damping: Any = None,
-    series: Any = None,
     out: str | os.PathLike[str] | None = None,
     progress: Step = silent,
-    **deprecated: Any,
 ) -> StudyResult:
     """A refinement study: observed orders, Richardson extrapolation and GCI.
 
@@ -76,22 +74,18 @@ def converge(
         ``"A:B"``; default per study and mesh.
     modes_list : str, optional
         ``modes`` study: ``"30,60,120"`` or ``"30:480"`` (doubling).
-    stepping : Stepping, optional
-        The window ``t_end`` [s] (default 4 pi / c); no time step (``dt`` sets
-        its own steps by ``levels``).
+    solver : ClosedForm, optional
+        The lift-off's options of every run (:class:`~twoball.ClosedForm`: the
+        filter of eq. (3.16), the re-contact horizon, the window ``t_end`` [s],
+        default 4 pi / c); the study sets its own meshes, modes and steps.
     damping : ModalRatio, optional
         The paper's ratio D on every mode (default the case's); a
         :class:`~twoball.Rayleigh` law is refused by name (``rayleigh``): the
         studies measure against eq. (3.16) with the ratio D.
-    series : Series, optional
-        Filter and re-contact horizon, as in :func:`twoball.liftoff`.
     out : path, optional
         Report directory to write (an earlier report there is replaced).
     progress : callable
         Called with a short text as each step starts (:class:`~twoball.Reporter`).
-    **deprecated
-        ``order``, ``geometry``, ``t_end``, ``sigma`` and ``recontact`` of
-        version 0.2, with a :class:`DeprecationWarning`.
 
     Returns
     -------
@@ -112,12 +106,14 @@ def converge(
     from twoball.verify.studies.time_step import run_dt_study
 
     check_progress(progress)
-    rules = _rules("twoball.converge", damping, series, deprecated)
-    sigma, recontact = rules.rules.sigma, rules.rules.recontact
-    mesh, order, geometry, t_end = _study_options(mesh, stepping, deprecated)
+    rules = _rules(damping, solver)
+    sigma, recontact, t_end = rules.solver.sigma, rules.solver.recontact, rules.solver.t_end
+    mesh, order, geometry = _study_mesh(mesh)
     case = Case.preset("basketball") if case is None else case
     if not isinstance(case, Case):
         raise ParameterError("case", "a twoball.Case", type(case).__name__)
+    from twoball._liftoff import with_damping
+
     case = with_damping(case, rules.damping)
     _paper_model(case, "the convergence studies")
     if study not in STUDIES:
@@ -180,7 +176,7 @@ def converge(
     result.warnings = case_warnings(case)
     result.notes[:0] = [n for n in case.notes if n not in result.notes]  # how the case was read
     arguments = {"study": study, "mesh": mesh, "order": order, "levels": levels}
-    arguments |= {"modes_list": modes_list, **rules.as_dict(), "t_end": t_end, "out": out}
+    arguments |= {"modes_list": modes_list, **rules.as_dict(), "out": out}
     result.provenance = block(case, "twoball.converge", arguments)
     if target is not None:
         from twoball.verify.output.report_files import study_files, write_report_dir
@@ -191,17 +187,15 @@ def converge(
 
 
 @timed
-def verify(
+def check(
     case: Case | None = None,
     *,
     thorough: bool = False,
     fast: bool = False,
     damping: Any = None,
-    series: Any = None,
-    t_end: float | None = None,
+    solver: Any = None,
     out: str | os.PathLike[str] | None = None,
     progress: Step | None = None,
-    **deprecated: Any,
 ) -> VerifyResult:
     """Every backend against the closed form, with PASS/FAIL per check.
 
@@ -216,17 +210,14 @@ def verify(
     damping : ModalRatio, optional
         The paper's ratio D on every mode, as in :func:`converge` (a Rayleigh
         law is refused by name).
-    series : Series, optional
-        Filter and re-contact horizon, as in :func:`twoball.liftoff`.
-    t_end : float, optional
-        The modelled window [s] (default 4 pi / c).
+    solver : ClosedForm, optional
+        The lift-off's options of every check (:class:`~twoball.ClosedForm`:
+        filter, re-contact horizon, window ``t_end`` [s], default 4 pi / c).
     out : path, optional
         Report directory to write (report.md, results.json, CSV, PNG).
     progress : callable, optional
         Called with a short text as each step starts (:class:`twoball.Reporter`;
         :func:`verify_steps` counts the calls).
-    **deprecated
-        ``sigma`` and ``recontact`` of version 0.2, with a :class:`DeprecationWarning`.
 
     Returns
     -------
@@ -236,7 +227,7 @@ def verify(
     Examples
     --------
     >>> import twoball
-    >>> result = twoball.verify(fast=True)  # the small configuration; twoball.verify() by default
+    >>> result = twoball.check(fast=True)  # the small configuration; twoball.check() by default
     >>> result.passed
     True
     """
@@ -244,13 +235,13 @@ def verify(
     from twoball.verify.checks.run import run_verify
 
     check_progress(progress)
-    rules = _rules("twoball.verify", damping, series, deprecated)
-    if deprecated:
-        key = next(iter(deprecated))
-        raise TypeError(f"twoball.verify() got an unexpected keyword argument {key!r}")
+    rules = _rules(damping, solver)
+    t_end = rules.solver.t_end
     case = Case.preset("basketball") if case is None else case
     if not isinstance(case, Case):
         raise ParameterError("case", "a twoball.Case", type(case).__name__)
+    from twoball._liftoff import with_damping
+
     case = with_damping(case, rules.damping)
     _paper_model(case, "verify")
     for name, value in (("thorough", thorough), ("fast", fast)):
@@ -270,15 +261,15 @@ def verify(
         target = check_output_dir(out)
     configuration = config("fast" if fast else ("thorough" if thorough else "default"))
     say = progress or silent
-    result = run_verify(case, rules.rules.sigma, rules.rules.recontact, t_end, configuration, say)
+    result = run_verify(case, rules.solver.sigma, rules.solver.recontact, t_end, configuration, say)
     from twoball.modal.guards import case_warnings
 
     result.warnings = case_warnings(case)
     result.notes[:0] = [n for n in case.notes if n not in result.notes]  # how the case was read
     from twoball._common.provenance import block
 
-    arguments = {"thorough": thorough, "fast": fast, **rules.as_dict(), "t_end": t_end}
-    result.provenance = block(case, "twoball.verify", {**arguments, "out": out})
+    arguments = {"thorough": thorough, "fast": fast, **rules.as_dict()}
+    result.provenance = block(case, "twoball.check", {**arguments, "out": out})
     if target is not None:
         from twoball.verify.output.report_files import verify_files, write_report_dir
 
@@ -327,49 +318,50 @@ def _paper_model(case: Case, what: str) -> None:
         raise ParameterError("rayleigh", valid, case.rayleigh.as_dict())
 
 
-def _rules(verb: str, damping: Any, series: Any, deprecated: dict[str, Any]) -> Any:
-    """The damping law and the series rules of a study (the old ``sigma`` and ``recontact``
-    keywords folded in); a Rayleigh law is refused by name, as in the case."""
-    from twoball._bundles import SERIES_KEYS, bundles
-    from twoball.modal.damping import Rayleigh
+@dataclass(frozen=True)
+class _Rules:
+    """A study's damping law and its lift-off options (a :class:`~twoball.ClosedForm`)."""
 
-    old = {k: deprecated.pop(k) for k in SERIES_KEYS if k in deprecated}
-    given = bundles(verb, damping=damping, series=series, old=old, takes=("series",))
-    if isinstance(given.damping, Rayleigh):
+    damping: Any
+    solver: Any
+    given: bool
+
+    def as_dict(self) -> dict[str, Any]:
+        out: dict[str, Any] = {}
+        if self.given:
+            out["solver"] = self.solver.as_dict()
+        if self.damping is not None:
+            out["damping"] = self.damping.as_dict()
+        return out
+
+
+def _rules(damping: Any, solver: Any) -> _Rules:
+    """The damping law and the lift-off options of a study; a Rayleigh law is refused by name,
+    as in the case."""
+    from twoball._solvers import ClosedForm
+    from twoball.modal.damping import ModalRatio, Rayleigh
+
+    if isinstance(damping, Rayleigh):
         valid = "left out of the studies (they check the paper's ratio D, eq. (3.14))"
-        raise ParameterError("rayleigh", valid, given.damping.as_dict())
-    return given
+        raise ParameterError("rayleigh", valid, damping.as_dict())
+    if damping is not None and not isinstance(damping, ModalRatio):
+        raise ParameterError("damping", "a twoball.ModalRatio", damping)
+    if solver is not None and not isinstance(solver, ClosedForm):
+        valid = "a twoball.ClosedForm (the lift-off's options; the study sets its own steps)"
+        raise ParameterError("solver", valid, solver)
+    return _Rules(damping, ClosedForm() if solver is None else solver, solver is not None)
 
 
-def _study_options(
-    mesh: Any, stepping: Any, deprecated: dict[str, Any]
-) -> tuple[str | None, int | None, str | None, float | None]:
-    """Mesh kind, element order, geometry (None: not given) and window [s] of a study.
+def _study_mesh(mesh: Any) -> tuple[str | None, int | None, str | None]:
+    """Mesh kind, element order and geometry (None: not given) of a study.
 
     ``mesh`` is a kind name or a :class:`~twoball.MeshOptions` whose size is its
-    default (the study's ``levels`` set the sizes); the 0.2 keywords ``order``,
-    ``geometry`` and ``t_end`` are folded in with a :class:`DeprecationWarning`.
+    default (the study's ``levels`` set the sizes).
     """
-
     from twoball.fem_membrane.options import DEFAULT_ELEMENTS, DEFAULT_LEVEL, FILE, MeshOptions
-    from twoball.modal.stepping import Stepping
 
-    unknown = set(deprecated) - {"order", "geometry", "t_end"}
-    if unknown:
-        from twoball._common.errors import UnknownKeywordError
-
-        raise UnknownKeywordError(sorted(unknown)[0], "twoball.converge")
-    given = {k: v for k, v in deprecated.items() if v is not None}
-    if given:
-        warn_deprecated(
-            "twoball.converge: the keywords " + ", ".join(sorted(given)) + " are deprecated; "
-            "pass mesh=MeshOptions(kind, order=..., geometry=...) and stepping=Stepping(t_end=...)"
-        )
-    order, geometry, t_end = given.get("order"), given.get("geometry"), given.get("t_end")
+    order = geometry = None
     if isinstance(mesh, MeshOptions):
-        if order is not None or geometry is not None:
-            name = "order" if order is not None else "geometry"
-            raise ParameterError(name, "left out with a MeshOptions (set it there)", given[name])
         if mesh.kind == FILE:
             raise ParameterError("mesh", "sphere or axisym for a study (no mesh file)", mesh.label)
         size = mesh.level if mesh.kind != "axisym" else mesh.elements
@@ -380,11 +372,4 @@ def _study_options(
         order = mesh.order if mesh.order != 2 else None
         geometry = mesh.geometry if mesh.geometry != "isoparametric" else None
         mesh = mesh.kind
-    if stepping is not None:
-        if not isinstance(stepping, Stepping):
-            raise ParameterError("stepping", "a twoball.Stepping", type(stepping).__name__)
-        stepping.refuse("in a study (the study sets its own steps)", "scheme", "dt", "route")
-        if t_end is not None and stepping.t_end is not None:
-            raise ParameterError("t_end", "left out with stepping (set it there)", t_end)
-        t_end = stepping.t_end if stepping.t_end is not None else t_end
-    return mesh, order, geometry, t_end
+    return mesh, order, geometry

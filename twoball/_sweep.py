@@ -13,7 +13,6 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
 
-from twoball._bundles import bundles, warn_deprecated, with_damping
 from twoball._common.budget import timed
 from twoball._common.errors import ParameterError
 from twoball.modal.parameters import Case
@@ -107,18 +106,11 @@ def _sweep_name(name: str) -> str:
     return name.replace("_", "-")
 
 
-def where(verb: str, workers: Any, scheduler: Any) -> tuple[Any, str | None]:
+def where(verb: str, workers: Any) -> tuple[Any, str | None]:
     """``workers`` as (process count, None) or (None, scheduler address), the address
-    checked (named ``workers``); the old ``scheduler`` keyword folded in with a
-    :class:`DeprecationWarning` (and named ``scheduler``)."""
+    checked (named ``workers``)."""
     from twoball.verify.sweeps.parallel import check_scheduler
 
-    if scheduler is not None:
-        warn_deprecated(f"{verb}: the keyword scheduler is deprecated; pass workers=ADDRESS")
-        if workers is not None:
-            valid = "left out with scheduler (the cluster decides)"
-            raise ParameterError("workers", valid, workers)
-        return None, check_scheduler(scheduler)
     if isinstance(workers, str):
         try:
             return None, check_scheduler(workers)
@@ -133,17 +125,15 @@ def sweep(
     values: Mapping[str, Sequence[float]],
     case: Case | None = None,
     *,
-    stepping: Any = None,
+    solver: Any = None,
     body: Any = None,
     damping: Any = None,
-    series: Any = None,
     workers: int | str | None = None,
     progress: Callable[[int], None] | None = None,
     drop: Any = None,
     pair: str | None = None,
-    **deprecated: Any,
 ) -> SweepResult | Any:
-    """Closed-form lift-off over one parameter or a grid of two (Fig. 11(b), Fig. 12).
+    """Lift-off over one parameter or a grid of two (Fig. 11(b), Fig. 12), or drops over one.
 
     Parameters
     ----------
@@ -154,17 +144,20 @@ def sweep(
         :class:`~twoball.Case`.
     case : Case, optional
         The base case (default the basketball preset).
-    stepping : Stepping, optional
-        The window ``t_end`` [s] of every point (no time steps: the closed form).
+    solver : ClosedForm or MoreauJean, optional
+        The closed form of every point (:class:`~twoball.ClosedForm`: its filter,
+        re-contact horizon and window; the default), or, with a body of finite
+        mass on the points (``body`` or a ``mass_ratio`` sweep), the stepped
+        contact on the Legendre modes (:class:`~twoball.MoreauJean`: its step,
+        window and the start's filter; the default there).  A sweep of the drop
+        takes a :class:`~twoball.MoreauJean` with its ball.
     body : Body, optional
-        An upper body of finite mass on every point (docs/contact.rst); a
-        ``mass_ratio`` sweep takes its other fields from it (default: contact
-        radius R/10, no restitution, the ball's energy).
+        An upper body on every point (docs/contact.rst); a ``mass_ratio`` sweep
+        takes its other fields from it (default: contact radius R/10, no
+        restitution, the ball's energy).
     damping : ModalRatio or Rayleigh, optional
         The damping law of every point, as in :func:`~twoball.liftoff` (a
         Rayleigh law with alpha, beta of its own refuses a ``damping`` sweep).
-    series : Series, optional
-        Filter and re-contact horizon, as in :func:`~twoball.liftoff`.
     workers : int or str, optional
         Local processes (default 1: serial), or the address of a
         dask.distributed scheduler (``"tcp://host:8786"``) whose workers run
@@ -173,15 +166,11 @@ def sweep(
         Called with the number of points done (e.g. :meth:`twoball.Reporter.update`).
     drop : Drop, optional
         Sweep the drop on the floor, or the whole bounce with ``body`` or
-        ``pair``, instead (:func:`twoball.bounce` at every point, with these
-        options): one parameter, ``v0``, ``drop_height``, ``gap`` or
-        ``mass_ratio``; on ``workers`` like every sweep; returns a
+        ``pair``, instead (:func:`twoball.bounce` at every point): one
+        parameter, ``v0``, ``drop_height``, ``gap`` or ``mass_ratio``; returns a
         :class:`~twoball.BounceSweep`.
     pair : str, optional
         With ``drop``: a Table 1 pair (:func:`twoball.bounce`'s ``pair``).
-    **deprecated
-        ``t_end``, ``contact_radius``, ``sigma`` and ``recontact`` of version
-        0.2 and ``scheduler`` (now ``workers``), with a :class:`DeprecationWarning`.
 
     Returns
     -------
@@ -194,40 +183,38 @@ def sweep(
     >>> [round(p.ratio, 3) for p in result.points]
     [1.354, 0.935, 0.417]
     """
-    legacy_radius = deprecated.pop("contact_radius", None)
-    workers, scheduler = where("twoball.sweep", workers, deprecated.pop("scheduler", None))
-    given = bundles(
-        "twoball.sweep",
-        stepping=stepping,
-        body=body,
-        damping=damping,
-        series=series,
-        old=deprecated,
-        takes=("stepping", "body", "series"),
-    )
-    if drop is not None:
-        from twoball._bounce import bounce_sweep
+    from twoball._liftoff import with_damping
+    from twoball._solvers import ClosedForm, MoreauJean
+    from twoball.modal.contact.body import Body
 
-        if legacy_radius is not None:
-            raise ParameterError("contact_radius", "left out in a sweep of the drop", None)
-        given.rules.refuse("in a sweep of the drop (no filter)", "sigma", "recontact")
+    workers, scheduler = where("twoball.sweep", workers)
+    if body is not None and not isinstance(body, Body):
+        raise ParameterError("body", "a twoball.Body", type(body).__name__)
+    if drop is not None:
+        from twoball._common.watch import Watch
+        from twoball.verify.sweeps.bounce import bounce_sweep
+
+        if solver is not None and not isinstance(solver, MoreauJean):
+            raise ParameterError("solver", "a twoball.MoreauJean for a sweep of the drop", solver)
         return bounce_sweep(
             values,
             case,
             drop,
-            body=given.body,
+            body=body,
             pair=pair,
-            stepping=given.stepping,
-            damping=given.damping,
+            solver=solver,
+            damping=damping,
             workers=workers,
             scheduler=scheduler,
             progress=progress,
+            monitor=Watch(),
         )
     if pair is not None:
         raise ParameterError("pair", "given only with drop (a sweep of the whole bounce)", pair)
     import numpy as np
 
     from twoball._common.progress import check_progress
+    from twoball._common.watch import Watch
     from twoball.modal.report import t_end_dimensionless
     from twoball.verify.sweeps.cost import check_sweep
     from twoball.verify.sweeps.parallel import (
@@ -238,35 +225,40 @@ def sweep(
     from twoball.verify.sweeps.sweeps import SWEEP_PARAMETERS, SweepGrid, SweepSolver, run_sweep
 
     check_progress(progress)
-    sigma, recontact = given.rules.sigma, given.rules.recontact
     case = Case.preset("basketball") if case is None else case
     if not isinstance(case, Case):
         raise ParameterError("case", "a twoball.Case", type(case).__name__)
-    case = with_damping(case, given.damping)
-    if given.stepping is not None:
-        given.stepping.refuse(
-            "in a sweep (the closed form: no time steps)", "scheme", "dt", "route"
-        )
-    t_end = None if given.stepping is None else given.stepping.t_end
-    body = given.body
-    if legacy_radius is not None:
-        warn_deprecated(
-            "twoball.sweep: contact_radius is deprecated; pass body=Body(0, contact_radius=...)"
-        )
-        if body is not None:
-            raise ParameterError("contact_radius", "left out with body (set it there)", None)
-        if "mass_ratio" not in values and "mass-ratio" not in values:
-            valid = "given only with a mass_ratio sweep"
-            raise ParameterError("contact_radius", valid, legacy_radius)
-        from twoball.modal.contact.body import Body
+    case = with_damping(case, damping)
+    if not isinstance(values, Mapping):
+        raise ParameterError("values", "a mapping of one or two parameters to values", values)
+    stepped = (body is not None and body.mass_ratio > 0.0) or any(
+        _sweep_name(k) == "mass-ratio" for k in values
+    )
+    if solver is None:
+        solver = MoreauJean() if stepped else ClosedForm()
+    if stepped and not isinstance(solver, MoreauJean):
+        valid = "twoball.MoreauJean with a body of finite mass on the points (its contacts)"
+        raise ParameterError("solver", valid, type(solver).__name__)
+    if not stepped and not isinstance(solver, ClosedForm):
+        raise ParameterError("solver", "a twoball.ClosedForm for a lift-off sweep", solver)
+    if isinstance(solver, MoreauJean) and solver.ball is not None:
+        from twoball.modal.balls.membrane import LegendreBall
 
-        body = Body(0.0, contact_radius=legacy_radius)
+        if not isinstance(solver.ball, LegendreBall) or solver.ball.modes is not None:
+            valid = "the case's Legendre modes in a sweep (N is the case's, or swept: modes)"
+            raise ParameterError("ball", valid, solver.ball.label)
+    sigma = solver.sigma or "lanczos"
+    recontact = getattr(solver, "recontact", "window")
+    t_end = solver.t_end
     workers = 1 if workers is None and not scheduler else workers
     if workers is not None:
         check_workers(workers)  # its type and range, before the budget compares it
-    call = {"workers": workers, "scheduler": scheduler, **given.as_dict()}
+    call: dict[str, Any] = {"workers": workers, "scheduler": scheduler}
+    call["solver"] = solver.as_dict()
     if body is not None:
         call["body"] = body.as_dict()
+    if damping is not None:
+        call["damping"] = damping.as_dict()
     if not isinstance(values, Mapping) or not 1 <= len(values) <= 2:
         raise ParameterError("values", "a mapping of one or two parameters to values", values)
     parameters = tuple(_sweep_name(k) for k in values)
@@ -322,13 +314,12 @@ def sweep(
         swept = parameters.index("mass-ratio") if "mass-ratio" in parameters else None
         for mu in [template.mass_ratio] if swept is None else arrays[swept]:
             check_contact_options(case, replace(template, mass_ratio=float(mu)))
-        if recontact != "window":
-            raise ParameterError("recontact", "window with mass_ratio", recontact)
-        solver = SweepSolver(sigma, recontact, t_end, body=template)
+        step = None if solver.dt is None else solver.dt * case.wave_speed
+        task = SweepSolver(sigma, recontact, t_end, body=template, dt=step, monitor=Watch())
     else:
-        solver = SweepSolver(sigma, recontact, t_end)
+        task = SweepSolver(sigma, recontact, t_end, monitor=Watch())
     with Runner(workers, scheduler) as runner:
-        points = run_sweep(cases, solver, progress, runner=runner, indices=grid.indices())
+        points = run_sweep(cases, task, progress, runner=runner, indices=grid.indices())
     from dataclasses import replace as with_rule
 
     from twoball.verify.sweeps.sweeps import phi_a_rule

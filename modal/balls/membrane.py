@@ -136,7 +136,7 @@ def summary(case: Case) -> dict[str, Any]:
 def membrane_rows(
     phi: np.ndarray, shapes: np.ndarray, masses: np.ndarray, omega_squared: np.ndarray
 ) -> tuple[np.ndarray, np.ndarray]:
-    """The floor rows ``(1, cos(phi_i) S_ik)`` of a radial membrane with its centre, and their reach.
+    """The floor rows ``(1, cos(phi_i) S_ik)`` of a radial membrane with its centre, and reach.
 
     ``shapes[i, k]`` is the radial mode k at floor point i.  The reach bounds the
     vibration's vertical share at each point, ``|cos(phi_i) u_i| <= r_i sqrt(2 E)``
@@ -159,7 +159,7 @@ def legendre_ball(
     *,
     anchored: bool = False,
 ) -> ModalBall:
-    """The centre's height Z, Legendre modes n = 0, 2, 3, ..., N, the floor at the Gauss-Radau nodes.
+    """The centre's height Z, Legendre modes n = 0, 2, ..., N, floor points at Gauss-Radau nodes.
 
     Parameters
     ----------
@@ -282,7 +282,10 @@ class LegendreBall:
         return self.degree, self.degree // 2
 
     def mass(self, case: Case) -> float:
-        """The ball's mass ``m2 = 2 pi R P / c^2`` [kg] (:func:`~twoball.modal.scalings.membrane_mass`)."""
+        """The ball's mass ``m2 = 2 pi R P / c^2`` [kg] (``membrane_mass`` of the scalings).
+
+        The tension ``T = P R / 2`` with ``c^2 = T / (rho R^2)``, eq. (3.8).
+        """
         from twoball.modal.scalings import membrane_mass
 
         return membrane_mass(case.radius, case.pressure, case.wave_speed)

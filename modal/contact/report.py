@@ -1,7 +1,10 @@
 """The finite-mass lift-off in SI units: case in, contact sequence and v1 out.
 
-``mass_ratio > 0`` runs the event-driven contact solver
-(:mod:`twoball.modal.contact.events`); ``mass_ratio = 0`` is the massless mode:
+``mass_ratio > 0`` steps the contact with the nonsmooth core of the drop
+(:mod:`twoball.modal.contact.stepped`, Moreau-Jean: one integrator for every
+contact of the package); ``exact=True`` solves it event by event in closed form
+instead (:mod:`twoball.modal.contact.events`: the verification studies' exact
+reference).  ``mass_ratio = 0`` is the massless mode:
 the paper's criteria (i)-(ii) of §3(a) applied to the cap-averaged motion
 (:func:`twoball.modal.liftoff.find_liftoff` on a series whose "pole values" are the
 cap averages), which is today's pole result as the contact radius goes to 0.
@@ -13,15 +16,13 @@ Accuracy guards (:func:`contact_guards`), as for the massless body
   ``N_ref = max(2 N, 60)`` Lanczos modes is reported beside the result (the
   ``truncation`` block) and a warning is added when t_l or v1 differs from it
   by more than 5 %, or when only one of them lifts off.  The contact solutions
-  converge like ``N^-2`` (basketball, mu = 0.1: v1 = 0.4261, 0.4325, 0.4342,
-  0.4346 m/s at N = 30, 60, 120, 240), so the difference to ``2 N`` estimates
-  the error of N (N = 30: -1.5 %; the converged limit: -2.0 %); N = 3 does not
-  lift off where N = 60 does at 11.8 ms: warned.  A converged reference (N
-  doubled to a limit, as for the massless body) is out of reach: one contact
-  solve costs 0.06, 0.24, 0.43, 2.7 and 44 s at N = 30, 60, 120, 240, 480; so
-  ``N_ref`` stops at :data:`CONTACT_REFERENCE_MAX_MODES` (240), and above
-  N = 120 the block says it was not checked (the difference between N = 120
-  and 240 is 0.1 % there).  The finite elements are compared with the same
+  converge like ``N^-2`` (basketball, mu = 0.1, event by event: v1 = 0.4261,
+  0.4325, 0.4342, 0.4346 m/s at N = 30, 60, 120, 240), so the difference to
+  ``2 N`` estimates the error of N (N = 30: -1.5 %; the converged limit: -2.0
+  %); N = 3 does not lift off where N = 60 does at 11.8 ms: warned.  ``N_ref``
+  stops at :data:`CONTACT_REFERENCE_MAX_MODES` (240), and above N = 120 the
+  block says it was not checked (the difference between N = 120 and 240 is 0.1
+  % there).  The finite elements are compared with the same
   closed form: truncation and discretisation together (plus the mesh guard);
 * the window: a body that separated moving down at the end of the window is
   not lifted (criterion (ii): no negative lift-off velocity) and this is said;
@@ -40,8 +41,7 @@ from typing import Any
 import numpy as np
 from twoball.modal.contact.body import Body
 from twoball.modal.contact.caps import cap_angle, legendre_cap_averages
-from twoball.modal.contact.events import ContactHistory, integrate
-from twoball.modal.contact.system import ContactSystem
+from twoball.modal.contact.events import ContactHistory
 from twoball.modal.filters import SpectralFilter
 from twoball.modal.legendre import legendre_series
 from twoball.modal.liftoff import find_liftoff
@@ -91,7 +91,9 @@ class ContactReport:
     """Finite-mass lift-off of the upper body, in SI (seconds, m/s, N s).
 
     ``history`` is the dimensionless event history (None in the massless mode,
-    where ``massless`` holds the criteria's :class:`LiftoffResult`).
+    where ``massless`` holds the criteria's :class:`LiftoffResult`); ``motion``
+    the state at any time (:class:`~twoball.modal.contact.stepped.SteppedMotion`,
+    or the exact reference's :class:`~twoball.modal.contact.stepped.ExactMotion`).
 
     Examples
     --------
@@ -115,7 +117,7 @@ class ContactReport:
     extra: dict[str, Any] = field(default_factory=dict)
     warnings: tuple[str, ...] = ()
     membrane: Case | None = None
-    system: ContactSystem | None = field(default=None, repr=False, compare=False)
+    motion: Any = field(default=None, repr=False, compare=False)
     provenance: dict[str, Any] | None = field(default=None, compare=False, repr=False)
 
     def __repr__(self) -> str:
@@ -176,12 +178,10 @@ class ContactReport:
         Keys: ``t_s``, ``body_height_m``, ``body_velocity_m_s``, ``cap_displacement_m``,
         ``cap_velocity_m_s``, ``contact`` (bool); empty in the massless mode.
         """
-        if self.history is None or self.system is None:
+        if self.history is None or self.motion is None:
             return {}
-        from twoball.modal.contact.trajectory import sample
-
         scale = self.case.scalings
-        data = sample(self.system, self.history, np.linspace(0, self.history.t_end, samples))
+        data = self.motion.sample(np.linspace(0, self.history.t_end, samples))
         return {
             "t_s": data["t"] * scale.time,
             "body_height_m": data["body_height"] * scale.length,
@@ -284,19 +284,20 @@ def solve_contact(
     t_end: float,
     membrane: Case,
     extra: dict[str, Any] | None = None,
-    samples_per_period: int = 32,
+    dt: float | None = None,
+    exact: bool = False,
+    monitor: Any = None,
 ) -> ContactReport:
-    """Run the shared contact solver on any backend's series and cap averages."""
-    from twoball.modal.contact.cost import check_contact
+    """Run the shared contact solver on any backend's series and cap averages.
 
-    system = None
-    kept, top = len(series.omega), float(np.max(series.omega, initial=0.0))
+    ``dt`` is the time step of the contact core (units 1/c; default
+    :data:`~twoball.modal.contact.stepped.DEFAULT_DT`); ``exact`` solves event by
+    event in closed form instead (the verification studies' reference).
+    """
+    from twoball.modal.contact.stepped import DEFAULT_DT, ExactMotion, stepped_contact
+
+    motion = None
     if mass_ratio == 0.0:
-        from twoball.modal.cost import series_estimate
-
-        from twoball._common.budget import check, options
-
-        check(options(modes=case.modes), series_estimate(case.modes, t_end, kept, top))
         cap_series = ModalSeries(
             series.omega,
             series.coefficients,
@@ -307,11 +308,31 @@ def solve_contact(
         )
         result = find_liftoff(cap_series, case.gamma, t_end=t_end)
         history = None
-    else:
-        check_contact(kept, top, t_end, modes=case.modes, mass_ratio=mass_ratio)
+    elif exact:
+        from twoball.modal.contact.events import integrate
+        from twoball.modal.contact.system import ContactSystem
+
         system = ContactSystem.from_series(series, contact, mass_ratio, case.gamma)
-        history = integrate(system, t_end, restitution, samples_per_period)
-        result = None
+        history = integrate(system, t_end, restitution)
+        motion, result = ExactMotion(history, system), None
+    else:
+        step = DEFAULT_DT if dt is None else float(dt)
+        motion = stepped_contact(
+            series,
+            contact,
+            mass_ratio,
+            case.gamma,
+            t_end,
+            restitution,
+            dt=step,
+            monitor=monitor,
+        )
+        history, result = motion.history, None
+    extra = dict(extra or {})
+    if mass_ratio > 0.0:
+        extra["integrator"] = "event by event (closed form)" if exact else "moreau-jean"
+        if not exact:
+            extra["dt_s"] = (DEFAULT_DT if dt is None else float(dt)) * case.scalings.time
     return ContactReport(
         case,
         mass_ratio,
@@ -322,10 +343,10 @@ def solve_contact(
         sigma,
         history,
         result,
-        dict(extra or {}),
+        extra,
         (),
         membrane,
-        None if mass_ratio == 0.0 else system,
+        motion,
     )
 
 
@@ -336,14 +357,24 @@ def _relative(value: float | None, reference: float | None) -> float | None:
 
 
 def contact_reference(
-    case: Case, body: Body, t_end_s: float | None
+    case: Case,
+    body: Body,
+    t_end_s: float | None,
+    *,
+    dt: float | None = None,
+    exact: bool = False,
+    monitor: Any = None,
 ) -> tuple[int, ContactReport | None]:
-    """The closed-form contact solution with ``max(2 N, 60)`` Lanczos modes (None above 240)."""
+    """The Legendre contact solution with ``max(2 N, 60)`` Lanczos modes (None above 240),
+    by the same integrator and step."""
     modes = max(2 * case.modes, CONTACT_REFERENCE_MIN_MODES)
     if modes > CONTACT_REFERENCE_MAX_MODES:
         return modes, None
     finer = case.derive(modes=modes)
-    return modes, legendre_contact(finer, body, t_end_s=t_end_s, reference=False)
+    report = legendre_contact(
+        finer, body, t_end_s=t_end_s, reference=False, dt=dt, exact=exact, monitor=monitor
+    )
+    return modes, report
 
 
 def contact_guards(
@@ -431,11 +462,22 @@ def contact_guards(
     return [*warnings, f"{subject} is {shown}: {cure}"], block
 
 
-def guarded(report: ContactReport, body: Body, t_end_s: float | None, *, more=()) -> ContactReport:
+def guarded(
+    report: ContactReport,
+    body: Body,
+    t_end_s: float | None,
+    *,
+    more: tuple[str, ...] | list[str] = (),
+    dt: float | None = None,
+    exact: bool = False,
+    monitor: Any = None,
+) -> ContactReport:
     """``report`` with its warnings (:func:`contact_guards`) and ``truncation`` block."""
     from dataclasses import replace
 
-    modes, reference = contact_reference(report.case, body, t_end_s)
+    modes, reference = contact_reference(
+        report.case, body, t_end_s, dt=dt, exact=exact, monitor=monitor
+    )
     warnings, block = contact_guards(report, modes, reference, t_end_s is not None)
     extra = {**report.extra, "truncation": block}
     return replace(report, extra=extra, warnings=(*more, *warnings))
@@ -447,10 +489,12 @@ def legendre_contact(
     *,
     sigma: str = "lanczos",
     t_end_s: float | None = None,
-    samples_per_period: int = 32,
     reference: bool = True,
+    dt: float | None = None,
+    exact: bool = False,
+    monitor: Any = None,
 ) -> ContactReport:
-    """Finite-mass lift-off on the Legendre modes (the closed-form backend).
+    """Finite-mass lift-off on the Legendre modes.
 
     Parameters
     ----------
@@ -466,6 +510,12 @@ def legendre_contact(
     reference : bool
         Add the truncation block and its warning (:func:`contact_guards`; one
         more solve with ``max(2 N, 60)`` modes); False: the other warnings only.
+    dt : float, optional
+        Time step of the contact core (units 1/c; default 0.005).
+    exact : bool
+        Event by event in closed form instead (the verification studies' reference).
+    monitor : Monitor, optional
+        Told of every step (:class:`~twoball._common.monitor.Monitor`).
     """
     radius = check_contact_options(case, body)
     mass_ratio, restitution, energy = body.mass_ratio, body.restitution, body.energy
@@ -486,10 +536,12 @@ def legendre_contact(
         t_end=t_end_dimensionless(case, t_end_s),
         membrane=membrane,
         extra={"cap_angle_rad": theta},
-        samples_per_period=samples_per_period,
+        dt=dt,
+        exact=exact,
+        monitor=monitor,
     )
     if reference:
-        return guarded(report, body, t_end_s)
+        return guarded(report, body, t_end_s, dt=dt, exact=exact, monitor=monitor)
     from dataclasses import replace
 
     guards = contact_guards(report, window_given=t_end_s is not None)

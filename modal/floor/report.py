@@ -396,4 +396,3 @@ class BounceReport:
         if self.provenance is not None:
             data["provenance"] = self.provenance
         return data
-

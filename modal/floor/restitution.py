@@ -192,7 +192,8 @@ def body_on_start(
     from twoball.modal.floor.measure import contact_intervals
     from twoball.modal.floor.system import floor_system
 
-    cap = ball.cap_average(body.cap_angle)
+    # the body's cap on this ball (a row built for another layout is averaged again)
+    cap = body.cap if body.cap.shape == (ball.modes,) else ball.cap_average(body.cap_angle)
     row = replace(body, cap=cap, gap=0.0)
     system = floor_system(ball, gamma, body=row, floor=False)
     q = np.zeros(system.problem.dofs)

@@ -34,7 +34,10 @@ class Watch:
         check_deadline(doing)
 
     def long_call(self, function: Callable[..., _T], *args: Any, doing: str) -> _T:
-        """``function(*args)`` in a child process, watched (:func:`~twoball._common.child.in_child`)."""
+        """``function(*args)`` in a child process, watched (:func:`twoball._common.child.in_child`).
+
+        The same numbers as a call in process, while the progress line moves.
+        """
         from twoball._common.child import in_child
 
         return in_child(function, *args, doing=doing)

@@ -123,9 +123,9 @@ def drop_case(args: argparse.Namespace) -> twoball.Case:
     pair = getattr(args, "pair", None)
     if args.preset is None:  # the pair's lower ball, else the basketball
         if pair is not None:
-            from twoball import _choices
+            from twoball import _lookup
 
-            args.preset = _choices.pair(pair).lower
+            args.preset = _lookup.pair(pair).lower
         else:
             args.preset = "basketball"
     elif pair is not None:

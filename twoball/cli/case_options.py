@@ -5,7 +5,8 @@ from __future__ import annotations
 import argparse
 
 import twoball
-from twoball import _choices
+from twoball import _lookup
+from twoball._common import choices as _choices
 from twoball._common.errors import ParameterError, real_number
 from twoball.cli.values import integer, number
 
@@ -67,7 +68,9 @@ def add_case_options(parser: argparse.ArgumentParser, window: str = "4 pi / c") 
     )
     model = parser.add_argument_group("model")
     model.add_argument(
-        "--sigma", choices=_choices.SIGMAS, help="spectral filter (eq. (3.16)); default lanczos"
+        "--sigma",
+        choices=_choices.FILTER_KINDS,
+        help="spectral filter (eq. (3.16)); default lanczos",
     )
     model.add_argument(
         "--recontact",
@@ -145,12 +148,6 @@ def first_case_option(args: argparse.Namespace) -> tuple[str, object] | None:
     return None
 
 
-def series_options(args: argparse.Namespace) -> twoball.Series | None:
-    """``--sigma`` and ``--recontact`` as :class:`~twoball.Series` (None when neither is given)."""
-    fields = {n: getattr(args, n) for n in ("sigma", "recontact") if getattr(args, n, None)}
-    return twoball.Series(**fields) if fields else None
-
-
 def rayleigh_option(text: str) -> twoball.Rayleigh:
     """``--rayleigh ALPHA,BETA`` (SI: alpha [1/s], beta [s]) as a :class:`~twoball.Rayleigh`."""
     parts = [p.strip() for p in str(text).split(",")]
@@ -186,9 +183,7 @@ def _stiffness_changes(args: argparse.Namespace) -> dict[str, float | str]:
         changes["bending"] = args.bending
     elif args.youngs_modulus is not None:
         poisson = 0.5 if args.poisson is None else args.poisson
-        changes["bending"] = _choices.flexural_rigidity(
-            args.youngs_modulus, args.thickness, poisson
-        )
+        changes["bending"] = _lookup.flexural_rigidity(args.youngs_modulus, args.thickness, poisson)
     if args.gas is not None:
         changes["gas"] = args.gas
     if getattr(args, "membrane", None) is not None:
@@ -204,5 +199,4 @@ __all__ = [
     "case_from_options",
     "case_options_given",
     "rayleigh_option",
-    "series_options",
 ]

@@ -10,7 +10,7 @@ from __future__ import annotations
 import argparse
 
 import twoball
-from twoball import _choices
+from twoball._common import choices as _choices
 from twoball._common.errors import ParameterError
 from twoball.cli.values import number
 

@@ -12,11 +12,12 @@ from pathlib import Path
 from typing import Any
 
 import twoball
-from twoball import _choices
+from twoball._common import choices as _choices
 from twoball._common.errors import ParameterError
 from twoball._common.strict_json import json_text
-from twoball.cli.case_options import add_case_options, case_from_options, series_options
+from twoball.cli.case_options import add_case_options, case_from_options
 from twoball.cli.console import Table, console, print_notes, print_warnings
+from twoball.cli.solver_options import closed_form
 
 MESHES = ("sphere", "axisym")
 
@@ -53,8 +54,7 @@ def run(args: argparse.Namespace) -> int:
         "mesh": _mesh(args),
         "levels": args.levels,
         "modes_list": args.modes_list,
-        "stepping": None if args.t_end is None else twoball.Stepping(t_end=args.t_end),
-        "series": series_options(args),
+        "solver": closed_form(args),
         "out": out,
     }
     if args.study == "modes" and args.modes is not None:

@@ -7,16 +7,16 @@ from __future__ import annotations
 
 import argparse
 
-from twoball import _choices
-from twoball.cli.case_options import add_case_options, case_from_options, series_options
+from twoball import _lookup
+from twoball._common import choices as _choices
+from twoball.cli.case_options import add_case_options, case_from_options
 from twoball.cli.console import console, key_value_table, number, print_notes, print_warnings
 from twoball.cli.contact_options import add_contact_options, body_options
 from twoball.cli.mesh_options import (
     add_mesh_options,
     add_route_option,
-    mesh_options,
-    stepping_options,
 )
+from twoball.cli.solver_options import field_solver
 from twoball.cli.values import integer
 
 __all__ = ["add_backend_option", "add_frame_options", "register", "run"]
@@ -50,20 +50,19 @@ def run(args: argparse.Namespace) -> int:
     import twoball
     from twoball._common.progress import Reporter
 
-    frames = args.frames if args.times is None else _choices.parse_times(args.times)
+    frames = args.frames if args.times is None else _lookup.parse_times(args.times)
     if args.format is not None:  # the API takes the suffix of --out; --format must agree
         from twoball._files import check_export_format
 
         check_export_format(args.out, args.format)
+    solver = field_solver(args)
     with Reporter("export") as progress:
         result = twoball.export(
             args.out,
             case_from_options(args),
             backend=args.backend,
-            mesh=mesh_options(args),
-            stepping=stepping_options(args),
+            solver=solver,
             body=body_options(args),
-            series=series_options(args),
             frames=frames,
             progress=progress,
         )

@@ -8,7 +8,7 @@ from __future__ import annotations
 import argparse
 
 import twoball
-from twoball.cli.case_options import add_case_options, case_from_options, series_options
+from twoball.cli.case_options import add_case_options, case_from_options
 from twoball.cli.console import (
     console,
     key_value_table,
@@ -18,14 +18,8 @@ from twoball.cli.console import (
     print_warnings,
 )
 from twoball.cli.contact_options import add_contact_options, body_options
-from twoball.cli.mesh_options import (
-    add_mesh_options,
-    add_time_options,
-    damping_options,
-    mesh_options,
-    refuse_mesh_flags,
-    stepping_options,
-)
+from twoball.cli.mesh_options import add_mesh_options, add_time_options, damping_options
+from twoball.cli.solver_options import liftoff_solver
 
 __all__ = ["liftoff_rows", "register", "run"]
 
@@ -139,17 +133,14 @@ def contact_rows(report) -> list[tuple[str, str]]:
 
 
 def solve_from_options(args: argparse.Namespace) -> twoball.LiftoffReport:
-    """Call :func:`twoball.liftoff` with the case, model, mesh, time and body options."""
+    """Call :func:`twoball.liftoff` with the case, the solver of the flags, the body and
+    the damping law."""
     from twoball._common.progress import QUICK, Reporter
 
-    if args.backend != "fem":
-        refuse_mesh_flags(args, "with backend legendre (no mesh)")
+    body = body_options(args)
     options = {
-        "backend": args.backend,
-        "series": series_options(args),
-        "mesh": mesh_options(args),
-        "stepping": stepping_options(args),
-        "body": body_options(args),
+        "solver": liftoff_solver(args, body),
+        "body": body,
         "damping": damping_options(args),
     }
     case = case_from_options(args)

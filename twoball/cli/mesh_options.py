@@ -5,7 +5,7 @@ Every subcommand that takes a mesh (``liftoff --backend fem``, ``eigen``,
 and None when not given, to the public function, whose
 :class:`twoball.fem_membrane.options.MeshOptions` supplies the defaults and refuses an
 option that does not apply (``--level`` with ``--mesh axisym``, ``--elements``
-on a sphere, ``--dt`` with ``--scheme modal``, any of them with ``--backend legendre``).
+on a sphere); the solver they feed is built by :mod:`twoball.cli.solver_options`.
 """
 
 from __future__ import annotations
@@ -14,7 +14,7 @@ import argparse
 from pathlib import Path
 
 import twoball
-from twoball import _choices
+from twoball._common import choices as _choices
 from twoball.cli.values import integer, number
 
 _KIND_HELP = {
@@ -103,7 +103,7 @@ def add_route_option(parser: argparse.ArgumentParser) -> None:
 
 
 def add_time_options(parser: argparse.ArgumentParser) -> None:
-    """``--scheme``, ``--damping-model``, ``--dt``, ``--route`` of the finite-element lift-off."""
+    """``--scheme``, ``--damping-model``, ``--dt``, ``--route`` of the lift-off's solvers."""
     group = parser.add_argument_group("finite-element time integration")
     group.add_argument(
         "--scheme",
@@ -118,7 +118,8 @@ def add_time_options(parser: argparse.ArgumentParser) -> None:
         "--dt",
         type=number,
         metavar="SECONDS",
-        help="alpha only: time step [s] (default: omega_cut dt = 0.2)",
+        help="time step [s] of --scheme alpha (default: omega_cut dt = 0.2), or of the "
+        "Moreau-Jean steps with --mass-ratio (default 0.005 / c)",
     )
     group.add_argument(
         "--route",
@@ -153,13 +154,6 @@ def refuse_mesh_flags(args: argparse.Namespace, why: str) -> None:
             raise twoball.ParameterError(name, f"left out {why}", value)
 
 
-def stepping_options(args: argparse.Namespace) -> twoball.Stepping | None:
-    """``--t-end``, ``--scheme``, ``--dt``, ``--route`` as :class:`~twoball.Stepping` or None."""
-    names = ("t_end", "dt", "scheme", "route")
-    fields = {n: getattr(args, n) for n in names if getattr(args, n, None) is not None}
-    return twoball.Stepping(**fields) if fields else None
-
-
 def damping_options(args: argparse.Namespace) -> twoball.ModalRatio | twoball.Rayleigh | None:
     """``--damping-model`` as a damping law: ``rayleigh`` fitted to D, ``modal`` the paper's.
 
@@ -184,5 +178,4 @@ __all__ = [
     "add_time_options",
     "damping_options",
     "mesh_options",
-    "stepping_options",
 ]

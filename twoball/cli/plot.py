@@ -6,26 +6,25 @@ A thin layer over :func:`twoball.plot`.
 from __future__ import annotations
 
 import argparse
+from typing import Any
 
 import twoball
-from twoball import _choices
+from twoball._common import choices as _choices
 from twoball._common.errors import ParameterError
 from twoball.cli.case_options import (
     add_case_options,
     apply_limits,
     case_from_options,
     first_case_option,
-    series_options,
 )
 from twoball.cli.console import console, key_value_table, print_notes, print_warnings
 from twoball.cli.contact_options import add_contact_options, body_options
 from twoball.cli.mesh_options import (
     add_mesh_options,
     add_route_option,
-    mesh_options,
     refuse_mesh_flags,
-    stepping_options,
 )
+from twoball.cli.solver_options import closed_form, field_solver
 from twoball.cli.values import integer, number
 
 __all__ = ["register", "run"]
@@ -47,6 +46,24 @@ def parse_backends(text: str) -> tuple[str, ...]:
     if not names or any(n not in _choices.FIELD_BACKENDS for n in names):
         raise ParameterError("backends", "fem, legendre or fem,legendre", text)
     return names
+
+
+def _plot_solver(args: argparse.Namespace) -> Any:
+    """The plot's solver: none for ``eigen``, the closed form for ``precursor``, else the
+    fields' (:func:`~twoball.cli.solver_options.field_solver`)."""
+    if args.kind == "eigen":
+        why = "left out with kind eigen (use --levels, --orders)"
+        for name in ("t_end", "sigma", "recontact", "route"):
+            if getattr(args, name, None) is not None:
+                raise ParameterError(name, why, getattr(args, name))
+        return None
+    if args.kind == "precursor":
+        refuse_mesh_flags(args, "with kind precursor (the closed form only)")
+        if getattr(args, "route", None) is not None:
+            valid = "left out with kind precursor (the closed form)"
+            raise ParameterError("route", valid, args.route)
+        return closed_form(args)
+    return field_solver(args)
 
 
 def run(args: argparse.Namespace) -> int:
@@ -71,15 +88,14 @@ def run(args: argparse.Namespace) -> int:
     else:
         case = case_from_options(args)
         steps = 2
+    solver = _plot_solver(args)
     with Reporter(f"plot {args.kind}", total=steps) as progress:
         result = twoball.plot(
             args.kind,
             args.out,
             case,
-            mesh=mesh_options(args),
-            stepping=stepping_options(args),
+            solver=solver,
             body=body_options(args),
-            series=series_options(args),
             figure=twoball.PlotOptions(
                 dpi=args.dpi,
                 instants=args.instants,

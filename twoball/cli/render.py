@@ -8,17 +8,16 @@ from __future__ import annotations
 import argparse
 
 import twoball
-from twoball import _choices
-from twoball.cli.case_options import add_case_options, case_from_options, series_options
+from twoball._common import choices as _choices
+from twoball.cli.case_options import add_case_options, case_from_options
 from twoball.cli.console import console, key_value_table, print_notes, print_warnings
 from twoball.cli.contact_options import add_contact_options, body_options
 from twoball.cli.export import add_backend_option
 from twoball.cli.mesh_options import (
     add_mesh_options,
     add_route_option,
-    mesh_options,
-    stepping_options,
 )
+from twoball.cli.solver_options import field_solver
 from twoball.cli.values import integer, number
 
 __all__ = ["register", "run"]
@@ -33,15 +32,14 @@ def run(args: argparse.Namespace) -> int:
         raise twoball.ParameterError("time", valid, args.time)
     frames = args.frames if args.time is None else [args.time]
     view = twoball.RenderOptions(warp=args.warp, size=args.size, fps=args.fps, frames=frames)
+    solver = field_solver(args)
     with Reporter("render") as progress:
         result = twoball.render(
             args.out,
             case_from_options(args),
             backend=args.backend,
-            mesh=mesh_options(args),
-            stepping=stepping_options(args),
+            solver=solver,
             body=body_options(args),
-            series=series_options(args),
             view=view,
             progress=progress,
         )

@@ -5,7 +5,7 @@ from __future__ import annotations
 import argparse
 import shlex
 
-from twoball import _choices
+from twoball._common import choices as _choices
 from twoball.cli.console import console
 from twoball.cli.sweep import workers
 from twoball.cli.values import integer

@@ -7,10 +7,11 @@ from collections.abc import Iterator, Sequence
 from contextlib import contextmanager
 from typing import Any
 
-from twoball import _choices
+from twoball import _lookup
+from twoball._common import choices as _choices
 from twoball._common.errors import ParameterError
 from twoball._common.provenance import attach
-from twoball.cli.case_options import add_case_options, case_from_options, series_options
+from twoball.cli.case_options import add_case_options, case_from_options
 from twoball.cli.console import (
     Table,
     console,
@@ -20,6 +21,7 @@ from twoball.cli.console import (
     print_warnings,
 )
 from twoball.cli.contact_options import add_contact_options, body_options
+from twoball.cli.solver_options import closed_form, series_fields
 from twoball.cli.values import integer
 from twoball.cli.values import number as number_value
 
@@ -81,7 +83,7 @@ def run(args: argparse.Namespace) -> int:
         if name in args.param:
             valid = f"a parameter of the lift-off ({name} needs --bounce, a sweep of the drop)"
             raise ParameterError("param", valid, name)
-    grid = _choices.make_grid(args.param, args.values)
+    grid = _lookup.make_grid(args.param, args.values)
     for name in grid.parameters:  # the swept parameter's base value would be replaced
         field = _choices.SWEEP_PARAMETERS[name]
         fields = (field,)
@@ -104,7 +106,13 @@ def run(args: argparse.Namespace) -> int:
     base = case_from_options(args)
     values = dict(zip(grid.parameters, grid.values, strict=True))
     body = _sweep_body(args, grid.parameters)
-    stepping = None if args.t_end is None else twoball.Stepping(t_end=args.t_end)
+    stepped = "mass-ratio" in grid.parameters or (body is not None and body.mass_ratio > 0.0)
+    if stepped:  # a body of finite mass on the points: its contacts are stepped
+        if args.recontact not in (None, "window"):
+            raise ParameterError("recontact", "window with --mass-ratio", args.recontact)
+        solver = twoball.MoreauJean(**series_fields(args, "sigma", "t_end"))
+    else:
+        solver = closed_form(args)
     from twoball._common.progress import QUICK, Reporter
 
     total = 1
@@ -117,9 +125,8 @@ def run(args: argparse.Namespace) -> int:
         result = twoball.sweep(
             values,
             base,
-            stepping=stepping,
+            solver=solver,
             body=body,
-            series=series_options(args),
             workers=workers(args),
             progress=bar.update,
         )
@@ -170,18 +177,19 @@ def _run_bounce(args: argparse.Namespace) -> int:
             raise ParameterError("pair", "left out when --param mass-ratio is swept", args.pair)
     else:
         body = whole_body(args)
+    modes = args.modes
     case = drop_case(args)
     drop = drop_options(args)
+    solver = twoball.MoreauJean(twoball.LegendreBall(modes), t_end=args.t_end)
     pairs = zip(args.param, args.values, strict=True)
     values = {name.replace("-", "_"): text for name, text in pairs}
-    stepping = None if args.t_end is None else twoball.Stepping(t_end=args.t_end)
     from twoball._common.progress import QUICK, Reporter
 
     with Reporter("sweep of the drop", delay=QUICK) as bar, swept_values(args.param):
         result = twoball.sweep(
             values,
             case,
-            stepping=stepping,
+            solver=solver,
             drop=drop,
             body=body,
             pair=args.pair,

@@ -11,8 +11,9 @@ from pathlib import Path
 from typing import Any
 
 from twoball._common.strict_json import json_text
-from twoball.cli.case_options import add_case_options, case_from_options, series_options
+from twoball.cli.case_options import add_case_options, case_from_options
 from twoball.cli.console import Table, console, print_notes, print_warnings
+from twoball.cli.solver_options import closed_form
 
 DEFAULT_OUT = "twoball-report"
 
@@ -65,16 +66,15 @@ def print_result(result: Any, out: Path) -> None:
 
 
 def run(args: argparse.Namespace) -> int:
-    """Run ``twoball verify``: :func:`twoball.verify` with the options, report in ``--out``."""
-    from twoball._studies import verify
+    """Run ``twoball verify``: :func:`twoball.check` with the options, report in ``--out``."""
+    from twoball._studies import check
 
     case = case_from_options(args)
     print_notes(case.notes)
     options = {
         "thorough": args.thorough,
         "fast": args.fast,
-        "series": series_options(args),
-        "t_end": args.t_end,
+        "solver": closed_form(args),
         "out": args.out,
     }
     from twoball._common.progress import Reporter
@@ -82,7 +82,7 @@ def run(args: argparse.Namespace) -> int:
 
     steps = verify_steps(args.thorough, args.fast)
     with Reporter("verify", total=steps) as progress:
-        result = verify(case, progress=progress, **options)
+        result = check(case, progress=progress, **options)
     print_warnings(result.warnings)
     out = Path(args.out).expanduser()
     if args.json:

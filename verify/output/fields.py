@@ -32,7 +32,7 @@ from twoball.fem_membrane.mesh import SphereMesh, elevate, flatten, sphere_mesh
 from twoball.fem_membrane.options import DEFAULT_INITIAL, FILE, SPHERE_KINDS, MeshOptions
 from twoball.modal.contact.body import MAX_MASS_RATIO, Body
 from twoball.modal.contact.report import check_contact_options, membrane_case
-from twoball.modal.contact.states import ModalStates, modal_states
+from twoball.modal.contact.states import ModalStates
 from twoball.modal.filters import SpectralFilter
 from twoball.modal.legendre import legendre_series, legendre_shapes
 from twoball.modal.parameters import Case
@@ -750,8 +750,6 @@ def check_frame_budget(case: Case, count: int, name: str, field: FieldMesh) -> N
     )
 
 
-
-
 def check_frames(frames: object, name: str = "frames") -> int:
     """Number of frames: an integer in [1, 2000]."""
     if isinstance(frames, bool) or not isinstance(frames, int | np.integer):
@@ -871,7 +869,7 @@ class CoupledModel(BallModel):
 
     Each backend's ``report`` is its :class:`~twoball.modal.contact.report.ContactReport`
     (``system`` and ``history`` of the contact solver), ``shapes`` its modes at
-    the mesh nodes, one row per mode of ``report.system``.
+    the mesh nodes, one row per mode of ``report.motion``.
     """
 
     _states: dict = field(default_factory=dict, init=False, compare=False, repr=False)
@@ -890,7 +888,7 @@ class CoupledModel(BallModel):
         key = (name, t.tobytes())  # u, u_t, u_tt, the body and the caption share one solve
         if key not in self._states:
             report = self.contact(name)
-            self._states[key] = modal_states(report.system, report.history, t)
+            self._states[key] = report.motion.states(t)
         return self._states[key]
 
     def nodal(self, name: str, times_s: np.ndarray, derivative: int = 0) -> np.ndarray:
@@ -917,7 +915,7 @@ class CoupledModel(BallModel):
         """
         scale = self.case.scalings
         states = self.states(name, times_s)
-        b = self.contact(name).system.contact
+        b = self.contact(name).motion.contact
         return {
             "cap_m": states.modal(0) @ b * scale.length,
             "cap_t_m_s": states.modal(1) @ b * scale.velocity,

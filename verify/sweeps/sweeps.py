@@ -192,6 +192,10 @@ class SweepSolver:
     #: the upper body of finite mass (:class:`~twoball.modal.contact.body.Body`) on
     #: every point; a ``mass-ratio`` point replaces its mass ratio
     body: Any = None
+    #: the contact core's step (units 1/c; None: its default) for a body of finite mass
+    dt: float | None = None
+    #: told what each point does (:class:`~twoball._common.monitor.Monitor`)
+    monitor: Any = None
 
     def __call__(self, case: Case) -> LiftoffReport:
         if hasattr(case, "mass_ratio") or self.body is not None:
@@ -204,10 +208,21 @@ class SweepSolver:
                 plain = case.case
                 body = replace(body, mass_ratio=case.mass_ratio)
             return legendre_contact(
-                plain, body, sigma=self.sigma, t_end_s=self.t_end_s, reference=self.reference
+                plain,
+                body,
+                sigma=self.sigma,
+                t_end_s=self.t_end_s,
+                reference=self.reference,
+                dt=self.dt,
+                monitor=self.monitor,
             )
         return legendre_liftoff(
-            case, self.sigma, self.recontact, self.t_end_s, reference=self.reference
+            case,
+            self.sigma,
+            self.recontact,
+            self.t_end_s,
+            reference=self.reference,
+            monitor=self.monitor,
         )
 
 

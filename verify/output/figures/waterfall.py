@@ -17,7 +17,6 @@ if TYPE_CHECKING:
     from matplotlib.figure import Figure
 
 
-
 def waterfall_times(model: BallModel, instants: int = WATERFALL_INSTANTS) -> np.ndarray:
     """``instants`` evenly spaced times [s] over the modelled window [0, t_end]."""
     if isinstance(instants, bool) or not isinstance(instants, int | np.integer) or instants < 2:
