@@ -35,11 +35,18 @@ class Ball(Protocol):
     ----------
     kind : str
         The physics (``"membrane"``, ...), the JSON's ``ball``.
+    backend : str
+        The discretisation (``"legendre"``, ``"fem"``), the JSON's ``backend``.
     label : str
         The resolution in words (``"legendre N = 192"``, ``"axisym 96 P2"``).
+
+    A ball may also have ``summary(case) -> dict`` (its physics for the JSON's
+    ``model`` block) and ``dense`` (its build solves a dense eigenproblem: for
+    the cost estimate).
     """
 
     kind: str
+    backend: str
 
     @property
     def label(self) -> str:
