@@ -26,15 +26,13 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
-from twoball.modal.lumped.drop import check_gap, check_gravity, impact_speed
+from twoball.modal.lumped.drop import TwoContacts
 from twoball.modal.lumped.fitting import fit_hertz
 from twoball.modal.lumped.laws import DAMPING_EXPONENTS, HertzLaw
 from twoball.modal.lumped.pair_inputs import pair_contacts
-from twoball.modal.lumped.result import LumpedResult
-from twoball.modal.lumped.solver import simulate
 from twoball.modal.lumped.spring_dashpot import DURATION_RANGE
 from twoball.modal.pairs import Pair
-from twoball.modal.scalings import MASS_RANGE, STANDARD_GRAVITY
+from twoball.modal.scalings import MASS_RANGE
 
 from twoball._common.errors import ParameterError, bounded
 
@@ -44,7 +42,7 @@ REFERENCE_SPEED = 4.1
 
 
 @dataclass(frozen=True)
-class HertzViscoelastic:
+class HertzViscoelastic(TwoContacts):
     """Damped Hertz contacts at the floor and between the bodies.
 
     Inputs and where they come from (:meth:`from_pair` for a Table 1 pair):
@@ -75,6 +73,9 @@ class HertzViscoelastic:
     >>> model = HertzViscoelastic.from_pair(PAIRS["tennis-coin"])
     >>> model.floor_law.exponent
     0.25
+    >>> model = HertzViscoelastic(0.01, 1.0, 1.0, 1.0, 0.01, 0.002, speed=1.0)
+    >>> round(model.run(v0=1.0, dx=1.0, g=0.0).v1_ratio, 6)  # (2.5), mu = 0.01
+    2.960396
     """
 
     m1: float
@@ -148,49 +149,7 @@ class HertzViscoelastic:
         reduced = self.m1 * self.m2 / (self.m1 + self.m2)
         return fit_hertz(reduced, self.tau12, self.e12, (1.0 + self.e2) * self.speed, self.exponent)
 
-    def run(
-        self,
-        v0: float | None = None,
-        *,
-        drop_height: float | None = None,
-        dx: float = 0.0,
-        g: float = STANDARD_GRAVITY,
-    ) -> LumpedResult:
-        """One drop: both bodies hit at ``|v0|``, the body ``dx`` above the lower ball.
-
-        Parameters
-        ----------
-        v0 : float, optional
-            Impact velocity [m/s] (sign ignored); or give ``drop_height``.
-        drop_height : float, optional
-            Fall height of the lower ball [m].
-        dx : float, optional
-            Gap at the impact [m], >= 0.
-        g : float, optional
-            Gravitational acceleration [m/s^2], >= 0.
-
-        Returns
-        -------
-        LumpedResult
-            Rebound velocities, contact events and energy budget.
-
-        Examples
-        --------
-        >>> model = HertzViscoelastic(0.01, 1.0, 1.0, 1.0, 0.01, 0.002, speed=1.0)
-        >>> round(model.run(v0=1.0, dx=1.0, g=0.0).v1_ratio, 6)  # (2.5), mu = 0.01
-        2.960396
-        """
-        g = check_gravity(g)
-        speed = impact_speed(v0, drop_height, g)
-        dx = check_gap(dx)
-        return simulate(
-            f"hertz-viscoelastic ({self.law})",
-            self.m1,
-            self.m2,
-            self.floor_law,
-            self.pair_law,
-            speed,
-            dx,
-            g,
-            (self.tau2, self.tau12),
-        )
+    @property
+    def label(self) -> str:
+        """The model's name in the results."""
+        return f"hertz-viscoelastic ({self.law})"

@@ -18,14 +18,12 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
-from twoball.modal.lumped.drop import check_gap, check_gravity, impact_speed
+from twoball.modal.lumped.drop import TwoContacts
 from twoball.modal.lumped.fitting import check_linear_e, fit_linear
 from twoball.modal.lumped.laws import LinearLaw
 from twoball.modal.lumped.pair_inputs import pair_contacts
-from twoball.modal.lumped.result import LumpedResult
-from twoball.modal.lumped.solver import simulate
 from twoball.modal.pairs import Pair
-from twoball.modal.scalings import MASS_RANGE, STANDARD_GRAVITY
+from twoball.modal.scalings import MASS_RANGE
 
 from twoball._common.errors import bounded
 
@@ -33,7 +31,7 @@ DURATION_RANGE = (1e-9, 1e3)  # s
 
 
 @dataclass(frozen=True)
-class TwoSpringDashpot:
+class TwoSpringDashpot(TwoContacts):
     """Linear spring and dashpot at the floor and between the bodies.
 
     Inputs and where they come from (:meth:`from_pair` for a Table 1 pair):
@@ -67,6 +65,9 @@ class TwoSpringDashpot:
     >>> r = model.run(v0=4.1, dx=0.2)
     >>> r.pair_contacts, r.body_left_first
     (1, False)
+    >>> model = TwoSpringDashpot(0.01, 1.0, 1.0, 1.0, 0.01, 0.002)
+    >>> round(model.run(v0=1.0, dx=1.0, g=0.0).v1_ratio, 6)  # (2.5), mu = 0.01
+    2.960396
     """
 
     m1: float
@@ -119,49 +120,7 @@ class TwoSpringDashpot:
         reduced = self.m1 * self.m2 / (self.m1 + self.m2)
         return fit_linear(reduced, self.tau12, self.e12, tensile=False)
 
-    def run(
-        self,
-        v0: float | None = None,
-        *,
-        drop_height: float | None = None,
-        dx: float = 0.0,
-        g: float = STANDARD_GRAVITY,
-    ) -> LumpedResult:
-        """One drop: both bodies hit at ``|v0|`` (or fall from ``drop_height``), the body ``dx`` up.
-
-        Parameters
-        ----------
-        v0 : float, optional
-            Impact velocity [m/s] (sign ignored); or give ``drop_height``.
-        drop_height : float, optional
-            Fall height of the lower ball [m]; ``|v0| = sqrt(2 g H)``.
-        dx : float, optional
-            Gap between the body and the lower ball's top at the impact [m], >= 0.
-        g : float, optional
-            Gravitational acceleration [m/s^2], >= 0.
-
-        Returns
-        -------
-        LumpedResult
-            Rebound velocities, contact events and energy budget.
-
-        Examples
-        --------
-        >>> model = TwoSpringDashpot(0.01, 1.0, 1.0, 1.0, 0.01, 0.002)
-        >>> round(model.run(v0=1.0, dx=1.0, g=0.0).v1_ratio, 6)  # (2.5), mu = 0.01
-        2.960396
-        """
-        g = check_gravity(g)
-        speed = impact_speed(v0, drop_height, g)
-        dx = check_gap(dx)
-        return simulate(
-            "two-spring-dashpot",
-            self.m1,
-            self.m2,
-            self.floor_law,
-            self.pair_law,
-            speed,
-            dx,
-            g,
-            (self.tau2, self.tau12),
-        )
+    @property
+    def label(self) -> str:
+        """The model's name in the results."""
+        return "two-spring-dashpot"
