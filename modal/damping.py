@@ -33,7 +33,7 @@ from typing import Any
 
 from twoball._common.errors import ParameterError, real_number
 
-__all__ = ["DAMPING_LAWS", "ModalRatio", "Rayleigh", "damping_law", "is_law"]
+__all__ = ["DAMPING_LAWS", "ModalRatio", "Rayleigh", "damping_law", "is_law", "with_damping"]
 
 #: Lower fitting frequency of a fitted Rayleigh law: omega_1 of the sphere.
 RAYLEIGH_LOW = math.sqrt(2.0)
@@ -218,3 +218,23 @@ def damping_law(law: Any, ratio: float) -> ModalRatio | Rayleigh:
     if isinstance(law, (ModalRatio, Rayleigh)):
         return law
     raise ParameterError("damping", "a twoball.ModalRatio or twoball.Rayleigh", law)
+
+
+def with_damping(case: Any, law: Any) -> Any:
+    """``case`` with the verb's damping law folded in (None: the case as it is).
+
+    A :class:`ModalRatio` sets the paper's ratio D; a :class:`Rayleigh` law (SI,
+    or ``Rayleigh()`` fitted to D) becomes the case's ``rayleigh``, which every
+    solver reads through :attr:`twoball.Case.damping_law`.  A law that
+    contradicts the case's own Rayleigh law is refused.
+    """
+    if law is not None and not isinstance(law, (ModalRatio, Rayleigh)):
+        raise ParameterError("damping", "a twoball.ModalRatio or twoball.Rayleigh", law)
+    if law is not None and case.rayleigh is not None and law != case.rayleigh:
+        valid = "left out when the case has its own Rayleigh law (one damping law)"
+        raise ParameterError("damping", valid, law.as_dict())
+    if isinstance(law, ModalRatio) and law.ratio != case.damping:
+        return case.derive(damping=law.ratio)
+    if isinstance(law, Rayleigh) and law != case.rayleigh:
+        return case.derive(rayleigh=law)
+    return case

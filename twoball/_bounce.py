@@ -197,8 +197,7 @@ def check_field_targets(
     side file twoball did not write, an unknown suffix, and ``frames`` without
     a file.
     """
-    from twoball._common.staging import check_file
-    from twoball._files import check_path_type
+    from twoball._common.staging import check_file, check_path_type
     from twoball.verify.output.fields import check_frames
     from twoball.verify.output.render import image_kind
     from twoball.verify.output.series import check_side_entries, series_format

@@ -21,7 +21,7 @@ from twoball._common.progress import Step, check_progress, silent
 from twoball.modal.parameters import Case
 from twoball.modal.report import LiftoffReport
 
-__all__ = ["liftoff", "with_damping"]
+__all__ = ["liftoff"]
 
 
 @timed
@@ -93,6 +93,8 @@ def liftoff(
     if not isinstance(solver, kinds):
         valid = "a twoball.ClosedForm, Superposition, GeneralizedAlpha or MoreauJean"
         raise ParameterError("solver", valid, solver)
+    from twoball.modal.damping import with_damping
+
     case = with_damping(case, damping)
     if isinstance(solver, MoreauJean):
         if not massive:
@@ -127,28 +129,6 @@ def _check_body(body: Any) -> Any:
     if body is not None and not isinstance(body, Body):
         raise ParameterError("body", "a twoball.Body", type(body).__name__)
     return body
-
-
-def with_damping(case: Case, law: Any) -> Case:
-    """``case`` with the verb's damping law folded in (None: the case as it is).
-
-    A :class:`ModalRatio` sets the paper's ratio D; a :class:`Rayleigh` law (SI,
-    or ``Rayleigh()`` fitted to D) becomes the case's ``rayleigh``, which every
-    solver reads through :attr:`twoball.Case.damping_law`.  A law that
-    contradicts the case's own Rayleigh law is refused.
-    """
-    from twoball.modal.damping import ModalRatio, Rayleigh
-
-    if law is not None and not isinstance(law, (ModalRatio, Rayleigh)):
-        raise ParameterError("damping", "a twoball.ModalRatio or twoball.Rayleigh", law)
-    if law is not None and case.rayleigh is not None and law != case.rayleigh:
-        valid = "left out when the case has its own Rayleigh law (one damping law)"
-        raise ParameterError("damping", valid, law.as_dict())
-    if isinstance(law, ModalRatio) and law.ratio != case.damping:
-        return case.derive(damping=law.ratio)
-    if isinstance(law, Rayleigh) and law != case.rayleigh:
-        return case.derive(rayleigh=law)
-    return case
 
 
 def _closed_form(case: Case, solver: Any, progress: Step | None) -> LiftoffReport:

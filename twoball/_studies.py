@@ -112,7 +112,7 @@ def converge(
     case = Case.preset("basketball") if case is None else case
     if not isinstance(case, Case):
         raise ParameterError("case", "a twoball.Case", type(case).__name__)
-    from twoball._liftoff import with_damping
+    from twoball.modal.damping import with_damping
 
     case = with_damping(case, rules.damping)
     _paper_model(case, "the convergence studies")
@@ -240,7 +240,7 @@ def check(
     case = Case.preset("basketball") if case is None else case
     if not isinstance(case, Case):
         raise ParameterError("case", "a twoball.Case", type(case).__name__)
-    from twoball._liftoff import with_damping
+    from twoball.modal.damping import with_damping
 
     case = with_damping(case, rules.damping)
     _paper_model(case, "verify")

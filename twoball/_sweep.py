@@ -56,7 +56,7 @@ class SweepResult:
 
         ``out``'s suffix chooses the format (``.png``, ``.pdf``, ``.svg``, ...).
         """
-        from twoball._files import check_figure_path
+        from twoball._plot import check_figure_path
         from twoball.verify.output.figures.sweep import plot_sweep
         from twoball.verify.sweeps.sweeps import SweepGrid
 
@@ -183,9 +183,9 @@ def sweep(
     >>> [round(p.ratio, 3) for p in result.points]
     [1.354, 0.935, 0.417]
     """
-    from twoball._liftoff import with_damping
     from twoball._solvers import ClosedForm, MoreauJean
     from twoball.modal.contact.body import Body
+    from twoball.modal.damping import with_damping
 
     workers, scheduler = where("twoball.sweep", workers)
     if body is not None and not isinstance(body, Body):

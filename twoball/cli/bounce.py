@@ -317,7 +317,7 @@ def _field_targets(args: argparse.Namespace) -> tuple[Any, Any, int]:
 def run(args: argparse.Namespace) -> int:
     """Run ``twoball bounce``."""
     from twoball._common.progress import QUICK, Reporter
-    from twoball._files import check_figure_path
+    from twoball._plot import check_figure_path
 
     plot = None if args.plot is None else check_figure_path(args.plot, "plot")
     export, render, frames = _field_targets(args)

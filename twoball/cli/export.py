@@ -52,7 +52,7 @@ def run(args: argparse.Namespace) -> int:
 
     frames = args.frames if args.times is None else _lookup.parse_times(args.times)
     if args.format is not None:  # the API takes the suffix of --out; --format must agree
-        from twoball._files import check_export_format
+        from twoball._fields import check_export_format
 
         check_export_format(args.out, args.format)
     solver = field_solver(args)

@@ -152,7 +152,7 @@ def solve_from_options(args: argparse.Namespace) -> twoball.LiftoffReport:
 
 def run(args: argparse.Namespace) -> int:
     """Run ``twoball liftoff``."""
-    from twoball._files import check_figure_path, save_report_figure
+    from twoball._plot import check_figure_path, save_report_figure
 
     plot = None
     if args.plot is not None:

@@ -71,7 +71,7 @@ def print_sweep(grid: Any, points: list[Any]) -> None:
 def run(args: argparse.Namespace) -> int:
     """Run ``twoball sweep``: :func:`twoball.sweep` with the options' grid and case."""
     import twoball
-    from twoball._files import check_figure_path
+    from twoball._plot import check_figure_path
 
     if args.bounce:
         return _run_bounce(args)
@@ -155,7 +155,7 @@ def workers(args: argparse.Namespace) -> int | str | None:
 def _run_bounce(args: argparse.Namespace) -> int:
     """``twoball sweep --bounce``: one drop (or whole bounce) per value of one parameter."""
     import twoball
-    from twoball._files import check_figure_path
+    from twoball._plot import check_figure_path
     from twoball.cli.bounce import drop_case, drop_options, whole_body
 
     for name in args.param:  # the base value the swept one replaces (a height sets |v0|)

@@ -1,4 +1,4 @@
-"""``twoball.export``, ``twoball.render`` and ``twoball.plot``: the fields on the sphere as files.
+"""``twoball.export`` and ``twoball.render``: the fields on the sphere as files and pictures.
 
 Each solves the case with the requested backend(s) on a sphere mesh
 (:class:`~twoball.MeshOptions`) through the one builder of the solved ball,
@@ -11,8 +11,7 @@ from __future__ import annotations
 import json
 import os
 from collections.abc import Sequence
-from dataclasses import dataclass, field, replace
-from pathlib import Path
+from dataclasses import dataclass, replace
 from typing import Any
 
 from twoball._common.budget import timed
@@ -22,9 +21,9 @@ from twoball._common.progress import Step, check_progress, silent
 from twoball._common.provenance import block
 from twoball._common.staging import check_path_type
 from twoball.modal.parameters import Case
-from twoball.modal.report import LiftoffReport
+from twoball.verify.output.results import ExportResult, RenderResult
 
-__all__ = ["ExportResult", "PlotResult", "RenderResult", "export", "plot", "render"]
+__all__ = ["export", "render"]
 
 DEFAULT_FPS = 20.0
 
@@ -167,7 +166,7 @@ def export(
     (['ball.xdmf', 'ball.h5'], ['u_m', 'u_t_m_s', 'u_tt_m_s2'])
     """
     from twoball._common.staging import check_file
-    from twoball._liftoff import with_damping
+    from twoball.modal.damping import with_damping
     from twoball.verify.output.fields import (
         BACKENDS,
         DEFAULT_FRAMES,
@@ -310,7 +309,7 @@ def render(
     import numpy as np
 
     from twoball._common.staging import check_file
-    from twoball._liftoff import with_damping
+    from twoball.modal.damping import with_damping
     from twoball.verify.output.fields import (
         ball_model,
         ball_scene,
@@ -402,382 +401,6 @@ def render(
     )
 
 
-@timed
-def plot(
-    kind: str,
-    out: str | os.PathLike[str],
-    case: Case | None = None,
-    *,
-    solver: Any = None,
-    body: Any = None,
-    damping: Any = None,
-    figure: Any = None,
-    progress: Step | None = None,
-) -> PlotResult:
-    """Figures: ``waterfall`` (Fig. 6), ``pole`` motion, FE ``eigen`` errors, ``precursor``.
-
-    Parameters
-    ----------
-    kind : {"waterfall", "pole", "eigen", "precursor"}
-        The figure.  ``precursor``: the pole's displacement under the case's
-        damping law beside the other law matched to it and the undamped
-        membrane, with the motion before the wave front ``phi_a / c`` (closed
-        form; :mod:`twoball.verify.output.figures.precursor`).
-    out : path
-        Output file; its suffix chooses the format: any format matplotlib
-        writes (``.pdf``, ``.svg``, ``.eps``, ``.png``, ...).
-    case : Case, optional
-        The impact (default the basketball preset); refused by ``eigen``.
-    solver : Superposition or ClosedForm, optional
-        ``waterfall`` and ``pole``: as in :func:`export` (a
-        :class:`~twoball.Superposition`; a mesh file too); ``precursor``: a
-        :class:`~twoball.ClosedForm` (its filter, horizon and window); ``eigen``
-        takes none (use the figure's levels and orders).
-    body : Body, optional
-        ``pole`` only: an upper body of finite mass; the panels show the cap
-        average of the coupled membrane with the body's path s(t), every impact
-        and separation marked.
-    damping : ModalRatio or Rayleigh, optional
-        The damping law, as in :func:`twoball.liftoff` (not with ``eigen``);
-        ``precursor`` draws it beside the other law matched to it.
-    figure : PlotOptions, optional
-        The solvers drawn, resolution, waterfall instants, eigenvalue meshes
-        and degree (:class:`~twoball.PlotOptions`).
-    progress : callable, optional
-        Called with a short text as each stage starts (:class:`~twoball.Reporter`).
-
-    Every argument that the chosen ``kind`` does not use is refused
-    (:class:`~twoball.ParameterError`), never ignored.  ``pole`` with both
-    backends puts a panel of the difference finite elements minus closed form
-    under each quantity; ``waterfall`` with both stacks that difference at the
-    nodes beside the waterfall.
-
-    Examples
-    --------
-    >>> import tempfile, pathlib, twoball
-    >>> out = pathlib.Path(tempfile.mkdtemp()) / "pole.svg"
-    >>> solver = twoball.Superposition(twoball.MeshOptions("sphere", level=1))
-    >>> figure = twoball.PlotOptions(backends=["legendre"])
-    >>> result = twoball.plot("pole", out, solver=solver, figure=figure)
-    >>> result.file.name, result.rows[0][0]
-    ('pole.svg', 'lift-off (legendre)')
-    """
-    from twoball._common.staging import check_file
-    from twoball._liftoff import with_damping
-    from twoball._solvers import ClosedForm
-    from twoball.verify.output.fields import (
-        ball_model,
-        check_field_body,
-        check_frame_budget,
-        eigen_sizes,
-        field_mesh,
-        field_warnings,
-    )
-    from twoball.verify.output.figures import PLOT_KINDS, figure_format, save_figure
-    from twoball.verify.output.figures.contact_pole import contact_pole_figure
-    from twoball.verify.output.figures.eigen import eigen_figure, eigen_table
-    from twoball.verify.output.figures.pole import pole_figure
-    from twoball.verify.output.figures.waterfall import WATERFALL_INSTANTS, waterfall_figure
-    from twoball.verify.output.options import BACKENDS, PlotOptions
-
-    check_path_type(out)
-    check_progress(progress)
-    if kind not in PLOT_KINDS:
-        raise ParameterError("kind", "one of " + ", ".join(PLOT_KINDS), kind)
-    closed = None
-    if kind == "precursor":  # the closed form: its filter, horizon and window
-        closed = ClosedForm() if solver is None else solver
-        if not isinstance(closed, ClosedForm):
-            valid = "a twoball.ClosedForm with kind precursor (the closed form only)"
-            raise ParameterError("solver", valid, solver)
-        given = _field_options(None, body, damping)
-    elif kind == "eigen":
-        if solver is not None:
-            shown = solver.as_dict() if hasattr(solver, "as_dict") else solver
-            raise ParameterError("solver", "left out with kind eigen (use levels, orders)", shown)
-        given = _field_options(None, body, damping)
-    else:
-        given = _field_options(solver, body, damping)
-    figure = PlotOptions() if figure is None else figure
-    if not isinstance(figure, PlotOptions):
-        raise ParameterError("figure", "a twoball.PlotOptions", type(figure).__name__)
-    figure_format(out, "out")
-    target = check_file(out)
-    _not_the_mesh(out, given)
-    t_end, route = _window(given)
-    if given.body is not None and kind != "pole":
-        raise ParameterError(
-            "mass_ratio", f"left out with kind {kind} (pole only)", given.body.mass_ratio
-        )
-    rows: list[tuple[str, str]] = []
-    reports: dict[str, LiftoffReport] = {}
-    warnings: list[str] = []
-    field = None
-    say = progress or silent
-    if kind == "precursor":
-        from twoball.modal.report import t_end_dimensionless
-        from twoball.verify.output.figures.precursor import (
-            law_curves,
-            precursor_figure,
-            precursor_rows,
-        )
-
-        refused = {"backends": figure.backends, "mesh": given.mesh, "instants": figure.instants}
-        refused |= {"levels": figure.levels, "orders": figure.orders}
-        refused |= {"max_degree": figure.max_degree}
-        for name, value in refused.items():
-            if value is not None:
-                shown = value.label if hasattr(value, "label") else value
-                valid = "left out with kind precursor (the closed form only)"
-                raise ParameterError(name, valid, shown)
-        if given.body is not None:
-            raise ParameterError(
-                "mass_ratio",
-                "left out with kind precursor (a massless body)",
-                given.body.mass_ratio,
-            )
-        case = with_damping(_case(case), given.damping)
-        window = t_end_dimensionless(case, closed.t_end)
-        say("the closed form under each damping law")
-        curves = law_curves(case, closed.sigma, closed.recontact, window)
-        drawn = precursor_figure(case, curves, window)
-        rows += precursor_rows(case, curves)
-    elif kind == "eigen":
-        refused = {"case": case, "backends": figure.backends}
-        refused |= {"damping": given.damping, "instants": figure.instants}
-        for name, value in refused.items():
-            if value is not None:
-                shown = None if name == "case" else value  # a Case is not a value to show
-                shown = shown.label if hasattr(shown, "label") else shown
-                shown = shown.as_dict() if hasattr(shown, "as_dict") else shown
-                raise ParameterError(name, "left out with kind eigen (use levels, orders)", shown)
-        levels, orders = eigen_sizes(figure.levels, figure.orders, figure.max_degree)
-        tables = []
-        for od in orders:
-            for lv in levels:
-                say(f"eigenvalues of sphere L{lv} P{od}")
-                tables.append(eigen_table(lv, od, figure.max_degree))
-        drawn = eigen_figure(tables)
-        rows += [(t.label, f"l <= {t.degrees[-1]}, worst {t.errors[1:].max():.2e}") for t in tables]
-    else:
-        for name in ("levels", "orders", "max_degree"):
-            if getattr(figure, name) is not None:
-                raise ParameterError(
-                    name, f"left out with kind {kind} (eigen only)", getattr(figure, name)
-                )
-        if kind == "waterfall" and given.solver.recontact != "window":
-            valid = (
-                "left out with kind waterfall (it draws u(phi) at fixed instants; the "
-                "re-contact horizon acts on the lift-off: kind pole)"
-            )
-            raise ParameterError("recontact", valid, given.solver.recontact)
-        if kind == "pole" and figure.instants is not None:
-            raise ParameterError(
-                "instants", "left out with kind pole (waterfall only)", figure.instants
-            )
-        case = with_damping(_case(case), given.damping)
-        chosen = BACKENDS if figure.backends is None else figure.backends
-        instants = WATERFALL_INSTANTS if figure.instants is None else figure.instants
-        if "fem" not in chosen and route != "auto":
-            raise ParameterError("route", "left out without the fem backend", route)
-        field = field_mesh(given.mesh)  # reads a file
-        if given.body is not None:
-            check_field_body(case, given.body, field, recontact=given.solver.recontact, route=route)
-        check_frame_budget(case, instants, "instants", field)
-        model = ball_model(
-            case,
-            field,
-            backends=chosen,
-            body=given.body,
-            sigma=given.solver.sigma,
-            recontact=given.solver.recontact,
-            t_end_s=t_end,
-            route=route,
-            progress=say,
-        )
-        if given.body is not None:
-            drawn = contact_pole_figure(model)
-        elif kind == "waterfall":
-            drawn = waterfall_figure(model, instants)
-        else:
-            drawn = pole_figure(model)
-        for name, solved in model.backends.items():
-            report = solved.report
-            reports[name] = report
-            warnings += [f"{name}: {text}" for text in field_warnings(model, name, field)]
-            if report.result.lifted:
-                text = f"{report.t_liftoff_s * 1e3:.3f} ms, {report.v_liftoff_m_s:.4f} m/s"
-            else:
-                text = "no lift-off"
-            rows.append((f"lift-off ({name})", text))
-    say(f"writing {target}")
-    save_figure(drawn, target, "out", figure.dpi, "dpi")
-    arguments = {"kind": kind, "out": out, "figure": figure.as_dict(), **given.as_dict()}
-    if kind in ("precursor", "eigen"):  # the closed form's options, or none
-        arguments.pop("solver")
-        if closed is not None:
-            arguments["solver"] = closed.as_dict()
-    provenance = block(None if kind == "eigen" else case, "twoball.plot", arguments)
-    if field is not None:
-        provenance |= mesh_block(field)
-    return PlotResult(target, kind, rows, reports, warnings, provenance)
-
-
-def check_figure_path(path: str | os.PathLike[str], name: str = "out") -> Path:
-    """A figure path (any format matplotlib writes, not a folder or link) in a writable folder."""
-    from twoball._common.staging import check_file
-    from twoball.verify.output.figures import figure_format
-
-    check_path_type(path, name)
-    figure_format(path, name)
-    return check_file(path, name)
-
-
-def save_report_figure(report: Any, path: str | os.PathLike[str], name: str = "out") -> Path:
-    """Draw a finite-mass lift-off (the body's path over the cap, every event) into ``path``."""
-    from twoball.verify.output.figures import save_figure
-    from twoball.verify.output.figures.contact import contact_figure
-
-    if getattr(report, "history", None) is None:
-        raise ParameterError(name, "given with a body of mass ratio > 0", os.fspath(path))
-    return save_figure(contact_figure(report), path, name)
-
-
-#: The old keywords of :func:`plot` that :class:`~twoball.PlotOptions` holds now.
-
-
 def mesh_block(field: Any) -> dict[str, object]:
     """``mesh_file`` for a provenance block: the user's file (path, radius, centre, pole)."""
     return {} if field.source is None else {"mesh_file": field.source}
-
-
-@dataclass(frozen=True)
-class ExportResult:
-    """Files written by :func:`export` and what they hold (SI).
-
-    Like every result that writes files, it has ``files`` (every one) and
-    ``file`` (the main one).
-
-    Examples
-    --------
-    >>> import tempfile, pathlib, twoball
-    >>> out = pathlib.Path(tempfile.mkdtemp()) / "ball.vtu"
-    >>> result = twoball.export(out, mesh=twoball.MeshOptions("sphere", level=1))
-    >>> result.format, result.nodes, result.cell_type, len(result.times_s)
-    ('vtu', 162, 'triangle6', 1)
-    """
-
-    files: list[Path]
-    format: str
-    times_s: list[float]
-    nodes: int
-    cells: int
-    cell_type: str
-    point_data: list[str]
-    report: LiftoffReport
-    warnings: list[str] = field(default_factory=list)
-    provenance: dict[str, Any] | None = None
-
-    @property
-    def file(self) -> Path:
-        """The main file (``.xdmf``, ``.pvd`` or ``.vtu``); :attr:`files` lists every one."""
-        return self.files[0]
-
-    def as_dict(self) -> dict[str, Any]:
-        """JSON-ready summary with the lift-off of the exported backend."""
-        return {
-            "provenance": self.provenance,
-            "warnings": self.warnings,
-            "file": str(self.file),
-            "files": [str(f) for f in self.files],
-            "format": self.format,
-            "times_s": self.times_s,
-            "nodes": self.nodes,
-            "cells": self.cells,
-            "cell_type": self.cell_type,
-            "point_data": self.point_data,
-            "liftoff": self.report.as_dict(),
-        }
-
-
-@dataclass(frozen=True)
-class RenderResult:
-    """The picture or animation written by :func:`render`: ``file`` (and ``files``, one).
-
-    Examples
-    --------
-    >>> import tempfile, pathlib, twoball
-    >>> out = pathlib.Path(tempfile.mkdtemp()) / "ball.png"
-    >>> mesh, view = twoball.MeshOptions("sphere", level=1), twoball.RenderOptions(frames=[0.005])
-    >>> result = twoball.render(out, mesh=mesh, view=view)
-    >>> result.times_s, result.backend
-    ([0.005], 'fem')
-    """
-
-    file: Path
-    times_s: list[float]
-    size: tuple[int, int]
-    warp: float
-    backend: str
-    report: LiftoffReport
-    warnings: list[str] = field(default_factory=list)
-    provenance: dict[str, Any] | None = None
-
-    @property
-    def files(self) -> list[Path]:
-        """Every file written (one: :attr:`file`), as :attr:`ExportResult.files`."""
-        return [self.file]
-
-    def as_dict(self) -> dict[str, Any]:
-        """JSON-ready summary."""
-        return {
-            "provenance": self.provenance,
-            "warnings": self.warnings,
-            "file": str(self.file),
-            "files": [str(f) for f in self.files],
-            "times_s": self.times_s,
-            "size": list(self.size),
-            "warp": self.warp,
-            "backend": self.backend,
-            "liftoff": self.report.as_dict(),
-        }
-
-
-@dataclass(frozen=True)
-class PlotResult:
-    """The figure written by :func:`plot` (``file``, and ``files``, one), with one line per
-    curve family.
-
-    Examples
-    --------
-    >>> import tempfile, pathlib, twoball
-    >>> out = pathlib.Path(tempfile.mkdtemp()) / "eigen.png"
-    >>> figure = twoball.PlotOptions(levels=[1], orders=[1], dpi=72)
-    >>> result = twoball.plot("eigen", out, figure=figure)
-    >>> result.kind, result.rows[0][0]
-    ('eigen', 'P1, level 1 (42 unknowns)')
-    """
-
-    file: Path
-    kind: str
-    rows: list[tuple[str, str]] = field(default_factory=list)
-    reports: dict[str, LiftoffReport] = field(default_factory=dict)
-    warnings: list[str] = field(default_factory=list)
-    provenance: dict[str, Any] | None = None
-
-    @property
-    def files(self) -> list[Path]:
-        """Every file written (one: :attr:`file`), as :attr:`ExportResult.files`."""
-        return [self.file]
-
-    def as_dict(self) -> dict[str, Any]:
-        """JSON-ready summary."""
-        return {
-            "provenance": self.provenance,
-            "warnings": self.warnings,
-            "file": str(self.file),
-            "files": [str(f) for f in self.files],
-            "kind": self.kind,
-            "rows": [list(r) for r in self.rows],
-            "liftoff": {name: r.as_dict() for name, r in self.reports.items()},
-        }
