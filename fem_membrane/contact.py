@@ -25,6 +25,7 @@ from twoball.fem_membrane.space import Discretisation
 from twoball.modal.contact.caps import cap_rule, sphere_cap_points
 
 from twoball._common.errors import ParameterError
+from twoball._common.monitor import Monitor
 
 #: Cap quadrature: Gauss points in cos(phi), and azimuthal points on the sphere.
 CAP_RINGS = 12
@@ -94,8 +95,12 @@ def fem_contact_model(
     elements: int | None = None,
     order: int | None = 2,
     initial: str = "projection",
+    monitor: Monitor | None = None,
 ) -> tuple[Any, np.ndarray, dict[str, Any]]:
-    """Modal model (full eigen route), contact vector and details for one FE mesh."""
+    """Modal model (full eigen route), contact vector and details for one FE mesh.
+
+    ``monitor`` is told as the model is built (:func:`~twoball.fem_membrane.solve.modal_model`).
+    """
     from twoball.fem_membrane.solve import modal_model
 
     if mesh not in ("axisym", "sphere", "ring"):
@@ -114,6 +119,7 @@ def fem_contact_model(
             order=order,
             initial=initial,
             route="full",
+            monitor=monitor,
         )
     else:
         if elements is not None:
@@ -121,7 +127,14 @@ def fem_contact_model(
         lvl = DEFAULT_LEVEL if level is None else level
         sphere_mesh = icosphere(lvl, order) if mesh == "sphere" else ring_sphere(lvl, phi_a, order)
         model = modal_model(
-            phi_a, damping, filter, mesh=sphere_mesh, order=None, initial=initial, route="full"
+            phi_a,
+            damping,
+            filter,
+            mesh=sphere_mesh,
+            order=None,
+            initial=initial,
+            route="full",
+            monitor=monitor,
         )
     f = cap_functional(model.space, theta, sphere_mesh)
     contact = model.pairs.vectors.T @ f
@@ -135,6 +148,7 @@ def fem_contact_solution(
     *,
     sigma: str = "lanczos",
     t_end_s: float | None = None,
+    monitor: Monitor | None = None,
 ) -> tuple[Any, Any]:
     """The finite-element modal model (full eigen route) and its contact report (SI).
 
@@ -144,6 +158,8 @@ def fem_contact_solution(
     name): ``sphere`` (default, level 3), ``ring`` or ``axisym`` (default 400
     elements), no mesh file.  The model holds the eigenvectors the contact
     solver moved (fields of :mod:`twoball.fem_membrane.contact_fields`).
+    ``monitor`` (:class:`~twoball._common.monitor.Monitor`) is told as the model,
+    the contact solver and its closed-form reference run; it may stop them.
     """
     from twoball.fem_membrane.cost import check_fem
     from twoball.fem_membrane.options import MeshOptions
@@ -179,6 +195,7 @@ def fem_contact_solution(
         elements=spec.elements,
         order=spec.order,
         initial=spec.initial or "projection",
+        monitor=monitor,
     )
     report = solve_contact(
         case,
@@ -193,6 +210,7 @@ def fem_contact_solution(
         t_end=t_end,
         membrane=membrane,
         extra={"cap_angle_rad": theta, **info},
+        monitor=monitor,
     )
     # the mesh guard of the massless path, and the closed-form contact solution beside it
     from twoball.fem_membrane.guards import mesh_warnings
@@ -201,7 +219,7 @@ def fem_contact_solution(
     mesh_said = mesh_warnings(
         spec.kind, spec.level, spec.elements, model.space.order, SpectralFilter(sigma, case.modes)
     )
-    return model, guarded(report, body, t_end_s, more=mesh_said)
+    return model, guarded(report, body, t_end_s, more=mesh_said, monitor=monitor)
 
 
 def fem_contact_fields(
@@ -211,6 +229,7 @@ def fem_contact_fields(
     *,
     sigma: str = "lanczos",
     t_end_s: float | None = None,
+    monitor: Monitor | None = None,
 ) -> tuple[Any, Any, Any, Any]:
     """The node mesh, the mode shapes at its nodes and the contact report (SI).
 
@@ -232,6 +251,8 @@ def fem_contact_fields(
         Spectral filter of eq. (3.16).
     t_end_s : float or None
         Modelled window [s] (default 4 pi / c).
+    monitor : Monitor, optional
+        Told as the work goes on (:func:`fem_contact_solution`).
 
     Returns
     -------
@@ -249,7 +270,9 @@ def fem_contact_fields(
     from twoball.fem_membrane.space import dof_mesh
 
     spec = MeshOptions.of(mesh)
-    model, report = fem_contact_solution(case, body, spec, sigma=sigma, t_end_s=t_end_s)
+    model, report = fem_contact_solution(
+        case, body, spec, sigma=sigma, t_end_s=t_end_s, monitor=monitor
+    )
     kind = "icosphere" if spec.kind == "sphere" else "ring sphere"
     ring = report.membrane.phi_a if spec.kind == "ring" else None
     nodes = dof_mesh(model.space.basis, f"{kind} level {spec.level}, P{model.space.order}", ring)

@@ -124,11 +124,12 @@ def liftoff(
         )
     else:
         _refuse_fem_options(given)
+        from twoball._common.watch import Watch
         from twoball.modal.report import legendre_liftoff
 
         if progress is not None:  # the truncation guard's reference may take a while
             progress(f"the closed form on {case.modes} Legendre modes")
-        report = legendre_liftoff(case, sigma, recontact, t_end)
+        report = legendre_liftoff(case, sigma, recontact, t_end, monitor=Watch())
     from twoball._common.provenance import block
 
     arguments = {"backend": backend, **given.as_dict()}
@@ -152,6 +153,8 @@ def _contact_liftoff(
         raise ParameterError(
             "recontact", "window with mass_ratio (events are simulated)", recontact
         )
+    from twoball._common.watch import Watch
+
     if backend == "fem":
         if given.stepping is not None:
             given.stepping.refuse("with mass_ratio (modal route only)", "scheme", "dt", "route")
@@ -163,7 +166,9 @@ def _contact_liftoff(
             raise ParameterError("pole", "left out with mass_ratio (no mesh file)", mesh.pole)
         if progress is not None:
             progress(f"finite elements on {mesh.label} (full eigen route) and the contact solver")
-        _, report = fem_contact_solution(case, given.body, mesh, sigma=sigma, t_end_s=_t_end(given))
+        _, report = fem_contact_solution(
+            case, given.body, mesh, sigma=sigma, t_end_s=_t_end(given), monitor=Watch()
+        )
         return report
     _refuse_fem_options(given)
     from twoball.modal.contact.report import legendre_contact
@@ -171,7 +176,7 @@ def _contact_liftoff(
     if progress is not None:
         progress(f"the contact solver on {case.modes + 1} Legendre modes")
 
-    return legendre_contact(case, given.body, sigma=sigma, t_end_s=_t_end(given))
+    return legendre_contact(case, given.body, sigma=sigma, t_end_s=_t_end(given), monitor=Watch())
 
 
 def _t_end(given: Any) -> float | None:

@@ -102,6 +102,7 @@ def solve(
     case = with_damping(case, given.damping)
     law = case.rayleigh
     rayleigh = law is not None
+    from twoball._common.watch import Watch
     from twoball.fem_membrane.solve import fem_pole_motion
     from twoball.modal.filters import SpectralFilter
     from twoball.modal.report import report_liftoff, t_end_dimensionless
@@ -147,6 +148,7 @@ def solve(
         geometry=spec.geometry,
         initial=spec.initial or "projection",
         stiffness=case.stiffness if case.stiff else None,
+        monitor=Watch(),
     )
     extra: dict[str, Any] = {
         "dofs": info["dofs"],
@@ -194,6 +196,7 @@ def solve(
         t_end_s=t_end,
         extra=extra,
         warnings=warnings,
+        monitor=Watch(),
     )
     from dataclasses import replace
 
@@ -248,6 +251,7 @@ def eigen(
     check_progress(progress)
     given = bundles("twoball.fem.eigen", mesh=mesh, old=deprecated, takes=("mesh",))
     from twoball._common.budget import check, options
+    from twoball._common.watch import Watch
     from twoball.fem_membrane.cost import fem_dofs, fem_estimate
     from twoball.fem_membrane.eigen import eigen_table
     from twoball.modal.membrane import Membrane
@@ -265,7 +269,12 @@ def eigen(
     loaded = spec.load()
     if loaded is not None:
         return eigen_table(
-            mesh=loaded.mesh, order=None, count=count, geometry=spec.geometry, membrane=membrane
+            mesh=loaded.mesh,
+            order=None,
+            count=count,
+            geometry=spec.geometry,
+            membrane=membrane,
+            monitor=Watch(),
         )
     return eigen_table(
         mesh=spec.kind,
@@ -275,4 +284,5 @@ def eigen(
         count=count,
         geometry=spec.geometry,
         membrane=membrane,
+        monitor=Watch(),
     )

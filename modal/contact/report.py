@@ -50,6 +50,7 @@ from twoball.modal.report import t_end_dimensionless
 from twoball.modal.series import ModalSeries
 
 from twoball._common.errors import ParameterError
+from twoball._common.monitor import Monitor
 
 CONTACT_REFERENCE_MIN_MODES = 60  # twice the paper's N = 30
 CONTACT_REFERENCE_MAX_MODES = 240  # one contact solve: 2.7 s at 240 modes, 44 s at 480
@@ -285,8 +286,13 @@ def solve_contact(
     membrane: Case,
     extra: dict[str, Any] | None = None,
     samples_per_period: int = 32,
+    monitor: Monitor | None = None,
 ) -> ContactReport:
-    """Run the shared contact solver on any backend's series and cap averages."""
+    """Run the shared contact solver on any backend's series and cap averages.
+
+    ``monitor`` (:class:`~twoball._common.monitor.Monitor`) is told as the event
+    loop (or, for the massless mode, the series at the cap) runs; it may stop it.
+    """
     from twoball.modal.contact.cost import check_contact
 
     system = None
@@ -304,13 +310,14 @@ def solve_contact(
             series.damping,
             series.filter,
             series.mode_norms,
+            monitor=monitor,
         )
         result = find_liftoff(cap_series, case.gamma, t_end=t_end)
         history = None
     else:
         check_contact(kept, top, t_end, modes=case.modes, mass_ratio=mass_ratio)
         system = ContactSystem.from_series(series, contact, mass_ratio, case.gamma)
-        history = integrate(system, t_end, restitution, samples_per_period)
+        history = integrate(system, t_end, restitution, samples_per_period, monitor)
         result = None
     return ContactReport(
         case,
@@ -336,14 +343,14 @@ def _relative(value: float | None, reference: float | None) -> float | None:
 
 
 def contact_reference(
-    case: Case, body: Body, t_end_s: float | None
+    case: Case, body: Body, t_end_s: float | None, monitor: Monitor | None = None
 ) -> tuple[int, ContactReport | None]:
     """The closed-form contact solution with ``max(2 N, 60)`` Lanczos modes (None above 240)."""
     modes = max(2 * case.modes, CONTACT_REFERENCE_MIN_MODES)
     if modes > CONTACT_REFERENCE_MAX_MODES:
         return modes, None
     finer = case.derive(modes=modes)
-    return modes, legendre_contact(finer, body, t_end_s=t_end_s, reference=False)
+    return modes, legendre_contact(finer, body, t_end_s=t_end_s, reference=False, monitor=monitor)
 
 
 def contact_guards(
@@ -431,11 +438,21 @@ def contact_guards(
     return [*warnings, f"{subject} is {shown}: {cure}"], block
 
 
-def guarded(report: ContactReport, body: Body, t_end_s: float | None, *, more=()) -> ContactReport:
-    """``report`` with its warnings (:func:`contact_guards`) and ``truncation`` block."""
+def guarded(
+    report: ContactReport,
+    body: Body,
+    t_end_s: float | None,
+    *,
+    more=(),
+    monitor: Monitor | None = None,
+) -> ContactReport:
+    """``report`` with its warnings (:func:`contact_guards`) and ``truncation`` block.
+
+    ``monitor`` is told as the reference solve runs (:func:`contact_reference`).
+    """
     from dataclasses import replace
 
-    modes, reference = contact_reference(report.case, body, t_end_s)
+    modes, reference = contact_reference(report.case, body, t_end_s, monitor)
     warnings, block = contact_guards(report, modes, reference, t_end_s is not None)
     extra = {**report.extra, "truncation": block}
     return replace(report, extra=extra, warnings=(*more, *warnings))
@@ -449,6 +466,7 @@ def legendre_contact(
     t_end_s: float | None = None,
     samples_per_period: int = 32,
     reference: bool = True,
+    monitor: Monitor | None = None,
 ) -> ContactReport:
     """Finite-mass lift-off on the Legendre modes (the closed-form backend).
 
@@ -466,11 +484,16 @@ def legendre_contact(
     reference : bool
         Add the truncation block and its warning (:func:`contact_guards`; one
         more solve with ``max(2 N, 60)`` modes); False: the other warnings only.
+    monitor : Monitor, optional
+        Told as the solves run (:class:`~twoball._common.monitor.Monitor`; it may
+        stop them by raising).
     """
     radius = check_contact_options(case, body)
     mass_ratio, restitution, energy = body.mass_ratio, body.restitution, body.energy
     membrane = membrane_case(case, mass_ratio, energy)
-    series = legendre_series(membrane.phi_a, case.damping, SpectralFilter(sigma, case.modes))
+    series = legendre_series(
+        membrane.phi_a, case.damping, SpectralFilter(sigma, case.modes), monitor=monitor
+    )
     theta = cap_angle(radius, case.radius)
     contact = legendre_cap_averages(theta, case.modes)
     report = solve_contact(
@@ -487,9 +510,10 @@ def legendre_contact(
         membrane=membrane,
         extra={"cap_angle_rad": theta},
         samples_per_period=samples_per_period,
+        monitor=monitor,
     )
     if reference:
-        return guarded(report, body, t_end_s)
+        return guarded(report, body, t_end_s, monitor=monitor)
     from dataclasses import replace
 
     guards = contact_guards(report, window_given=t_end_s is not None)

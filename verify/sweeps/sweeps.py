@@ -30,6 +30,7 @@ from twoball.verify.sweeps.parallel import Runner
 
 from twoball._common.choices import SWEEP_PARAMETERS
 from twoball._common.errors import ParameterError
+from twoball._common.watch import Watch
 
 #: Axis labels (SI) of the swept parameters.
 PARAMETER_LABELS: dict[str, str] = {
@@ -204,10 +205,20 @@ class SweepSolver:
                 plain = case.case
                 body = replace(body, mass_ratio=case.mass_ratio)
             return legendre_contact(
-                plain, body, sigma=self.sigma, t_end_s=self.t_end_s, reference=self.reference
+                plain,
+                body,
+                sigma=self.sigma,
+                t_end_s=self.t_end_s,
+                reference=self.reference,
+                monitor=Watch(),
             )
         return legendre_liftoff(
-            case, self.sigma, self.recontact, self.t_end_s, reference=self.reference
+            case,
+            self.sigma,
+            self.recontact,
+            self.t_end_s,
+            reference=self.reference,
+            monitor=Watch(),
         )
 
 
