@@ -25,6 +25,7 @@ from twoball.fem_membrane.space import Discretisation
 from twoball.modal.contact.caps import cap_rule, sphere_cap_points
 
 from twoball._common.errors import ParameterError
+from twoball._common.monitor import Monitor
 
 #: Cap quadrature: Gauss points in cos(phi), and azimuthal points on the sphere.
 CAP_RINGS = 12
@@ -94,8 +95,12 @@ def fem_contact_model(
     elements: int | None = None,
     order: int | None = 2,
     initial: str = "projection",
+    monitor: Monitor | None = None,
 ) -> tuple[Any, np.ndarray, dict[str, Any]]:
-    """Modal model (full eigen route), contact vector and details for one FE mesh."""
+    """Modal model (full eigen route), contact vector and details for one FE mesh.
+
+    ``monitor`` is told as the model is built (:func:`~twoball.fem_membrane.solve.modal_model`).
+    """
     from twoball.fem_membrane.solve import modal_model
 
     if mesh not in ("axisym", "sphere", "ring"):
@@ -114,6 +119,7 @@ def fem_contact_model(
             order=order,
             initial=initial,
             route="full",
+            monitor=monitor,
         )
     else:
         if elements is not None:
@@ -121,7 +127,14 @@ def fem_contact_model(
         lvl = DEFAULT_LEVEL if level is None else level
         sphere_mesh = icosphere(lvl, order) if mesh == "sphere" else ring_sphere(lvl, phi_a, order)
         model = modal_model(
-            phi_a, damping, filter, mesh=sphere_mesh, order=None, initial=initial, route="full"
+            phi_a,
+            damping,
+            filter,
+            mesh=sphere_mesh,
+            order=None,
+            initial=initial,
+            route="full",
+            monitor=monitor,
         )
     f = cap_functional(model.space, theta, sphere_mesh)
     contact = model.pairs.vectors.T @ f
@@ -136,7 +149,7 @@ def fem_contact_solution(
     sigma: str = "lanczos",
     t_end_s: float | None = None,
     dt: float | None = None,
-    monitor: Any = None,
+    monitor: Monitor | None = None,
 ) -> tuple[Any, Any]:
     """The finite-element modal model (full eigen route) and its contact report (SI).
 
@@ -171,6 +184,7 @@ def fem_contact_solution(
         elements=spec.elements,
         order=spec.order,
         initial=spec.initial or "projection",
+        monitor=monitor,
     )
     report = solve_contact(
         case,
@@ -206,7 +220,7 @@ def fem_contact_fields(
     sigma: str = "lanczos",
     t_end_s: float | None = None,
     dt: float | None = None,
-    monitor: Any = None,
+    monitor: Monitor | None = None,
 ) -> tuple[Any, Any, Any, Any]:
     """The node mesh, the mode shapes at its nodes and the contact report (SI).
 
@@ -228,6 +242,8 @@ def fem_contact_fields(
         Spectral filter of eq. (3.16).
     t_end_s : float or None
         Modelled window [s] (default 4 pi / c).
+    monitor : Monitor, optional
+        Told as the work goes on (:func:`fem_contact_solution`).
 
     Returns
     -------

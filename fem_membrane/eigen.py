@@ -34,6 +34,7 @@ from twoball.fem_membrane.slicing import (
 from twoball.fem_membrane.slicing import m_orthonormal as m_orthonormalise
 
 from twoball._common.errors import NumericalError, ParameterError
+from twoball._common.monitor import Monitor
 
 __all__ = [
     "Eigenpairs",
@@ -125,6 +126,7 @@ def eigenpairs(
     upper: float,
     window: int = WINDOW,
     next_value: bool = True,
+    monitor: Monitor | None = None,
 ) -> Eigenpairs:
     """All eigenpairs with ``lambda <= upper`` of ``K phi = lambda M phi`` (eq. (3.11)).
 
@@ -138,6 +140,9 @@ def eigenpairs(
         Target number of eigenvalues per slice (spectrum slicing).
     next_value : bool
         Also find the first eigenvalue above ``upper``.
+    monitor : Monitor, optional
+        Told as the pairs are computed (:class:`~twoball._common.monitor.Monitor`;
+        it may stop the work by raising); a dense solve is its long call.
 
     Returns
     -------
@@ -150,23 +155,25 @@ def eigenpairs(
     K, M = sp.csc_matrix(K), sp.csc_matrix(M)
     total = inertia(K, M, upper)
     if use_dense(n, total):
-        values, vectors = dense_pairs(K, M, min(total + 1, n))
+        values, vectors = dense_pairs(K, M, min(total + 1, n), monitor)
         keep = values <= upper
         above = values[~keep]
         after = float(above[0]) if above.size else None
         return _checked(K, M, values[keep], vectors[:, keep], "dense", after)
-    values, vectors = sliced_pairs(K, M, upper, window)
+    values, vectors = sliced_pairs(K, M, upper, window, monitor)
     after = _next_above(K, M, upper) if next_value and total < n else None
     return _checked(K, M, values, vectors, "slicing", after)
 
 
-def lowest_eigenpairs(K: sp.spmatrix, M: sp.spmatrix, count: int) -> Eigenpairs:
+def lowest_eigenpairs(
+    K: sp.spmatrix, M: sp.spmatrix, count: int, monitor: Monitor | None = None
+) -> Eigenpairs:
     """The ``count`` smallest eigenpairs (the constant mode first), M-orthonormal.
 
     Any ``count`` from 1 to the number of unknowns: dense LAPACK for small
     problems or large counts, else every pair below the smallest spectral gap
     ``(l + 1)^2`` holding ``count`` of them (inertia), by spectrum slicing, of
-    which the lowest ``count`` are returned.
+    which the lowest ``count`` are returned.  ``monitor`` as in :func:`eigenpairs`.
     """
     n = K.shape[0]
     if isinstance(count, bool) or int(count) != count or count < 1:
@@ -177,9 +184,9 @@ def lowest_eigenpairs(K: sp.spmatrix, M: sp.spmatrix, count: int) -> Eigenpairs:
     K, M = sp.csc_matrix(K), sp.csc_matrix(M)
     bound = None if use_dense(n, count) else count_bound(K, M, count)
     if bound is None or use_dense(n, inertia(K, M, bound)):
-        values, vectors = dense_pairs(K, M, count)
+        values, vectors = dense_pairs(K, M, count, monitor)
         return _checked(K, M, values, vectors, "dense")
-    values, vectors = sliced_pairs(K, M, bound)
+    values, vectors = sliced_pairs(K, M, bound, monitor=monitor)
     return _checked(K, M, values[:count], vectors[:, :count], "slicing")
 
 
@@ -201,6 +208,7 @@ def eigen_table(
     phi_a: float = 2.6,
     geometry: str = "isoparametric",
     membrane: Any = None,
+    monitor: Monitor | None = None,
 ) -> list[dict[str, float | int]]:
     """The lowest ``count`` nonzero eigenvalues beside the exact ``l (l + 1)`` (eq. (3.11)).
 
@@ -226,6 +234,8 @@ def eigen_table(
         Discrete sphere (see :func:`twoball.fem_membrane.build.build_space`).
     membrane : Membrane, optional
         The membrane operator (None: the paper's).
+    monitor : Monitor, optional
+        Told as the pairs are computed (:func:`lowest_eigenpairs`).
 
     Returns
     -------
@@ -258,7 +268,7 @@ def eigen_table(
         last = int(math.isqrt(count))  # degree of the count-th nonzero eigenvalue
         needed = (last + 2) ** 2  # complete the last cluster and the next one
     needed = min(needed, space.dofs)
-    pairs = lowest_eigenpairs(space.stiffness, space.mass, needed)
+    pairs = lowest_eigenpairs(space.stiffness, space.mass, needed, monitor)
     pressurised = membrane is not None and membrane.pressurised
     values = membrane.eigenvalues(pairs.values) if pressurised else pairs.values
     listed = min(count + 1, values.size)

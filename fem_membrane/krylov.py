@@ -84,9 +84,9 @@ from twoball.modal.filters import SpectralFilter
 from twoball.modal.liftoff import DEFAULT_T_END
 from twoball.modal.series import ModalSeries, check_law
 
-from twoball._common.budget import check_deadline
 from twoball._common.choices import ROUTES
 from twoball._common.errors import NumericalError, ParameterError
+from twoball._common.monitor import Monitor
 
 TOLERANCE = 1e-10  # relative change of the filtered pole trajectory (u and u_tt)
 SHIFT_COUNT = 3  # default number of shifts (factorisations of K - sigma M)
@@ -244,6 +244,7 @@ def _series(
     pole_values: np.ndarray,
     damping: Any,
     filter: SpectralFilter,
+    monitor: Monitor | None = None,
 ) -> ModalSeries:
     keep = values <= filter.omega_cut**2
     return ModalSeries(
@@ -253,6 +254,7 @@ def _series(
         damping=damping,
         filter=filter,
         mode_norms=np.ones(int(np.count_nonzero(keep))),
+        monitor=monitor,
     )
 
 
@@ -292,6 +294,7 @@ def krylov_modal_series(
     max_basis: int = MAX_BASIS,
     vectors: bool = False,
     field_times: np.ndarray | None = None,
+    monitor: Monitor | None = None,
 ) -> tuple[ModalSeries, KrylovInfo]:
     """The filtered finite-element modal series of eq. (3.16) from Ritz pairs.
 
@@ -331,6 +334,10 @@ def krylov_modal_series(
         Also require the whole field (u, u_t, u_tt in the M-norm) to settle at
         these instants (:mod:`twoball.fem_membrane.ritz_field`), as needed when
         the Ritz vectors serve as mode shapes.
+    monitor : Monitor, optional
+        Told at every iteration and as the series are evaluated
+        (:class:`~twoball._common.monitor.Monitor`; it may stop the work by
+        raising); the series returned keeps it (:attr:`ModalSeries.monitor`).
 
     Returns
     -------
@@ -353,6 +360,7 @@ def krylov_modal_series(
             max_basis,
             vectors,
             field_times,
+            monitor,
         )
 
 
@@ -368,6 +376,7 @@ def _krylov(
     max_basis: int,
     vectors: bool,
     field_times: np.ndarray | None = None,
+    monitor: Monitor | None = None,
 ) -> tuple[ModalSeries, KrylovInfo]:
     damping = check_law(damping)
     if not (math.isfinite(tol) and 0.0 < tol < 1.0):
@@ -409,7 +418,8 @@ def _krylov(
     theta = np.empty(0)
     small = np.empty((0, 0))
     while True:
-        check_deadline(f"the rational Krylov iteration (basis {size} of at most {limit})")
+        if monitor is not None:
+            monitor(f"the rational Krylov iteration (basis {size} of at most {limit})")
         new, mass_new = _m_orthonormalise(block, basis[:, :size], mass_basis[:, :size], M)
         width = min(new.shape[1], limit - size)
         if width == 0:  # invariant subspace: the projection is exact
@@ -442,7 +452,7 @@ def _krylov(
         # Rayleigh-Ritz on the M-orthonormal basis (V^T M V = I to round-off)
         theta, small = np.linalg.eigh(projected[:size, :size])
         at_pole = pole_value(pole, basis[:, :size])
-        series = _series(theta, small.T @ loads[:size], at_pole @ small, damping, filter)
+        series = _series(theta, small.T @ loads[:size], at_pole @ small, damping, filter, monitor)
         current = _trajectory(series, grid)
         trajectories.append(current)
         if len(trajectories) > 1:  # against the previous cycle
@@ -482,7 +492,7 @@ def _krylov(
         dual = np.einsum("ij,ij->j", residual, factorise(M).solve(residual))
         norms = np.sqrt(np.maximum(dual, 0.0)) / (1.0 + np.abs(theta[chosen]))
         seconds["residuals"] = clock.perf_counter() - start
-    series = _series(theta, coefficients, pole_values, damping, filter)
+    series = _series(theta, coefficients, pole_values, damping, filter, monitor)
     if not (np.all(np.isfinite(theta)) and np.all(np.isfinite(coefficients))):
         raise NumericalError("Krylov route: Ritz values or coefficients are not finite")
     if not converged_trajectory:

@@ -19,6 +19,8 @@ from twoball.fem_membrane.space import PoleFunctional, pole_value
 from twoball.modal.filters import SpectralFilter
 from twoball.modal.series import ModalSeries
 
+from twoball._common.monitor import Monitor
+
 
 def modal_series(
     pairs: Eigenpairs,
@@ -26,6 +28,7 @@ def modal_series(
     pole: PoleFunctional,
     damping: Any,
     filter: SpectralFilter,
+    monitor: Monitor | None = None,
 ) -> ModalSeries:
     """The finite-element modal series of eq. (3.16) (dimensionless).
 
@@ -44,6 +47,8 @@ def modal_series(
         M-orthonormal eigenvectors, so this is exact for Rayleigh damping).
     filter : SpectralFilter
         Weights by frequency; the same object as for the Legendre series.
+    monitor : Monitor, optional
+        Told as the series is evaluated (:attr:`ModalSeries.monitor`).
 
     Returns
     -------
@@ -59,6 +64,7 @@ def modal_series(
         damping=damping,
         filter=filter,
         mode_norms=np.ones(len(pairs)),
+        monitor=monitor,
     )
 
 

@@ -48,15 +48,16 @@ import scipy.linalg as sl
 import scipy.sparse as sp
 from scipy.sparse.linalg import LinearOperator, eigsh, splu
 
-from twoball._common.budget import check_deadline
 from twoball._common.errors import NumericalError
+from twoball._common.monitor import Monitor, long_call
 
 DENSE_DOFS = 3000  # dense LAPACK up to this many unknowns when over DENSE_COUNT pairs are wanted
 DENSE_COUNT = 150
 DENSE_ALWAYS = 200  # dense LAPACK for any count up to this many unknowns
-#: From this many unknowns the dense solve runs in a forked child (:mod:`twoball._common.child`):
-#: scipy's LAPACK holds the GIL (~0.1 s at 500 unknowns, 5 s at 2562), which would
-#: freeze the progress line and hold back Ctrl-C; the numbers are the same bits.
+#: From this many unknowns the dense solve is handed to the monitor as a long call
+#: (:func:`twoball._common.monitor.long_call`; at the edge a child process): scipy's
+#: LAPACK holds the GIL (~0.1 s at 500 unknowns, 5 s at 2562), which would freeze the
+#: progress line and hold back Ctrl-C; the numbers are the same bits.
 DENSE_CHILD = 500
 DENSE_FRACTION = 0.4  # ... or when more than this fraction of the spectrum is wanted
 FIRST_SHIFT = -1e-2  # below the constant mode lambda = 0
@@ -142,7 +143,7 @@ def orthonormality_error(M: sp.spmatrix, vectors: np.ndarray) -> float:
 
 
 def dense_pairs(
-    K: sp.spmatrix, M: sp.spmatrix, count: int | None = None
+    K: sp.spmatrix, M: sp.spmatrix, count: int | None = None, monitor: Monitor | None = None
 ) -> tuple[np.ndarray, np.ndarray]:
     """The lowest ``count`` pairs (default all), ascending, M-orthonormal, by dense LAPACK.
 
@@ -153,14 +154,17 @@ def dense_pairs(
     lambda M x`` would lose eps lambda_max / lambda, measured 1e-11 on
     axisymmetric P4 (lambda_max ~ 1e8).  ``sygvx`` (``subset_by_index``) for part
     of the spectrum, ``sygvd`` for more than half.
+
+    From :data:`DENSE_CHILD` unknowns on the LAPACK call is handed to ``monitor``
+    as a long call (:func:`~twoball._common.monitor.long_call`: at the edge it runs
+    where the progress line moves, an interrupt acts at once and the time limit is
+    watched, with the same numbers); without a monitor it runs here.
     """
     n = K.shape[0]
     count = n if count is None else int(min(max(count, 1), n))
     if n >= DENSE_CHILD:  # LAPACK through scipy holds the GIL: a child keeps us responsive
-        from twoball._common.child import in_child
-
         doing = f"dense eigenpairs of {n} unknowns (LAPACK)"
-        nu, vectors = in_child(_dense_lapack, K, M, count, doing=doing)
+        nu, vectors = long_call(monitor, _dense_lapack, K, M, count, doing=doing)
     else:
         nu, vectors = _dense_lapack(K, M, count)
     nu, vectors = nu[::-1], vectors[:, ::-1]  # ascending lambda
@@ -296,16 +300,22 @@ def m_orthonormal(vectors: np.ndarray, M: sp.spmatrix) -> np.ndarray:
 
 
 def sliced_pairs(
-    K: sp.spmatrix, M: sp.spmatrix, upper: float, window: int = WINDOW
+    K: sp.spmatrix,
+    M: sp.spmatrix,
+    upper: float,
+    window: int = WINDOW,
+    monitor: Monitor | None = None,
 ) -> tuple[np.ndarray, np.ndarray]:
     """All pairs with ``lambda <= upper`` by spectrum slicing, ascending.
 
     Their number equals the inertia count below ``upper``, slice by slice (else
-    NumericalError).
+    NumericalError).  ``monitor`` (:class:`~twoball._common.monitor.Monitor`) is
+    told before the count and every slice; it may stop the work by raising.
     """
     n = K.shape[0]
     K, M = sp.csc_matrix(K), sp.csc_matrix(M)
-    check_deadline(f"eigenpairs of {n} unknowns: counting them (inertia)")
+    if monitor is not None:
+        monitor(f"eigenpairs of {n} unknowns: counting them (inertia)")
     total = inertia(K, M, upper)
     bounds = slice_bounds(upper, total, window)
     counts = [0] + [inertia(K, M, g) for g in bounds[1:-1]] + [total]
@@ -315,9 +325,8 @@ def sliced_pairs(
     for k, (lower, higher, below, up_to) in enumerate(
         zip(bounds, bounds[1:], counts, counts[1:], strict=False), start=1
     ):
-        check_deadline(
-            f"eigenpairs of {n} unknowns: slice {k} of {pieces} (pairs {up_to} of {total})"
-        )
+        if monitor is not None:
+            monitor(f"eigenpairs of {n} unknowns: slice {k} of {pieces} (pairs {up_to} of {total})")
         if up_to > below:
             found, shapes = slice_pairs(K, M, lower, higher, up_to - below)
             values.append(found)

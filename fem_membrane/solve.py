@@ -54,8 +54,8 @@ from twoball.modal.liftoff import DEFAULT_T_END, PoleMotion, SampledPoleMotion
 from twoball.modal.series import ModalSeries, check_law
 from twoball.modal.stiffness import Stiffness
 
-from twoball._common.budget import check_deadline
 from twoball._common.errors import ParameterError
+from twoball._common.monitor import Monitor, silent
 
 STEP_ACCURACY = 0.2  # automatic dt: omega_cut * dt <= 0.2
 
@@ -102,6 +102,7 @@ def modal_model(
     fields: bool = False,
     t_end: float = DEFAULT_T_END,
     stiffness: Stiffness | None = None,
+    monitor: Monitor | None = None,
 ) -> ModalModel:
     """Assemble, project F (eq. (3.10)) and build the filtered modal series.
 
@@ -125,6 +126,11 @@ def modal_model(
     hold the stiffened eigenvalues.  ``damping`` is the ratio D or a Rayleigh law
     in units of c (:func:`twoball.modal.series.check_law`), applied to the
     stiffened frequencies.
+
+    ``monitor`` (:class:`~twoball._common.monitor.Monitor`) is told as each stage
+    starts (assembly, initial displacement, eigenpairs), within the eigen solve or
+    the Krylov iteration, and by the series (:attr:`ModalSeries.monitor`); it may
+    stop the work by raising.
     """
     phi_a = check_phi_a(phi_a)
     damping = check_law(damping)
@@ -132,25 +138,33 @@ def modal_model(
     initial = check_choice("initial", initial, INITIAL_METHODS)
     seconds = {}
     check_fem(mesh, level, elements, order, filter.modes, route)  # before any allocation
+    say = monitor if monitor is not None else silent
     start = clock.perf_counter()
-    check_deadline("mesh and assembly")
+    say("mesh and assembly")
     space = build_space(
         mesh, level=level, elements=elements, order=order, phi_a=phi_a, geometry=geometry
     )
-    check_deadline(f"initial displacement ({initial}) on {space.dofs} unknowns")
+    say(f"initial displacement ({initial}) on {space.dofs} unknowns")
     moments = initial_moments(space, phi_a, initial)
     seconds["assembly"] = clock.perf_counter() - start
     route = choose_route(route, space.dofs)
     start = clock.perf_counter()
-    check_deadline(f"eigenpairs below the cutoff on {space.dofs} unknowns ({route} route)")
+    say(f"eigenpairs below the cutoff on {space.dofs} unknowns ({route} route)")
     if route == "full":
-        pairs = eigenpairs(space.stiffness, space.mass, filter.omega_cut**2)
-        series = modal_series(pairs, moments, space.pole_row, damping, filter)
+        pairs = eigenpairs(space.stiffness, space.mass, filter.omega_cut**2, monitor=monitor)
+        series = modal_series(pairs, moments, space.pole_row, damping, filter, monitor)
         krylov = None
     else:
         times = field_times(t_end, filter.omega_cut) if fields else None
         series, details = krylov_modal_series(
-            space, moments, damping, filter, t_end=t_end, vectors=fields, field_times=times
+            space,
+            moments,
+            damping,
+            filter,
+            t_end=t_end,
+            vectors=fields,
+            field_times=times,
+            monitor=monitor,
         )
         pairs, krylov = details.pairs, details.as_dict()
     if stiffness is not None and stiffness.active:
@@ -217,6 +231,7 @@ def alpha_motion(
     rho_inf: float = 1.0,
     t_end: float = DEFAULT_T_END,
     rayleigh: Rayleigh | None = None,
+    monitor: Monitor | None = None,
 ) -> tuple[SampledPoleMotion, dict[str, Any]]:
     """Generalized-alpha stepping from the filtered initial displacement.
 
@@ -226,7 +241,8 @@ def alpha_motion(
     computed mode (low rank), or the sparse Rayleigh ``C = alpha M + beta K``
     with K the ball's operator (pressure term, bending and gas included).
     ``damping_model="rayleigh"`` on a series of ratio D takes ``rayleigh`` or
-    the law fitted to D (:func:`resolve_law`) instead.
+    the law fitted to D (:func:`resolve_law`) instead.  ``monitor`` is told
+    every 16 steps (:meth:`~twoball.fem_membrane.alpha.GeneralizedAlpha.run`).
 
     Returns
     -------
@@ -261,7 +277,7 @@ def alpha_motion(
             damping = ModalDamping.from_modes(space.mass, pairs, law)
         stepper = GeneralizedAlpha(space.mass, space.stiffness, dt, damping, rho_inf)
     u0 = filtered_displacement(series, pairs)
-    history = stepper.run(u0, np.zeros_like(u0), t_end, space.pole_row)
+    history = stepper.run(u0, np.zeros_like(u0), t_end, space.pole_row, monitor)
     info["steps"] = history.t.size - 1
     info["seconds_stepping"] = clock.perf_counter() - start
     # an integrator's u, u_t, u_tt are each O(dt^2), not derivatives of one another
@@ -290,6 +306,7 @@ def fem_pole_motion(
     route: str = "auto",
     geometry: str = "isoparametric",
     stiffness: Stiffness | None = None,
+    monitor: Monitor | None = None,
 ) -> tuple[PoleMotion, dict[str, Any]]:
     """Pole motion of the damped membrane from finite elements (dimensionless).
 
@@ -347,6 +364,9 @@ def fem_pole_motion(
     stiffness : Stiffness, optional
         Membrane operator, bending and gas (:mod:`twoball.fem_membrane.shell`);
         None: the paper's membrane.
+    monitor : Monitor, optional
+        Told as the work goes on (:func:`modal_model`, :func:`alpha_motion`; a
+        :class:`~twoball._common.monitor.Monitor`, which may stop it by raising).
 
     Returns
     -------
@@ -389,6 +409,7 @@ def fem_pole_motion(
         route=route,
         geometry=geometry,
         stiffness=stiffness,
+        monitor=monitor,
     )
     space, pairs, series = model.space, model.pairs, model.series
     next_value = None if pairs is None else pairs.next_value
@@ -415,7 +436,7 @@ def fem_pole_motion(
         info["rayleigh"] = rayleigh_info(law, band, series.omega[series.retained], ratio)
     if scheme == "modal":
         return series, info
-    motion, extra = alpha_motion(model, dt=dt, rho_inf=rho_inf, t_end=t_end)
+    motion, extra = alpha_motion(model, dt=dt, rho_inf=rho_inf, t_end=t_end, monitor=monitor)
     info["seconds"]["stepping"] = extra.pop("seconds_stepping")
     info.update(extra)
     return motion, info

@@ -26,7 +26,7 @@ from twoball.modal.parameters import Case
 from twoball.modal.roots import bracketed_roots
 from twoball.modal.series import ModalSeries
 
-from twoball._common.budget import check_deadline
+from twoball._common.monitor import Monitor
 
 PAPER_MODES = 30  # the truncation used throughout the paper (§3(b))
 REFERENCE_TOLERANCE = 1e-7  # relative change of v_l that stops the doubling of N
@@ -102,7 +102,9 @@ class ConvergedReference:
     identified: bool = True
 
 
-def _legendre(case: Case, modes: int, kind: FilterKind) -> ModalSeries:
+def _legendre(
+    case: Case, modes: int, kind: FilterKind, monitor: Monitor | None = None
+) -> ModalSeries:
     n = np.arange(modes + 1)
     stiff = case.stiff
     return ModalSeries(
@@ -113,22 +115,28 @@ def _legendre(case: Case, modes: int, kind: FilterKind) -> ModalSeries:
         filter=SpectralFilter(kind, modes),
         mode_norms=4.0 * np.pi / (2 * n + 1),
         filter_omega=legendre_frequency(n) if stiff else None,
+        monitor=monitor,
     )
 
 
-def unfiltered_series(case: Case, modes: int) -> ModalSeries:
+def unfiltered_series(case: Case, modes: int, monitor: Monitor | None = None) -> ModalSeries:
     """The damped Legendre series (3.14) truncated at ``modes`` without a filter.
 
     Coefficients from the exact three-term recurrence
     (:func:`twoball.modal.legendre.legendre_coefficients_recurrence`, an independent
     second method; agrees with the quadrature of eq. (3.12) to ~1e-13 and needs
-    no Gauss rule, which is what makes thousands of modes cheap).
+    no Gauss rule, which is what makes thousands of modes cheap).  ``monitor``
+    is told as the series is evaluated (:attr:`ModalSeries.monitor`).
     """
-    return _legendre(case, modes, "none")
+    return _legendre(case, modes, "none", monitor)
 
 
 def filtered_liftoff(
-    case: Case, modes: int, t_end: float = DEFAULT_T_END, recontact: Horizon = "window"
+    case: Case,
+    modes: int,
+    t_end: float = DEFAULT_T_END,
+    recontact: Horizon = "window",
+    monitor: Monitor | None = None,
 ) -> LiftoffResult:
     """Lift-off of the Lanczos-filtered series (3.16) with ``modes``, summed blockwise.
 
@@ -136,8 +144,9 @@ def filtered_liftoff(
     the coefficients from the recurrence and the modes that have decayed below
     round-off dropped (:class:`twoball.modal.decay.DecayingSeries`): agrees with
     the plain evaluation to ~1e-13 at a small part of its cost for large N.
+    ``monitor`` is told as the series is evaluated.
     """
-    motion = DecayingSeries(_legendre(case, modes, "lanczos"), t_end)
+    motion = DecayingSeries(_legendre(case, modes, "lanczos", monitor), t_end)
     return find_liftoff(motion, case.gamma, t_end=t_end, horizon=recontact)
 
 
@@ -189,6 +198,7 @@ def _identify(
     max_modes: int,
     t_end: float,
     recontact: Horizon,
+    monitor: Monitor | None = None,
 ) -> tuple[int, LiftoffResult, bool, tuple[tuple[int, float | None, float | None], ...]]:
     """Step 1 of :class:`ConvergedReference`: (N, lift-off) of the first of two that agree."""
     steps = [(start_modes, base)]
@@ -196,7 +206,7 @@ def _identify(
         modes = 2 * steps[-1][0]
         if modes > max_modes:
             break
-        steps.append((modes, filtered_liftoff(case, modes, t_end, recontact)))
+        steps.append((modes, filtered_liftoff(case, modes, t_end, recontact, monitor)))
     record = tuple((n, r.t, r.velocity) for n, r in steps)
     settled = len(steps) >= 2 and _same_root(steps[-2][1], steps[-1][1])
     modes, found = steps[-2] if settled else steps[-1]
@@ -215,6 +225,7 @@ def converged_legendre(
     base: LiftoffResult | None = None,
     flight: bool = True,
     min_samples: int = 2001,
+    monitor: Monitor | None = None,
 ) -> ConvergedReference:
     """The converged Legendre lift-off, from ``start_modes`` up until it settles.
 
@@ -231,6 +242,8 @@ def converged_legendre(
     ``min_samples`` is the least number of samples that bracket the followed root.
     With damping, N may rise to ``4 start_modes`` if that is above ``max_modes``
     (the decayed modes are dropped, so a large N costs little).
+    ``monitor`` (:class:`~twoball._common.monitor.Monitor`) is told before every
+    doubling of N and as the series are evaluated; it may stop the work by raising.
     """
     del sigma  # every filter has the same limit
     clock = time.perf_counter()
@@ -239,10 +252,12 @@ def converged_legendre(
     if base is None:
         lanczos = SpectralFilter("lanczos", start_modes)
         base_series = legendre_series(
-            case.phi_a, case.damping_law, lanczos, stiffness=case.stiffness
+            case.phi_a, case.damping_law, lanczos, stiffness=case.stiffness, monitor=monitor
         )
         base = find_liftoff(base_series, case.gamma, t_end=t_end, horizon=recontact)
-    modes, root, settled, filtered = _identify(case, base, start_modes, max_modes, t_end, recontact)
+    modes, root, settled, filtered = _identify(
+        case, base, start_modes, max_modes, t_end, recontact, monitor
+    )
 
     def unfinished(converged: bool = False) -> ConvergedReference:
         seconds = time.perf_counter() - clock
@@ -268,9 +283,10 @@ def converged_legendre(
     changes: list[float] = []
     converged, series = False, None
     while modes < max_modes:
-        check_deadline(f"the converged reference series at N = {2 * modes}")
+        if monitor is not None:
+            monitor(f"the converged reference series at N = {2 * modes}")
         modes *= 2
-        series = _cheaper(unfiltered_series(case, modes), guess - width)
+        series = _cheaper(unfiltered_series(case, modes, monitor), guess - width)
         found = _track_root(series, case.gamma, guess, width, min_samples)
         if found is None:  # too few modes for the series at t_l yet (its tail still counts)
             continue

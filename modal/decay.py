@@ -54,7 +54,10 @@ def _ratio(series: ModalSeries) -> float:
 
 
 def reduced(series: ModalSeries, modes: np.ndarray) -> ModalSeries:
-    """The series restricted to ``modes`` (filter weights folded into the coefficients)."""
+    """The series restricted to ``modes`` (filter weights folded into the coefficients).
+
+    It keeps the series' monitor (:attr:`~twoball.modal.series.ModalSeries.monitor`).
+    """
     return ModalSeries(
         omega=series.omega[modes],
         coefficients=(series.weights * series.coefficients)[modes],
@@ -63,6 +66,7 @@ def reduced(series: ModalSeries, modes: np.ndarray) -> ModalSeries:
         filter=SpectralFilter("none", 1),
         mode_norms=series.mode_norms[modes],
         filter_omega=np.zeros(modes.size),  # weight 1 for every mode kept
+        monitor=series.monitor,
     )
 
 

@@ -70,6 +70,8 @@ from typing import Any
 from twoball.modal.liftoff import LiftoffResult
 from twoball.modal.parameters import Case
 
+from twoball._common.monitor import Monitor
+
 TRUNCATION_WARNING = 0.05  # relative difference of t_l or v_l from the converged series
 BALL_RADIUS = (2e-3, 2.0)  # m: a 4 mm bead to a 4 m push ball
 IMPACT_SPEED = 100.0  # m/s: above the fastest ball sports (golf, jai alai ~80 m/s)
@@ -150,7 +152,12 @@ def _unknown(case: Case, reference: Any) -> str | None:
     return f"the unfiltered series did not settle on the lift-off by N = {reference.modes}"
 
 
-def truncation(case: Case, result: LiftoffResult, base: LiftoffResult | None = None) -> Truncation:
+def truncation(
+    case: Case,
+    result: LiftoffResult,
+    base: LiftoffResult | None = None,
+    monitor: Monitor | None = None,
+) -> Truncation:
     """The converged-series lift-off beside ``result`` (same case, window and horizon).
 
     Parameters
@@ -164,6 +171,8 @@ def truncation(case: Case, result: LiftoffResult, base: LiftoffResult | None = N
     base : LiftoffResult, optional
         ``result`` itself when it is the Lanczos closed form with ``case.modes``
         >= 30, the first root the reference tries (saves recomputing it).
+    monitor : Monitor, optional
+        Told as the converged series is computed (it may stop the work by raising).
     """
     from twoball.modal.converged import PAPER_MODES, converged_legendre
 
@@ -176,6 +185,7 @@ def truncation(case: Case, result: LiftoffResult, base: LiftoffResult | None = N
         base=base,
         flight=False,
         min_samples=201,
+        monitor=monitor,
     )
     scale = case.scalings
     t_ref = None if reference.t is None else reference.t * scale.time
@@ -374,11 +384,18 @@ def span_warnings(case: Case, result: LiftoffResult, window_given: bool = True) 
 
 
 def liftoff_guards(
-    case: Case, result: LiftoffResult, backend: str = "legendre", sigma: str = "lanczos"
+    case: Case,
+    result: LiftoffResult,
+    backend: str = "legendre",
+    sigma: str = "lanczos",
+    monitor: Monitor | None = None,
 ) -> tuple[list[str], Truncation]:
-    """All closed-form guards of one lift-off: (warnings, truncation block)."""
+    """All closed-form guards of one lift-off: (warnings, truncation block).
+
+    ``monitor`` is told as the converged reference is computed (:func:`truncation`).
+    """
     from twoball.modal.converged import PAPER_MODES
 
     same = backend == "legendre" and sigma == "lanczos" and case.modes >= PAPER_MODES
-    block = truncation(case, result, result if same else None)
+    block = truncation(case, result, result if same else None, monitor)
     return window_warnings(case, result) + truncation_warnings(block, backend), block

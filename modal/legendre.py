@@ -21,6 +21,7 @@ from twoball.modal.series import ModalSeries
 from twoball.modal.stiffness import Stiffness
 
 from twoball._common.errors import NumericalError, ParameterError
+from twoball._common.monitor import Monitor
 
 MAX_QUADRATURE = 20000
 
@@ -150,6 +151,8 @@ def legendre_series(
     filter: SpectralFilter | FilterKind = "lanczos",
     modes: int | None = None,
     stiffness: Stiffness | None = None,
+    *,
+    monitor: Monitor | None = None,
 ) -> ModalSeries:
     """The damped, filtered Legendre series of eq. (3.16) as a :class:`ModalSeries`.
 
@@ -167,6 +170,8 @@ def legendre_series(
         Bending and gas (:mod:`twoball.modal.stiffness`): ``omega_n^2 = n (n+1)
         (1 + beta (n (n+1) - 2))``, ``omega_0^2 = gas``; the filter still weighs
         mode n by ``sqrt(n (n+1))``.  None or inactive: the paper's membrane.
+    monitor : Monitor, optional
+        Told as the series is evaluated (:attr:`ModalSeries.monitor`).
 
     Returns
     -------
@@ -188,6 +193,7 @@ def legendre_series(
         filter=filter,
         mode_norms=4.0 * np.pi / (2 * n + 1),
         filter_omega=legendre_frequency(n) if stiff else None,
+        monitor=monitor,
     )
 
 

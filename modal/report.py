@@ -15,6 +15,8 @@ from twoball.modal.legendre import legendre_series
 from twoball.modal.liftoff import DEFAULT_T_END, Horizon, LiftoffResult, PoleMotion, find_liftoff
 from twoball.modal.parameters import Case
 
+from twoball._common.monitor import Monitor
+
 FLOOR_TIME_ESTIMATE = (
     "pi/(2c): half period of the pressure spring k = 2 pi R P of a ball flattened on the "
     "floor (Cross 1999, Am. J. Phys. 67 222); an upper bound with bending or gas"
@@ -194,6 +196,7 @@ def report_liftoff(
     warnings: Sequence[str] = (),
     reference: bool = True,
     window_given: bool | None = None,
+    monitor: Monitor | None = None,
 ) -> LiftoffReport:
     """Apply the shared lift-off criteria to any backend's pole motion; report in SI.
 
@@ -206,6 +209,8 @@ def report_liftoff(
     N-result (~10 ms for the basketball, up to ~1 s for D -> 0, where the series
     converges slowly); then the inputs far from any ball and the windows in which
     nothing can lift off (:func:`twoball.modal.guards.case_warnings`, ``span_warnings``).
+    ``monitor`` (:class:`~twoball._common.monitor.Monitor`) is told as the converged
+    reference is computed; the motion tells its own (:attr:`ModalSeries.monitor`).
     """
     result = find_liftoff(
         motion, case.gamma, t_end=t_end_dimensionless(case, t_end_s), horizon=recontact
@@ -214,7 +219,7 @@ def report_liftoff(
     from twoball.modal.guards import case_warnings, liftoff_guards, span_warnings, window_warnings
 
     if reference:
-        found, block = liftoff_guards(case, result, backend, sigma)
+        found, block = liftoff_guards(case, result, backend, sigma, monitor)
         notes += found
         extra["truncation"] = block.as_dict()
     else:
@@ -231,8 +236,13 @@ def legendre_liftoff(
     t_end_s: float | None = None,
     *,
     reference: bool = True,
+    monitor: Monitor | None = None,
 ) -> LiftoffReport:
-    """Lift-off of the closed-form CEM, eqs. (3.12)-(3.16) with criteria (i)-(ii) of §3(a)."""
+    """Lift-off of the closed-form CEM, eqs. (3.12)-(3.16) with criteria (i)-(ii) of §3(a).
+
+    ``monitor`` (:class:`~twoball._common.monitor.Monitor`) is told as the series
+    and the converged reference are evaluated; it may stop the work by raising.
+    """
     from twoball.modal.cost import check_series
 
     check_series(
@@ -243,7 +253,11 @@ def legendre_liftoff(
         case.stiffness if case.stiff else None,
     )
     series = legendre_series(
-        case.phi_a, case.damping_law, SpectralFilter(sigma, case.modes), stiffness=case.stiffness
+        case.phi_a,
+        case.damping_law,
+        SpectralFilter(sigma, case.modes),
+        stiffness=case.stiffness,
+        monitor=monitor,
     )
     return report_liftoff(
         case,
@@ -253,4 +267,5 @@ def legendre_liftoff(
         recontact=recontact,
         t_end_s=t_end_s,
         reference=reference,
+        monitor=monitor,
     )

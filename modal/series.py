@@ -38,8 +38,8 @@ from numpy.typing import ArrayLike
 from twoball.modal.damping import ModalRatio, Rayleigh, is_law
 from twoball.modal.filters import SpectralFilter
 
-from twoball._common.budget import check_deadline
 from twoball._common.errors import NumericalError, ParameterError
+from twoball._common.monitor import Monitor
 
 CHUNK = 4096  # time samples evaluated at once; bounds memory for large mode counts
 CRITICAL_BAND = 1e-10  # |zeta - 1| below which a mode is taken as critically damped
@@ -105,6 +105,11 @@ class ModalSeries:
         the membrane frequency ``sqrt(n (n+1))`` of a mode stiffened by bending
         or gas (:func:`twoball.modal.stiffness.stiffen`), so that the filter of
         eq. (3.16) keeps acting on the degree n.  None: ``omega``.
+    monitor : Monitor, optional
+        Told before every chunk of :data:`CHUNK` time samples after the first
+        (:class:`~twoball._common.monitor.Monitor`; it may stop the evaluation by
+        raising).  Not part of the series' value: left out of comparisons and its
+        repr; series derived from this one keep it.
     """
 
     omega: np.ndarray
@@ -114,6 +119,7 @@ class ModalSeries:
     filter: SpectralFilter = field(default_factory=SpectralFilter)
     mode_norms: np.ndarray | None = None
     filter_omega: np.ndarray | None = None
+    monitor: Monitor | None = field(default=None, compare=False, repr=False)
 
     def __post_init__(self) -> None:
         omega = np.asarray(self.omega, dtype=float)
@@ -290,9 +296,10 @@ class ModalSeries:
         times = np.asarray(t, dtype=float)
         flat = times.reshape(-1)
         out = np.empty((flat.size,) + amplitudes.shape[1:])
+        monitor = self.monitor
         for start in range(0, flat.size, CHUNK):
-            if start:
-                check_deadline(f"the modal series at sample {start} of {flat.size}")
+            if start and monitor is not None:
+                monitor(f"the modal series at sample {start} of {flat.size}")
             chunk = flat[start : start + CHUNK]
             block = _exponential_table(chunk, rates)
             values = _product(block, amplitudes).real

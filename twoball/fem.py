@@ -12,6 +12,7 @@ from typing import Any
 from twoball._common.budget import timed
 from twoball._common.errors import ParameterError
 from twoball._common.progress import Step, check_progress, silent
+from twoball._common.watch import Watch
 from twoball.fem_membrane.options import MeshOptions
 
 __all__ = ["eigen"]
@@ -79,7 +80,12 @@ def eigen(
     loaded = spec.load()
     if loaded is not None:
         return eigen_table(
-            mesh=loaded.mesh, order=None, count=count, geometry=spec.geometry, membrane=membrane
+            mesh=loaded.mesh,
+            order=None,
+            count=count,
+            geometry=spec.geometry,
+            membrane=membrane,
+            monitor=Watch(),
         )
     return eigen_table(
         mesh=spec.kind,
@@ -89,4 +95,5 @@ def eigen(
         count=count,
         geometry=spec.geometry,
         membrane=membrane,
+        monitor=Watch(),
     )

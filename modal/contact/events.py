@@ -28,8 +28,8 @@ from scipy.linalg import expm
 from twoball.modal.contact.system import ContactSystem
 from twoball.modal.roots import bracketed_roots
 
-from twoball._common.budget import check_deadline
 from twoball._common.errors import NumericalError, ParameterError
+from twoball._common.monitor import Monitor
 
 TIME_TOLERANCE = 1e-12
 MAX_EVENTS = 10000
@@ -231,6 +231,7 @@ def integrate(
     t_end: float,
     restitution: float = 0.0,
     samples_per_period: int = 32,
+    monitor: Monitor | None = None,
 ) -> ContactHistory:
     """Integrate the body on the membrane from rest in contact to ``t_end``.
 
@@ -244,6 +245,9 @@ def integrate(
         Newton's coefficient e in [0, 1] at every impact.
     samples_per_period : int
         Event-detection grid points per shortest modal period (>= 16).
+    monitor : Monitor, optional
+        Told at every event and every 64 grid steps of the search between them
+        (:class:`~twoball._common.monitor.Monitor`; it may stop the run by raising).
 
     Returns
     -------
@@ -268,7 +272,8 @@ def integrate(
     if mode == "flight":
         events.append(_separation(system, 0.0, z))
     while True:
-        check_deadline(f"the contact event loop at t = {t:.4g} of {t_end:.4g} (units 1/c)")
+        if monitor is not None:
+            monitor(f"the contact event loop at t = {t:.4g} of {t_end:.4g} (units 1/c)")
         phase = phases[mode]
         if mode == "contact":
             signal = force
@@ -277,9 +282,9 @@ def integrate(
             signal = np.zeros_like(force)
             signal[2 * k] = 1.0
             signal[:k] = -system.contact
-        found = _next_event(phase, signal, z, t, t_end, skip)
+        found = _next_event(phase, signal, z, t, t_end, skip, monitor)
         if found is None:
-            z = _advance(phase, z, t_end - t)
+            z = _advance(phase, z, t_end - t, monitor)
             break
         tau, z_event = found
         t += tau
@@ -363,11 +368,13 @@ def _separation(system: ContactSystem, t: float, z: np.ndarray) -> ContactEvent:
     )
 
 
-def _advance(phase: _Phase, z: np.ndarray, duration: float) -> np.ndarray:
+def _advance(
+    phase: _Phase, z: np.ndarray, duration: float, monitor: Monitor | None = None
+) -> np.ndarray:
     steps = int(duration // phase.step)
     for k in range(steps):
-        if k % 64 == 0:
-            check_deadline(f"the contact solver's last flight, step {k} of {steps}")
+        if k % 64 == 0 and monitor is not None:
+            monitor(f"the contact solver's last flight, step {k} of {steps}")
         z = phase.next(z)
     rest = duration - steps * phase.step
     return phase.at(z, np.array([rest]))[0] if rest > 0 else z
@@ -380,6 +387,7 @@ def _next_event(
     t0: float,
     t_end: float,
     skip: float,
+    monitor: Monitor | None = None,
 ) -> tuple[float, np.ndarray] | None:
     """First time after ``skip`` at which ``signal . z`` reaches zero from above.
 
@@ -391,8 +399,8 @@ def _next_event(
     steps = 0
     while tau < duration:
         steps += 1
-        if steps % 64 == 0:
-            check_deadline(f"the contact event search at t = {t0 + tau:.4g} of {t_end:.4g}")
+        if steps % 64 == 0 and monitor is not None:
+            monitor(f"the contact event search at t = {t0 + tau:.4g} of {t_end:.4g}")
         h = min(phase.step, duration - tau)
         local = None if phase.walks_dense else phase.local(z)  # the step's and its search's
         if h == phase.step:

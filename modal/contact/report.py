@@ -50,6 +50,7 @@ from twoball.modal.report import t_end_dimensionless
 from twoball.modal.series import ModalSeries
 
 from twoball._common.errors import ParameterError
+from twoball._common.monitor import Monitor
 
 CONTACT_REFERENCE_MIN_MODES = 60  # twice the paper's N = 30
 CONTACT_REFERENCE_MAX_MODES = 240  # one contact solve: 2.7 s at 240 modes, 44 s at 480
@@ -286,7 +287,7 @@ def solve_contact(
     extra: dict[str, Any] | None = None,
     dt: float | None = None,
     exact: bool = False,
-    monitor: Any = None,
+    monitor: Monitor | None = None,
 ) -> ContactReport:
     """Run the shared contact solver on any backend's series and cap averages.
 
@@ -305,6 +306,7 @@ def solve_contact(
             series.damping,
             series.filter,
             series.mode_norms,
+            monitor=monitor,
         )
         result = find_liftoff(cap_series, case.gamma, t_end=t_end)
         history = None
@@ -313,7 +315,7 @@ def solve_contact(
         from twoball.modal.contact.system import ContactSystem
 
         system = ContactSystem.from_series(series, contact, mass_ratio, case.gamma)
-        history = integrate(system, t_end, restitution)
+        history = integrate(system, t_end, restitution, monitor=monitor)
         motion, result = ExactMotion(history, system), None
     else:
         step = DEFAULT_DT if dt is None else float(dt)
@@ -363,7 +365,7 @@ def contact_reference(
     *,
     dt: float | None = None,
     exact: bool = False,
-    monitor: Any = None,
+    monitor: Monitor | None = None,
 ) -> tuple[int, ContactReport | None]:
     """The Legendre contact solution with ``max(2 N, 60)`` Lanczos modes (None above 240),
     by the same integrator and step."""
@@ -470,7 +472,7 @@ def guarded(
     more: tuple[str, ...] | list[str] = (),
     dt: float | None = None,
     exact: bool = False,
-    monitor: Any = None,
+    monitor: Monitor | None = None,
 ) -> ContactReport:
     """``report`` with its warnings (:func:`contact_guards`) and ``truncation`` block."""
     from dataclasses import replace
@@ -492,7 +494,7 @@ def legendre_contact(
     reference: bool = True,
     dt: float | None = None,
     exact: bool = False,
-    monitor: Any = None,
+    monitor: Monitor | None = None,
 ) -> ContactReport:
     """Finite-mass lift-off on the Legendre modes.
 
@@ -520,7 +522,9 @@ def legendre_contact(
     radius = check_contact_options(case, body)
     mass_ratio, restitution, energy = body.mass_ratio, body.restitution, body.energy
     membrane = membrane_case(case, mass_ratio, energy)
-    series = legendre_series(membrane.phi_a, case.damping, SpectralFilter(sigma, case.modes))
+    series = legendre_series(
+        membrane.phi_a, case.damping, SpectralFilter(sigma, case.modes), monitor=monitor
+    )
     theta = cap_angle(radius, case.radius)
     contact = legendre_cap_averages(theta, case.modes)
     report = solve_contact(

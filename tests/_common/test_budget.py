@@ -39,6 +39,7 @@ from twoball._common.budget import (
     running,
 )
 from twoball._common.errors import ParameterError
+from twoball._common.watch import Watch
 
 ABSURD = [
     ["liftoff", "--modes", "20000"],
@@ -197,7 +198,7 @@ def test_contact_event_loop() -> None:
 def test_series_evaluation_chunks() -> None:
     from twoball.modal.legendre import legendre_series
 
-    series = legendre_series(2.6, 0.13, SpectralFilter("lanczos", 60))
+    series = legendre_series(2.6, 0.13, SpectralFilter("lanczos", 60), monitor=Watch())
     times = np.linspace(0.0, 12.0, 10_000)
     series.pole(times[:100])  # one chunk: no check
     assert "while the modal series at sample 4096 of 10000" in past_the_deadline(
@@ -212,7 +213,7 @@ def test_generalized_alpha_steps() -> None:
     space = axisym_space(50, 2.6, 1)
     stepper = GeneralizedAlpha(space.mass, space.stiffness, 1e-3)
     u0 = np.zeros(space.dofs)
-    text = past_the_deadline(lambda: stepper.run(u0, u0, 1.0, space.pole_row))
+    text = past_the_deadline(lambda: stepper.run(u0, u0, 1.0, space.pole_row, Watch()))
     assert "while generalized-alpha step 0 of 1000" in text
 
 
@@ -223,7 +224,9 @@ def test_krylov_iterations() -> None:
 
     space = build_space("sphere", level=2, order=1, phi_a=2.6)
     moments = initial_moments(space, 2.6)
-    text = past_the_deadline(lambda: krylov_modal_series(space, moments, 0.13, FILTER))
+    text = past_the_deadline(
+        lambda: krylov_modal_series(space, moments, 0.13, FILTER, monitor=Watch())
+    )
     assert "while the rational Krylov iteration (basis 0 of at most" in text
 
 
@@ -232,7 +235,9 @@ def test_eigenpair_slices_and_sweep_points() -> None:
     from twoball.fem_membrane.slicing import sliced_pairs
 
     space = build_space("sphere", level=2, order=2, phi_a=2.6)
-    text = past_the_deadline(lambda: sliced_pairs(space.stiffness, space.mass, 200.0))
+    text = past_the_deadline(
+        lambda: sliced_pairs(space.stiffness, space.mass, 200.0, monitor=Watch())
+    )
     assert "while eigenpairs of 642 unknowns: counting them" in text
     text = past_the_deadline(lambda: twoball.sweep({"damping": [0.1, 0.2]}))
     assert "while item 1 of 2" in text
@@ -248,7 +253,7 @@ def test_dense_eigenpairs_in_a_child_stop_at_the_deadline() -> None:
         start = time.monotonic()
         with pytest.raises(DeadlineError, match="dense eigenpairs of 642 unknowns"):
             for _ in range(20):  # ~0.1 s each: the deadline falls inside one of them
-                dense_pairs(space.stiffness, space.mass)
+                dense_pairs(space.stiffness, space.mass, monitor=Watch())
         assert time.monotonic() - start < 1.5
 
 
@@ -269,7 +274,9 @@ def test_the_drops_eigenpairs_and_steps(monkeypatch) -> None:
     assert "while the whole bounce: step 0," in past_the_deadline(
         lambda: twoball.bounce(drop=quick, body=twoball.Body(0.1))
     )
-    text = past_the_deadline(lambda: axisym_ball(300, 2, Stiffness(), ModalRatio(0.1)))
+    text = past_the_deadline(
+        lambda: axisym_ball(300, 2, Stiffness(), ModalRatio(0.1), monitor=Watch())
+    )
     assert "while dense eigenpairs of the drop's 601 unknowns (LAPACK)" in text
 
 

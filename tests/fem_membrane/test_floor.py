@@ -15,8 +15,8 @@ import pytest
 import scipy.linalg as sla
 import scipy.sparse as sp
 from twoball.fem_membrane.floor import axisym_ball, axisym_matrices
-from twoball.modal.damping import ModalRatio, Rayleigh
 from twoball.modal.balls.membrane import legendre_ball
+from twoball.modal.damping import ModalRatio, Rayleigh
 from twoball.modal.floor.drop import DropSettings, run_drop
 from twoball.modal.floor.measure import contact_intervals
 from twoball.modal.floor.settle import settle

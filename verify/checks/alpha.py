@@ -24,6 +24,8 @@ from twoball.verify.studies.reference import LegendreRun
 from twoball.verify.studies.result import time_step_text
 from twoball.verify.studies.trajectory import TrajectoryNorm, hermite_resample
 
+from twoball._common.watch import Watch
+
 
 @dataclass
 class AlphaEnergy:
@@ -124,7 +126,7 @@ def alpha_checks(
 
     label = f"{target.spec.label}, {time_step_text(target.dt, case.scalings.time)}"
     start = time.perf_counter()
-    motion, info = alpha_motion(modal.model, dt=target.dt, t_end=t_end)
+    motion, info = alpha_motion(modal.model, dt=target.dt, t_end=t_end, monitor=Watch())
     result = find_liftoff(motion, case.gamma, t_end=t_end, horizon=recontact)
     seconds = time.perf_counter() - start
     hermite = find_liftoff(hermite_resample(motion), case.gamma, t_end=t_end, horizon=recontact)

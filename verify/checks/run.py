@@ -33,6 +33,8 @@ from twoball.verify.studies.fem_runs import FEMRun, FEMSpec, fem_run
 from twoball.verify.studies.reference import LegendreRun, legendre_run
 from twoball.verify.studies.result import Progress, case_settings, si, time_step_text
 
+from twoball._common.watch import Watch
+
 
 def run_verify(
     case: Case,
@@ -68,7 +70,13 @@ def run_verify(
     reference = legendre_run(case, case.modes, sigma, recontact, t_end)
     say("converged Legendre reference (N doubled)")
     limit = converged_legendre(
-        case, sigma, recontact, t_end, configuration.reference_tolerance, case.modes
+        case,
+        sigma,
+        recontact,
+        t_end,
+        configuration.reference_tolerance,
+        case.modes,
+        monitor=Watch(),
     )
     rows = [
         run_row(

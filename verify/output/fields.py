@@ -46,6 +46,7 @@ from twoball._common.budget import BASE_MEMORY, Estimate, check
 from twoball._common.choices import DEFAULT_FRAMES
 from twoball._common.errors import ParameterError
 from twoball._common.progress import Step, silent
+from twoball._common.watch import Watch
 
 BackendName = Literal["fem", "legendre"]
 #: A generated mesh kind, or the user's mesh (unit sphere, pole on +z; from a file).
@@ -199,7 +200,11 @@ def legendre_backend(
     ``window_given``: whether the user gave the window ``t_end`` (for its warnings).
     """
     series = legendre_series(
-        case.phi_a, case.damping_law, SpectralFilter(sigma, case.modes), stiffness=case.stiffness
+        case.phi_a,
+        case.damping_law,
+        SpectralFilter(sigma, case.modes),
+        stiffness=case.stiffness,
+        monitor=Watch(),
     )
     shapes = legendre_shapes(node_polar_angles(mesh), case.modes)
     report = report_liftoff(
@@ -210,6 +215,7 @@ def legendre_backend(
         recontact=recontact,
         t_end_s=t_end * case.scalings.time,
         window_given=window_given,
+        monitor=Watch(),
     )
     return Backend("legendre", series, shapes, report, {"modes": float(case.modes)})
 
@@ -276,6 +282,7 @@ def fem_nodal_series(
         fields=True,
         t_end=DEFAULT_T_END if t_end is None else t_end,
         stiffness=case.stiffness,
+        monitor=Watch(),
     )
     basis = model.space.basis
     if own:
@@ -324,6 +331,7 @@ def fem_backend(
         recontact=recontact,
         t_end_s=t_end * case.scalings.time,
         window_given=window_given,
+        monitor=Watch(),
     )
     return nodes, Backend("fem", series, shapes, report, details)
 
@@ -959,7 +967,7 @@ def coupled_model(
 
         say(f"contact of a body of mass ratio {mu:g} on the finite elements")
         nodes, shapes, series, report = fem_contact_fields(
-            case, body, mesh, sigma=sigma, t_end_s=t_end_s
+            case, body, mesh, sigma=sigma, t_end_s=t_end_s, monitor=Watch()
         )
         details = {k: float(v) for k, v in report.extra.items() if isinstance(v, (int, float))}
         solved["fem"] = Backend("fem", series, shapes, report, details)
@@ -968,9 +976,11 @@ def coupled_model(
         nodes = build_mesh(membrane, mesh.level, mesh.order, mesh.kind)
     if "legendre" in backends:
         say(f"contact of a body of mass ratio {mu:g} on the closed form")
-        report = legendre_contact(case, body, sigma=sigma, t_end_s=t_end_s)
+        report = legendre_contact(case, body, sigma=sigma, t_end_s=t_end_s, monitor=Watch())
         membrane = report.membrane or case
-        series = legendre_series(membrane.phi_a, case.damping, SpectralFilter(sigma, case.modes))
+        series = legendre_series(
+            membrane.phi_a, case.damping, SpectralFilter(sigma, case.modes), monitor=Watch()
+        )
         shapes = legendre_shapes(node_polar_angles(nodes), case.modes)
         solved["legendre"] = Backend("legendre", series, shapes, report, {"modes": case.modes})
     return CoupledModel(case, nodes, solved, t_end, sigma, "window")

@@ -28,6 +28,7 @@ from twoball.modal.series import ModalSeries
 from twoball.verify.sweeps.parallel import Runner
 
 from twoball._common.progress import TaskHook
+from twoball._common.watch import Watch
 
 #: Above this many Gauss points the coefficients come from the exact recurrence instead:
 #: numpy's ``leggauss`` is a dense O(m^3) eigenproblem (0.3 s at m = 1000, 16 s at 3800),
@@ -142,7 +143,9 @@ def series_for(case: Case, sigma: str = "lanczos") -> ModalSeries:
     measured by the report) at no cost.
     """
     if quadrature_points(case.modes, case.phi_a) <= MAX_QUADRATURE_POINTS:
-        return legendre_series(case.phi_a, case.damping, SpectralFilter(sigma, case.modes))
+        return legendre_series(
+            case.phi_a, case.damping, SpectralFilter(sigma, case.modes), monitor=Watch()
+        )
     n = np.arange(case.modes + 1)
     return ModalSeries(
         omega=legendre_frequency(n),
@@ -151,13 +154,19 @@ def series_for(case: Case, sigma: str = "lanczos") -> ModalSeries:
         damping=case.damping,
         filter=SpectralFilter(sigma, case.modes),
         mode_norms=4.0 * np.pi / (2 * n + 1),
+        monitor=Watch(),
     )
 
 
 def liftoff(case: Case, recontact: str = "window", sigma: str = "lanczos") -> LiftoffReport:
     """Lift-off with the shared criteria, via :func:`series_for`."""
     return report_liftoff(
-        case, series_for(case, sigma), backend="legendre", sigma=sigma, recontact=recontact
+        case,
+        series_for(case, sigma),
+        backend="legendre",
+        sigma=sigma,
+        recontact=recontact,
+        monitor=Watch(),
     )
 
 

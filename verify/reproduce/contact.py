@@ -16,6 +16,8 @@ from twoball.modal.parameters import Case
 from twoball.modal.report import legendre_liftoff
 from twoball.verify.reproduce.common import Comparison, Context, Section, new_figure, save
 
+from twoball._common.watch import Watch
+
 MASS_RATIOS = np.geomspace(1e-4, 0.2, 12)
 
 
@@ -23,9 +25,10 @@ def part_contact(ctx: Context) -> Section:
     """The mu-curve of the finite-mass model against Table 1 (basketball rows) and the ICM."""
     case = Case.preset("basketball")
     rows = [r for r in TABLE1 if r.lower == "Basketball"]
-    ratios = [legendre_contact(case, Body(float(mu))).ratio for mu in MASS_RATIOS]
-    massless = legendre_liftoff(case, reference=False).ratio
-    at_rows = {r.upper: legendre_contact(case, Body(r.mu)).ratio for r in rows}
+    watch = Watch()
+    ratios = [legendre_contact(case, Body(float(mu)), monitor=watch).ratio for mu in MASS_RATIOS]
+    massless = legendre_liftoff(case, reference=False, monitor=watch).ratio
+    at_rows = {r.upper: legendre_contact(case, Body(r.mu), monitor=watch).ratio for r in rows}
     fig, ax = new_figure(figsize=(6.6, 4.6))
     ax.semilogx(MASS_RATIOS, ratios, "o-", label="finite mass, a = R/10 (this model)")
     ax.axhline(massless, color="grey", ls="--", label="massless CEM (criteria (i)-(ii))")

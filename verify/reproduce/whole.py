@@ -32,6 +32,8 @@ from twoball.modal.icm.table1 import TABLE1
 from twoball.modal.pairs import PAIRS
 from twoball.verify.reproduce.common import Comparison, Context, Section, markdown_table, save
 
+from twoball._common.watch import Watch
+
 __all__ = ["GAPS", "GAP_PAIRS", "part_whole_gap", "part_whole_table1", "part_whole_timing"]
 
 #: The gaps of the curves [m] (Figs. 3, 8: 0 to 250 mm).
@@ -101,7 +103,7 @@ def part_whole_table1(ctx: Context) -> Section:
     sec = Section("whole_table1", "Table 1 from first principles: the whole bounce at Delta x = 0")
     rows, data = [], []
     lowers = ("tennis", "basketball")
-    cem = {lower: legendre_liftoff(Case.preset(lower)).ratio for lower in lowers}
+    cem = {lower: legendre_liftoff(Case.preset(lower), monitor=Watch()).ratio for lower in lowers}
     for name, report in zip(names, reports, strict=True):
         pair = PAIRS[name]
         row = TABLE1[pair.row - 1]

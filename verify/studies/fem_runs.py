@@ -22,6 +22,8 @@ from twoball.modal.series import ModalSeries
 from twoball.verify.studies.reference import LegendreRun
 from twoball.verify.studies.result import Progress, si
 
+from twoball._common.watch import Watch
+
 MESH_LABELS = {"sphere": "icosphere", "axisym": "axisym"}
 # level 0 of the icosphere resolves no complete degree l >= 1 (nothing to compare)
 LEVEL_LIMITS: dict[str, tuple[int, int]] = {"sphere": (1, 6), "axisym": (0, 8)}
@@ -166,6 +168,7 @@ def fem_run(
         case.damping,
         SpectralFilter(sigma, case.modes),
         route=route,
+        monitor=Watch(),
         **spec.options(),
     )
     result = find_liftoff(model.series, case.gamma, t_end=t_end, horizon=recontact)

@@ -29,6 +29,8 @@ from twoball.modal.floor.system import floor_system
 from twoball.modal.parameters import Case
 from twoball.verify.studies.orders import least_squares_order, step_orders
 
+from twoball._common.watch import Watch
+
 __all__ = [
     "DT_RESOLUTION",
     "QUANTITIES",
@@ -487,7 +489,7 @@ def special_case_table(steps: Sequence[float] = (0.02, 0.01, 0.005, 0.0025)) -> 
     from twoball.modal.stiffness import Stiffness
 
     case = Case.preset("basketball")
-    exact = legendre_liftoff(case).result
+    exact = legendre_liftoff(case, monitor=Watch()).result
     paper = Stiffness()
     lines = [
         f"closed form (Lanczos, N = 30): t_l = {exact.t:.7f}, v_l = {exact.velocity:.7f}",

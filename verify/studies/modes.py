@@ -27,6 +27,7 @@ from twoball.verify.studies.result import Progress, StudyResult, case_settings, 
 from twoball.verify.studies.trajectory import TrajectoryNorm
 
 from twoball._common.errors import ParameterError
+from twoball._common.watch import Watch
 
 DEFAULT_MODES: tuple[int, ...] = (30, 60, 120, 240, 480)
 MODES_BANDS: dict[str, OrderBand | None] = {
@@ -86,7 +87,7 @@ def run_modes_study(
     clock = time.perf_counter()
     t_end = t_end_dimensionless(case, t_end_s)
     progress("converged Legendre reference")
-    limit = converged_legendre(case, sigma, recontact, t_end)
+    limit = converged_legendre(case, sigma, recontact, t_end, monitor=Watch())
     runs: list[LegendreRun] = []
     for n in modes:
         progress(f"Legendre N = {n}")
@@ -115,7 +116,7 @@ def run_modes_study(
     # the unfiltered series with 4x the finest N: its L2 tail (~N^-3/2 from the kink at
     # t = 0) is a few per cent of the finest filtered error
     progress(f"Legendre trajectory reference, N = {4 * max(modes)} unfiltered")
-    tail = unfiltered_series(case, 4 * max(modes))
+    tail = unfiltered_series(case, 4 * max(modes), Watch())
     norm = TrajectoryNorm(tail, t_end, frequency=max(r.series.max_frequency for r in runs))
     l2 = [norm.relative_error(r.series) for r in runs]
     study.quantities.append(evaluate_quantity(specs[2], labels, dofs, steps, l2, 0.0))

@@ -19,6 +19,8 @@ from twoball.modal.parameters import Case
 from twoball.modal.series import ModalSeries
 from twoball.verify.studies.result import si
 
+from twoball._common.watch import Watch
+
 __all__ = [
     "LegendreRun",
     "legendre_row",
@@ -44,7 +46,9 @@ def legendre_run(
 ) -> LegendreRun:
     """Lift-off and end energy of the filtered Legendre series with ``modes`` modes."""
     start = time.perf_counter()
-    series = legendre_series(case.phi_a, case.damping, SpectralFilter(sigma, modes))
+    series = legendre_series(
+        case.phi_a, case.damping, SpectralFilter(sigma, modes), monitor=Watch()
+    )
     result = find_liftoff(series, case.gamma, t_end=t_end, horizon=recontact)
     energy = float(series.energy(np.array([t_end]))[0])
     return LegendreRun(

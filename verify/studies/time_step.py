@@ -36,6 +36,8 @@ from twoball.verify.studies.result import (
 )
 from twoball.verify.studies.trajectory import TrajectoryNorm, hermite_resample
 
+from twoball._common.watch import Watch
+
 DT_LEVEL_LIMITS = (0, 8)
 DT_BASE = 0.01  # dt of level 0 (dimensionless; omega_N dt = 0.3 for N = 30)
 DT_MESH_SIZE = {"sphere": 2, "axisym": 100}  # fixed mesh of the dt study
@@ -79,7 +81,9 @@ def run_dt_study(
     for dt in dts:
         progress(f"{spec.label}: generalized-alpha {time_step_text(dt, unit)}")
         start = time.perf_counter()
-        motion, info = alpha_motion(base.model, dt=dt, t_end=t_end, rho_inf=rho_inf)
+        motion, info = alpha_motion(
+            base.model, dt=dt, t_end=t_end, rho_inf=rho_inf, monitor=Watch()
+        )
         result = find_liftoff(motion, case.gamma, t_end=t_end, horizon=recontact)
         quintic = find_liftoff(hermite_resample(motion), case.gamma, t_end=t_end, horizon=recontact)
         exact = base.series.pole(motion.times)

@@ -30,6 +30,8 @@ from twoball.modal.parameters import Case
 from twoball.modal.stiffness import Stiffness
 from twoball.verify.studies.orders import least_squares_order
 
+from twoball._common.watch import Watch
+
 __all__ = ["TABLES", "Precursor", "WholeRun", "main", "precursor", "whole"]
 
 #: The defaults of ``twoball.bounce``: Legendre N, P2 elements, time step (units 1/c), window.
@@ -116,7 +118,7 @@ def limit_a_table(masses: Sequence[float] = (0.05, 0.01, 1e-3, 1e-4)) -> str:
         "|---|---|---|---|---|",
     ]
     for mu in masses:
-        ref = legendre_contact(case, Body(mu, contact_radius=0.0262))
+        ref = legendre_contact(case, Body(mu, contact_radius=0.0262), monitor=Watch())
         errors, t_error = [], math.nan
         for dt in (0.005, 0.0025):
             run_ = body_liftoff(

@@ -17,9 +17,9 @@ import numpy as np
 import pytest
 from numpy.polynomial.legendre import leggauss, legval
 from twoball.fem_membrane.floor import axisym_ball, cap_functional_exact
+from twoball.modal.balls.membrane import legendre_ball
 from twoball.modal.contact.caps import legendre_cap_averages_closed
 from twoball.modal.damping import ModalRatio
-from twoball.modal.balls.membrane import legendre_ball
 from twoball.modal.floor.drop import DropSettings, run_drop
 from twoball.modal.floor.restitution import body_liftoff
 from twoball.modal.floor.system import BodyOnTop, floor_system

@@ -12,6 +12,7 @@ from twoball.verify.output.figures import new_figure
 from twoball.verify.output.figures.style import chunks, label, styled
 
 from twoball._common.errors import ParameterError
+from twoball._common.watch import Watch
 
 if TYPE_CHECKING:
     from matplotlib.figure import Figure
@@ -58,7 +59,8 @@ def eigen_table(level: int, order: int, max_degree: int | None = None) -> EigenT
         raise ParameterError(
             "max_degree", f"at most {math.isqrt(n) - 1} on this mesh ({n} unknowns)", max_degree
         )
-    values = lowest_eigenpairs(space.stiffness, space.mass, (max_degree + 1) ** 2).values
+    count = (max_degree + 1) ** 2
+    values = lowest_eigenpairs(space.stiffness, space.mass, count, Watch()).values
     degrees = np.arange(max_degree + 1)
     errors = np.empty(degrees.size)
     for degree in degrees:

@@ -42,6 +42,8 @@ from twoball.verify.output.figures.style import (
     time_label,
 )
 
+from twoball._common.watch import Watch
+
 if TYPE_CHECKING:
     from matplotlib.figure import Figure
 
@@ -108,6 +110,7 @@ def law_curves(
         ModalRatio(case.damping),
         SpectralFilter(sigma, case.modes),
         stiffness=case.stiffness,
+        monitor=Watch(),
     )
     laws: list[tuple[str, Any]] = []
     ratio = f"modal ratio D = {case.damping:g} (3.14)"
@@ -122,13 +125,18 @@ def law_curves(
     curves = []
     for name, law in laws:
         series = legendre_series(
-            case.phi_a, law, SpectralFilter(sigma, case.modes), stiffness=case.stiffness
+            case.phi_a,
+            law,
+            SpectralFilter(sigma, case.modes),
+            stiffness=case.stiffness,
+            monitor=Watch(),
         )
         converged = legendre_series(
             case.phi_a,
             law,
             SpectralFilter("lanczos", CONVERGED_FACTOR * case.modes),
             stiffness=case.stiffness,
+            monitor=Watch(),
         )
         result = find_liftoff(series, case.gamma, t_end=t_end, horizon=recontact)
         curves.append(LawCurve(name, law, series, converged, result))

@@ -12,6 +12,8 @@ from twoball.modal.parameters import preset
 from twoball.verify.output.figures.style import STACKED, label, styled
 from twoball.verify.reproduce.common import Context, Section, liftoff, new_figure, save
 
+from twoball._common.watch import Watch
+
 if TYPE_CHECKING:
     from matplotlib.figure import Figure
 
@@ -19,7 +21,9 @@ if TYPE_CHECKING:
 def part_fig6(ctx: Context) -> Section:
     """Waterfall of u(phi) at 24 instants, basketball case with D = 0.1 (Fig. 6 caption)."""
     case = preset("basketball").derive(damping=0.1)
-    series = legendre_series(case.phi_a, case.damping, SpectralFilter("lanczos", case.modes))
+    series = legendre_series(
+        case.phi_a, case.damping, SpectralFilter("lanczos", case.modes), monitor=Watch()
+    )
     phi = np.linspace(0.0, math.pi, 361)
     t_ms = np.linspace(0.0, 11.5, 24)
     t = t_ms * 1e-3 / case.scalings.time
