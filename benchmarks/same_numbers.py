@@ -278,7 +278,25 @@ def _pattern(glob: str) -> re.Pattern[str]:
 #: A number (or a number added or removed) anywhere else must be bit-identical,
 #: and so must every exported array's hash; texts (strings, lists of strings such
 #: as warnings and notes) are listed but never fail the check.
-ALLOWED: tuple[Allowance, ...] = ()
+ALLOWED: tuple[Allowance, ...] = (
+    Allowance(
+        "one contact integrator",
+        # A body of finite mass on the paper's start is stepped by the contact core of
+        # the drop and the whole bounce (Moreau-Jean, dt = 0.005 / c) instead of the
+        # event-driven matrix exponential, which stays as the verification studies'
+        # exact reference.  Measured against it: t_l within 2.4e-5 and v1 within
+        # 3.7e-4 (basketball, mu = 0.1), t_l 1.5e-3 and v1 2.2e-4 with e = 0.5
+        # (first order at the impacts); the contact reports gained dt_s.
+        "a body of finite mass is stepped by the Moreau-Jean core (the event-driven "
+        "solver is the studies' exact reference): events, t_l and v1 move by 1e-5 to 2e-3",
+        (
+            "/contact-0.1/json/**",
+            "/contact-0.05-restitution/json/**",
+            "/contact-fem-axisym/json/**",
+            "/sweep-mass-ratio/json/results[*]/**",
+        ),
+    ),
+)
 
 
 def _has_number(value: object) -> bool:
