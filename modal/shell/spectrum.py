@@ -90,14 +90,14 @@ Checks and limits
   strains, the rotation and the prestress energy vanish).  The other root is
   ``Omega^2 = 3 (1 + nu)(1 + beta_h)`` with ``W = -2 V``.
 * C -> 0 at fixed N0 (p -> infinity): ``Omega^2 = p (lambda - 2) + 2 (1 + nu)
-  + O(1/p)`` for the *upper* root and ``(lambda - 1 + nu)(1 + beta_h) + O(1/p)``
+  + beta_h L + O(1/p)`` for the *upper* root and ``(lambda - 1 + nu)(1 + beta_h) + O(1/p)``
   for the lower; in SI the upper branch tends to
   ``omega^2 = (n - 1)(n + 2) N0 / (rho_s R^2)`` (the pressurised membrane) and the
-  lower one, mostly tangential, goes to 0 like C.  The issue names the lower
-  branch for this limit; that holds only while ``C (1 - nu^2) / (lambda + 1 + 3 nu)``
-  is above ``N0 (lambda - 2)``-ish: the two branches repel (they never cross, the
-  coupling ``k12 = -lambda (1 + nu) - beta_h L`` is never 0) and exchange character
-  near ``C / N0 ~ 1`` (see ``docs/shell_derivation.md`` for numbers).
+  lower one, mostly tangential, goes to 0 like C.  Issue 31 names the lower
+  branch for this limit: the lower branch is the radial-like one only while C is
+  large against N0; the two branches never cross (the coupling
+  ``k12 = -lambda (1 + nu) - beta_h L`` is never 0) and exchange character near
+  ``C / N0 ~ 1`` (``docs/shell_derivation.md`` has the numbers).
 
 Everything here is dimensionless (units of :mod:`twoball.modal.shell.parameters`).
 """

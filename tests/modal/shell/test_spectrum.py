@@ -28,9 +28,7 @@ def random_shells(count: int, seed: int = RNG_SEED) -> list[ShellParameters]:
         ratio = 0.3 * rng.random() ** 2
         prestress = 10.0 ** rng.uniform(-4.0, 1.7) if rng.random() < 0.8 else 0.0
         gas = 0.0 if prestress < 1.0 + nu else 2.0 * prestress + rng.random()
-        shells.append(ShellParameters.from_ratios(nu, ratio, None, gas))
-        object.__setattr__(shells[-1], "prestress", prestress)  # keep p exactly as drawn
-        ShellParameters.__post_init__(shells[-1])
+        shells.append(ShellParameters(nu, bending=ratio**2 / 12, prestress=prestress, gas=gas))
     return shells
 
 
