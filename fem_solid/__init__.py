@@ -1,0 +1,1 @@
+"""twoball.fem_solid -- finite elements of the elastic solid (placeholder)."""
