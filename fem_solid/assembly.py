@@ -63,7 +63,7 @@ def elasticity_matrices(
     # batches of elements bound the memory of the 900 local entries per element
     for chunk in np.array_split(np.arange(mesh.nelements), 1 + mesh.nelements // chunk_size):
         grads = np.array([scalar.basis[a][0].grad[:, chunk] for a in range(nloc)])  # (a,i,e,q)
-        values = np.array([scalar.basis[a][0].value[chunk] for a in range(nloc)])  # (a, e, q)
+        values = np.array([np.asarray(scalar.basis[a][0])[chunk] for a in range(nloc)])  # (a, e, q)
         dx = scalar.dx[chunk]  # (e, q)
         g = np.einsum("aieq,bjeq,eq->eabij", grads, grads, dx, optimize=True)
         lap = np.einsum("eabkk->eab", g)

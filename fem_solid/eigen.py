@@ -140,7 +140,7 @@ def legendre_content(basis: Basis, vectors: np.ndarray, max_degree: int) -> np.n
     on_axis = np.all(np.abs(ends[0]) < 1e-12, axis=0)
     facets = np.flatnonzero(on_circle & ~on_axis)
     fb = FacetBasis(mesh, basis.elem, facets=facets, intorder=2 * max_degree + 6)
-    x = fb.global_coordinates().value
+    x = np.asarray(fb.global_coordinates())
     phi = np.arctan2(x[0], x[1])  # polar angle from the north pole
     w = (fb.dx * 2.0 * math.pi * x[0]).ravel()
     c, s = np.cos(phi).ravel(), np.sin(phi).ravel()
@@ -151,7 +151,7 @@ def legendre_content(basis: Basis, vectors: np.ndarray, max_degree: int) -> np.n
     norm_dp = np.where(degrees > 0, norm_p * degrees * (degrees + 1), 1.0)
     out = np.empty((vectors.shape[1], max_degree + 1))
     for j in range(vectors.shape[1]):
-        u = fb.interpolate(vectors[:, j]).value
+        u = np.asarray(fb.interpolate(vectors[:, j]))
         ur, uz = u[0].ravel(), u[1].ravel()
         radial = ur * s + uz * c
         polar = ur * c - uz * s
@@ -234,7 +234,7 @@ def vsh_content(
 ) -> tuple[np.ndarray, np.ndarray]:
     """Eq. (E1) in 3-D: (S, T), each of shape (modes, max_degree + 1), on the boundary sphere."""
     fb = FacetBasis(basis.mesh, basis.elem, intorder=max(4, max_degree + 2))
-    x = fb.global_coordinates().value.reshape(3, -1)
+    x = np.asarray(fb.global_coordinates()).reshape(3, -1)
     w = fb.dx.ravel()
     r = np.linalg.norm(x, axis=0)
     theta = np.arccos(np.clip(x[2] / r, -1.0, 1.0))
@@ -243,7 +243,9 @@ def vsh_content(
     e_r = np.array([st * cp, st * sp, ct])
     e_t = np.array([ct * cp, ct * sp, -st])
     e_p = np.array([-sp, cp, np.zeros_like(sp)])
-    fields = [fb.interpolate(vectors[:, j]).value.reshape(3, -1) for j in range(vectors.shape[1])]
+    fields = [
+        np.asarray(fb.interpolate(vectors[:, j])).reshape(3, -1) for j in range(vectors.shape[1])
+    ]
     u = np.array(fields)  # (modes, 3, points)
     ur = np.einsum("mip,ip->mp", u, e_r) * w
     ut = np.einsum("mip,ip->mp", u, e_t) * w
