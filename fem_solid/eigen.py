@@ -230,10 +230,14 @@ def _volume(basis: Basis) -> float:
 
 
 def vsh_content(
-    basis: Basis, vectors: np.ndarray, max_degree: int
+    basis: Basis, vectors: np.ndarray, max_degree: int, chunk: int = 64
 ) -> tuple[np.ndarray, np.ndarray]:
-    """Eq. (E1) in 3-D: (S, T), each of shape (modes, max_degree + 1), on the boundary sphere."""
-    fb = FacetBasis(basis.mesh, basis.elem, intorder=max(4, max_degree + 2))
+    """Eq. (E1) in 3-D: (S, T), each of shape (modes, max_degree + 1), on the boundary sphere.
+
+    Modes are taken ``chunk`` at a time (the surface fields of all modes at once would
+    need modes x 3 x points doubles).
+    """
+    fb = FacetBasis(basis.mesh, basis.elem, intorder=max(4, max_degree))
     x = np.asarray(fb.global_coordinates()).reshape(3, -1)
     w = fb.dx.ravel()
     r = np.linalg.norm(x, axis=0)
@@ -243,25 +247,27 @@ def vsh_content(
     e_r = np.array([st * cp, st * sp, ct])
     e_t = np.array([ct * cp, ct * sp, -st])
     e_p = np.array([-sp, cp, np.zeros_like(sp)])
-    fields = [
-        np.asarray(fb.interpolate(vectors[:, j])).reshape(3, -1) for j in range(vectors.shape[1])
-    ]
-    u = np.array(fields)  # (modes, 3, points)
-    ur = np.einsum("mip,ip->mp", u, e_r) * w
-    ut = np.einsum("mip,ip->mp", u, e_t) * w
-    up = np.einsum("mip,ip->mp", u, e_p) * w
-    s_content = np.zeros((len(fields), max_degree + 1))
-    t_content = np.zeros_like(s_content)
     inv_sin = 1.0 / np.maximum(st, 1e-300)
-    for ell in range(max_degree + 1):
-        for m in range(-ell, ell + 1):
-            y, dy = sph_harm_y(ell, m, theta, azimuth, diff_n=1)
-            yc, dth, dph = np.conj(y), np.conj(dy[..., 0]), np.conj(dy[..., 1]) * inv_sin
-            s_content[:, ell] += np.abs(ur @ yc) ** 2
-            if ell > 0:
-                ll = ell * (ell + 1)
-                s_content[:, ell] += np.abs(ut @ dth + up @ dph) ** 2 / ll
-                t_content[:, ell] += np.abs(-ut @ dph + up @ dth) ** 2 / ll
+    count = vectors.shape[1]
+    s_content = np.zeros((count, max_degree + 1))
+    t_content = np.zeros_like(s_content)
+    for start in range(0, count, chunk):
+        block = range(start, min(start + chunk, count))
+        u = np.array([np.asarray(fb.interpolate(vectors[:, j])).reshape(3, -1) for j in block])
+        ur = np.einsum("mip,ip->mp", u, e_r) * w
+        ut = np.einsum("mip,ip->mp", u, e_t) * w
+        up = np.einsum("mip,ip->mp", u, e_p) * w
+        del u
+        rows = slice(block.start, block.stop)
+        for ell in range(max_degree + 1):
+            for m in range(-ell, ell + 1):
+                y, dy = sph_harm_y(ell, m, theta, azimuth, diff_n=1)
+                yc, dth, dph = np.conj(y), np.conj(dy[..., 0]), np.conj(dy[..., 1]) * inv_sin
+                s_content[rows, ell] += np.abs(ur @ yc) ** 2
+                if ell > 0:
+                    ll = ell * (ell + 1)
+                    s_content[rows, ell] += np.abs(ut @ dth + up @ dph) ** 2 / ll
+                    t_content[rows, ell] += np.abs(-ut @ dph + up @ dth) ** 2 / ll
     return s_content, t_content
 
 

@@ -17,7 +17,7 @@ from skfem import MeshTet1, MeshTet2, MeshTri1, MeshTri2
 
 from twoball._common.errors import ParameterError
 
-__all__ = ["ball", "ball_gmsh", "circle_error", "half_annulus", "half_disc"]
+__all__ = ["ball", "ball_gmsh", "circle_error", "half_annulus", "half_disc", "half_disc_gmsh"]
 
 _AXIS_TOL = 1e-12
 
@@ -120,6 +120,86 @@ def ball(level: int) -> MeshTet2:
     if level < 0 or int(level) != level:
         raise ParameterError("level", "an integer >= 0", level)
     return MeshTet2.init_ball(int(level))
+
+
+def _size_field(gmsh, size: float, surface: float) -> None:
+    """Size ``surface`` on the unit sphere or circle, growing linearly to ``size`` at depth 0.3."""
+    if surface < size:
+        field = gmsh.model.mesh.field
+        dist = field.add("MathEval")
+        depth = "(1 - sqrt(x^2 + y^2 + z^2))"
+        field.setString(dist, "F", f"{surface} + ({size} - {surface}) * {depth} / 0.3")
+        const = field.add("MathEval")
+        field.setString(const, "F", f"{size}")
+        cap = field.add("Min")
+        field.setNumbers(cap, "FieldsList", [dist, const])
+        field.setAsBackgroundMesh(cap)
+        gmsh.option.setNumber("Mesh.MeshSizeFromPoints", 0)
+        gmsh.option.setNumber("Mesh.MeshSizeExtendFromBoundary", 0)
+        gmsh.option.setNumber("Mesh.MeshSizeFromCurvature", 0)
+    else:
+        gmsh.option.setNumber("Mesh.MeshSizeMin", size)
+        gmsh.option.setNumber("Mesh.MeshSizeMax", size)
+
+
+def half_disc_gmsh(size: float, surface_size: float | None = None) -> MeshTri2:
+    """The meridian half disc meshed by gmsh, graded to ``surface_size`` at the arc.
+
+    Modes of high degree and low radial order are confined near the surface
+    (their depth ~ R / n), so a finer arc carries them at the cost of few elements.
+    The arc's vertices and mid-edge nodes are on the unit circle (P2 geometry).
+
+    Parameters
+    ----------
+    size : float
+        Element size inside (units of R), in (0, 1].
+    surface_size : float, optional
+        Element size along the arc (default ``size``).
+    """
+    import gmsh
+
+    if not 0.0 < size <= 1.0:
+        raise ParameterError("size", "in (0, 1]", size)
+    surface = size if surface_size is None else surface_size
+    if not 0.0 < surface <= size:
+        raise ParameterError("surface_size", f"in (0, size = {size}]", surface_size)
+    initialized = gmsh.isInitialized()
+    if not initialized:
+        gmsh.initialize(interruptible=False)
+    try:
+        gmsh.option.setNumber("General.Terminal", 0)
+        gmsh.model.add("half_disc")
+        geo = gmsh.model.geo
+        south, centre, east, north = (
+            geo.addPoint(0, -1, 0),
+            geo.addPoint(0, 0, 0),
+            geo.addPoint(1, 0, 0),
+            geo.addPoint(0, 1, 0),
+        )
+        lower, upper = geo.addCircleArc(south, centre, east), geo.addCircleArc(east, centre, north)
+        axis = geo.addLine(north, south)
+        geo.addPlaneSurface([geo.addCurveLoop([lower, upper, axis])])
+        geo.synchronize()
+        _size_field(gmsh, size, surface)
+        gmsh.option.setNumber("Mesh.Optimize", 1)
+        gmsh.model.mesh.generate(2)
+        tags, coords, _ = gmsh.model.mesh.getNodes()
+        types, _, nodes = gmsh.model.mesh.getElements(2)
+        tri = nodes[list(types).index(2)].reshape(-1, 3).astype(np.int64)
+        gmsh.model.remove()
+    finally:
+        if not initialized:
+            gmsh.finalize()
+    index = np.zeros(int(tags.max()) + 1, dtype=np.int64)
+    index[tags.astype(np.int64)] = np.arange(len(tags))
+    p = coords.reshape(-1, 3).T[:2]
+    used = np.unique(index[tri])
+    renumber = np.full(len(tags), -1)
+    renumber[used] = np.arange(len(used))
+    x = np.ascontiguousarray(p[:, used])
+    x[0, np.abs(x[0]) < 1e-12] = 0.0
+    linear = _project_arc(MeshTri1(x, np.ascontiguousarray(renumber[index[tri]].T)))
+    return _quadratic_on_circle(MeshTri2.from_mesh(linear), outer=1.0)
 
 
 def ball_gmsh(size: float, surface_size: float | None = None) -> MeshTet2:

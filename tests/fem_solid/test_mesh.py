@@ -65,3 +65,12 @@ def test_invalid():
         half_annulus(1.0, 2, 8)
     with pytest.raises(ParameterError):
         ball_gmsh(0.3, 0.5)
+
+
+def test_gmsh_half_disc_on_circle_and_graded():
+    from twoball.fem_solid.mesh import half_disc_gmsh
+
+    mesh = half_disc_gmsh(0.3, 0.1)
+    assert circle_error(mesh) < 1e-15 and mesh.p[0].min() == 0.0
+    v = swept_volume.assemble(Basis(mesh, ElementTriP2(), intorder=6))
+    assert v == pytest.approx(4 * math.pi / 3, rel=1e-6)
