@@ -34,7 +34,7 @@ from dataclasses import dataclass
 
 import numpy as np
 from scipy.sparse.linalg import LinearOperator, eigsh, splu
-from scipy.special import eval_legendre, lpmv, sph_harm_y
+from scipy.special import eval_legendre, lpmv, sph_harm_y_all
 from skfem import Basis, ElementTriP2, ElementVector, FacetBasis, asm
 from skfem.mesh import MeshTet2, MeshTri2
 from twoball.fem_solid.assembly import elasticity_matrices
@@ -229,45 +229,78 @@ def _volume(basis: Basis) -> float:
     return float(vol.assemble(basis))
 
 
+def _facet_probe(fb: FacetBasis):
+    """Sparse matrix from a global vector to its values at the facet quadrature points.
+
+    Rows ordered (component, facet, point), as ``fb.interpolate(x)`` returns them.
+    """
+    from scipy.sparse import coo_matrix
+
+    rows, cols, vals = [], [], []
+    first = np.asarray(fb.basis[0][0])
+    shape = first.shape  # (components, facets, points)
+    index = np.arange(np.prod(shape)).reshape(shape)
+    for i in range(len(fb.basis)):
+        value = np.asarray(fb.basis[i][0])
+        dofs = np.broadcast_to(fb.element_dofs[i][None, :, None], shape)
+        keep = value != 0.0
+        rows.append(index[keep])
+        cols.append(dofs[keep])
+        vals.append(value[keep])
+    return coo_matrix(
+        (np.concatenate(vals), (np.concatenate(rows), np.concatenate(cols))),
+        shape=(index.size, fb.N),
+    ).tocsr()
+
+
 def vsh_content(
-    basis: Basis, vectors: np.ndarray, max_degree: int, chunk: int = 64
+    basis: Basis, vectors: np.ndarray, max_degree: int, chunk: int = 4000, quadrature: int = 6
 ) -> tuple[np.ndarray, np.ndarray]:
     """Eq. (E1) in 3-D: (S, T), each of shape (modes, max_degree + 1), on the boundary sphere.
 
-    Modes are taken ``chunk`` at a time (the surface fields of all modes at once would
-    need modes x 3 x points doubles).
+    The surface fields come from one sparse probe matrix at the facet quadrature
+    points of order ``quadrature`` (the content only ranks degrees, so the products
+    need not be integrated exactly).  The projections are sums over points, so the
+    points are taken ``chunk`` at a time with every harmonic of order m >= 0 at once
+    (scipy's ``sph_harm_y_all``); for a real field |<u, Y_l^-m>| = |<u, Y_l^m>|, so
+    m < 0 counts as m > 0.
     """
-    fb = FacetBasis(basis.mesh, basis.elem, intorder=max(4, max_degree))
+    fb = FacetBasis(basis.mesh, basis.elem, intorder=quadrature)
     x = np.asarray(fb.global_coordinates()).reshape(3, -1)
     w = fb.dx.ravel()
-    r = np.linalg.norm(x, axis=0)
-    theta = np.arccos(np.clip(x[2] / r, -1.0, 1.0))
-    azimuth = np.mod(np.arctan2(x[1], x[0]), 2.0 * math.pi)
-    st, ct, sp, cp = np.sin(theta), np.cos(theta), np.sin(azimuth), np.cos(azimuth)
-    e_r = np.array([st * cp, st * sp, ct])
-    e_t = np.array([ct * cp, ct * sp, -st])
-    e_p = np.array([-sp, cp, np.zeros_like(sp)])
-    inv_sin = 1.0 / np.maximum(st, 1e-300)
-    count = vectors.shape[1]
-    s_content = np.zeros((count, max_degree + 1))
-    t_content = np.zeros_like(s_content)
-    for start in range(0, count, chunk):
-        block = range(start, min(start + chunk, count))
-        u = np.array([np.asarray(fb.interpolate(vectors[:, j])).reshape(3, -1) for j in block])
-        ur = np.einsum("mip,ip->mp", u, e_r) * w
-        ut = np.einsum("mip,ip->mp", u, e_t) * w
-        up = np.einsum("mip,ip->mp", u, e_p) * w
-        del u
-        rows = slice(block.start, block.stop)
-        for ell in range(max_degree + 1):
-            for m in range(-ell, ell + 1):
-                y, dy = sph_harm_y(ell, m, theta, azimuth, diff_n=1)
-                yc, dth, dph = np.conj(y), np.conj(dy[..., 0]), np.conj(dy[..., 1]) * inv_sin
-                s_content[rows, ell] += np.abs(ur @ yc) ** 2
-                if ell > 0:
-                    ll = ell * (ell + 1)
-                    s_content[rows, ell] += np.abs(ut @ dth + up @ dph) ** 2 / ll
-                    t_content[rows, ell] += np.abs(-ut @ dph + up @ dth) ** 2 / ll
+    probe = _facet_probe(fb)
+    fields = (probe @ vectors).reshape(3, -1, vectors.shape[1])  # (3, points, modes)
+    top = max_degree
+    shape = (vectors.shape[1], top + 1, top + 1)  # (modes, l, m >= 0)
+    a_r, a_s, a_t = (np.zeros(shape, dtype=complex) for _ in range(3))
+    for start in range(0, x.shape[1], chunk):
+        pts = slice(start, min(start + chunk, x.shape[1]))
+        xc = x[:, pts]
+        theta = np.arccos(np.clip(xc[2] / np.linalg.norm(xc, axis=0), -1.0, 1.0))
+        azimuth = np.mod(np.arctan2(xc[1], xc[0]), 2.0 * math.pi)
+        st, ct = np.sin(theta), np.cos(theta)
+        sp, cp = np.sin(azimuth), np.cos(azimuth)
+        u = fields[:, pts]
+        wc = w[pts]
+        ur = (u[0] * (st * cp)[:, None] + u[1] * (st * sp)[:, None] + u[2] * ct[:, None]).T * wc
+        ut = (u[0] * (ct * cp)[:, None] + u[1] * (ct * sp)[:, None] - u[2] * st[:, None]).T * wc
+        up = (-u[0] * sp[:, None] + u[1] * cp[:, None]).T * wc
+        y, dy = sph_harm_y_all(top, top, theta, azimuth, diff_n=1)
+        y, dy = y[:, : top + 1], dy[:, : top + 1]  # orders m = 0 .. top
+        inv_sin = 1.0 / np.maximum(st, 1e-300)
+        flat = (-1, len(wc))
+        yc = np.conj(y).reshape(flat).T  # (points, l m)
+        dth = np.conj(dy[..., 0]).reshape(flat).T
+        dph = (np.conj(dy[..., 1]) * inv_sin).reshape(flat).T
+        a_r += (ur @ yc).reshape(shape)  # matrix products (BLAS), not einsum
+        a_s += (ut @ dth + up @ dph).reshape(shape)
+        a_t += (up @ dth - ut @ dph).reshape(shape)
+    weight = np.where(np.arange(top + 1) == 0, 1.0, 2.0)  # m and -m
+    ell = np.arange(top + 1)
+    ll = np.where(ell > 0, ell * (ell + 1), 1.0)
+    s_content = (np.abs(a_r) ** 2 * weight).sum(axis=2)
+    s_content += np.where(ell > 0, (np.abs(a_s) ** 2 * weight).sum(axis=2) / ll, 0.0)
+    t_content = np.where(ell > 0, (np.abs(a_t) ** 2 * weight).sum(axis=2) / ll, 0.0)
     return s_content, t_content
 
 

@@ -1,0 +1,157 @@
+"""Eigenpairs of the elastic ball in finite elements against Lamb's roots: time, memory, error.
+
+Run from anywhere with the package installed, e.g.::
+
+    OPENBLAS_NUM_THREADS=1 python benchmarks/bench_solid.py            # both routes
+    python benchmarks/bench_solid.py 3d --sizes 0.35,0.2 0.3,0.15     # (size, surface) pairs
+    python benchmarks/bench_solid.py axisym --sizes 0.04,0.01
+
+Each case runs in a child process, so its peak memory (``resource.getrusage``,
+maximum resident set size) is its own.  Times are wall-clock and include meshing,
+assembly, the shift-invert eigensolve and the classification.  Dimensionless:
+eta = omega R / c_s, nu = 1/4.
+
+3-D: every eigenpair below the first root of degree ``--degree`` (all azimuthal
+orders, torsional and spheroidal, the six rigid modes) on a P2 tetrahedral ball
+from gmsh graded to the surface; the error column is the largest relative error of
+the spheroidal modes of degree <= ``--degree`` (each of their 2n + 1 copies)
+against Lamb's root of the same (n, k), and of the torsional ones against the
+torsional equation (n - 1) j_n(y) = y j_{n+1}(y).  "misclassified" counts modes
+whose (kind, degree, radial order) has no exact value within 1 % (a wrong label).
+Axisymmetric: every m = 0 eigenpair below the first root of degree ``--degree``.
+"""
+
+from __future__ import annotations
+
+import argparse
+import json
+import resource
+import subprocess
+import sys
+import time
+
+import numpy as np
+from scipy.optimize import brentq
+from scipy.special import spherical_jn
+
+NU = 0.25
+
+
+def torsional_roots(n: int, top: float) -> list[float]:
+    """Roots of (n - 1) j_n(y) - y j_{n+1}(y) below ``top`` (Lamb 1882, the torsional family)."""
+
+    def f(y):
+        return (n - 1) * spherical_jn(n, y) - y * spherical_jn(n + 1, y)
+
+    grid = np.arange(0.3, top, 0.005)
+    v = f(grid)
+    return [
+        brentq(f, grid[i], grid[i + 1], xtol=1e-14)
+        for i in np.flatnonzero(np.sign(v[:-1]) != np.sign(v[1:]))
+    ]
+
+
+def reference(degree: int, three_d: bool) -> tuple[float, dict, int]:
+    """The cut eta, the exact value of each (kind, n, k), and the number of modes below the cut."""
+    from twoball.modal.solid.lamb import lamb_roots
+
+    top = float(lamb_roots(degree, NU, 1)[0]) * (1.0 + 1e-3)
+    exact: dict[tuple[str, int, int], float] = {}
+    count = 3 if three_d else 1  # translations (3-D: and below, rotations)
+    for n in range(0, 3 * degree + 10):
+        roots = lamb_roots(n, NU, 1 + int(top))
+        for k, eta in enumerate(roots, start=1):
+            exact[("spheroidal", n, k)] = float(eta)
+            if eta < top:
+                count += (2 * n + 1) if three_d else 1
+        if three_d and n >= 1:
+            for k, eta in enumerate(torsional_roots(n, top + 3.0), start=1):
+                exact[("torsional", n, k)] = float(eta)
+                if eta < top:
+                    count += 2 * n + 1
+    if three_d:
+        count += 3  # rotations
+    return top, exact, count
+
+
+def run_case(route: str, size: float, surface: float, degree: int) -> dict:
+    """One case in this process: mesh, eigenpairs, classification, errors, time, peak memory."""
+    from twoball.fem_solid.eigen import axisymmetric_eigen, ball_eigen
+    from twoball.fem_solid.mesh import ball_gmsh, half_disc_gmsh
+
+    three_d = route == "3d"
+    top, exact, count = reference(degree, three_d)
+    start = time.perf_counter()
+    if three_d:
+        mesh = ball_gmsh(size, surface)
+        e = ball_eigen(mesh, NU, count + 10, max_degree=degree + 4)
+    else:
+        mesh = half_disc_gmsh(size, surface)
+        e = axisymmetric_eigen(mesh, NU, count + 5, max_degree=degree + 10)
+    seconds = time.perf_counter() - start
+    target, every, wrong = 0.0, 0.0, 0
+    for i in np.flatnonzero(~e.rigid & (e.eta < top * (1 - 2e-3))):
+        key = (e.kind[i], int(e.degree[i]), int(e.radial_order[i]))
+        if key not in exact or abs(e.eta[i] / exact[key] - 1) > 1e-2:
+            wrong += 1
+            continue
+        error = abs(e.eta[i] / exact[key] - 1)
+        every = max(every, error)
+        if key[0] == "spheroidal" and key[1] <= degree:
+            target = max(target, error)
+    peak = resource.getrusage(resource.RUSAGE_SELF).ru_maxrss * 1024  # kB on Linux
+    return {
+        "route": route,
+        "size": size,
+        "surface": surface,
+        "elements": int(mesh.nelements),
+        "dofs": int(e.basis.N),
+        "modes": int(len(e.eta)),
+        "rigid": int(e.rigid.sum()),
+        "seconds": seconds,
+        "peak_gb": peak / 2**30,
+        "max_rel_error_spheroidal": target,
+        "max_rel_error_all": every,
+        "misclassified": wrong,
+    }
+
+
+def main(argv: list[str] | None = None) -> None:
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("route", nargs="?", choices=["3d", "axisym", "both"], default="both")
+    parser.add_argument("--sizes", nargs="*", help="size,surface pairs (units of R)")
+    parser.add_argument("--degree", type=int, help="highest degree (3-D 10, axisym 30)")
+    parser.add_argument("--child", action="store_true", help=argparse.SUPPRESS)
+    args = parser.parse_args(argv)
+    if args.child:
+        size, surface = (float(v) for v in args.sizes[0].split(","))
+        print(json.dumps(run_case(args.route, size, surface, args.degree)))
+        return
+    plan = []
+    if args.route in ("3d", "both"):
+        sizes = args.sizes or ["0.4,0.25", "0.3,0.18", "0.25,0.14"]
+        plan += [("3d", s, args.degree or 10) for s in sizes]
+    if args.route in ("axisym", "both"):
+        sizes = args.sizes or ["0.08,0.02", "0.05,0.012", "0.04,0.01"]
+        plan += [("axisym", s, args.degree or 30) for s in sizes]
+    header = (
+        f"{'route':7} {'size':>5} {'surf':>5} {'elems':>7} {'dofs':>7} {'modes':>5} "
+        f"{'time s':>7} {'peak GB':>7} {'err sph<=n':>10} {'err all':>9} {'wrong':>5}"
+    )
+    print(f"nu = {NU}; modes below the first root of the highest degree")
+    print(header)
+    for route, sizes, degree in plan:
+        child = [sys.executable, __file__, route, "--child", "--sizes", sizes, "--degree"]
+        out = subprocess.run([*child, str(degree)], capture_output=True, text=True, check=True)
+        r = json.loads(out.stdout.strip().splitlines()[-1])
+        print(
+            f"{r['route']:7} {r['size']:5.3g} {r['surface']:5.3g} {r['elements']:7d} "
+            f"{r['dofs']:7d} {r['modes']:5d} {r['seconds']:7.1f} {r['peak_gb']:7.2f} "
+            f"{r['max_rel_error_spheroidal']:10.2e} {r['max_rel_error_all']:9.2e} "
+            f"{r['misclassified']:5d}",
+            flush=True,
+        )
+
+
+if __name__ == "__main__":
+    main()
