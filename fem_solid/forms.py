@@ -4,8 +4,8 @@ Written like :mod:`skfem.models.elasticity` (``linear_elasticity``: the
 stress C(eps) = 2 mu eps + lambda tr(eps) I contracted with the test strain).
 
 Axisymmetric, torsion-free fields u = u_r(r, z) e_r + u_z(r, z) e_z have the strains
-(Timoshenko & Goodier, *Theory of Elasticity*, section 114; Zienkiewicz & Taylor,
-*The Finite Element Method* vol. 1, chapter 9)
+of the cylindrical coordinates (as in the axisymmetric stress analysis of
+Zienkiewicz & Taylor, *The Finite Element Method*, vol. 1)
 
     eps_rr = du_r/dr, eps_zz = du_z/dz, eps_rz = (du_r/dz + du_z/dr)/2,
     eps_tt = u_r / r  (the hoop strain),                                  (A1)

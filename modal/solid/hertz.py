@@ -1,9 +1,9 @@
 """Hertz's impact of an elastic sphere on a rigid flat: closed-form reference values.
 
 Quasi-static Hertz contact (Hertz 1882, J. reine angew. Math. 92:156; Johnson,
-*Contact Mechanics*, 1985, sections 4.2 and 11.4; Landau & Lifshitz, *Theory of
-Elasticity*, section 9): a sphere of radius R pressed by delta onto a rigid flat
-carries
+*Contact Mechanics*, 1985, chapters 4 (Hertz) and 11 (impact); Landau & Lifshitz,
+*Theory of Elasticity*, section 9 and its problems): a sphere of radius R pressed
+by delta onto a rigid flat carries
 
     F = (4/3) E* sqrt(R) delta^(3/2),   E* = E / (1 - nu^2)                (H1)
 

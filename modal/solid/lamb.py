@@ -1,8 +1,9 @@
 """Lamb's frequency equation for the spheroidal modes of a free elastic sphere, and its roots.
 
 The displacement of a spheroidal mode of degree n (axisymmetric, m = 0) is derived
-from two potentials (Lamb 1882, Proc. Lond. Math. Soc. 13:189; Eringen & Suhubi,
-*Elastodynamics* vol. II, section 8.13):
+from two potentials (Lamb 1882, Proc. Lond. Math. Soc. 13:189; the same
+construction underlies Sato & Usami 1962, Geophys. Mag. 31:15, and the
+characteristic function of Takeuchi & Saito 1972, Methods Comput. Phys. 11):
 
     u = grad(phi) + curl curl(r psi e_r),
     phi = A j_n(h r) P_n(cos theta),   psi = B j_n(k r) P_n(cos theta),
@@ -54,8 +55,8 @@ Torsional modes (u = curl(r chi e_r), purely azimuthal displacement u_phi for
 m = 0) do not enter: they have no radial or meridional component, so they are a
 separate family with their own equation; everything here is spheroidal.
 
-The rigid translation (n = 1, omega = 0) is not a root of F_1 on the grid (F_1
-tends to a non-zero limit's neighbourhood only through 0/0); it is added by
+The rigid translation (n = 1, omega = 0) is not searched for: at eta = 0 every
+entry of M vanishes, and the scan starts at ``eta_start`` > 0.  It is added by
 :mod:`twoball.modal.solid.modes` as the mode of radial order 0.
 """
 
