@@ -23,6 +23,27 @@ first root, "miss" the copies of those multiplets not found; "err all" the large
 relative error of every mode below the cut against the exact value of its label
 (Lamb's roots; torsional ones against (n - 1) j_n(y) = y j_{n+1}(y)), and "unlab"
 the modes whose label has no exact value within 10 % (classification failures).
+
+Measured on the project's 2-core machine (one BLAS thread; other sessions were
+running, load average 6-8, so the times are upper bounds), nu = 1/4:
+
+    route    size  surf   elems    dofs modes  time s peak GB   err k=1 miss   err all unlab
+    3d        0.4  0.25     932    5340   324    28.1    0.51  1.49e-01   31  9.94e-02    35
+    3d        0.3  0.18    2136   11622   324    51.1    0.77  6.02e-02   21  6.02e-02    11
+    3d       0.25  0.14    3734   19875   324   107.5    0.94  4.14e-02    0  3.44e-02     2
+    3d        0.2  0.11    6961   35607   324   262.9    1.23  2.15e-02    0  1.61e-02     3
+    axisym   0.08  0.02    1720    7262   157     8.3    0.16  1.32e-03    0  6.93e-03     0
+    axisym   0.05 0.012    4373   18120   157    20.1    0.26  2.01e-04    0  1.21e-03     0
+    axisym   0.04  0.01    6461   26604   157    26.0    0.34  9.03e-05    0  5.26e-04     0
+
+The axisymmetric route meets 1e-4 for the first root of every degree up to 30 in
+26 s and 0.34 GB.  The 3-D P2 route does not meet 1e-4 up to degree 10 in 60 s:
+its worst mode (a degree-10 multiplet) is still pre-asymptotic at 35k unknowns
+(2.2e-2; the m = 0 copy of the same mesh size in (r, z) is 5.4e-3).  With the
+asymptotic h^4 it would need about 3.8x smaller elements, some 2 million unknowns,
+far beyond SuperLU's fill in 4 GB; what would be needed is listed in the report of
+issue 33 (higher-order tetrahedra, a nested-dissection Cholesky with slicing, or
+the (r, z) problem per azimuthal order m).
 """
 
 from __future__ import annotations
