@@ -41,9 +41,9 @@ The axisymmetric route meets 1e-4 for the first root of every degree up to 30 in
 its worst mode (a degree-10 multiplet) is still pre-asymptotic at 35k unknowns
 (2.2e-2; the m = 0 copy of the same mesh size in (r, z) is 5.4e-3).  With the
 asymptotic h^4 it would need about 3.8x smaller elements, some 2 million unknowns,
-far beyond SuperLU's fill in 4 GB; what would be needed is listed in the report of
-issue 33 (higher-order tetrahedra, a nested-dissection Cholesky with slicing, or
-the (r, z) problem per azimuthal order m).
+far beyond SuperLU's fill in 4 GB.  What would be needed: higher-order tetrahedra
+(the error falls as h^(2p)), a nested-dissection sparse Cholesky with spectrum
+slicing, or one (r, z) problem per azimuthal order m (the ball is axisymmetric).
 """
 
 from __future__ import annotations

@@ -25,7 +25,8 @@ from twoball.modal.solid.lamb import (
 
 from twoball._common.errors import ParameterError
 
-#: Published roots eta = omega R / c_s (physics-sources.md; issue 33): (nu, n, k) -> eta.
+#: Reference roots eta = omega R / c_s, (nu, n, k) -> eta, as quoted to 4-5 digits in the
+#: project's physics-source notes (an independent solution of Lamb's equation).
 REFERENCE = {
     (0.25, 2, 1): 2.6399,
     (0.25, 2, 2): 4.8653,
@@ -76,8 +77,8 @@ def independent_root(n: int, guess: float, nu: float) -> float:
 
 @pytest.mark.parametrize(("nu", "n", "k"), sorted(REFERENCE))
 def test_published_roots(nu, n, k):
-    """The roots agree with the published values to their 4-5 digits, and to 1e-6 with
-    the independent 30-digit roots started from the published value."""
+    """The roots agree with the reference values to their 4-5 digits, and to 1e-6 with
+    the independent 30-digit roots started from the reference value."""
     eta = lamb_roots(n, nu, k)[k - 1]
     published = REFERENCE[(nu, n, k)]
     assert abs(eta - published) <= 0.6 * 10.0 ** -(len(repr(published).split(".")[1]))
