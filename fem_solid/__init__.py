@@ -27,6 +27,7 @@ __getattr__, __dir__ = attach(
         "half_disc_gmsh": ".mesh",
         "lame": ".forms",
         "legendre_content": ".eigen",
+        "linear": ".mesh",
         "mass": ".forms",
         "vsh_content": ".eigen",
     },

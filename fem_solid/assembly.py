@@ -18,26 +18,29 @@ from __future__ import annotations
 
 import numpy as np
 from scipy.sparse import coo_matrix, csr_matrix
-from skfem import Basis, ElementTetP2, ElementVector
-from skfem.mesh import MeshTet2
+from skfem import Basis, ElementTetP1, ElementTetP2, ElementVector
+from skfem.mesh import MeshTet1, MeshTet2
 
 __all__ = ["elasticity_matrices"]
 
 
 def elasticity_matrices(
-    mesh: MeshTet2,
+    mesh: MeshTet1 | MeshTet2,
     lam: float,
     mu: float,
     density: float = 1.0,
     intorder: int = 4,
     chunk_size: int = 8000,
 ) -> tuple[csr_matrix, csr_matrix, Basis]:
-    """Stiffness and mass of 3-D elasticity on a P2 tetrahedral mesh, eq. (F1).
+    """Stiffness and mass of 3-D elasticity on a tetrahedral mesh, eq. (F1).
+
+    P2 on a quadratic mesh (``MeshTet2``, isoparametric), P1 on a linear one
+    (``MeshTet1``, straight facets).
 
     Parameters
     ----------
-    mesh : MeshTet2
-        Quadratic (isoparametric) tetrahedral mesh.
+    mesh : MeshTet1 or MeshTet2
+        Linear or quadratic (isoparametric) tetrahedral mesh; it sets the element order.
     lam, mu : float
         Lame parameters (consistent units).
     density : float, optional
@@ -52,9 +55,10 @@ def elasticity_matrices(
     K, M : csr_matrix
         In the numbering of ``vector_basis``.
     vector_basis : Basis
-        ``Basis(mesh, ElementVector(ElementTetP2()))`` of that numbering.
+        ``Basis(mesh, ElementVector(ElementTetP2()))`` (or P1) of that numbering.
     """
-    scalar = Basis(mesh, ElementTetP2(), intorder=intorder)
+    element = ElementTetP2() if isinstance(mesh, MeshTet2) else ElementTetP1()
+    scalar = Basis(mesh, element, intorder=intorder)
     nloc = len(scalar.basis)
     size = 3 * scalar.N
     eye = np.eye(3)
@@ -81,4 +85,4 @@ def elasticity_matrices(
         cols = np.tile(vdofs, (1, 3 * nloc)).ravel()
         k = k + coo_matrix((k_local.ravel(), (rows, cols)), shape=(size, size)).tocsr()
         m = m + coo_matrix((m_local.ravel(), (rows, cols)), shape=(size, size)).tocsr()
-    return k.tocsr(), m.tocsr(), Basis(mesh, ElementVector(ElementTetP2()), intorder=intorder)
+    return k.tocsr(), m.tocsr(), Basis(mesh, ElementVector(element), intorder=intorder)

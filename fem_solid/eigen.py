@@ -36,7 +36,7 @@ import numpy as np
 from scipy.sparse.linalg import LinearOperator, eigsh, splu
 from scipy.special import eval_legendre, lpmv, sph_harm_y_all
 from skfem import Basis, ElementTriP2, ElementVector, FacetBasis, asm
-from skfem.mesh import MeshTet2, MeshTri2
+from skfem.mesh import MeshTet1, MeshTet2, MeshTri2
 from twoball.fem_solid.assembly import elasticity_matrices
 from twoball.fem_solid.forms import axisymmetric_elasticity, axisymmetric_mass, lame
 
@@ -305,7 +305,7 @@ def vsh_content(
 
 
 def ball_eigen(
-    mesh: MeshTet2,
+    mesh: MeshTet2 | MeshTet1,
     poisson: float,
     count: int,
     *,
@@ -313,7 +313,7 @@ def ball_eigen(
     max_degree: int = 12,
     rigid_tol: float = 1e-8,
 ) -> SolidEigen:
-    """Lowest ``count`` eigenpairs of 3-D linear elasticity on a P2 tetrahedral ball.
+    """Lowest ``count`` eigenpairs of 3-D linear elasticity on a P2 (or P1) tetrahedral ball.
 
     The six rigid modes (three translations, three rotations) come first with
     eigenvalue ~0; translations classify as spheroidal degree 1, rotations as
@@ -321,8 +321,9 @@ def ball_eigen(
 
     Parameters
     ----------
-    mesh : MeshTet2
-        :func:`~twoball.fem_solid.mesh.ball` or :func:`~twoball.fem_solid.mesh.ball_gmsh`.
+    mesh : MeshTet2 or MeshTet1
+        :func:`~twoball.fem_solid.mesh.ball` or :func:`~twoball.fem_solid.mesh.ball_gmsh`
+        (P2, curved facets), or their ``linear`` vertices (P1, straight facets).
     poisson : float
         Poisson's ratio, in (-1, 0.5).
     count : int

@@ -17,7 +17,15 @@ from skfem import MeshTet1, MeshTet2, MeshTri1, MeshTri2
 
 from twoball._common.errors import ParameterError
 
-__all__ = ["ball", "ball_gmsh", "circle_error", "half_annulus", "half_disc", "half_disc_gmsh"]
+__all__ = [
+    "ball",
+    "ball_gmsh",
+    "circle_error",
+    "half_annulus",
+    "half_disc",
+    "half_disc_gmsh",
+    "linear",
+]
 
 _AXIS_TOL = 1e-12
 
@@ -109,6 +117,11 @@ def circle_error(mesh: MeshTri2 | MeshTet2, radii: tuple[float, ...] = (1.0,)) -
         x = x[:, x[0] > _AXIS_TOL]
     radius = np.linalg.norm(x, axis=0)
     return float(np.min(np.abs(radius[:, None] - np.asarray(radii)[None, :]), axis=1).max())
+
+
+def linear(mesh: MeshTet2) -> MeshTet1:
+    """The P1 mesh of a quadratic ball's vertices (straight facets, vertices on the sphere)."""
+    return MeshTet1(np.ascontiguousarray(mesh.p[:, : mesh.nvertices]), mesh.t)
 
 
 def ball(level: int) -> MeshTet2:

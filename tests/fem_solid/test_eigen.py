@@ -204,3 +204,32 @@ def test_unit_modal_mass_three_d():
     volume = gram[0, 0]
     assert volume == pytest.approx(4 * math.pi / 3, rel=5e-2)  # the coarse mesh's volume
     np.testing.assert_allclose(gram / volume, np.eye(12), atol=1e-9)
+
+
+def test_three_d_p1_ball():
+    """P1 tetrahedra on the same ball's vertices: six rigid modes, the n = 2 multiplets, and
+    the spheroidal n = 2 eigenvalue above Lamb's (conforming P1 is stiffer) within 25 %."""
+    from twoball.fem_solid.mesh import linear
+
+    e = ball_eigen(linear(ball(2)), NU, 16, max_degree=4)
+    kinds = np.array(e.kind)
+    assert e.rigid.sum() == 6
+    sph2 = e.eigenvalues[(kinds == "spheroidal") & (e.degree == 2) & (e.radial_order == 1)]
+    assert len(sph2) == 5
+    assert np.all((sph2 / lamb(2, 1) ** 2 - 1 > 0) & (sph2 / lamb(2, 1) ** 2 - 1 < 0.25))
+
+
+@pytest.mark.slow
+def test_three_d_p1_rate():
+    """P1 levels 2 -> 3 -> 4: the n = 2 eta^2 error falls by 2.84 and 2.76 (measured; order
+    1.5, not yet the asymptotic 2 on these meshes); the band [1.2, 2.2] holds both steps."""
+    from twoball.fem_solid.mesh import linear
+
+    errors = []
+    for level in (2, 3, 4):
+        e = ball_eigen(linear(ball(level)), NU, 16, max_degree=4)
+        kinds = np.array(e.kind)
+        sph2 = e.eigenvalues[(kinds == "spheroidal") & (e.degree == 2) & (e.radial_order == 1)]
+        errors.append(abs(sph2.mean() - lamb(2, 1) ** 2))
+    orders = np.log2(np.array(errors[:-1]) / np.array(errors[1:]))
+    assert np.all((orders > 1.2) & (orders < 2.2)), orders
