@@ -74,7 +74,6 @@ def fe_shell_ball(
     Dimensionless (R, 1/c, m).  Floor points: the nodes with phi > pi/2.
     """
     import numpy as np
-
     from twoball.fem_shell.modes import fem_shell_modes
     from twoball.modal.balls.shell import shell_description
 
