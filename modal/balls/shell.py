@@ -202,11 +202,11 @@ class Wall:
         h = self.thickness_m(case)
         return None if h == 0.0 else self.stiffness(case) * (1.0 - self.poisson**2) / h
 
-    def parameters(self, case: Case) -> ShellParameters:
+    def parameters(self, case: Case, gas: str | None = None) -> ShellParameters:
         """The dimensionless shell of ``case``: nu, ``beta_h``, ``p = N0 / C`` and the gas g.
 
-        The gas ``g = 3 kappa (P + P_atm) R / C`` of the case's gas law (kappa of
-        :data:`twoball.modal.stiffness.GAS_MODELS`).
+        The gas ``g = 3 kappa (P + P_atm) R / C`` of the case's gas law, or of
+        ``gas`` when given (kappa of :data:`twoball.modal.stiffness.GAS_MODELS`).
 
         Raises
         ------
@@ -226,7 +226,10 @@ class Wall:
                 self.thickness_m(case),
             )
         stiffness = self.stiffness(case)
-        kappa = GAS_MODELS[case.gas]
+        law = case.gas if gas is None else gas
+        if law not in GAS_MODELS:
+            raise ParameterError("gas", "one of " + ", ".join(GAS_MODELS), law)
+        kappa = GAS_MODELS[law]
         absolute = float(case.pressure) + case.atmosphere
         try:
             return ShellParameters(
