@@ -112,7 +112,7 @@ class Wall:
     >>> import twoball
     >>> twoball.Wall(youngs_modulus=6e6, thickness=3.2e-3).as_dict()["poisson"]
     0.5
-    >>> twoball.Wall(wall_stiffness_ratio=5.0, thickness_ratio=0.03).dimensionless
+    >>> twoball.Wall(wall_stiffness_ratio=4.0, thickness_ratio=0.03).dimensionless
     True
     >>> twoball.Wall(youngs_modulus=6e6)
     Traceback (most recent call last):
@@ -288,8 +288,12 @@ class Wall:
 
 
 #: The basketball's default wall stiffness ratio C / N0 (docs/shell.rst, "The
-#: basketball's wall": the range the paper's own timing and contact angle allow).
-BASKETBALL_WALL_RATIO = 3.0
+#: basketball's wall"): ``2 / (1 - nu)`` with nu = 1/2, the wall whose lower branch
+#: is the pressurised membrane's ``(n - 1)(n + 2) c^2`` at every degree (without
+#: bending; within 0.2-0.9 % for n = 2..5 with h/R = 1/30), so the c = 320 1/s
+#: that the paper's own data fit stays the ball's; inside the range those data
+#: allow (C/N0 in [0.53, 6.0]: c of degree 2 within Fig. 10's 220-350 1/s).
+BASKETBALL_WALL_RATIO = 4.0
 #: The basketball's assumed wall: 4 mm on R = 0.12 m.
 BASKETBALL_THICKNESS_RATIO = 4.0e-3 / 0.12
 
@@ -307,15 +311,16 @@ WALLS: dict[str, Wall] = {
         wall_stiffness_ratio=BASKETBALL_WALL_RATIO,
         thickness_ratio=BASKETBALL_THICKNESS_RATIO,
         poisson=0.5,
-        source="a stated choice, not measured (the paper gives no wall): C/N0 = 3 inside the "
-        "range its own contact angles (Fig. 10, Table 2) and lift-off times (Fig. 9, "
-        "t_l = 9-14 ms) allow (docs/shell.rst); h = 4 mm and nu = 0.5 assumed",
+        source="a stated choice, not measured (the paper gives no wall): C/N0 = 2/(1 - nu) = "
+        "4, the wall whose lower branch is the pressurised membrane's spectrum, keeping the "
+        "c = 320 1/s the paper's data fit (Fig. 10, Table 2), inside the range those data "
+        "allow (docs/shell.rst); h = 4 mm and nu = 0.5 assumed",
     ),
     "volleyball": Wall(
         wall_stiffness_ratio=BASKETBALL_WALL_RATIO,
         thickness_ratio=BASKETBALL_THICKNESS_RATIO,
         poisson=0.5,
-        source="no measured wall: the basketball's stated C/N0 = 3 and h/R = 1/30 (h = 3.5 "
+        source="no measured wall: the basketball's stated C/N0 = 4 and h/R = 1/30 (h = 3.5 "
         "mm), both pressurised bladders under a cover",
     ),
 }

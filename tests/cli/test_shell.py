@@ -17,7 +17,7 @@ def test_bounce_with_the_shell_reports_the_wall(capsys):
     assert data["e2"] == api["e2"] and data["contact_time_s"] == api["contact_time_s"]
     model = data["model"]
     assert model["ball"] == "shell" and model["resolution"] == "shell legendre N = 16"
-    assert model["wall"]["wall_stiffness_ratio"] == pytest.approx(3.0)
+    assert model["wall"]["wall_stiffness_ratio"] == pytest.approx(4.0)
     assert (
         model["in_plane_arrival_s"]
         < model["pressure_wave_arrival_s"]

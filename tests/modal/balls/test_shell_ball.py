@@ -206,8 +206,8 @@ def test_the_json_has_the_membranes_keys_and_the_wall():
     assert set(membrane["model"]) <= set(shell["model"])
     model = shell["model"]
     wall = model["wall"]
-    assert wall["wall_stiffness_ratio"] == pytest.approx(3.0)  # the basketball's stated wall
-    assert model["in_plane_arrival_s"] == pytest.approx(math.pi / (320.0 * math.sqrt(3.0)))
+    assert wall["wall_stiffness_ratio"] == pytest.approx(4.0)  # the basketball's stated wall
+    assert model["in_plane_arrival_s"] == pytest.approx(math.pi / (320.0 * math.sqrt(4.0)))
     assert model["pressure_wave_arrival_s"] == pytest.approx(math.pi / 320.0)
     assert shell["mass_kg"] == pytest.approx(membrane["mass_kg"])
 
