@@ -97,5 +97,18 @@ def _verb_docstring(app, what, name, obj, options, lines) -> None:  # noqa: ANN0
         lines[:] = inspect.getdoc(verify).splitlines()
 
 
+def _shell_figures(app) -> None:  # noqa: ANN001
+    """Draw docs/_static/shell/causality.png (docs/shell.rst) anew at every build."""
+    import importlib.util
+
+    spec = importlib.util.spec_from_file_location(
+        "make_shell_figures", Path(__file__).resolve().parent / "make_shell_figures.py"
+    )
+    module = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(module)
+    module.main()
+
+
 def setup(app):  # noqa: ANN001, ANN201
     app.connect("autodoc-process-docstring", _verb_docstring, priority=100)
+    app.connect("builder-inited", _shell_figures)

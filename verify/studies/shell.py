@@ -56,6 +56,7 @@ __all__ = [
     "allowed_range",
     "causality",
     "main",
+    "responses",
     "shell_run",
 ]
 
@@ -248,6 +249,9 @@ def without_gas(ball: Any) -> Any:
         def size(self, case: Case) -> Any:
             return self.inner.size(case)
 
+        def summary(self, case: Case) -> dict[str, Any]:
+            return self.inner.summary(case)
+
         def describe(self, case: Case, monitor: Any = None) -> Any:
             b = self.inner.describe(case, monitor)
             w2 = b.omega_squared - b.gas_squared
@@ -259,12 +263,28 @@ def without_gas(ball: Any) -> Any:
     return WithoutGas(ball)
 
 
+def responses(
+    ball: Any, name: str = "basketball", cap: float | None = 0.0262, damping: float = 0.0
+) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """After the first floor touch: times [s], the top's and the centre's vertical
+    displacements [m] from the free fall the floor interrupts (``cap``: the mean over a
+    contact cap of that radius [m]; None: the pole)."""
+    run = shell_run(ball=ball, case=Case.preset(name), damping=damping)
+    result, description = run.result, run.result.system.ball
+    trajectory = result.trajectory
+    c, t = description.centre, trajectory.t
+    q = trajectory.q[:, : description.modes].copy()
+    q[:, c] -= q[0, c] - result.settings.v0 * t - 0.5 * result.settings.gamma * t * t
+    radius = run.case.radius
+    row = description.top if cap is None else description.cap_average(math.asin(cap / radius))
+    return t / run.case.wave_speed, (q @ row) * radius, q[:, c] * radius
+
+
 def causality(
     ball: Any, name: str = "basketball", cap: float | None = 0.0262, damping: float = 0.0
 ) -> tuple[np.ndarray, np.ndarray, float]:
-    """Times (units ``pi R / c_e`` of the basketball's default wall... of ``ball``'s wall, or
-    ``pi / c`` for a membrane), the top's vertical displacement over the centre's, and that
-    time unit [s]."""
+    """Times in units of the arrival time (``pi R / c_e`` for a shell, ``pi / c`` for a
+    membrane), the top's vertical displacement over the centre's, and that unit [s]."""
     run = shell_run(ball=ball, case=Case.preset(name), damping=damping)
     result, description = run.result, run.result.system.ball
     trajectory = result.trajectory
