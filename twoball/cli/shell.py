@@ -308,7 +308,7 @@ def shell_eigen_arguments(args: argparse.Namespace) -> dict[str, Any]:
         if args.preset is None and not physical_wall and args.wall_stiffness_ratio is None:
             raise ParameterError("wall_stiffness_ratio", "given (a wall for this ball)", None)
     else:
-        from twoball.modal.presets import MEASURED
+        from twoball._lookup import MEASURED
 
         if args.preset not in MEASURED:
             raise ParameterError("preset", "one of " + ", ".join(MEASURED), args.preset)

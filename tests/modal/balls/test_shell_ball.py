@@ -239,9 +239,15 @@ AGREEMENT = [
 @pytest.mark.slow
 @pytest.mark.parametrize(("preset", "pair", "gap"), AGREEMENT)
 def test_the_backends_agree_to_1e3(preset, pair, gap):
-    """Legendre N = 256 and P2 on 128 elements: t_c, e2, v1, v2, t_l within 1e-3."""
+    """Legendre N = 256 and P2 on 192 elements: t_c, e2, v1, v2, t_l within 1e-3.
+
+    e2 of the whole bounce at 50 mm (the floor release while the body strikes) jumps
+    by ~1e-3 with the floor point released last: P2 on 64, 128, 192 elements give
+    0.71890, 0.71876, 0.71785 against Legendre 0.71793, 0.71792, 0.71773 (N = 128,
+    256, 384).
+    """
     runs = []
-    for ball in (ShellBall(modes=256), FEShellBall(elements=128)):
+    for ball in (ShellBall(modes=256), FEShellBall(elements=192)):
         given = {"pair": pair} if pair else {"case": _case(preset)}
         solver = twoball.MoreauJean(ball)
         runs.append(twoball.bounce(drop=twoball.Drop(gap=gap), solver=solver, **given))
