@@ -87,8 +87,7 @@ def main(argv: list[str] | None = None) -> int:
         q1, q3 = np.percentile(wall, [25, 75])
         shown = "" if target is None else f"{target:g}"
         print(
-            f"| {label} | {np.median(wall):.2f} | {q3 - q1:.2f} | {np.median(cpu):.2f} | "
-            f"{shown} |",
+            f"| {label} | {np.median(wall):.2f} | {q3 - q1:.2f} | {np.median(cpu):.2f} | {shown} |",
             flush=True,
         )
     report = twoball.bounce(pair=PAIR, solver=twoball.MoreauJean(twoball.ShellBall()))

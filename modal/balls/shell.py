@@ -290,7 +290,7 @@ class Wall:
 #: The basketball's default wall stiffness ratio C / N0 (docs/shell.rst, "The
 #: basketball's wall"): ``2 / (1 - nu)`` with nu = 1/2, the wall whose lower branch
 #: is the pressurised membrane's ``(n - 1)(n + 2) c^2`` at every degree (without
-#: bending; within 0.2-0.9 % for n = 2..5 with h/R = 1/30), so the c = 320 1/s
+#: bending; within 0.1-0.9 % for n = 2..5 with h/R = 1/30), so the c = 320 1/s
 #: that the paper's own data fit stays the ball's; inside the range those data
 #: allow (C/N0 in [0.53, 6.0]: c of degree 2 within Fig. 10's 220-350 1/s).
 BASKETBALL_WALL_RATIO = 4.0
