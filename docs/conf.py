@@ -86,3 +86,19 @@ sphinx_gallery_conf = {
     "min_reported_time": 10**9,  # no wall-clock times on the pages
     "write_computation_times": False,
 }
+
+
+def _shell_figures(app) -> None:  # noqa: ANN001
+    """Draw docs/_static/shell/causality.png (docs/shell.rst) anew at every build."""
+    import importlib.util
+
+    spec = importlib.util.spec_from_file_location(
+        "make_shell_figures", Path(__file__).resolve().parent / "make_shell_figures.py"
+    )
+    module = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(module)
+    module.main()
+
+
+def setup(app):  # noqa: ANN001, ANN201
+    app.connect("builder-inited", _shell_figures)

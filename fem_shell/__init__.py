@@ -13,6 +13,7 @@ from twoball._common.lazy import attach
 __getattr__, __dir__ = attach(
     __name__,
     {
+        "FEShellBall": ".ball",
         "ShellSpace": ".space",
         "shell_space": ".space",
         "ShellFEModes": ".modes",

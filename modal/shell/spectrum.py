@@ -19,7 +19,7 @@ and meridional displacement v(phi) (towards increasing phi), ``' = d/dphi``:
   does not enter); ``U_gas = kappa P_abs (dV)^2 / (2 V)``, ``dV = int w dA``;
 * kinetic energy ``(rho_s / 2) int (w_t^2 + v_t^2) dA``, ``dA = 2 pi R^2 sin(phi) dphi``.
 
-Derivation (every step; ``docs/shell_derivation.md`` has the same with more words)
+Derivation (every step; docs/shell.rst has the same with more words)
 ----------------------------------------------------------------------------------
 1. Trial fields ``w = W P_n(cos phi)``, ``v = V P_n'`` with ``P_n' = dP_n/dphi``
    and ``lambda = n (n + 1)``.  Write ``a = P_n''``, ``b = cot(phi) P_n'``.
@@ -97,7 +97,7 @@ Checks and limits
   branch for this limit: the lower branch is the radial-like one only while C is
   large against N0; the two branches never cross (the coupling
   ``k12 = -lambda (1 + nu) - beta_h L`` is never 0) and exchange character near
-  ``C / N0 ~ 1`` (``docs/shell_derivation.md`` has the numbers).
+  ``C / N0 ~ 1`` (docs/shell.rst has the numbers).
 
 Everything here is dimensionless (units of :mod:`twoball.modal.shell.parameters`).
 """
