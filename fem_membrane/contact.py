@@ -159,9 +159,10 @@ def fem_contact_solution(
     elements), no mesh file.  The model holds the eigenvectors the contact
     solver moved (fields of :mod:`twoball.fem_membrane.contact_fields`).
     ``monitor`` (:class:`~twoball._common.monitor.Monitor`) is told as the model,
-    the contact solver and its closed-form reference run; it may stop them.
+    the contact solver and its closed-form reference run; it may stop them.  Its
+    cost (:func:`twoball.fem_membrane.cost.fem_contact_work`) is the caller's to
+    check before.
     """
-    from twoball.fem_membrane.cost import check_fem
     from twoball.fem_membrane.options import MeshOptions
     from twoball.modal.contact.caps import cap_angle
     from twoball.modal.contact.report import check_contact_options, membrane_case, solve_contact
@@ -172,17 +173,7 @@ def fem_contact_solution(
     spec = MeshOptions.of(mesh).require(files=False)
     if spec.geometry != "isoparametric":
         raise ParameterError("geometry", "isoparametric with a body of finite mass", spec.geometry)
-    check_fem(spec.kind, spec.level, spec.elements, spec.order, case.modes, "full")
     t_end = t_end_dimensionless(case, t_end_s)
-    if body.mass_ratio > 0.0:  # the event loop on every FE mode below the cutoff
-        from twoball.fem_membrane.cost import fem_dofs
-        from twoball.modal.contact.cost import check_contact
-        from twoball.modal.cost import legendre_omega
-
-        dofs = fem_dofs(spec.kind, spec.level, spec.elements, spec.order)
-        pairs = case.modes + 1 if spec.kind == "axisym" else (case.modes + 1) ** 2
-        top = legendre_omega(case.modes + 1)  # the cutoff lies between N and N + 1
-        check_contact(min(dofs, pairs), top, t_end, modes=case.modes, mass_ratio=body.mass_ratio)
     membrane = membrane_case(case, body.mass_ratio, body.energy)
     theta = cap_angle(radius, case.radius)
     model, contact, info = fem_contact_model(

@@ -125,10 +125,12 @@ def liftoff(
     else:
         _refuse_fem_options(given)
         from twoball._common.watch import Watch
+        from twoball._costs import check_legendre_liftoff
         from twoball.modal.report import legendre_liftoff
 
         if progress is not None:  # the truncation guard's reference may take a while
             progress(f"the closed form on {case.modes} Legendre modes")
+        check_legendre_liftoff(case, t_end)
         report = legendre_liftoff(case, sigma, recontact, t_end, monitor=Watch())
     from twoball._common.provenance import block
 
@@ -154,6 +156,7 @@ def _contact_liftoff(
             "recontact", "window with mass_ratio (events are simulated)", recontact
         )
     from twoball._common.watch import Watch
+    from twoball._costs import check_fem_contact, check_legendre_contact
 
     if backend == "fem":
         if given.stepping is not None:
@@ -166,6 +169,7 @@ def _contact_liftoff(
             raise ParameterError("pole", "left out with mass_ratio (no mesh file)", mesh.pole)
         if progress is not None:
             progress(f"finite elements on {mesh.label} (full eigen route) and the contact solver")
+        check_fem_contact(case, given.body, mesh, _t_end(given))
         _, report = fem_contact_solution(
             case, given.body, mesh, sigma=sigma, t_end_s=_t_end(given), monitor=Watch()
         )
@@ -175,7 +179,7 @@ def _contact_liftoff(
 
     if progress is not None:
         progress(f"the contact solver on {case.modes + 1} Legendre modes")
-
+    check_legendre_contact(case, given.body, _t_end(given))
     return legendre_contact(case, given.body, sigma=sigma, t_end_s=_t_end(given), monitor=Watch())
 
 

@@ -112,9 +112,9 @@ def solve(
         from twoball.fem_membrane.validate import check_dt_in_window
 
         dt_scaled = check_dt_in_window(dt, case.scalings.time, t_end_dimensionless(case, t_end))
-    if spec.kind != "file":  # the budget in the user's units (the model layer checks again)
-        from twoball.fem_membrane.cost import check_fem
+    from twoball._costs import check_fem
 
+    if spec.kind != "file":  # the budget in the user's units, before any work
         check_fem(
             spec.kind,
             spec.level,
@@ -131,6 +131,18 @@ def solve(
     say(f"finite elements on {spec.label}: mesh, assembly, eigenpairs")
     started = clock.perf_counter()
     loaded = spec.load()  # the user's mesh, checked, on the unit sphere (None for a kind)
+    if loaded is not None:  # a user's mesh: its size is known once it is read
+        check_fem(
+            loaded.mesh,
+            spec.level,
+            spec.elements,
+            None,
+            case.modes,
+            "auto" if route is None else route,
+            scheme=scheme,
+            dt=dt_scaled,
+            t_end=t_end_dimensionless(case, t_end),
+        )
     motion, info = fem_pole_motion(
         case.phi_a,
         case.damping,

@@ -292,17 +292,11 @@ def solve_contact(
 
     ``monitor`` (:class:`~twoball._common.monitor.Monitor`) is told as the event
     loop (or, for the massless mode, the series at the cap) runs; it may stop it.
+    Its cost (:func:`twoball.modal.contact.cost.solve_work`) is the caller's to
+    check before.
     """
-    from twoball.modal.contact.cost import check_contact
-
     system = None
-    kept, top = len(series.omega), float(np.max(series.omega, initial=0.0))
     if mass_ratio == 0.0:
-        from twoball.modal.cost import series_estimate
-
-        from twoball._common.budget import check, options
-
-        check(options(modes=case.modes), series_estimate(case.modes, t_end, kept, top))
         cap_series = ModalSeries(
             series.omega,
             series.coefficients,
@@ -315,7 +309,6 @@ def solve_contact(
         result = find_liftoff(cap_series, case.gamma, t_end=t_end)
         history = None
     else:
-        check_contact(kept, top, t_end, modes=case.modes, mass_ratio=mass_ratio)
         system = ContactSystem.from_series(series, contact, mass_ratio, case.gamma)
         history = integrate(system, t_end, restitution, samples_per_period, monitor)
         result = None
