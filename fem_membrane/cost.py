@@ -7,17 +7,21 @@ the Krylov route measured 187 / 312 and 159 / 283 MiB, 1.5 / 3.4 and 1.6 /
 171 MiB and 8 s (``+ 3 us x DOFs x (N + 1)^2``); generalized-alpha on P2 L2 /
 L3 and the 8001-node line 2.4 / 17 / 8 ms per step (``0.3 ms + 1 us x DOFs +
 5 ns x DOFs x modes``).
+
+The model only estimates; whether the work fits is decided at the edge, before
+it starts (:func:`twoball._costs.check_fem`, :func:`twoball._costs.check_fem_contact`).
 """
 
 from __future__ import annotations
 
 import math
+from typing import Any
 
 from twoball.modal.cost import legendre_omega
 
-from twoball._common.budget import BASE_MEMORY, Estimate, KiB, check, options
+from twoball._common.estimate import BASE_MEMORY, Estimate, KiB, options
 
-__all__ = ["alpha_estimate", "check_fem", "fem_dofs", "fem_estimate"]
+__all__ = ["alpha_estimate", "fem_contact_work", "fem_dofs", "fem_estimate", "fem_work"]
 
 FE_BYTES_PER_DOF = 20 * KiB  # Krylov basis, LU fill, mesh and assembly (P1/P2, L3-L5)
 #: Address space mapped per DOF on a sphere, by order: SuperLU reserves (calloc) its fill
@@ -93,11 +97,11 @@ def alpha_estimate(dofs: int, pairs: int, t_end: float, dt: float) -> Estimate:
     return Estimate(BASE_MEMORY + STEP_BYTES * steps + 8.0 * dofs * pairs, steps * per_step)
 
 
-def check_fem(
-    mesh: str,
+def fem_work(
+    mesh: Any,
     level: int | None,
     elements: int | None,
-    order: int,
+    order: int | None,
     modes: int,
     route: str,
     *,
@@ -106,11 +110,16 @@ def check_fem(
     t_end: float = 4.0 * math.pi,
     step_accuracy: float = 0.2,
     time_unit_s: float | None = None,
-) -> Estimate:
-    """Refuse a finite-element run (mesh, eigen solve, and stepping for ``alpha``) that cannot fit.
+) -> list[tuple[str, Estimate]]:
+    """A finite-element run: mesh and eigen solve, then for ``alpha`` the stepping too.
 
-    ``dt`` and ``t_end`` are dimensionless; ``time_unit_s`` (1/c in seconds) only
-    turns dt back into seconds, as the user gave it, for the message.
+    Each stage is named by the options that set its size (``level 9 order 2``,
+    ``dt 1e-09``) with its estimate, the stepping's including the eigen solve
+    before it; the edge refuses the run if a stage cannot fit
+    (:func:`twoball._costs.check_fem`).  ``mesh`` a kind name or a
+    :class:`~twoball.fem_membrane.mesh.SphereMesh`.  ``dt`` and ``t_end`` are
+    dimensionless; ``time_unit_s`` (1/c in seconds) only turns dt back into
+    seconds, as the user gave it, for the name.
     """
     dofs = fem_dofs(mesh, level, elements, order)
     dimension = 1 if mesh == "axisym" else 2
@@ -120,9 +129,9 @@ def check_fem(
         route = "full"
     size = options(level=level, elements=elements, order=order) or "the finite-element mesh"
     fe_order = order if order is not None else getattr(mesh, "order", 2)
-    estimate = check(size, fem_estimate(dofs, modes, route, dimension, fe_order))
+    estimate = fem_estimate(dofs, modes, route, dimension, fe_order)
     if scheme != "alpha":
-        return estimate
+        return [(size, estimate)]
     omega_cut = 0.5 * (legendre_omega(modes) + legendre_omega(modes + 1))
     step = dt if dt is not None else step_accuracy / omega_cut
     pairs = (modes + 1) ** 2 if dimension == 2 else modes + 1
@@ -132,4 +141,37 @@ def check_fem(
         option = f"dt (dt c = {dt:.3g})"
     else:
         option = options(dt=dt * time_unit_s)
-    return check(option, estimate + alpha_estimate(dofs, pairs, t_end, step))
+    return [(size, estimate), (option, estimate + alpha_estimate(dofs, pairs, t_end, step))]
+
+
+def fem_contact_work(
+    case: Any, body: Any, mesh: Any = None, t_end_s: float | None = None
+) -> list[tuple[str, Estimate]]:
+    """The work of :func:`twoball.fem_membrane.contact.fem_contact_solution`, with its costs.
+
+    The mesh and the full eigen route, the contact solver on every mode below the
+    cutoff (at most ``(N + 1)^2`` on a sphere, ``N + 1`` on the line, up to
+    ``omega_{N+1}``: an upper bound of the modes it finds), and the closed-form
+    reference of its truncation block
+    (:func:`twoball.modal.contact.cost.legendre_contact_work`).  The options of
+    ``body``, ``mesh`` and the window ``t_end_s`` [s] are checked first, as the
+    solve checks them.
+    """
+    from twoball.fem_membrane.options import MeshOptions
+    from twoball.modal.contact.cost import legendre_contact_work, solve_work
+    from twoball.modal.contact.report import check_contact_options
+    from twoball.modal.report import t_end_dimensionless
+
+    from twoball._common.errors import ParameterError
+
+    check_contact_options(case, body)
+    spec = MeshOptions.of(mesh).require(files=False)
+    if spec.geometry != "isoparametric":
+        raise ParameterError("geometry", "isoparametric with a body of finite mass", spec.geometry)
+    work = fem_work(spec.kind, spec.level, spec.elements, spec.order, case.modes, "full")
+    t_end = t_end_dimensionless(case, t_end_s)
+    dofs = fem_dofs(spec.kind, spec.level, spec.elements, spec.order)
+    pairs = case.modes + 1 if spec.kind == "axisym" else (case.modes + 1) ** 2
+    top = legendre_omega(case.modes + 1)  # the cutoff lies between N and N + 1
+    work.append(solve_work(case.modes, min(dofs, pairs), top, t_end, body.mass_ratio))
+    return work + legendre_contact_work(case, body, t_end_s)[1:]

@@ -29,7 +29,6 @@ from typing import Any
 import numpy as np
 from twoball.fem_membrane.alpha import GeneralizedAlpha, automatic_step
 from twoball.fem_membrane.build import build_space
-from twoball.fem_membrane.cost import check_fem
 from twoball.fem_membrane.damping import ModalDamping, rayleigh_matrix, rayleigh_table
 from twoball.fem_membrane.eigen import Eigenpairs, eigenpairs
 from twoball.fem_membrane.initial import initial_moments
@@ -130,14 +129,14 @@ def modal_model(
     ``monitor`` (:class:`~twoball._common.monitor.Monitor`) is told as each stage
     starts (assembly, initial displacement, eigenpairs), within the eigen solve or
     the Krylov iteration, and by the series (:attr:`ModalSeries.monitor`); it may
-    stop the work by raising.
+    stop the work by raising.  Its cost (:func:`twoball.fem_membrane.cost.fem_work`)
+    is the caller's to check before.
     """
     phi_a = check_phi_a(phi_a)
     damping = check_law(damping)
     filter = as_filter(filter)
     initial = check_choice("initial", initial, INITIAL_METHODS)
     seconds = {}
-    check_fem(mesh, level, elements, order, filter.modes, route)  # before any allocation
     say = monitor if monitor is not None else silent
     start = clock.perf_counter()
     say("mesh and assembly")
@@ -312,7 +311,9 @@ def fem_pole_motion(
 
     Solves eq. (3.9) with modal damping ratio D (eq. (3.14)) from the initial
     displacement F of eq. (3.10), Galerkin-projected (the discrete eq. (3.12)),
-    filtered by frequency as in eq. (3.16).
+    filtered by frequency as in eq. (3.16).  Its cost
+    (:func:`twoball.fem_membrane.cost.fem_work` with the scheme, step and window)
+    is the caller's to check before.
 
     Parameters
     ----------
@@ -392,7 +393,6 @@ def fem_pole_motion(
             raise ParameterError("route", "full or auto when scheme is alpha", route)
         route = "full"  # time stepping needs the eigenvectors for damping and filtering
     modes = as_filter(filter).modes
-    check_fem(mesh, level, elements, order, modes, route, scheme=scheme, dt=dt, t_end=t_end)
     ratio = None if isinstance(damping, Rayleigh) else float(check_law(damping))
     law, band = resolve_law(damping, damping_model, rayleigh, as_filter(filter, modes), stiffness)
     if isinstance(law, Rayleigh):

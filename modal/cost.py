@@ -14,6 +14,10 @@ With bending, ``omega_N ~ sqrt(beta) N^2`` sets the grid instead of ``N``
 reference of the truncation guard (:func:`reference_estimate`) sums, at each
 time, only the modes not yet decayed (:class:`twoball.modal.decay.DecayingSeries`):
 its cost grows like N, not N^2.
+
+The model only estimates; whether the work fits is decided at the edge, before
+it starts (:func:`twoball._costs.check_series`, against the budget of
+:mod:`twoball._common.budget`).
 """
 
 from __future__ import annotations
@@ -22,17 +26,19 @@ import math
 
 import numpy as np
 from twoball.modal.legendre import MAX_QUADRATURE
+from twoball.modal.parameters import Case
 from twoball.modal.series import CHUNK
 from twoball.modal.stiffness import Stiffness
 
-from twoball._common.budget import BASE_MEMORY, Estimate, check, options
+from twoball._common.estimate import BASE_MEMORY, Estimate, options
 
 __all__ = [
-    "check_series",
+    "case_liftoff_work",
     "decaying_memory",
     "decaying_work",
     "grid_samples",
     "legendre_omega",
+    "liftoff_work",
     "reference_estimate",
     "series_estimate",
 ]
@@ -160,20 +166,39 @@ def reference_estimate(
     return Estimate(BASE_MEMORY + memory, seconds)
 
 
-def check_series(
+def liftoff_work(
     modes: int,
     t_end: float,
     t_end_s: float | None = None,
     damping: float = 0.13,
     stiffness: Stiffness | None = None,
-) -> Estimate:
-    """Refuse a closed-form lift-off (N modes, window ``t_end`` dimensionless) that cannot fit.
+) -> tuple[str, Estimate]:
+    """A closed-form lift-off (N modes, window ``t_end`` dimensionless): what it is, its cost.
 
-    The truncation guard's converged reference over the same window is included;
-    ``stiffness`` as in :func:`reference_estimate`.
+    The text names the options that set its size (``modes 3000 t_end 0.01``;
+    ``t_end_s`` [s] only names the window); the estimate includes the truncation
+    guard's converged reference over the same window, ``stiffness`` as in
+    :func:`reference_estimate`.  The edge refuses it if it cannot fit
+    (:func:`twoball._costs.check_series`).
     """
     top = float(_omegas(modes, stiffness)[-1])
     estimate = series_estimate(modes, t_end, omega_max=top) + reference_estimate(
         t_end, modes, damping, stiffness
     )
-    return check(options(modes=int(modes), t_end=t_end_s), estimate)
+    return options(modes=int(modes), t_end=t_end_s), estimate
+
+
+def case_liftoff_work(case: Case, t_end_s: float | None = None) -> tuple[str, Estimate]:
+    """:func:`liftoff_work` of :func:`twoball.modal.report.legendre_liftoff` on ``case``.
+
+    ``t_end_s`` the window [s] (None: 4 pi / c), checked as the lift-off checks it.
+    """
+    from twoball.modal.report import t_end_dimensionless
+
+    return liftoff_work(
+        case.modes,
+        t_end_dimensionless(case, t_end_s),
+        t_end_s,
+        case.damping,
+        case.stiffness if case.stiff else None,
+    )

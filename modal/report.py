@@ -242,16 +242,10 @@ def legendre_liftoff(
 
     ``monitor`` (:class:`~twoball._common.monitor.Monitor`) is told as the series
     and the converged reference are evaluated; it may stop the work by raising.
+    Its cost (:func:`twoball.modal.cost.case_liftoff_work`) is the caller's to
+    check before (:func:`twoball._costs.check_series`).
     """
-    from twoball.modal.cost import check_series
-
-    check_series(
-        case.modes,
-        t_end_dimensionless(case, t_end_s),
-        t_end_s,
-        case.damping,
-        case.stiffness if case.stiff else None,
-    )
+    t_end_dimensionless(case, t_end_s)  # a bad window is refused before any work
     series = legendre_series(
         case.phi_a,
         case.damping_law,

@@ -1,23 +1,41 @@
-"""Refusals before work: each verb's cost estimate against the budget in force (the edge).
+"""The refusals before work: the cost models' estimates against the budget in force.
 
-The cost models sit beside what they estimate and only estimate
-(:mod:`twoball.modal.cost`, :mod:`twoball.fem_membrane.cost`,
-:mod:`twoball.modal.floor.cost`); whether the work fits is decided here, by
-the verbs, before anything is allocated (:func:`twoball._common.budget.check`:
-a :class:`~twoball._common.budget.BudgetError` names the work as it was asked
-for, ``modes 100000 t_end 1e+06``).  The deadline while the work runs is the
-monitor's (:class:`twoball._common.watch.Watch`).
+The cost models sit with the numerics they estimate and only estimate
+(:mod:`twoball.modal.cost`, :mod:`twoball.modal.contact.cost`,
+:mod:`twoball.fem_membrane.cost`): each names a piece of work by the options
+that set its size and gives its :class:`~twoball._common.estimate.Estimate`.
+Whether it fits is the edge's decision: the verbs call these functions before
+they hand the work to the numerics, which refuse nothing themselves, and
+:func:`twoball._common.budget.check` raises
+:class:`~twoball._common.budget.BudgetError` (exit status 2) above the limits::
+
+    modes 100000 needs ~15 GiB of memory; limit 11.7 GiB (raise the memory limit, max_memory)
+
+The verification layer, which cannot import the face, checks the same
+descriptions with :func:`twoball._common.budget.check_all`.
 """
 
 from __future__ import annotations
 
 import math
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
-from twoball._common.budget import check
-from twoball._common.estimate import Estimate, options
+from twoball._common.budget import check, check_all
+from twoball._common.estimate import Estimate
 
-__all__ = ["check_fem", "check_series", "check_stepped_contact"]
+if TYPE_CHECKING:
+    from twoball.modal.parameters import Case
+    from twoball.modal.stiffness import Stiffness
+
+__all__ = [
+    "check_contact",
+    "check_fem",
+    "check_fem_contact",
+    "check_legendre_contact",
+    "check_legendre_liftoff",
+    "check_series",
+    "check_stepped_contact",
+]
 
 
 def check_series(
@@ -25,27 +43,83 @@ def check_series(
     t_end: float,
     t_end_s: float | None = None,
     damping: float = 0.13,
-    stiffness: Any = None,
+    stiffness: Stiffness | None = None,
 ) -> Estimate:
-    """Refuse a closed-form lift-off (N modes, window ``t_end`` in units of 1/c) that cannot fit.
+    """Refuse a closed-form lift-off (N modes, window ``t_end`` dimensionless) that cannot fit.
 
     The truncation guard's converged reference over the same window is included;
-    ``stiffness`` (bending, gas) as in :func:`twoball.modal.cost.reference_estimate`.
+    ``stiffness`` as in :func:`twoball.modal.cost.reference_estimate`
+    (:func:`twoball.modal.cost.liftoff_work`).
     """
-    from twoball.modal.cost import legendre_top, reference_estimate, series_estimate
+    from twoball.modal.cost import liftoff_work
 
-    top = legendre_top(modes, stiffness)
-    estimate = series_estimate(modes, t_end, omega_max=top) + reference_estimate(
-        t_end, modes, damping, stiffness
+    return check(*liftoff_work(modes, t_end, t_end_s, damping, stiffness))
+
+
+def check_legendre_liftoff(case: Case, t_end_s: float | None = None) -> Estimate:
+    """:func:`check_series` of :func:`twoball.modal.report.legendre_liftoff` on ``case``.
+
+    ``t_end_s`` the window [s] (None: 4 pi / c), refused first if out of range.
+    """
+    from twoball.modal.cost import case_liftoff_work
+
+    return check(*case_liftoff_work(case, t_end_s))
+
+
+def check_contact(
+    modes_kept: int,
+    omega_max: float,
+    t_end: float,
+    *,
+    modes: int | None = None,
+    mass_ratio: float | None = None,
+    samples_per_period: int = 32,
+) -> Estimate:
+    """Refuse a contact run that cannot fit, naming the options that set its size.
+
+    ``modes`` (the case's N) and ``mass_ratio`` only name the work in the message
+    (:func:`twoball.modal.contact.cost.contact_work`).
+    """
+    from twoball.modal.contact.cost import contact_work
+
+    return check(
+        *contact_work(
+            modes_kept,
+            omega_max,
+            t_end,
+            modes=modes,
+            mass_ratio=mass_ratio,
+            samples_per_period=samples_per_period,
+        )
     )
-    return check(options(modes=int(modes), t_end=t_end_s), estimate)
+
+
+def check_legendre_contact(
+    case: Case,
+    body: Any,
+    t_end_s: float | None = None,
+    *,
+    samples_per_period: int = 32,
+    reference: bool = True,
+) -> Estimate | None:
+    """Refuse :func:`twoball.modal.contact.report.legendre_contact` if a solve cannot fit.
+
+    The contact solution and, with ``reference``, its closed-form reference
+    (:func:`twoball.modal.contact.cost.legendre_contact_work`).
+    """
+    from twoball.modal.contact.cost import legendre_contact_work
+
+    work = legendre_contact_work(
+        case, body, t_end_s, samples_per_period=samples_per_period, reference=reference
+    )
+    return check_all(work)
 
 
 def check_fem(
-    mesh: str,
+    mesh: Any,
     level: int | None,
     elements: int | None,
-    order: int,
+    order: int | None,
     modes: int,
     route: str,
     *,
@@ -55,35 +129,43 @@ def check_fem(
     step_accuracy: float = 0.2,
     time_unit_s: float | None = None,
 ) -> Estimate:
-    """Refuse finite elements (mesh, route, time scheme) that cannot fit the budget.
+    """Refuse a finite-element run (mesh, eigen solve, and stepping for ``alpha``) that cannot fit.
 
     ``dt`` and ``t_end`` are dimensionless; ``time_unit_s`` (1/c in seconds) only
-    turns dt back into seconds, as the user gave it, for the message.
+    turns dt back into seconds, as the user gave it, for the message
+    (:func:`twoball.fem_membrane.cost.fem_work`).
     """
-    from twoball.fem_membrane.cost import alpha_estimate, fem_dofs, fem_estimate
-    from twoball.modal.cost import legendre_omega
+    from twoball.fem_membrane.cost import fem_work
 
-    dofs = fem_dofs(mesh, level, elements, order)
-    dimension = 1 if mesh == "axisym" else 2
-    if route == "auto":
-        route = "krylov" if dofs >= 2000 else "full"
-    if scheme == "alpha":
-        route = "full"
-    size = options(level=level, elements=elements, order=order) or "the finite-element mesh"
-    fe_order = order if order is not None else getattr(mesh, "order", 2)
-    estimate = check(size, fem_estimate(dofs, modes, route, dimension, fe_order))
-    if scheme != "alpha":
-        return estimate
-    omega_cut = 0.5 * (legendre_omega(modes) + legendre_omega(modes + 1))
-    step = dt if dt is not None else step_accuracy / omega_cut
-    pairs = (modes + 1) ** 2 if dimension == 2 else modes + 1
-    if dt is None:
-        option = "scheme alpha"
-    elif time_unit_s is None:
-        option = f"dt (dt c = {dt:.3g})"
-    else:
-        option = options(dt=dt * time_unit_s)
-    return check(option, estimate + alpha_estimate(dofs, pairs, t_end, step))
+    work = fem_work(
+        mesh,
+        level,
+        elements,
+        order,
+        modes,
+        route,
+        scheme=scheme,
+        dt=dt,
+        t_end=t_end,
+        step_accuracy=step_accuracy,
+        time_unit_s=time_unit_s,
+    )
+    estimate = check_all(work)
+    assert estimate is not None
+    return estimate
+
+
+def check_fem_contact(
+    case: Case, body: Any, mesh: Any = None, t_end_s: float | None = None
+) -> Estimate | None:
+    """Refuse :func:`twoball.fem_membrane.contact.fem_contact_solution` if a stage cannot fit.
+
+    The mesh and eigen solve, the contact solver on the modes below the cutoff,
+    and the closed-form reference (:func:`twoball.fem_membrane.cost.fem_contact_work`).
+    """
+    from twoball.fem_membrane.cost import fem_contact_work
+
+    return check_all(fem_contact_work(case, body, mesh, t_end_s))
 
 
 def check_stepped_contact(
@@ -94,6 +176,7 @@ def check_stepped_contact(
     The steps of the contact core over the whole window, each with the body's
     one row (:func:`twoball.modal.floor.cost.drop_estimate` with one point).
     """
+    from twoball._common.estimate import options
     from twoball.modal.contact.stepped import DEFAULT_DT
     from twoball.modal.floor.cost import drop_estimate
 

@@ -134,16 +134,10 @@ def _check_body(body: Any) -> Any:
 def _closed_form(case: Case, solver: Any, progress: Step | None) -> LiftoffReport:
     """The Legendre series, eqs. (3.12)-(3.16), with its truncation guard."""
     from twoball._common.watch import Watch
-    from twoball._costs import check_series
-    from twoball.modal.report import legendre_liftoff, t_end_dimensionless
+    from twoball._costs import check_legendre_liftoff
+    from twoball.modal.report import legendre_liftoff
 
-    check_series(
-        case.modes,
-        t_end_dimensionless(case, solver.t_end),
-        solver.t_end,
-        case.damping,
-        case.stiffness if case.stiff else None,
-    )
+    check_legendre_liftoff(case, solver.t_end)
     if progress is not None:  # the truncation guard's reference may take a while
         progress(f"the closed form on {case.modes} Legendre modes")
     return legendre_liftoff(case, solver.sigma, solver.recontact, solver.t_end, monitor=Watch())
@@ -151,17 +145,22 @@ def _closed_form(case: Case, solver: Any, progress: Step | None) -> LiftoffRepor
 
 def _cap_criteria(case: Case, body: Any, solver: Any, progress: Step | None) -> Any:
     """The massless body on its contact cap: criteria (i)-(ii) on the cap's mean motion."""
+    from twoball._common.watch import Watch
     from twoball._solvers import ClosedForm, Superposition
 
     if solver.recontact != "window":
         valid = "window with a body on a contact cap (its events are the criteria's)"
         raise ParameterError("recontact", valid, solver.recontact)
     if isinstance(solver, ClosedForm):
+        from twoball._costs import check_legendre_contact
         from twoball.modal.contact.report import legendre_contact
 
+        check_legendre_contact(case, body, solver.t_end)
         say = progress or silent
         say(f"the cap's criteria on {case.modes + 1} Legendre modes")
-        return legendre_contact(case, body, sigma=solver.sigma, t_end_s=solver.t_end)
+        return legendre_contact(
+            case, body, sigma=solver.sigma, t_end_s=solver.t_end, monitor=Watch()
+        )
     if not isinstance(solver, Superposition):
         valid = "twoball.ClosedForm or Superposition for the massless body on a cap"
         raise ParameterError("solver", valid, type(solver).__name__)
@@ -208,7 +207,7 @@ def _fem_contact(
 ) -> Any:
     """The body on the finite elements' start (full eigen route), its budget first."""
     from twoball._common.watch import Watch
-    from twoball._costs import check_fem, check_stepped_contact
+    from twoball._costs import check_fem, check_fem_contact, check_stepped_contact
     from twoball.fem_membrane.contact import fem_contact_solution
     from twoball.fem_membrane.cost import fem_dofs
     from twoball.fem_membrane.options import MeshOptions
@@ -217,7 +216,9 @@ def _fem_contact(
     spec = MeshOptions.of(mesh)
     if spec.pole is not None:
         raise ParameterError("pole", "left out with mass_ratio (no mesh file)", spec.pole)
-    if spec.kind != "file":
+    if spec.kind != "file" and body.mass_ratio == 0.0:  # the massless body's cap criteria
+        check_fem_contact(case, body, spec, t_end_s)
+    elif spec.kind != "file":
         check_fem(spec.kind, spec.level, spec.elements, spec.order, case.modes, "full")
         if body.mass_ratio > 0.0:
             dofs = fem_dofs(spec.kind, spec.level, spec.elements, spec.order)
@@ -274,6 +275,18 @@ def fem_liftoff(case: Case, solver: Any, progress: Step | None = None) -> Liftof
     say(f"finite elements on {spec.label}: mesh, assembly, eigenpairs")
     started = clock.perf_counter()
     loaded = spec.load()  # the user's mesh, checked, on the unit sphere (None for a kind)
+    if loaded is not None:  # a mesh file's size is known once it is read
+        check_fem(
+            loaded.mesh,
+            spec.level,
+            spec.elements,
+            None,
+            case.modes,
+            route,
+            scheme=scheme,
+            dt=dt_scaled,
+            t_end=t_end_dimensionless(case, t_end),
+        )
     motion, info = fem_pole_motion(
         case.phi_a,
         case.damping,

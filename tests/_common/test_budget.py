@@ -18,7 +18,7 @@ from pathlib import Path
 
 import numpy as np
 import pytest
-from twoball.modal.cost import check_series, series_estimate
+from twoball.modal.cost import series_estimate
 from twoball.modal.filters import SpectralFilter
 
 import twoball
@@ -40,6 +40,7 @@ from twoball._common.budget import (
 )
 from twoball._common.errors import ParameterError
 from twoball._common.watch import Watch
+from twoball._costs import check_series
 
 ABSURD = [
     ["liftoff", "--modes", "20000"],

@@ -3,9 +3,9 @@
 from __future__ import annotations
 
 import pytest
-from twoball.modal.cost import check_series
 
 from tests.helpers import peak_child
+from twoball._costs import check_series
 
 
 @pytest.mark.slow

@@ -64,6 +64,7 @@ MIRRORS = {
 PROJECT_CHECKS = {
     "test_layout.py",
     "test_layers.py",
+    "test_runtime_edge.py",
     "test_docs.py",
     "test_examples.py",
     "test_startup.py",

@@ -51,7 +51,7 @@ import math
 import os
 import re
 import time
-from collections.abc import Callable, Iterator
+from collections.abc import Callable, Iterable, Iterator
 from contextlib import contextmanager
 from dataclasses import dataclass
 from typing import Any, TypeVar
@@ -70,6 +70,7 @@ __all__ = [
     "MiB",
     "TiB",
     "check",
+    "check_all",
     "check_deadline",
     "current_budget",
     "limits",
@@ -298,6 +299,18 @@ def limits(
 def check(option: str, estimate: Estimate) -> Estimate:
     """:meth:`Budget.check` with the budget in force."""
     return current_budget().check(option, estimate)
+
+
+def check_all(work: Iterable[tuple[str, Estimate]]) -> Estimate | None:
+    """:func:`check` each stage of a piece of work in turn; the last estimate (None: no stage).
+
+    ``work`` as a cost model describes it: ``(option, estimate)`` pairs, e.g.
+    :func:`twoball.fem_membrane.cost.fem_work` (the mesh, then the stepping).
+    """
+    estimate = None
+    for option, stage in work:
+        estimate = check(option, stage)
+    return estimate
 
 
 class DeadlineError(NumericalError):

@@ -42,7 +42,7 @@ from twoball.verify.output.options import BACKENDS, MAX_FRAMES
 from twoball.verify.output.render import BallScene
 from twoball.verify.output.series import TimeSeries
 
-from twoball._common.budget import BASE_MEMORY, Estimate, check
+from twoball._common.budget import BASE_MEMORY, Estimate, check, check_all
 from twoball._common.choices import DEFAULT_FRAMES
 from twoball._common.errors import ParameterError
 from twoball._common.progress import Step, silent
@@ -269,6 +269,10 @@ def fem_nodal_series(
     own = isinstance(mesh, SphereMesh)
     if not own and mesh not in SPHERE_KINDS:
         raise ParameterError("mesh", "one of " + ", ".join(SPHERE_KINDS), mesh)
+    from twoball.fem_membrane.cost import fem_work
+
+    size = None if own and order is None else order
+    check_all(fem_work(mesh, None if own else level, None, size, case.modes, route))
     model = modal_model(
         case.phi_a,
         case.damping,
@@ -964,8 +968,10 @@ def coupled_model(
     mu = body.mass_ratio
     if "fem" in backends:
         from twoball.fem_membrane.contact import fem_contact_fields
+        from twoball.fem_membrane.cost import fem_contact_work
 
         say(f"contact of a body of mass ratio {mu:g} on the finite elements")
+        check_all(fem_contact_work(case, body, mesh, t_end_s))
         nodes, shapes, series, report = fem_contact_fields(
             case, body, mesh, sigma=sigma, t_end_s=t_end_s, monitor=Watch()
         )
@@ -975,7 +981,10 @@ def coupled_model(
         membrane = membrane_case(case, mu, body.energy)
         nodes = build_mesh(membrane, mesh.level, mesh.order, mesh.kind)
     if "legendre" in backends:
+        from twoball.modal.contact.cost import legendre_contact_work
+
         say(f"contact of a body of mass ratio {mu:g} on the closed form")
+        check_all(legendre_contact_work(case, body, t_end_s))
         report = legendre_contact(case, body, sigma=sigma, t_end_s=t_end_s, monitor=Watch())
         membrane = report.membrane or case
         series = legendre_series(

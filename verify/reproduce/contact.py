@@ -9,26 +9,35 @@ from __future__ import annotations
 
 import numpy as np
 from twoball.modal.contact.body import Body
-from twoball.modal.contact.report import legendre_contact
+from twoball.modal.contact.cost import legendre_contact_work
+from twoball.modal.contact.report import ContactReport, legendre_contact
+from twoball.modal.cost import case_liftoff_work
 from twoball.modal.icm.limits import touching_ratios
 from twoball.modal.icm.table1 import TABLE1
 from twoball.modal.parameters import Case
 from twoball.modal.report import legendre_liftoff
 from twoball.verify.reproduce.common import Comparison, Context, Section, new_figure, save
 
+from twoball._common.budget import check, check_all
 from twoball._common.watch import Watch
 
 MASS_RATIOS = np.geomspace(1e-4, 0.2, 12)
+
+
+def _contact(case: Case, body: Body) -> ContactReport:
+    """The closed-form contact solution, refused first if it cannot fit, watched."""
+    check_all(legendre_contact_work(case, body))
+    return legendre_contact(case, body, monitor=Watch())
 
 
 def part_contact(ctx: Context) -> Section:
     """The mu-curve of the finite-mass model against Table 1 (basketball rows) and the ICM."""
     case = Case.preset("basketball")
     rows = [r for r in TABLE1 if r.lower == "Basketball"]
-    watch = Watch()
-    ratios = [legendre_contact(case, Body(float(mu)), monitor=watch).ratio for mu in MASS_RATIOS]
-    massless = legendre_liftoff(case, reference=False, monitor=watch).ratio
-    at_rows = {r.upper: legendre_contact(case, Body(r.mu), monitor=watch).ratio for r in rows}
+    ratios = [_contact(case, Body(float(mu))).ratio for mu in MASS_RATIOS]
+    check(*case_liftoff_work(case))
+    massless = legendre_liftoff(case, reference=False, monitor=Watch()).ratio
+    at_rows = {r.upper: _contact(case, Body(r.mu)).ratio for r in rows}
     fig, ax = new_figure(figsize=(6.6, 4.6))
     ax.semilogx(MASS_RATIOS, ratios, "o-", label="finite mass, a = R/10 (this model)")
     ax.axhline(massless, color="grey", ls="--", label="massless CEM (criteria (i)-(ii))")

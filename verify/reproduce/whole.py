@@ -32,6 +32,7 @@ from twoball.modal.icm.table1 import TABLE1
 from twoball.modal.pairs import PAIRS
 from twoball.verify.reproduce.common import Comparison, Context, Section, markdown_table, save
 
+from twoball._common.budget import check
 from twoball._common.watch import Watch
 
 __all__ = ["GAPS", "GAP_PAIRS", "part_whole_gap", "part_whole_table1", "part_whole_timing"]
@@ -94,6 +95,7 @@ def _ratio(value: float | None) -> str:
 
 def part_whole_table1(ctx: Context) -> Section:
     """Table 1, every row at Delta x = 0, with the whole bounce and the lumped baselines."""
+    from twoball.modal.cost import case_liftoff_work
     from twoball.modal.icm.limits import touching_ratios
     from twoball.modal.parameters import Case
     from twoball.modal.report import legendre_liftoff
@@ -103,7 +105,10 @@ def part_whole_table1(ctx: Context) -> Section:
     sec = Section("whole_table1", "Table 1 from first principles: the whole bounce at Delta x = 0")
     rows, data = [], []
     lowers = ("tennis", "basketball")
-    cem = {lower: legendre_liftoff(Case.preset(lower), monitor=Watch()).ratio for lower in lowers}
+    cem = {}
+    for lower in lowers:
+        check(*case_liftoff_work(Case.preset(lower)))
+        cem[lower] = legendre_liftoff(Case.preset(lower), monitor=Watch()).ratio
     for name, report in zip(names, reports, strict=True):
         pair = PAIRS[name]
         row = TABLE1[pair.row - 1]

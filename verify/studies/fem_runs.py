@@ -22,6 +22,7 @@ from twoball.modal.series import ModalSeries
 from twoball.verify.studies.reference import LegendreRun
 from twoball.verify.studies.result import Progress, si
 
+from twoball._common.budget import check_all
 from twoball._common.watch import Watch
 
 MESH_LABELS = {"sphere": "icosphere", "axisym": "axisym"}
@@ -160,8 +161,20 @@ def fem_run(
     eigenvalue and energy checks (``route="full"``; the Krylov route has no
     eigenvector set and serves lift-off checks only).
     """
+    from twoball.fem_membrane.cost import fem_work
     from twoball.fem_membrane.solve import modal_model
 
+    options = spec.options()
+    check_all(
+        fem_work(
+            options["mesh"],
+            options.get("level"),
+            options.get("elements"),
+            options["order"],
+            case.modes,
+            route,
+        )
+    )
     start = time.perf_counter()
     model = modal_model(
         case.phi_a,

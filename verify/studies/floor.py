@@ -29,6 +29,7 @@ from twoball.modal.floor.system import floor_system
 from twoball.modal.parameters import Case
 from twoball.verify.studies.orders import least_squares_order, step_orders
 
+from twoball._common.budget import check
 from twoball._common.watch import Watch
 
 __all__ = [
@@ -484,11 +485,13 @@ def rest_table(modes: Sequence[int] = (120, 240, 480), elements: Sequence[int] =
 
 def special_case_table(steps: Sequence[float] = (0.02, 0.01, 0.005, 0.0025)) -> str:
     """The restitution-only model on the drop's machinery against the closed form."""
+    from twoball.modal.cost import case_liftoff_work
     from twoball.modal.floor.restitution import restitution_only
     from twoball.modal.report import legendre_liftoff
     from twoball.modal.stiffness import Stiffness
 
     case = Case.preset("basketball")
+    check(*case_liftoff_work(case))
     exact = legendre_liftoff(case, monitor=Watch()).result
     paper = Stiffness()
     lines = [

@@ -30,6 +30,7 @@ from twoball.modal.parameters import Case
 from twoball.modal.stiffness import Stiffness
 from twoball.verify.studies.orders import least_squares_order
 
+from twoball._common.budget import check_all
 from twoball._common.watch import Watch
 
 __all__ = ["TABLES", "Precursor", "WholeRun", "main", "precursor", "whole"]
@@ -108,6 +109,7 @@ def whole(
 
 def limit_a_table(masses: Sequence[float] = (0.05, 0.01, 1e-3, 1e-4)) -> str:
     """Limit (a): the body row on the special case against ``twoball.liftoff(body=...)``."""
+    from twoball.modal.contact.cost import legendre_contact_work
     from twoball.modal.contact.report import legendre_contact
 
     case = Case.preset("basketball")
@@ -118,7 +120,9 @@ def limit_a_table(masses: Sequence[float] = (0.05, 0.01, 1e-3, 1e-4)) -> str:
         "|---|---|---|---|---|",
     ]
     for mu in masses:
-        ref = legendre_contact(case, Body(mu, contact_radius=0.0262), monitor=Watch())
+        body = Body(mu, contact_radius=0.0262)
+        check_all(legendre_contact_work(case, body))
+        ref = legendre_contact(case, body, monitor=Watch())
         errors, t_error = [], math.nan
         for dt in (0.005, 0.0025):
             run_ = body_liftoff(

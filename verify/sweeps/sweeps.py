@@ -24,10 +24,12 @@ from dataclasses import dataclass
 from typing import Any
 
 import numpy as np
+from twoball.modal.cost import case_liftoff_work
 from twoball.modal.parameters import FROM_V0, Case
 from twoball.modal.report import LiftoffReport, legendre_liftoff
 from twoball.verify.sweeps.parallel import Runner
 
+from twoball._common.budget import check, check_all
 from twoball._common.choices import SWEEP_PARAMETERS
 from twoball._common.errors import ParameterError
 
@@ -201,12 +203,14 @@ class SweepSolver:
         if hasattr(case, "mass_ratio") or self.body is not None:
             from dataclasses import replace
 
+            from twoball.modal.contact.cost import legendre_contact_work
             from twoball.modal.contact.report import legendre_contact
 
             body, plain = self.body, case
             if hasattr(case, "mass_ratio"):
                 plain = case.case
                 body = replace(body, mass_ratio=case.mass_ratio)
+            check_all(legendre_contact_work(plain, body, self.t_end_s, reference=self.reference))
             return legendre_contact(
                 plain,
                 body,
@@ -216,6 +220,7 @@ class SweepSolver:
                 dt=self.dt,
                 monitor=self.monitor,
             )
+        check(*case_liftoff_work(case, self.t_end_s))
         return legendre_liftoff(
             case,
             self.sigma,
