@@ -76,8 +76,27 @@ def _volleyball() -> Measured:
     )
 
 
+def _superball() -> Measured:
+    from twoball.modal.balls.solid import MATERIALS, SUPERBALL_RADIUS
+
+    material = MATERIALS["superball"]
+    return Measured(
+        radius=SUPERBALL_RADIUS,
+        wave_speed=material.wave_speed(SUPERBALL_RADIUS),
+        v0=4.1,
+        phi_a=None,
+        damping=0.0,
+        modes=30,
+        mass=material.mass(SUPERBALL_RADIUS),
+        source="a solid polybutadiene ball (docs/solid.rst): R = 25 mm assumed; c = c_s / R "
+        "of its material (twoball.modal.balls.solid.MATERIALS, every value assumed); "
+        "undamped (D = 0: no measured losses); |v0| = 4.1 m/s from the basketball",
+    )
+
+
 #: Presets.  basketball: Table 2, Fig. 11 (R, c, ``|v0|``, phi_a measured; D fitted
 #: once).  tennis, volleyball: rule-book sizes and pressures, phi_a from eq. (3.7).
+#: superball: a solid ball (no pressure), c = c_s / R of its assumed material.
 MEASURED: dict[str, Measured] = {
     "basketball": Measured(
         radius=0.12,
@@ -92,4 +111,5 @@ MEASURED: dict[str, Measured] = {
     ),  # fmt: skip
     "tennis": _tennis(),
     "volleyball": _volleyball(),
+    "superball": _superball(),
 }
