@@ -85,7 +85,7 @@ ROOT_STEP = 0.02
 _VALID = {
     "density": "a density in (0, 1e5] kg/m^3",
     "youngs_modulus": "a Young's modulus in (0, 1e12] Pa",
-    "poisson": "Poisson's ratio in (-1, 0.5) (0.5 is incompressible: no Lamb modes)",
+    "poisson": "Poisson's ratio in (-1, 0.5)",
 }
 
 
@@ -121,7 +121,7 @@ class SolidMaterial:
     >>> twoball.SolidMaterial(density=1000.0, youngs_modulus=3e6, poisson=0.5)
     Traceback (most recent call last):
     ...
-    twoball.ParameterError: poisson must be Poisson's ratio in (-1, 0.5) (0.5 is incompressible: no Lamb modes), got 0.5
+    twoball.ParameterError: poisson must be Poisson's ratio in (-1, 0.5), got 0.5
     """
 
     density: float
@@ -318,8 +318,8 @@ class LambTable:
 
     def _angular(self, phi: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
         """``P_n(cos phi)`` and ``dP_n/dphi`` of each mode's degree, shape (len(phi), K)."""
-        from scipy.special import lpmv
         from numpy.polynomial.legendre import legvander
+        from scipy.special import lpmv
 
         x = np.cos(np.asarray(phi, dtype=float).reshape(-1))
         top = int(self.degree.max())
@@ -675,8 +675,10 @@ def _check_int(name: str, value: object, bounds: tuple[int, int]) -> int | None:
     if value is None:
         return None
     low, high = bounds
-    if isinstance(value, bool) or not isinstance(value, int | np.integer) or not (
-        low <= int(value) <= high
+    if (
+        isinstance(value, bool)
+        or not isinstance(value, int | np.integer)
+        or not (low <= int(value) <= high)
     ):
         raise ParameterError(name, f"an integer in [{low}, {high}]", value)
     return int(value)

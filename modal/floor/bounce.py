@@ -243,9 +243,7 @@ def simulate(problem: BounceProblem, monitor: Monitor | None = None) -> BounceRe
     extra: dict[str, Any] = {}
     if whole is not None:
         warnings += _body_warnings(result, whole, ball)
-        baselines = _baselines(
-            case, drop, whole, problem.inputs, result, monitor, problem.mass_kg
-        )
+        baselines = _baselines(case, drop, whole, problem.inputs, result, monitor, problem.mass_kg)
         extra = {"whole": whole, "baselines": baselines}
     return BounceReport(
         case,
