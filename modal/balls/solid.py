@@ -290,7 +290,8 @@ class LambTable:
     ----------
     poisson : float
     degree, radial_order : ndarray of int, shape (K,)
-        The translation is degree 1, radial order 0 (eta 0, ``U = V = 1``).
+        The translation is degree 1, radial order 0 (eta 0, ``U = V = 1``); a
+        static correction (eq. (S3)) has radial order -1.
     eta : ndarray, shape (K,)
         ``omega R / c_s``.
     amplitude_p, amplitude_s : ndarray, shape (K,)
@@ -493,8 +494,66 @@ def _radial(
     return u, v
 
 
+#: The small frequency at which the static compliance is read (eq. (S2)).
+STATIC_ETA = 1e-3
+
+
+def surface_compliance(n: int, poisson: float, eta: float = STATIC_ETA) -> np.ndarray:
+    """The sphere's surface response of degree n to a surface traction at frequency eta (R = 1).
+
+    A traction ``mu (tau_r P_n e_r + tau_theta dP_n/dtheta e_theta)`` on the
+    surface drives the field of eq. (M1) whose potentials solve eq. (L1) with that
+    right-hand side; the surface amplitudes ``(U(1), V(1))`` are ``C (tau_r,
+    tau_theta)`` (eq. (S2)).  In Lamb's modes (unit modal mass, volume 4 pi / 3)
+    the same response is ``3 / (2n + 1) sum_k a_k a_k^T w / (eta_k^2 - eta^2)``
+    with ``a_k = (U_k(1), V_k(1))`` and ``w = diag(1, n (n + 1))`` (the
+    translation's ``eta_0 = 0`` included for n = 1), so ``C w^-1`` is symmetric.
+    """
+    from twoball.modal.solid.lamb import boundary_matrix, scaled_bessel_pair, speed_ratio
+
+    x, y = eta / speed_ratio(poisson), eta
+    m = boundary_matrix(n, np.array([eta]), poisson)[0]
+    jx, jx1 = (v[0] for v in scaled_bessel_pair(n, np.array([x])))
+    jy, jy1 = (v[0] for v in scaled_bessel_pair(n, np.array([y])))
+    if n == 0:
+        return np.array([[(n * jx - x * jx1) / m[0, 0], 0.0], [0.0, 0.0]])
+    shape = np.array([[n * jx - x * jx1, n * (n + 1) * jy], [jx, (n + 1) * jy - y * jy1]])
+    return shape @ np.linalg.inv(m)
+
+
+def _residual(
+    n: int, poisson: float, u: np.ndarray, v: np.ndarray, eta: np.ndarray, tail: float
+) -> list[tuple[float, float]]:
+    """Surface amplitudes of the static correction of degree n: what the kept modes miss.
+
+    ``S = (C - C_kept) w^-1`` (eq. (S3)) is symmetric and, for a complete sum,
+    positive; each eigenpair ``(s, e)`` with ``s > 0`` becomes one coordinate of
+    unit mass and frequency ``tail`` (the first root left out) whose surface
+    amplitudes ``e sqrt(s (2n + 1) / 3) tail`` carry the compliance ``s e e^T``.
+    """
+    weight = np.diag([1.0, max(n * (n + 1), 1)])
+    factor = 3.0 / (2 * n + 1)
+    kept = sum(
+        factor * np.outer([uk, vk], [uk, vk]) @ weight / (ek**2 - STATIC_ETA**2)
+        for uk, vk, ek in zip(u, v, eta, strict=True)
+    )
+    if n == 1:  # the translation, (U, V) = (1, 1) at eta = 0
+        kept = kept - np.outer([1.0, 1.0], [1.0, 1.0]) @ weight / STATIC_ETA**2
+    missing = (surface_compliance(n, poisson) - kept) @ np.linalg.inv(weight)
+    if n == 0:
+        missing = missing[:1, :1]
+    missing = 0.5 * (missing + missing.T)
+    values, vectors = np.linalg.eigh(missing)
+    out = []
+    for s, e in zip(values, vectors.T, strict=True):
+        if s > 1e-12 * max(1.0, float(np.abs(values).max())):
+            amp = e * math.sqrt(s / factor) * tail
+            out.append((float(amp[0]), float(amp[1]) if n > 0 else 0.0))
+    return out
+
+
 @functools.lru_cache(maxsize=32)
-def _table(poisson: float, degrees: int, count: int) -> LambTable:
+def _table(poisson: float, degrees: int, count: int, static: bool = False) -> LambTable:
     from twoball.modal.solid.lamb import speed_ratio
 
     speed_ratio(poisson)  # validates
@@ -508,7 +567,8 @@ def _table(poisson: float, degrees: int, count: int) -> LambTable:
             big_b.append(0.0)
             su.append(1.0)
             sv.append(1.0)
-        roots = np.array(_degree_roots(n, poisson, count))
+        found = np.array(_degree_roots(n, poisson, count + 1 if static else count))
+        roots = found[:count]
         a, b, u1, v1 = _amplitudes(n, poisson, roots)
         deg += [n] * count
         order += list(range(1, count + 1))
@@ -517,6 +577,15 @@ def _table(poisson: float, degrees: int, count: int) -> LambTable:
         big_b += list(b)
         su += list(u1)
         sv += list(v1)
+        if static:
+            for ur, vr in _residual(n, poisson, u1, v1, roots, float(found[count])):
+                deg.append(n)
+                order.append(-1)
+                eta.append(float(found[count]))
+                big_a.append(0.0)
+                big_b.append(0.0)
+                su.append(ur)
+                sv.append(vr)
     return LambTable(
         float(poisson),
         np.array(deg),
@@ -530,14 +599,18 @@ def _table(poisson: float, degrees: int, count: int) -> LambTable:
     )
 
 
-def lamb_table(poisson: float, degrees: int, count: int) -> LambTable:
+def lamb_table(poisson: float, degrees: int, count: int, static: bool = False) -> LambTable:
     """Lamb's modes of degrees 0..``degrees`` and radial orders 1..``count``, with the translation.
 
     The roots are those of :func:`~twoball.modal.solid.lamb.lamb_roots` (the same
     function F_n and grid; sign changes only: a double root closer than the grid
     step is not looked for here) refined together; the shapes as
     :func:`~twoball.modal.solid.modes.spheroidal_modes` normalises them (eq. (M2)).
-    Cached per (nu, degrees, count).
+    ``static``: one or two more coordinates per degree (radial order -1), the
+    static correction of eq. (S3): the surface compliance the left-out radial
+    orders carry, at the frequency of the first one left out (their interior
+    field is not known here: zero in :meth:`LambTable.field`).  Cached per (nu,
+    degrees, count, static).
 
     Examples
     --------
@@ -546,7 +619,7 @@ def lamb_table(poisson: float, degrees: int, count: int) -> LambTable:
     >>> table.size, [round(e, 4) for e in table.eta[table.degree == 2]]
     (9, [2.6399, 4.8653])
     """
-    return _table(float(poisson), int(degrees), int(count))
+    return _table(float(poisson), int(degrees), int(count), bool(static))
 
 
 # --- Hertz -------------------------------------------------------------------------------
@@ -698,13 +771,19 @@ class SolidBall:
         hemisphere (about N / 2, spacing ~pi / N near the south pole).
     radial_orders : int, optional
         Radial orders K per degree in [1, 40] (default :data:`DEFAULT_RADIAL_ORDERS`, 8).
+    static_correction : bool
+        Add the static correction of each degree (eq. (S3) of docs/solid.rst; default
+        True): the floor's local (Hertz) compliance that the left-out radial
+        orders carry, one or two coordinates per degree at the frequency of the
+        first root left out.  Without it the truncated ball is too stiff at the
+        floor (2-10 % of each degree's compliance missing at K = 8).
 
     Examples
     --------
     >>> import twoball
     >>> ball = twoball.SolidBall(modes=16, radial_orders=4)
     >>> ball.label, ball.size()
-    ('solid lamb N = 16, K = 4', (69, 9))
+    ('solid lamb N = 16, K = 4 + static', (102, 9))
     >>> twoball.SolidBall(modes=2)
     Traceback (most recent call last):
     ...
@@ -714,6 +793,7 @@ class SolidBall:
     material: SolidMaterial | None = None
     modes: int | None = None
     radial_orders: int | None = None
+    static_correction: bool = True
 
     #: The physics of this ball (the JSON's ``ball``) and its discretisation.
     kind = "solid"
@@ -726,6 +806,8 @@ class SolidBall:
         object.__setattr__(self, "modes", _check_int("modes", self.modes, SOLID_MODES_RANGE))
         orders = _check_int("radial_orders", self.radial_orders, RADIAL_ORDERS_RANGE)
         object.__setattr__(self, "radial_orders", orders)
+        if not isinstance(self.static_correction, bool):
+            raise ParameterError("static_correction", "True or False", self.static_correction)
 
     @property
     def degree(self) -> int:
@@ -739,14 +821,17 @@ class SolidBall:
 
     @property
     def label(self) -> str:
-        """``solid lamb N = 64, K = 8``."""
-        return f"solid lamb N = {self.degree}, K = {self.orders}"
+        """``solid lamb N = 64, K = 8 + static``."""
+        static = " + static" if self.static_correction else ""
+        return f"solid lamb N = {self.degree}, K = {self.orders}{static}"
 
     def size(self, case: Case | None = None) -> tuple[int, int]:
-        """Coordinates (``(N + 1) K + 1``) and floor points (about N / 2)."""
+        """Coordinates (``(N + 1) K + 1``, and ``2 N + 1`` static corrections) and floor
+        points (about N / 2)."""
         from twoball.modal.balls.membrane import floor_angles
 
-        return (self.degree + 1) * self.orders + 1, int(floor_angles(self.degree).size)
+        static = 2 * self.degree + 1 if self.static_correction else 0
+        return (self.degree + 1) * self.orders + 1 + static, int(floor_angles(self.degree).size)
 
     def material_of(self, case: Case) -> SolidMaterial:
         """The material in use: the ball's, else the case's preset's."""
@@ -769,7 +854,8 @@ class SolidBall:
 
     def table(self, case: Case) -> LambTable:
         """Lamb's modes of this ball for the case's material."""
-        return lamb_table(self.material_of(case).poisson, self.degree, self.orders)
+        poisson = self.material_of(case).poisson
+        return lamb_table(poisson, self.degree, self.orders, self.static_correction)
 
     def describe(self, case: Case, monitor: Any = None) -> ModalBall:
         """The solid of ``case`` on Lamb's modes (dimensionless: R, 1/c, its mass)."""
@@ -792,5 +878,6 @@ class SolidBall:
             "discretisation": "legendre",
             "modes": self.modes,
             "radial_orders": self.radial_orders,
+            "static_correction": self.static_correction,
             "material": material,
         }
