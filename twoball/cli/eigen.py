@@ -22,8 +22,17 @@ def run(args: argparse.Namespace) -> int:
     from twoball._common.provenance import attach, block
     from twoball.cli.shell import check_ball_kind, refuse_shell_eigen_flags
 
-    if check_ball_kind(args) == "shell":
+    kind = check_ball_kind(args)
+    if kind == "shell":
         return run_shell(args)
+    if kind == "solid":
+        from twoball.cli.solid import run_eigen
+
+        return run_eigen(args)
+    if kind == "thick":
+        from twoball._common.errors import ParameterError
+
+        raise ParameterError("ball", "membrane, shell or solid for eigen", kind)
     refuse_shell_eigen_flags(args)
     mesh = mesh_options(args)
     membrane = "paper" if args.membrane is None else args.membrane
@@ -117,6 +126,13 @@ def register(parser: argparse.ArgumentParser) -> None:
     )
     add_ball_option(parser)
     add_shell_eigen_options(parser)
+    parser.add_argument(
+        "--max-degree",
+        type=integer,
+        metavar="N",
+        help="--ball solid: the highest degree listed (default 10; --count radial orders of "
+        "each, default 5)",
+    )
     parser.add_argument(
         "--membrane",
         help="membrane operator: paper (K, beside l(l+1); default) or pressurised "
