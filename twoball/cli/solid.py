@@ -303,9 +303,8 @@ def solid_eigen_rows(
     """
     import numpy as np
 
-    from twoball.modal.solid.lamb import lamb_function, lamb_roots
-
     from twoball.modal.balls.solid import lamb_table
+    from twoball.modal.solid.lamb import lamb_function, lamb_roots
 
     rows: list[dict[str, Any]] = []
     if backend == "legendre":
