@@ -180,6 +180,13 @@ def _dropped(case: Case, solver: Any, progress: Step | None) -> LiftoffReport:
     if summary is not None:
         extra["model"] = summary(case)
     warnings = list(problem.warnings)
+    extra["interpolation"] = run.interpolation
+    if run.interpolation == "hermite":
+        warnings.append(
+            "the top's samples are interpolated by one quintic through u, u_t and u_tt (the "
+            "separate splines' re-contact search did not settle): u_tt between the steps is "
+            "first order in dt"
+        )
     if not drop.left:
         warnings.append("the ball has not left the floor within the window (raise t_end)")
     return LiftoffReport(

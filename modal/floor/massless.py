@@ -31,6 +31,8 @@ from twoball.modal.floor.system import FloorSystem
 from twoball.modal.liftoff import LiftoffResult, SampledPoleMotion, find_liftoff
 from twoball.modal.nonsmooth import ContactProblem, MoreauJean
 
+from twoball._common.errors import NumericalError
+
 __all__ = ["MasslessDrop", "massless_liftoff"]
 
 
@@ -50,6 +52,9 @@ class MasslessDrop:
         Sample times after the floor touch.
     shift : float
         The maximal compression's time after the floor touch.
+    interpolation : str
+        ``splines`` (u, u_t, u_tt each through its own cubic spline), or
+        ``hermite`` (one quintic) where the splines' re-contact search did not settle.
     """
 
     drop: DropResult
@@ -57,6 +62,7 @@ class MasslessDrop:
     motion: SampledPoleMotion
     t: np.ndarray
     shift: float
+    interpolation: str = "splines"
 
 
 def _flight(system: FloorSystem, q: np.ndarray, v: np.ndarray, t0: float, t_end: float, dt: float):
@@ -108,6 +114,16 @@ def massless_liftoff(
     u, u_t = q @ top, v @ top
     u_tt = np.gradient(u_t, t)
     shift = float(drop.t_max_compression)
-    motion = SampledPoleMotion(t - shift, u, u_t, u_tt, interpolation="splines")
-    result = find_liftoff(motion, settings.gamma, t_end=float(t[-1]) - shift, horizon="window")
-    return MasslessDrop(drop, result, motion, t, shift)
+    window = float(t[-1]) - shift
+    try:
+        motion = SampledPoleMotion(t - shift, u, u_t, u_tt, interpolation="splines")
+        result = find_liftoff(motion, settings.gamma, t_end=window, horizon="window")
+        how = "splines"
+    except NumericalError:
+        # the separate splines' u_tt is not the slope of their u_t: with the top's
+        # high-frequency content (every finite-element mode, undamped) Newton's search
+        # of a re-contact may not settle; one quintic through u, u_t, u_tt is consistent
+        motion = SampledPoleMotion(t - shift, u, u_t, u_tt, interpolation="hermite")
+        result = find_liftoff(motion, settings.gamma, t_end=window, horizon="window")
+        how = "hermite"
+    return MasslessDrop(drop, result, motion, t, shift, how)
