@@ -384,7 +384,8 @@ def _refine(n: int, poisson: float, a: np.ndarray, b: np.ndarray) -> np.ndarray:
     fb = lamb_function(n, b, poisson)
     a, b = a.copy(), b.copy()
     side = np.zeros(a.size, dtype=int)
-    out = 0.5 * (a + b)
+    out = np.where(np.abs(fa) <= np.abs(fb), a, b)
+    best = np.minimum(np.abs(fa), np.abs(fb))
     active = np.ones(a.size, dtype=bool)
     for _ in range(100):
         i = np.flatnonzero(active)
@@ -394,7 +395,9 @@ def _refine(n: int, poisson: float, a: np.ndarray, b: np.ndarray) -> np.ndarray:
         bad = ~((x > a[i]) & (x < b[i]))
         x[bad] = 0.5 * (a[i][bad] + b[i][bad])
         fx = lamb_function(n, x, poisson)
-        out[i] = x
+        better = np.abs(fx) < best[i]  # the evaluated point of least |F| so far
+        out[i] = np.where(better, x, out[i])
+        best[i] = np.where(better, np.abs(fx), best[i])
         left = np.sign(fx) == np.sign(fa[i])
         # Illinois: halve the value of the end that stays twice in a row
         fb[i] = np.where(left & (side[i] == 1), 0.5 * fb[i], fb[i])
@@ -404,7 +407,7 @@ def _refine(n: int, poisson: float, a: np.ndarray, b: np.ndarray) -> np.ndarray:
         b[i] = np.where(left, b[i], x)
         fb[i] = np.where(left, fb[i], fx)
         side[i] = np.where(left, 1, -1)
-        done = (np.abs(fx) <= 1e-14) | ((b[i] - a[i]) <= 1e-13 * np.maximum(1.0, b[i]))
+        done = (np.abs(fx) <= 5e-14) | ((b[i] - a[i]) <= 4e-16 * np.maximum(1.0, b[i]))
         active[i[done]] = False
     return out
 
