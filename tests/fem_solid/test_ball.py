@@ -122,3 +122,27 @@ def test_the_backends_agree_on_the_body(tmp_path):
     assert fe.t_liftoff_s == pytest.approx(modal.t_liftoff_s, rel=3e-3)
     assert fe.v1_m_s == pytest.approx(modal.v1_m_s, rel=6e-3)
     assert fe.contact_time_s == pytest.approx(modal.contact_time_s, rel=2e-3)
+
+
+@pytest.mark.slow
+def test_the_fe_slow_impact_tends_to_hertz():
+    """Measured (the half disc refined towards the south pole as the contact shrinks):
+    t_c / t_H - 1 = -9.0 %, -5.6 %, -3.7 % and F / F_H - 1 = +9.6 %, +9.2 %, +4.6 % at
+    |v0| / c_s = 0.082, 0.020, 0.005 (the closed form: -8.9, -5.9, -3.8 % and +9.2,
+    +9.4, +4.7 %)."""
+    errors = []
+    for v0, pole in ((4.1, 0), (1.0, 1), (0.25, 2)):
+        case = solid_case("superball", v0=v0, g=1e-6)
+        ball = twoball.FESolidBall(level=3, pole_levels=pole)
+        report = twoball.bounce(case, solver=twoball.MoreauJean(ball))
+        hertz = report.model["hertz"]
+        _, force = report.result.force
+        peak = force.max() * report.mass_kg * case.radius * case.wave_speed**2
+        errors.append(
+            (
+                abs(report.contact_time_s / hertz["contact_time_s"] - 1.0),
+                abs(peak / hertz["peak_force_N"] - 1.0),
+            )
+        )
+    assert errors[0][0] > errors[1][0] > errors[2][0] and errors[0][1] > errors[2][1]
+    assert errors[2][0] < 0.045 and errors[2][1] < 0.055
