@@ -12,15 +12,16 @@ measures.  The superball preset: R = 25 mm, |v0| = 4.1 m/s, D = 0, c = c_s / R.
 Measured on the project's 2-core machine (one BLAS thread, other sessions
 running, so the times are upper bounds):
 
-    case                                   coordinates  points  steps  time s  peak GB
-    drop, lamb N = 64, K = 8 + static              650      33   1009     7.4     0.21
-    drop, lamb N = 32, K = 4 + static              198      17    994     2.2     0.14
-    drop, fem level 3 P2                          1089      33   1008     9.4     0.27
-    massless lift-off, lamb N = 64                 650      33   6283    12.1     0.25
-    body mu = 0.01, lamb N = 64                    650      33   1300     4.0     0.21
+    case                                coordinates  points  steps  time s  peak GB
+    drop, lamb N = 64, K = 8 + static           650      33   1037     7.6     0.11
+    drop, lamb N = 32, K = 4 + static           198      17   1011     4.3     0.09
+    drop, fem level 3 P2                       1089      33   1444     7.5     0.16
+    massless lift-off, lamb N = 64              650      33      -     8.9     0.32
+    body mu = 0.01, lamb N = 64                 650      33   1031     6.8     0.11
 
 The modal drop meets the issue's "one superball drop <= 10 s" (about 5 s of it
-are Lamb's roots of 65 degrees, cached for a second drop in the same process).
+are Lamb's roots of 65 degrees, cached for a second drop in the same process; the
+massless lift-off steps the whole window, 10 pi / c).
 """
 
 from __future__ import annotations
