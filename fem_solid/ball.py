@@ -266,7 +266,7 @@ def space_description(
         return out
 
     gas2 = np.zeros(k) if gas_share is None else gas_share * ratio**2
-    return ModalBall(
+    ball = ModalBall(
         masses=np.ones(k),
         omega_squared=w2,
         gas_squared=gas2,
@@ -281,6 +281,25 @@ def space_description(
         tangential=sample(1),
         averager=averager,
     )
+    from twoball.modal.balls.solid import register_cut
+
+    register_cut(ball, lambda: fe_cut(space))
+    return ball
+
+
+def fe_cut(space: SolidSpace) -> Any:
+    """The nodal vectors at the mesh's vertices, on its triangles
+    (:class:`~twoball.modal.balls.solid.CutGrid`)."""
+    from twoball.modal.balls.solid import CutGrid
+
+    mesh = space.basis.mesh
+    r_dofs, z_dofs = space.basis.split_indices()
+    vertices = np.arange(mesh.nvertices)  # P2 nodes: the vertices first
+    radial = space.vectors[r_dofs[vertices]].copy()
+    axial = space.vectors[z_dofs[vertices]].copy()
+    radial[:, space.translation] = 0.0
+    axial[:, space.translation] = 0.0
+    return CutGrid(mesh.p[:, : mesh.nvertices].T.copy(), mesh.t.T.copy(), radial, axial)
 
 
 def _check_int(name: str, value: object, bounds: tuple[int, int]) -> int:

@@ -47,10 +47,12 @@ from __future__ import annotations
 
 import functools
 import math
+import weakref
 from dataclasses import dataclass, field
 from typing import TYPE_CHECKING, Any
 
 import numpy as np
+from twoball.modal.presets import SUPERBALL_MATERIAL, SUPERBALL_RADIUS
 
 from twoball._common.errors import NumericalError, ParameterError, real_number
 
@@ -60,6 +62,7 @@ if TYPE_CHECKING:
     from twoball.modal.solid.modes import SphereMode
 
 __all__ = [
+    "CutGrid",
     "DEFAULT_RADIAL_ORDERS",
     "DEFAULT_SOLID_MODES",
     "MATERIALS",
@@ -67,7 +70,9 @@ __all__ = [
     "SolidBall",
     "SolidMaterial",
     "hertz_reference",
+    "cut_of",
     "lamb_table",
+    "register_cut",
     "solid_case",
 ]
 
@@ -195,22 +200,8 @@ class SolidMaterial:
         }
 
 
-#: The superball's radius [m]: a 50 mm ball (assumed, the classroom size).
-SUPERBALL_RADIUS = 0.025
-
 #: Materials of the presets.
-MATERIALS: dict[str, SolidMaterial] = {
-    "superball": SolidMaterial(
-        density=1100.0,
-        youngs_modulus=8.0e6,
-        poisson=0.45,
-        source="polybutadiene (Zectron) superball: every value assumed, no measurement reached "
-        "(the paper gives none): rho = 1100 kg/m^3 (a filled polybutadiene compound), E = 8 "
-        "MPa (a hard rubber of Shore A ~80 by Gent's hardness-modulus relation), nu = 0.45 "
-        "(rubber is 0.49-0.5; 0.45 keeps the displacement elements free of locking and is "
-        "one of the reference Poisson ratios of Lamb's roots)",
-    ),
-}
+MATERIALS: dict[str, SolidMaterial] = {"superball": SolidMaterial(**SUPERBALL_MATERIAL)}
 
 
 def material_of(material: SolidMaterial | None, case: Case) -> SolidMaterial:
@@ -694,6 +685,60 @@ def solid_summary(material: SolidMaterial, case: Case, spacing: float) -> dict[s
     }
 
 
+@dataclass(frozen=True)
+class CutGrid:
+    """The half meridian plane (r >= 0) and every coordinate's field there (units R).
+
+    Attributes
+    ----------
+    points : ndarray, shape (P, 2)
+        (r, z) of the nodes.
+    triangles : ndarray, shape (T, 3)
+    radial, axial : ndarray, shape (P, K)
+        The cylindrical ``u_r`` and ``u_z`` of each coordinate's deformation (0 in
+        the translation's column).
+    """
+
+    points: np.ndarray
+    triangles: np.ndarray
+    radial: np.ndarray
+    axial: np.ndarray
+
+
+#: The cut of each described ball with a volume (weak: it goes with the ball).
+_CUTS: weakref.WeakKeyDictionary[Any, Any] = weakref.WeakKeyDictionary()
+
+
+def register_cut(ball: Any, cut: Any) -> None:
+    """Say how to cut the described ``ball`` (a :class:`ModalBall`): ``cut() -> CutGrid``."""
+    _CUTS[ball] = cut
+
+
+def cut_of(ball: Any) -> CutGrid | None:
+    """The cut of a described ball through its volume (None: a ball without a volume)."""
+    cut = _CUTS.get(ball)
+    return None if cut is None else cut()
+
+
+def lamb_cut(table: LambTable, rings: int = 20, sectors: int = 48) -> CutGrid:
+    """Eq. (M1) of every mode on a polar grid of the half disc (``rings`` x ``sectors``);
+    the static correction's coordinates carry no interior field here."""
+    rho = np.linspace(0.0, 1.0, rings + 1)
+    theta = np.linspace(0.0, np.pi, sectors + 1)
+    rr, tt = np.meshgrid(rho, theta, indexing="ij")
+    ur, ut = table.field(rr.ravel(), tt.ravel())
+    s, c = np.sin(tt.ravel())[:, None], np.cos(tt.ravel())[:, None]
+    radial, axial = ur * s + ut * c, ur * c - ut * s
+    radial[:, table.translation] = 0.0
+    axial[:, table.translation] = 0.0
+    index = np.arange(rr.size).reshape(rr.shape)
+    a, b = index[:-1, :-1].ravel(), index[1:, :-1].ravel()
+    cc, d = index[1:, 1:].ravel(), index[:-1, 1:].ravel()
+    triangles = np.vstack([np.column_stack([a, b, cc]), np.column_stack([a, cc, d])])
+    points = np.column_stack([(rr * np.sin(tt)).ravel(), (rr * np.cos(tt)).ravel()])
+    return CutGrid(points, triangles, radial, axial)
+
+
 def solid_description(
     table: LambTable,
     ratio: float,
@@ -730,7 +775,7 @@ def solid_description(
         out[t] = 1.0
         return out
 
-    return ModalBall(
+    ball = ModalBall(
         masses=np.ones(k),
         omega_squared=w2,
         gas_squared=np.zeros(k),
@@ -745,6 +790,8 @@ def solid_description(
         tangential=sample(1),
         averager=averager,
     )
+    register_cut(ball, lambda: lamb_cut(table))
+    return ball
 
 
 def _check_int(name: str, value: object, bounds: tuple[int, int]) -> int | None:

@@ -109,3 +109,24 @@ def test_bounce_with_the_thick_wall(capsys):
 def test_refusals_by_name(capsys, argv, name):
     line = refused(capsys, argv)
     assert name.replace("_", "-") in line or name in line
+
+
+def test_the_cut_through_the_volume(capsys, tmp_path):
+    target = tmp_path / "cut.xdmf"
+    code, _, _ = cli_run(
+        capsys, "bounce", "--ball", "solid", "--backend", "fem", "--level", "2", "--export",
+        str(target), "--view", "cut", "--frames", "3",
+    )  # fmt: skip
+    assert code == 0 and target.exists()
+    from twoball.verify.output.series import read_series
+
+    series = read_series(target)
+    assert set(series.point_data) >= {"displacement_m", "u_m", "speed_m_s"}
+    assert abs(series.points[:, 1]).max() == 0.0  # the plane y = 0
+    # the wave: the deformation's speed is not zero inside once the floor has pushed
+    assert series.point_data["speed_m_s"][1].max() > 0.0
+    line = refused(capsys, ["bounce", "--ball", "solid", "--view", "cut"])
+    assert "view" in line
+    membrane = twoball.bounce(solver=twoball.MoreauJean(twoball.LegendreBall(16)))
+    with pytest.raises(twoball.ParameterError, match="view"):
+        membrane.export(tmp_path / "m.xdmf", frames=2, view="cut")

@@ -398,6 +398,9 @@ def run(args: argparse.Namespace) -> int:
 
     plot = None if args.plot is None else check_figure_path(args.plot, "plot")
     export, render, frames = _field_targets(args)
+    view = getattr(args, "view", None) or "surface"
+    if view != "surface" and export is None and render is None:
+        raise ParameterError("view", "given with --export or --render", view)
     from twoball._common.staging import check_distinct
 
     outputs = {"plot": args.plot, "export": args.export, "render": args.render}  # one path each
@@ -409,8 +412,8 @@ def run(args: argparse.Namespace) -> int:
         report = bounce_from_options(args)
         for name, target, write in (
             ("figure", plot, report.plot),
-            ("export", export, lambda out: report.export(out, frames=frames)),
-            ("render", render, lambda out: report.render(out, frames=frames)),
+            ("export", export, lambda out: report.export(out, frames=frames, view=view)),
+            ("render", render, lambda out: report.render(out, frames=frames, view=view)),
         ):
             if target is not None:
                 progress(f"{name} {target.name}")
@@ -438,7 +441,7 @@ def register(parser: argparse.ArgumentParser) -> None:
     add_wall_options(parser)
     from twoball.cli.solid import add_solid_options
 
-    add_solid_options(parser)
+    add_solid_options(parser, view=True)
     add_contact_options(
         parser, "the whole bounce: mass ratio m1/m2 in (0, 100] of a body on the ball's top"
     )

@@ -11,7 +11,7 @@ speed to ``c = c_s / R`` (docs/solid.rst, eq. (S1)); the resolution from
 its wall from ``--youngs-modulus --thickness [--poisson] [--density]`` or the
 preset's (:data:`twoball.fem_solid.ball.THICK_WALLS`), on ``--elements`` cells
 along the half circle and ``--wall-cells`` across (finite elements only).
-``twoball eigen --ball solid`` lists Lamb's spectrum (:func:`solid_eigen_rows`).
+``twoball eigen --ball solid`` lists Lamb's spectrum (:func:`twoball.fem.solid_eigen`).
 A flag that does not apply is refused by its own name, with the reason.
 """
 
@@ -28,7 +28,6 @@ __all__ = [
     "add_solid_options",
     "solid_ball",
     "solid_case",
-    "solid_eigen_rows",
     "solid_rows",
     "thick_ball",
 ]
@@ -51,8 +50,11 @@ NOT_SOLID = {
 }
 
 
-def add_solid_options(parser: argparse.ArgumentParser, *, level: bool = True) -> None:
-    """``--density``, ``--radial-orders``, ``--pole-levels``, ``--wall-cells`` (and ``--level``)."""
+def add_solid_options(
+    parser: argparse.ArgumentParser, *, level: bool = True, view: bool = False
+) -> None:
+    """``--density``, ``--radial-orders``, ``--pole-levels``, ``--wall-cells`` (and ``--level``,
+    ``--view``)."""
     group = parser.add_argument_group(
         "the solid ball and the thick wall (--ball solid|thick; with --youngs-modulus, --poisson)"
     )
@@ -78,6 +80,13 @@ def add_solid_options(parser: argparse.ArgumentParser, *, level: bool = True) ->
         metavar="J",
         help="--ball solid, fem: refinements towards the south pole (default 0)",
     )
+    if view:
+        group.add_argument(
+            "--view",
+            metavar="KIND",
+            help="--export/--render: surface (default) or cut (the meridian plane through a "
+            "solid or thick ball: the wave inside)",
+        )
     group.add_argument(
         "--wall-cells",
         type=integer,
@@ -101,7 +110,7 @@ def material(args: argparse.Namespace) -> twoball.SolidMaterial:
         "poisson": getattr(args, "poisson", None),
     }
     preset = args.preset
-    from twoball.modal.balls.solid import MATERIALS
+    from twoball._lookup import MATERIALS
 
     if preset in MATERIALS:
         base = MATERIALS[preset]
@@ -124,8 +133,8 @@ def solid_case(args: argparse.Namespace) -> twoball.Case:
     superball preset's; ``--preset superball`` with some of them overrides those.
     """
     from twoball._common.choices import STANDARD_GRAVITY
+    from twoball._lookup import MATERIALS, SUPERBALL_RADIUS
     from twoball.cli.case_options import apply_limits
-    from twoball.modal.balls.solid import MATERIALS, SUPERBALL_RADIUS
 
     _refuse(args, NOT_SOLID)
     if getattr(args, "phi_a", None) is not None:
@@ -167,7 +176,7 @@ def _no_material(args: argparse.Namespace) -> bool:
 def solid_ball(args: argparse.Namespace) -> Any:
     """The solid of ``--backend``: Lamb's modes or the (r, z) half disc, the flags' material
     when it differs from the preset's."""
-    from twoball.modal.balls.solid import MATERIALS
+    from twoball._lookup import MATERIALS
 
     chosen = material(args)
     given = None if MATERIALS.get(args.preset or "") == chosen else chosen
@@ -289,72 +298,6 @@ def solid_rows(report: Any) -> list[tuple[str, str]]:
     return rows
 
 
-def solid_eigen_rows(
-    poisson: float, count: int, backend: str, *, level: int = 4, max_degree: int = 10
-) -> list[dict[str, Any]]:
-    """Rows ``degree``, ``radial_order``, ``value`` (omega R / c_s) and ``exact`` (Lamb's root).
-
-    ``legendre``: the closed form's roots (:func:`~twoball.modal.balls.solid.lamb_table`,
-    the drop's) beside :func:`~twoball.modal.solid.lamb.lamb_roots`, with
-    ``residual`` ``|F_n|`` of Lamb's equation at the value; ``fem``: the (r, z) P2
-    eigenvalues on the half disc of ``level`` (classified by degree and radial
-    order) beside Lamb's root of the same degree and order.  ``count`` radial
-    orders of degrees 0..``max_degree`` (the rigid translation left out).
-    """
-    import numpy as np
-
-    from twoball.modal.balls.solid import lamb_table
-    from twoball.modal.solid.lamb import lamb_function, lamb_roots
-
-    rows: list[dict[str, Any]] = []
-    if backend == "legendre":
-        table = lamb_table(poisson, max_degree, count)
-        for n in range(max_degree + 1):
-            exact = lamb_roots(n, poisson, count)
-            chosen = (table.degree == n) & (table.radial_order > 0)
-            roots = table.eta[chosen][np.argsort(table.radial_order[chosen])]
-            residual = np.abs(lamb_function(n, roots, poisson))
-            for k, (eta, ref, res) in enumerate(zip(roots, exact, residual, strict=True), 1):
-                rows.append(
-                    {
-                        "degree": n,
-                        "radial_order": k,
-                        "value": float(eta),
-                        "exact": float(ref),
-                        "relative_error": abs(float(eta) / float(ref) - 1.0),
-                        "residual": float(res),
-                    }
-                )
-        return rows
-    from twoball.fem_solid.eigen import axisymmetric_eigen
-    from twoball.fem_solid.mesh import half_disc
-
-    # enough eigenpairs for `count` orders of every degree up to max_degree
-    pairs = (max_degree + 1) * count + 1
-    exact_top = max(lamb_roots(n, poisson, count)[-1] for n in range(max_degree + 1))
-    while True:
-        fe = axisymmetric_eigen(half_disc(level), poisson, pairs, max_degree=max_degree + 6)
-        if fe.eta[-1] > 1.05 * exact_top or pairs > 4000:
-            break
-        pairs = int(pairs * 1.5)
-    for n in range(max_degree + 1):
-        exact = lamb_roots(n, poisson, count)
-        chosen = (fe.degree == n) & ~fe.rigid
-        values = np.sort(fe.eta[chosen])[:count]
-        for k in range(count):
-            value = float(values[k]) if k < values.size else None
-            rows.append(
-                {
-                    "degree": n,
-                    "radial_order": k + 1,
-                    "value": value,
-                    "exact": float(exact[k]),
-                    "relative_error": None if value is None else abs(value / exact[k] - 1.0),
-                }
-            )
-    return rows
-
-
 #: Flags of the membrane's lift-off that a dropped solid does not take, and why.
 NOT_DROPPED = {
     "mass_ratio": "with --ball solid in liftoff (the massless body on the dropped ball; a body "
@@ -395,7 +338,6 @@ def run_eigen(args: argparse.Namespace) -> int:
 
     from twoball._common.provenance import attach, block
     from twoball.cli.console import console, print_json
-    from twoball.modal.solid.lamb import speed_ratio
 
     for name in ("mesh", "mesh_file", "pole", "geometry", "membrane", "thickness_ratio"):
         if getattr(args, name, None) is not None:
@@ -408,7 +350,7 @@ def run_eigen(args: argparse.Namespace) -> int:
     if backend not in ("legendre", "fem"):
         raise ParameterError("backend", "one of legendre, fem", backend)
     poisson = 0.25 if args.poisson is None else float(args.poisson)
-    speed_ratio(poisson)  # validates nu in (-1, 0.5)
+    twoball.SolidMaterial(1.0, 1.0, poisson)  # validates nu in (-1, 0.5)
     count = 5 if args.count is None else args.count
     top = 10 if args.max_degree is None else args.max_degree
     if not 1 <= count <= 40:
@@ -420,12 +362,12 @@ def run_eigen(args: argparse.Namespace) -> int:
         raise ParameterError("level", "left out with backend legendre (no mesh)", args.level)
     if not 1 <= level <= 6:
         raise ParameterError("level", "an integer in [1, 6]", level)
-    rows = solid_eigen_rows(poisson, count, backend, level=level, max_degree=top)
+    rows = twoball.fem.solid_eigen(poisson, count, backend, level=level, max_degree=top)
     if args.json:
         arguments = {"backend": backend, "poisson": poisson, "count": count, "max_degree": top}
         if backend == "fem":
             arguments["level"] = level
-        print_json(attach(rows, block(None, "twoball.cli.solid.solid_eigen_rows", arguments)))
+        print_json(attach(rows, block(None, "twoball.fem.solid_eigen", arguments)))
         return 0
     table = Table(title=f"Lamb's spheroidal modes, nu = {poisson:g} ({backend})")
     for name in ("n", "k", "omega R / c_s", "Lamb's root", "rel. error"):

@@ -36,7 +36,14 @@ from typing import Any
 
 import numpy as np
 
-__all__ = ["TABLES", "main"]
+__all__ = ["TABLES", "drop", "main"]
+
+
+def drop(case: Any, ball: Any, body: Any = None, pair: str | None = None) -> Any:
+    """One drop or whole bounce in SI (:func:`~twoball.modal.floor.bounce.simulate`)."""
+    from twoball.modal.floor.bounce import bounce_problem, simulate
+
+    return simulate(bounce_problem(case, ball=ball, body=body, pair=pair))
 
 
 def _row(cells: Sequence[Any]) -> str:
@@ -75,12 +82,11 @@ def spectrum_table() -> str:
 
 
 def _hertz_run(v0: float, ball: Any) -> dict[str, float]:
+
     from twoball.modal.balls.solid import solid_case
 
-    import twoball
-
     case = solid_case("superball", v0=v0, g=1e-6)
-    report = twoball.bounce(case, solver=twoball.MoreauJean(ball))
+    report = drop(case, ball)
     hertz = report.model["hertz"]
     _, force = report.result.force
     peak = float(force.max()) * report.mass_kg * case.radius * case.wave_speed**2
@@ -102,12 +108,13 @@ HERTZ_CASES = ((4.1, 64, 0), (1.0, 112, 1), (0.25, 192, 2))
 
 def hertz_table(cases: Sequence[tuple[float, int, int]] = HERTZ_CASES) -> str:
     """The drop against Hertz on both backends, with the regime numbers."""
-    import twoball
+    from twoball.fem_solid.ball import FESolidBall
+    from twoball.modal.balls.solid import SolidBall
 
     rows = []
     for v0, modes, pole in cases:
-        modal = _hertz_run(v0, twoball.SolidBall(modes=modes))
-        fe = _hertz_run(v0, twoball.FESolidBall(level=3, pole_levels=pole))
+        modal = _hertz_run(v0, SolidBall(modes=modes))
+        fe = _hertz_run(v0, FESolidBall(level=3, pole_levels=pole))
         rows.append(
             [
                 v0,
@@ -131,24 +138,23 @@ def hertz_table(cases: Sequence[tuple[float, int, int]] = HERTZ_CASES) -> str:
 
 def agreement_table(balls: Sequence[Any] | None = None, mass_ratio: float = 0.01) -> str:
     """The superball with a body on both backends at growing resolution."""
-    from twoball.modal.balls.solid import solid_case
 
-    import twoball
+    from twoball.fem_solid.ball import FESolidBall
+    from twoball.modal.balls.solid import SolidBall, solid_case
+    from twoball.modal.contact.body import Body
 
     if balls is None:
         balls = (
-            twoball.SolidBall(modes=64),
-            twoball.SolidBall(modes=128),
-            twoball.SolidBall(modes=192, radial_orders=12),
-            twoball.FESolidBall(level=3),
-            twoball.FESolidBall(level=4),
+            SolidBall(modes=64),
+            SolidBall(modes=128),
+            SolidBall(modes=192, radial_orders=12),
+            FESolidBall(level=3),
+            FESolidBall(level=4),
         )
     case = solid_case("superball")
     rows = []
     for ball in balls:
-        report = twoball.bounce(
-            case, solver=twoball.MoreauJean(ball), body=twoball.Body(mass_ratio)
-        )
+        report = drop(case, ball, body=Body(mass_ratio))
         rows.append(
             [
                 ball.label,
@@ -197,24 +203,23 @@ def thin_table(nu: float = 0.3, ratio: float = 0.01) -> str:
 
 def tennis_table() -> str:
     """The tennis ball: thick wall, shell (nu = 0.5 and 0.45), measurements."""
+    from twoball.fem_solid.ball import ThickBall
+    from twoball.modal.balls.shell import ShellBall, Wall
     from twoball.modal.floor.references import TABLE1_E2
     from twoball.modal.pairs import pair as find_pair
-
-    import twoball
+    from twoball.modal.parameters import Case
 
     balls = {
-        "thick wall (2 x 96 P2)": twoball.ThickBall(),
-        "shell (nu 0.5)": twoball.ShellBall(),
-        "shell (nu 0.45)": twoball.ShellBall(
-            wall=twoball.Wall(youngs_modulus=6e6, thickness=3.2e-3, poisson=0.45)
-        ),
+        "thick wall (2 x 96 P2)": ThickBall(),
+        "shell (nu 0.5)": ShellBall(),
+        "shell (nu 0.45)": ShellBall(wall=Wall(youngs_modulus=6e6, thickness=3.2e-3, poisson=0.45)),
     }
     rows = []
     for name, ball in balls.items():
-        drop = twoball.bounce(twoball.Case.preset("tennis"), solver=twoball.MoreauJean(ball))
-        cells = [name, f"{drop.e2:.3f}", f"{drop.contact_time_s * 1e3:.2f}"]
+        alone = drop(Case.preset("tennis"), ball)
+        cells = [name, f"{alone.e2:.3f}", f"{alone.contact_time_s * 1e3:.2f}"]
         for pair in ("tennis-coin", "tennis-nut", "tennis-table-tennis"):
-            whole = twoball.bounce(solver=twoball.MoreauJean(ball), pair=pair)
+            whole = drop(None, ball, pair=pair)
             cells.append(f"{whole.v1_ratio:.2f} / {whole.v2_ratio:.2f}")
         rows.append(cells)
     measured = ["measured (Table 1)", f"{TABLE1_E2['tennis'][0]:.2f}", "-"]
@@ -228,38 +233,39 @@ def tennis_table() -> str:
 
 def superball_table(mass_ratio: float = 0.01) -> str:
     """The two-ball bounce on the superball beside a membrane and a shell of its size and mass."""
-    from twoball.modal.balls.solid import MATERIALS, solid_case
 
-    import twoball
+    from twoball.modal.balls.membrane import LegendreBall
+    from twoball.modal.balls.shell import ShellBall, Wall
+    from twoball.modal.balls.solid import MATERIALS, SolidBall, solid_case
+    from twoball.modal.contact.body import Body
+    from twoball.modal.parameters import Case
 
     case = solid_case("superball")
-    solid = twoball.bounce(case, solver=twoball.MoreauJean(twoball.SolidBall()))
+    solid = drop(case, SolidBall())
     radius, mass = case.radius, MATERIALS["superball"].mass(case.radius)
     # the membrane's pressure whose pressure x area contact time pi sqrt(m / (2 pi R P)) is the
     # superball's contact time
     pressure = mass * (math.pi / solid.contact_time_s) ** 2 / (2.0 * math.pi * radius)
-    membrane_case = twoball.Case.from_pressure(
+    membrane_case = Case.from_pressure(
         pressure, mass, preset=None, radius=radius, v0=case.v0, damping=0.0
     )
     balls = {
-        "solid (Lamb, N = 64)": (case, twoball.SolidBall()),
-        "membrane (N = 192)": (membrane_case, twoball.LegendreBall()),
+        "solid (Lamb, N = 64)": (case, SolidBall()),
+        "membrane (N = 192)": (membrane_case, LegendreBall()),
         "shell (C/N0 = 4, h/R = 1/30)": (
             membrane_case,
-            twoball.ShellBall(wall=twoball.Wall(wall_stiffness_ratio=4.0, thickness_ratio=1 / 30)),
+            ShellBall(wall=Wall(wall_stiffness_ratio=4.0, thickness_ratio=1 / 30)),
         ),
     }
     rows = []
     for name, (ball_case, ball) in balls.items():
-        drop = twoball.bounce(ball_case, solver=twoball.MoreauJean(ball))
-        whole = twoball.bounce(
-            ball_case, solver=twoball.MoreauJean(ball), body=twoball.Body(mass_ratio)
-        )
+        alone = drop(ball_case, ball)
+        whole = drop(ball_case, ball, body=Body(mass_ratio))
         rows.append(
             [
                 name,
-                f"{drop.contact_time_s * 1e3:.3f}",
-                f"{drop.e2:.3f}",
+                f"{alone.contact_time_s * 1e3:.3f}",
+                f"{alone.e2:.3f}",
                 f"{whole.v1_ratio:.3f}",
                 f"{whole.v2_ratio:.3f}",
                 f"{whole.t_liftoff_s * 1e3:.3f}",
