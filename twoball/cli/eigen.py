@@ -1,6 +1,7 @@
 """``twoball eigen``: FE eigenvalues beside the exact l (l + 1), by :func:`twoball.fem.eigen`;
 with ``--ball shell`` the thin shell's two branches beside their closed form
-(:func:`twoball.fem.shell_eigen`)."""
+(:func:`twoball.fem.shell_eigen`); with ``--ball solid`` Lamb's spectrum
+(:func:`twoball.fem.solid_eigen`)."""
 
 from __future__ import annotations
 
@@ -122,7 +123,7 @@ def register(parser: argparse.ArgumentParser) -> None:
         type=integer,
         default=None,
         help="nonzero eigenvalues listed (default 25); --ball shell: the highest degree "
-        "(default 10; 2 count + 1 rows)",
+        "(default 10; 2 count + 1 rows); --ball solid: radial orders of each degree (default 5)",
     )
     add_ball_option(parser)
     add_shell_eigen_options(parser)
