@@ -53,6 +53,9 @@ def test_liftoff_of_a_massless_body_on_the_dropped_superball(capsys):
     ball = twoball.SolidBall(modes=16, radial_orders=3)
     api = twoball.liftoff(solid_case("superball"), solver=twoball.MoreauJean(ball))
     assert data["t_liftoff_s"] == api.t_liftoff_s and data["v_liftoff_m_s"] == api.v_liftoff_m_s
+    fe, _ = cli_json(capsys, "liftoff", "--ball", "solid", "--backend", "fem", "--level", "2")
+    assert fe["lifted"] and fe["backend"] == "fem" and fe["before_floor_release"]
+    assert fe["interpolation"] in ("splines", "hermite")
 
 
 @pytest.mark.parametrize(("poisson", "count", "top"), [(0.1, 6, 12), (-0.2, 3, 5), (0.4, 4, 8)])
