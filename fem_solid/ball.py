@@ -67,13 +67,16 @@ POLE_LEVEL_RANGE = (0, 8)
 DEFAULT_THICK_CELLS = (2, 96)
 
 
-def pole_refined_disc(level: int, pole_levels: int = 0, pole_angle: float = 0.6) -> MeshTri2:
-    """The half disc of :func:`~twoball.fem_solid.mesh.half_disc` refined towards the south pole.
+def pole_refined_disc(
+    level: int, pole_levels: int = 0, pole_angle: float = 0.6, top_levels: int = 0
+) -> MeshTri2:
+    """The half disc of :func:`~twoball.fem_solid.mesh.half_disc` refined towards the poles.
 
     ``level`` uniform refinements, then ``pole_levels`` refinements of the
     triangles within the distance ``pole_angle 2^-j`` (units R) of the south pole
     at the j-th (each halves the size there; red-green closure keeps the mesh
-    conforming), every new arc vertex moved onto the circle; P2 geometry.
+    conforming), and ``top_levels`` of those near the north pole (a body's cap),
+    every new arc vertex moved onto the circle; P2 geometry.
     """
     from skfem import MeshTri1, MeshTri2
     from twoball.fem_solid.mesh import _project_arc, _quadratic_on_circle
@@ -86,12 +89,13 @@ def pole_refined_disc(level: int, pole_levels: int = 0, pole_angle: float = 0.6)
     mesh = MeshTri1(p, t)
     for _ in range(int(level)):
         mesh = _project_arc(mesh.refined())
-    for j in range(int(pole_levels)):
-        centres = mesh.p[:, mesh.t].mean(axis=1)
-        near = np.hypot(centres[0], centres[1] + 1.0) < pole_angle * 2.0**-j
-        if not near.any():
-            break
-        mesh = _project_arc(mesh.refined(np.flatnonzero(near)))
+    for pole, levels in ((-1.0, pole_levels), (1.0, top_levels)):
+        for j in range(int(levels)):
+            centres = mesh.p[:, mesh.t].mean(axis=1)
+            near = np.hypot(centres[0], centres[1] - pole) < pole_angle * 2.0**-j
+            if not near.any():
+                break
+            mesh = _project_arc(mesh.refined(np.flatnonzero(near)))
     return _quadratic_on_circle(MeshTri2.from_mesh(mesh), outer=1.0)
 
 
@@ -331,6 +335,8 @@ class FESolidBall:
         needs several arc nodes (:func:`pole_refined_disc`).
     order : int
         The element order: 2 (P2, isoparametric) only.
+    top_levels : int
+        Refinements towards the north pole in [0, 8] (default 0): a body's cap.
 
     Examples
     --------
@@ -347,6 +353,7 @@ class FESolidBall:
     level: int = DEFAULT_SOLID_LEVEL
     pole_levels: int = 0
     order: int = 2
+    top_levels: int = 0
 
     #: The physics of this ball (the JSON's ``ball``) and its discretisation.
     kind = "solid"
@@ -361,6 +368,8 @@ class FESolidBall:
         object.__setattr__(self, "level", _check_int("level", self.level, SOLID_LEVEL_RANGE))
         pole = _check_int("pole_levels", self.pole_levels, POLE_LEVEL_RANGE)
         object.__setattr__(self, "pole_levels", pole)
+        top = _check_int("top_levels", self.top_levels, POLE_LEVEL_RANGE)
+        object.__setattr__(self, "top_levels", top)
         if isinstance(self.order, bool) or self.order != 2:
             raise ParameterError("order", "2 (isoparametric P2)", self.order)
 
@@ -368,11 +377,12 @@ class FESolidBall:
     def label(self) -> str:
         """``solid axisym level 3 P2`` (``+ 2 pole`` with pole refinements)."""
         pole = f" + {self.pole_levels} pole" if self.pole_levels else ""
-        return f"solid axisym level {self.level}{pole} P2"
+        top = f" + {self.top_levels} top" if self.top_levels else ""
+        return f"solid axisym level {self.level}{pole}{top} P2"
 
     def mesh(self) -> MeshTri2:
         """The half disc of this ball (:func:`pole_refined_disc`)."""
-        return pole_refined_disc(self.level, self.pole_levels)
+        return pole_refined_disc(self.level, self.pole_levels, top_levels=self.top_levels)
 
     def size(self, case: Case | None = None) -> tuple[int, int] | None:
         """Coordinates and floor points: known once the mesh is built (None before)."""
@@ -403,7 +413,8 @@ class FESolidBall:
 
     def space(self, case: Case) -> SolidSpace:
         """Every eigenpair of this ball's space for the case's material."""
-        return _space(self.level, self.pole_levels, float(self.material_of(case).poisson))
+        poisson = float(self.material_of(case).poisson)
+        return _space(self.level, self.pole_levels, poisson, self.top_levels)
 
     def describe(self, case: Case, monitor: Any = None) -> ModalBall:
         """The solid of ``case`` on this mesh (dimensionless: R, 1/c, its mass)."""
@@ -421,6 +432,7 @@ class FESolidBall:
             "discretisation": self.backend,
             "level": self.level,
             "pole_levels": self.pole_levels,
+            "top_levels": self.top_levels,
             "order": self.order,
             "material": material,
         }
@@ -429,13 +441,14 @@ class FESolidBall:
 _SPACES: dict[tuple[Any, ...], SolidSpace] = {}
 
 
-def _space(level: int, pole_levels: int, poisson: float) -> SolidSpace:
+def _space(level: int, pole_levels: int, poisson: float, top_levels: int = 0) -> SolidSpace:
     """The solid's space, kept for the process (a drop and its ball-alone twin share it)."""
-    key = ("solid", level, pole_levels, poisson)
+    key = ("solid", level, pole_levels, poisson, top_levels)
     if key not in _SPACES:
         if len(_SPACES) > 4:
             _SPACES.clear()
-        _SPACES[key] = solid_space(pole_refined_disc(level, pole_levels), poisson)
+        mesh = pole_refined_disc(level, pole_levels, top_levels=top_levels)
+        _SPACES[key] = solid_space(mesh, poisson)
     return _SPACES[key]
 
 

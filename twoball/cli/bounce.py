@@ -199,7 +199,7 @@ def drop_ball(args: argparse.Namespace) -> Any:
         from twoball.cli.solid import solid_ball, thick_ball
 
         return solid_ball(args) if kind == "solid" else thick_ball(args)
-    for name in ("density", "radial_orders", "level", "pole_levels", "wall_cells"):
+    for name in ("density", "radial_orders", "level", "pole_levels", "top_levels", "wall_cells"):
         if getattr(args, name, None) is not None:
             valid = "given with --ball solid or thick"
             raise ParameterError(name, valid, getattr(args, name))

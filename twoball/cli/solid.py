@@ -80,6 +80,12 @@ def add_solid_options(
         metavar="J",
         help="--ball solid, fem: refinements towards the south pole (default 0)",
     )
+    group.add_argument(
+        "--top-levels",
+        type=integer,
+        metavar="J",
+        help="--ball solid, fem: refinements towards the north pole, a body's cap (default 0)",
+    )
     if view:
         group.add_argument(
             "--view",
@@ -182,7 +188,7 @@ def solid_ball(args: argparse.Namespace) -> Any:
     given = None if MATERIALS.get(args.preset or "") == chosen else chosen
     backend = args.backend
     if backend == "legendre":
-        for name in ("level", "pole_levels", "elements", "order", "wall_cells"):
+        for name in ("level", "pole_levels", "top_levels", "elements", "order", "wall_cells"):
             if getattr(args, name, None) is not None:
                 valid = "left out with backend legendre (Lamb's modes: --modes, --radial-orders)"
                 raise ParameterError(name, valid, getattr(args, name))
@@ -198,6 +204,8 @@ def solid_ball(args: argparse.Namespace) -> Any:
         fields["level"] = args.level
     if args.pole_levels is not None:
         fields["pole_levels"] = args.pole_levels
+    if args.top_levels is not None:
+        fields["top_levels"] = args.top_levels
     if getattr(args, "order", None) is not None:
         fields["order"] = args.order
     return twoball.FESolidBall(given, **fields)
@@ -206,7 +214,14 @@ def solid_ball(args: argparse.Namespace) -> Any:
 def thick_ball(args: argparse.Namespace) -> Any:
     """The thick wall of the flags (``--youngs-modulus --thickness [--poisson] [--density]``,
     else the preset's) on ``--wall-cells`` x ``--elements`` P2 cells."""
-    for name in ("modes", "radial_orders", "level", "pole_levels", "wall_stiffness_ratio"):
+    for name in (
+        "modes",
+        "radial_orders",
+        "level",
+        "pole_levels",
+        "top_levels",
+        "wall_stiffness_ratio",
+    ):
         if getattr(args, name, None) is not None:
             valid = "left out with --ball thick (the annulus: --elements, --wall-cells)"
             raise ParameterError(name, valid, getattr(args, name))
