@@ -193,16 +193,15 @@ def drop_ball(args: argparse.Namespace) -> Any:
     from twoball.cli.shell import check_ball_kind, shell_ball
 
     kind = check_ball_kind(args)
-    if kind == "shell":
-        return shell_ball(args)
     if kind in ("solid", "thick"):
         from twoball.cli.solid import solid_ball, thick_ball
 
         return solid_ball(args) if kind == "solid" else thick_ball(args)
-    for name in ("density", "radial_orders", "level", "pole_levels", "top_levels", "wall_cells"):
-        if getattr(args, name, None) is not None:
-            valid = "given with --ball solid or thick"
-            raise ParameterError(name, valid, getattr(args, name))
+    from twoball.cli.solid import refuse_solid_flags
+
+    refuse_solid_flags(args)
+    if kind == "shell":
+        return shell_ball(args)
     fields = {n: getattr(args, n) for n in ("elements", "order") if getattr(args, n) is not None}
     if args.backend == "legendre":
         if args.mesh is not None or fields:

@@ -24,6 +24,10 @@ def run(args: argparse.Namespace) -> int:
     from twoball.cli.shell import check_ball_kind, refuse_shell_eigen_flags
 
     kind = check_ball_kind(args)
+    if kind != "solid" and args.max_degree is not None:
+        from twoball._common.errors import ParameterError
+
+        raise ParameterError("max_degree", "given with --ball solid", args.max_degree)
     if kind == "shell":
         return run_shell(args)
     if kind == "solid":

@@ -137,12 +137,12 @@ def solve_from_options(args: argparse.Namespace) -> twoball.LiftoffReport:
     the damping law."""
     from twoball._common.progress import QUICK, Reporter
     from twoball.cli.shell import check_ball_kind
+    from twoball.cli.solid import refuse_solid_flags, solid_liftoff
 
     kind = check_ball_kind(args)
     if kind != "membrane":
-        from twoball.cli.solid import solid_liftoff
-
         return solid_liftoff(args, kind)
+    refuse_solid_flags(args, level=False)  # --level is the membrane's mesh here
     body = body_options(args)
     options = {
         "solver": liftoff_solver(args, body),

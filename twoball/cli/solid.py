@@ -101,6 +101,19 @@ def add_solid_options(
     )
 
 
+#: The solid's and the thick wall's own flags (argparse names).
+SOLID_FLAGS = ("density", "radial_orders", "pole_levels", "top_levels", "wall_cells", "view")
+
+
+def refuse_solid_flags(args: argparse.Namespace, level: bool = True) -> None:
+    """A membrane's or a shell's run refuses the solid's own flags by name."""
+    names = (*SOLID_FLAGS, "level") if level else SOLID_FLAGS
+    for name in names:
+        value = getattr(args, name, None)
+        if value is not None and not (name == "view" and value == "surface"):
+            raise ParameterError(name, "given with --ball solid or thick", value)
+
+
 def _refuse(args: argparse.Namespace, table: dict[str, str]) -> None:
     for name, why in table.items():
         value = getattr(args, name, None)
@@ -328,6 +341,7 @@ NOT_DROPPED = {
     "initial": "with --ball solid in liftoff",
     "mesh_file": "with --ball solid in liftoff",
     "pole": "with --ball solid in liftoff",
+    "wall_cells": "with --ball solid (the thick wall's: --ball thick in twoball bounce)",
 }
 
 
