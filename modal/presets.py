@@ -76,8 +76,43 @@ def _volleyball() -> Measured:
     )
 
 
+#: The superball's radius [m]: a 50 mm ball (assumed, the classroom size).
+SUPERBALL_RADIUS = 0.025
+#: The superball's material (SI; every value assumed: docs/solid.rst), the source of
+#: :data:`twoball.modal.balls.solid.MATERIALS`.
+SUPERBALL_MATERIAL = {
+    "density": 1100.0,
+    "youngs_modulus": 8.0e6,
+    "poisson": 0.45,
+    "source": "polybutadiene (Zectron) superball: every value assumed, no measurement reached "
+    "(the paper gives none): rho = 1100 kg/m^3 (a filled polybutadiene compound), E = 8 "
+    "MPa (a hard rubber of Shore A ~80 by Gent's hardness-modulus relation), nu = 0.45 "
+    "(rubber is 0.49-0.5; 0.45 keeps the displacement elements free of locking and is "
+    "one of the reference Poisson ratios of Lamb's roots)",
+}
+
+
+def _superball() -> Measured:
+    m = SUPERBALL_MATERIAL
+    shear = m["youngs_modulus"] / (2.0 * (1.0 + m["poisson"]))  # mu [Pa]
+    radius = SUPERBALL_RADIUS
+    return Measured(
+        radius=radius,
+        wave_speed=(shear / m["density"]) ** 0.5 / radius,  # c = c_s / R
+        v0=4.1,
+        phi_a=None,
+        damping=0.0,
+        modes=30,
+        mass=4.0 / 3.0 * 3.141592653589793 * radius**3 * m["density"],
+        source="a solid polybutadiene ball (docs/solid.rst): R = 25 mm assumed; c = c_s / R "
+        "of its material (SUPERBALL_MATERIAL, every value assumed); undamped (D = 0: no "
+        "measured losses); |v0| = 4.1 m/s from the basketball",
+    )
+
+
 #: Presets.  basketball: Table 2, Fig. 11 (R, c, ``|v0|``, phi_a measured; D fitted
 #: once).  tennis, volleyball: rule-book sizes and pressures, phi_a from eq. (3.7).
+#: superball: a solid ball (no pressure), c = c_s / R of its assumed material.
 MEASURED: dict[str, Measured] = {
     "basketball": Measured(
         radius=0.12,
@@ -92,4 +127,5 @@ MEASURED: dict[str, Measured] = {
     ),  # fmt: skip
     "tennis": _tennis(),
     "volleyball": _volleyball(),
+    "superball": _superball(),
 }

@@ -18,7 +18,9 @@ Public names (``twoball.__all__``): the verbs :func:`liftoff`, :func:`bounce`
 :func:`table1`, :func:`report`, ``fem.eigen``; the solvers :class:`ClosedForm`,
 :class:`Superposition`, :class:`GeneralizedAlpha`, :class:`MoreauJean`; the
 balls :class:`Ball` (the protocol), :class:`LegendreBall`, :class:`FEBall`, the shell's
-:class:`ShellBall` and :class:`FEShellBall` with its :class:`Wall`; the
+:class:`ShellBall` and :class:`FEShellBall` with its :class:`Wall`, the solid's
+:class:`SolidBall` and :class:`FESolidBall` with its :class:`SolidMaterial`, the
+thick wall's :class:`ThickBall` with its :class:`ThickWall`; the
 case and the option and model objects :class:`Case`, :class:`MeshOptions`,
 :class:`Body`, :class:`Membrane`, :class:`ModalRatio`, :class:`Rayleigh`,
 :class:`Drop`, :class:`RenderOptions`, :class:`PlotOptions`; the results;
@@ -63,6 +65,11 @@ _NAMES: dict[str, str | tuple[str, str]] = {
     "Wall": "twoball.modal.balls.shell",
     "ShellBall": "twoball.modal.balls.shell",
     "FEShellBall": "twoball.fem_shell.ball",
+    "SolidMaterial": "twoball.modal.balls.solid",
+    "SolidBall": "twoball.modal.balls.solid",
+    "FESolidBall": "twoball.fem_solid.ball",
+    "ThickBall": "twoball.fem_solid.ball",
+    "ThickWall": "twoball.fem_solid.ball",
     "drop_elements": "twoball.fem_membrane.ball",
     "ClosedForm": "twoball._solvers",
     "Superposition": "twoball._solvers",

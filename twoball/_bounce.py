@@ -295,6 +295,7 @@ class BounceReport(Numbers):
         mesh: Any = None,
         frames: int = 40,
         format: str | None = None,
+        view: str = "surface",
     ) -> list[Path]:
         """Write the drop on a sphere mesh: XDMF (+ HDF5), PVD (+ VTUs) or one VTU frame.
 
@@ -305,7 +306,10 @@ class BounceReport(Numbers):
         contacts (the text ``contact_events``, JSON of :attr:`events`, and their
         counts); every field in SI (:mod:`twoball.verify.output.drop_fields`).
         ``mesh``: a sphere (default the level-3 P2 icosphere); ``frames``
-        instants from the first touch to the end of the run.
+        instants from the first touch to the end of the run.  ``view="cut"`` (a
+        ball with a volume: solid, thick): the meridian plane through the volume
+        instead of the surface, with the wave's ``speed_m_s``
+        (:mod:`twoball.verify.output.solid_cut`).
         """
         import json
 
@@ -313,9 +317,14 @@ class BounceReport(Numbers):
         from twoball.verify.output.series import write_series
 
         sphere, times = self._mesh_and_times(mesh, frames)
-        series = drop_series(
-            self.result, self.case, sphere, times, self.mass_kg, self._text, self.events
-        )
+        if _view(view, mesh) == "cut":
+            from twoball.verify.output.solid_cut import cut_series
+
+            series = cut_series(self.result, self.case, times, self.mass_kg, self._text)
+        else:
+            series = drop_series(
+                self.result, self.case, sphere, times, self.mass_kg, self._text, self.events
+            )
         if self.provenance is not None:
             series = replace(
                 series, text={**series.text, "provenance": json.dumps(self.provenance)}
@@ -331,13 +340,16 @@ class BounceReport(Numbers):
         warp: float | None = None,
         size: Any = None,
         fps: float = 20.0,
+        view: str = "surface",
     ) -> Path:
         """Picture (``.png``: the largest compression) or animation (``.gif``, ``.mp4``).
 
         The membrane's displacement from the centre, coloured, in the centre's
         frame: the bottom flattens on the floor and springs back; the caption
         gives the time, the floor force, the centre's height above R and
-        whether the ball is on the floor.
+        whether the ball is on the floor.  ``view="cut"``: the meridian plane through
+        a ball with a volume, coloured by the displacement along the radius (the
+        compression wave inside).
         """
         from twoball.verify.output.drop_fields import drop_scene
         from twoball.verify.output.render import DEFAULT_SIZE, render_scene
@@ -345,7 +357,12 @@ class BounceReport(Numbers):
         sphere, times = self._mesh_and_times(mesh, frames)
         if Path(out).suffix.lower() == ".png":  # one picture: the largest compression
             times = times[:1] * 0.0 + self.t_max_compression_s
-        scene = drop_scene(self.result, self.case, sphere, times, self.mass_kg, self._text)
+        if _view(view, mesh) == "cut":
+            from twoball.verify.output.solid_cut import cut_scene
+
+            scene = cut_scene(self.result, self.case, times, self.mass_kg, self._text)
+        else:
+            scene = drop_scene(self.result, self.case, sphere, times, self.mass_kg, self._text)
         return render_scene(out, scene, warp=warp, size=size or DEFAULT_SIZE, fps=fps)
 
     @property
@@ -362,6 +379,15 @@ class BounceReport(Numbers):
             f"c = {c.wave_speed:g} 1/s, v0 = {c.v0:g} m/s, {self._physics}, "
             f"{self.model['gas']} gas"
         )
+
+
+def _view(view: object, mesh: Any) -> str:
+    """``surface`` or ``cut`` (the volume's meridian plane: no sphere mesh to give)."""
+    if view not in ("surface", "cut"):
+        raise ParameterError("view", "surface or cut", view)
+    if view == "cut" and mesh is not None:
+        raise ParameterError("mesh", "left out with view cut (the ball's own plane)", mesh)
+    return str(view)
 
 
 _FIELDS = tuple(f for f in Numbers.__dataclass_fields__)

@@ -97,13 +97,17 @@ def liftoff(
 
     case = with_damping(case, damping)
     if isinstance(solver, MoreauJean):
-        if not massive:
+        if body is None and solver.ball is not None:  # the ball dropped, the body massless
+            report = _dropped(case, solver, progress)
+        elif not massive:
             valid = (
                 "a body of mass ratio > 0 with twoball.MoreauJean (it steps the body's "
-                "contacts; the massless body: ClosedForm or Superposition)"
+                "contacts; the massless body: ClosedForm or Superposition, or a ball given to "
+                "MoreauJean without a body: the ball dropped on the floor)"
             )
             raise ParameterError("body", valid, None if body is None else body.mass_ratio)
-        report = _stepped(case, body, solver, progress)
+        else:
+            report = _stepped(case, body, solver, progress)
     elif massive:
         valid = "twoball.MoreauJean for a body of finite mass (its contacts are stepped)"
         raise ParameterError("solver", valid, type(solver).__name__)
@@ -121,6 +125,73 @@ def liftoff(
     if damping is not None:
         arguments["damping"] = damping.as_dict()
     return replace(report, provenance=block(case, "twoball.liftoff", arguments))
+
+
+def _dropped(case: Case, solver: Any, progress: Step | None) -> LiftoffReport:
+    """Any ball dropped on the floor, the paper's massless body on its top (criteria (i)-(ii)).
+
+    The drop of :func:`twoball.bounce` (its window, step and ball) with the top's
+    motion sampled to the window's end (:mod:`twoball.modal.floor.massless`);
+    times after the ball's maximal compression.
+    """
+    from twoball._bounce import check_bounce_cost
+    from twoball._common.watch import Watch
+    from twoball.modal.floor.bounce import bounce_problem
+    from twoball.modal.floor.drop import DropSettings
+    from twoball.modal.floor.massless import massless_liftoff
+    from twoball.modal.floor.system import floor_system
+
+    if solver.sigma is not None:
+        valid = "left out for a dropped ball (it starts undeformed: nothing to filter)"
+        raise ParameterError("sigma", valid, solver.sigma)
+    problem = bounce_problem(case, ball=solver.ball, dt=solver.dt, t_end=solver.t_end)
+    check_bounce_cost(problem)
+    say = progress or silent
+    say(f"the drop of {problem.ball.label} and the massless body's criteria on its top")
+    case = problem.case
+    ball = problem.ball.describe(case, Watch())
+    system = floor_system(ball, case.gamma, problem.drop.floor_restitution)
+    settings = DropSettings(problem.v0, case.gamma, problem.dt, problem.t_end)
+    run = massless_liftoff(system, settings, Watch())
+    drop = run.drop
+    unit = case.scalings.time
+    t_touch = None if run.result.t is None else (run.result.t + run.shift) * unit
+    release = drop.intervals[-1].end * unit if drop.left else None
+    summary = getattr(problem.ball, "summary", None)
+    extra: dict[str, Any] = {
+        "ball": problem.ball.as_dict(),
+        "resolution": problem.ball.label,
+        "t_liftoff_from_touch_s": t_touch,
+        "t_max_compression_s": run.shift * unit,
+        "drop": {
+            "left_floor": drop.left,
+            "contact_time_s": None if drop.contact_time is None else drop.contact_time * unit,
+            "e2": drop.e2,
+            "v2_m_s": None if drop.v2 is None else drop.v2 * case.scalings.velocity,
+            "t_floor_release_s": release,
+        },
+        "before_floor_release": None
+        if t_touch is None or release is None
+        else bool(t_touch < release),
+        "dt_s": problem.dt * unit,
+        "t_end_s": problem.t_end * unit,
+        "mass_kg": problem.mass_kg,
+    }
+    if summary is not None:
+        extra["model"] = summary(case)
+    warnings = list(problem.warnings)
+    extra["interpolation"] = run.interpolation
+    if run.interpolation == "hermite":
+        warnings.append(
+            "the top's samples are interpolated by one quintic through u, u_t and u_tt (the "
+            "separate splines' re-contact search did not settle): u_tt between the steps is "
+            "first order in dt"
+        )
+    if not drop.left:
+        warnings.append("the ball has not left the floor within the window (raise t_end)")
+    return LiftoffReport(
+        case, run.result, problem.ball.backend, "none", "window", extra, tuple(warnings)
+    )
 
 
 def _check_body(body: Any) -> Any:

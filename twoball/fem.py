@@ -1,5 +1,6 @@
-"""Finite elements on their own: ``twoball.fem.eigen``, the membrane's spectrum on a mesh, and
-``twoball.fem.shell_eigen``, the thin shell's (closed form or the meridian's elements).
+"""Finite elements on their own: ``twoball.fem.eigen``, the membrane's spectrum on a mesh,
+``twoball.fem.shell_eigen``, the thin shell's (closed form or the meridian's elements), and
+``twoball.fem.solid_eigen``, the elastic sphere's (Lamb's roots or the (r, z) elements).
 
 The lift-off on finite elements is :func:`twoball.liftoff` with the solvers
 :class:`~twoball.Superposition` and :class:`~twoball.GeneralizedAlpha`.
@@ -16,7 +17,7 @@ from twoball._common.progress import Step, check_progress, silent
 from twoball._common.watch import Watch
 from twoball.fem_membrane.options import MeshOptions
 
-__all__ = ["eigen", "shell_eigen"]
+__all__ = ["eigen", "shell_eigen", "solid_eigen"]
 
 
 @timed
@@ -246,4 +247,96 @@ def shell_eigen(
             row["omega_rad_s"] = omega
             row["frequency_hz"] = None if omega is None else omega / (2.0 * np.pi)
         rows.append(row)
+    return rows
+
+
+@timed
+def solid_eigen(
+    poisson: float,
+    count: int = 5,
+    backend: str = "legendre",
+    *,
+    level: int = 4,
+    max_degree: int = 10,
+) -> list[dict[str, Any]]:
+    """Rows ``degree``, ``radial_order``, ``value`` (omega R / c_s) and ``exact`` (Lamb's root).
+
+    ``legendre``: the closed form's roots (:func:`~twoball.modal.balls.solid.lamb_table`,
+    the drop's) beside :func:`~twoball.modal.solid.lamb.lamb_roots`, with
+    ``residual`` ``|F_n|`` of Lamb's equation at the value; ``fem``: the (r, z) P2
+    eigenvalues on the half disc of ``level`` (classified by degree and radial
+    order) beside Lamb's root of the same degree and order.  ``count`` radial
+    orders of degrees 0..``max_degree`` (the rigid translation left out).
+
+    Examples
+    --------
+    >>> import twoball
+    >>> row = twoball.fem.solid_eigen(0.25, 2, max_degree=2)[-2]
+    >>> row["degree"], row["radial_order"], round(row["value"], 4)
+    (2, 1, 2.6399)
+    """
+    import numpy as np
+
+    from twoball.modal.balls.solid import SolidMaterial
+
+    SolidMaterial(1.0, 1.0, poisson)  # nu in (-1, 0.5)
+    if backend not in ("legendre", "fem"):
+        raise ParameterError("backend", "one of legendre, fem", backend)
+    for name, value, low, high in (
+        ("count", count, 1, 40),
+        ("max_degree", max_degree, 0, 60),
+        ("level", level, 1, 6),
+    ):
+        if isinstance(value, bool) or not isinstance(value, Integral) or not low <= value <= high:
+            raise ParameterError(name, f"an integer in [{low}, {high}]", value)
+
+    from twoball.modal.balls.solid import lamb_table
+    from twoball.modal.solid.lamb import lamb_function, lamb_roots
+
+    rows: list[dict[str, Any]] = []
+    if backend == "legendre":
+        table = lamb_table(poisson, max_degree, count)
+        for n in range(max_degree + 1):
+            exact = lamb_roots(n, poisson, count)
+            chosen = (table.degree == n) & (table.radial_order > 0)
+            roots = table.eta[chosen][np.argsort(table.radial_order[chosen])]
+            residual = np.abs(lamb_function(n, roots, poisson))
+            for k, (eta, ref, res) in enumerate(zip(roots, exact, residual, strict=True), 1):
+                rows.append(
+                    {
+                        "degree": n,
+                        "radial_order": k,
+                        "value": float(eta),
+                        "exact": float(ref),
+                        "relative_error": abs(float(eta) / float(ref) - 1.0),
+                        "residual": float(res),
+                    }
+                )
+        return rows
+    from twoball.fem_solid.eigen import axisymmetric_eigen
+    from twoball.fem_solid.mesh import half_disc
+
+    # enough eigenpairs for `count` orders of every degree up to max_degree
+    pairs = (max_degree + 1) * count + 1
+    exact_top = max(lamb_roots(n, poisson, count)[-1] for n in range(max_degree + 1))
+    while True:
+        fe = axisymmetric_eigen(half_disc(level), poisson, pairs, max_degree=max_degree + 6)
+        if fe.eta[-1] > 1.05 * exact_top or pairs > 4000:
+            break
+        pairs = int(pairs * 1.5)
+    for n in range(max_degree + 1):
+        exact = lamb_roots(n, poisson, count)
+        chosen = (fe.degree == n) & ~fe.rigid
+        values = np.sort(fe.eta[chosen])[:count]
+        for k in range(count):
+            value = float(values[k]) if k < values.size else None
+            rows.append(
+                {
+                    "degree": n,
+                    "radial_order": k + 1,
+                    "value": value,
+                    "exact": float(exact[k]),
+                    "relative_error": None if value is None else abs(value / exact[k] - 1.0),
+                }
+            )
     return rows

@@ -6,7 +6,8 @@
 (:class:`~twoball.modal.balls.description.ModalBall`: modes, spectrum, damping,
 vertical rows at the floor points, the top and its caps, the centre);
 :mod:`~twoball.modal.balls.membrane` is the membrane on its Legendre modes and
-:mod:`~twoball.modal.balls.shell` the thin shell on its closed-form modes.  The
+:mod:`~twoball.modal.balls.shell` the thin shell on its closed-form modes,
+:mod:`~twoball.modal.balls.solid` the elastic sphere on Lamb's modes.  The
 finite-element membrane is :mod:`twoball.fem_membrane.ball`, the finite-element
 shell :mod:`twoball.fem_shell.ball`.  Names load on
 first use.
@@ -27,6 +28,11 @@ _NAMES = {
     "Wall": "twoball.modal.balls.shell",
     "ShellBall": "twoball.modal.balls.shell",
     "WALLS": "twoball.modal.balls.shell",
+    "SolidMaterial": "twoball.modal.balls.solid",
+    "SolidBall": "twoball.modal.balls.solid",
+    "MATERIALS": "twoball.modal.balls.solid",
+    "solid_case": "twoball.modal.balls.solid",
+    "lamb_table": "twoball.modal.balls.solid",
 }
 __getattr__, __dir__ = attach(__name__, _NAMES)
 __all__ = sorted(_NAMES)

@@ -174,7 +174,13 @@ def bounce_problem(
     whole = resolve_body(case, body, chosen, drop)
     check_drop_case(case, drop)
     given_v0_note = case.v0_note
-    inputs = resolve_drop(case, drop, damping, membrane_ball=ball.kind == "membrane")
+    inputs = resolve_drop(
+        case,
+        drop,
+        damping,
+        membrane_ball=ball.kind == "membrane",
+        pressurised=bool(getattr(ball, "pressurised", True)),
+    )
     from twoball.modal.guards import case_warnings
 
     # inputs far from any ball first (unit slips), then the model's
@@ -237,7 +243,7 @@ def simulate(problem: BounceProblem, monitor: Monitor | None = None) -> BounceRe
     extra: dict[str, Any] = {}
     if whole is not None:
         warnings += _body_warnings(result, whole, ball)
-        baselines = _baselines(case, drop, whole, problem.inputs, result, monitor)
+        baselines = _baselines(case, drop, whole, problem.inputs, result, monitor, problem.mass_kg)
         extra = {"whole": whole, "baselines": baselines}
     return BounceReport(
         case,
@@ -285,21 +291,26 @@ def _baselines(
     inputs: DropModel,
     result: Any,
     monitor: Monitor | None,
-) -> dict[str, Any]:
+    mass: float | None = None,
+) -> dict[str, Any] | None:
     """The lumped models of §1(b) for the same drop (SI), with their inputs.
 
     A Table 1 pair takes its own inputs (Table 1's mu, e2, e12, the pressure
     rule); any other body takes the ball's e2 as this solver gives it for the
     ball alone (from the run itself when the ball left the floor before the body
     touched, else from a drop of the ball alone) and Newton's e12 given.
+    ``mass``: the ball's [kg] (default the membrane's ``2 pi R P / c^2``).  A
+    ball without pressure (a solid) has no pressure rule for the springs: None.
     """
     from twoball.modal.lumped.baselines import baselines, body_inputs, pair_inputs
 
     if whole.pair is not None:
         inputs_ = pair_inputs(whole.pair)
+    elif inputs.pressure is None:
+        return None
     else:
         e2, where = _e2_alone(result, monitor)
-        mass = inputs.mass
+        mass = inputs.mass if mass is None else mass
         inputs_ = body_inputs(
             whole.body.mass_ratio * mass,
             mass,

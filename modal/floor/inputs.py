@@ -56,8 +56,9 @@ class DropModel:
         pressure, the gas and the membrane operator in use.
     drop : Drop
         The options as given.
-    pressure : float
-        Excess pressure P [Pa] (the case's, else its preset's measured one).
+    pressure : float or None
+        Excess pressure P [Pa] (the case's, else its preset's measured one; None
+        for a ball that is not pressurised).
     gas : str
         The gas law used.
     spectrum : Stiffness
@@ -70,7 +71,7 @@ class DropModel:
 
     case: Case
     drop: Drop
-    pressure: float
+    pressure: float | None
     gas: str
     spectrum: Stiffness
     law: ModalRatio | Rayleigh
@@ -96,7 +97,12 @@ class DropModel:
 
 
 def resolve_drop(
-    case: Case, drop: Drop, damping: Any = None, *, membrane_ball: bool = True
+    case: Case,
+    drop: Drop,
+    damping: Any = None,
+    *,
+    membrane_ball: bool = True,
+    pressurised: bool = True,
 ) -> DropModel:
     """The drop of ``case`` with ``drop``'s options and the damping law ``damping``.
 
@@ -109,6 +115,8 @@ def resolve_drop(
     the spectrum and the law the solvers take.  ``membrane_ball=False`` (a shell,
     a solid: their own walls hold the breathing mode) leaves the membrane
     operator out of it: the case keeps the paper's, and a drop without gas runs.
+    ``pressurised=False`` (a solid ball: no excess pressure, no enclosed gas)
+    needs no pressure and takes no gas (``pressure`` None, ``gas`` "none").
 
     Raises
     ------
@@ -119,8 +127,14 @@ def resolve_drop(
     notes: list[str] = []
     warnings: list[str] = []
     case = _impact(case, drop)
-    pressure = _pressure(case, notes)
-    gas = drop.gas or (case.gas if case.gas != "none" else "adiabatic")
+    if pressurised:
+        pressure = _pressure(case, notes)
+        gas = drop.gas or (case.gas if case.gas != "none" else "adiabatic")
+    else:
+        if drop.gas is not None:
+            valid = "left out with a ball without enclosed gas (a solid ball)"
+            raise ParameterError("gas", valid, drop.gas)
+        pressure, gas = case.pressure, "none"
     # a free centre needs the operator whose degree 1 is a free translation
     membrane = Membrane("pressurised") if drop.membrane is None else Membrane.of(drop.membrane)
     if not membrane_ball:

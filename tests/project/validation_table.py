@@ -97,6 +97,11 @@ RANGES: dict[str, Range] = {
     "--atmosphere": Range(0.0, 1e12),
     "--floor-restitution": Range(0.0, 1.0),
     "--gap": Range(0.0, 10.0),
+    "--density": Range(0.0, 1e5, low_open=True),
+    "--radial-orders": Range(1, 40, integer=True),
+    "--pole-levels": Range(0, 8, integer=True),
+    "--top-levels": Range(0, 8, integer=True),
+    "--wall-cells": Range(1, 16, integer=True),
 }
 #: Values that a range accepts but the model refuses anyway, per option.
 ALSO_BAD: dict[str, tuple[str, ...]] = {
@@ -162,6 +167,17 @@ CONTEXT: dict[tuple[str, str], list[str]] = {
     },
     ("bounce", "--frames"): ["--render", "{tmp}/x.gif"],
     ("sweep", "--gap"): ["--bounce", "--mass-ratio", "0.05"],  # refused before the --param
+    **{  # the solid ball's and the thick wall's own flags (issue 33)
+        (command, flag): context
+        for command in ("bounce", "liftoff")
+        for flag, context in (
+            ("--density", ["--ball", "solid", "--youngs-modulus", "8e6", "--poisson", "0.45"]),
+            ("--radial-orders", ["--ball", "solid"]),
+            ("--pole-levels", ["--ball", "solid", "--backend", "fem"]),
+            ("--top-levels", ["--ball", "solid", "--backend", "fem"]),
+        )
+    },
+    ("bounce", "--wall-cells"): ["--ball", "thick"],
 }
 #: Options the base line already gives (a bad value replaces the base's).
 PATH_OPTIONS = ("--out", "--plot", "--mesh-file", "--export", "--render")

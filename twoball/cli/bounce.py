@@ -129,6 +129,11 @@ def drop_case(args: argparse.Namespace) -> twoball.Case:
             "phi_a", "left out for the drop (the contact angle is its output)", args.phi_a
         )
     pair = getattr(args, "pair", None)
+    from twoball.cli.shell import check_ball_kind
+
+    kind = check_ball_kind(args)
+    if kind == "thick" and args.preset is None and pair is None:
+        args.preset = "tennis"  # the preset with a thick wall
     if args.preset is None:  # the pair's lower ball, else the basketball
         if pair is not None:
             from twoball import _lookup
@@ -146,10 +151,18 @@ def drop_case(args: argparse.Namespace) -> twoball.Case:
         if getattr(args, name, None) not in (None, default):
             valid = "left out for the drop (no lift-off criteria)"
             raise ParameterError(name, valid, getattr(args, name))
-    from twoball.cli.shell import check_ball_kind, refuse_wall_flags, shell_case_args
+    from twoball.cli.shell import refuse_wall_flags, shell_case_args
 
-    if check_ball_kind(args) == "shell":
+    if kind == "solid":
+        from twoball.cli.solid import solid_case
+
+        return solid_case(args)
+    if kind == "shell":
         args = shell_case_args(args)  # the SI wall flags define the wall, not a bending
+    elif kind == "thick":
+        from twoball.cli.solid import thick_case_args
+
+        args = thick_case_args(args)  # the SI wall flags define the thick wall
     else:
         refuse_wall_flags(args)
     case_args = copy(args)
@@ -179,7 +192,15 @@ def drop_ball(args: argparse.Namespace) -> Any:
     ``--ball shell``: :func:`twoball.cli.shell.shell_ball`."""
     from twoball.cli.shell import check_ball_kind, shell_ball
 
-    if check_ball_kind(args) == "shell":
+    kind = check_ball_kind(args)
+    if kind in ("solid", "thick"):
+        from twoball.cli.solid import solid_ball, thick_ball
+
+        return solid_ball(args) if kind == "solid" else thick_ball(args)
+    from twoball.cli.solid import refuse_solid_flags
+
+    refuse_solid_flags(args)
+    if kind == "shell":
         return shell_ball(args)
     fields = {n: getattr(args, n) for n in ("elements", "order") if getattr(args, n) is not None}
     if args.backend == "legendre":
@@ -270,16 +291,25 @@ def bounce_rows(report: twoball.BounceReport) -> list[tuple[str, str]]:
         ("R [m]", f"{case.radius:g}"),
         ("c [1/s]", f"{case.wave_speed:g}"),
         ("|v0| [m/s]", f"{case.v0:g}"),
-        ("P [Pa], m2 [kg]", f"{report.pressure:g}, {report.mass_kg:.4g}"),
-        ("membrane, gas", f"{model['membrane'] or model.get('ball')}, {model['gas']}"),
-        ("omega_0^2 (units c^2)", f"{model['omega0_squared']:.4g}"),
-        *_wall_rows(model),
+    ]
+    if model.get("ball") in ("solid", "thick"):  # no membrane: its own rows
+        from twoball.cli.solid import solid_rows
+
+        rows += solid_rows(report)
+    else:
+        rows += [
+            ("P [Pa], m2 [kg]", f"{report.pressure:g}, {report.mass_kg:.4g}"),
+            ("membrane, gas", f"{model['membrane'] or model.get('ball')}, {model['gas']}"),
+            ("omega_0^2 (units c^2)", f"{model['omega0_squared']:.4g}"),
+            *_wall_rows(model),
+            ("contact time [ms]", number(report.contact_time_s, 1e3)),
+            ("  pressure x area pi/c [ms]", number(pa["contact_time_s"], 1e3)),
+        ]
+    rows += [
         ("damping", _damping_text(model["damping"])),
         ("resolution", f"{model['resolution']} ({model['floor_points']} floor points)"),
         ("dt [s]", f"{model['dt_s']:.4g}"),
         ("left the floor", "yes" if report.left_floor else "no"),
-        ("contact time [ms]", number(report.contact_time_s, 1e3)),
-        ("  pressure x area pi/c [ms]", number(pa["contact_time_s"], 1e3)),
         ("v2 [m/s]", number(report.v2_m_s)),
         ("e2 = v2/|v0|", number(report.e2)),
         ("phi_a,max [rad]", number(report.phi_a_max_rad)),
@@ -289,6 +319,8 @@ def bounce_rows(report: twoball.BounceReport) -> list[tuple[str, str]]:
         ("t max compression [ms]", number(report.t_max_compression_s, 1e3)),
         ("floor impulse [N s]", number(report.floor_impulse_N_s)),
     ]
+    if model.get("ball") in ("solid", "thick"):  # the membrane's pressure x area: not theirs
+        rows = [row for row in rows if "pressure x area" not in row[0]]
     energy = report.energy_J
     rows += [
         ("energy lost at impacts [J]", f"{energy['lost_impacts']:.4g}"),
@@ -365,6 +397,9 @@ def run(args: argparse.Namespace) -> int:
 
     plot = None if args.plot is None else check_figure_path(args.plot, "plot")
     export, render, frames = _field_targets(args)
+    view = getattr(args, "view", None) or "surface"
+    if view != "surface" and export is None and render is None:
+        raise ParameterError("view", "given with --export or --render", view)
     from twoball._common.staging import check_distinct
 
     outputs = {"plot": args.plot, "export": args.export, "render": args.render}  # one path each
@@ -376,8 +411,8 @@ def run(args: argparse.Namespace) -> int:
         report = bounce_from_options(args)
         for name, target, write in (
             ("figure", plot, report.plot),
-            ("export", export, lambda out: report.export(out, frames=frames)),
-            ("render", render, lambda out: report.render(out, frames=frames)),
+            ("export", export, lambda out: report.export(out, frames=frames, view=view)),
+            ("render", render, lambda out: report.render(out, frames=frames, view=view)),
         ):
             if target is not None:
                 progress(f"{name} {target.name}")
@@ -403,6 +438,9 @@ def register(parser: argparse.ArgumentParser) -> None:
     add_case_options(parser, window="10 pi / c + 2 gap / |v0|")
     add_drop_options(parser)
     add_wall_options(parser)
+    from twoball.cli.solid import add_solid_options
+
+    add_solid_options(parser, view=True)
     add_contact_options(
         parser, "the whole bounce: mass ratio m1/m2 in (0, 100] of a body on the ball's top"
     )

@@ -1,6 +1,7 @@
 """``twoball eigen``: FE eigenvalues beside the exact l (l + 1), by :func:`twoball.fem.eigen`;
 with ``--ball shell`` the thin shell's two branches beside their closed form
-(:func:`twoball.fem.shell_eigen`)."""
+(:func:`twoball.fem.shell_eigen`); with ``--ball solid`` Lamb's spectrum
+(:func:`twoball.fem.solid_eigen`)."""
 
 from __future__ import annotations
 
@@ -22,8 +23,21 @@ def run(args: argparse.Namespace) -> int:
     from twoball._common.provenance import attach, block
     from twoball.cli.shell import check_ball_kind, refuse_shell_eigen_flags
 
-    if check_ball_kind(args) == "shell":
+    kind = check_ball_kind(args)
+    if kind != "solid" and args.max_degree is not None:
+        from twoball._common.errors import ParameterError
+
+        raise ParameterError("max_degree", "given with --ball solid", args.max_degree)
+    if kind == "shell":
         return run_shell(args)
+    if kind == "solid":
+        from twoball.cli.solid import run_eigen
+
+        return run_eigen(args)
+    if kind == "thick":
+        from twoball._common.errors import ParameterError
+
+        raise ParameterError("ball", "membrane, shell or solid for eigen", kind)
     refuse_shell_eigen_flags(args)
     mesh = mesh_options(args)
     membrane = "paper" if args.membrane is None else args.membrane
@@ -113,10 +127,17 @@ def register(parser: argparse.ArgumentParser) -> None:
         type=integer,
         default=None,
         help="nonzero eigenvalues listed (default 25); --ball shell: the highest degree "
-        "(default 10; 2 count + 1 rows)",
+        "(default 10; 2 count + 1 rows); --ball solid: radial orders of each degree (default 5)",
     )
     add_ball_option(parser)
     add_shell_eigen_options(parser)
+    parser.add_argument(
+        "--max-degree",
+        type=integer,
+        metavar="N",
+        help="--ball solid: the highest degree listed (default 10; --count radial orders of "
+        "each, default 5)",
+    )
     parser.add_argument(
         "--membrane",
         help="membrane operator: paper (K, beside l(l+1); default) or pressurised "

@@ -136,7 +136,13 @@ def solve_from_options(args: argparse.Namespace) -> twoball.LiftoffReport:
     """Call :func:`twoball.liftoff` with the case, the solver of the flags, the body and
     the damping law."""
     from twoball._common.progress import QUICK, Reporter
+    from twoball.cli.shell import check_ball_kind
+    from twoball.cli.solid import refuse_solid_flags, solid_liftoff
 
+    kind = check_ball_kind(args)
+    if kind != "membrane":
+        return solid_liftoff(args, kind)
+    refuse_solid_flags(args, level=False)  # --level is the membrane's mesh here
     body = body_options(args)
     options = {
         "solver": liftoff_solver(args, body),
@@ -183,6 +189,11 @@ def register(parser: argparse.ArgumentParser) -> None:
     add_case_options(parser)
     add_mesh_options(parser, geometry=True)
     add_time_options(parser)
+    from twoball.cli.shell import add_ball_option
+    from twoball.cli.solid import add_solid_options
+
+    add_ball_option(parser)
+    add_solid_options(parser, level=False)
     group = add_contact_options(parser)
     group.add_argument(
         "--plot",

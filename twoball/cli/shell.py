@@ -31,7 +31,7 @@ __all__ = [
 ]
 
 #: The kinds of lower ball of ``--ball``.
-BALLS = ("membrane", "shell")
+BALLS = ("membrane", "shell", "solid", "thick")
 #: The wall's own flags (``--ball shell`` only), by their argparse names.
 WALL_FLAGS = ("wall_stiffness_ratio", "thickness_ratio")
 #: The case's flags that define the shell's wall instead of the membrane's bending.
@@ -52,8 +52,10 @@ def add_ball_option(parser: argparse.ArgumentParser) -> None:
         "--ball",
         default="membrane",
         help="the lower ball: membrane (radial only, the centre a coordinate of its own; "
-        "default) or shell (radial and meridional displacement, in-plane stiffness and "
-        "bending: its translation is a motion of its wall)",
+        "default), shell (radial and meridional displacement, in-plane stiffness and "
+        "bending: its translation is a motion of its wall), solid (Lamb's elastic sphere, "
+        "--preset superball or a material) or thick (a hollow ball's wall in (r, z) "
+        "elasticity, finite elements)",
     )
 
 
