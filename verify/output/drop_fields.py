@@ -58,9 +58,15 @@ def drop_frames(result: DropResult, count: int, case: Case) -> np.ndarray:
 
 
 def _states(result: DropResult, times_s: np.ndarray, case: Case) -> tuple[np.ndarray, ...]:
-    """Z and the modal amplitudes at ``times_s`` (linear between step ends), and the force."""
+    """Z and the ball's coordinates at ``times_s`` (linear between step ends), and the force.
+
+    The coordinates are every one of the ball's (the translation's among them, whose
+    deformation is zero), as :meth:`~twoball.modal.balls.description.ModalBall.modes_at`
+    gives one column per coordinate.
+    """
     q, f = _coordinates(result, times_s, case)
-    return q[:, 0], q[:, result.system.membrane], f
+    system = result.system
+    return q[:, system.centre], q[:, : system.ball.modes], f
 
 
 def _coordinates(
