@@ -189,6 +189,7 @@ def stepped_contact(
     from twoball.modal.floor.measure import contact_intervals
     from twoball.modal.floor.restitution import body_on_start
     from twoball.modal.floor.system import BodyOnTop
+    from twoball.modal.nonsmooth.moreau_jean import ZENO_FRACTION
 
     if not (math.isfinite(mass_ratio) and mass_ratio > 0.0):
         raise ParameterError("mass_ratio", "> 0 for the stepped contact", mass_ratio)
@@ -196,7 +197,12 @@ def stepped_contact(
     body = BodyOnTop(
         float(mass_ratio), np.asarray(contact, dtype=float), theta or 0.0, float(restitution)
     )
-    run = body_on_start(ball, q0, gamma, dt, body, t_end=t_end, monitor=monitor)
+    # The start is at rest, so the core's Zeno speed cannot come from the initial normal
+    # speeds (all zero: a bouncing body, e > 0, would re-touch without end); it comes from
+    # the speed the start's energy stands for instead, |v0| / (R c) by eq. (3.6).
+    start = 0.5 * float(q0 @ (ball.masses * ball.omega_squared * q0))
+    zeno = ZENO_FRACTION * math.sqrt(2.0 * start)
+    run = body_on_start(ball, q0, gamma, dt, body, t_end=t_end, monitor=monitor, zeno_velocity=zeno)
     system, tr = run.system, run.trajectory
     k, row, j = ball.modes, system.body_row, system.body_coordinate
     q, v = tr.q[:, :k], tr.v[:, :k]
