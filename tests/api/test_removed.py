@@ -21,7 +21,7 @@ REMOVED = {
         "level", "t_end", "mass_ratio", "contact_radius", "sigma", "recontact",
         "damping_model", "backend", "mesh", "stepping", "series",
     ),
-    "bounce": ("backend", "mesh", "stepping", "series", "modes"),
+    "bounce": ("backend", "mesh", "stepping", "series"),
     "sweep": (
         "t_end", "sigma", "recontact", "contact_radius", "scheduler", "backend", "mesh",
         "stepping", "series",
