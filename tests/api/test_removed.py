@@ -21,7 +21,7 @@ REMOVED = {
         "level", "t_end", "mass_ratio", "contact_radius", "sigma", "recontact",
         "damping_model", "backend", "mesh", "stepping", "series",
     ),
-    "bounce": ("backend", "mesh", "stepping", "series"),
+    "bounce": ("backend", "mesh", "stepping"),
     "sweep": (
         "t_end", "sigma", "recontact", "contact_radius", "scheduler", "backend", "mesh",
         "stepping", "series",
@@ -29,7 +29,7 @@ REMOVED = {
     "export": ("level", "order", "times", "time", "format", "mesh", "stepping", "series"),
     "render": ("level", "time", "size", "warp", "frames", "mesh", "stepping", "series"),
     "plot": ("dpi", "levels", "orders", "backends", "mesh", "stepping", "series"),
-    "converge": ("sigma", "recontact", "t_end", "series"),
+    "converge": ("sigma", "recontact", "t_end", "stepping", "series"),
     "check": ("sigma", "recontact", "t_end", "series"),
     "reproduce": ("scheduler",),
 }  # fmt: skip
