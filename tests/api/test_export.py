@@ -141,7 +141,8 @@ def test_small_mass_approaches_the_massless_field(tmp_path):
     linearly in mu (the same steps: their error cancels in the difference).
     """
     times = [0.0, 2e-3, 6e-3, 12e-3]
-    common = {"backend": "fem", "solver": LEVEL_1, "frames": times}
+    window = twoball.Superposition(LEVEL_1.mesh, t_end=0.0125)  # the frames' (the same fields)
+    common = {"backend": "fem", "solver": window, "frames": times}
     twoball.export(tmp_path / "free.pvd", CASE, **common)
     free = read_series(tmp_path / "free.pvd")
     assert not free.frame_data
