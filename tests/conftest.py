@@ -60,7 +60,7 @@ def ball_files_liftoff(ball_files):
 
     basketball = twoball.Case.preset("basketball")
     return {
-        name: twoball.liftoff(basketball, backend="fem", mesh=ball_files[name])
+        name: twoball.liftoff(basketball, solver=twoball.Superposition(ball_files[name]))
         for name in ("vtu", "msh")
     }
 

@@ -229,9 +229,10 @@ def stepped_contact(
                 )
             )
         if iv.last + 1 < steps:  # the contact ended within the run: a separation
-            after = iv.last + 1
-            velocity = float(w[after] + gamma * (tr.t[after] - iv.end))
-            height = float(s[after] - w[after] * (tr.t[after] - iv.end))
+            after = iv.last + 1  # free flight under g from the separation to t[after]
+            back = tr.t[after] - iv.end
+            velocity = float(w[after] + gamma * back)
+            height = float(s[after] - w[after] * back - 0.5 * gamma * back**2)
             events.append(ContactEvent("separation", iv.end, height, velocity))
     last = events[-1] if events else None
     in_flight = not intervals or intervals[-1].last + 1 < steps

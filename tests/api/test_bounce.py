@@ -14,7 +14,19 @@ from twoball.modal.pairs import PAIRS
 import twoball
 
 BASKETBALL = twoball.Case.preset("basketball")
-QUICK = twoball.Drop(modes=16)
+
+
+def legendre(modes: int, **options) -> twoball.MoreauJean:
+    """The drop's steps on the membrane's N Legendre modes."""
+    return twoball.MoreauJean(twoball.LegendreBall(modes), **options)
+
+
+def fem(mesh=None, **options) -> twoball.MoreauJean:
+    """The drop's steps on the axisymmetric finite elements (default 96 P2)."""
+    return twoball.MoreauJean(twoball.FEBall(mesh), **options)
+
+
+QUICK = legendre(16)
 
 #: Where the initial kinetic energy of the drop ends up (the books of ``energy_J``).
 SPENT = (
@@ -30,7 +42,7 @@ SPENT = (
 
 
 def test_report_in_si_with_books_and_provenance():
-    report = twoball.bounce(drop=QUICK)
+    report = twoball.bounce(solver=QUICK)
     data = report.as_dict()
     for key in (
         "contact_time_s",
@@ -62,7 +74,7 @@ def test_report_in_si_with_books_and_provenance():
 
 def test_drop_height_sets_the_impact_speed():
     """|v0| = sqrt(2 g H), eq. (2.1), with H the lowest point's height (as twoball icm)."""
-    report = twoball.bounce(drop=twoball.Drop(drop_height=0.5, modes=16))
+    report = twoball.bounce(drop=twoball.Drop(drop_height=0.5), solver=QUICK)
     assert report.case.v0 == pytest.approx(math.sqrt(2 * 9.81 * 0.5), rel=1e-15)
     assert report.as_dict()["drop_height_m"] == 0.5
     assert abs(twoball.icm(0.5, 0.8, 0.9, drop_height=0.5).v0) == pytest.approx(report.case.v0)
@@ -72,25 +84,27 @@ def test_a_drop_height_below_the_radius_is_refused_naming_the_range():
     """H < R of the case is refused in the API (the message gives R and the v0 route);
     H = R is taken, and the tennis ball (R = 33.5 mm) takes 0.05 m."""
     with pytest.raises(twoball.ParameterError) as caught:
-        twoball.bounce(drop=twoball.Drop(drop_height=0.05, modes=16))
+        twoball.bounce(drop=twoball.Drop(drop_height=0.05), solver=QUICK)
     text = str(caught.value)
     assert caught.value.name == "drop_height" and ">= R = 0.12 m" in text and "v0" in text
-    at_radius = twoball.bounce(drop=twoball.Drop(drop_height=0.12, modes=16))
+    at_radius = twoball.bounce(drop=twoball.Drop(drop_height=0.12), solver=QUICK)
     assert at_radius.case.v0 == pytest.approx(math.sqrt(2 * 9.81 * 0.12), rel=1e-15)
-    tennis = twoball.bounce(twoball.Case.preset("tennis"), twoball.Drop(drop_height=0.05, modes=16))
+    tennis = twoball.bounce(
+        twoball.Case.preset("tennis"), twoball.Drop(drop_height=0.05), solver=QUICK
+    )
     assert tennis.case.v0 == pytest.approx(math.sqrt(2 * 9.81 * 0.05), rel=1e-15)
 
 
 def test_restitution_one_keeps_the_mechanical_energy():
     report = twoball.bounce(
-        drop=twoball.Drop(modes=16, floor_restitution=1.0), damping=twoball.ModalRatio(0.0)
+        drop=twoball.Drop(floor_restitution=1.0), solver=QUICK, damping=twoball.ModalRatio(0.0)
     )
     assert report.energy_J["lost_impacts"] < 1e-12 * report.energy_J["initial_kinetic"]
     assert report.energy_J["dissipated_damping"] == 0.0
 
 
 def test_paper_membrane_without_gas_is_warned_pressurised_refused():
-    report = twoball.bounce(drop=twoball.Drop(modes=16, gas="none", membrane="paper"))
+    report = twoball.bounce(drop=twoball.Drop(gas="none", membrane="paper"), solver=QUICK)
     assert any("omega_0 = 0" in w for w in report.warnings)
     with pytest.raises(twoball.ParameterError, match="^gas must be isothermal or adiabatic"):
         twoball.bounce(drop=twoball.Drop(gas="none", membrane="pressurised"))
@@ -103,19 +117,20 @@ def test_paper_membrane_without_gas_is_warned_pressurised_refused():
         ("drop_height", lambda: twoball.Drop(drop_height=0.0)),
         ("drop_height", lambda: twoball.Drop(drop_height=1.5e6)),
         ("floor_restitution", lambda: twoball.Drop(floor_restitution=2.0)),
-        ("modes", lambda: twoball.Drop(modes=4)),
+        ("modes", lambda: twoball.LegendreBall(4)),
         ("membrane", lambda: twoball.Drop(membrane="flat")),
         ("gas", lambda: twoball.Drop(gas="helium")),
         ("drop", lambda: twoball.bounce(drop="high")),
         ("case", lambda: twoball.bounce("basketball")),
-        ("backend", lambda: twoball.bounce(backend="sphere")),
-        ("mesh", lambda: twoball.bounce(mesh="axisym")),
-        ("mesh", lambda: twoball.bounce(backend="fem", mesh="sphere")),
-        ("modes", lambda: twoball.bounce(drop=QUICK, backend="fem")),
-        ("scheme", lambda: twoball.bounce(stepping=twoball.Stepping(scheme="alpha", dt=1e-5))),
-        ("route", lambda: twoball.bounce(stepping=twoball.Stepping(route="full"))),
-        ("dt", lambda: twoball.bounce(stepping=twoball.Stepping(scheme="moreau-jean", dt=1.0))),
-        ("t_end", lambda: twoball.bounce(stepping=twoball.Stepping(t_end=1e-9))),
+        ("solver", lambda: twoball.bounce(solver="sphere")),
+        ("solver", lambda: twoball.bounce(solver=twoball.ClosedForm())),
+        ("solver", lambda: twoball.bounce(solver=twoball.GeneralizedAlpha("axisym", dt=1e-5))),
+        ("solver", lambda: twoball.bounce(solver=twoball.Superposition("axisym", route="full"))),
+        ("ball", lambda: twoball.MoreauJean("axisym")),  # a ball object, not a mesh
+        ("mesh", lambda: twoball.bounce(solver=fem(twoball.MeshOptions("sphere")))),
+        ("sigma", lambda: twoball.bounce(solver=twoball.MoreauJean(sigma="none"))),
+        ("dt", lambda: twoball.bounce(solver=twoball.MoreauJean(dt=1.0))),
+        ("t_end", lambda: twoball.bounce(solver=twoball.MoreauJean(t_end=1e-9))),
         (
             "pressure",
             lambda: twoball.bounce(
@@ -128,6 +143,31 @@ def test_bad_input_is_refused_naming_the_parameter(name, call):
     with pytest.raises(twoball.ParameterError) as caught:
         call()
     assert caught.value.name == name, str(caught.value)
+
+
+@pytest.mark.parametrize(
+    ("build", "field"),
+    [
+        (twoball.LegendreBall, "mesh"),  # the Legendre modes have no mesh ...
+        (twoball.FEBall, "modes"),  # ... and the finite elements no Legendre degree
+        (twoball.MoreauJean, "route"),  # the drop's steps have no eigen route ...
+        (twoball.MoreauJean, "scheme"),  # ... nor another integrator
+        (twoball.Drop, "modes"),  # the drop's resolution is its ball's
+    ],
+)
+def test_a_resolution_that_does_not_apply_cannot_be_written(build, field):
+    """What ``backend``, ``mesh``, ``stepping`` and ``Drop(modes=...)`` refused at run time is
+    no field of the object it does not apply to."""
+    with pytest.raises(TypeError, match=f"unexpected keyword argument '{field}'"):
+        build(**{field: 16})
+
+
+def test_the_drops_resolution_is_its_balls():
+    """``LegendreBall(N)`` sets the drop's degree (the report says it) and the numbers."""
+    coarse, finer = twoball.bounce(solver=QUICK), twoball.bounce(solver=legendre(24))
+    assert coarse.as_dict()["model"]["resolution"] == "legendre N = 16"
+    assert finer.as_dict()["model"]["resolution"] == "legendre N = 24"
+    assert coarse.contact_time_s != finer.contact_time_s
 
 
 def test_the_drop_height_message_states_its_whole_range():
@@ -151,9 +191,8 @@ def test_both_backends_agree_at_their_defaults_and_with_a_converged_reference():
     :data:`FROM_REFERENCE` of a converged reference, N = 768 at dt = 0.00125 / c (the
     resolution study's second-finest run)."""
     modal = twoball.bounce()
-    fe = twoball.bounce(backend="fem")
-    stepping = twoball.Stepping(dt=0.00125 / 320.0, scheme="moreau-jean")
-    reference = twoball.bounce(drop=twoball.Drop(modes=768), stepping=stepping)
+    fe = twoball.bounce(solver=fem())
+    reference = twoball.bounce(solver=legendre(768, dt=0.00125 / 320.0))
     for name in ("contact_time_s", "e2", "phi_a_max_rad"):
         a, b, exact = getattr(modal, name), getattr(fe, name), getattr(reference, name)
         assert abs(a / b - 1.0) < 1e-3, (name, a, b)
@@ -169,7 +208,7 @@ def test_both_backends_agree_pressurised_and_causal():
         (twoball.Drop(), twoball.Rayleigh()),
     ):
         modal = twoball.bounce(drop=drop, damping=damping)
-        fe = twoball.bounce(drop=drop, damping=damping, backend="fem")
+        fe = twoball.bounce(drop=drop, damping=damping, solver=fem())
         for name in ("contact_time_s", "e2", "phi_a_max_rad"):
             a, b = getattr(modal, name), getattr(fe, name)
             assert abs(a / b - 1.0) < 1e-3, (drop, damping, name, a, b)
@@ -179,7 +218,7 @@ def test_figure_fields_and_pictures_of_the_drop(tmp_path):
     """plot, export (XDMF/PVD/VTU through the field machinery) and render of one drop."""
     from twoball.verify.output.series import read_series
 
-    report = twoball.bounce(drop=QUICK)
+    report = twoball.bounce(solver=QUICK)
     assert report.plot(tmp_path / "drop.svg").stat().st_size > 1000
     files = report.export(tmp_path / "drop.pvd", frames=4, mesh=twoball.MeshOptions(level=1))
     series = read_series(files[0])
@@ -206,7 +245,7 @@ def test_the_contact_angle_panel_shows_eq_3_7_and_pressure_times_area():
     from twoball.modal.initial import phi_a_from_v0
     from twoball.verify.output.figures.bounce import drop_figure
 
-    report = twoball.bounce(drop=QUICK)
+    report = twoball.bounce(solver=QUICK)
     case = report.case
     fig = drop_figure(report.result, case, report.mass_kg)
     ax = fig.axes[1]
@@ -225,22 +264,22 @@ def test_the_contact_angle_panel_shows_eq_3_7_and_pressure_times_area():
 
 def test_sweep_of_the_drop():
     """twoball.sweep with a Drop: one drop per speed; the flattening grows with |v0|."""
-    result = twoball.sweep({"v0": [2.0, 4.1]}, drop=QUICK)
+    result = twoball.sweep({"v0": [2.0, 4.1]}, drop=twoball.Drop(), solver=QUICK)
     assert result.parameter == "v0" and result.errors == [None, None]
     low, high = result.reports
     assert low.flattening_max_m < high.flattening_max_m and low.e2 > high.e2
-    heights = twoball.sweep({"drop_height": [0.5]}, drop=QUICK)
+    heights = twoball.sweep({"drop_height": [0.5]}, drop=twoball.Drop(), solver=QUICK)
     assert heights.reports[0].case.v0 == pytest.approx(math.sqrt(2 * 9.81 * 0.5))
     data = result.as_dict()
     assert [p["value"] for p in data["points"]] == [2.0, 4.1] and data["provenance"]
     with pytest.raises(twoball.ParameterError) as caught:
-        twoball.sweep({"damping": [0.1]}, drop=QUICK)
+        twoball.sweep({"damping": [0.1]}, drop=twoball.Drop(), solver=QUICK)
     assert caught.value.name == "param"
 
 
 # --- ``twoball.bounce`` with a body: the whole two-ball bounce in SI, its refusals, its files,
 
-QUICK = twoball.Drop(modes=24)
+WHOLE = legendre(24)
 KEYS = (
     "v1_m_s",
     "v1_ratio",
@@ -262,7 +301,7 @@ KEYS = (
 
 @pytest.fixture(scope="module")
 def touching():
-    return twoball.bounce(drop=QUICK, pair="basketball-tennis")
+    return twoball.bounce(solver=WHOLE, pair="basketball-tennis")
 
 
 def test_json_of_the_whole_bounce(touching):
@@ -317,7 +356,7 @@ def test_the_lumped_baselines_beside_the_result(touching):
 
 
 def test_a_pair_sets_the_lower_ball():
-    report = twoball.bounce(drop=twoball.Drop(modes=16), pair="tennis-nut")
+    report = twoball.bounce(solver=QUICK, pair="tennis-nut")
     assert report.case.preset_name == "tennis" and report.case.radius == 0.0335
     assert report.as_dict()["body"]["contact_radius_m"] == 2.5e-3  # the nut's half width
 
@@ -334,9 +373,11 @@ def test_a_pair_sets_the_lower_ball():
         (lambda: twoball.bounce(body=twoball.Body(0.1, contact_radius=0.2)), "contact_radius"),
         (lambda: twoball.Drop(gap=-0.1), "gap"),
         (lambda: twoball.Drop(gap=11.0), "gap"),
-        (lambda: twoball.sweep({"gap": [0, 0.1]}, drop=QUICK), "gap"),
+        (lambda: twoball.sweep({"gap": [0, 0.1]}, drop=twoball.Drop(), solver=WHOLE), "gap"),
         (
-            lambda: twoball.sweep({"mass_ratio": [0.1]}, drop=QUICK, pair="basketball-tennis"),
+            lambda: twoball.sweep(
+                {"mass_ratio": [0.1]}, drop=twoball.Drop(), solver=WHOLE, pair="basketball-tennis"
+            ),
             "pair",
         ),
         (lambda: twoball.sweep({"damping": [0.1]}, pair="tennis-coin"), "pair"),
@@ -354,7 +395,7 @@ def test_large_gap_approaches_the_icm_of_the_runs_own_coefficients():
     within g t_c / |v0| (the body gains g t_c while the ball sits on the floor for t_c,
     which the instantaneous ICM does not see)."""
     body = twoball.Body(0.101, contact_radius=0.0262, restitution=0.89)
-    report = twoball.bounce(drop=twoball.Drop(gap=0.2, modes=48), body=body)
+    report = twoball.bounce(drop=twoball.Drop(gap=0.2), body=body, solver=legendre(48))
     icm = report.icm_solver
     assert report.result.body.sequence == "independent" and report.body_left_first is False
     tolerance = 9.81 * report.contact_time_s / 4.1
@@ -395,9 +436,9 @@ def test_files_of_the_whole_bounce(tmp_path, touching):
 
 def test_sweeps_of_the_gap_on_the_pool_give_the_same_numbers():
     values = {"gap": [0.0, 0.03, 0.15]}
-    drop = twoball.Drop(modes=16)
-    one = twoball.sweep(values, drop=drop, pair="basketball-tissue", workers=1)
-    pool = twoball.sweep(values, drop=drop, pair="basketball-tissue", workers=2)
+    drop, fast = twoball.Drop(), {"solver": QUICK}
+    one = twoball.sweep(values, drop=drop, pair="basketball-tissue", workers=1, **fast)
+    pool = twoball.sweep(values, drop=drop, pair="basketball-tissue", workers=2, **fast)
     assert one.errors == [None] * 3 and pool.errors == [None] * 3
     for a, b in zip(one.reports, pool.reports, strict=True):
         assert a.as_dict()["v1_ratio"] == b.as_dict()["v1_ratio"]
@@ -406,7 +447,10 @@ def test_sweeps_of_the_gap_on_the_pool_give_the_same_numbers():
     data = one.as_dict()
     assert [p["value"] for p in data["points"]] == values["gap"]
     masses = twoball.sweep(
-        {"mass_ratio": [0.01, 0.1]}, drop=drop, body=twoball.Body(0.0, contact_radius=0.02)
+        {"mass_ratio": [0.01, 0.1]},
+        drop=drop,
+        body=twoball.Body(0.0, contact_radius=0.02),
+        **fast,
     )
     assert [r.as_dict()["body"]["mass_ratio"] for r in masses.reports] == [0.01, 0.1]
 
@@ -414,16 +458,15 @@ def test_sweeps_of_the_gap_on_the_pool_give_the_same_numbers():
 def test_modal_and_finite_elements_agree_at_a_coarse_resolution():
     """N = 64 against 32 P2 elements (the same node spacing): v1, v2 within 3e-3."""
     for gap in (0.0, 0.05):
-        drop = twoball.Drop(gap=gap, modes=64)
-        modal = twoball.bounce(drop=drop, pair="basketball-tennis")
-        fem = twoball.bounce(
-            drop=twoball.Drop(gap=gap),
+        drop = twoball.Drop(gap=gap)
+        modal = twoball.bounce(drop=drop, pair="basketball-tennis", solver=legendre(64))
+        fe = twoball.bounce(
+            drop=drop,
             pair="basketball-tennis",
-            backend="fem",
-            mesh=twoball.MeshOptions("axisym", elements=32),
+            solver=fem(twoball.MeshOptions("axisym", elements=32)),
         )
-        assert fem.v1_ratio == pytest.approx(modal.v1_ratio, rel=3e-3)
-        assert fem.v2_ratio == pytest.approx(modal.v2_ratio, rel=3e-3)
+        assert fe.v1_ratio == pytest.approx(modal.v1_ratio, rel=3e-3)
+        assert fe.v2_ratio == pytest.approx(modal.v2_ratio, rel=3e-3)
 
 
 PAIR = "basketball-tennis"
@@ -432,15 +475,13 @@ PAIR = "basketball-tennis"
 def _whole(backend: str, gap: float, size: int | None = None, dt: float | None = None):
     """(v1, v2) over |v0| of basketball-tennis: Legendre N = size or P2 with size elements,
     dt in units of 1/c (c = 320 1/s)."""
-    stepping = None if dt is None else twoball.Stepping(dt=dt / 320.0, scheme="moreau-jean")
+    step = None if dt is None else dt / 320.0
     if backend == "legendre":
-        drop = twoball.Drop(gap=gap, modes=size)
-        report = twoball.bounce(drop=drop, pair=PAIR, stepping=stepping)
+        solver = twoball.MoreauJean(twoball.LegendreBall(size), dt=step)
     else:
         mesh = None if size is None else twoball.MeshOptions("axisym", elements=size)
-        report = twoball.bounce(
-            drop=twoball.Drop(gap=gap), pair=PAIR, backend="fem", mesh=mesh, stepping=stepping
-        )
+        solver = fem(mesh, dt=step)
+    report = twoball.bounce(drop=twoball.Drop(gap=gap), pair=PAIR, solver=solver)
     return report.v1_ratio, report.v2_ratio
 
 
@@ -531,7 +572,7 @@ def test_whole_bounce_converges_in_dt_in_a_band(backend, gap):
 def test_the_window_is_long_enough_for_the_gap():
     """The default window adds twice the gap's fall time: a 1 m gap still ends apart."""
     body = twoball.Body(0.05, contact_radius=0.02, restitution=0.5)
-    report = twoball.bounce(drop=twoball.Drop(gap=1.0, modes=48), body=body)
+    report = twoball.bounce(drop=twoball.Drop(gap=1.0), body=body, solver=legendre(48))
     assert report.result.body.left and report.result.stop == "flight"
     assert not [w for w in report.warnings if "window" in w]
     assert report.model["t_end_s"] == pytest.approx(10 * math.pi / 320 + 2 * 1.0 / 4.1)
@@ -540,13 +581,17 @@ def test_the_window_is_long_enough_for_the_gap():
 def test_a_gap_sweep_on_dask_gives_the_same_numbers():
     distributed = pytest.importorskip("distributed")
     values = {"gap": [0.0, 0.1]}
-    drop = twoball.Drop(modes=16)
-    serial = twoball.sweep(values, drop=drop, pair="basketball-tennis", workers=1)
+    drop = twoball.Drop()
+    serial = twoball.sweep(values, drop=drop, pair="basketball-tennis", workers=1, solver=QUICK)
     with distributed.LocalCluster(
         n_workers=2, threads_per_worker=1, processes=False, dashboard_address=None
     ) as cluster:
         on_dask = twoball.sweep(
-            values, drop=drop, pair="basketball-tennis", workers=cluster.scheduler_address
+            values,
+            drop=drop,
+            pair="basketball-tennis",
+            workers=cluster.scheduler_address,
+            solver=QUICK,
         )
     assert on_dask.errors == [None, None]
     for a, b in zip(serial.reports, on_dask.reports, strict=True):
@@ -557,9 +602,7 @@ def test_a_gap_sweep_on_dask_gives_the_same_numbers():
 def test_a_short_window_warns_and_claims_no_release():
     """A window that ends in the floor contact: warnings, no release, no invented separation."""
     short = twoball.bounce(
-        drop=twoball.Drop(gap=0.01, modes=48),
-        body=twoball.Body(0.1),
-        stepping=twoball.Stepping(t_end=0.001),
+        drop=twoball.Drop(gap=0.01), body=twoball.Body(0.1), solver=legendre(48, t_end=0.001)
     )
     data = short.as_dict()
     assert any("has not left the floor" in w for w in short.warnings)
@@ -578,7 +621,7 @@ def test_the_picture_draws_the_floor_and_a_short_footer(tmp_path):
     from twoball.verify.output.drop_fields import drop_frames, drop_scene
     from twoball.verify.output.render import FLOOR_COLOUR
 
-    report = twoball.bounce(drop=twoball.Drop(modes=64), pair="basketball-tennis")
+    report = twoball.bounce(solver=legendre(64), pair="basketball-tennis")
     assert report._text.count("legendre") == 1
     times = drop_frames(report.result, 3, report.case)
     mesh = sphere_mesh(1, 2, None)
@@ -601,8 +644,8 @@ def test_the_picture_draws_the_floor_and_a_short_footer(tmp_path):
 def test_the_case_is_read_as_every_verb_reads_it():
     """A negative v0 is the paper's downward velocity, noted once, as by twoball.liftoff;
     the drop's result equals the positive speed's."""
-    down = twoball.bounce(twoball.Case(v0=-4.1), QUICK)
-    up = twoball.bounce(twoball.Case(v0=4.1), QUICK)
+    down = twoball.bounce(twoball.Case(v0=-4.1), solver=QUICK)
+    up = twoball.bounce(twoball.Case(v0=4.1), solver=QUICK)
     note = twoball.liftoff(twoball.Case(v0=-4.1)).notes[0]
     assert note.startswith("v0 = -4.1 m/s read as an impact at 4.1 m/s downwards")
     assert [n for n in down.notes if n.startswith("v0 = ")] == [note]
@@ -616,9 +659,9 @@ def test_whole_bounce_at_orders_three_and_four(elements, order):
     P2 at the same node spacing and of Legendre N = 96 (measured 2e-4 and 1e-4)."""
     pair = "tennis-coin"
     mesh = twoball.MeshOptions("axisym", elements=elements, order=order)
-    high = twoball.bounce(pair=pair, backend="fem", mesh=mesh)
-    p2 = twoball.bounce(pair=pair, backend="fem", mesh=twoball.MeshOptions("axisym", elements=48))
-    modal = twoball.bounce(pair=pair, drop=twoball.Drop(modes=96))
+    high = twoball.bounce(pair=pair, solver=fem(mesh))
+    p2 = twoball.bounce(pair=pair, solver=fem(twoball.MeshOptions("axisym", elements=48)))
+    modal = twoball.bounce(pair=pair, solver=legendre(96))
     for reference in (p2, modal):
         assert high.v1_m_s == pytest.approx(reference.v1_m_s, rel=5e-4)
         assert high.v2_m_s == pytest.approx(reference.v2_m_s, rel=5e-4)
@@ -626,13 +669,12 @@ def test_whole_bounce_at_orders_three_and_four(elements, order):
 
 
 def test_the_drops_default_line_keeps_its_node_spacing_at_every_order():
-    """No mesh, ``"axisym"`` and the CLI's ``--order 2`` are one line (96 P2 elements); the
-    default at order p is 192 / p elements (the same floor points)."""
-    from twoball._bounce import drop_elements
-
-    assert [drop_elements(p) for p in (1, 2, 3, 4)] == [192, 96, 64, 48]
-    short = twoball.Stepping(t_end=2e-3)  # the same first 2 ms of the drop
-    default = twoball.bounce(backend="fem", stepping=short)
-    named = twoball.bounce(backend="fem", mesh="axisym", stepping=short)
+    """No mesh and ``"axisym"`` are one line (96 P2 elements); the default at order p is
+    192 / p elements (the same floor points)."""
+    assert [twoball.drop_elements(p) for p in (1, 2, 3, 4)] == [192, 96, 64, 48]
+    short = 2e-3  # the same first 2 ms of the drop
+    default = twoball.bounce(solver=twoball.MoreauJean(twoball.FEBall(), t_end=short))
+    named = twoball.bounce(solver=twoball.MoreauJean(twoball.FEBall("axisym"), t_end=short))
+    assert twoball.FEBall().mesh == twoball.MeshOptions("axisym", elements=96)
     assert named.as_dict()["model"]["resolution"] == "axisym 96 P2"
     assert named.flattening_max_m == default.flattening_max_m

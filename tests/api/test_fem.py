@@ -1,4 +1,5 @@
-"""twoball.fem.solve and twoball.fem.eigen: the same numbers as the command line, bit for bit."""
+"""The finite elements from Python (twoball.liftoff with Superposition, twoball.fem.eigen):
+the same numbers as the command line, bit for bit."""
 
 from __future__ import annotations
 
@@ -17,7 +18,8 @@ def test_fem_sphere_api_equals_cli(capsys):
     argv = ("--backend", "fem", "--mesh", "sphere", "--level", "2", "--order", "2", "--v0", "3")
     cli, _ = cli_json(capsys, "liftoff", *argv)
     case = twoball.Case.preset("basketball", v0=3.0)
-    api = twoball.fem.solve(case, mesh=twoball.MeshOptions("sphere", level=2, order=2))
+    solver = twoball.Superposition(twoball.MeshOptions("sphere", level=2, order=2))
+    api = twoball.liftoff(case, solver=solver)
     same_numbers(api.as_dict(), cli)
     assert cli["phi_a_source"] == "eq. (3.7)" and cli["notes"]
     # the FE lift-off agrees with the closed form to its discretisation error (sphere L2 P2)
@@ -49,16 +51,16 @@ def test_mesh_file_eigen_and_refusals(capsys, ball_file):
     with pytest.raises(SystemExit):
         main(["liftoff", "--mesh-file", str(path)])
     assert capsys.readouterr().err.startswith("twoball: error: --mesh-file must be left out")
-    with pytest.raises(twoball.ParameterError) as error:  # generated icospheres only
-        twoball.plot("eigen", "x.png", mesh=path)
-    assert error.value.name == "mesh" and not Path("x.png").exists()
+    with pytest.raises(twoball.ParameterError) as error:  # its own levels and orders only
+        twoball.plot("eigen", "x.png", solver=twoball.Superposition(path))
+    assert error.value.name == "solver" and not Path("x.png").exists()
 
 
 def test_cli_equals_api_with_the_exact_geometry(capsys):
-    """Same inputs, bit-identical numbers: liftoff --geometry exact against twoball.fem.solve."""
-    import twoball
-    from twoball.cli.main import main
-    from twoball.fem import solve
+    """Same inputs, bit-identical numbers: liftoff --geometry exact against twoball.liftoff."""
+
+    def solve(case, mesh):
+        return twoball.liftoff(case, solver=twoball.Superposition(mesh))
 
     code = main(["liftoff", "--backend", "fem", "--level", "1", "--order", "3",
                  "--geometry", "exact", "--json"])  # fmt: skip

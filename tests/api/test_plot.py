@@ -16,7 +16,7 @@ MM = 1000.0  # the .msh file is in millimetres
 
 def test_plot_pole_on_the_file_mesh(ball_files, ball_files_liftoff, tmp_path):
     out = tmp_path / "pole.png"
-    result = twoball.plot("pole", out, BASKETBALL, mesh=ball_files["msh"])
+    result = twoball.plot("pole", out, BASKETBALL, solver=twoball.Superposition(ball_files["msh"]))
     assert out.stat().st_size > 0
     fem = ball_files_liftoff["msh"]
     assert result.reports["fem"].t_liftoff_s == pytest.approx(fem.t_liftoff_s, rel=1e-12)
@@ -57,19 +57,19 @@ def test_the_precursor_draws_the_damping_law_given(tmp_path):
 
 def test_one_backend_may_be_given_as_a_name(tmp_path):
     """``backends="legendre"`` is the closed form alone, as ``["legendre"]`` (never its letters)."""
-    mesh = twoball.MeshOptions("sphere", level=1)
+    mesh = twoball.Superposition(twoball.MeshOptions("sphere", level=1))
     named = twoball.plot(
         "pole",
         tmp_path / "a.png",
         BASKETBALL,
-        mesh=mesh,
+        solver=mesh,
         figure=twoball.PlotOptions(backends="legendre"),
     )
     listed = twoball.plot(
         "pole",
         tmp_path / "b.png",
         BASKETBALL,
-        mesh=mesh,
+        solver=mesh,
         figure=twoball.PlotOptions(backends=["legendre"]),
     )
     assert list(named.reports) == list(listed.reports) == ["legendre"]

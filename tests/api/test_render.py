@@ -21,9 +21,9 @@ def test_the_frames_and_the_damping_law_given(tmp_path, monkeypatch):
     monkeypatch.setenv("VTK_DEFAULT_OPENGL_WINDOW", "vtkEGLRenderWindow")
     case = twoball.Case.preset("basketball")
     law = twoball.Rayleigh(20.0, 2e-5)
-    mesh = twoball.MeshOptions("sphere", level=1)
+    solver = twoball.Superposition(twoball.MeshOptions("sphere", level=1))
     view = twoball.RenderOptions(size=(64, 48), frames=[0.004], warp=1.0)
-    options = {"backend": "legendre", "mesh": mesh, "view": view}
+    options = {"backend": "legendre", "solver": solver, "view": view}
     given = twoball.render(tmp_path / "a.png", case, damping=law, **options)
     inside = twoball.render(tmp_path / "b.png", case.derive(rayleigh=law), **options)
     assert given.times_s == [0.004] and given.size == (64, 48)

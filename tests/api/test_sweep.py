@@ -60,3 +60,56 @@ def test_a_damping_law_applies_at_every_point_as_the_cases_own():
         p.ratio for p in twoball.sweep(values, BASKETBALL.derive(damping=0.2)).points
     ]
     assert ratio.points[0].ratio != given.points[0].ratio
+
+
+def test_the_solvers_options_act_at_every_point_as_in_a_single_run():
+    """The closed form's filter, horizon and window, and the body's Moreau-Jean step, give
+    every point what twoball.liftoff gives with the same solver."""
+    closed = twoball.ClosedForm(sigma="none", recontact="paper", t_end=0.03)
+    result = twoball.sweep({"damping": [0.1, 0.2]}, BASKETBALL, solver=closed)
+    for point, damping in zip(result.points, (0.1, 0.2), strict=True):
+        single = twoball.liftoff(BASKETBALL.derive(damping=damping), solver=closed)
+        assert (point.t_liftoff_s, point.v_liftoff_m_s) == (
+            single.t_liftoff_s,
+            single.v_liftoff_m_s,
+        )
+    assert result.provenance["call"]["arguments"]["solver"] == closed.as_dict()
+    stepped = twoball.MoreauJean(dt=2.5e-5)  # 0.008 / c, not the default 0.005 / c
+    (point,) = twoball.sweep({"mass_ratio": [0.1]}, BASKETBALL, solver=stepped).points
+    single = twoball.liftoff(BASKETBALL, body=Body(0.1), solver=stepped)
+    assert point.v_liftoff_m_s == single.v_liftoff_m_s
+    assert point.as_dict()["dt_s"] == single.extra["dt_s"] == 2.5e-5
+
+
+@pytest.mark.parametrize(
+    ("call", "name"),
+    [
+        (lambda: twoball.sweep({"v0": [3.0]}, solver=twoball.Superposition("axisym")), "solver"),
+        (lambda: twoball.sweep({"v0": [3.0]}, solver=twoball.MoreauJean()), "solver"),
+        (lambda: twoball.sweep({"mass_ratio": [0.1]}, solver=twoball.ClosedForm()), "solver"),
+        (
+            lambda: twoball.sweep({"v0": [3.0]}, body=Body(0.1), solver=twoball.ClosedForm()),
+            "solver",
+        ),
+        (  # the points' N is the case's (or swept): a ball of its own cannot be swept
+            lambda: twoball.sweep(
+                {"mass_ratio": [0.1]}, solver=twoball.MoreauJean(twoball.LegendreBall(40))
+            ),
+            "ball",
+        ),
+        (
+            lambda: twoball.sweep(
+                {"mass_ratio": [0.1]}, solver=twoball.MoreauJean(twoball.FEBall())
+            ),
+            "ball",
+        ),
+        (
+            lambda: twoball.sweep({"v0": [3.0]}, drop=twoball.Drop(), solver=twoball.ClosedForm()),
+            "solver",
+        ),
+    ],
+)
+def test_a_solver_that_does_not_fit_the_points_is_refused_by_name(call, name):
+    with pytest.raises(twoball.ParameterError) as caught:
+        call()
+    assert caught.value.name == name, str(caught.value)

@@ -27,7 +27,7 @@ def test_json_carries_the_drop_in_si(capsys):
         assert key in data, key
     assert data["provenance"]["command"].startswith("twoball bounce")
     # the command line calls the face: the same numbers
-    api = twoball.bounce(drop=twoball.Drop(modes=16)).as_dict()
+    api = twoball.bounce(solver=twoball.MoreauJean(twoball.LegendreBall(16))).as_dict()
     assert data["e2"] == api["e2"] and data["contact_time_s"] == api["contact_time_s"]
 
 
@@ -168,7 +168,8 @@ def test_json_of_a_pair_is_the_apis(capsys):
     ):
         assert isinstance(data[key], float), key
     assert isinstance(data["body_left_first"], bool) and "e12_effective" in data
-    api = twoball.bounce(drop=twoball.Drop(modes=24), pair="basketball-tissue").as_dict()
+    solver = twoball.MoreauJean(twoball.LegendreBall(24))
+    api = twoball.bounce(solver=solver, pair="basketball-tissue").as_dict()
     assert data["v1_ratio"] == api["v1_ratio"] and data["events"] == api["events"]
     assert data["baselines"]["models"]["icm"] == api["baselines"]["models"]["icm"]
 

@@ -30,14 +30,15 @@ def test_options_that_do_not_apply_are_refused(argv, flag, tmp_path, capsys):
 
 
 def test_cli_option_constants_match_the_model():
-    """The option group offers the model's own limits (modal/contact/body.py)."""
+    """The option group offers the model's own limits (modal/contact/body.py), both read
+    from twoball/_common/choices.py."""
     from twoball.modal.contact import body
 
-    from twoball import _choices
+    from twoball._common import choices
     from twoball.cli.main import full_parser
 
-    assert _choices.MAX_MASS_RATIO == body.MAX_MASS_RATIO == 100.0
-    assert _choices.ENERGY_OPTIONS == body.ENERGY_OPTIONS == ("ball", "both")
+    assert choices.MAX_MASS_RATIO is body.MAX_MASS_RATIO and body.MAX_MASS_RATIO == 100.0
+    assert choices.ENERGY_OPTIONS is body.ENERGY_OPTIONS == ("ball", "both")
     (sub,) = (a for a in full_parser()._actions if hasattr(a, "choices") and a.choices)
     energy = next(a for a in sub.choices["liftoff"]._actions if "--energy" in a.option_strings)
     assert "ball or both" in energy.help

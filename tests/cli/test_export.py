@@ -115,7 +115,7 @@ def test_cli_and_api_give_identical_arrays(ball_files, tmp_path, capsys):
                 + ["--frames", "3", "--out", str(cli)])  # fmt: skip
     assert code == 0 and "Exported fields" in capsys.readouterr().out
     mesh = twoball.MeshOptions(file=ball_files["msh"], pole=OFF_NODE_POLES[0])
-    twoball.export(api, BASKETBALL, mesh=mesh, frames=3)
+    twoball.export(api, BASKETBALL, solver=twoball.Superposition(mesh), frames=3)
     a, b = read_series(cli), read_series(api)
     assert np.array_equal(a.points, b.points) and np.array_equal(a.cells, b.cells)
     assert np.array_equal(a.times, b.times)

@@ -34,6 +34,21 @@ def _cli(*args):
         (["liftoff", "--backend", "fem", "--dt", "1e-5"], "--dt must be left out with scheme"),
         (["eigen", "--mesh", "sphere", "--elements", "9"], "--elements must be left out"),
         (["liftoff", "--phi-a", "3.5"], "--phi-a must be in (pi/2, pi - 1e-6]"),
+        # the flags map onto one solver object: those it has no field for are refused
+        (["liftoff", "--mesh", "axisym"], "--mesh must be left out with backend legendre"),
+        (
+            ["liftoff", "--backend", "fem", "--scheme", "alpha", "--route", "krylov"],
+            "--route must be full or auto with scheme alpha",
+        ),
+        (
+            ["liftoff", "--mass-ratio", "0.1", "--scheme", "alpha"],
+            "--scheme must be left out with --mass-ratio (its contacts are stepped)",
+        ),
+        (
+            ["liftoff", "--mass-ratio", "0.1", "--route", "full"],
+            "--route must be left out with --mass-ratio (its contacts are stepped)",
+        ),
+        (["liftoff", "--mass-ratio", "0.1", "--recontact", "paper"], "--recontact must be window"),
     ],
 )
 def test_cli_refuses_options_that_do_not_apply(capsys, argv, line):
@@ -130,6 +145,22 @@ def test_cli_mass_ratio_json_matches_api():
     api = twoball.liftoff(BASKETBALL, body=Body(0.004, contact_radius=0.006))
     assert data["v_liftoff_m_s"] == api.v_liftoff_m_s
     assert data["impacts"] == len(api.history.impacts)
+
+
+def test_cli_dt_with_a_mass_ratio_is_the_moreau_jean_step(capsys):
+    """``--dt`` with ``--mass-ratio`` is the step of the body's contacts: the API's
+    ``MoreauJean(dt=...)``, bit for bit."""
+    argv = ["--mass-ratio", "0.1", "--dt", "2.5e-5"]
+    code, out, err = cli_run(capsys, "liftoff", *argv, "--json")
+    assert code == 0, err
+    data = json.loads(out)
+    api = twoball.liftoff(BASKETBALL, body=Body(0.1), solver=twoball.MoreauJean(dt=2.5e-5))
+    assert data["dt_s"] == 2.5e-5 and data["integrator"] == "moreau-jean"
+    assert data["v_liftoff_m_s"] == api.v_liftoff_m_s and data["events"] == api.as_dict()["events"]
+    assert (
+        data["provenance"]["call"]["arguments"]["solver"]
+        == api.provenance["call"]["arguments"]["solver"]
+    )
 
 
 def test_cli_bad_mass_ratio_is_one_line():

@@ -151,7 +151,10 @@ def test_refusals_that_do_not_apply(ball_files, tmp_path, capsys):
     assert "--level must be left out with a mesh file" in refused(level, tmp_path / "c", capsys)
     with pytest.raises(ParameterError, match="^pole"):
         twoball.plot(
-            "waterfall", tmp_path / "w.png", BASKETBALL, mesh=twoball.MeshOptions(pole=(0, 0, 1))
+            "waterfall",
+            tmp_path / "w.png",
+            BASKETBALL,
+            solver=twoball.Superposition(twoball.MeshOptions(pole=(0, 0, 1))),
         )
 
 

@@ -23,7 +23,7 @@ def test_sweep_modes(capsys):
 
 
 def test_sweep_cli_reports_failed_points(capsys, monkeypatch):
-    monkeypatch.setattr("twoball.verify.sweeps.sweeps.SweepSolver", lambda *a: FailAbove(3.0))
+    monkeypatch.setattr("twoball.verify.sweeps.sweeps.SweepSolver", lambda *a, **k: FailAbove(3.0))
     assert main(["sweep", "--param", "v0", "--values", "2:4:3", "--json", "--workers", "1"]) == 0
     rows = json.loads(capsys.readouterr().out)["results"]
     assert [r["error"] is not None for r in rows] == [False, False, True]

@@ -199,7 +199,7 @@ def whole_figure(
     fig = new_figure(8.2, 10.4)
     axes = fig.subplots(5, 1, sharex=True, height_ratios=(1.2, 0.8, 1.0, 1.0, 1.2))
     beside = {"loc": "upper left", "bbox_to_anchor": (1.01, 1.0)}
-    cap = system.body.cap
+    cap = system.body.cap  # one average per coordinate of the ball, the translation's too
     z = tr.q[:, system.centre]
     top = 1.0 + tr.q[:, : system.ball.modes] @ cap  # the cap's vertical rows include Z
     lowest = np.min(system.floor_gaps(tr.q), axis=1)  # the ball's lowest floor point
