@@ -129,7 +129,9 @@ class FEBall:
 
         The axisymmetric line with the centre free is the drop's ball; ``anchored``
         (degree 1 a mode about a centre that does not move, no floor) is the body
-        on the paper's start, on the line or on a sphere mesh.
+        on the paper's start.  A sphere mesh is refused here: a body on its start
+        runs on the finite elements' modal series
+        (:func:`~twoball.fem_membrane.contact.fem_contact_solution`).
         """
         if self.mesh.kind == "axisym":
             from twoball.fem_membrane.floor import axisym_ball
@@ -142,13 +144,11 @@ class FEBall:
                 anchored=anchored,
                 monitor=monitor,
             )
-        if not anchored:
-            raise ParameterError(
-                "mesh", "axisym for the drop (the floor contact is axisymmetric)", self.label
-            )
-        from twoball.fem_membrane.contact import sphere_ball
-
-        return sphere_ball(case, self.mesh, monitor=monitor)
+        valid = (
+            "axisym for a ball described here (the floor contact is axisymmetric; a body "
+            "on a sphere mesh's start is solved on its modal series by liftoff)"
+        )
+        raise ParameterError("mesh", valid, self.label)
 
     def as_dict(self) -> dict[str, Any]:
         """``{"ball": "membrane", "discretisation": "fem", "mesh": {...}}``."""

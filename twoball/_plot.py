@@ -159,6 +159,3 @@ def save_report_figure(report: Any, path: str | os.PathLike[str], name: str = "o
     if getattr(report, "history", None) is None:
         raise ParameterError(name, "given with a body of mass ratio > 0", os.fspath(path))
     return save_figure(contact_figure(report), path, name)
-
-
-#: The old keywords of :func:`plot` that :class:`~twoball.PlotOptions` holds now.

@@ -234,6 +234,9 @@ def body_liftoff(
     that does not move: the finite-mass model of :mod:`twoball.modal.contact`
     (``twoball.liftoff(case, body=Body(mu))``).
     """
+    from twoball.modal.contact.stepped import ZENO_VELOCITY
+
     ball = legendre_ball(modes, spectrum, law, anchored=anchored)
     q0 = legendre_start(ball, modes, phi_a, sigma)
-    return body_on_start(ball, q0, gamma, dt, body, t_end=t_end)
+    zeno = ZENO_VELOCITY if body.restitution > 0.0 else None
+    return body_on_start(ball, q0, gamma, dt, body, t_end=t_end, zeno_velocity=zeno)
