@@ -102,7 +102,7 @@ def test_help_loads_no_numerical_library(argv):
 
 @pytest.mark.parametrize("command", sorted(COMMANDS))
 def test_subcommand_help_loads_no_numerical_library(command):
-    """Each ``--help`` takes its choices and defaults from twoball/_common/choices.py (stdlib only)."""
+    """Each ``--help`` takes its choices and defaults from twoball/_common/choices.py."""
     packages, report = imported_by([command, "--help"])
     assert report["status"] == 0
     assert f"usage: twoball {command}" in report["stdout"]
