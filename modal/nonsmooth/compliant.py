@@ -36,7 +36,10 @@ constraint* (Baraff-style regularisation; Acary & Brogliato 2008, §10.3)::
     r = [s* (g0 + h (1 - theta) U0 + delta*) - lambda*] / (s* theta h)
 
 together with the rigid rows of the step.  A linear law converges in one
-iteration (checked by a second); Hertz in three or four.  As ``k -> inf``
+iteration (checked by a second); Hertz in three or four, to the rounding of
+the compression (64 eps times the terms of its gap).  Should the iteration
+cycle (the clip of (C1) at a kink), a single compliant row falls back on
+Illinois' regula falsi on its impulse, which (C2) brackets.  As ``k -> inf``
 (C3) tends to the rigid row.
 
 The row may move with the body's state: a body whose contact disc grows with
@@ -78,8 +81,8 @@ from twoball._common.errors import NumericalError, ParameterError
 
 __all__ = ["CompliantMoreauJean", "CompliantRow", "PowerLaw"]
 
-#: Newton iterations on delta1 in one step (a guard; Hertz needs 3-4).
-_NEWTON = 60
+#: Newton iterations on delta1 in one step before the bracketed fallback (Hertz needs 3-4).
+_NEWTON = 30
 #: Relative tolerance of Newton's iteration on delta1.
 _NEWTON_TOLERANCE = 1e-13
 
@@ -414,7 +417,15 @@ class CompliantMoreauJean(MoreauJean):
         base = g0[engaged] + h * (1.0 - th) * U0c[engaged]  # delta1 = -(base + h th U1)
         d1 = -free_end[engaged]
         z_guess = guess[idx].copy()
-        for _ in range(_NEWTON):
+        # rounding of the compression itself: the gap is a sum of O(|G| |q|) terms
+        G_c = p.constraints[soft]
+        noise = (
+            64.0
+            * np.finfo(float).eps
+            * (np.abs(G_c) @ np.abs(q) + np.abs(p.offset[soft]) + h * (np.abs(G_c) @ np.abs(v)))
+        )
+        z = None if laws else solve_lcp(D, b, guess=z_guess > 0.0).z
+        for _ in range(_NEWTON if laws else 0):
             diag = np.zeros(idx.size)
             rhs = np.zeros(idx.size)
             for j, law in enumerate(laws):
@@ -430,19 +441,80 @@ class CompliantMoreauJean(MoreauJean):
             sol = solve_lcp(D + np.diag(diag), b + rhs, guess=z_guess > 0.0)
             U1 = b[nr:] + D[nr:] @ sol.z
             new = -(base + h * th * U1)
-            tolerance = _NEWTON_TOLERANCE * np.maximum(
+            relative = _NEWTON_TOLERANCE * np.maximum(
                 np.maximum(np.abs(d0), np.abs(new)), [law.scale for law in laws]
             )
-            done = np.all(np.abs(new - d1) <= tolerance)
+            done = np.all(np.abs(new - d1) <= np.maximum(relative, noise))
             d1, z_guess = new, sol.z
             if done:
+                z = sol.z
                 break
-        else:
-            raise NumericalError("compliant contact: Newton's iteration on (C2) did not settle")
-        v1 = v1 + Y_a @ sol.z
-        impulse[idx] = sol.z
+        if z is None:
+            if len(laws) != 1:
+                raise NumericalError("compliant contact: Newton's iteration on (C2) did not settle")
+            z = self._bracketed(D, b, nr, laws[0], d0[0], base[0], h, guess[idx])
+        v1 = v1 + Y_a @ z
+        impulse[idx] = z
         q1 = q + h * ((1.0 - th) * v + th * v1)
         return q1, v1, impulse
+
+    def _bracketed(
+        self,
+        D: np.ndarray,
+        b: np.ndarray,
+        nr: int,
+        law: PowerLaw,
+        d0: float,
+        base: float,
+        h: float,
+        guess: np.ndarray,
+    ) -> np.ndarray:
+        """(C2) for one compliant row by Illinois' regula falsi on its impulse (Newton's fallback).
+
+        With the row's impulse P given, the rigid rows' LCP gives its compression
+        ``delta1(P)``, which falls as P grows; ``r(P) = P / h - max(0, F(delta1(P)))``
+        rises, with ``r(0) <= 0 <= r(h max(0, F(delta1(0))))``: a bracket.
+        """
+        th = self.theta
+        rigid = slice(0, nr)
+
+        def solve(P: float) -> tuple[float, np.ndarray]:
+            z = np.zeros(b.size)
+            z[nr] = P
+            if nr:
+                inner = solve_lcp(
+                    D[rigid, rigid], b[rigid] + D[rigid, nr] * P, guess=guess[:nr] > 0
+                )
+                z[:nr] = inner.z
+            U1 = b[nr] + D[nr] @ z
+            d1 = -(base + h * th * U1)
+            value, _ = law.step_force(d0, d1, h)
+            return P / h - max(value, 0.0), z
+
+        r0, z0 = solve(0.0)
+        if r0 >= 0.0:
+            return z0
+        a, fa, c = 0.0, r0, -r0 * h
+        fc, zc = solve(c)
+        side = 0
+        for _ in range(200):
+            if abs(fc) <= 1e-14 * max(abs(c / h), 1e-300) or c - a <= 1e-15 * c:
+                return zc
+            m = (a * fc - c * fa) / (fc - fa)
+            if not a < m < c:
+                m = 0.5 * (a + c)
+            fm, zm = solve(m)
+            if fm > 0.0:
+                c, fc, zc = m, fm, zm
+                if side == 1:
+                    fa *= 0.5
+                side = 1
+            else:
+                a, fa = m, fm
+                if side == -1:
+                    fc *= 0.5
+                side = -1
+        raise NumericalError("compliant contact: (C2) did not settle by regula falsi either")
 
     def _commit(
         self,

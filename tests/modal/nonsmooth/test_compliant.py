@@ -140,3 +140,28 @@ def test_refusals():
         PowerLaw(1.0, 1.0, 1.0, 1.0)
     with pytest.raises(twoball.ParameterError, match="substep"):
         CompliantRow(0, law, 0.0)
+
+
+def test_the_bracketed_fallback_gives_newtons_answer(monkeypatch):
+    """With Newton's iteration cut off, Illinois' regula falsi on the impulse takes over."""
+    import twoball.modal.nonsmooth.compliant as compliant
+
+    problem = ContactProblem.create(
+        np.array([1.0, 2.0]), None, np.array([0.0, 3.0]), np.array([0.0, -0.5]),
+        np.array([[0.0, 1.0], [1.0, -1.0]]), np.zeros(2),
+    )  # fmt: skip
+    law = PowerLaw(40.0, 1.5, 1.0, 0.25)
+    q0, v0 = np.zeros(2), np.array([-1.0, 0.0])
+
+    def run():
+        stepper = CompliantMoreauJean(problem, 0.01, [CompliantRow(1, law, 0.002)])
+        return stepper.run(q0, v0, 1.5, keep_states=True), stepper.final_books()
+
+    newton, _ = run()
+    monkeypatch.setattr(compliant, "_NEWTON", 0)
+    falsi, books = run()
+    np.testing.assert_allclose(falsi.q[-1], newton.q[-1], atol=1e-9)
+    assert np.any(falsi.impulse[:, 1] > 0.0) and np.any(falsi.impulse[:, 0] > 0.0)
+    energy = falsi.energy + books["stored"] + books["dissipated"]
+    works = falsi.damping_work + falsi.contact_work - books["work"] + falsi.impact_work
+    assert np.max(np.abs(energy - energy[0] - works)) < 1e-14
