@@ -72,11 +72,16 @@ def run_one(key: tuple[str, str, float, str]) -> dict[str, Any]:
     from twoball.modal.floor.bounce import bounce_problem, simulate
     from twoball.modal.floor.options import Drop
 
+    from twoball._common.errors import NumericalError
+
     pair, kind, gap, backend = key
     ball = LegendreBall() if backend == "legendre" else FEBall()
     start = time.perf_counter()
     problem = bounce_problem(drop=Drop(gap=gap), ball=ball, pair=pair, body=kind)
-    report = simulate(problem)
+    try:
+        report = simulate(problem)
+    except NumericalError as error:  # kept, so that one failure does not lose the rest
+        return {"pair": pair, "kind": kind, "gap": gap, "backend": backend, "error": str(error)}
     data = report.as_dict()
     contact = data.get("body_contact") or {}
     energy = data["energy_J"]
@@ -108,6 +113,14 @@ def run_one(key: tuple[str, str, float, str]) -> dict[str, Any]:
     }
 
 
+#: The numbers of a run (:func:`run_one`).
+FIELDS = (
+    "v1", "v2", "e2", "e12", "t_l", "t_liftoff", "body_left_first", "sequence", "contacts",
+    "duration", "peak_force", "disc", "impulse_balance", "internal", "body_dissipated",
+    "initial", "balance", "steps", "wall",
+)  # fmt: skip
+
+
 class Runs:
     """Whole bounces by ``(pair, kind, gap, backend)``, computed once and kept in a JSON file."""
 
@@ -127,19 +140,24 @@ class Runs:
         todo = [k for k in dict.fromkeys(keys) if self.key(*k) not in self.data]
         if not todo:
             return
-        if self.workers > 1:
-            with ProcessPoolExecutor(self.workers) as pool:
-                results = list(pool.map(run_one, todo))
-        else:
-            results = [run_one(k) for k in todo]
-        for k, r in zip(todo, results, strict=True):
-            self.data[self.key(*k)] = r
-        if self.path is not None:
-            self.path.write_text(json.dumps(self.data, indent=1, sort_keys=True) + "\n")
+        pool = ProcessPoolExecutor(self.workers) if self.workers > 1 else None
+        try:
+            results = pool.map(run_one, todo) if pool is not None else map(run_one, todo)
+            for k, r in zip(todo, results, strict=True):
+                self.data[self.key(*k)] = r
+                if self.path is not None:  # kept as they come
+                    self.path.write_text(json.dumps(self.data, indent=1, sort_keys=True) + "\n")
+        finally:
+            if pool is not None:
+                pool.shutdown()
 
     def get(self, pair: str, kind: str, gap: float, backend: str = "legendre") -> dict[str, Any]:
+        """The run's numbers (a failed run: ``error`` and every number None)."""
         self.ensure([(pair, kind, gap, backend)])
-        return self.data[self.key(pair, kind, gap, backend)]
+        out = self.data[self.key(pair, kind, gap, backend)]
+        if "error" in out:
+            return {k: None for k in FIELDS} | out
+        return out
 
 
 def _f(value: float | None, digits: int = 3) -> str:
