@@ -367,6 +367,7 @@ class BounceReport:
             "body_contact": {
                 "duration_s": self._time(elastic.contact_time),
                 "first_contact_s": self._time(elastic.first_contact),
+                "main_contact_s": self._time(elastic.main_contact),
                 "peak_force_N": elastic.peak_force * force,
                 "disc_max_radius_m": elastic.disc_max * case.radius,
                 "impacts_N_s": elastic.impacts * self.mass_kg * case.scalings.velocity,

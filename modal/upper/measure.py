@@ -7,7 +7,8 @@ reports:
 Contact
     ``contact_time``: its first touch to its last separation (the intervals of
     :func:`~twoball.modal.floor.measure.contact_intervals` on the body's rows),
-    ``first_contact``: the first interval's length; ``peak_force``: the largest
+    ``first_contact``: the first interval's length, ``main_contact``: the length
+    of the interval with the largest impulse; ``peak_force``: the largest
     step-mean force of its rows (impacts excluded: a ball body's rows strike
     with Newton's e = 0, reported as ``impacts``, the impulse they took).
 Contact disc
@@ -43,6 +44,8 @@ class ElasticResult:
     ----------
     kind : {"lumped", "ball"}
     contact_time, first_contact : float or None
+    main_contact : float or None
+        The contact interval that carried the largest impulse (the collision).
     peak_force : float
         Units ``m2 R c^2``.
     impacts : float
@@ -60,6 +63,7 @@ class ElasticResult:
     kind: str
     contact_time: float | None
     first_contact: float | None
+    main_contact: float | None
     peak_force: float
     impacts: float
     disc_max: float
@@ -69,12 +73,14 @@ class ElasticResult:
     drift: float = 0.0
 
 
-def _times(result: Any) -> tuple[float | None, float | None]:
+def _times(result: Any) -> tuple[float | None, float | None, float | None]:
+    """First touch to last separation, the first interval, the interval of the largest impulse."""
     body = result.body
     if body is None or not body.intervals:
-        return None, None
+        return None, None, None
     first, last = body.intervals[0], body.intervals[-1]
-    return last.end - first.start, first.end - first.start
+    main = max(body.intervals, key=lambda iv: iv.impulse)
+    return last.end - first.start, first.end - first.start, main.end - main.start
 
 
 def lumped_measures(system: Any, stepper: Any, result: Any) -> tuple[ElasticResult, dict]:
@@ -87,11 +93,12 @@ def lumped_measures(system: Any, stepper: Any, result: Any) -> tuple[ElasticResu
     internal = float(books["stored"][-1])
     dissipated = float(books["dissipated"][-1])
     work = float(books["work"][-1])
-    span, first = _times(result)
+    span, first, main = _times(result)
     elastic = ElasticResult(
         kind="lumped",
         contact_time=span,
         first_contact=first,
+        main_contact=main,
         peak_force=float(force.max(initial=0.0)),
         impacts=0.0,
         disc_max=disc if math.isfinite(disc) else 0.0,
@@ -123,11 +130,12 @@ def ball_measures(system: Any, stepper: Any, result: Any) -> tuple[ElasticResult
     mid = 0.5 * (tr.v[1:, d] + tr.v[:-1, d])
     dissipated = float(np.sum(h * ((mid * mid) @ c)))
     internal = float(result.energy["body_vibration"])
-    span, first = _times(result)
+    span, first, main = _times(result)
     elastic = ElasticResult(
         kind="ball",
         contact_time=span,
         first_contact=first,
+        main_contact=main,
         peak_force=float(force.max(initial=0.0)),
         impacts=float(tr.impact_impulse[:, rows].sum()),
         disc_max=float(radii[touched].max()) if touched.any() else 0.0,
