@@ -58,7 +58,7 @@ def floor_alone(
     --------
     >>> import twoball
     >>> alone = twoball.floor_alone(pair="basketball-tennis")
-    >>> round(alone.restitution, 3), round(alone.contact_time * 1e3, 2)
+    >>> round(alone.restitution, 3), round(alone.contact_time * 1e3, 1)
     (0.83, 5.5)
     """
     from twoball.modal.parameters import Case
