@@ -222,6 +222,11 @@ class BallOnTop:
         """Horizontal radius of each row (units R): ``rho sin(psi)``."""
         return self.rho * np.sin(self.psi)
 
+    @property
+    def cap_angle(self) -> float:
+        """The widest half-angle [rad] of its rows on the lower ball (the exports' cap)."""
+        return float(np.max(self.theta))
+
 
 @dataclass(frozen=True, eq=False)
 class BallSystem(FloorSystem):

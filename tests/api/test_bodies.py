@@ -99,3 +99,15 @@ def test_body_objects_check_their_fields():
     with pytest.raises(twoball.ParameterError, match="case"):
         twoball.BallBody(case="tennis")
     assert twoball.BallBody().as_dict()["preset"] == "tennis"
+
+
+@pytest.mark.parametrize("kind", ["lumped", "ball"])
+def test_the_report_files_and_light_points_of_an_elastic_body(kind, tmp_path):
+    import pickle
+
+    report = twoball.bounce(pair="basketball-tennis", body=kind, solver=SOLVER)
+    assert report.plot(tmp_path / "whole.png").is_file()
+    written = report.export(tmp_path / "whole.xdmf", frames=3)
+    assert [p.name for p in written] == ["whole.xdmf", "whole.h5"]
+    light = pickle.loads(pickle.dumps(report.light()))  # a sweep's point
+    assert light.v1_ratio == report.v1_ratio and light.result.elastic == report.result.elastic
