@@ -22,7 +22,9 @@ balls :class:`Ball` (the protocol), :class:`LegendreBall`, :class:`FEBall`, the 
 :class:`SolidBall` and :class:`FESolidBall` with its :class:`SolidMaterial`, the
 thick wall's :class:`ThickBall` with its :class:`ThickWall`; the
 case and the option and model objects :class:`Case`, :class:`MeshOptions`,
-:class:`Body`, :class:`Membrane`, :class:`ModalRatio`, :class:`Rayleigh`,
+:class:`Body`, :class:`LumpedBody`, :class:`BallBody`, :class:`ContactLaw` (the upper
+body: rigid, lumped elastic, a second ball; :func:`body_preset`, :func:`floor_alone`),
+:class:`Membrane`, :class:`ModalRatio`, :class:`Rayleigh`,
 :class:`Drop`, :class:`RenderOptions`, :class:`PlotOptions`; the results;
 :class:`Reporter` (progress), :class:`ParameterError`, :class:`NumericalError`,
 ``__version__``.  The command line ``twoball`` is a thin layer over these.
@@ -49,6 +51,12 @@ _NAMES: dict[str, str | tuple[str, str]] = {
     "NumericalError": "twoball._common.errors",
     "MeshOptions": "twoball.fem_membrane.options",
     "Body": "twoball.modal.contact.body",
+    "LumpedBody": "twoball.modal.upper.options",
+    "BallBody": "twoball.modal.upper.options",
+    "ContactLaw": "twoball.modal.upper.laws",
+    "body_preset": ("twoball.modal.bodies", "preset_body"),
+    "floor_alone": "twoball._bodies",
+    "AloneResult": "twoball.modal.upper.alone",
     "ModalRatio": "twoball.modal.damping",
     "Rayleigh": "twoball.modal.damping",
     "Membrane": "twoball.modal.membrane",

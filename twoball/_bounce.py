@@ -62,12 +62,16 @@ def bounce(
         :class:`~twoball.FEBall` (the axisymmetric line, 96 P2 elements) or any
         :class:`~twoball.Ball`; ``dt`` [s], default 0.005 / c; ``t_end`` [s],
         default 10 pi / c plus twice the gap's closing time ``Delta x / |v0|``).
-    body : Body, optional
-        The upper body: ``mass_ratio`` mu in (0, 100], ``contact_radius`` a [m]
-        (default R / 10), ``restitution`` e12 (Newton's, at its impacts).
+    body : Body, LumpedBody, BallBody or str, optional
+        The upper body: rigid (:class:`~twoball.Body`: ``mass_ratio`` mu in (0,
+        100], ``contact_radius`` a [m] (default R / 10), ``restitution`` e12,
+        Newton's at its impacts), lumped elastic (:class:`~twoball.LumpedBody`:
+        mu and its own contact law) or a second ball (:class:`~twoball.BallBody`);
+        with ``pair``, a kind name (``"rigid"``, ``"lumped"``, ``"ball"``) takes the
+        pair's preset body of that kind (docs/bodies.rst).
     pair : str, optional
         A Table 1 pair (``"basketball-tennis"``, ...; :data:`twoball.modal.pairs.PAIRS`):
-        the lower ball's preset, mu, e12 and a; refused with ``body``.
+        the lower ball's preset, mu, e12 and a; refused with a body object.
     damping : ModalRatio or Rayleigh, optional
         The damping law (default the case's own: its ratio D on every mode, eq.
         (3.14), or its ``rayleigh``); ``Rayleigh()`` is fitted to D as
@@ -125,7 +129,7 @@ def bounce(
     numbers = simulate(problem, Watch())
     arguments: dict[str, Any] = {"drop": problem.drop.as_dict(), "solver": solver.as_dict()}
     if body is not None:
-        arguments["body"] = body.as_dict()
+        arguments["body"] = body if isinstance(body, str) else body.as_dict()
     if damping is not None:
         arguments["damping"] = damping.as_dict()
     if pair is not None:
@@ -140,9 +144,14 @@ def _check_options(body: Any, damping: Any) -> None:
     """The types of the body and the damping law (the rest is checked below the face)."""
     from twoball.modal.contact.body import Body
     from twoball.modal.damping import ModalRatio, Rayleigh
+    from twoball.modal.upper.options import BODY_KINDS, BallBody, LumpedBody
 
-    if body is not None and not isinstance(body, Body):
-        raise ParameterError("body", "a twoball.Body", type(body).__name__)
+    if isinstance(body, str):  # a kind: the pair's preset body (checked with the pair)
+        if body not in BODY_KINDS:
+            raise ParameterError("body", "a body object or one of " + ", ".join(BODY_KINDS), body)
+    elif body is not None and not isinstance(body, (Body, LumpedBody, BallBody)):
+        valid = "a twoball.Body, LumpedBody or BallBody (or a kind with pair)"
+        raise ParameterError("body", valid, type(body).__name__)
     if damping is not None and not isinstance(damping, (ModalRatio, Rayleigh)):
         raise ParameterError("damping", "a twoball.ModalRatio or twoball.Rayleigh", damping)
 

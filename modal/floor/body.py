@@ -136,7 +136,7 @@ def measure_body(
     gamma = system.gamma
     weight = gamma if body.weight else 0.0
     s, z = system.body_coordinate, system.centre
-    impulses = tr.impulse[:, system.body_row]
+    impulses = tr.impulse[:, system.body_rows].sum(axis=1)
     intervals = contact_intervals(tr.t, impulses, dt)
     steps = tr.impulse.shape[0]
 

@@ -99,7 +99,8 @@ class BounceProblem:
     def runs(self) -> int:
         """Drops the run makes: 2 for a body that is not a Table 1 pair (the ball alone
         again, for the baselines' e2), else 1."""
-        return 2 if self.whole is not None and self.whole.pair is None else 1
+        whole = self.whole
+        return 2 if whole is not None and whole.pair is None and whole.kind == "rigid" else 1
 
     @property
     def mass_kg(self) -> float:
@@ -218,13 +219,20 @@ def simulate(problem: BounceProblem, monitor: Monitor | None = None) -> BounceRe
             "ball", "a ball with a free centre and floor points for the drop", ball.label
         )
     row = None
-    if whole is not None:
+    if whole is not None and whole.kind == "rigid":
         cap = ball.cap_average(whole.cap_angle)
         b = whole.body
         row = BodyOnTop(b.mass_ratio, cap, whole.cap_angle, b.restitution, problem.gap)
     system = floor_system(ball, case.gamma, drop.floor_restitution, row)
+    if whole is not None and whole.kind != "rigid":  # its own law or its own ball
+        from twoball.modal.upper.build import elastic_system
+
+        mass = problem.mass_kg
+        system = elastic_system(
+            ball, case, mass, whole.body, problem.gap, drop.floor_restitution, monitor
+        )
+    label = "the whole bounce" if whole is not None else "the drop"
     settings = DropSettings(problem.v0, case.gamma, problem.dt, problem.t_end)
-    label = "the whole bounce" if row is not None else "the drop"
     result = run_drop(system, settings, label=label, monitor=monitor)
     warnings = list(problem.warnings) + _warnings(result, ball, problem.dt)
     summary = getattr(problem.ball, "summary", None)
@@ -304,6 +312,8 @@ def _baselines(
     """
     from twoball.modal.lumped.baselines import baselines, body_inputs, pair_inputs
 
+    if whole.pair is None and whole.kind != "rigid":
+        return None  # no e12 to give them: an elastic body's is the run's output
     if whole.pair is not None:
         inputs_ = pair_inputs(whole.pair)
     elif inputs.pressure is None:

@@ -27,7 +27,7 @@ from __future__ import annotations
 import math
 import time
 from dataclasses import dataclass, field, replace
-from typing import TYPE_CHECKING
+from typing import TYPE_CHECKING, Any
 
 import numpy as np
 from twoball.modal.floor.measure import (
@@ -39,7 +39,7 @@ from twoball.modal.floor.measure import (
     smoothed_minimum,
 )
 from twoball.modal.floor.system import FloorSystem
-from twoball.modal.nonsmooth import MoreauJean, Trajectory
+from twoball.modal.nonsmooth import Trajectory
 
 if TYPE_CHECKING:
     from twoball.modal.floor.body import BodyResult
@@ -160,6 +160,8 @@ class DropResult:
         The upper body's measures (:mod:`twoball.modal.floor.body`); then
         ``v2``/``e2`` are the centre's velocity at its last floor release and
         ``impulse_balance`` is the whole system's momentum books.
+    elastic : ElasticResult, optional
+        An elastic body's own measures (:mod:`twoball.modal.upper.measure`).
     """
 
     settings: DropSettings
@@ -185,6 +187,7 @@ class DropResult:
     system: FloorSystem = field(repr=False)
     wall_s: float = 0.0
     body: BodyResult | None = None
+    elastic: Any = None
 
     @property
     def steps(self) -> int:
@@ -239,8 +242,8 @@ class DropResult:
         h = np.diff(tr.t)
         if self.system.body is None:
             return 0.5 * (tr.t[1:] + tr.t[:-1]), np.zeros(h.size)
-        row = self.system.body_row
-        step = tr.impulse[:, row] - tr.impact_impulse[:, row]
+        rows = self.system.body_rows
+        step = (tr.impulse[:, rows] - tr.impact_impulse[:, rows]).sum(axis=1)
         return 0.5 * (tr.t[1:] + tr.t[:-1]), step / h
 
     @property
@@ -297,7 +300,7 @@ def run_drop(
     bound = ball.floor_reach()
     floor = system.floor
     body = system.body
-    stepper = MoreauJean(system.problem, settings.dt, **core)
+    stepper = system.integrator(settings.dt, **core)
     q0, v0 = system.falling(settings.v0)
     flags = {"stop": "window", "rising": False, "off": False}
     top_bound = _cap_bound(system)
@@ -333,6 +336,9 @@ def run_drop(
         displacement is at most ``b sqrt(2 E)`` (Cauchy-Schwarz, E the membrane's
         energy, which cannot grow in flight).
         """
+        own = system.body_apart(state, record, stepper)
+        if own is not None:  # an elastic body's own rule (modal/upper/system.py)
+            return own
         row = system.body_row
         if record.impact_impulse[row] > 0.0 or record.step_impulse[row] > 0.0:
             return False
@@ -361,7 +367,12 @@ def run_drop(
             q0, v0, settings.t_end, stop=stop, keep_states=True, label=label, monitor=monitor
         )
     wall = time.perf_counter() - start
-    return _measure(system, settings, tr, flags["stop"], wall, bool(flags["off"]))
+    result = _measure(system, settings, tr, flags["stop"], wall, bool(flags["off"]))
+    extra = system.body_measures(stepper, result)
+    if extra is None:
+        return result
+    elastic, books = extra
+    return replace(result, elastic=elastic, energy={**result.energy, **books})
 
 
 def _measure(

@@ -264,14 +264,22 @@ class WholeBody:
     cap_angle: float
     notes: tuple[str, ...] = ()
 
+    @property
+    def kind(self) -> str:
+        """``rigid`` (a :class:`~twoball.Body`), ``lumped`` or ``ball`` (an elastic body)."""
+        return str(getattr(self.body, "kind", "rigid"))
+
 
 def resolve_pair(case: Case | None, body: Any, pair: str | None) -> tuple[Case | None, Any, Any]:
     """A Table 1 pair as the case's lower ball and the body (``(case, body, pair)``).
 
     The pair fixes the lower ball (its preset), mu, e12 and the contact radius
     (:attr:`~twoball.modal.pairs.Pair.cap_radius`); a body given with it, or a
-    case of another preset, is refused.  Without a pair, ``case`` and ``body``
-    pass through.
+    case of another preset, is refused.  ``body`` may name a kind instead
+    (``"rigid"``, ``"lumped"``, ``"ball"``): the pair's preset body of that kind
+    (:func:`twoball.modal.bodies.preset_body`); an elastic body object rides the
+    pair's lower ball as given.  Without a pair, ``case`` and ``body`` pass
+    through.
     """
     if pair is None:
         return case, body, None
@@ -279,7 +287,10 @@ def resolve_pair(case: Case | None, body: Any, pair: str | None) -> tuple[Case |
     from twoball.modal.pairs import pair as find_pair
 
     chosen = find_pair(pair)
-    if body is not None:
+    kind = "rigid"
+    if isinstance(body, str):  # a kind: the pair's preset body of that kind
+        kind, body = body, None
+    if body is not None and getattr(body, "kind", "rigid") == "rigid":
         raise ParameterError(
             "body", "left out with pair (the pair fixes mu, e12 and the contact radius)", body
         )
@@ -288,6 +299,12 @@ def resolve_pair(case: Case | None, body: Any, pair: str | None) -> tuple[Case |
     elif case.preset_name != chosen.lower:
         valid = f"a case of the {chosen.lower} preset (the pair's lower ball)"
         raise ParameterError("case", valid, case.preset_name)
+    if body is not None:  # an elastic body of its own on the pair's lower ball
+        return case, body, chosen
+    if kind != "rigid":  # the pair's elastic body (twoball.modal.bodies)
+        from twoball.modal.upper.inputs import pair_body
+
+        return case, pair_body(chosen.name, kind), chosen
     body = Body(chosen.mu, contact_radius=chosen.cap_radius, restitution=chosen.e12)
     return case, body, chosen
 
@@ -309,6 +326,14 @@ def resolve_body(case: Case, body: Any, pair: Any, drop: Drop) -> WholeBody | No
     from twoball.modal.contact.body import MAX_MASS_RATIO, Body
     from twoball.modal.contact.caps import cap_angle
 
+    if isinstance(body, str) or getattr(body, "kind", "rigid") != "rigid":
+        from twoball.modal.upper.inputs import resolve_elastic
+
+        if isinstance(body, str):
+            valid = "a body object (a kind name such as 'lumped' needs a pair)"
+            raise ParameterError("body", valid, body)
+        notes = resolve_elastic(case, body, pair, drop)
+        return WholeBody(body, pair, math.nan, math.nan, notes)
     if not isinstance(body, Body):
         raise ParameterError("body", "a twoball.Body", type(body).__name__)
     if body.mass_ratio <= 0.0:

@@ -186,6 +186,9 @@ class BounceReport:
             books["body_gravity_gained"] = (e["body_gravity"] - e["body_gravity_start"]) * unit
             total = 0.5 * self.result.settings.v0**2 + start
             books["body_share_of_initial"] = e["body_kinetic"] / total
+        if "body_internal" in e:  # an elastic body's own books (modal/upper/measure.py)
+            books["final_body_internal"] = e["body_internal"] * unit
+            books["body_dissipated"] = e["body_dissipated"] * unit
         return books
 
     @property
@@ -288,7 +291,8 @@ class BounceReport:
         v0, g, gap = self.case.v0, self.case.g, self.drop.gap
         e2 = min(max(self.e2, 0.0), 1.0)
         try:
-            v1, v2 = icm_velocities(gap, v0, e2, min(e12, 1.0), self.whole.body.mass_ratio, g)
+            mu = self.result.system.body_mass  # the rigid body's mass_ratio; a ball body's own
+            v1, v2 = icm_velocities(gap, v0, e2, min(e12, 1.0), mu, g)
         except ParameterError:
             return None
         return {
@@ -304,7 +308,7 @@ class BounceReport:
 
     def _body_block(self) -> dict[str, Any]:
         """The JSON keys of the whole bounce (SI)."""
-        whole, body = self.whole, self.result.body
+        body = self.result.body
         speed = self.case.scalings.velocity
         t_floor = body.t_floor_release
         before = None if body.before is None else [x * speed for x in body.before]
@@ -322,17 +326,56 @@ class BounceReport:
             "e12_velocities_m_s": {"before_u1_u2": before, "after_v1_v2": after},
             "body_contacts": body.contacts,
             "body_impulse_N_s": body.impulse * self.mass_kg * speed,
-            "body": {
+            "body": self._body_dict(),
+            "icm_solver": self.icm_solver,
+            "baselines": self.baselines,
+        } | self._elastic_block()
+
+    def _body_dict(self) -> dict[str, Any]:
+        """The body's own keys: the rigid body's cap and e12, or an elastic body's kind."""
+        whole = self.whole
+        pair = None if whole.pair is None else whole.pair.name
+        if whole.kind == "rigid":
+            return {
                 "mass_ratio": whole.body.mass_ratio,
                 "mass_kg": whole.body.mass_ratio * self.mass_kg,
                 "contact_radius_m": whole.contact_radius,
                 "cap_angle_rad": whole.cap_angle,
                 "restitution": whole.body.restitution,
                 "gap_m": self.drop.gap,
-                "pair": None if whole.pair is None else whole.pair.name,
-            },
-            "icm_solver": self.icm_solver,
-            "baselines": self.baselines,
+                "pair": pair,
+            }
+        mu = self.result.system.body_mass
+        return {
+            "kind": whole.kind,
+            "mass_ratio": mu,
+            "mass_kg": mu * self.mass_kg,
+            "body_restitution": whole.body.restitution,
+            "gap_m": self.drop.gap,
+            "pair": pair,
+            "parameters": whole.body.as_dict(),
+        }
+
+    def _elastic_block(self) -> dict[str, Any]:
+        """An elastic body's contact: duration, peak force, disc (SI; none for a rigid body)."""
+        elastic = self.result.elastic
+        if elastic is None:
+            return {}
+        case = self.case
+        force = self.mass_kg * case.radius * case.wave_speed**2
+        return {
+            "body_contact": {
+                "duration_s": self._time(elastic.contact_time),
+                "first_contact_s": self._time(elastic.first_contact),
+                "main_contact_s": self._time(elastic.main_contact),
+                "peak_force_N": elastic.peak_force * force,
+                "disc_max_radius_m": elastic.disc_max * case.radius,
+                "impacts_N_s": elastic.impacts * self.mass_kg * case.scalings.velocity,
+                "peak_compression_m": None
+                if elastic.peak_compression is None
+                else elastic.peak_compression * case.radius,
+                "drift_m": elastic.drift * case.radius,
+            }
         }
 
     def comparisons(self) -> dict[str, Any]:

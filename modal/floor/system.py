@@ -44,7 +44,7 @@ from dataclasses import dataclass
 
 import numpy as np
 from twoball.modal.balls.description import ModalBall
-from twoball.modal.nonsmooth import ContactProblem
+from twoball.modal.nonsmooth import ContactProblem, MoreauJean
 
 from twoball._common.errors import NumericalError, ParameterError
 
@@ -169,6 +169,24 @@ class FloorSystem:
     def body_row(self) -> int:
         """Row of the body's constraint (B2) in G (after the floor rows)."""
         return self.floor.stop
+
+    @property
+    def body_rows(self) -> slice:
+        """Rows of the body's constraints in G: the one row (B2) here (an elastic ball
+        body has several: :mod:`twoball.modal.upper.system`)."""
+        return slice(self.body_row, self.body_row + 1)
+
+    def integrator(self, dt: float, **core: object) -> MoreauJean:
+        """The contact core's steps for this system (a compliant body overrides it)."""
+        return MoreauJean(self.problem, dt, **core)  # type: ignore[arg-type]
+
+    def body_apart(self, state: object, record: object, stepper: object) -> bool | None:
+        """Whether an elastic body has moved apart for good (None: the drop's own rule)."""
+        return None
+
+    def body_measures(self, stepper: object, result: object) -> tuple[object, dict] | None:
+        """An elastic body's own measures and energy books (None: a rigid body has none)."""
+        return None
 
     @property
     def body_mass(self) -> float:

@@ -14,6 +14,12 @@ from typing import Any
 
 import twoball
 from twoball._common.errors import ParameterError
+from twoball.cli.body_options import (
+    add_body_options,
+    elastic_body,
+    elastic_rows,
+    floor_alone_rows,
+)
 from twoball.cli.case_options import add_case_options, case_from_options
 from twoball.cli.console import (
     console,
@@ -239,7 +245,8 @@ def whole_body(args: argparse.Namespace) -> twoball.Body | None:
 
 def bounce_from_options(args: argparse.Namespace) -> twoball.BounceReport:
     """Call :func:`twoball.bounce` with the options."""
-    body = whole_body(args)
+    elastic = elastic_body(args)  # --body lumped|ball (None: the rigid body's options)
+    body = whole_body(args) if elastic is None else elastic
     case = drop_case(args)
     return twoball.bounce(
         case,
@@ -356,10 +363,15 @@ def whole_rows(report: twoball.BounceReport) -> list[tuple[str, str]]:
     """The rows of the whole bounce: the body, v1, v2, timing, e12, the baselines (SI)."""
     data = report.as_dict()
     body = data["body"]
-    rows = [
-        ("body: mu, mass [g]", f"{body['mass_ratio']:g}, {body['mass_kg'] * 1e3:.4g}"),
-        ("  contact radius a [mm]", f"{body['contact_radius_m'] * 1e3:.4g}"),
-        ("  Newton e12, gap [mm]", f"{body['restitution']:g}, {body['gap_m'] * 1e3:g}"),
+    if "kind" in body:  # an elastic body: its kind, restitution, contact and disc
+        rows = elastic_rows(data)
+    else:
+        rows = [
+            ("body: mu, mass [g]", f"{body['mass_ratio']:g}, {body['mass_kg'] * 1e3:.4g}"),
+            ("  contact radius a [mm]", f"{body['contact_radius_m'] * 1e3:.4g}"),
+            ("  Newton e12, gap [mm]", f"{body['restitution']:g}, {body['gap_m'] * 1e3:g}"),
+        ]
+    rows += [
         ("v1 [m/s], v1/|v0|", f"{number(data['v1_m_s'])}, {number(data['v1_ratio'])}"),
         ("v2 [m/s], v2/|v0|", f"{number(data['v2_m_s'])}, {number(data['v2_ratio'])}"),
         ("lift-off [ms] after the floor touch", number(data["t_liftoff_s"], 1e3)),
@@ -390,8 +402,36 @@ def _field_targets(args: argparse.Namespace) -> tuple[Any, Any, int]:
     return check_field_targets(args.export, args.render, args.frames)
 
 
+def _floor_alone(args: argparse.Namespace) -> int:
+    """``--floor-alone``: the elastic body alone on a rigid floor (:func:`twoball.floor_alone`)."""
+    for name in ("plot", "export", "render", "gap"):
+        if getattr(args, name, None) is not None:
+            raise ParameterError(name, "left out with --floor-alone", getattr(args, name))
+    body = elastic_body(args)
+    if body is None:
+        raise ParameterError("--floor-alone", "given with --body lumped or ball", True)
+    case = drop_case(args)
+    try:
+        if isinstance(body, str):
+            result = twoball.floor_alone(pair=args.pair, kind=body, case=case, dt=args.dt)
+        else:
+            result = twoball.floor_alone(body, case=case, dt=args.dt)
+    except ParameterError as error:
+        if error.name != "kind":
+            raise
+        raise ParameterError("--body", error.valid, error.got) from None
+    if args.json:
+        print_json(result.as_dict())
+    else:
+        title = "The body alone on a rigid floor"
+        console().print(key_value_table(title, floor_alone_rows(result)))
+    return 0
+
+
 def run(args: argparse.Namespace) -> int:
     """Run ``twoball bounce``."""
+    if getattr(args, "floor_alone", False):
+        return _floor_alone(args)
     from twoball._common.progress import QUICK, Reporter
     from twoball._plot import check_figure_path
 
@@ -444,6 +484,7 @@ def register(parser: argparse.ArgumentParser) -> None:
     add_contact_options(
         parser, "the whole bounce: mass ratio m1/m2 in (0, 100] of a body on the ball's top"
     )
+    add_body_options(parser)
     for flag, text in DROP_HELP.items():  # the shared case options, as the drop reads them
         _action(parser, flag).help = text
     preset = _action(parser, "--preset")
