@@ -429,7 +429,7 @@ def ball_model(
     BallModel
         A :class:`~twoball.verify.output.fields.CoupledModel` with a body.
     """
-    from twoball.modal.stepping import ROUTES
+    from twoball._common.choices import ROUTES
 
     field = field_mesh(MeshOptions()) if field is None else field
     for name in backends:
