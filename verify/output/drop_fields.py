@@ -58,9 +58,9 @@ def drop_frames(result: DropResult, count: int, case: Case) -> np.ndarray:
 
 
 def _states(result: DropResult, times_s: np.ndarray, case: Case) -> tuple[np.ndarray, ...]:
-    """Z and the modal amplitudes at ``times_s`` (linear between step ends), and the force."""
+    """Z, every coordinate of the ball at ``times_s`` (linear between step ends), the force."""
     q, f = _coordinates(result, times_s, case)
-    return q[:, 0], q[:, result.system.membrane], f
+    return q[:, result.system.centre], q[:, : result.system.ball.modes], f
 
 
 def _coordinates(
@@ -112,9 +112,9 @@ def drop_series(
     points = np.asarray(mesh.points, dtype=float)
     normal = points / np.linalg.norm(points, axis=1, keepdims=True)
     phi = np.arccos(np.clip(normal[:, 2], -1.0, 1.0))
-    shapes = ball.modes_at(phi)
-    z, a, force = _states(result, times_s, case)
-    u = a @ shapes.T  # (F, P), units R
+    shapes = ball.modes_at(phi)  # (P, K): the translation's column is 0
+    z, q, force = _states(result, times_s, case)
+    u = q @ shapes.T  # (F, P), units R
     radius = case.radius
     lift = (z - 1.0)[:, None, None] * np.array([0.0, 0.0, 1.0])[None, None, :]
     displacement = (lift + u[:, :, None] * normal[None, :, :]) * radius

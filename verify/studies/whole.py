@@ -368,14 +368,16 @@ def precursor(
     c, radius, v0, gamma = model.case.wave_speed, model.case.radius, model.v0, model.gamma
     r = run_drop(floor_system(shell, gamma), DropSettings(v0, gamma, dt, 1.5 * math.pi))
     tr = r.trajectory
-    top = tr.q[:, 0] + 1.0 + tr.q[:, 1:] @ cap
-    speed = tr.v[:, 0] + tr.v[:, 1:] @ cap
+    centre = shell.centre  # the cap's average holds the translation's entry 1
+    top = 1.0 + tr.q @ cap
+    speed = tr.v @ cap
     body = 2.0 - v0 * tr.t - 0.5 * gamma * tr.t**2  # free fall from touching
     body_speed = -v0 - gamma * tr.t
     ratios = []
     for t in times:
         k = int(np.searchsorted(tr.t, t))
-        ratios.append((t / c, float((speed[k] - body_speed[k]) / (tr.v[k, 0] - body_speed[k]))))
+        change = tr.v[k, centre] - body_speed[k]
+        ratios.append((t / c, float((speed[k] - body_speed[k]) / change)))
     depth = body - top
     k = int(np.argmax(depth))
     back = np.flatnonzero(depth[k:] <= 0.0)
