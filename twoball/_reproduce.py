@@ -77,7 +77,6 @@ def reproduce(
     workers: int | str | None = None,
     progress: Callable[[str, int], Callable[[int], None]] | None = None,
     command: str = "twoball reproduce",
-    **deprecated: Any,
 ) -> Reproduction:
     """Recompute the paper's figures, tables and thresholds beside ours, into ``out``.
 
@@ -97,9 +96,6 @@ def reproduce(
         ``update(done)`` (:meth:`twoball.Reporter.task`).
     command : str
         How the run is named in the report's header.
-    **deprecated
-        ``scheduler`` of version 0.2 (now ``workers``), with a
-        :class:`DeprecationWarning`.
 
     Returns
     -------
@@ -120,10 +116,7 @@ def reproduce(
     from twoball.verify.sweeps.parallel import Runner, check_workers
 
     check_progress(progress)
-    scheduler = deprecated.pop("scheduler", None)
-    for key in deprecated:
-        raise TypeError(f"twoball.reproduce() got an unexpected keyword argument {key!r}")
-    workers, scheduler = where("twoball.reproduce", workers, scheduler)
+    workers, scheduler = where("twoball.reproduce", workers)
     if only is not None and not isinstance(only, str):
         only = ",".join(str(part) for part in only)
     names = parse_only(only)
