@@ -133,6 +133,8 @@ def test_ranges_of_the_table() -> None:
     assert "0" in table.bad_values("--v0") and "-1" not in table.bad_values("--v0")
     assert table.with_option("plot", "--max-degree", "-1")[:2] == ["plot", "eigen"]
     assert "--level" not in table.with_option("plot", "--max-degree", "-1")
+    fem = table.with_option("bounce", "--elements", "-1")
+    assert fem == ["bounce", "--json", "--backend", "fem", "--elements", "-1"]  # no --modes
 
 
 def test_invalid_command_lines_exit_2_with_one_line(tmp_path: Path) -> None:

@@ -163,6 +163,12 @@ CONTEXT: dict[tuple[str, str], list[str]] = {
     ("bounce", "--frames"): ["--render", "{tmp}/x.gif"],
     ("sweep", "--gap"): ["--bounce", "--mass-ratio", "0.05"],  # refused before the --param
 }
+#: Options of the base line that do not apply in a context (the drop's --modes is the
+#: Legendre ball's: refused with --backend fem, where the mesh sets the resolution).
+LEFT_OUT: dict[tuple[str, str], tuple[str, ...]] = {
+    ("bounce", "--elements"): ("--modes",),
+    ("bounce", "--order"): ("--modes",),
+}
 #: Options the base line already gives (a bad value replaces the base's).
 PATH_OPTIONS = ("--out", "--plot", "--mesh-file", "--export", "--render")
 
@@ -200,6 +206,9 @@ def subparsers(parser: argparse.ArgumentParser) -> dict[str, argparse.ArgumentPa
 def with_option(command: str, flag: str, value: str) -> list[str]:
     """The base line of ``command`` with its context for ``flag`` and ``flag value``."""
     argv = list(BASE[command])
+    for left in LEFT_OUT.get((command, flag), ()):
+        i = argv.index(left)
+        del argv[i : i + 2]  # the flag and its value
     context = CONTEXT.get((command, flag), [])
     if command == "plot" and context and not context[0].startswith("-"):
         argv[1] = context[0]  # the plot kind
