@@ -10,6 +10,8 @@ ROOT = Path(__file__).resolve().parent.parent
 # Import twoball from this checkout: twoball/ sits at the repository root and maps
 # the parts (modal/, fem_membrane/, verify/) beside it under its own name.
 sys.path.insert(0, str(ROOT))
+# this folder too, for the gallery's order (gallery_order.py)
+sys.path.insert(0, str(ROOT / "docs"))
 
 from twoball._version import __version__  # noqa: E402
 
@@ -29,6 +31,9 @@ extensions = [
 
 exclude_patterns = ["_build", "Thumbs.db", ".DS_Store"]
 root_doc = "index"
+# Text stays as typed: no curly quotes, and ``--flag`` is not turned into an en dash
+# followed by the flag's name (the CLI reference shows every option as written).
+smartquotes = False
 
 # autodoc: document in source order; members come from ``:members:`` in api.rst.
 autodoc_member_order = "bysource"
@@ -77,25 +82,23 @@ sphinx_gallery_conf = {
     "download_all_examples": False,
     "abort_on_example_error": True,
     "remove_config_comments": True,
-    "within_subsection_order": "FileNameSortKey",
+    "within_subsection_order": "gallery_order.example_number",  # plot_10 after plot_9
     "min_reported_time": 10**9,  # no wall-clock times on the pages
     "write_computation_times": False,
 }
 
 
-def _verb_docstring(app, what, name, obj, options, lines) -> None:  # noqa: ANN001
-    """``twoball.verify`` is the package of the checks made callable: its page shows the verb.
+def _shell_figures(app) -> None:  # noqa: ANN001
+    """Draw docs/_static/shell/causality.png (docs/shell.rst) anew at every build."""
+    import importlib.util
 
-    autodoc reads a module's own docstring; the verb's is that of the function the
-    call runs, :func:`twoball._studies.verify`, placed here before numpydoc parses it.
-    """
-    if name == "twoball.verify":
-        import inspect
-
-        from twoball._studies import verify
-
-        lines[:] = inspect.getdoc(verify).splitlines()
+    spec = importlib.util.spec_from_file_location(
+        "make_shell_figures", Path(__file__).resolve().parent / "make_shell_figures.py"
+    )
+    module = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(module)
+    module.main()
 
 
 def setup(app):  # noqa: ANN001, ANN201
-    app.connect("autodoc-process-docstring", _verb_docstring, priority=100)
+    app.connect("builder-inited", _shell_figures)

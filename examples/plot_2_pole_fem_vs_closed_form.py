@@ -10,9 +10,10 @@ below differ only by the discretisation error of the finite elements.
 """
 
 # %%
-# :func:`twoball.plot` solves the case with both backends on the mesh of a
-# :class:`twoball.MeshOptions` and writes the figure; its result carries each
-# backend's lift-off report (SI).  The pictures of this example go to a
+# :func:`twoball.plot` solves the case with both backends and writes the
+# figure: the finite elements are a :class:`twoball.Superposition` (modal
+# superposition) on the mesh of a :class:`twoball.MeshOptions`; its result
+# carries each backend's lift-off report (SI).  The pictures of this example go to a
 # scratch folder.
 import shutil
 import tempfile
@@ -24,10 +25,10 @@ import matplotlib.pyplot as plt
 import twoball
 
 case = twoball.Case.preset("basketball")
-mesh = twoball.MeshOptions("sphere", level=3, order=2)
+solver = twoball.Superposition(twoball.MeshOptions("sphere", level=3, order=2))
 folder = Path(tempfile.mkdtemp())
 figure = twoball.PlotOptions(dpi=150)  # resolution of the PNG [dots per inch]
-result = twoball.plot("pole", folder / "pole.png", case, mesh=mesh, figure=figure)
+result = twoball.plot("pole", folder / "pole.png", case, solver=solver, figure=figure)
 
 for name, report in result.reports.items():
     print(

@@ -12,8 +12,9 @@ angle; the narrow panel on the right: their difference [µm].
 
 # %%
 # :func:`twoball.plot` with ``"waterfall"`` draws the figure into a file (any
-# format matplotlib writes); :class:`twoball.PlotOptions` sets the number of
-# instants and the resolution of a raster file.
+# format matplotlib writes); the finite elements are a
+# :class:`twoball.Superposition` on its mesh, and :class:`twoball.PlotOptions`
+# sets the number of instants and the resolution of a raster file.
 import shutil
 import tempfile
 from pathlib import Path
@@ -28,7 +29,7 @@ result = twoball.plot(
     "waterfall",
     folder / "waterfall.png",
     twoball.Case.preset("basketball"),
-    mesh=twoball.MeshOptions("sphere", level=3, order=2),
+    solver=twoball.Superposition(twoball.MeshOptions("sphere", level=3, order=2)),
     figure=twoball.PlotOptions(instants=24, dpi=150),
 )
 for label, text in result.rows:

@@ -11,7 +11,8 @@ the backends at lift-off is then plotted from the file, not from memory.
 # %%
 # Six frames evenly spaced over the modelled window plus the lift-off instant,
 # on the level-2 P2 icosphere (a quick mesh: its lift-off differs from the
-# closed form by about 0.2 %).  Every point-data name ends in its SI unit.
+# closed form by about 0.2 %), given as the mesh of the finite elements'
+# solver, :class:`twoball.Superposition`.  Every point-data name ends in its SI unit.
 import json
 import shutil
 import tempfile
@@ -25,9 +26,8 @@ import twoball
 
 case = twoball.Case.preset("basketball")
 folder = Path(tempfile.mkdtemp())
-written = twoball.export(
-    folder / "series.xdmf", case, mesh=twoball.MeshOptions("sphere", level=2), frames=6
-)
+solver = twoball.Superposition(twoball.MeshOptions("sphere", level=2))
+written = twoball.export(folder / "series.xdmf", case, solver=solver, frames=6)
 print("written:", ", ".join(f"{p.name} ({p.stat().st_size} bytes)" for p in written.files))
 print(f"{written.nodes} nodes, {written.cells} cells of type {written.cell_type}")
 print("frames [ms]:", ", ".join(f"{1e3 * t:.3f}" for t in written.times_s))

@@ -14,9 +14,10 @@ least, its geometric error being O(h^4) like P2's (see the method page).
 """
 
 # %%
-# :func:`twoball.fem.solve` takes the mesh as a :class:`twoball.MeshOptions`
-# and the eigen route as a :class:`twoball.Stepping`; ``extra["dofs"]`` of its
-# report is the number of unknowns.
+# :func:`twoball.liftoff` with the solver :class:`twoball.Superposition`
+# (modal superposition on finite elements) carries the mesh as a
+# :class:`twoball.MeshOptions` and the eigen route (``route="krylov"``);
+# ``extra["dofs"]`` of its report is the number of unknowns.
 import time
 
 import matplotlib.pyplot as plt
@@ -25,7 +26,6 @@ import twoball
 
 case = twoball.Case.preset("basketball")
 exact = twoball.liftoff(case)  # Legendre series, N = 30, Lanczos filter
-krylov = twoball.Stepping(route="krylov")
 LEVELS = {1: (3, 4, 5), 2: (2, 3, 4), 3: (2, 3), 4: (1, 2, 3)}
 
 rows = {}
@@ -34,7 +34,7 @@ for order, levels in LEVELS.items():
     for level in levels:
         mesh = twoball.MeshOptions("sphere", level=level, order=order)
         start = time.process_time()
-        report = twoball.fem.solve(case, mesh=mesh, stepping=krylov)
+        report = twoball.liftoff(case, solver=twoball.Superposition(mesh, route="krylov"))
         seconds = time.process_time() - start
         t_error = abs(report.t_liftoff_s / exact.t_liftoff_s - 1.0)
         v_error = abs(report.v_liftoff_m_s / exact.v_liftoff_m_s - 1.0)

@@ -39,6 +39,11 @@ def drop_elements(order: int) -> int:
     lower hemisphere) are the same 96 whatever the order, so the contact is
     resolved alike and an order given explicitly changes the polynomial, not
     the floor.
+
+    Examples
+    --------
+    >>> [drop_elements(p) for p in (1, 2, 3, 4)]
+    [192, 96, 64, 48]
     """
     return -(-NODE_INTERVALS // int(order))
 
@@ -62,7 +67,12 @@ class FEBall:
     >>> twoball.FEBall().label
     'axisym 96 P2'
     >>> twoball.FEBall(twoball.MeshOptions("axisym", elements=64, order=3)).size(None)
-    (193, 96)
+    (192, 96)
+    >>> from twoball.modal.floor.bounce import bounce_problem
+    >>> case = bounce_problem().case  # the basketball as it drops (pressure, gas, operator)
+    >>> ball = twoball.FEBall().describe(case)
+    >>> ball.modes, ball.points, ball.centre  # the centre's height, 192 eigenvectors; 96 points
+    (193, 96, 0)
     """
 
     mesh: Any = None
@@ -88,9 +98,11 @@ class FEBall:
         return self.mesh.kind == "axisym"
 
     def size(self, case: Case | None = None) -> tuple[int, int] | None:
-        """Coordinates (the centre and the line's unknowns) and floor points of the drop.
+        """The drop's size as its cost model counts it: unknowns and floor points.
 
-        None on a sphere mesh (its size is known once it is built).
+        ``elements * order`` (the line's nodes but one, the degree-1 vector the
+        centre replaces; :meth:`describe` adds the centre) and half of them on
+        the floor.  None on a sphere mesh (its size is known once it is built).
         """
         if self.mesh.kind != "axisym":
             return None

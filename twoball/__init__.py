@@ -17,7 +17,8 @@ Public names (``twoball.__all__``): the verbs :func:`liftoff`, :func:`bounce`
 (every backend against the closed form), :func:`reproduce`, :func:`icm`,
 :func:`table1`, :func:`report`, ``fem.eigen``; the solvers :class:`ClosedForm`,
 :class:`Superposition`, :class:`GeneralizedAlpha`, :class:`MoreauJean`; the
-balls :class:`Ball` (the protocol), :class:`LegendreBall`, :class:`FEBall`; the
+balls :class:`Ball` (the protocol), :class:`LegendreBall`, :class:`FEBall`, the shell's
+:class:`ShellBall` and :class:`FEShellBall` with its :class:`Wall`; the
 case and the option and model objects :class:`Case`, :class:`MeshOptions`,
 :class:`Body`, :class:`Membrane`, :class:`ModalRatio`, :class:`Rayleigh`,
 :class:`Drop`, :class:`RenderOptions`, :class:`PlotOptions`; the results;
@@ -59,6 +60,9 @@ _NAMES: dict[str, str | tuple[str, str]] = {
     "ModalBall": "twoball.modal.balls.description",
     "LegendreBall": "twoball.modal.balls.membrane",
     "FEBall": "twoball.fem_membrane.ball",
+    "Wall": "twoball.modal.balls.shell",
+    "ShellBall": "twoball.modal.balls.shell",
+    "FEShellBall": "twoball.fem_shell.ball",
     "drop_elements": "twoball.fem_membrane.ball",
     "ClosedForm": "twoball._solvers",
     "Superposition": "twoball._solvers",

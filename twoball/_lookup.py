@@ -15,6 +15,7 @@ __getattr__, __dir__ = attach(
     {
         "flexural_rigidity": "twoball.modal.stiffness",
         "pair": "twoball.modal.pairs",
+        "MEASURED": "twoball.modal.presets",
         "parse_times": "twoball.verify.output.fields",
         "make_grid": "twoball.verify.sweeps.sweeps",
     },

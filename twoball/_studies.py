@@ -1,4 +1,4 @@
-"""``twoball.converge`` and ``twoball.verify``: refinement studies and the verification report.
+"""``twoball.converge`` and ``twoball.check``: refinement studies and the verification report.
 
 Both return their result object (``as_dict()`` for JSON) and, given ``out=``,
 write a report directory (report.md, results.json, CSV tables, PNG plots).

@@ -1,4 +1,5 @@
-"""Finite elements on their own: ``twoball.fem.eigen``, the membrane's spectrum on a mesh.
+"""Finite elements on their own: ``twoball.fem.eigen``, the membrane's spectrum on a mesh, and
+``twoball.fem.shell_eigen``, the thin shell's (closed form or the meridian's elements).
 
 The lift-off on finite elements is :func:`twoball.liftoff` with the solvers
 :class:`~twoball.Superposition` and :class:`~twoball.GeneralizedAlpha`.
@@ -15,7 +16,7 @@ from twoball._common.progress import Step, check_progress, silent
 from twoball._common.watch import Watch
 from twoball.fem_membrane.options import MeshOptions
 
-__all__ = ["eigen"]
+__all__ = ["eigen", "shell_eigen"]
 
 
 @timed
@@ -97,3 +98,152 @@ def eigen(
         membrane=membrane,
         monitor=Watch(),
     )
+
+
+#: Highest degree the shell's eigen lists by default.
+SHELL_DEGREES = 10
+
+
+def shell_eigen(
+    *,
+    poisson: float = 0.5,
+    thickness_ratio: float = 0.0,
+    prestress_ratio: float = 0.0,
+    gas: float | str | None = None,
+    case: Any = None,
+    wall: Any = None,
+    backend: str = "legendre",
+    count: int = SHELL_DEGREES,
+    elements: int | None = None,
+    order: int = 2,
+    progress: Step | None = None,
+) -> list[dict[str, Any]]:
+    """The thin shell's spectrum, degrees 0..count, both branches, beside the closed form.
+
+    Dimensionless (``poisson``, ``thickness_ratio`` h/R, ``prestress_ratio`` p =
+    N0/C, ``gas`` g = 3 kappa P_abs R / C), or physical: a ``case`` with its
+    excess pressure (R, P, the mass through c, the gas law) and a
+    :class:`~twoball.Wall` (default the case's preset's); then every row also has
+    ``omega_rad_s`` and ``frequency_hz``.
+
+    Parameters
+    ----------
+    poisson, thickness_ratio, prestress_ratio : float
+        The dimensionless shell (left out with ``case``).
+    gas : float or str, optional
+        The dimensionless g (default 0); with ``case`` the gas law (``none``,
+        ``isothermal``, ``adiabatic``; default the case's).
+    case : Case, optional
+        Physical inputs (its ``pressure`` must be known).
+    wall : Wall, optional
+        With ``case``: the wall (default the case's preset's).
+    backend : {"legendre", "fem"}
+        The closed form, or the meridian's finite elements.
+    count : int
+        Highest degree listed, >= 1 (``2 count + 1`` rows).
+    elements, order : int
+        With ``backend="fem"``: meridian elements (default 64) and v's Lagrange order.
+    progress : callable, optional
+        Told what is solved.
+
+    Returns
+    -------
+    list of dict
+        One row per mode: ``degree``, ``branch`` (1 lower, 2 upper; n = 0 has one
+        row), ``value`` Omega = omega R sqrt(rho_s / C), ``exact`` (the closed
+        form), ``relative_error``; physical inputs add ``omega_rad_s`` and
+        ``frequency_hz`` (of ``value``).
+
+    Examples
+    --------
+    >>> import twoball
+    >>> rows = twoball.fem.shell_eigen(poisson=0.3, count=3)
+    >>> [(r["degree"], r["branch"], round(r["value"], 4)) for r in rows[3:5]]
+    [(2, 1, 0.7009), (2, 2, 2.7219)]
+    >>> rows[1]["value"]  # the rigid translation
+    0.0
+    """
+    import numpy as np
+
+    from twoball.modal.shell.modes import shell_modes
+    from twoball.modal.shell.parameters import ShellParameters
+
+    check_progress(progress)
+    if isinstance(count, bool) or not isinstance(count, Integral) or not 1 <= count <= 400:
+        raise ParameterError("count", "an integer in [1, 400] (the highest degree)", count)
+    if backend not in ("legendre", "fem"):
+        raise ParameterError("backend", "one of legendre, fem", backend)
+    time_unit = None
+    if case is not None:
+        from twoball.modal.balls.shell import Wall, _wall_of
+
+        given = {"thickness_ratio": thickness_ratio, "prestress_ratio": prestress_ratio}
+        for name, value in given.items():
+            if value:
+                raise ParameterError(name, "left out with a case (the physical inputs)", value)
+        if wall is not None and not isinstance(wall, Wall):
+            raise ParameterError("wall", "a twoball.Wall", type(wall).__name__)
+        chosen = _wall_of(wall, case)
+        if gas is not None and not isinstance(gas, str):
+            raise ParameterError("gas", "a gas law with a case: none, isothermal, adiabatic", gas)
+        parameters = chosen.parameters(case, gas)
+        time_unit = case.radius / chosen.extensional_speed(case)
+    else:
+        if wall is not None:
+            raise ParameterError("wall", "given with a case (the physical inputs)", wall)
+        from twoball._common.errors import real_number
+
+        p = real_number("prestress_ratio", prestress_ratio, "a number >= 0")
+        if isinstance(gas, str):
+            raise ParameterError("gas", "the dimensionless g >= 0 without a case", gas)
+        parameters = ShellParameters.from_ratios(
+            poisson, thickness_ratio, None if p == 0.0 else 1.0 / p, gas=gas or 0.0
+        )
+        if p < 0.0:
+            raise ParameterError("prestress_ratio", "a number >= 0", prestress_ratio)
+    exact = shell_modes(parameters, count)
+    values = np.array(exact.omega, dtype=float)
+    if backend == "fem":
+        from twoball.fem_shell.ball import DEFAULT_SHELL_ELEMENTS, FEShellBall
+        from twoball.fem_shell.modes import fem_shell_modes
+
+        mesh = FEShellBall(elements=elements, order=order)  # validates elements and order
+        e = DEFAULT_SHELL_ELEMENTS if elements is None else mesh.mesh_elements
+        (progress or silent)(f"shell eigenpairs on {e} elements, v P{order}")
+        fe = fem_shell_modes(parameters, e, v_order=order)
+        degree, _ = fe.degrees
+        degree = np.asarray(degree).copy()
+        degree[fe.translation] = 1
+        order_ = np.argsort(fe.omega, kind="stable")
+        values = np.full(exact.count, np.nan)
+        for k in range(exact.count):
+            n, b = int(exact.degree[k]), int(exact.branch[k])
+            if n == 1 and b == 1:
+                values[k] = 0.0
+                continue
+            same = [j for j in order_ if degree[j] == n and j != fe.translation]
+            rank = b - 1 if n == 1 else b  # degree 1's lower branch is the translation
+            if len(same) >= rank:
+                values[k] = float(fe.omega[same[rank - 1]])
+    else:
+        (progress or silent)(f"shell spectrum, degrees 0..{count}")
+    rows: list[dict[str, Any]] = []
+    for k in range(exact.count):
+        value, reference = float(values[k]), float(exact.omega[k])
+        if exact.degree[k] == 1 and exact.branch[k] == 1:
+            value = reference = 0.0
+        row: dict[str, Any] = {
+            "degree": int(exact.degree[k]),
+            "branch": int(exact.branch[k]),
+            "value": None if np.isnan(value) else value,
+            "exact": reference,
+            "relative_error": None
+            if np.isnan(value)
+            else (0.0 if reference == 0.0 else abs(value - reference) / reference),
+        }
+        if time_unit is not None:
+            omega = None if np.isnan(value) else value / time_unit
+            row["omega_rad_s"] = omega
+            row["frequency_hz"] = None if omega is None else omega / (2.0 * np.pi)
+        rows.append(row)
+    return rows

@@ -5,8 +5,10 @@
 :mod:`~twoball.modal.balls.description` is what it builds
 (:class:`~twoball.modal.balls.description.ModalBall`: modes, spectrum, damping,
 vertical rows at the floor points, the top and its caps, the centre);
-:mod:`~twoball.modal.balls.membrane` is the membrane on its Legendre modes.  The
-finite-element membrane is :mod:`twoball.fem_membrane.ball`.  Names load on
+:mod:`~twoball.modal.balls.membrane` is the membrane on its Legendre modes and
+:mod:`~twoball.modal.balls.shell` the thin shell on its closed-form modes.  The
+finite-element membrane is :mod:`twoball.fem_membrane.ball`, the finite-element
+shell :mod:`twoball.fem_shell.ball`.  Names load on
 first use.
 """
 
@@ -22,6 +24,9 @@ _NAMES = {
     "legendre_ball": "twoball.modal.balls.membrane",
     "mode_decay": "twoball.modal.balls.membrane",
     "mode_spectrum": "twoball.modal.balls.membrane",
+    "Wall": "twoball.modal.balls.shell",
+    "ShellBall": "twoball.modal.balls.shell",
+    "WALLS": "twoball.modal.balls.shell",
 }
 __getattr__, __dir__ = attach(__name__, _NAMES)
 __all__ = sorted(_NAMES)

@@ -90,6 +90,18 @@ class ModalBall:
         ``averager(theta) -> (K,)``: the vertical displacement of each coordinate
         averaged over the polar cap of half-angle theta around the north pole
         (:meth:`cap_average`).
+
+    Examples
+    --------
+    A rigid ball of unit mass: its translation alone, one floor point, the pole.
+
+    >>> import math, numpy as np
+    >>> from twoball.modal.balls.description import ModalBall
+    >>> one = np.ones(1)
+    >>> ball = ModalBall(one, np.zeros(1), np.zeros(1), np.zeros(1), 0,
+    ...     np.array([math.pi]), one[None, :], one, averager=lambda theta: one)
+    >>> ball.modes, ball.points, ball.stable, ball.floor_reach()
+    (1, 1, True, array([0.]))
     """
 
     masses: np.ndarray

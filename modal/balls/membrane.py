@@ -278,7 +278,11 @@ class LegendreBall:
         return f"legendre N = {self.degree}"
 
     def size(self, case: Case | None = None) -> tuple[int, int]:
-        """Coordinates (Z and the modes: N + 1) and floor points (about N / 2) of the drop."""
+        """The drop's size as its cost model counts it: N modes and N / 2 floor points.
+
+        :meth:`describe` has N + 1 coordinates (the centre and n = 0, 2, ..., N) and
+        N / 2 + 1 floor points (the Gauss-Radau nodes of the lower hemisphere).
+        """
         return self.degree, self.degree // 2
 
     def mass(self, case: Case) -> float:

@@ -43,6 +43,15 @@ class Ball(Protocol):
     A ball may also have ``summary(case) -> dict`` (its physics for the JSON's
     ``model`` block) and ``dense`` (its build solves a dense eigenproblem: for
     the cost estimate).
+
+    Examples
+    --------
+    >>> import twoball
+    >>> isinstance(twoball.LegendreBall(64), twoball.Ball), isinstance(object(), twoball.Ball)
+    (True, False)
+    >>> solver = twoball.MoreauJean(twoball.LegendreBall(64))  # any Ball steps the same way
+    >>> round(twoball.bounce(solver=solver).e2, 2)
+    0.88
     """
 
     kind: str

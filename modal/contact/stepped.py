@@ -41,6 +41,10 @@ __all__ = ["DEFAULT_DT", "ExactMotion", "SteppedMotion", "series_ball", "stepped
 
 #: Time step of the body's contact in units of 1/c (the drop's step).
 DEFAULT_DT = 0.005
+#: Arrivals of the body slower than this (units R c) are held, not bounced: with
+#: Newton's e > 0 the bounces of a body settling on the cap shrink without end (a
+#: Zeno chain); the event-driven solver ends it at the same speed.
+ZENO_VELOCITY = 1e-6
 #: The contact core's units against the contact system's: the membrane's mass is
 #: ``m2 = 4 pi rho R^2``, so impulses and energies in units of m2 are 4 pi times
 #: fewer than in units of rho R^2 (:mod:`twoball.modal.contact.system`).
@@ -196,7 +200,8 @@ def stepped_contact(
     body = BodyOnTop(
         float(mass_ratio), np.asarray(contact, dtype=float), theta or 0.0, float(restitution)
     )
-    run = body_on_start(ball, q0, gamma, dt, body, t_end=t_end, monitor=monitor)
+    zeno = ZENO_VELOCITY if restitution > 0.0 else None
+    run = body_on_start(ball, q0, gamma, dt, body, t_end=t_end, monitor=monitor, zeno_velocity=zeno)
     system, tr = run.system, run.trajectory
     k, row, j = ball.modes, system.body_row, system.body_coordinate
     q, v = tr.q[:, :k], tr.v[:, :k]

@@ -174,7 +174,7 @@ def bounce_problem(
     whole = resolve_body(case, body, chosen, drop)
     check_drop_case(case, drop)
     given_v0_note = case.v0_note
-    inputs = resolve_drop(case, drop, damping)
+    inputs = resolve_drop(case, drop, damping, membrane_ball=ball.kind == "membrane")
     from twoball.modal.guards import case_warnings
 
     # inputs far from any ball first (unit slips), then the model's

@@ -95,7 +95,9 @@ class DropModel:
         return self.case.gamma
 
 
-def resolve_drop(case: Case, drop: Drop, damping: Any = None) -> DropModel:
+def resolve_drop(
+    case: Case, drop: Drop, damping: Any = None, *, membrane_ball: bool = True
+) -> DropModel:
     """The drop of ``case`` with ``drop``'s options and the damping law ``damping``.
 
     The case as it drops: the drop's impact speed, the excess pressure (the
@@ -104,7 +106,9 @@ def resolve_drop(case: Case, drop: Drop, damping: Any = None) -> DropModel:
     pressurised one: with the centre free, degree 1 must be a free translation)
     and the damping law (``damping``, else the case's).  Its
     :attr:`~twoball.Case.stiffness` and :attr:`~twoball.Case.damping_law` are
-    the spectrum and the law the solvers take.
+    the spectrum and the law the solvers take.  ``membrane_ball=False`` (a shell,
+    a solid: their own walls hold the breathing mode) leaves the membrane
+    operator out of it: the case keeps the paper's, and a drop without gas runs.
 
     Raises
     ------
@@ -119,6 +123,11 @@ def resolve_drop(case: Case, drop: Drop, damping: Any = None) -> DropModel:
     gas = drop.gas or (case.gas if case.gas != "none" else "adiabatic")
     # a free centre needs the operator whose degree 1 is a free translation
     membrane = Membrane("pressurised") if drop.membrane is None else Membrane.of(drop.membrane)
+    if not membrane_ball:
+        if drop.membrane is not None:
+            valid = "left out with a ball that is not a membrane (no membrane operator)"
+            raise ParameterError("membrane", valid, drop.membrane.kind)
+        membrane = Membrane("paper")  # not the ball's physics: no operator to hold it
     law = _law(damping)
     ball = replace(
         case,
@@ -130,7 +139,7 @@ def resolve_drop(case: Case, drop: Drop, damping: Any = None) -> DropModel:
         phi_a=None,
         phi_a_source=None,
     )
-    if gas == "none":
+    if gas == "none" and membrane_ball:
         warnings.append(
             "no gas on the paper's membrane: the breathing mode has omega_0 = 0, so the "
             "floor's push shrinks the mean radius for good and the ball hardly bounces "

@@ -7,18 +7,12 @@ from __future__ import annotations
 
 import math
 from dataclasses import asdict, dataclass
-from numbers import Integral
 from typing import Any
 
 from twoball._common.choices import GAS_MODELS as GAS_LAWS
 from twoball._common.errors import ParameterError, real_number
 
-__all__ = ["DEFAULT_MODES", "GAS_LAWS", "Drop"]
-
-#: Legendre degree N of the drop on the closed-form modes (floor points at its ~N/2
-#: Gauss-Radau nodes on the lower hemisphere).
-DEFAULT_MODES = 192
-MODES_RANGE = (8, 2000)
+__all__ = ["GAS_LAWS", "Drop"]
 #: Largest drop height H [m] (as ``twoball icm`` takes, :data:`twoball.modal.icm.inputs.UPPER`).
 DROP_HEIGHT_MAX = 1e6
 #: Largest gap Delta x [m] between the body and the ball's top at the floor impact.
@@ -44,10 +38,6 @@ class Drop:
     floor_restitution : float
         Newton's coefficient e in [0, 1] at every floor point (default 0: the
         floor stops the arriving membrane; 1 keeps the mechanical energy).
-    modes : int, optional
-        Legendre degree N of the closed-form backend (default
-        :data:`DEFAULT_MODES`; the floor points are its Gauss-Radau nodes on the
-        lower hemisphere, about N/2); the finite elements take their mesh instead.
     membrane : Membrane or {"paper", "pressurised"}, optional
         The membrane operator of the drop (:class:`~twoball.Membrane`); default
         ``pressurised``, the operator whose degree 1 is a free translation, as
@@ -77,7 +67,6 @@ class Drop:
     drop_height: float | None = None
     gas: str | None = None
     floor_restitution: float = 0.0
-    modes: int | None = None
     membrane: Any = None
     gap: float = 0.0
 
@@ -87,7 +76,6 @@ class Drop:
         + "] [m] of the lowest point above the floor",
         "gas": "one of " + ", ".join(GAS_LAWS),
         "floor_restitution": "in [0, 1]",
-        "modes": f"an integer in [{MODES_RANGE[0]}, {MODES_RANGE[1]}]",
         "gap": f"a gap in [0, {GAP_MAX:g}] [m] between the body and the ball's top",
     }
 
@@ -104,15 +92,6 @@ class Drop:
         if not 0.0 <= e <= 1.0:
             raise ParameterError("floor_restitution", valid, self.floor_restitution)
         object.__setattr__(self, "floor_restitution", e)
-        if self.modes is not None:
-            low, high = MODES_RANGE
-            if (
-                isinstance(self.modes, bool)
-                or not isinstance(self.modes, Integral)
-                or not low <= int(self.modes) <= high
-            ):
-                raise ParameterError("modes", self.VALID["modes"], self.modes)
-            object.__setattr__(self, "modes", int(self.modes))
         gap = real_number("gap", self.gap, self.VALID["gap"])
         if not (math.isfinite(gap) and 0.0 <= gap <= GAP_MAX):
             raise ParameterError("gap", self.VALID["gap"], self.gap)

@@ -177,6 +177,7 @@ def body_on_start(
     *,
     t_end: float = DEFAULT_T_END,
     monitor: Any = None,
+    zeno_velocity: float | None = None,
 ) -> BodyLiftoff:
     """A rigid body resting on the ball's top, the ball released from ``q0`` at rest, no floor.
 
@@ -186,6 +187,8 @@ def body_on_start(
     to the window.  On an anchored membrane (degree 1 the membrane's own mode
     about a centre that does not move) this is the finite-mass model of
     :mod:`twoball.modal.contact`, reproduced to O(dt) at the impacts.
+    ``zeno_velocity``: arrivals slower than it are held, not impacts (ends the
+    endless chain of ever smaller bounces of ``e > 0``; the core's ``v_Z``).
     """
     from dataclasses import replace
 
@@ -199,9 +202,8 @@ def body_on_start(
     q = np.zeros(system.problem.dofs)
     q[: ball.modes] = q0
     q[system.body_coordinate] = 1.0 + cap @ q0
-    tr = MoreauJean(system.problem, dt).run(
-        q, np.zeros(q.size), t_end, label="the body on the ball", monitor=monitor
-    )
+    stepper = MoreauJean(system.problem, dt, zeno_velocity=zeno_velocity)
+    tr = stepper.run(q, np.zeros(q.size), t_end, label="the body on the ball", monitor=monitor)
     intervals = contact_intervals(tr.t, tr.impulse[:, system.body_row], dt)
     if not intervals or intervals[-1].last + 1 >= tr.t.size - 1:
         return BodyLiftoff(False, None, None, len(intervals), system, tr)

@@ -10,6 +10,7 @@ import tomllib
 from tests import ROOT
 
 PARTS = {"twoball": "twoball", "modal": "twoball.modal", "fem_membrane": "twoball.fem_membrane"}
+PARTS |= {"fem_shell": "twoball.fem_shell", "fem_solid": "twoball.fem_solid"}
 PARTS["verify"] = "twoball.verify"
 
 
@@ -54,6 +55,8 @@ def test_console_script_points_into_twoball():
 MIRRORS = {
     "modal": ROOT / "modal",
     "fem_membrane": ROOT / "fem_membrane",
+    "fem_shell": ROOT / "fem_shell",
+    "fem_solid": ROOT / "fem_solid",
     "verify": ROOT / "verify",
     "_common": ROOT / "twoball" / "_common",
     "cli": ROOT / "twoball" / "cli",

@@ -92,8 +92,6 @@ def add_drop_options(parser: argparse.ArgumentParser) -> None:
 
 #: Help of shared case options where the drop reads them differently.
 DROP_HELP = {
-    "--modes": "Legendre degree N of the drop (default 192; floor points at its Gauss-Radau "
-    "nodes on the lower hemisphere)",
     "--membrane": "membrane operator: pressurised ((n-1)(n+2), default: degree 1 a free "
     "translation) or paper (n(n+1) for n != 1)",
     "--phi-a": "refused: the contact angle is an output of the drop (phi_a_max_rad)",
@@ -102,6 +100,16 @@ DROP_HELP = {
     "--energy": "refused: both bodies fall at |v0| in the whole bounce (ball only)",
     "--restitution": "Newton's e12 in [0, 1] at the body's impacts on the ball (default 0)",
     "--contact-radius": "radius a [m] of the cap where the body touches (default R/10)",
+    "--youngs-modulus": "wall Young's modulus E [Pa]: the membrane's bending, or with --ball "
+    "shell the shell's wall (with --thickness and --poisson)",
+    "--thickness": "wall thickness h [m] (with --youngs-modulus)",
+    "--poisson": "Poisson's ratio of the wall (default 0.5, rubber)",
+    "--modes": "Legendre degree N of the drop (default 192; --ball shell: 128, 2N + 1 modes of "
+    "both branches); floor points at its Gauss-Radau nodes on the lower hemisphere",
+    "--elements": "axisymmetric line elements (default 192 / order: 96 at P2); --ball shell: "
+    "the meridian's elements (default 64)",
+    "--order": "element order 1, 2, 3 or 4 (default 2); --ball shell: the Lagrange order 1, 2 "
+    "or 3 of the meridional displacement",
 }
 
 
@@ -138,6 +146,12 @@ def drop_case(args: argparse.Namespace) -> twoball.Case:
         if getattr(args, name, None) not in (None, default):
             valid = "left out for the drop (no lift-off criteria)"
             raise ParameterError(name, valid, getattr(args, name))
+    from twoball.cli.shell import check_ball_kind, refuse_wall_flags, shell_case_args
+
+    if check_ball_kind(args) == "shell":
+        args = shell_case_args(args)  # the SI wall flags define the wall, not a bending
+    else:
+        refuse_wall_flags(args)
     case_args = copy(args)
     case_args.gas = None
     case_args.modes = None
@@ -160,8 +174,13 @@ def drop_options(args: argparse.Namespace) -> twoball.Drop:
 
 
 def drop_ball(args: argparse.Namespace) -> Any:
-    """The lower ball of ``--backend``: ``--modes`` on Legendre modes, the mesh options on
-    finite elements (the axisymmetric line, 192 / order elements by default)."""
+    """The lower ball of ``--ball`` and ``--backend``: ``--modes`` on Legendre modes, the mesh
+    options on finite elements (the axisymmetric line, 192 / order elements by default);
+    ``--ball shell``: :func:`twoball.cli.shell.shell_ball`."""
+    from twoball.cli.shell import check_ball_kind, shell_ball
+
+    if check_ball_kind(args) == "shell":
+        return shell_ball(args)
     fields = {n: getattr(args, n) for n in ("elements", "order") if getattr(args, n) is not None}
     if args.backend == "legendre":
         if args.mesh is not None or fields:
@@ -219,6 +238,30 @@ def _damping_text(law: dict[str, Any]) -> str:
     return f"rayleigh, alpha {law['alpha_1_s']:.4g} 1/s, beta {law['beta_s']:.4g} s{fitted}"
 
 
+def _wall_rows(model: dict[str, Any]) -> list[tuple[str, str]]:
+    """The shell's wall (no rows for a membrane)."""
+    wall = model.get("wall")
+    if not wall:
+        return []
+    youngs = wall["youngs_modulus_Pa"]
+    return [
+        (
+            "wall: E [MPa], h [mm], nu",
+            f"{'-' if youngs is None else f'{youngs / 1e6:.4g}'}, "
+            f"{wall['thickness_m'] * 1e3:.4g}, {wall['poisson']:g}",
+        ),
+        (
+            "  C/N0, h/R",
+            f"{wall['wall_stiffness_ratio']:.4g}, {wall['thickness_ratio']:.4g}",
+        ),
+        (
+            "  pi R/c_e, pi/c [ms]",
+            f"{model['in_plane_arrival_s'] * 1e3:.4g}, "
+            f"{model['pressure_wave_arrival_s'] * 1e3:.4g}",
+        ),
+    ]
+
+
 def bounce_rows(report: twoball.BounceReport) -> list[tuple[str, str]]:
     """The human-readable rows of a drop (SI)."""
     case, model = report.case, report.model
@@ -228,8 +271,9 @@ def bounce_rows(report: twoball.BounceReport) -> list[tuple[str, str]]:
         ("c [1/s]", f"{case.wave_speed:g}"),
         ("|v0| [m/s]", f"{case.v0:g}"),
         ("P [Pa], m2 [kg]", f"{report.pressure:g}, {report.mass_kg:.4g}"),
-        ("membrane, gas", f"{model['membrane']}, {model['gas']}"),
+        ("membrane, gas", f"{model['membrane'] or model.get('ball')}, {model['gas']}"),
         ("omega_0^2 (units c^2)", f"{model['omega0_squared']:.4g}"),
+        *_wall_rows(model),
         ("damping", _damping_text(model["damping"])),
         ("resolution", f"{model['resolution']} ({model['floor_points']} floor points)"),
         ("dt [s]", f"{model['dt_s']:.4g}"),
@@ -350,11 +394,15 @@ def run(args: argparse.Namespace) -> int:
 
 def register(parser: argparse.ArgumentParser) -> None:
     """The options of ``twoball bounce``."""
+    from twoball.cli.shell import add_ball_option, add_wall_options
+
     parser.add_argument(
         "--backend", default="legendre", help="legendre (Legendre modes, default) or fem"
     )
+    add_ball_option(parser)
     add_case_options(parser, window="10 pi / c + 2 gap / |v0|")
     add_drop_options(parser)
+    add_wall_options(parser)
     add_contact_options(
         parser, "the whole bounce: mass ratio m1/m2 in (0, 100] of a body on the ball's top"
     )

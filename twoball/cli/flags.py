@@ -106,6 +106,13 @@ FLAGS: dict[str, str] = {
     "export": "--export",
     "render": "--render",
     "body": "--mass-ratio",
+    # the shell ball (--ball shell) and its spectrum
+    "ball": "--ball",
+    "wall": "--ball",
+    "wall_stiffness_ratio": "--wall-stiffness-ratio",
+    "thickness_ratio": "--thickness-ratio",
+    "prestress_ratio": "--prestress-ratio",
+    "prestress": "--prestress-ratio",
 }
 
 

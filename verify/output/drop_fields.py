@@ -51,6 +51,21 @@ __all__ = ["DropScene", "body_frames", "drop_frames", "drop_scene", "drop_series
 DROP_FOOTER_CHARS = 64
 
 
+def _meridian(normal: np.ndarray) -> np.ndarray:
+    """The unit vector ``e_phi`` (increasing polar angle) at points of outward ``normal``.
+
+    ``(cos phi cos a, cos phi sin a, -sin phi)``; at the poles, where axisymmetry makes
+    the meridional displacement vanish, any unit vector in the plane (x here).
+    """
+    rho = np.hypot(normal[:, 0], normal[:, 1])
+    safe = np.where(rho > 0.0, rho, 1.0)
+    out = np.column_stack(
+        [normal[:, 2] * normal[:, 0] / safe, normal[:, 2] * normal[:, 1] / safe, -rho]
+    )
+    out[rho == 0.0] = (1.0, 0.0, 0.0)
+    return out
+
+
 def drop_frames(result: DropResult, count: int, case: Case) -> np.ndarray:
     """``count`` instants [s] equally spaced from the first touch to the end of the run."""
     end = float(result.trajectory.t[-1]) / case.wave_speed
@@ -58,9 +73,10 @@ def drop_frames(result: DropResult, count: int, case: Case) -> np.ndarray:
 
 
 def _states(result: DropResult, times_s: np.ndarray, case: Case) -> tuple[np.ndarray, ...]:
-    """Z, every coordinate of the ball at ``times_s`` (linear between step ends), the force."""
+    """Z, the ball's coordinates at ``times_s`` (linear between step ends), and the force."""
     q, f = _coordinates(result, times_s, case)
-    return q[:, result.system.centre], q[:, : result.system.ball.modes], f
+    system = result.system
+    return q[:, system.centre], q[:, : system.ball.modes], f
 
 
 def _coordinates(
@@ -112,13 +128,16 @@ def drop_series(
     points = np.asarray(mesh.points, dtype=float)
     normal = points / np.linalg.norm(points, axis=1, keepdims=True)
     phi = np.arccos(np.clip(normal[:, 2], -1.0, 1.0))
-    shapes = ball.modes_at(phi)  # (P, K): the translation's column is 0
-    z, q, force = _states(result, times_s, case)
-    u = q @ shapes.T  # (F, P), units R
+    z, a, force = _states(result, times_s, case)
+    # the deformation (radial and meridional; the translation's columns are 0) at the nodes
+    u = a @ ball.modes_at(phi).T  # (F, P), units R
+    w = a @ ball.tangential_at(phi).T
+    meridian = _meridian(normal)
     radius = case.radius
     lift = (z - 1.0)[:, None, None] * np.array([0.0, 0.0, 1.0])[None, None, :]
-    displacement = (lift + u[:, :, None] * normal[None, :, :]) * radius
-    height = (z[:, None] + (1.0 + u) * normal[None, :, 2]) * radius
+    moved = u[:, :, None] * normal[None, :, :] + w[:, :, None] * meridian[None, :, :]
+    displacement = (lift + moved) * radius
+    height = (z[:, None] + normal[None, :, 2] + moved[:, :, 2]) * radius
     force_unit = mass * radius * case.wave_speed**2
     numbers = {
         "contact_time_s": np.nan

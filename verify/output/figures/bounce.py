@@ -60,7 +60,7 @@ def drop_figure(r: DropResult, case: Case, mass: float, title: str = "") -> Figu
     axes[0].set_ylabel(label("$F$", "N"))
     axes[0].legend(loc="upper right")
     _contact_angle_panel(axes[1], r, case, to_ms)
-    height = (tr.q[:, system.centre] - 1.0) * case.radius * 1e3
+    height = (tr.q[:, r.system.centre] - 1.0) * case.radius * 1e3
     axes[2].plot(tr.t * to_ms, height, label="centre $Z - R$")
     axes[2].axhline(0.0, color=REFERENCE_COLOUR, lw=0.6)
     if r.contact_time is not None:
@@ -199,9 +199,9 @@ def whole_figure(
     fig = new_figure(8.2, 10.4)
     axes = fig.subplots(5, 1, sharex=True, height_ratios=(1.2, 0.8, 1.0, 1.0, 1.2))
     beside = {"loc": "upper left", "bbox_to_anchor": (1.01, 1.0)}
-    cap = system.body.cap  # every coordinate of the ball, the translation's entry 1
+    cap = system.body.cap
     z = tr.q[:, system.centre]
-    top = 1.0 + tr.q[:, : system.ball.modes] @ cap
+    top = 1.0 + tr.q[:, : system.ball.modes] @ cap  # the cap's vertical rows include Z
     lowest = np.min(system.floor_gaps(tr.q), axis=1)  # the ball's lowest floor point
     s = tr.q[:, system.body_coordinate]
     axes[0].plot(t_ms, s * R * 1e3, color="C1", label="body, lowest point")

@@ -1,0 +1,1 @@
+"""Tests of twoball.modal.shell (the thin spherical shell in closed form)."""
