@@ -920,16 +920,6 @@ def test_option_objects_refuse_a_bad_field_by_name(name: str, build: Any) -> Non
 
 @pytest.mark.xfail(
     strict=True,
-    reason="Drop keeps its field modes, which no run reads (the Legendre degree is "
-    "LegendreBall's): Drop(modes=16) is silently ignored, the drop runs the solver's ball",
-)
-def test_a_drop_given_modes_is_not_silently_ignored() -> None:
-    with pytest.raises((TypeError, twoball.ParameterError)):
-        twoball.bounce(twoball.Case(), twoball.Drop(modes=24), solver=COARSE)
-
-
-@pytest.mark.xfail(
-    strict=True,
     reason="the body's stepped contact (liftoff with a body and MoreauJean) checks no range "
     "of dt: a step of pi s runs, and 1e-308 s is refused by the budget naming modes "
     "(twoball/_costs.py check_stepped_contact); the drop refuses both as dt",
