@@ -63,6 +63,7 @@ MJ = twoball.MoreauJean
 LEVEL_1 = M("sphere", level=1)
 ON_1 = SP(LEVEL_1)  # the field verbs' finite elements on the level-1 sphere
 COARSE = MJ(twoball.LegendreBall(16))  # drops kept short
+SHORT = MJ(twoball.LegendreBall(16), t_end=0.05)  # a 5 m gap's default window: 2.4 s
 
 
 #: parameter -> a function that passes the value to the public API, per entry point.
@@ -252,7 +253,20 @@ CALLS: dict[str, dict[str, Callable[[Any, Path], Any]]] = {
     "atmosphere": {"Case": lambda v, _: twoball.Case.preset("tennis").derive(atmosphere=v)},
     "youngs_modulus": {"flexural_rigidity": lambda v, _: flexural_rigidity(v, 0.003)},
     "thickness": {"flexural_rigidity": lambda v, _: flexural_rigidity(6e6, v)},
-    "poisson": {"flexural_rigidity": lambda v, _: flexural_rigidity(6e6, 0.003, v)},
+    "poisson": {
+        "flexural_rigidity": lambda v, _: flexural_rigidity(6e6, 0.003, v),
+        "Wall": lambda v, _: twoball.Wall(youngs_modulus=6e6, thickness=0.003, poisson=v),
+        "fem.shell_eigen": lambda v, _: twoball.fem.shell_eigen(poisson=v, count=3),
+    },
+    # the shell's wall and spectrum
+    "wall_stiffness_ratio": {"Wall": lambda v, _: twoball.Wall(wall_stiffness_ratio=v)},
+    "thickness_ratio": {
+        "Wall": lambda v, _: twoball.Wall(wall_stiffness_ratio=4.0, thickness_ratio=v),
+        "fem.shell_eigen": lambda v, _: twoball.fem.shell_eigen(thickness_ratio=v, count=3),
+    },
+    "prestress_ratio": {
+        "fem.shell_eigen": lambda v, _: twoball.fem.shell_eigen(prestress_ratio=v, count=3)
+    },
 }
 
 
@@ -565,6 +579,9 @@ NO_LONGER_IGNORED: list[tuple[str, Callable[[Path], Any]]] = [
     ),
     ("modes", lambda tmp: twoball.check(twoball.Case(modes=3), fast=True, out=tmp / "r")),
     ("youngs_modulus", lambda _: flexural_rigidity(1e7, 1.0)),
+    # (a body of finite mass on N = 2000 Legendre modes or N = 60 on the level-3 sphere, once
+    # refused by the event-driven solver's budget at 1.2 h and 10 min, is stepped by the
+    # contact core in 7 s and 21 s: no longer refusals)
     ("modes", lambda _: _limited("20s", twoball.liftoff, twoball.Case.preset("tennis", modes=960))),
     # the drop: a v0 a drop height would override, a phi_a it would not use
     ("drop_height", lambda _: twoball.bounce(twoball.Case(v0=3.0), twoball.Drop(drop_height=1))),
@@ -655,7 +672,7 @@ UNIT_SLIPS: list[tuple[Callable[[], Any], tuple[str, ...]]] = [
         ("did you mean 0.12 m (120 mm)",),
     ),
     (
-        lambda: twoball.bounce(drop=twoball.Drop(gap=5.0), body=twoball.Body(0.1), solver=COARSE),
+        lambda: twoball.bounce(drop=twoball.Drop(gap=5.0), body=twoball.Body(0.1), solver=SHORT),
         ("gap Delta x = 5 m", "did you mean 0.005 m (5 mm)"),
     ),
     (
@@ -845,15 +862,33 @@ def test_every_numeric_flag_has_api_calls() -> None:
     assert flags <= covered, sorted(flags - covered)
 
 
+#: Bad values the API does not refuse yet by name, each with what it does instead: held
+#: apart, and the test fails when one is refused (then delete its entry).
+KNOWN_GAPS: dict[tuple[str, str, str], str] = {
+    ("thickness_ratio", "fem.shell_eigen", "1e+308"): "OverflowError in from_ratios",
+    ("thickness_ratio", "fem.shell_eigen", repr(math.pi - 1e-9)): "returns: no bound 0.5",
+    ("prestress_ratio", "fem.shell_eigen", "-1.0"): "refused naming wall_stiffness_ratio",
+    ("prestress_ratio", "fem.shell_eigen", "1e+308"): "refused naming prestress",
+    ("prestress_ratio", "fem.shell_eigen", repr(math.pi - 1e-9)): "refused naming prestress",
+}
+
+
 def test_bad_values_raise_parameter_error(tmp_path: Path) -> None:
     cases = api_cases()
     assert len(cases) > 300
-    failures = []
+    failures, fixed, seen = [], [], set()
     for name, entry, value in cases:
         got = call_refused(name, entry, value, tmp_path)
-        if got is not None:
+        key = (name, entry, repr(value))
+        if key in KNOWN_GAPS:
+            seen.add(key)
+            if got is None:
+                fixed.append(key)
+        elif got is not None:
             failures.append(f"{entry}({name}={value!r}): {got}")
     assert not failures, f"{len(failures)} of {len(cases)}:\n" + "\n".join(failures[:40])
+    assert seen == set(KNOWN_GAPS)  # every known gap is a case of the table
+    assert not fixed, f"refused now, delete from KNOWN_GAPS: {fixed}"
     assert sorted(p.name for p in tmp_path.iterdir()) == []  # nothing written
 
 
