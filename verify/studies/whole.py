@@ -107,7 +107,11 @@ def whole(
 
 
 def limit_a_table(masses: Sequence[float] = (0.05, 0.01, 1e-3, 1e-4)) -> str:
-    """Limit (a): the body row on the special case against ``twoball.liftoff(body=...)``."""
+    """Limit (a): the body row on the special case against the exact event-driven solver.
+
+    (:func:`~twoball.modal.contact.report.legendre_contact` with ``exact=True``:
+    ``twoball.liftoff(body=...)`` steps the same row by the same core now.)
+    """
     from twoball.modal.contact.report import legendre_contact
 
     case = Case.preset("basketball")
@@ -118,7 +122,8 @@ def limit_a_table(masses: Sequence[float] = (0.05, 0.01, 1e-3, 1e-4)) -> str:
         "|---|---|---|---|---|",
     ]
     for mu in masses:
-        ref = legendre_contact(case, Body(mu, contact_radius=0.0262), monitor=Watch())
+        body = Body(mu, contact_radius=0.0262)
+        ref = legendre_contact(case, body, reference=False, exact=True, monitor=Watch())
         errors, t_error = [], math.nan
         for dt in (0.005, 0.0025):
             run_ = body_liftoff(
