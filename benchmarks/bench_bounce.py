@@ -57,7 +57,11 @@ def main(argv: list[str] | None = None) -> int:
     tasks: list[tuple[str, Callable[[], object], float | None]] = [
         ("baseline: twoball.liftoff()", lambda: twoball.liftoff(), None),
         ("bounce, legendre N = 192", lambda: twoball.bounce(), 1.0),
-        ("bounce, fem axisym 96 P2", lambda: twoball.bounce(backend="fem"), 10.0),
+        (
+            "bounce, fem axisym 96 P2",
+            lambda: twoball.bounce(solver=twoball.MoreauJean(twoball.FEBall())),
+            10.0,
+        ),
     ]
     print(
         f"twoball {twoball.__version__}, Python {platform.python_version()}, "

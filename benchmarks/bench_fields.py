@@ -12,10 +12,11 @@ turn (old, new, old, new, ...), and the table gives the median CPU seconds
 median wall seconds of each, and their ratio.  Tasks (the public API, defaults
 otherwise):
 
-``export``   ``twoball.export("f.xdmf", level=L)`` (25 frames plus the lift-off)
-``render``   ``twoball.render("f.png", level=L)`` (the lift-off instant)
-``pole``     ``twoball.plot("pole", "f.png", level=L)``
-``eigen900`` ``twoball.fem.eigen(level=L, order=2, count=900)``
+``export``   ``twoball.export("f.xdmf", solver=Superposition(MeshOptions(level=L)))``
+             (25 frames plus the lift-off)
+``render``   ``twoball.render("f.png", solver=...)`` (the lift-off instant)
+``pole``     ``twoball.plot("pole", "f.png", solver=...)``
+``eigen900`` ``twoball.fem.eigen(MeshOptions(level=L, order=2), count=900)``
 
 "old" is ``--route full`` of this checkout by default (every eigenpair below the
 cutoff), or, with ``--old PATH``, the
@@ -42,11 +43,12 @@ from pathlib import Path
 
 ROOT = Path(__file__).resolve().parent.parent
 TASKS = ("export", "render", "pole", "eigen900")
+SOLVER = "solver=twoball.Superposition(twoball.MeshOptions(level={level}){route})"
 CALLS = {
-    "export": "twoball.export({out!r} + '/f.xdmf', level={level}{route})",
-    "render": "twoball.render({out!r} + '/f.png', level={level}{route})",
-    "pole": "twoball.plot('pole', {out!r} + '/f.png', level={level}{route})",
-    "eigen900": "twoball.fem.eigen(level={level}, order=2, count=900)",
+    "export": "twoball.export({out!r} + '/f.xdmf', " + SOLVER + ")",
+    "render": "twoball.render({out!r} + '/f.png', " + SOLVER + ")",
+    "pole": "twoball.plot('pole', {out!r} + '/f.png', " + SOLVER + ")",
+    "eigen900": "twoball.fem.eigen(twoball.MeshOptions(level={level}, order=2), count=900)",
 }
 
 

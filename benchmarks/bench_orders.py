@@ -5,15 +5,16 @@ Run from the repository root::
     python benchmarks/bench_orders.py                 # P1 L6, P2 L5, P3 L4, P4 L4 (+ P4 exact)
     python benchmarks/bench_orders.py --cases 4:4 2:5 --geometry exact
 
-Each case runs end to end through the public API (:func:`twoball.fem.solve`:
-mesh, assembly, load, Krylov route, lift-off search) in a fresh subprocess, so
-that its peak resident set size (``resource.getrusage(RUSAGE_SELF).ru_maxrss``
-of that child) is its own; the time is the child's wall clock around the call
-(imports excluded).  t_l and v_l are compared with the Legendre series of the
-same case, N = 30 and the same filter (:func:`twoball.liftoff`), the limit of
-the finite elements as h -> 0.  P1 L6, P2 L5 and P4 L4 have exactly 40 962
-DOFs; P3 L4 has 23 042 (P3 L5 would have 92 162).  The last columns are the
-ratios of seconds and of errors to the P2 row of the same run (same DOFs).
+Each case runs end to end through the public API (:func:`twoball.liftoff` with a
+:class:`twoball.Superposition` solver: mesh, assembly, load, Krylov route,
+lift-off search) in a fresh subprocess, so that its peak resident set size
+(``resource.getrusage(RUSAGE_SELF).ru_maxrss`` of that child) is its own; the
+time is the child's wall clock around the call (imports excluded).  t_l and v_l
+are compared with the Legendre series of the same case, N = 30 and the same
+filter (:func:`twoball.liftoff`), the limit of the finite elements as h -> 0.
+P1 L6, P2 L5 and P4 L4 have exactly 40 962 DOFs; P3 L4 has 23 042 (P3 L5 would
+have 92 162).  The last columns are the ratios of seconds and of errors to the
+P2 row of the same run (same DOFs).
 Basketball case (phi_a = 2.6, D = 0.13), Lanczos filter.
 """
 
@@ -34,12 +35,11 @@ DEFAULT_CASES = [(1, 6, "isoparametric"), (2, 5, "isoparametric"), (3, 4, "isopa
 def worker(order: int, level: int, geometry: str) -> dict[str, object]:
     """One case in this process: the public API end to end, and the peak memory."""
     import twoball
-    from twoball.fem import solve
 
     case = twoball.Case.preset("basketball")
+    mesh = twoball.MeshOptions("sphere", level=level, order=order, geometry=geometry)
     start = time.perf_counter()
-    report = solve(case, mesh="sphere", level=level, order=order, geometry=geometry,
-                   route="krylov")  # fmt: skip
+    report = twoball.liftoff(case, solver=twoball.Superposition(mesh, route="krylov"))
     seconds = time.perf_counter() - start
     peak = resource.getrusage(resource.RUSAGE_SELF).ru_maxrss / 2**20  # kB -> GB (Linux)
     exact = twoball.liftoff(case)  # Legendre N = 30, same filter

@@ -70,7 +70,7 @@ def main(argv: list[str] | None = None) -> int:
         ("whole bounce, legendre N = 192", lambda: twoball.bounce(pair=PAIR), 2.0),
         (
             "whole bounce, fem axisym 96 P2",
-            lambda: twoball.bounce(pair=PAIR, backend="fem"),
+            lambda: twoball.bounce(pair=PAIR, solver=twoball.MoreauJean(twoball.FEBall())),
             20.0,
         ),
     ]
@@ -118,13 +118,13 @@ def main(argv: list[str] | None = None) -> int:
                 {"gap": gaps[:workers]},
                 drop=twoball.Drop(),
                 pair=PAIR,
-                scheduler=cluster.scheduler_address,
+                workers=cluster.scheduler_address,
             )
             warmed = time.perf_counter() - start
             label = f"Dask LocalCluster ({workers})"
             start = time.perf_counter()
             results[label] = twoball.sweep(
-                {"gap": gaps}, drop=twoball.Drop(), pair=PAIR, scheduler=cluster.scheduler_address
+                {"gap": gaps}, drop=twoball.Drop(), pair=PAIR, workers=cluster.scheduler_address
             )
             times[label] = time.perf_counter() - start
         print(

@@ -42,7 +42,8 @@ def drop_elements(order: int) -> int:
 
     Examples
     --------
-    >>> [drop_elements(p) for p in (1, 2, 3, 4)]
+    >>> import twoball
+    >>> [twoball.drop_elements(p) for p in (1, 2, 3, 4)]
     [192, 96, 64, 48]
     """
     return -(-NODE_INTERVALS // int(order))

@@ -16,6 +16,11 @@ from twoball import Body
 BASKETBALL = Case.preset("basketball")
 
 
+def _on(mesh: twoball.MeshOptions) -> twoball.MoreauJean:
+    """The body's contacts stepped on the finite elements of ``mesh``."""
+    return twoball.MoreauJean(twoball.FEBall(mesh))
+
+
 @pytest.mark.parametrize("theta", [0.05, 0.3])
 def test_axisym_cap_functional_averages_polynomials(theta):
     """f . u is the cap average: exact for u = cos(phi)^2 (in the P2 space on the line)."""
@@ -44,10 +49,11 @@ def test_sphere_cap_functional_converges_to_the_cap_average():
 
 
 def test_fem_axisym_agrees_with_legendre_at_finite_mass():
-    """mu = 0.1, a = R/10: axisymmetric P2 (400 elements) and Legendre v1 to 1e-4."""
+    """mu = 0.1, a = R/10: axisymmetric P2 (400 elements) and Legendre v1 to 1e-4 (both on
+    the contact core at its default step)."""
     body = Body(0.1, contact_radius=0.012)
     legendre = twoball.liftoff(BASKETBALL, body=body)
-    fem = twoball.liftoff(BASKETBALL, body=body, backend="fem", mesh="axisym")
+    fem = twoball.liftoff(BASKETBALL, body=body, solver=_on(twoball.MeshOptions("axisym")))
     assert fem.v_liftoff_m_s == pytest.approx(legendre.v_liftoff_m_s, rel=1e-4)
     assert fem.t_liftoff_s == pytest.approx(legendre.t_liftoff_s, rel=1e-4)
     assert len(fem.history.impacts) == len(legendre.history.impacts)
@@ -55,9 +61,9 @@ def test_fem_axisym_agrees_with_legendre_at_finite_mass():
 
 def test_fem_massless_mode_recovers_todays_fem_result():
     """mu = 0, a = 1e-5 m on the axisymmetric line = today's FE pole lift-off to 1e-4."""
-    today = twoball.liftoff(BASKETBALL, backend="fem", mesh="axisym")
+    today = twoball.liftoff(BASKETBALL, solver=twoball.Superposition("axisym"))
     cap = twoball.liftoff(
-        BASKETBALL, body=Body(0.0, contact_radius=1e-5), backend="fem", mesh="axisym"
+        BASKETBALL, body=Body(0.0, contact_radius=1e-5), solver=twoball.Superposition("axisym")
     )
     assert cap.t_liftoff_s == pytest.approx(today.t_liftoff_s, rel=1e-4)
     assert cap.v_liftoff_m_s == pytest.approx(today.v_liftoff_m_s, rel=1e-4)
@@ -68,9 +74,7 @@ def test_fem_sphere_agrees_with_legendre_at_finite_mass():
     """mu = 0.1, a = R/10: sphere P2 level 4 and Legendre v1 to 1e-3 (measured 8e-5)."""
     body = Body(0.1, contact_radius=0.012)
     legendre = twoball.liftoff(BASKETBALL, body=body)
-    fem = twoball.liftoff(
-        BASKETBALL, body=body, backend="fem", mesh=twoball.MeshOptions("sphere", level=4)
-    )
+    fem = twoball.liftoff(BASKETBALL, body=body, solver=_on(twoball.MeshOptions("sphere", level=4)))
     assert fem.v_liftoff_m_s == pytest.approx(legendre.v_liftoff_m_s, rel=1e-3)
 
 
@@ -81,7 +85,7 @@ def test_fem_axisym_converges_to_legendre_in_h():
     errors = []
     for elements in (25, 100):
         mesh = twoball.MeshOptions("axisym", elements=elements)
-        fem = twoball.liftoff(BASKETBALL, body=body, backend="fem", mesh=mesh)
+        fem = twoball.liftoff(BASKETBALL, body=body, solver=_on(mesh))
         errors.append(abs(fem.v_liftoff_m_s / legendre.v_liftoff_m_s - 1))
     order = np.log2(errors[0] / errors[1]) / 2  # h / 4
     assert 3.0 < order < 5.0

@@ -182,10 +182,11 @@ def test_fitted_rayleigh_on_the_modal_scheme_is_the_alpha_schemes_law():
     assert modal["rayleigh"]["omega_low"] == pytest.approx(math.sqrt(2), rel=1e-15)
 
 
-def test_si_law_through_fem_solve_matches_the_closed_form():
+def test_si_law_through_the_finite_elements_matches_the_closed_form():
     law = Rayleigh(100.0, 2.5e-5)  # alpha [1/s], beta [s]
     closed = twoball.liftoff(damping=law)
-    fem = twoball.fem.solve(damping=law, mesh=twoball.MeshOptions("axisym", elements=200))
+    solver = twoball.Superposition(twoball.MeshOptions("axisym", elements=200))
+    fem = twoball.liftoff(damping=law, solver=solver)
     assert fem.t_liftoff_s == pytest.approx(closed.t_liftoff_s, rel=1e-6)
     assert fem.v_liftoff_m_s == pytest.approx(closed.v_liftoff_m_s, rel=1e-6)
     block = fem.as_dict()["rayleigh"]

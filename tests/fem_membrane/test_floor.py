@@ -40,19 +40,28 @@ def _fe_drop(elements, law=MODAL, dt=0.02, order=2):
 
 
 def test_eigenvalues_and_the_degree_one_vector():
-    """lambda_h -> l (l + 1) at order 2p; the degree-1 vector x is left out exactly."""
+    """lambda_h -> l (l + 1) at order 2p; the degree-1 vector x is left out exactly (the
+    centre's translation Z, coordinate 0, carries degree 1 with its own entry 2)."""
     paper = Stiffness()
     exact = np.array([0, 6, 12, 20, 30, 42])
     errors = []
     for elements in (20, 40):
         ball = axisym_ball(elements, 2, paper, ModalRatio(0.0))
-        lam = np.sort(ball.laplace)[:6]
+        assert ball.centre == 0 and ball.laplace[0] == 2.0 and ball.omega_squared[0] == 0.0
+        assert ball.modes == 2 * elements + 1  # Z and the 2E + 1 P2 vectors but x
+        deformation = ball.laplace[ball.deformation]
+        lam = np.sort(deformation)[:6]
         np.testing.assert_allclose(lam, exact, rtol=2e-3, atol=1e-11)
-        assert not np.any(np.abs(ball.laplace - 2.0) < 0.5)  # degree 1 is the centre's
+        assert not np.any(np.abs(deformation - 2.0) < 0.5)  # degree 1 is the centre's
+        np.testing.assert_array_equal(ball.floor_rows[:, 0], 1.0)  # Z lifts every point
+        np.testing.assert_array_equal(ball.top[0], 1.0)
         errors.append(lam[3:] - exact[3:])
     ratios = errors[0] / errors[1]
     assert np.all((ratios > 12.0) & (ratios < 20.0)), ratios  # order 2p = 4
     np.testing.assert_allclose(ball.masses, 1.0)
+    held = axisym_ball(40, 2, paper, ModalRatio(0.0), anchored=True)  # the paper's start
+    assert held.centre is None and held.modes == 2 * 40 + 1  # every vector, x among them
+    assert np.count_nonzero(np.abs(held.laplace - 2.0) < 1e-8) == 1
     gassy = axisym_ball(10, 2, PRESSURISED, ModalRatio(0.0))
     assert gassy.omega_squared[np.argmin(gassy.laplace)] == pytest.approx(GAS - 2.0, rel=1e-14)
     K, M, x = axisym_matrices(10, 2)

@@ -144,13 +144,18 @@ def gmsh_623(tmp_path_factory) -> Path:
     return path
 
 
+def _fem(mesh: twoball.MeshOptions):
+    """The finite-element lift-off of the basketball on ``mesh`` (modal superposition)."""
+    return twoball.liftoff(solver=twoball.Superposition(mesh))
+
+
 def _mesh_warnings(report) -> list[str]:
     return [w for w in report.warnings if w.startswith("mesh under-resolves")]
 
 
 def test_gmsh_p1_sphere_warns_like_the_generated_one(gmsh_623: Path) -> None:
-    user = twoball.fem.solve(mesh=twoball.MeshOptions(file=str(gmsh_623)))
-    generated = twoball.fem.solve(mesh=twoball.MeshOptions("sphere", level=3, order=1))
+    user = _fem(twoball.MeshOptions(file=str(gmsh_623)))
+    generated = _fem(twoball.MeshOptions("sphere", level=3, order=1))
     (said,) = _mesh_warnings(user)
     (expected,) = _mesh_warnings(generated)
     assert "P1" in said and "1242 triangles" in said
@@ -159,7 +164,7 @@ def test_gmsh_p1_sphere_warns_like_the_generated_one(gmsh_623: Path) -> None:
         said.split("error ")[1][:3] in ("51%", "52%") and expected.split("error ")[1][:3] == "50%"
     )
     # raised to P2 the same file is resolved (estimate ~0.5 %)
-    fine = twoball.fem.solve(mesh=twoball.MeshOptions(file=str(gmsh_623), order=2))
+    fine = _fem(twoball.MeshOptions(file=str(gmsh_623), order=2))
     assert _mesh_warnings(fine) == []
 
 
@@ -187,7 +192,6 @@ def test_icosphere_file_has_its_generated_size(level: int, tmp_path: Path) -> No
 
 
 def test_export_of_a_user_mesh_carries_the_warning(gmsh_623: Path, tmp_path: Path) -> None:
-    result = twoball.export(
-        tmp_path / "ball.xdmf", mesh=twoball.MeshOptions(file=str(gmsh_623)), frames=2
-    )
+    solver = twoball.Superposition(twoball.MeshOptions(file=str(gmsh_623)))
+    result = twoball.export(tmp_path / "ball.xdmf", solver=solver, frames=2)
     assert [w for w in result.warnings if w.startswith("mesh under-resolves")]

@@ -113,7 +113,7 @@ def relative_errors(
 ) -> tuple[float, float]:
     """|t_l| and |v_l| errors of the exact-geometry sphere against the Legendre ``reference``."""
     mesh = twoball.MeshOptions("sphere", level=level, order=order, geometry="exact")
-    fem = twoball.liftoff(case, backend="fem", mesh=mesh, stepping=twoball.Stepping(route="krylov"))
+    fem = twoball.liftoff(case, solver=twoball.Superposition(mesh, route="krylov"))
     return (
         abs(fem.t_liftoff_s / reference.t_liftoff_s - 1.0),
         abs(fem.v_liftoff_m_s / reference.v_liftoff_m_s - 1.0),

@@ -546,10 +546,12 @@ def write_ball(path: Path, radius: float) -> Path:
 
 @pytest.mark.parametrize("radius", [1e200, 1e-200, 1e150, 1e-150])
 def test_any_radius_gives_the_lift_off_of_the_ordinary_ball(tmp_path: Path, radius: float) -> None:
-    reference = twoball.liftoff(backend="fem", mesh=write_ball(tmp_path / "ref.vtu", 0.12))
+    ordinary = write_ball(tmp_path / "ref.vtu", 0.12)
+    reference = twoball.liftoff(solver=twoball.Superposition(ordinary))
     with warnings.catch_warnings():
         warnings.simplefilter("error")  # no overflow or underflow on the way
-        report = twoball.liftoff(backend="fem", mesh=write_ball(tmp_path / "big.vtu", radius))
+        big = write_ball(tmp_path / "big.vtu", radius)
+        report = twoball.liftoff(solver=twoball.Superposition(big))
     assert report.t_liftoff_s == pytest.approx(reference.t_liftoff_s, rel=1e-12)
     assert report.v_liftoff_m_s == pytest.approx(reference.v_liftoff_m_s, rel=1e-10)
     loaded = load_sphere_mesh(tmp_path / "big.vtu")
@@ -565,9 +567,11 @@ def test_pole_is_a_direction_at_any_length(tmp_path: Path, scale: float) -> None
         assert np.allclose(check_pole((scale, scale, scale)), unit, rtol=0, atol=1e-15)
         assert np.allclose(check_pole(f"{scale},{scale},{scale}"), unit, rtol=0, atol=1e-15)
     path = write_ball(tmp_path / "ball.vtu", 0.12)
-    reference = twoball.liftoff(backend="fem", mesh=twoball.MeshOptions(file=path, pole=(1, 1, 1)))
+    reference = twoball.liftoff(
+        solver=twoball.Superposition(twoball.MeshOptions(file=path, pole=(1, 1, 1)))
+    )
     report = twoball.liftoff(
-        backend="fem", mesh=twoball.MeshOptions(file=path, pole=(scale, scale, scale))
+        solver=twoball.Superposition(twoball.MeshOptions(file=path, pole=(scale, scale, scale)))
     )
     assert report.t_liftoff_s == reference.t_liftoff_s
     assert report.v_liftoff_m_s == reference.v_liftoff_m_s

@@ -130,7 +130,7 @@ def test_dense_mixed_matrix_has_the_mapped_membrane_spectrum(space):
 def test_axisymmetric_p2_liftoff_agrees_with_the_closed_form(route):
     ref = twoball.liftoff(TENNIS)
     mesh = twoball.MeshOptions("axisym", elements=800, order=2)
-    fem = twoball.liftoff(TENNIS, backend="fem", mesh=mesh, stepping=twoball.Stepping(route=route))
+    fem = twoball.liftoff(TENNIS, solver=twoball.Superposition(mesh, route=route))
     assert fem.t_liftoff_s == pytest.approx(ref.t_liftoff_s, rel=1e-6)
     assert fem.v_liftoff_m_s == pytest.approx(ref.v_liftoff_m_s, rel=1e-6)
 
@@ -142,7 +142,7 @@ def test_sphere_p2_liftoff_error_falls_at_the_eigenvalue_order():
     errors = []
     for level in (3, 4):
         mesh = twoball.MeshOptions("sphere", level=level, order=2)
-        fem = twoball.liftoff(case, backend="fem", mesh=mesh)
+        fem = twoball.liftoff(case, solver=twoball.Superposition(mesh))
         errors.append(
             max(
                 abs(fem.t_liftoff_s / ref.t_liftoff_s - 1.0),
@@ -160,8 +160,7 @@ def test_sphere_p2_liftoff_agrees_with_the_closed_form_krylov():
     # measured 32 s wall, 2.4 GB): t_l -4.8e-5, v_l +1.5e-5 (level 5: -7.4e-4, +2.3e-4)
     ref = twoball.liftoff(TENNIS)
     mesh = twoball.MeshOptions("sphere", level=6, order=2)
-    krylov = twoball.Stepping(route="krylov")
-    fem = twoball.liftoff(TENNIS, backend="fem", mesh=mesh, stepping=krylov)
+    fem = twoball.liftoff(TENNIS, solver=twoball.Superposition(mesh, route="krylov"))
     assert fem.t_liftoff_s == pytest.approx(ref.t_liftoff_s, rel=1e-4)
     assert fem.v_liftoff_m_s == pytest.approx(ref.v_liftoff_m_s, rel=1e-4)
     assert abs(fem.t_liftoff_s / ref.t_liftoff_s - 1.0) > 1e-6  # a discretisation error remains
@@ -174,7 +173,7 @@ def test_sphere_p2_liftoff_agrees_with_the_closed_form_full():
     case = Case.preset("tennis", modes=12)
     ref = twoball.liftoff(case)
     mesh = twoball.MeshOptions("sphere", level=5, order=2)
-    fem = twoball.liftoff(case, backend="fem", mesh=mesh, stepping=twoball.Stepping(route="full"))
+    fem = twoball.liftoff(case, solver=twoball.Superposition(mesh, route="full"))
     assert fem.t_liftoff_s == pytest.approx(ref.t_liftoff_s, rel=1e-4)
     assert fem.v_liftoff_m_s == pytest.approx(ref.v_liftoff_m_s, rel=1e-4)
 
@@ -182,13 +181,13 @@ def test_sphere_p2_liftoff_agrees_with_the_closed_form_full():
 def test_generalized_alpha_with_bending_and_gas_is_second_order_in_dt():
     mesh = twoball.MeshOptions("axisym", elements=100, order=2)
     window = 1.5e-3
-    full = twoball.Stepping(t_end=window, route="full")
-    modal = twoball.liftoff(TENNIS, backend="fem", mesh=mesh, stepping=full)
+    full = twoball.Superposition(mesh, route="full", t_end=window)
+    modal = twoball.liftoff(TENNIS, solver=full)
     dt = 4e-6
     errors = []
     for step in (dt, dt / 2):
-        alpha = twoball.Stepping(t_end=window, scheme="alpha", dt=step)
-        alpha = twoball.liftoff(TENNIS, backend="fem", mesh=mesh, stepping=alpha)
+        stepped = twoball.GeneralizedAlpha(mesh, dt=step, t_end=window)
+        alpha = twoball.liftoff(TENNIS, solver=stepped)
         errors.append(abs(alpha.v_liftoff_m_s / modal.v_liftoff_m_s - 1.0))
     observed = orders(errors)[0]
     assert 1.6 < observed < 2.4, (errors, observed)

@@ -53,7 +53,7 @@ def test_level5_pole_spike_or_dent_is_refused(scale: float, tmp_path: Path) -> N
     distance = np.linalg.norm(points, axis=1)
     assert np.mean(np.abs(distance / distance.mean() - 1)) < MAX_RADIAL_DEVIATION
     with pytest.raises(twoball.ParameterError) as refused:
-        twoball.fem.solve(mesh=twoball.MeshOptions(file=str(path)))
+        twoball.liftoff(solver=twoball.Superposition(twoball.MeshOptions(file=str(path))))
     assert refused.value.name == "mesh"
     assert f"to {MAX_NODE_DEVIATION:g} at every node" in str(refused.value)
     assert "3.00e-01" in str(refused.value) and "0 rad from the pole" in str(refused.value)
@@ -82,12 +82,13 @@ def test_pole_neighbourhood_is_stricter(tmp_path: Path) -> None:
 
 def test_accepted_defects_stay_below_the_discretisation_error(tmp_path: Path) -> None:
     """At the limits the lift-off moves < 1e-4 from the clean mesh (P2 level 3 error ~1e-4)."""
-    clean = twoball.fem.solve(mesh=twoball.MeshOptions("sphere", level=3, order=2))
+    clean = twoball.liftoff(solver=twoball.Superposition(twoball.MeshOptions("sphere", level=3)))
     for name, scale, node in (
         ("pole", 1 + 0.9 * MAX_POLE_DEVIATION, "pole"),
         ("far", 1 - 0.9 * MAX_NODE_DEVIATION, "south"),
     ):
         path = bumped(tmp_path / f"{name}.vtu", 3, scale, node)
-        report = twoball.fem.solve(mesh=twoball.MeshOptions(file=str(path), order=2))
+        mesh = twoball.MeshOptions(file=str(path), order=2)
+        report = twoball.liftoff(solver=twoball.Superposition(mesh))
         assert report.t_liftoff_s == pytest.approx(clean.t_liftoff_s, rel=1e-4)
         assert report.v_liftoff_m_s == pytest.approx(clean.v_liftoff_m_s, rel=1e-4)

@@ -71,14 +71,26 @@ def test_decay_of_each_law_is_its_ratio():
 
 
 def test_legendre_ball_leaves_degree_one_to_the_centre():
+    """Coordinates: the centre's height Z (0), then n = 0, 2..12; degree 1 is Z's."""
     ball = legendre_ball(12, PRESSURISED, ModalRatio(0.1))
-    assert ball.modes == 12 and ball.points == 7  # n = 0, 2..12; the Radau nodes with x < 0
-    np.testing.assert_allclose(ball.laplace, [0, *(n * (n + 1) for n in range(2, 13))])
-    np.testing.assert_allclose(ball.masses, 1.0 / (2.0 * np.array([0, *range(2, 13)]) + 1.0))
+    assert ball.centre == 0 and ball.modes == 1 + 12  # Z, then n = 0, 2..12
+    assert ball.points == 7  # the Radau nodes with x < 0
+    degrees = np.array([0, *range(2, 13)])
+    # the translation's entry 2 = 1 (1 + 1): degree 1's Laplace eigenvalue, its own shape
+    np.testing.assert_allclose(ball.laplace, [2.0, *(degrees * (degrees + 1.0))])
+    np.testing.assert_allclose(ball.masses, [1.0, *(1.0 / (2.0 * degrees + 1.0))])
+    assert ball.omega_squared[0] == 0.0 and ball.decay[0] == 0.0  # a free translation
     assert ball.phi[-1] == math.pi and ball.phi[0] > math.pi / 2
-    np.testing.assert_allclose(ball.shapes[:, 1], legval(np.cos(ball.phi), [0, 0, 1]))
+    x = np.cos(ball.phi)
+    # vertical rows: the centre moves every point by 1, mode n by cos(phi) P_n(cos(phi))
+    np.testing.assert_array_equal(ball.floor_rows[:, 0], 1.0)
+    np.testing.assert_allclose(ball.floor_rows[:, 2], x * legval(x, [0, 0, 1]), atol=1e-15)
+    np.testing.assert_allclose(ball.modes_at(ball.phi)[:, 2], legval(x, [0, 0, 1]), atol=1e-15)
+    np.testing.assert_array_equal(ball.modes_at(ball.phi)[:, 0], 0.0)  # Z does not deform
     anchored = legendre_ball(12, PRESSURISED, ModalRatio(0.1), anchored=True)
-    assert anchored.modes == 13 and anchored.omega_squared[1] == 0.0  # (1 - 1)(1 + 2)
+    assert anchored.centre is None and anchored.modes == 13  # n = 0..12, degree 1 a mode
+    assert anchored.omega_squared[1] == 0.0  # (1 - 1)(1 + 2)
+    np.testing.assert_allclose(anchored.floor_rows[:, 1], x * x, atol=1e-15)  # cos(phi) P_1
 
 
 def test_floor_points_make_the_delassus_matrix_diagonal():
@@ -100,7 +112,8 @@ def test_floor_gap_is_the_height_of_the_material_point():
     """g_i = Z + (1 + u(phi_i)) cos(phi_i): the point at radius 1 + u along its ray."""
     system = floor_system(legendre_ball(8, PAPER_GAS, ModalRatio(0.0)), GAMMA)
     rng = np.random.default_rng(1)
-    q = np.concatenate([[1.3], 0.01 * rng.normal(size=system.ball.modes)])
+    assert system.ball.centre == 0
+    q = np.concatenate([[1.3], 0.01 * rng.normal(size=system.ball.modes - 1)])
     degrees = np.array([0, *range(2, 9)])
     for i, phi in enumerate(system.ball.phi):
         coefficients = np.zeros(9)

@@ -21,7 +21,6 @@ NOT_VERBS = {"__version__", "fem"}
 def public_objects() -> dict[str, object]:
     """Name -> the function or class ``twoball`` exports under it (``fem``: its verbs)."""
     objects = {name: getattr(twoball, name) for name in twoball.__all__ if name not in NOT_VERBS}
-    objects["verify"] = twoball._studies.verify  # the callable package's function
     for name in twoball.fem.__all__:
         objects[f"fem.{name}"] = getattr(twoball.fem, name)
     return objects

@@ -221,6 +221,61 @@ def circles(edges: dict[str, set[str]]) -> list[list[str]]:
     return found
 
 
+#: The runtime policy of the ground floor: time and memory limits, held signals, child
+#: processes, progress lines and the monitor that watches them (twoball/_common/watch.py).
+RUNTIME = tuple(
+    f"twoball._common.{name}" for name in ("budget", "signals", "child", "progress", "watch")
+)
+#: The cost models below the face may read the budget's estimate types (refuse-before-work
+#: estimates): a module named ``cost`` imports ``twoball._common.budget`` and nothing else
+#: of the runtime.
+COST_MODELS = {"twoball._common.budget"}
+
+
+@functools.cache
+def _package_graph() -> dict[str, frozenset[str]]:
+    """:func:`graph` of the checkout, read once for the runtime checks."""
+    return {name: frozenset(targets) for name, targets in graph().items()}
+
+
+def runtime_imports(edges: dict[str, set[str]]) -> list[tuple[str, str]]:
+    """Arrows from a numerical module (modal, the finite elements) into the runtime policy."""
+    bad = []
+    for source, targets in edges.items():
+        if layer(source) not in ("modal", "fem"):
+            continue
+        allowed = COST_MODELS if source.rpartition(".")[2] == "cost" else set()
+        bad += [(source, t) for t in targets if t in RUNTIME and t not in allowed]
+    return sorted(bad)
+
+
+def test_numerical_modules_import_no_runtime_policy():
+    """Solvers take a monitor (twoball._common.monitor) and import no budget, signal, child,
+    progress or watch module; the cost models only the budget's estimates."""
+    edges = _package_graph()
+    assert {m for m in edges if m.startswith("twoball._common.")} >= set(RUNTIME)
+    assert runtime_imports(edges) == []
+
+
+@pytest.mark.parametrize(
+    ("source", "target", "caught"),
+    [
+        ("twoball.modal.floor.planted", "twoball._common.watch", True),
+        ("twoball.fem_membrane.planted", "twoball._common.child", True),
+        ("twoball.fem_shell.planted", "twoball._common.signals", True),
+        ("twoball.modal.planted.cost", "twoball._common.progress", True),
+        ("twoball.modal.planted.cost", "twoball._common.budget", False),
+        ("twoball.modal.planted", "twoball._common.budget", True),
+        ("twoball.modal.planted", "twoball._common.monitor", False),
+        ("twoball.verify.planted", "twoball._common.watch", False),
+    ],
+)
+def test_a_planted_runtime_import_is_found(source, target, caught):
+    """One more arrow on the package's graph (finding imports is tested above)."""
+    edges = {**_package_graph(), source: {target}}
+    assert runtime_imports(edges) == ([(source, target)] if caught else [])
+
+
 def test_every_module_is_in_one_layer():
     edges = graph()
     assert len(edges) > 100  # the whole package was read

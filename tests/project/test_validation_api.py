@@ -56,8 +56,14 @@ CASE = twoball.Case.preset("basketball")
 M = twoball.MeshOptions
 
 
-S = twoball.Stepping
+CF = twoball.ClosedForm
+SP = twoball.Superposition
+GA = twoball.GeneralizedAlpha
+MJ = twoball.MoreauJean
 LEVEL_1 = M("sphere", level=1)
+ON_1 = SP(LEVEL_1)  # the field verbs' finite elements on the level-1 sphere
+COARSE = MJ(twoball.LegendreBall(16))  # drops kept short
+SHORT = MJ(twoball.LegendreBall(16), t_end=0.05)  # a 5 m gap's default window: 2.4 s
 
 
 #: parameter -> a function that passes the value to the public API, per entry point.
@@ -99,61 +105,55 @@ CALLS: dict[str, dict[str, Callable[[Any, Path], Any]]] = {
     },
     "modes": {
         "Case": lambda v, _: twoball.Case(modes=v),
-        "Drop": lambda v, _: twoball.Drop(modes=v),
+        "LegendreBall": lambda v, _: twoball.LegendreBall(v),
     },
     "g": {"Case": lambda v, _: twoball.Case(g=v)},
-    "t_end": {  # Stepping refuses t_end <= 0; the solvers the window beyond 10 s (c-dependent)
-        "liftoff": lambda v, _: twoball.liftoff(CASE, stepping=S(t_end=v)),
-        "fem.solve": lambda v, _: twoball.fem.solve(CASE, mesh=LEVEL_1, stepping=S(t_end=v)),
-        "sweep": lambda v, _: twoball.sweep({"damping": [0.1]}, CASE, stepping=S(t_end=v)),
-        "export": lambda v, tmp: twoball.export(
-            tmp / "x.vtu", CASE, mesh=LEVEL_1, stepping=S(t_end=v)
-        ),
-        "render": lambda v, tmp: twoball.render(
-            tmp / "x.png", CASE, mesh=LEVEL_1, stepping=S(t_end=v)
-        ),
+    "t_end": {  # the solvers refuse t_end <= 0; the runs the window beyond 10 s (c-dependent)
+        "liftoff": lambda v, _: twoball.liftoff(CASE, solver=CF(t_end=v)),
+        "Superposition": lambda v, _: twoball.liftoff(CASE, solver=SP(LEVEL_1, t_end=v)),
+        "sweep": lambda v, _: twoball.sweep({"damping": [0.1]}, CASE, solver=CF(t_end=v)),
+        "export": lambda v, tmp: twoball.export(tmp / "x.vtu", CASE, solver=SP(LEVEL_1, t_end=v)),
+        "render": lambda v, tmp: twoball.render(tmp / "x.png", CASE, solver=SP(LEVEL_1, t_end=v)),
         "plot": lambda v, tmp: twoball.plot(
-            "pole", tmp / "p.png", CASE, mesh=LEVEL_1, stepping=S(t_end=v)
+            "pole", tmp / "p.png", CASE, solver=SP(LEVEL_1, t_end=v)
         ),
         "converge": lambda v, tmp: twoball.converge(
-            CASE, study="modes", modes_list="30,60,120", stepping=S(t_end=v), out=tmp / "c"
+            CASE, study="modes", modes_list="30,60,120", solver=CF(t_end=v), out=tmp / "c"
         ),
-        "verify": lambda v, tmp: twoball._studies.verify(CASE, fast=True, t_end=v, out=tmp / "r"),
+        "check": lambda v, tmp: twoball.check(CASE, fast=True, solver=CF(t_end=v), out=tmp / "r"),
     },
     "level": {
         "MeshOptions": lambda v, _: M("sphere", level=v),
-        "liftoff": lambda v, _: twoball.liftoff(CASE, backend="fem", mesh=M(level=v)),
-        "fem.solve": lambda v, _: twoball.fem.solve(CASE, mesh=M(level=v)),
+        "liftoff": lambda v, _: twoball.liftoff(CASE, solver=SP(M(level=v))),
+        "GeneralizedAlpha": lambda v, _: twoball.liftoff(CASE, solver=GA(M(level=v))),
         "fem.eigen": lambda v, _: twoball.fem.eigen(M(level=v), count=3),
-        "export": lambda v, tmp: twoball.export(tmp / "x.vtu", CASE, mesh=M(level=v)),
-        "render": lambda v, tmp: twoball.render(tmp / "x.png", CASE, mesh=M(level=v)),
-        "plot": lambda v, tmp: twoball.plot("pole", tmp / "p.png", CASE, mesh=M(level=v)),
+        "export": lambda v, tmp: twoball.export(tmp / "x.vtu", CASE, solver=SP(M(level=v))),
+        "render": lambda v, tmp: twoball.render(tmp / "x.png", CASE, solver=SP(M(level=v))),
+        "plot": lambda v, tmp: twoball.plot("pole", tmp / "p.png", CASE, solver=SP(M(level=v))),
     },
     "elements": {
         "MeshOptions": lambda v, _: M("axisym", elements=v),
-        "fem.solve": lambda v, _: twoball.fem.solve(CASE, mesh=M("axisym", elements=v)),
+        "liftoff": lambda v, _: twoball.liftoff(CASE, solver=SP(M("axisym", elements=v))),
         "fem.eigen": lambda v, _: twoball.fem.eigen(M("axisym", elements=v)),
-        "bounce": lambda v, _: twoball.bounce(CASE, backend="fem", mesh=M("axisym", elements=v)),
+        "FEBall": lambda v, _: twoball.FEBall(M("axisym", elements=v)),
+        "bounce": lambda v, _: twoball.bounce(
+            CASE, solver=MJ(twoball.FEBall(M("axisym", elements=v)))
+        ),
     },
     "order": {
         "MeshOptions": lambda v, _: M(level=1, order=v),
-        "fem.solve": lambda v, _: twoball.fem.solve(CASE, mesh=M(level=1, order=v)),
+        "liftoff": lambda v, _: twoball.liftoff(CASE, solver=SP(M(level=1, order=v))),
         "fem.eigen": lambda v, _: twoball.fem.eigen(M(level=1, order=v)),
-        "export": lambda v, tmp: twoball.export(tmp / "x.vtu", CASE, mesh=M(level=1, order=v)),
+        "export": lambda v, tmp: twoball.export(
+            tmp / "x.vtu", CASE, solver=SP(M(level=1, order=v))
+        ),
         "converge": lambda v, tmp: twoball.converge(
             CASE, study="h", mesh=M("sphere", order=v), out=tmp / "c"
         ),
     },
-    "dt": {  # Stepping refuses dt <= 0; the solvers a step outside [1e-7, 1e-2] s
-        "fem.solve": lambda v, _: twoball.fem.solve(
-            CASE, mesh="axisym", stepping=S(scheme="alpha", dt=v)
-        ),
-        "liftoff": lambda v, _: twoball.liftoff(
-            CASE, backend="fem", mesh="axisym", stepping=S(scheme="alpha", dt=v)
-        ),
-        "bounce": lambda v, _: twoball.bounce(
-            CASE, stepping=twoball.Stepping(scheme="moreau-jean", dt=v)
-        ),
+    "dt": {  # the solvers refuse dt <= 0; the runs a step outside their range [s]
+        "liftoff": lambda v, _: twoball.liftoff(CASE, solver=GA("axisym", dt=v)),
+        "bounce": lambda v, _: twoball.bounce(CASE, solver=MJ(dt=v)),
     },
     "count": {"fem.eigen": lambda v, _: twoball.fem.eigen(LEVEL_1, count=v)},
     "workers": {"sweep": lambda v, _: twoball.sweep({"damping": [0.1, 0.2]}, CASE, workers=v)},
@@ -168,32 +168,32 @@ CALLS: dict[str, dict[str, Callable[[Any, Path], Any]]] = {
     "floor_restitution": {"Drop": lambda v, _: twoball.Drop(floor_restitution=v)},
     "gap": {"Drop": lambda v, _: twoball.Drop(gap=v)},
     "frames": {
-        "export": lambda v, tmp: twoball.export(tmp / "x.pvd", CASE, mesh=LEVEL_1, frames=v),
+        "export": lambda v, tmp: twoball.export(tmp / "x.pvd", CASE, solver=ON_1, frames=v),
         "RenderOptions": lambda v, _: twoball.RenderOptions(frames=v),
         "render": lambda v, tmp: twoball.render(
-            tmp / "x.gif", CASE, mesh=LEVEL_1, view=twoball.RenderOptions(frames=v)
+            tmp / "x.gif", CASE, solver=ON_1, view=twoball.RenderOptions(frames=v)
         ),
     },
     "time": {  # the instant of a PNG is its one frame time
         "render": lambda v, tmp: twoball.render(
-            tmp / "x.png", CASE, mesh=LEVEL_1, view=twoball.RenderOptions(frames=[v])
+            tmp / "x.png", CASE, solver=ON_1, view=twoball.RenderOptions(frames=[v])
         )
     },
     "fps": {
         "RenderOptions": lambda v, _: twoball.RenderOptions(fps=v),
         "render": lambda v, tmp: twoball.render(
-            tmp / "x.gif", CASE, mesh=LEVEL_1, view=twoball.RenderOptions(fps=v)
+            tmp / "x.gif", CASE, solver=ON_1, view=twoball.RenderOptions(fps=v)
         ),
     },
     "warp": {
         "RenderOptions": lambda v, _: twoball.RenderOptions(warp=v),
         "render": lambda v, tmp: twoball.render(
-            tmp / "x.png", CASE, mesh=LEVEL_1, view=twoball.RenderOptions(warp=v)
+            tmp / "x.png", CASE, solver=ON_1, view=twoball.RenderOptions(warp=v)
         ),
     },
     "instants": {  # PlotOptions refuses fewer than 2; the plot more than the frame cap
         "plot": lambda v, tmp: twoball.plot(
-            "waterfall", tmp / "p.png", CASE, mesh=LEVEL_1, figure=twoball.PlotOptions(instants=v)
+            "waterfall", tmp / "p.png", CASE, solver=ON_1, figure=twoball.PlotOptions(instants=v)
         )
     },
     "max_degree": {
@@ -212,26 +212,26 @@ CALLS: dict[str, dict[str, Callable[[Any, Path], Any]]] = {
         "Body": lambda v, _: twoball.Body(v),
         "liftoff": lambda v, _: twoball.liftoff(CASE, body=twoball.Body(v)),
         "export": lambda v, tmp: twoball.export(
-            tmp / "x.vtu", CASE, mesh=LEVEL_1, body=twoball.Body(v)
+            tmp / "x.vtu", CASE, solver=ON_1, body=twoball.Body(v)
         ),
         "render": lambda v, tmp: twoball.render(
-            tmp / "x.png", CASE, mesh=LEVEL_1, body=twoball.Body(v)
+            tmp / "x.png", CASE, solver=ON_1, body=twoball.Body(v)
         ),
         "plot": lambda v, tmp: twoball.plot(
-            "pole", tmp / "p.png", CASE, mesh=LEVEL_1, body=twoball.Body(v)
+            "pole", tmp / "p.png", CASE, solver=ON_1, body=twoball.Body(v)
         ),
         "bounce": lambda v, _: twoball.bounce(CASE, body=twoball.Body(v)),
     },
     "contact_radius": {  # Body refuses a <= 0; the solvers a >= R of the case
         "liftoff": lambda v, _: twoball.liftoff(CASE, body=twoball.Body(0.01, contact_radius=v)),
         "export": lambda v, tmp: twoball.export(
-            tmp / "x.vtu", CASE, mesh=LEVEL_1, body=twoball.Body(0.01, contact_radius=v)
+            tmp / "x.vtu", CASE, solver=ON_1, body=twoball.Body(0.01, contact_radius=v)
         ),
         "render": lambda v, tmp: twoball.render(
-            tmp / "x.png", CASE, mesh=LEVEL_1, body=twoball.Body(0.01, contact_radius=v)
+            tmp / "x.png", CASE, solver=ON_1, body=twoball.Body(0.01, contact_radius=v)
         ),
         "plot": lambda v, tmp: twoball.plot(
-            "pole", tmp / "p.png", CASE, mesh=LEVEL_1, body=twoball.Body(0.01, contact_radius=v)
+            "pole", tmp / "p.png", CASE, solver=ON_1, body=twoball.Body(0.01, contact_radius=v)
         ),
         "bounce": lambda v, _: twoball.bounce(CASE, body=twoball.Body(0.01, contact_radius=v)),
     },
@@ -239,13 +239,13 @@ CALLS: dict[str, dict[str, Callable[[Any, Path], Any]]] = {
         "Body": lambda v, _: twoball.Body(0.01, restitution=v),
         "liftoff": lambda v, _: twoball.liftoff(CASE, body=twoball.Body(0.01, restitution=v)),
         "export": lambda v, tmp: twoball.export(
-            tmp / "x.vtu", CASE, mesh=LEVEL_1, body=twoball.Body(0.01, restitution=v)
+            tmp / "x.vtu", CASE, solver=ON_1, body=twoball.Body(0.01, restitution=v)
         ),
         "render": lambda v, tmp: twoball.render(
-            tmp / "x.png", CASE, mesh=LEVEL_1, body=twoball.Body(0.01, restitution=v)
+            tmp / "x.png", CASE, solver=ON_1, body=twoball.Body(0.01, restitution=v)
         ),
         "plot": lambda v, tmp: twoball.plot(
-            "pole", tmp / "p.png", CASE, mesh=LEVEL_1, body=twoball.Body(0.01, restitution=v)
+            "pole", tmp / "p.png", CASE, solver=ON_1, body=twoball.Body(0.01, restitution=v)
         ),
         "bounce": lambda v, _: twoball.bounce(CASE, body=twoball.Body(0.01, restitution=v)),
     },
@@ -253,7 +253,20 @@ CALLS: dict[str, dict[str, Callable[[Any, Path], Any]]] = {
     "atmosphere": {"Case": lambda v, _: twoball.Case.preset("tennis").derive(atmosphere=v)},
     "youngs_modulus": {"flexural_rigidity": lambda v, _: flexural_rigidity(v, 0.003)},
     "thickness": {"flexural_rigidity": lambda v, _: flexural_rigidity(6e6, v)},
-    "poisson": {"flexural_rigidity": lambda v, _: flexural_rigidity(6e6, 0.003, v)},
+    "poisson": {
+        "flexural_rigidity": lambda v, _: flexural_rigidity(6e6, 0.003, v),
+        "Wall": lambda v, _: twoball.Wall(youngs_modulus=6e6, thickness=0.003, poisson=v),
+        "fem.shell_eigen": lambda v, _: twoball.fem.shell_eigen(poisson=v, count=3),
+    },
+    # the shell's wall and spectrum
+    "wall_stiffness_ratio": {"Wall": lambda v, _: twoball.Wall(wall_stiffness_ratio=v)},
+    "thickness_ratio": {
+        "Wall": lambda v, _: twoball.Wall(wall_stiffness_ratio=4.0, thickness_ratio=v),
+        "fem.shell_eigen": lambda v, _: twoball.fem.shell_eigen(thickness_ratio=v, count=3),
+    },
+    "prestress_ratio": {
+        "fem.shell_eigen": lambda v, _: twoball.fem.shell_eigen(prestress_ratio=v, count=3)
+    },
 }
 
 
@@ -312,11 +325,12 @@ EXTRA: list[tuple[str, Callable[[Path], Any]]] = [
     ("e2", lambda _: icm.icm(0.5, True, 0.9)),
     ("case", lambda _: twoball.liftoff("basketball")),
     ("case", lambda _: twoball.sweep({"damping": [0.1]}, "basketball")),
-    ("stepping", lambda _: twoball.liftoff(CASE, stepping=0.02)),
+    ("solver", lambda _: twoball.liftoff(CASE, solver=0.02)),
     ("body", lambda _: twoball.liftoff(CASE, body=0.1)),
     ("damping", lambda _: twoball.liftoff(CASE, damping=0.13)),
-    ("mesh", lambda _: twoball.fem.solve(CASE, mesh=3)),
-    ("view", lambda tmp: twoball.render(tmp / "x.png", CASE, mesh=LEVEL_1, view=(320, 240))),
+    ("mesh", lambda _: twoball.liftoff(CASE, solver=SP(3))),
+    ("ball", lambda _: twoball.bounce(CASE, solver=MJ(192))),
+    ("view", lambda tmp: twoball.render(tmp / "x.png", CASE, solver=ON_1, view=(320, 240))),
     ("figure", lambda tmp: twoball.plot("eigen", tmp / "p.png", figure={"dpi": 100})),
     # a drop height below the case's radius R, where the case and the drop meet
     ("drop_height", lambda _: twoball.bounce(CASE, twoball.Drop(drop_height=0.05))),
@@ -326,7 +340,9 @@ EXTRA: list[tuple[str, Callable[[Path], Any]]] = [
     ),
     (
         "drop_height",
-        lambda _: twoball.sweep({"drop_height": [0.5, 0.05]}, CASE, drop=twoball.Drop(modes=16)),
+        lambda _: twoball.sweep(
+            {"drop_height": [0.5, 0.05]}, CASE, drop=twoball.Drop(), solver=COARSE
+        ),
     ),
     # the membrane operator and the damping law (docs/pressurised.rst)
     ("membrane", lambda _: twoball.Case(membrane="flat")),
@@ -356,7 +372,7 @@ EXTRA: list[tuple[str, Callable[[Path], Any]]] = [
     ),
     (
         "rayleigh",
-        lambda tmp: twoball._studies.verify(
+        lambda tmp: twoball.check(
             twoball.Case(rayleigh=twoball.Rayleigh()), fast=True, out=tmp / "r"
         ),
     ),
@@ -370,16 +386,17 @@ EXTRA: list[tuple[str, Callable[[Path], Any]]] = [
             {"damping": [0.1, 0.2]}, twoball.Case(rayleigh=twoball.Rayleigh(1.0, 0.0))
         ),
     ),
-    # options that do not apply
-    ("mesh", lambda _: twoball.liftoff(CASE, mesh=M(level=3))),
-    ("mesh", lambda _: twoball.liftoff(CASE, mesh="sphere")),
-    ("dt", lambda _: twoball.liftoff(CASE, stepping=S(dt=1e-5))),
-    ("scheme", lambda _: twoball.liftoff(CASE, stepping=S(scheme="alpha", dt=1e-5))),
-    ("route", lambda _: twoball.liftoff(CASE, stepping=S(route="full"))),
-    ("level", lambda _: twoball.fem.solve(CASE, mesh=M("axisym", level=2))),
-    ("elements", lambda _: twoball.fem.solve(CASE, mesh=M("ring", elements=50))),
-    ("dt", lambda _: twoball.fem.solve(CASE, stepping=S(scheme="modal", dt=1e-5))),
-    ("route", lambda _: twoball.fem.solve(CASE, stepping=S(scheme="alpha", route="krylov"))),
+    # options that do not apply (a mesh, step or route where the solver has none cannot be
+    # written: the solver objects have no such field)
+    ("level", lambda _: twoball.liftoff(CASE, solver=SP(M("axisym", level=2)))),
+    ("elements", lambda _: twoball.liftoff(CASE, solver=SP(M("ring", elements=50)))),
+    ("body", lambda _: twoball.liftoff(CASE, solver=twoball.MoreauJean())),  # no body
+    ("body", lambda _: twoball.liftoff(CASE, solver=MJ(), body=twoball.Body(0.0))),
+    ("solver", lambda _: twoball.liftoff(CASE, solver=CF(), body=twoball.Body(0.1))),
+    ("solver", lambda _: twoball.bounce(CASE, solver=CF())),
+    ("sigma", lambda _: twoball.bounce(CASE, solver=MJ(sigma="none"))),
+    ("mesh", lambda _: twoball.bounce(CASE, solver=MJ(twoball.FEBall(LEVEL_1)))),
+    ("ball", lambda _: twoball.sweep({"v0": [3.0]}, CASE, body=twoball.Body(0.1), solver=COARSE)),
     (
         "order",
         lambda tmp: twoball.converge(CASE, study="order", mesh=M("sphere", order=3), out=tmp / "c"),
@@ -387,65 +404,74 @@ EXTRA: list[tuple[str, Callable[[Path], Any]]] = [
     ("levels", lambda tmp: twoball.converge(CASE, study="modes", levels="1:2", out=tmp / "c")),
     ("modes_list", lambda tmp: twoball.converge(CASE, study="h", modes_list="30,60,120")),
     ("levels", lambda tmp: twoball.converge(CASE, study="h", levels="0:1", out=tmp / "c")),
-    ("fast", lambda tmp: twoball._studies.verify(CASE, fast=True, thorough=True)),
+    ("fast", lambda tmp: twoball.check(CASE, fast=True, thorough=True)),
     ("workers", lambda _: twoball.sweep({"damping": [0.1]}, CASE, workers=0)),
     ("workers", lambda _: twoball.sweep({"damping": [0.1]}, CASE, workers=2.5)),
-    ("fps", lambda tmp: twoball.render(tmp / "x.png", CASE, mesh=LEVEL_1, view=R(fps=10))),
-    ("frames", lambda tmp: twoball.render(tmp / "x.png", CASE, mesh=LEVEL_1, view=R(frames=5))),
+    ("fps", lambda tmp: twoball.render(tmp / "x.png", CASE, solver=ON_1, view=R(fps=10))),
+    ("frames", lambda tmp: twoball.render(tmp / "x.png", CASE, solver=ON_1, view=R(frames=5))),
     ("frames", lambda tmp: twoball.render(tmp / "x.png", CASE, view=R(frames=[0.001, 0.002]))),
     (
         "initial",
         lambda tmp: twoball.render(
-            tmp / "x.png", CASE, backend="legendre", mesh=M(initial="interpolation")
+            tmp / "x.png", CASE, backend="legendre", solver=SP(M(initial="interpolation"))
         ),
     ),
     ("case", lambda tmp: twoball.plot("eigen", tmp / "p.png", CASE)),
-    ("sigma", lambda tmp: twoball.plot("eigen", tmp / "p.png", series=twoball.Series("none"))),
-    ("series", lambda _: twoball.liftoff(series="lanczos")),
-    ("series", lambda tmp: twoball.export(tmp / "x.vtu", mesh=ONE, series={"sigma": "none"})),
-    ("damping", lambda tmp: twoball.export(tmp / "x.vtu", mesh=ONE, damping=0.2)),
+    ("solver", lambda tmp: twoball.plot("eigen", tmp / "p.png", solver=CF(sigma="none"))),
+    ("solver", lambda _: twoball.liftoff(solver="lanczos")),
+    ("solver", lambda tmp: twoball.export(tmp / "x.vtu", solver={"sigma": "none"})),
+    ("damping", lambda tmp: twoball.export(tmp / "x.vtu", solver=SP(ONE), damping=0.2)),
     ("damping", lambda _: twoball.sweep({"v0": [3.0]}, damping="rayleigh")),
     ("rayleigh", lambda _: twoball.converge(study="modes", damping=twoball.Rayleigh())),
-    ("rayleigh", lambda tmp: twoball._studies.verify(fast=True, damping=twoball.Rayleigh(1, 0))),
-    ("series", lambda tmp: twoball.plot("eigen", tmp / "p.png", series=twoball.Series())),
+    ("rayleigh", lambda tmp: twoball.check(fast=True, damping=twoball.Rayleigh(1, 0))),
+    ("solver", lambda tmp: twoball.plot("eigen", tmp / "p.png", solver=CF())),
     ("damping", lambda tmp: twoball.plot("eigen", tmp / "p.png", damping=twoball.Rayleigh())),
     ("backends", lambda tmp: twoball.plot("eigen", tmp / "p.png", figure=P(backends=["fem"]))),
-    ("t_end", lambda tmp: twoball.plot("eigen", tmp / "p.png", stepping=S(t_end=0.01))),
+    ("solver", lambda tmp: twoball.plot("eigen", tmp / "p.png", solver=CF(t_end=0.01))),
     ("levels", lambda tmp: twoball.plot("pole", tmp / "p.png", CASE, figure=P(levels=[1, 2]))),
     ("max_degree", lambda tmp: twoball.plot("waterfall", tmp / "p.png", figure=P(max_degree=5))),
     ("instants", lambda tmp: twoball.plot("pole", tmp / "p.png", CASE, figure=P(instants=5))),
     ("levels", lambda tmp: twoball.plot("eigen", tmp / "p.png", figure=P(levels=[-1]))),
     ("orders", lambda tmp: twoball.plot("eigen", tmp / "p.png", figure=P(orders=[7]))),
-    ("frames", lambda tmp: twoball.export(tmp / "x.vtu", CASE, mesh=LEVEL_1, frames=5)),
+    ("frames", lambda tmp: twoball.export(tmp / "x.vtu", CASE, solver=ON_1, frames=5)),
     (
         "route",
         lambda tmp: twoball.export(
-            tmp / "x.vtu", CASE, backend="legendre", stepping=twoball.Stepping(route="full")
+            tmp / "x.vtu", CASE, backend="legendre", solver=SP(route="full")
         ),
     ),
     # mesh files of the field commands
-    ("pole", lambda tmp: twoball.export(tmp / "x.vtu", CASE, mesh=M(level=1, pole=(0, 0, 1)))),
-    ("pole", lambda tmp: twoball.render(tmp / "x.png", CASE, mesh=M(pole="0,0,1"))),
-    ("pole", lambda tmp: twoball.plot("pole", tmp / "p.png", CASE, mesh=M(pole=(0, 0, 1)))),
-    ("pole", lambda tmp: twoball.plot("eigen", tmp / "p.png", mesh=M(pole=(0, 0, 1)))),
-    ("geometry", lambda tmp: twoball.export(tmp / "x.vtu", CASE, mesh=M("ring", geometry="exact"))),
-    ("geometry", lambda tmp: twoball.render(tmp / "x.png", CASE, mesh=M(geometry="bogus"))),
-    ("mesh", lambda tmp: twoball.plot("eigen", tmp / "p.png", mesh=M(geometry="exact"))),
-    ("mesh", lambda tmp: twoball.plot("eigen", tmp / "p.png", mesh=tmp / "ball.msh")),
-    ("level", lambda tmp: twoball.render(tmp / "x.png", CASE, mesh=M(file=tmp / "b.msh", level=1))),
-    ("order", lambda tmp: twoball.export(tmp / "x.vtu", CASE, mesh=M(level=1, order=3))),
-    ("frames", lambda tmp: twoball.export(tmp / "x.pvd", CASE, mesh=LEVEL_1, frames=[math.nan])),
-    ("frames", lambda tmp: twoball.export(tmp / "x.pvd", CASE, mesh=LEVEL_1, frames=[1.0])),
+    (
+        "pole",
+        lambda tmp: twoball.export(tmp / "x.vtu", CASE, solver=SP(M(level=1, pole=(0, 0, 1)))),
+    ),
+    ("pole", lambda tmp: twoball.render(tmp / "x.png", CASE, solver=SP(M(pole="0,0,1")))),
+    ("pole", lambda tmp: twoball.plot("pole", tmp / "p.png", CASE, solver=SP(M(pole=(0, 0, 1))))),
+    ("pole", lambda tmp: twoball.plot("eigen", tmp / "p.png", solver=SP(M(pole=(0, 0, 1))))),
+    (
+        "geometry",
+        lambda tmp: twoball.export(tmp / "x.vtu", CASE, solver=SP(M("ring", geometry="exact"))),
+    ),
+    ("geometry", lambda tmp: twoball.render(tmp / "x.png", CASE, solver=SP(M(geometry="bogus")))),
+    ("solver", lambda tmp: twoball.plot("eigen", tmp / "p.png", solver=SP(M(geometry="exact")))),
+    ("mesh", lambda tmp: twoball.plot("eigen", tmp / "p.png", solver=SP(tmp / "ball.msh"))),
+    (
+        "level",
+        lambda tmp: twoball.render(tmp / "x.png", CASE, solver=SP(M(file=tmp / "b.msh", level=1))),
+    ),
+    ("order", lambda tmp: twoball.export(tmp / "x.vtu", CASE, solver=SP(M(level=1, order=3)))),
+    ("frames", lambda tmp: twoball.export(tmp / "x.pvd", CASE, solver=ON_1, frames=[math.nan])),
+    ("frames", lambda tmp: twoball.export(tmp / "x.pvd", CASE, solver=ON_1, frames=[1.0])),
     # paths: empty, over-long, unwritable, unreadable
     *[
         ("out", call)
         for path in ("", "a" * 300 + ".png", table.LONG_PATH + ".png", "/proc/x/y.png")
         for call in (
-            lambda tmp, p=path: twoball.plot("pole", _under(tmp, p), CASE, mesh=LEVEL_1),
-            lambda tmp, p=path: twoball.render(_under(tmp, p), CASE, mesh=LEVEL_1),
-            lambda tmp, p=path: twoball.export(_under(tmp, p[:-4] + ".vtu"), CASE, mesh=LEVEL_1),
+            lambda tmp, p=path: twoball.plot("pole", _under(tmp, p), CASE, solver=ON_1),
+            lambda tmp, p=path: twoball.render(_under(tmp, p), CASE, solver=ON_1),
+            lambda tmp, p=path: twoball.export(_under(tmp, p[:-4] + ".vtu"), CASE, solver=ON_1),
             lambda tmp, p=path: twoball.converge(CASE, study="modes", out=_under(tmp, p[:-4])),
-            lambda tmp, p=path: twoball._studies.verify(CASE, fast=True, out=_under(tmp, p[:-4])),
+            lambda tmp, p=path: twoball.check(CASE, fast=True, out=_under(tmp, p[:-4])),
         )
     ],
     # a spike or dent hidden in the mean radial deviation: refused by its largest deviation
@@ -454,11 +480,11 @@ EXTRA: list[tuple[str, Callable[[Path], Any]]] = [
         ("mesh", call)
         for level, scale in ((5, 1.3), (5, 0.7), (3, 1.002))
         for call in (
-            lambda _, lv=level, s=scale: twoball.fem.solve(
-                CASE, mesh=twoball.MeshOptions(file=_bumped(lv, s))
+            lambda _, lv=level, s=scale: twoball.liftoff(
+                CASE, solver=SP(twoball.MeshOptions(file=_bumped(lv, s)))
             ),
             lambda tmp, lv=level, s=scale: twoball.export(
-                tmp / "x.vtu", CASE, mesh=twoball.MeshOptions(file=_bumped(lv, s))
+                tmp / "x.vtu", CASE, solver=SP(twoball.MeshOptions(file=_bumped(lv, s)))
             ),
         )
     ],
@@ -467,9 +493,11 @@ EXTRA: list[tuple[str, Callable[[Path], Any]]] = [
         for path in ("a" * 300 + ".msh", table.LONG_PATH + ".msh", "/proc/x/y.msh")
         for call in (
             lambda tmp, p=path: twoball.fem.eigen(mesh=_under(tmp, p)),
-            lambda tmp, p=path: twoball.export(tmp / "x.vtu", CASE, mesh=_under(tmp, p)),
-            lambda tmp, p=path: twoball.render(tmp / "x.png", CASE, mesh=_under(tmp, p)),
-            lambda tmp, p=path: twoball.plot("pole", tmp / "p.png", CASE, mesh=_under(tmp, p)),
+            lambda tmp, p=path: twoball.export(tmp / "x.vtu", CASE, solver=SP(_under(tmp, p))),
+            lambda tmp, p=path: twoball.render(tmp / "x.png", CASE, solver=SP(_under(tmp, p))),
+            lambda tmp, p=path: twoball.plot(
+                "pole", tmp / "p.png", CASE, solver=SP(_under(tmp, p))
+            ),
         )
     ],
 ]
@@ -508,33 +536,34 @@ NO_LONGER_IGNORED: list[tuple[str, Callable[[Path], Any]]] = [
     ("phi_a_source", lambda _: twoball.Case(phi_a_source="given")),  # phi_a not given
     ("atmosphere", lambda _: twoball.Case(atmosphere=5e4)),  # no gas: it would act on nothing
     ("progress", lambda _: twoball.liftoff(progress="x")),
-    ("progress", lambda _: twoball.fem.solve(progress="x")),
+    ("progress", lambda _: twoball.liftoff(solver=SP("axisym"), progress="x")),
     ("progress", lambda _: twoball.sweep({"damping": [0.1]}, progress="x")),
-    ("progress", lambda tmp: twoball.export(tmp / "x.vtu", mesh=ONE, progress="x")),
-    ("progress", lambda tmp: twoball.render(tmp / "x.png", mesh=ONE, progress="x")),
-    ("progress", lambda tmp: twoball.plot("pole", tmp / "p.png", mesh=ONE, progress="x")),
+    ("progress", lambda tmp: twoball.export(tmp / "x.vtu", solver=SP(ONE), progress="x")),
+    ("progress", lambda tmp: twoball.render(tmp / "x.png", solver=SP(ONE), progress="x")),
+    ("progress", lambda tmp: twoball.plot("pole", tmp / "p.png", solver=SP(ONE), progress="x")),
     ("progress", lambda tmp: twoball.converge(study="modes", progress=3, out=tmp / "c")),
-    ("progress", lambda tmp: twoball.verify(fast=True, progress="x", out=tmp / "r")),
+    ("progress", lambda tmp: twoball.check(fast=True, progress="x", out=tmp / "r")),
     ("values", lambda _: twoball.sweep({"damping": "abc"})),
     ("values", lambda _: twoball.sweep({"damping": [[0.1, "x"]]})),
     ("out", lambda _: twoball.converge(study="modes", out=5)),
-    ("out", lambda _: twoball.verify(fast=True, out=[1])),
-    ("frames", lambda tmp: twoball.export(tmp / "x.pvd", mesh=ONE, frames="0,1")),
-    ("frames", lambda tmp: twoball.export(tmp / "x.pvd", mesh=ONE, frames=[[0.0]])),
-    ("frames", lambda tmp: twoball.render(tmp / "x.gif", mesh=ONE, view=R(frames=[["0.001"]]))),
+    ("out", lambda _: twoball.check(fast=True, out=[1])),
+    ("frames", lambda tmp: twoball.export(tmp / "x.pvd", solver=SP(ONE), frames="0,1")),
+    ("frames", lambda tmp: twoball.export(tmp / "x.pvd", solver=SP(ONE), frames=[[0.0]])),
     (
-        "mesh",
+        "frames",
+        lambda tmp: twoball.render(tmp / "x.gif", solver=SP(ONE), view=R(frames=[["0.001"]])),
+    ),
+    (
+        "geometry",
         lambda _: twoball.liftoff(
-            body=twoball.Body(0.1), mesh=twoball.MeshOptions(geometry="exact")
+            body=twoball.Body(0.1), solver=MJ(twoball.FEBall(twoball.MeshOptions(geometry="exact")))
         ),
     ),
     ("phi_a", lambda _: twoball.sweep({"v0": [3.0, 4.0]}, twoball.Case(phi_a=2.5))),
     ("phi_a", lambda _: twoball.sweep({"wave_speed": [300.0]}, twoball.Case(phi_a=2.5))),
     (
         "recontact",
-        lambda tmp: twoball.plot(
-            "waterfall", tmp / "p.png", mesh=ONE, series=twoball.Series(recontact="paper")
-        ),
+        lambda tmp: twoball.plot("waterfall", tmp / "p.png", solver=SP(ONE, recontact="paper")),
     ),
     ("levels", lambda tmp: twoball.converge(study="h", levels="", out=tmp / "c")),
     ("modes_list", lambda tmp: twoball.converge(study="modes", modes_list="", out=tmp / "c")),
@@ -544,15 +573,15 @@ NO_LONGER_IGNORED: list[tuple[str, Callable[[Path], Any]]] = [
     ("workers", lambda tmp: twoball.reproduce(tmp / "rep", only="table1", workers="")),
     (
         "warp",
-        lambda tmp: twoball.render(tmp / "x.png", mesh=ONE, view=twoball.RenderOptions(warp=1e308)),
+        lambda tmp: twoball.render(
+            tmp / "x.png", solver=SP(ONE), view=twoball.RenderOptions(warp=1e308)
+        ),
     ),
-    ("modes", lambda tmp: twoball.verify(twoball.Case(modes=3), fast=True, out=tmp / "r")),
+    ("modes", lambda tmp: twoball.check(twoball.Case(modes=3), fast=True, out=tmp / "r")),
     ("youngs_modulus", lambda _: flexural_rigidity(1e7, 1.0)),
-    ("modes", lambda _: twoball.liftoff(twoball.Case(modes=2000), body=twoball.Body(0.1))),
-    (
-        "modes",
-        lambda _: twoball.liftoff(twoball.Case(modes=60), backend="fem", body=twoball.Body(0.1)),
-    ),
+    # (a body of finite mass on N = 2000 Legendre modes or N = 60 on the level-3 sphere, once
+    # refused by the event-driven solver's budget at 1.2 h and 10 min, is stepped by the
+    # contact core in 7 s and 21 s: no longer refusals)
     ("modes", lambda _: _limited("20s", twoball.liftoff, twoball.Case.preset("tennis", modes=960))),
     # the drop: a v0 a drop height would override, a phi_a it would not use
     ("drop_height", lambda _: twoball.bounce(twoball.Case(v0=3.0), twoball.Drop(drop_height=1))),
@@ -572,9 +601,7 @@ NO_LONGER_IGNORED: list[tuple[str, Callable[[Path], Any]]] = [
     # the closed form alone has no eigen route
     (
         "route",
-        lambda tmp: twoball.render(
-            tmp / "x.png", backend="legendre", stepping=twoball.Stepping(route="full")
-        ),
+        lambda tmp: twoball.render(tmp / "x.png", backend="legendre", solver=SP(route="full")),
     ),
     (
         "route",
@@ -582,27 +609,26 @@ NO_LONGER_IGNORED: list[tuple[str, Callable[[Path], Any]]] = [
             "pole",
             tmp / "p.png",
             figure=twoball.PlotOptions(backends=["legendre"]),
-            stepping=twoball.Stepping(route="full"),
+            solver=SP(route="full"),
         ),
     ),
     # the name the user gave, the value they gave
-    ("times", lambda tmp: twoball.export(tmp / "x.pvd", mesh=ONE, times="0,1")),
     ("backends", lambda _: twoball.PlotOptions(backends="bogus")),
     ("backends", lambda _: twoball.PlotOptions(backends=5)),
     # an output onto the input mesh file
     (
         "out",
-        lambda tmp: twoball.export(ball_file(tmp), mesh=twoball.MeshOptions(file=ball_file(tmp))),
+        lambda tmp: twoball.export(
+            ball_file(tmp), solver=SP(twoball.MeshOptions(file=ball_file(tmp)))
+        ),
     ),
     # bare exceptions and silently accepted values of the API
-    ("bogus", lambda _: twoball.liftoff(bogus=1)),
-    ("bogus", lambda tmp: twoball.converge(study="modes", bogus=1, out=tmp / "c")),
     ("additional", lambda _: twoball.report(5)),
     ("additional", lambda _: twoball.report([5])),
     ("rows", lambda _: twoball.table1(5)),
     ("rows", lambda _: twoball.table1(["row"])),
-    ("thorough", lambda tmp: twoball.verify(thorough="yes", out=tmp / "r")),
-    ("fast", lambda tmp: twoball.verify(fast=1, out=tmp / "r")),
+    ("thorough", lambda tmp: twoball.check(thorough="yes", out=tmp / "r")),
+    ("fast", lambda tmp: twoball.check(fast=1, out=tmp / "r")),
     ("v0_given", lambda _: twoball.Case(v0_given="x")),
     ("v0_given", lambda _: twoball.Case(v0=4.1, v0_given=-3.0)),
     ("pressure_sets_c", lambda _: twoball.Case(pressure_sets_c="yes")),
@@ -614,10 +640,10 @@ NO_LONGER_IGNORED: list[tuple[str, Callable[[Path], Any]]] = [
 MESSAGES: list[tuple[Callable[[Path], Any], str, tuple[str, ...], tuple[str, ...]]] = [
     (lambda tmp: twoball.plot("eigen", tmp / "p.png", CASE), "case", ("kind eigen",), ("Case",)),
     (
-        lambda tmp: twoball.export(tmp / "x.pvd", mesh=ONE, times="0,1"),
-        "times",
-        ("times must be a list of times", "got '0,1'"),
-        ("frames",),
+        lambda tmp: twoball.export(tmp / "x.pvd", solver=SP(ONE), frames="0,1"),
+        "frames",
+        ("frames must be a frame count or a list of times [s]", "got '0,1'"),
+        ("['0'", "[0.0"),
     ),
     (
         lambda _: twoball.PlotOptions(backends="fme"),
@@ -626,29 +652,33 @@ MESSAGES: list[tuple[Callable[[Path], Any], str, tuple[str, ...], tuple[str, ...
         ("['f'",),
     ),
     (
-        lambda _: twoball.liftoff(bogus=1),
-        "bogus",
-        ("twoball.liftoff() got an unexpected keyword argument 'bogus'",),
+        lambda _: twoball.bounce(solver=twoball.ClosedForm()),
+        "solver",
+        ("a twoball.MoreauJean", "got ClosedForm("),
         (),
     ),
 ]
 
 #: Inputs far outside any ball that run and must warn with the value meant: (call, words).
-DROP = twoball.Drop(modes=16)
 UNIT_SLIPS: list[tuple[Callable[[], Any], tuple[str, ...]]] = [
     (
-        lambda: twoball.bounce(twoball.Case(), twoball.Drop(drop_height=1000, modes=16)),
+        lambda: twoball.bounce(twoball.Case(), twoball.Drop(drop_height=1000), solver=COARSE),
         ("H = 1000 m", "did you mean 1 m (1000 mm) or 10 m (1000 cm)?"),
     ),
-    (lambda: twoball.bounce(twoball.Case(v0=140.0), DROP), ("did you mean 0.14 m/s",)),
-    (lambda: twoball.bounce(twoball.Case(v0=4100.0), DROP), ("did you mean 4.1 m/s",)),
-    (lambda: twoball.bounce(twoball.Case(radius=120.0), DROP), ("did you mean 0.12 m (120 mm)",)),
+    (lambda: twoball.bounce(twoball.Case(v0=140.0), solver=COARSE), ("did you mean 0.14 m/s",)),
+    (lambda: twoball.bounce(twoball.Case(v0=4100.0), solver=COARSE), ("did you mean 4.1 m/s",)),
     (
-        lambda: twoball.bounce(drop=twoball.Drop(modes=16, gap=5.0), body=twoball.Body(0.1)),
+        lambda: twoball.bounce(twoball.Case(radius=120.0), solver=COARSE),
+        ("did you mean 0.12 m (120 mm)",),
+    ),
+    (
+        lambda: twoball.bounce(drop=twoball.Drop(gap=5.0), body=twoball.Body(0.1), solver=SHORT),
         ("gap Delta x = 5 m", "did you mean 0.005 m (5 mm)"),
     ),
     (
-        lambda: twoball.sweep({"drop_height": [500.0, 1000.0]}, drop=DROP).reports[0],
+        lambda: twoball.sweep(
+            {"drop_height": [500.0, 1000.0]}, drop=twoball.Drop(), solver=COARSE
+        ).reports[0],
         ("H = 500 m", "did you mean 0.5 m (500 mm)"),
     ),
 ]
@@ -667,7 +697,7 @@ def test_refusals_say_the_value_given(tmp_path: Path) -> None:
 
 
 def test_unknown_keywords_stay_a_type_error_too() -> None:
-    """Refused by name as a ParameterError, and still the TypeError Python gives."""
+    """Python's own TypeError (the shim of the 0.2 keywords that named them is gone)."""
     with pytest.raises(TypeError, match="unexpected keyword argument 'bogus'"):
         twoball.liftoff(bogus=1)
 
@@ -683,9 +713,9 @@ def test_unit_slips_warn_with_the_value_meant(call: Any, words: tuple[str, ...])
 def test_the_meant_values_are_quiet() -> None:
     """The same inputs in the units meant carry no such warning."""
     meant = [
-        twoball.bounce(twoball.Case(), twoball.Drop(drop_height=1.0, modes=16)),
-        twoball.bounce(twoball.Case(radius=0.12), DROP),
-        twoball.bounce(drop=twoball.Drop(modes=16, gap=0.005), body=twoball.Body(0.1)),
+        twoball.bounce(twoball.Case(), twoball.Drop(drop_height=1.0), solver=COARSE),
+        twoball.bounce(twoball.Case(radius=0.12), solver=COARSE),
+        twoball.bounce(drop=twoball.Drop(gap=0.005), body=twoball.Body(0.1), solver=COARSE),
     ]
     for report in meant:
         assert not [w for w in report.warnings if "did you mean" in w], report.warnings
@@ -742,17 +772,21 @@ OBJECTS: list[tuple[str, Callable[[], Any]]] = [
     ("geometry", lambda: M("ring", geometry="exact")),
     ("geometry", lambda: M("axisym", geometry="exact")),
     ("initial", lambda: M(initial="bogus")),
-    ("t_end", lambda: S(t_end=-1)),
-    ("t_end", lambda: S(t_end=0.0)),
-    ("t_end", lambda: S(t_end=math.nan)),
-    ("t_end", lambda: S(t_end=math.inf)),
-    ("t_end", lambda: S(t_end="0.02")),
-    ("dt", lambda: S(scheme="alpha", dt=-1)),
-    ("dt", lambda: S(scheme="alpha", dt=0.0)),
-    ("dt", lambda: S(dt=1e-5)),  # modal superposition has no time step
-    ("scheme", lambda: S(scheme="x")),
-    ("route", lambda: S(route="x")),
-    ("route", lambda: S(scheme="alpha", route="krylov")),
+    ("t_end", lambda: CF(t_end=-1)),
+    ("t_end", lambda: CF(t_end=0.0)),
+    ("t_end", lambda: SP(t_end=math.nan)),
+    ("t_end", lambda: GA(t_end=math.inf)),
+    ("t_end", lambda: MJ(t_end="0.02")),
+    ("dt", lambda: GA(dt=-1)),
+    ("dt", lambda: GA(dt=0.0)),
+    ("dt", lambda: MJ(dt=math.nan)),
+    ("route", lambda: SP(route="x")),
+    ("ball", lambda: MJ("legendre")),
+    ("mesh", lambda: GA("bogus")),
+    ("modes", lambda: twoball.LegendreBall(7)),
+    ("modes", lambda: twoball.LegendreBall(2001)),
+    ("modes", lambda: twoball.LegendreBall(16.0)),
+    ("mesh", lambda: twoball.FEBall("ring-ish")),
     ("mass_ratio", lambda: twoball.Body(-1)),
     ("mass_ratio", lambda: twoball.Body(100.5)),
     ("mass_ratio", lambda: twoball.Body(math.nan)),
@@ -795,10 +829,11 @@ OBJECTS: list[tuple[str, Callable[[], Any]]] = [
     ("levels", lambda: P(levels={1, 2})),
     ("orders", lambda: P(orders=[0])),
     ("orders", lambda: P(orders=[5])),
-    ("sigma", lambda: twoball.Series(sigma="gauss")),
-    ("sigma", lambda: twoball.Series(sigma=None)),
-    ("recontact", lambda: twoball.Series(recontact="never")),
-    ("recontact", lambda: twoball.Series(recontact=1)),
+    ("sigma", lambda: CF(sigma="gauss")),
+    ("sigma", lambda: SP(sigma="gauss")),
+    ("sigma", lambda: MJ(sigma="gauss")),
+    ("recontact", lambda: CF(recontact="never")),
+    ("recontact", lambda: GA(recontact=1)),
     ("frames", lambda: R(frames=0)),
     ("frames", lambda: R(frames=2001)),
     ("frames", lambda: R(frames=True)),
@@ -827,15 +862,33 @@ def test_every_numeric_flag_has_api_calls() -> None:
     assert flags <= covered, sorted(flags - covered)
 
 
+#: Bad values the API does not refuse yet by name, each with what it does instead: held
+#: apart, and the test fails when one is refused (then delete its entry).
+KNOWN_GAPS: dict[tuple[str, str, str], str] = {
+    ("thickness_ratio", "fem.shell_eigen", "1e+308"): "OverflowError in from_ratios",
+    ("thickness_ratio", "fem.shell_eigen", repr(math.pi - 1e-9)): "returns: no bound 0.5",
+    ("prestress_ratio", "fem.shell_eigen", "-1.0"): "refused naming wall_stiffness_ratio",
+    ("prestress_ratio", "fem.shell_eigen", "1e+308"): "refused naming prestress",
+    ("prestress_ratio", "fem.shell_eigen", repr(math.pi - 1e-9)): "refused naming prestress",
+}
+
+
 def test_bad_values_raise_parameter_error(tmp_path: Path) -> None:
     cases = api_cases()
     assert len(cases) > 300
-    failures = []
+    failures, fixed, seen = [], [], set()
     for name, entry, value in cases:
         got = call_refused(name, entry, value, tmp_path)
-        if got is not None:
+        key = (name, entry, repr(value))
+        if key in KNOWN_GAPS:
+            seen.add(key)
+            if got is None:
+                fixed.append(key)
+        elif got is not None:
             failures.append(f"{entry}({name}={value!r}): {got}")
     assert not failures, f"{len(failures)} of {len(cases)}:\n" + "\n".join(failures[:40])
+    assert seen == set(KNOWN_GAPS)  # every known gap is a case of the table
+    assert not fixed, f"refused now, delete from KNOWN_GAPS: {fixed}"
     assert sorted(p.name for p in tmp_path.iterdir()) == []  # nothing written
 
 
@@ -900,10 +953,41 @@ def test_option_objects_refuse_a_bad_field_by_name(name: str, build: Any) -> Non
     assert str(caught.value).startswith(f"{name} must be "), str(caught.value)
 
 
+@pytest.mark.xfail(
+    strict=True,
+    reason="the body's stepped contact (liftoff with a body and MoreauJean) checks no range "
+    "of dt: a step of pi s runs, and 1e-308 s is refused by the budget naming modes "
+    "(twoball/_costs.py check_stepped_contact); the drop refuses both as dt",
+)
+@pytest.mark.parametrize("dt", [1e-308, math.pi])
+def test_the_stepped_contact_refuses_a_step_outside_its_range(dt: float) -> None:
+    signal.signal(signal.SIGPROF, _alarm)
+    signal.setitimer(signal.ITIMER_PROF, CPU_LIMIT_S)
+    try:
+        with pytest.raises(twoball.ParameterError) as caught:
+            twoball.liftoff(CASE, body=twoball.Body(0.1), solver=MJ(dt=dt))
+    finally:
+        signal.setitimer(signal.ITIMER_PROF, 0)
+    assert caught.value.name == "dt"
+
+
+@pytest.mark.xfail(
+    strict=True,
+    reason="ClosedForm, Superposition and GeneralizedAlpha accept sigma=None when built "
+    "(MoreauJean's default: the start's filter) and refuse it only in the run",
+)
+@pytest.mark.parametrize("solver", [CF, SP, GA])
+def test_the_lift_off_solvers_refuse_no_filter_when_built(solver: Any) -> None:
+    with pytest.raises(twoball.ParameterError) as caught:
+        solver(sigma=None)
+    assert caught.value.name == "sigma"
+
+
 def test_option_objects_keep_good_fields() -> None:
     """The values just inside the ranges are kept (as numbers of the field's type)."""
     assert M("axisym", elements=2).elements == 2 and M(level=0, order=4).order == 4
-    assert S(t_end=1e-3).t_end == 1e-3 and S(scheme="alpha", dt=1e-7).dt == 1e-7
+    assert CF(t_end=1e-3).t_end == 1e-3 and GA(dt=1e-7).dt == 1e-7 and MJ(dt=1e-7).dt == 1e-7
+    assert twoball.LegendreBall(8).modes == 8 and twoball.LegendreBall(2000).degree == 2000
     body = twoball.Body(100, contact_radius=1e-6, restitution=1, energy="both")
     assert (body.mass_ratio, body.restitution) == (100.0, 1.0)
     assert twoball.ModalRatio(0).ratio == 0.0 and twoball.Rayleigh(alpha=0, beta=0).alpha == 0.0

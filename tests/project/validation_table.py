@@ -102,6 +102,11 @@ RANGES: dict[str, Range] = {
     "--pole-levels": Range(0, 8, integer=True),
     "--top-levels": Range(0, 8, integer=True),
     "--wall-cells": Range(1, 16, integer=True),
+    # the shell's wall and spectrum (--ball shell): C / N0, h / R, p = N0 / C (its breathing
+    # mode stable: 2 (1 + nu) - 2 p > 0 at the default nu = 0.5, no gas)
+    "--wall-stiffness-ratio": Range(0.0, 1e6, low_open=True),
+    "--thickness-ratio": Range(0.0, 0.5),
+    "--prestress-ratio": Range(0.0, 1.5, high_open=True),
 }
 #: Values that a range accepts but the model refuses anyway, per option.
 ALSO_BAD: dict[str, tuple[str, ...]] = {
@@ -178,6 +183,46 @@ CONTEXT: dict[tuple[str, str], list[str]] = {
         )
     },
     ("bounce", "--wall-cells"): ["--ball", "thick"],
+    # the shell (--ball shell): its wall on the drop, its spectrum dimensionless or physical
+    ("bounce", "--wall-stiffness-ratio"): ["--ball", "shell"],
+    ("bounce", "--thickness-ratio"): ["--ball", "shell", "--wall-stiffness-ratio", "4"],
+    ("eigen", "--poisson"): ["--ball", "shell"],
+    ("eigen", "--thickness-ratio"): ["--ball", "shell"],
+    ("eigen", "--prestress-ratio"): ["--ball", "shell"],
+    ("eigen", "--wall-stiffness-ratio"): ["--ball", "shell", "--preset", "tennis"],
+    ("eigen", "--youngs-modulus"): [
+        "--ball",
+        "shell",
+        "--preset",
+        "tennis",
+        "--thickness",
+        "0.003",
+    ],
+    ("eigen", "--thickness"): ["--ball", "shell", "--preset", "tennis", "--youngs-modulus", "6e6"],
+    **{
+        ("eigen", flag): ["--ball", "shell", *others]
+        for flag, others in (
+            ("--radius", ["--mass", "0.057", "--pressure", "8e4", "--preset", "tennis"]),
+            ("--mass", ["--radius", "0.033", "--pressure", "8e4", "--preset", "tennis"]),
+            ("--pressure", ["--radius", "0.033", "--mass", "0.057", "--preset", "tennis"]),
+        )
+    },
+}
+#: Options of the base line that do not apply in a context (the drop's --modes is the
+#: Legendre ball's: refused with --backend fem, where the mesh sets the resolution).
+LEFT_OUT: dict[tuple[str, str], tuple[str, ...]] = {
+    ("bounce", "--elements"): ("--modes",),
+    ("bounce", "--order"): ("--modes",),
+}
+#: Cases of the table the command line does not refuse yet, each with what it does instead:
+#: the test holds them apart and fails when one is refused (then delete its entry).
+_SHELL_EIGEN = ("eigen", "--json", "--ball", "shell")
+KNOWN_GAPS: dict[tuple[str, ...], str] = {
+    (*_SHELL_EIGEN, "--thickness-ratio", "1e308"): "OverflowError in ShellParameters.from_ratios",
+    (*_SHELL_EIGEN, "--thickness-ratio", PI_MINUS): "runs: no upper bound h / R <= 0.5",
+    (*_SHELL_EIGEN, "--thickness-ratio", ""): "runs: '' read as h / R = 0",
+    (*_SHELL_EIGEN, "--prestress-ratio", "-1"): "refused naming --wall-stiffness-ratio",
+    (*_SHELL_EIGEN, "--prestress-ratio", ""): "runs: '' read as p = 0",
 }
 #: Options the base line already gives (a bad value replaces the base's).
 PATH_OPTIONS = ("--out", "--plot", "--mesh-file", "--export", "--render")
@@ -216,6 +261,9 @@ def subparsers(parser: argparse.ArgumentParser) -> dict[str, argparse.ArgumentPa
 def with_option(command: str, flag: str, value: str) -> list[str]:
     """The base line of ``command`` with its context for ``flag`` and ``flag value``."""
     argv = list(BASE[command])
+    for left in LEFT_OUT.get((command, flag), ()):
+        i = argv.index(left)
+        del argv[i : i + 2]  # the flag and its value
     context = CONTEXT.get((command, flag), [])
     if command == "plot" and context and not context[0].startswith("-"):
         argv[1] = context[0]  # the plot kind
@@ -647,8 +695,8 @@ NO_LONGER_IGNORED: list[tuple[str, list[str]]] = [
         ["converge", "--study", "modes", "--modes-list", "30,100000,1000000"]
         + ["--out", "{tmp}/c"],
     ),
-    ("--modes", ["liftoff", "--mass-ratio", "0.1", "--modes", "2000"]),
-    ("--modes", ["liftoff", "--mass-ratio", "0.1", "--modes", "2000", "--max-time", "30s"]),
+    # (a body of finite mass on N = 2000 modes, once refused by the event-driven solver's
+    # budget at 1.2 h, is stepped by the contact core in seconds: no longer a refusal)
     ("--modes", ["liftoff", "--preset", "tennis", "--modes", "960", "--max-time", "20s"]),
     ("--radius", ["liftoff", "--radius", "1", "--radius", "2"]),
     # a base value the sweep would replace: the height sets |v0|, E and h set B
@@ -731,7 +779,8 @@ UNIT_SLIPS: list[tuple[list[str], tuple[str, ...]]] = [
     (["bounce", "--modes", "16", "--v0", "4100"], ("did you mean 4.1 m/s (4100 mm/s)",)),
     (["bounce", "--modes", "16", "--radius", "120"], ("R = 120 m", "did you mean 0.12 m (120 mm)")),
     (
-        ["bounce", "--modes", "16", "--mass-ratio", "0.1", "--gap", "5"],
+        # the window's default holds twice the 5 m gap's closing time (156k steps): 50 ms
+        ["bounce", "--modes", "16", "--mass-ratio", "0.1", "--gap", "5", "--t-end", "0.05"],
         ("gap Delta x = 5 m", "did you mean 0.005 m (5 mm)"),
     ),
     (

@@ -190,12 +190,12 @@ def test_local_series_is_the_matrix_exponential(mode):
 
 @pytest.mark.slow
 def test_large_closed_form_contact_agrees_with_the_dense_route(monkeypatch):
-    """121 Legendre modes (243 states): the large route against the dense one."""
+    """121 Legendre modes (243 states): the large route against the dense one (event by event)."""
     case = twoball.Case.preset("basketball", modes=120)
-    fast = legendre_contact(case, BODY)
-    assert 2 * fast.system.size + 3 > events._DENSE_EXPM_MAX
+    fast = legendre_contact(case, BODY, exact=True)
+    assert 2 * fast.motion.system.size + 3 > events._DENSE_EXPM_MAX
     monkeypatch.setattr(events, "_DENSE_EXPM_MAX", 10**6)
-    dense = legendre_contact(case, BODY)
+    dense = legendre_contact(case, BODY, exact=True)
     assert [e.kind for e in fast.history.events] == [e.kind for e in dense.history.events]
     for a, b in zip(fast.history.events, dense.history.events, strict=True):
         assert a.t == pytest.approx(b.t, abs=1e-9)
@@ -206,8 +206,8 @@ def test_large_closed_form_contact_agrees_with_the_dense_route(monkeypatch):
 
 def test_states_of_a_large_system_match_the_dense_exponential():
     case = twoball.Case.preset("basketball", modes=120)
-    report = legendre_contact(case, BODY)
-    system, history = report.system, report.history
+    report = legendre_contact(case, BODY, exact=True)  # the event-driven solution
+    system, history = report.motion.system, report.history
     times = np.linspace(0.0, history.t_end, 9)
     got = modal_states(system, history, times)
     from twoball.modal.contact.trajectory import phases

@@ -50,8 +50,11 @@ def _whole(modes=32, mu=0.101, e12=0.89, gap=0.0, law=MODAL, gamma=GAMMA, e=0.0)
 
 
 def test_cap_average_of_the_legendre_modes_against_closed_form_and_quadrature():
+    """The translation's entry is 1 (the whole cap rises with Z); the modes' are their means."""
     ball = legendre_ball(24, PRESSURISED, ModalRatio(0.1))
-    b = ball.cap_average(0.3)
+    average = ball.cap_average(0.3)
+    assert ball.centre == 0 and average.size == 1 + 24 and average[0] == 1.0
+    b = average[1:]  # n = 0, 2..24
     n = np.array([0, *range(2, 25)])
     np.testing.assert_allclose(b, legendre_cap_averages_closed(0.3, 24)[n], atol=1e-12)
     x, w = leggauss(200)  # a second rule: 200 points on [cos 0.3, 1]
@@ -82,7 +85,8 @@ def test_the_body_is_one_coordinate_and_one_row_with_the_gap_of_the_caps_mean():
     alone, system = floor_system(ball, GAMMA), floor_system(ball, GAMMA, 0.0, body)
     p = system.problem
     assert p.dofs == alone.problem.dofs + 1 and p.count == alone.problem.count + 1
-    assert system.body_coordinate == 1 + ball.modes and system.body_row == ball.points
+    assert system.body_coordinate == ball.modes and system.body_row == ball.points
+    assert ball.modes == 1 + 16  # Z, then n = 0, 2..16: s comes after them
     np.testing.assert_array_equal(p.constraints[: ball.points, :-1], alone.problem.constraints)
     assert p.restitution[-1] == 0.5 and np.all(p.restitution[:-1] == 0.0)
     assert p.load[-1] == pytest.approx(-0.1 * GAMMA)
@@ -92,7 +96,10 @@ def test_the_body_is_one_coordinate_and_one_row_with_the_gap_of_the_caps_mean():
     rng = np.random.default_rng(1)
     q = q + 1e-3 * rng.standard_normal(q.size)
     a = q[system.membrane]
-    expected = q[-1] - q[0] - 1.0 - ball.cap_average(THETA) @ a
+    np.testing.assert_array_equal(q[system.membrane], q[1:-1])  # all but Z and s
+    # s - (Z + 1 + the cap's mean deformation), the caps' means of P_n in closed form
+    n = np.array([0, *range(2, 17)])
+    expected = q[-1] - q[0] - 1.0 - legendre_cap_averages_closed(THETA, 16)[n] @ a
     assert system.body_gap(q) == pytest.approx(expected, abs=1e-15)
     with pytest.raises(twoball.ParameterError):
         BodyOnTop(0.0, ball.cap_average(THETA), THETA)
@@ -116,15 +123,19 @@ def test_a_body_that_never_touches_leaves_the_drop_unchanged():
 
 @pytest.mark.parametrize("mu", [1e-2, 1e-3])
 def test_limit_a_floor_removed_start_at_compression_gives_the_finite_mass_solver(mu):
-    """The body row on the paper's special case against ``twoball.liftoff(body=Body(mu))``.
+    """The body row on the paper's special case against the exact event-driven solver
+    (:func:`~twoball.modal.contact.report.legendre_contact` with ``exact=True``).
 
     Same modes (N = 30, paper's operator, D = 0.13, Lanczos filter), same cap
     (a = 26.2 mm), no floor: v1 to 1e-4 relative at dt = 0.0025 and second
     order in dt (the error falls by >= 3 when dt halves); the last separation
     within 2e-5 s (separations are not localised: first order).
     """
+    from twoball.modal.contact.report import legendre_contact
+
     case = twoball.Case.preset("basketball")
-    ref = twoball.liftoff(case, body=twoball.Body(mu, contact_radius=0.0262))
+    body_si = twoball.Body(mu, contact_radius=0.0262)
+    ref = legendre_contact(case, body_si, reference=False, exact=True)
     body = BodyOnTop(mu, np.zeros(1), THETA)
     errors = []
     for dt in (0.005, 0.0025):
@@ -193,7 +204,9 @@ def test_the_tops_first_response_is_the_degree_one_artefact():
     falling freely from touching it and comes back to it before pi / c.
     """
     ball = legendre_ball(128, PRESSURISED, ModalRatio(0.0))
-    cap = ball.cap_average(THETA)
+    average = ball.cap_average(THETA)
+    assert ball.centre == 0 and average[0] == 1.0  # Z lifts the cap as a whole
+    cap = average[1:]  # the modes' means over the cap
     run = run_drop(floor_system(ball, GAMMA), DropSettings(V0, GAMMA, 0.005, math.pi))
     tr = run.trajectory
     top, rate = tr.q[:, 0] + 1.0 + tr.q[:, 1:] @ cap, tr.v[:, 0] + tr.v[:, 1:] @ cap

@@ -52,7 +52,7 @@ def test_render_draws_the_body_and_its_contact(coupled, tmp_path, monkeypatch):
     assert "IN CONTACT" in scene.caption(0, 1.0) and "in flight" in scene.caption(1, 1.0)
     out = tmp_path / "ball.png"
     result = twoball.render(
-        out, CASE, backend="legendre", mesh=LEVEL_1,
+        out, CASE, backend="legendre", solver=twoball.Superposition(LEVEL_1),
         view=twoball.RenderOptions(size=(320, 240), frames=[0.2e-3]), body=twoball.Body(0.004),
     )  # fmt: skip
     image = iio.imread(out)
@@ -62,7 +62,7 @@ def test_render_draws_the_body_and_its_contact(coupled, tmp_path, monkeypatch):
     assert list(tmp_path.iterdir()) == [out]  # no scratch files left
     gif = tmp_path / "bounce.gif"
     twoball.render(
-        gif, CASE, backend="legendre", mesh=LEVEL_1,
+        gif, CASE, backend="legendre", solver=twoball.Superposition(LEVEL_1),
         view=twoball.RenderOptions(size=(160, 120), frames=3), body=twoball.Body(0.004),
     )  # fmt: skip
     assert iio.imread(gif, index=None).shape[:3] == (3, 120, 160)
@@ -222,9 +222,8 @@ def test_animation_warp_makes_the_wave_visible(tmp_path: Path) -> None:
     assert warp > 5 * AUTO_WARP_SHARE * radius / largest  # ... and no longer sets the warp
     assert warp * wave > 0.04 * radius  # the wave drawn at >= 4 % of R (old: < 1 %)
     assert warp * largest <= AUTO_WARP_LIMIT * radius * (1 + 1e-12)  # the ball never folds
-    result = twoball.render(
-        tmp_path / "ball.gif", mesh=MESH, view=twoball.RenderOptions(size="64x48", frames=FRAMES)
-    )
+    view = twoball.RenderOptions(size="64x48", frames=FRAMES)
+    result = twoball.render(tmp_path / "ball.gif", solver=twoball.Superposition(MESH), view=view)
     assert result.warp == pytest.approx(warp, rel=1e-12)
 
 

@@ -373,7 +373,9 @@ def exports(tmp_path_factory):
     results = {}
     for fmt in FORMATS:
         frames = None if fmt == "vtu" else 3
-        results[fmt] = twoball.export(folder / f"x.{fmt}", mesh=mesh, body=body, frames=frames)
+        out = folder / f"x.{fmt}"
+        solver = twoball.Superposition(mesh)
+        results[fmt] = twoball.export(out, solver=solver, body=body, frames=frames)
     return results
 
 
@@ -488,7 +490,8 @@ def test_export_refuses_a_users_h5_before_any_work(tmp_path, kind):
         before = None
     said: list[str] = []
     with pytest.raises(twoball.ParameterError) as error:
-        twoball.export(tmp_path / "x.xdmf", mesh=MESH, frames=2, progress=said.append)
+        solver = twoball.Superposition(MESH)
+        twoball.export(tmp_path / "x.xdmf", solver=solver, frames=2, progress=said.append)
     assert error.value.name == "out" and "x.h5" in str(error.value)
     assert said == []  # refused before any solve
     assert sorted(p.name for p in tmp_path.iterdir()) == ["x.h5"]
@@ -559,7 +562,7 @@ def test_pvd_refuses_a_frames_folder_it_did_not_write(tmp_path):
     (foreign / "x_0000.vtu").write_text("mine")
     said: list[str] = []
     with pytest.raises(twoball.ParameterError) as error:
-        twoball.export(out, mesh=MESH, frames=2, progress=said.append)
+        twoball.export(out, solver=twoball.Superposition(MESH), frames=2, progress=said.append)
     assert "x_frames-0123456789ab" in str(error.value) and said == []
     assert (foreign / "x_0000.vtu").read_text() == "mine"
     (tmp_path / "x_frames-0123456789ab" / "x_0000.vtu").unlink()
@@ -574,7 +577,8 @@ def test_pvd_refuses_a_frames_folder_it_did_not_write(tmp_path):
 def whole_exports(tmp_path_factory):
     """One whole bounce (basketball and tennis ball, touching, N = 64) in every format."""
     folder = tmp_path_factory.mktemp("whole")
-    report = twoball.bounce(drop=twoball.Drop(modes=64), pair="basketball-tennis")
+    solver = twoball.MoreauJean(twoball.LegendreBall(64))
+    report = twoball.bounce(solver=solver, pair="basketball-tennis")
     mesh = twoball.MeshOptions("sphere", level=1)
     files = {}
     for fmt in FORMATS:

@@ -1,13 +1,12 @@
 """The reproduction's whole-bounce parts: Table 1, the gap curves, the timing (coarse runs).
 
-The parts get a task that runs the whole bounce at N = 16 and two gaps, so that
-the file stays fast; the numbers at the defaults are in docs/whole_bounce.rst.
+The parts' task (:class:`~twoball.verify.sweeps.bounce.BounceTask`) runs the whole
+bounce at N = 16 here, and two gaps, so that the file stays fast; the numbers at
+the defaults are in docs/whole_bounce.rst.
 Independent values: Table 1 as printed and eq. (2.6).
 """
 
 from __future__ import annotations
-
-from dataclasses import replace
 
 import pytest
 from twoball.modal.icm.limits import touching_ratios
@@ -15,22 +14,32 @@ from twoball.modal.icm.table1 import TABLE1
 from twoball.verify.reproduce import driver
 from twoball.verify.reproduce import whole as part
 from twoball.verify.reproduce.common import Context
+from twoball.verify.sweeps import bounce as sweeps
 from twoball.verify.sweeps.parallel import Runner
 
 import twoball
-from twoball._bounce import BounceTask
+
+COARSE = twoball.MoreauJean(twoball.LegendreBall(16))
+TASK = sweeps.BounceTask
 
 
-def coarse(item):
-    case, drop, body, pair = item
-    return BounceTask()((case, replace(drop, modes=16), body, pair))
+def coarse(monitor=None) -> TASK:
+    """The parts' task on N = 16 Legendre modes (the parts build it with their monitor)."""
+    return TASK(solver=COARSE, monitor=monitor)
 
 
 @pytest.fixture()
-def ctx(tmp_path, monkeypatch):
+def told() -> list[str]:
+    """What the runs told the context's monitor."""
+    return []
+
+
+@pytest.fixture()
+def ctx(tmp_path, monkeypatch, told):
     monkeypatch.setattr(part, "GAPS", (0.0, 0.2))
+    monkeypatch.setattr(sweeps, "BounceTask", coarse)
     part._CURVES.clear()
-    return Context(tmp_path, Runner(workers=1), tasks={"bounce": coarse})
+    return Context(tmp_path, Runner(workers=1), monitor=told.append)
 
 
 def test_the_parts_are_registered():
@@ -38,8 +47,9 @@ def test_the_parts_are_registered():
         assert name in driver.PARTS
 
 
-def test_table1_every_row_beside_every_model(ctx):
+def test_table1_every_row_beside_every_model(ctx, told):
     sec = part.part_whole_table1(ctx)
+    assert any(text.startswith("the whole bounce: step") for text in told)  # the runs told it
     rows = sec.data["rows"]
     assert [r["row"] for r in rows] == [1, 2, 3, 4, 5, 6]
     for r in rows:
@@ -101,8 +111,3 @@ def test_gap_curves_and_timing(ctx):
     assert xs.min() == 0.0 and xs.max() == pytest.approx(part.MEASURED_TL_GAP * 1e3)
     near = timing.data["basketball-tissue"][0]
     assert near["t_l_s"] > 0 and near["body_left_first"] is True
-
-
-def test_without_the_faces_task_the_parts_refuse(tmp_path):
-    with pytest.raises(twoball.ParameterError):
-        part.part_whole_table1(Context(tmp_path, Runner(workers=1)))

@@ -34,10 +34,8 @@ def test_dt_study_labels_are_seconds_that_reproduce_the_run() -> None:
     seconds, dimensionless = map(float, SECONDS.fullmatch(row["label"]).groups())
     assert seconds == pytest.approx(0.005 / case.wave_speed, rel=1e-12)  # level 1
     assert dimensionless == 0.005 and row["dt_s"] == pytest.approx(seconds, rel=1e-12)
-    copied = twoball.fem.solve(
-        mesh=twoball.MeshOptions("axisym", elements=100),
-        stepping=twoball.Stepping(scheme="alpha", dt=seconds),
-    )
+    mesh = twoball.MeshOptions("axisym", elements=100)
+    copied = twoball.liftoff(solver=twoball.GeneralizedAlpha(mesh, dt=seconds))
     assert copied.t_liftoff_s == pytest.approx(row["t_liftoff_s"], rel=1e-9)
     assert copied.v_liftoff_m_s == pytest.approx(row["v_liftoff_m_s"], rel=1e-9)
     report = study_markdown(study)
@@ -46,7 +44,7 @@ def test_dt_study_labels_are_seconds_that_reproduce_the_run() -> None:
 
 
 def test_verify_tables_and_checks_state_seconds() -> None:
-    result = twoball.verify(fast=True)
+    result = twoball.check(fast=True)
     text = verify_markdown(result)
     assert "dt = 1.5625e-05 s (c dt = 0.005)" in text and not BARE.search(text)
     names = [c.name for c in result.checks if "alpha" in c.name]

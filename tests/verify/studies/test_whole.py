@@ -11,7 +11,8 @@ def test_a_run_as_the_face_resolves_it():
     import twoball
 
     ours = whole.whole("basketball-tissue", 0.0, size=24)
-    face = twoball.bounce(drop=twoball.Drop(modes=24), pair="basketball-tissue")
+    solver = twoball.MoreauJean(twoball.LegendreBall(24))
+    face = twoball.bounce(solver=solver, pair="basketball-tissue")
     assert ours.v1 == pytest.approx(face.v1_ratio, rel=1e-14)
     assert ours.v2 == pytest.approx(face.v2_ratio, rel=1e-14)
 

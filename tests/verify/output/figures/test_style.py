@@ -143,14 +143,15 @@ def _whole_bounce_figures():
     from twoball.verify.output.figures.bounce import drop_figure, gap_figure, whole_figure
     from twoball.verify.reproduce import whole as whole_part
 
-    drop = twoball.bounce(drop=twoball.Drop(modes=16))
+    coarse = twoball.MoreauJean(twoball.LegendreBall(16))
+    drop = twoball.bounce(solver=coarse)
     yield "plot bounce", drop_figure(drop.result, drop.case, drop.mass_kg, "legendre")
-    whole = twoball.bounce(drop=twoball.Drop(modes=16), pair="basketball-tennis")
+    whole = twoball.bounce(solver=coarse, pair="basketball-tennis")
     icm = (1.0, 2.0)
     yield "plot whole bounce", whole_figure(whole.result, whole.case, whole.mass_kg, "x", icm)
     curves = {}
     for name in whole_part.GAP_PAIRS:
-        runs = [(g, twoball.bounce(drop=twoball.Drop(gap=g, modes=16), pair=name).light())
+        runs = [(g, twoball.bounce(drop=twoball.Drop(gap=g), solver=coarse, pair=name).light())
                 for g in (0.0, 0.005, 0.02, 0.2)]  # fmt: skip
         curves[name] = runs
     measured = {"v1": 1.8, "v2": 0.61, "dx": 0.0}
@@ -295,7 +296,7 @@ def test_fig11b_legend_is_plain_text() -> None:
 
     dampings = {"damping": [0.1, 0.13, 0.3]}
     window = twoball.sweep(dampings).points
-    paper = twoball.sweep(dampings, series=twoball.Series(recontact="paper")).points
+    paper = twoball.sweep(dampings, solver=twoball.ClosedForm(recontact="paper")).points
     figure = fig11b_figure(window, paper, window[1])
     texts = [
         t.get_text()
