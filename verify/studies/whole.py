@@ -30,7 +30,6 @@ from twoball.modal.parameters import Case
 from twoball.modal.stiffness import Stiffness
 from twoball.verify.studies.orders import least_squares_order
 
-from twoball._common.budget import check_all
 from twoball._common.watch import Watch
 
 __all__ = ["TABLES", "Precursor", "WholeRun", "main", "precursor", "whole"]
