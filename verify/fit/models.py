@@ -461,9 +461,9 @@ class BounceModel(_Rows):
 
     def outputs_of(self, report: Any) -> tuple[float, ...]:
         """The measured columns of one run's report (NaN where undefined)."""
-        if report.has_body:
-            ratio = report.v2_ratio
-            v2 = None if ratio is None else ratio * report.case.v0
+        if report.has_body:  # the ball's centre at its last release, as the JSON's v2_m_s
+            body_v2 = report.result.body.v2
+            v2 = None if body_v2 is None else body_v2 * report.case.scalings.velocity
         else:
             v2 = report.v2_m_s
         found = {"v1_m_s": report.v1_m_s, "v2_m_s": v2, "t_liftoff_s": report.t_liftoff_s}

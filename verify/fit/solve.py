@@ -294,7 +294,8 @@ def fit_model(
     dof = count - len(names)
     covariance = _covariance(np.atleast_2d(solution.jac))
     if not problem.absolute:
-        covariance = covariance * (chi2 / dof) if dof > 0 else np.full_like(covariance, np.nan)
+        with np.errstate(invalid="ignore"):  # an undetermined direction stays undetermined
+            covariance = covariance * (chi2 / dof) if dof > 0 else np.full_like(covariance, np.nan)
     errors = {
         name: (
             float(math.sqrt(covariance[k, k]))
