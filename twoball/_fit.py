@@ -160,7 +160,7 @@ def fit(
     >>> rows = {"v0_m_s": [3.0, 4.1, 5.0], "v1_m_s": [2.0, 3.5, 4.4]}
     >>> result = twoball.fit(rows, ["damping"])
     >>> round(result.values["damping"], 3), result.standard_errors["damping"] > 0
-    (0.158, True)
+    (0.142, True)
     """
     from twoball._common.progress import check_progress
     from twoball.modal.damping import with_damping
