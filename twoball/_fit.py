@@ -165,8 +165,14 @@ def fit(
     from twoball._common.progress import check_progress
     from twoball.modal.damping import with_damping
     from twoball.modal.parameters import Case
-    from twoball.verify.fit.models import parameter_names
-    from twoball.verify.fit.solve import check_bounds, check_start, fit_model
+    from twoball.verify.fit.models import parameter_names, start_values
+    from twoball.verify.fit.solve import (
+        check_bootstrap,
+        check_bounds,
+        check_start,
+        check_tolerance,
+        fit_model,
+    )
 
     check_progress(progress)
     given = {"body": body, "drop": drop, "damping": damping}
@@ -176,6 +182,8 @@ def fit(
     if case is not None and not isinstance(case, Case):
         raise ParameterError("case", "a twoball.Case", type(case).__name__)
     limits = check_bounds(names, bounds)
+    check_tolerance(tolerance, model)
+    check_bootstrap(bootstrap)
     if model == "closed":
         for name, value in (("pair", pair), ("body", body), ("drop", drop)):
             if value is not None:
@@ -183,13 +191,20 @@ def fit(
                 raise ParameterError(name, valid + "model bounce)", value)
         case = with_damping(Case.preset("basketball") if case is None else case, damping)
         solver = _closed_solver(solver)
+        from twoball._costs import check_legendre_liftoff
+
+        check_legendre_liftoff(case, solver.t_end)  # the window and the budget, before the file
+        check_start(names, start_values(names, case), start, limits)
         measured = read_measured(data)
         fitted = _closed_model(case, measured, names, solver)
     else:
         case, body, drop, solver = _bounce_options(case, pair, solver, body, drop, damping)
+        if "restitution" in names and body is None:
+            valid = "restitution with a body (body or pair): e12 acts at its impacts"
+            raise ParameterError("params", valid, "restitution")
+        check_start(names, start_values(names, case, body, drop), start, limits)
         measured = read_measured(data)
         fitted = _bounce_model(case, measured, names, solver, body, drop, pair)
-    check_start(names, fitted.start(), start, limits)
     result = fit_model(
         fitted,
         start=start,
@@ -277,6 +292,13 @@ def _bounce_options(
     case = with_damping(Case.preset("basketball") if case is None else case, damping)
     if solver.ball is None:
         solver = MoreauJean(LegendreBall(DEFAULT_FIT_MODES), dt=solver.dt, t_end=solver.t_end)
+    from twoball._bounce import check_bounce_cost
+    from twoball.modal.floor.bounce import bounce_problem
+
+    # the base drop resolved and its budget checked: its options refused before the file
+    check_bounce_cost(
+        bounce_problem(case, drop, ball=solver.ball, body=body, dt=solver.dt, t_end=solver.t_end)
+    )
     return case, body, drop, solver
 
 

@@ -140,7 +140,7 @@ def run(args: argparse.Namespace) -> int:
     start = _pairs(args.start, "start", args.param)
     bounds = _pairs(args.bounds, "bounds", args.param)
     bootstrap = 0 if args.bootstrap is None else args.bootstrap
-    if isinstance(bootstrap, bool) or not isinstance(bootstrap, int):
+    if isinstance(bootstrap, bool) or not isinstance(bootstrap, int) or bootstrap < 0:
         raise ParameterError("bootstrap", "an integer in [0, 10000]", args.bootstrap)
     with Reporter("fit", delay=QUICK) as progress:
         result = twoball.fit(

@@ -50,7 +50,14 @@ from twoball._common.choices import FIT_MODEL_COLUMNS, FIT_PARAMETERS
 from twoball._common.errors import ParameterError
 from twoball._common.monitor import Monitor
 
-__all__ = ["PARAMETERS", "BounceModel", "ClosedModel", "Parameter", "parameter_names"]
+__all__ = [
+    "PARAMETERS",
+    "BounceModel",
+    "ClosedModel",
+    "Parameter",
+    "parameter_names",
+    "start_values",
+]
 
 #: The largest damping ratio a fit tries (the case takes D in [0, 1)).
 DAMPING_MAX = 0.999
@@ -92,6 +99,21 @@ PARAMETERS: dict[str, Parameter] = {
     ),
 }
 assert set(PARAMETERS) == set(FIT_PARAMETERS)
+
+
+def start_values(
+    names: Sequence[str], case: Case, body: Any = None, drop: Any = None
+) -> dict[str, float]:
+    """The start of each fitted parameter: the case's D and c, the body's e12, the drop's e."""
+    out = {}
+    for name in names:
+        if name == "restitution":
+            out[name] = 0.0 if body is None else float(body.restitution)
+        elif name == "floor-restitution":
+            out[name] = 0.0 if drop is None else float(drop.floor_restitution)
+        else:
+            out[name] = float(getattr(case, PARAMETERS[name].field))
+    return out
 
 
 def parameter_names(params: object, model: str) -> tuple[str, ...]:
@@ -248,7 +270,7 @@ class ClosedModel(_Rows):
 
     def start(self) -> dict[str, float]:
         """The case's value of each fitted parameter."""
-        return {name: float(getattr(self.case, PARAMETERS[name].field)) for name in self.parameters}
+        return start_values(self.parameters, self.case)
 
     def row_case(self, row: int, values: Mapping[str, float]) -> Case:
         """Row ``row``'s case at the parameter values (phi_a by one rule for the fit)."""
@@ -420,16 +442,7 @@ class BounceModel(_Rows):
 
     def start(self) -> dict[str, float]:
         """The case's, the body's and the drop's value of each fitted parameter."""
-        out = {}
-        for name in self.parameters:
-            field = PARAMETERS[name].field
-            if name == "restitution":
-                out[name] = float(self.body.restitution)
-            elif name == "floor-restitution":
-                out[name] = float(self.drop.floor_restitution)
-            else:
-                out[name] = float(getattr(self.case, field))
-        return out
+        return start_values(self.parameters, self.case, self.body, self.drop)
 
     def problem(self, row: int, values: Mapping[str, float]) -> Any:
         """Row ``row``'s resolved drop at the parameter values."""

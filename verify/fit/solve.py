@@ -38,7 +38,15 @@ from twoball.verify.fit.result import FitResult, Residuals
 
 from twoball._common.errors import NumericalError, ParameterError
 
-__all__ = ["DEFAULT_TOLERANCE", "MAX_BOOTSTRAP", "check_bounds", "check_start", "fit_model"]
+__all__ = [
+    "DEFAULT_TOLERANCE",
+    "MAX_BOOTSTRAP",
+    "check_bootstrap",
+    "check_bounds",
+    "check_start",
+    "check_tolerance",
+    "fit_model",
+]
 
 #: Relative change of the parameters at which a fit stops (``xtol``), per model.
 DEFAULT_TOLERANCE: dict[str, float] = {"closed": 1e-10, "bounce": 1e-6}
@@ -121,6 +129,30 @@ def check_start(
                 "start", f"inside the bounds of {name}, [{low:g}, {high:g}]", out[name]
             )
     return out
+
+
+def check_tolerance(tolerance: object, model: str) -> float:
+    """The fit's relative tolerance in [1e-15, 1e-2] (None: the model's default)."""
+    if tolerance is None:
+        return DEFAULT_TOLERANCE[model]
+    if (
+        isinstance(tolerance, bool)
+        or not isinstance(tolerance, int | float)
+        or not (1e-15 <= tolerance <= 1e-2)
+    ):
+        raise ParameterError("tolerance", "a number in [1e-15, 1e-2]", tolerance)
+    return float(tolerance)
+
+
+def check_bootstrap(bootstrap: object) -> int:
+    """The number of bootstrap samples, an integer in [0, :data:`MAX_BOOTSTRAP`]."""
+    if (
+        isinstance(bootstrap, bool)
+        or not isinstance(bootstrap, int)
+        or not (0 <= bootstrap <= MAX_BOOTSTRAP)
+    ):
+        raise ParameterError("bootstrap", f"an integer in [0, {MAX_BOOTSTRAP}]", bootstrap)
+    return bootstrap
 
 
 class _Problem:
@@ -253,20 +285,8 @@ def fit_model(
     names = tuple(model.parameters)
     limits = check_bounds(names, bounds)
     x_start = check_start(names, model.start(), start, limits)
-    if tolerance is None:
-        tolerance = DEFAULT_TOLERANCE[model.name]
-    if (
-        isinstance(tolerance, bool)
-        or not isinstance(tolerance, int | float)
-        or not (1e-15 <= tolerance <= 1e-2)
-    ):
-        raise ParameterError("tolerance", "a number in [1e-15, 1e-2]", tolerance)
-    if (
-        isinstance(bootstrap, bool)
-        or not isinstance(bootstrap, int)
-        or not (0 <= bootstrap <= MAX_BOOTSTRAP)
-    ):
-        raise ParameterError("bootstrap", f"an integer in [0, {MAX_BOOTSTRAP}]", bootstrap)
+    tolerance = check_tolerance(tolerance, model.name)
+    check_bootstrap(bootstrap)
     problem = _Problem(model, names, progress)
     count = int(problem.mask.sum())
     if count < len(names):
