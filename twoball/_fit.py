@@ -20,7 +20,7 @@ from typing import Any, TypeVar
 from twoball._common.budget import timed
 from twoball._common.errors import ParameterError, UnknownKeywordError
 
-__all__ = ["DEFAULT_FIT_MODES", "fit", "read_measured"]
+__all__ = ["DEFAULT_FIT_MODES", "fit", "overlay_notes", "read_measured"]
 
 #: Legendre degree of the whole bounce's ball in a fit (each row runs many times;
 #: ``twoball.bounce`` takes 192): a coarse ball keeps a fit to minutes.
@@ -48,13 +48,20 @@ def read_measured(data: Any, name: str = "data") -> Any:
 
     ``name`` is the argument (``data``, ``measured``) the refusals name.
     """
-    from twoball.verify.fit.data import Measurements, read_measurements
+    from twoball.verify.fit.data import as_measurements
 
-    if isinstance(data, Measurements):
-        return data
-    if isinstance(data, Mapping):
-        return Measurements.from_columns(data, name=name)
-    return read_measurements(data, name)
+    return as_measurements(data, name)
+
+
+def overlay_notes(result: Any, measured: Any) -> list[str]:
+    """What the figure of ``result`` (a sweep, a drop) leaves out of the ``measured`` rows.
+
+    The notes the command line prints beside ``--measured``; the figure itself is
+    drawn by ``result.plot(path, measured=...)``.
+    """
+    from twoball.verify.output.figures.measured import overlay_for
+
+    return list(overlay_for(result, read_measured(measured, "measured")).notes)
 
 
 @_keywords

@@ -34,6 +34,7 @@ from twoball._common.errors import ParameterError
 __all__ = [
     "MeasurementError",
     "Measurements",
+    "as_measurements",
     "measured_columns",
     "read_measurements",
 ]
@@ -305,6 +306,18 @@ def read_measurements(path: str | os.PathLike[str], name: str = "data") -> Measu
         [n for n, _ in body],
         header_line=header_line,
     )
+
+
+def as_measurements(data: Any, name: str = "data") -> Measurements:
+    """Measured rows from a CSV path, a mapping of columns or rows already read.
+
+    ``name`` is the argument (``data``, ``measured``) the refusals name.
+    """
+    if isinstance(data, Measurements):
+        return data
+    if isinstance(data, Mapping):
+        return Measurements.from_columns(data, name=name)
+    return read_measurements(data, name)
 
 
 def _delimiter(header: str) -> str:
