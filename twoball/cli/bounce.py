@@ -365,17 +365,18 @@ def run(args: argparse.Namespace) -> int:
 
     plot = None if args.plot is None else check_figure_path(args.plot, "plot")
     export, render, frames = _field_targets(args)
-    from twoball._common.staging import check_distinct
+    from twoball.cli.measured import check_paths, measured_rows, print_overlay
 
     outputs = {"plot": args.plot, "export": args.export, "render": args.render}  # one path each
-    check_distinct(outputs, labels={name: f"--{name}" for name in outputs})
+    check_paths(args, outputs)
+    rows = measured_rows(args)  # --measured: read before the work
     # the solvers say what they do (eigenpairs, the steps of the drop) through the
     # activity of the progress line; quick runs print nothing
     with Reporter("bounce", delay=QUICK) as progress:
         progress(args.backend)
         report = bounce_from_options(args)
         for name, target, write in (
-            ("figure", plot, report.plot),
+            ("figure", plot, lambda out: report.plot(out, measured=rows)),
             ("export", export, lambda out: report.export(out, frames=frames)),
             ("render", render, lambda out: report.render(out, frames=frames)),
         ):
@@ -383,6 +384,8 @@ def run(args: argparse.Namespace) -> int:
                 progress(f"{name} {target.name}")
                 write(target)
     print_notes(list(report.notes))
+    if plot is not None:
+        print_overlay(report, rows)
     print_warnings(report.warnings)
     if args.json:
         print_json(report.as_dict())
@@ -417,6 +420,11 @@ def register(parser: argparse.ArgumentParser) -> None:
         help="also write the figure (.png, .pdf, .svg, ...): floor force, contact angle, the "
         "centre's height and the energy books against time (with a body: heights, both "
         "forces, both velocities, the energy books and every event)",
+    )
+    from twoball.cli.measured import add_measured_option
+
+    add_measured_option(
+        parser, "over the velocities and the contact angle (rows at this drop's |v0| and gap)"
     )
     parser.add_argument(
         "--export",
