@@ -348,6 +348,22 @@ def whole_rows(report: twoball.BounceReport) -> list[tuple[str, str]]:
     for name, out in (data["baselines"] or {}).get("models", {}).items():
         text = out.get("error") or f"{out['v1_ratio']:.4f} / {out['v2_ratio']:.4f}"
         rows.append((f"{name} v1/|v0| / v2/|v0|", text))
+    table1 = data["comparisons"].get("table1")
+    if table1 is not None:  # a pair: Table 1's measurement beside the model's
+        rows += [
+            (
+                f"Table 1 row {table1['row']} measured v1/|v0| / v2/|v0|",
+                f"{table1['measured_v1_ratio']:g} / {table1['measured_v2_ratio']:g} (touching)",
+            ),
+            (
+                "  Table 1's ICM (printed)",
+                f"{table1['icm_printed_v1_ratio']:g} / {table1['icm_printed_v2_ratio']:g}",
+            ),
+            (
+                "  this run (model)",
+                f"{number(table1['model_v1_ratio'])} / {number(table1['model_v2_ratio'])}",
+            ),
+        ]
     return rows
 
 
