@@ -37,7 +37,7 @@ def test_help_documents_the_csv_columns(capsys):
         main(["fit", "--help"])
     out = capsys.readouterr().out
     assert stop.value.code == 0
-    for column in (*MEASURED_COLUMNS, "sigma_<column>"):
+    for column in (*MEASURED_COLUMNS, "sigma_COLUMN"):
         assert f"- {column}: " in out
     for name in FIT_PARAMETERS:
         assert name in out

@@ -248,9 +248,9 @@ def _columns_help() -> str:
     )
     lines.append("")
     items = dict(_choices.MEASURED_COLUMNS)
-    items[_choices.SIGMA_PREFIX + "<column>"] = (
-        "the standard uncertainty of <column> (same unit, > 0); with these, residuals are "
-        "weighted by 1/sigma and the standard errors need no residual variance"
+    items[_choices.SIGMA_PREFIX + "COLUMN"] = (
+        "the standard uncertainty of COLUMN (same unit, > 0; e.g. sigma_v1_m_s); with these, "
+        "residuals are weighted by 1/sigma and the standard errors need no residual variance"
     )
     for name, text in items.items():
         lines += textwrap.wrap(f"- {name}: {text}", 88, subsequent_indent="  ")

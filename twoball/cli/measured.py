@@ -2,7 +2,7 @@
 
 ``--measured FILE.csv`` (``sweep --plot`` and ``bounce --plot``): the rows of a
 measured file, in the columns of ``twoball fit`` (``v0_m_s``, ``gap_m``,
-``phi_a_rad``, ``v1_m_s``, ``v2_m_s``, ``t_liftoff_s``, ``sigma_...``), drawn
+``phi_a_rad``, ``v1_m_s``, ``v2_m_s``, ``t_liftoff_s``, ``sigma_v1_m_s``, ...), drawn
 over the model's curves; ``--csv FILE`` (``sweep``): the table as CSV, one row
 per point.  Both are checked before any work: the measured file is read (and
 refused by file, row and column), the table's path must be writable.
@@ -32,7 +32,7 @@ def add_measured_option(parser: argparse.ArgumentParser, what: str) -> None:
         "--measured",
         metavar="FILE",
         help="with --plot: a CSV of measured rows (the columns of twoball fit: v0_m_s, gap_m, "
-        f"phi_a_rad, v1_m_s, v2_m_s, t_liftoff_s, sigma_...) drawn {what}",
+        f"phi_a_rad, v1_m_s, v2_m_s, t_liftoff_s, sigma_v1_m_s, ...) drawn {what}",
     )
 
 

@@ -183,7 +183,6 @@ class FitResult:
     ) -> FitResult:
         """The result of :func:`~twoball.verify.fit.solve.fit_model`, its notes and warnings."""
         from twoball.verify.fit.data import plausibility_warnings
-        from twoball.verify.fit.models import PARAMETERS
 
         values = {name: float(v) for name, v in zip(names, x, strict=True)}
         warnings = list(plausibility_warnings(model.data))
@@ -232,10 +231,6 @@ class FitResult:
                 "residuals weighted by the sigma_ columns; standard errors from the Jacobian "
                 "at the optimum (absolute: chi^2 has its statistical meaning)"
             )
-        for name in names:
-            p = PARAMETERS[name]
-            if p.unit:
-                notes.append(f"{name} in {p.unit}")
         return cls(
             model=model.name,
             parameters=names,

@@ -15,6 +15,7 @@ from typing import TYPE_CHECKING
 
 import numpy as np
 from twoball.verify.output.figures import new_figure
+from twoball.verify.output.figures.measured import MARKER, MEASURED_COLOUR
 from twoball.verify.output.figures.style import REFERENCE_COLOUR, label, styled
 
 if TYPE_CHECKING:
@@ -108,9 +109,9 @@ def fit_figure(
             x[seen],
             measured[seen, j] * scale,
             yerr=errors,
-            fmt="s",
-            color="C1",
-            ms=4,
+            fmt=MARKER,
+            color=MEASURED_COLOUR,
+            ms=6,
             capsize=2,
             label="measured",
         )
@@ -118,7 +119,9 @@ def fit_figure(
         top.legend(loc="best")
         residual = (measured[:, j] - predicted[:, j]) * scale
         bottom.axhline(0.0, color=REFERENCE_COLOUR, lw=0.8)
-        bottom.errorbar(x[seen], residual[seen], yerr=errors, fmt="s", color="C1", ms=4, capsize=2)
+        bottom.errorbar(
+            x[seen], residual[seen], yerr=errors, fmt=MARKER, color=MEASURED_COLOUR, ms=5, capsize=2
+        )
         bottom.set_ylabel(label(f"measured $-$ model, {symbol}", unit))
         bottom.set_xlabel(xlabel)
         if xlabel == "row":
