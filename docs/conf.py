@@ -100,5 +100,18 @@ def _shell_figures(app) -> None:  # noqa: ANN001
     module.main()
 
 
+def _fit_figures(app) -> None:  # noqa: ANN001
+    """Draw docs/_static/fit/drops_fit.png (docs/fit.rst) anew at every build."""
+    import importlib.util
+
+    spec = importlib.util.spec_from_file_location(
+        "make_fit_figures", Path(__file__).resolve().parent / "make_fit_figures.py"
+    )
+    module = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(module)
+    module.main()
+
+
 def setup(app):  # noqa: ANN001, ANN201
     app.connect("builder-inited", _shell_figures)
+    app.connect("builder-inited", _fit_figures)

@@ -13,7 +13,8 @@ each name below imports its module on first use::
 
 Public names (``twoball.__all__``): the verbs :func:`liftoff`, :func:`bounce`
 (the lower ball dropped on the floor, alone or with a body), :func:`sweep`,
-:func:`export`, :func:`render`, :func:`plot`, :func:`converge`, :func:`check`
+:func:`fit` (model parameters fitted to measured rows), :func:`export`,
+:func:`render`, :func:`plot`, :func:`converge`, :func:`check`
 (every backend against the closed form), :func:`reproduce`, :func:`icm`,
 :func:`table1`, :func:`report`, ``fem.eigen``; the solvers :class:`ClosedForm`,
 :class:`Superposition`, :class:`GeneralizedAlpha`, :class:`MoreauJean`; the
@@ -87,6 +88,8 @@ _NAMES: dict[str, str | tuple[str, str]] = {
     "BounceSweep": "twoball.verify.sweeps.bounce",
     "sweep": "twoball._sweep",
     "SweepResult": "twoball._sweep",
+    "fit": "twoball._fit",
+    "FitResult": "twoball.verify.fit.result",
     "converge": "twoball._studies",
     "check": "twoball._studies",
     "export": "twoball._fields",

@@ -257,12 +257,17 @@ class BounceReport(Numbers):
     """
 
     # --- files ------------------------------------------------------------------------
-    def plot(self, out: str | os.PathLike[str], *, dpi: float | None = None) -> Path:
+    def plot(
+        self, out: str | os.PathLike[str], *, dpi: float | None = None, measured: Any = None
+    ) -> Path:
         """Figure of the drop: floor force, contact angle, centre height, energy books.
 
         With a body (the whole bounce): heights, both contact forces, both
         velocities (with the ICM's of :attr:`icm_solver`), the energy books, every
         event marked.  ``out``'s suffix chooses the format (``.png``, ``.pdf``, ...).
+        ``measured`` (a CSV path or a mapping of columns, as :func:`twoball.fit`
+        reads them): the rows at this drop's ``|v0|`` (and gap) drawn over it,
+        v1 and v2 on the velocities, the lift-off time, phi_a on the contact angle.
         """
         from twoball.verify.output.figures import save_figure
         from twoball.verify.output.figures.bounce import drop_figure, whole_figure
@@ -275,6 +280,11 @@ class BounceReport(Numbers):
             figure = whole_figure(self.result, self.case, self.mass_kg, title, lines)
         else:
             figure = drop_figure(self.result, self.case, self.mass_kg, title)
+        if measured is not None:
+            from twoball._fit import read_measured
+            from twoball.verify.output.figures.measured import draw_overlay, overlay_for
+
+            draw_overlay(figure, overlay_for(self, read_measured(measured, "measured")))
         return save_figure(figure, out, "plot", dpi)
 
     def _require_history(self) -> None:

@@ -51,10 +51,14 @@ class SweepResult:
     provenance: dict[str, Any] | None = field(default=None, compare=False, repr=False)
     values: tuple[Any, ...] = field(default=(), compare=False, repr=False)
 
-    def plot(self, out: str | os.PathLike[str]) -> Path:
+    def plot(self, out: str | os.PathLike[str], *, measured: Any = None) -> Path:
         r"""Write the figure of the sweep: v_l / \|v0\| and t_l against the parameter, or heat maps.
 
         ``out``'s suffix chooses the format (``.png``, ``.pdf``, ``.svg``, ...).
+        ``measured`` (a CSV path or a mapping of columns, as :func:`twoball.fit`
+        reads them) draws the user's points over a one-parameter sweep: ``v1_m_s``
+        over ``|v0|`` on the ratio's panel, ``t_liftoff_s`` on the time's (at
+        their ``v0_m_s`` in a v0 sweep, else as lines).
         """
         from twoball._plot import check_figure_path
         from twoball.verify.output.figures.sweep import plot_sweep
@@ -62,7 +66,33 @@ class SweepResult:
 
         target = check_figure_path(out, "out")
         grid = SweepGrid(self.parameters, tuple(self.values))
-        return plot_sweep(grid, self.points, target)
+        if measured is None:
+            return plot_sweep(grid, self.points, target)
+        from twoball._fit import read_measured
+        from twoball.verify.output.figures import REPORT_DPI, save_figure
+        from twoball.verify.output.figures.measured import draw_overlay, overlay_for
+        from twoball.verify.output.figures.sweep import sweep_figure
+
+        if len(self.parameters) != 1:
+            valid = "given with a sweep of one parameter (a grid of two draws heat maps)"
+            raise ParameterError("measured", valid, "a grid of " + " x ".join(self.parameters))
+        data = read_measured(measured, "measured")
+        figure = sweep_figure(grid, self.points)
+        draw_overlay(figure, overlay_for(self, data))
+        return save_figure(figure, target, "plot", dpi=REPORT_DPI)
+
+    def to_csv(self, path: str | os.PathLike[str]) -> Path:
+        """Write the table as CSV: one row per point, SI columns with the unit in the name.
+
+        The swept parameters first, then ``v0_m_s``, ``radius_m``,
+        ``wave_speed_1_s``, ``damping``, ``modes``, ``phi_a_rad``, ``phi_a_source``,
+        ``lifted``, ``t_liftoff_s``, ``v_liftoff_m_s``, ``ratio``, ``warnings``,
+        ``error`` (blank: no value).  Returns the path written.
+        """
+        from twoball.verify.sweeps.table import liftoff_table, write_table
+
+        header, rows = liftoff_table(self.points, self.parameters)
+        return write_table(header, rows, path, "path")
 
     @property
     def phi_a_rule(self) -> str:
@@ -167,8 +197,8 @@ def sweep(
     drop : Drop, optional
         Sweep the drop on the floor, or the whole bounce with ``body`` or
         ``pair``, instead (:func:`twoball.bounce` at every point): one
-        parameter, ``v0``, ``drop_height``, ``gap`` or ``mass_ratio``; returns a
-        :class:`~twoball.BounceSweep`.
+        parameter, ``v0``, ``drop_height``, ``gap``, ``mass_ratio`` or
+        ``damping``; returns a :class:`~twoball.BounceSweep`.
     pair : str, optional
         With ``drop``: a Table 1 pair (:func:`twoball.bounce`'s ``pair``).
 

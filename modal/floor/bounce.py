@@ -199,7 +199,9 @@ def bounce_problem(
     )
 
 
-def simulate(problem: BounceProblem, monitor: Monitor | None = None) -> BounceReport:
+def simulate(
+    problem: BounceProblem, monitor: Monitor | None = None, *, baselines: bool = True
+) -> BounceReport:
     """Run a resolved drop or whole bounce and report it in SI.
 
     Parameters
@@ -208,6 +210,9 @@ def simulate(problem: BounceProblem, monitor: Monitor | None = None) -> BounceRe
         From :func:`bounce_problem`.
     monitor : Monitor, optional
         Told of the ball's build and of every step (it may stop the run by raising).
+    baselines : bool
+        With a body, also the lumped models of §1(b) for the same drop (default);
+        False leaves them out (``baselines`` None: a fit's many runs need none).
     """
     from twoball.modal.floor.drop import DropSettings, run_drop
     from twoball.modal.floor.system import BodyOnTop, floor_system
@@ -251,8 +256,12 @@ def simulate(problem: BounceProblem, monitor: Monitor | None = None) -> BounceRe
     extra: dict[str, Any] = {}
     if whole is not None:
         warnings += _body_warnings(result, whole, ball)
-        baselines = _baselines(case, drop, whole, problem.inputs, result, monitor, problem.mass_kg)
-        extra = {"whole": whole, "baselines": baselines}
+        lumped = None
+        if baselines:
+            lumped = _baselines(
+                case, drop, whole, problem.inputs, result, monitor, problem.mass_kg
+            )
+        extra = {"whole": whole, "baselines": lumped}
     return BounceReport(
         case,
         drop,

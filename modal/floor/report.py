@@ -379,7 +379,13 @@ class BounceReport:
         }
 
     def comparisons(self) -> dict[str, Any]:
-        """The drop beside eq. (3.7), pressure x area and the measurements (SI)."""
+        """The drop beside eq. (3.7), pressure x area and the measurements (SI).
+
+        A Table 1 pair adds ``table1``: the row's measured ``v1/|v0|`` and
+        ``v2/|v0|`` and its printed ICM beside this run's (Table 1's drops are
+        touching, Delta x -> 0; the ICM and the lumped baselines of this drop are
+        ``icm_solver`` and ``baselines``).
+        """
         from twoball.modal.floor.references import MEASURED_COMPRESSION, TABLE1_E2
         from twoball.modal.initial import phi_a_from_v0
         from twoball.modal.presets import MEASURED
@@ -399,7 +405,31 @@ class BounceReport:
             out["table2_phi_a_rad"] = measured.phi_a
         if case.preset_name in TABLE1_E2:
             out["table1_e2"] = list(TABLE1_E2[case.preset_name])
+        pair = None if self.whole is None else self.whole.pair
+        if pair is not None:
+            out["table1"] = self._table1(pair)
         return out
+
+    def _table1(self, pair: Any) -> dict[str, Any]:
+        """Table 1's row of ``pair``: measured and printed ICM ratios beside this run's."""
+        row = pair.table1
+        v1, v2 = self.v1_ratio, self.v2_ratio
+        note = "Table 1's drops are touching (Delta x -> 0); ratios over |v0|"
+        if self.drop.gap > 0.0:
+            note += f"; this run's gap is {self.drop.gap * 1e3:g} mm"
+        return {
+            "row": pair.row,
+            "pair": pair.name,
+            "measured_v1_ratio": row.measured_v1,
+            "measured_v2_ratio": row.measured_v2,
+            "icm_printed_v1_ratio": row.icm_v1,
+            "icm_printed_v2_ratio": row.icm_v2,
+            "model_v1_ratio": v1,
+            "model_v2_ratio": v2,
+            "model_minus_measured_v1": None if v1 is None else v1 - row.measured_v1,
+            "model_minus_measured_v2": None if v2 is None else v2 - row.measured_v2,
+            "note": note,
+        }
 
     def as_dict(self) -> dict[str, Any]:
         """JSON-ready dictionary (SI; keys end in their unit)."""

@@ -107,6 +107,7 @@ RANGES: dict[str, Range] = {
     "--wall-stiffness-ratio": Range(0.0, 1e6, low_open=True),
     "--thickness-ratio": Range(0.0, 0.5),
     "--prestress-ratio": Range(0.0, 1.5, high_open=True),
+    "--bootstrap": Range(0, 10_000, integer=True),
 }
 #: Values that a range accepts but the model refuses anyway, per option.
 ALSO_BAD: dict[str, tuple[str, ...]] = {
@@ -129,6 +130,8 @@ BASE: dict[str, list[str]] = {
     "render": ["render", "--level", "1", "--out", "{tmp}/x.png"],
     "plot": ["plot", "pole", "--level", "1", "--out", "{tmp}/p.png"],
     "reproduce": ["reproduce", "--only", "table1", "--out", "{tmp}/rep"],
+    # an empty data file: every option is refused before the file is read
+    "fit": ["fit", "--data", "{tmp}/a-file", "--param", "damping", "--json"],
 }
 #: Options that need a context to apply (the value is then checked for itself).
 CONTEXT: dict[tuple[str, str], list[str]] = {
@@ -207,6 +210,12 @@ CONTEXT: dict[tuple[str, str], list[str]] = {
             ("--pressure", ["--radius", "0.033", "--mass", "0.057", "--preset", "tennis"]),
         )
     },
+    # twoball fit: the whole bounce's options checked with --model bounce
+    ("fit", "--mass-ratio"): ["--model", "bounce"],
+    **{
+        ("fit", flag): ["--model", "bounce", "--mass-ratio", "0.05"]
+        for flag in ("--gap", "--contact-radius", "--restitution", "--floor-restitution", "--dt")
+    },
 }
 #: Options of the base line that do not apply in a context (the drop's --modes is the
 #: Legendre ball's: refused with --backend fem, where the mesh sets the resolution).
@@ -225,7 +234,16 @@ KNOWN_GAPS: dict[tuple[str, ...], str] = {
     (*_SHELL_EIGEN, "--prestress-ratio", ""): "runs: '' read as p = 0",
 }
 #: Options the base line already gives (a bad value replaces the base's).
-PATH_OPTIONS = ("--out", "--plot", "--mesh-file", "--export", "--render")
+PATH_OPTIONS = (
+    "--out",
+    "--plot",
+    "--mesh-file",
+    "--export",
+    "--render",
+    "--data",
+    "--measured",
+    "--csv",
+)
 
 
 def numeric_options(parser: argparse.ArgumentParser) -> dict[str, list[str]]:
@@ -723,6 +741,25 @@ NO_LONGER_IGNORED: list[tuple[str, list[str]]] = [
     ("--render", ["bounce", "--plot", "{tmp}/same.png", "--render", "{tmp}/same.png"]),
 ]
 NOT_APPLICABLE.extend(NO_LONGER_IGNORED)
+
+_FIT = ["fit", "--data", "{tmp}/a-file", "--param", "damping"]
+#: twoball fit: its own options and the file, each refused naming the flag.
+FIT_REFUSALS: list[tuple[str, list[str]]] = [
+    ("--data", _FIT),  # an empty file
+    ("--data", ["fit", "--data", "{tmp}", "--param", "damping"]),  # a folder
+    ("--data", ["fit", "--data", "{tmp}/none.csv", "--param", "damping"]),
+    ("--param", [*_FIT, "--param", "restitution"]),  # the closed form has no e12
+    ("--model", [*_FIT, "--model", "whole"]),
+    ("--pair", [*_FIT, "--pair", "tennis-coin"]),  # a pair needs the whole bounce
+    ("--pair", [*_FIT, "--model", "bounce", "--pair", "bogus"]),
+    ("--phi-a", [*_FIT, "--model", "bounce", "--phi-a", "2.6"]),
+    ("--energy", [*_FIT, "--model", "bounce", "--mass-ratio", "0.1", "--energy", "both"]),
+    ("--start", [*_FIT, "--start", "damping=2"]),
+    ("--start", [*_FIT, "--start", "wave-speed=300"]),
+    ("--bounds", [*_FIT, "--bounds", "damping=0.5:0.1"]),
+    ("--bounds", [*_FIT, "--bounds", "damping=0.1"]),
+]
+NOT_APPLICABLE.extend(FIT_REFUSALS)
 
 #: Refusals whose line must also say the right value or leave out a wrong one:
 #: (argv, words the line holds, words it must not hold).

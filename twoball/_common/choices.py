@@ -17,6 +17,9 @@ __all__ = [
     "DEFAULT_SIZE",
     "DPI",
     "ENERGY_OPTIONS",
+    "FIT_MODELS",
+    "FIT_MODEL_COLUMNS",
+    "FIT_PARAMETERS",
     "FIELD_BACKENDS",
     "FILTER_KINDS",
     "FORMATS",
@@ -24,11 +27,13 @@ __all__ = [
     "HORIZONS",
     "LEVEL_RANGE",
     "MAX_MASS_RATIO",
+    "MEASURED_COLUMNS",
     "MESH_KINDS",
     "REPRODUCTION_DIR",
     "REPRODUCTION_PARTS",
     "REPRODUCTION_REPORT",
     "ROUTES",
+    "SIGMA_PREFIX",
     "SPHERE_KINDS",
     "STANDARD_GRAVITY",
     "STUDIES",
@@ -115,3 +120,36 @@ REPRODUCTION_PARTS: tuple[str, ...] = (
 #: The reproduction's folder and report.
 REPRODUCTION_DIR = "twoball-reproduction"
 REPRODUCTION_REPORT = "reproduction.md"
+
+# --- measured data: twoball fit, --measured overlays ------------------------------------
+#: The columns of a measured CSV file (SI; the unit is in the name) and what each holds.
+MEASURED_COLUMNS: dict[str, str] = {
+    "v0_m_s": "input: the impact speed |v0| [m/s] (blank or absent: the case's)",
+    "phi_a_rad": "input, closed form: the contact angle phi_a [rad] (blank or absent: the "
+    "case's rule)",
+    "gap_m": "input, whole bounce: the gap Delta x [m] between the body and the ball's top "
+    "(blank or absent: the drop's)",
+    "v1_m_s": "measured: the body's speed v1 [m/s] on leaving the ball, upwards (the closed "
+    "form: the lift-off velocity v_l)",
+    "v2_m_s": "measured, bounce: the ball's rebound speed v2 [m/s], upwards",
+    "t_liftoff_s": "measured: the body's lift-off time [s] after the ball's first touch of "
+    "the floor",
+}
+#: Prefix of an uncertainty column: ``sigma_v1_m_s`` holds the standard uncertainty of
+#: ``v1_m_s`` (same unit, > 0); with one, residuals are weighted by 1/sigma.
+SIGMA_PREFIX = "sigma_"
+#: The models of ``twoball fit``: the closed-form lift-off (eqs. (3.12)-(3.16)) or the
+#: whole bounce (Moreau-Jean on a Legendre ball).
+FIT_MODELS: tuple[str, ...] = ("closed", "bounce")
+#: The input and the measured columns each model can use.
+FIT_MODEL_COLUMNS: dict[str, tuple[tuple[str, ...], tuple[str, ...]]] = {
+    "closed": (("v0_m_s", "phi_a_rad"), ("v1_m_s", "t_liftoff_s")),
+    "bounce": (("v0_m_s", "gap_m"), ("v1_m_s", "v2_m_s", "t_liftoff_s")),
+}
+#: Fittable parameters (command-line names), what they are and the models that fit them.
+FIT_PARAMETERS: dict[str, str] = {
+    "damping": "the modal damping ratio D, eq. (3.14) (closed, bounce)",
+    "wave-speed": "the angular wave speed c [1/s], eq. (3.8) (closed, bounce)",
+    "restitution": "Newton's e12 at the body's impacts on the ball (bounce, with a body)",
+    "floor-restitution": "Newton's e at the floor points (bounce)",
+}

@@ -392,6 +392,22 @@ def whole_rows(report: twoball.BounceReport) -> list[tuple[str, str]]:
     for name, out in (data["baselines"] or {}).get("models", {}).items():
         text = out.get("error") or f"{out['v1_ratio']:.4f} / {out['v2_ratio']:.4f}"
         rows.append((f"{name} v1/|v0| / v2/|v0|", text))
+    table1 = data["comparisons"].get("table1")
+    if table1 is not None:  # a pair: Table 1's measurement beside the model's
+        rows += [
+            (
+                f"Table 1 row {table1['row']} measured v1/|v0| / v2/|v0|",
+                f"{table1['measured_v1_ratio']:g} / {table1['measured_v2_ratio']:g} (touching)",
+            ),
+            (
+                "  Table 1's ICM (printed)",
+                f"{table1['icm_printed_v1_ratio']:g} / {table1['icm_printed_v2_ratio']:g}",
+            ),
+            (
+                "  this run (model)",
+                f"{number(table1['model_v1_ratio'])} / {number(table1['model_v2_ratio'])}",
+            ),
+        ]
     return rows
 
 
@@ -440,17 +456,18 @@ def run(args: argparse.Namespace) -> int:
     view = getattr(args, "view", None) or "surface"
     if view != "surface" and export is None and render is None:
         raise ParameterError("view", "given with --export or --render", view)
-    from twoball._common.staging import check_distinct
+    from twoball.cli.measured import check_paths, measured_rows, print_overlay
 
     outputs = {"plot": args.plot, "export": args.export, "render": args.render}  # one path each
-    check_distinct(outputs, labels={name: f"--{name}" for name in outputs})
+    check_paths(args, outputs)
+    rows = measured_rows(args)  # --measured: read before the work
     # the solvers say what they do (eigenpairs, the steps of the drop) through the
     # activity of the progress line; quick runs print nothing
     with Reporter("bounce", delay=QUICK) as progress:
         progress(args.backend)
         report = bounce_from_options(args)
         for name, target, write in (
-            ("figure", plot, report.plot),
+            ("figure", plot, lambda out: report.plot(out, measured=rows)),
             ("export", export, lambda out: report.export(out, frames=frames, view=view)),
             ("render", render, lambda out: report.render(out, frames=frames, view=view)),
         ):
@@ -458,6 +475,8 @@ def run(args: argparse.Namespace) -> int:
                 progress(f"{name} {target.name}")
                 write(target)
     print_notes(list(report.notes))
+    if plot is not None:
+        print_overlay(report, rows)
     print_warnings(report.warnings)
     if args.json:
         print_json(report.as_dict())
@@ -496,6 +515,11 @@ def register(parser: argparse.ArgumentParser) -> None:
         help="also write the figure (.png, .pdf, .svg, ...): floor force, contact angle, the "
         "centre's height and the energy books against time (with a body: heights, both "
         "forces, both velocities, the energy books and every event)",
+    )
+    from twoball.cli.measured import add_measured_option
+
+    add_measured_option(
+        parser, "over the velocities and the contact angle (rows at this drop's |v0| and gap)"
     )
     parser.add_argument(
         "--export",

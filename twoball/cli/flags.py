@@ -76,6 +76,15 @@ FLAGS: dict[str, str] = {
     "modes_list": "--modes-list",
     "thorough": "--thorough",
     "fast": "--fast",
+    # fits to measured data (twoball fit) and their overlays
+    "data": "--data",
+    "params": "--param",
+    "model": "--model",
+    "start": "--start",
+    "bounds": "--bounds",
+    "bootstrap": "--bootstrap",
+    "measured": "--measured",
+    "csv": "--csv",
     # resource limits
     "max_memory": "--max-memory",
     "max_time": "--max-time",

@@ -38,6 +38,7 @@ COMMANDS: dict[str, str] = {
     "whole two-ball bounce with a body on top (--mass-ratio, --pair; v1, v2, timing)",
     "eigen": "finite-element eigenvalues against l (l + 1)",
     "sweep": "lift-off over a range of one parameter, or a grid of two",
+    "fit": "fit model parameters (damping, wave speed, e12) to a measured CSV file",
     "icm": "independent collision model (§2), Table 1",
     "reproduce": "recompute the paper's figures and numbers beside ours (PNG + reproduction.md)",
     "export": "write u, u_t, u_tt of both backends on the sphere mesh (XDMF, PVD or VTU)",

@@ -21,6 +21,14 @@ from twoball.cli.console import (
     print_warnings,
 )
 from twoball.cli.contact_options import add_contact_options, body_options
+from twoball.cli.measured import (
+    add_csv_option,
+    add_measured_option,
+    check_paths,
+    csv_target,
+    measured_rows,
+    print_overlay,
+)
 from twoball.cli.solver_options import closed_form, series_fields
 from twoball.cli.values import integer
 from twoball.cli.values import number as number_value
@@ -103,6 +111,7 @@ def run(args: argparse.Namespace) -> int:
             valid = f"left out with --mass when --param {name} is swept ({reason})"
             raise ParameterError("pressure", valid, args.pressure)
     plot = None if args.plot is None else check_figure_path(args.plot, "plot")
+    rows, table = _outputs(args, len(grid.parameters))
     base = case_from_options(args)
     values = dict(zip(grid.parameters, grid.values, strict=True))
     body = _sweep_body(args, grid.parameters)
@@ -134,14 +143,33 @@ def run(args: argparse.Namespace) -> int:
     print_notes(sweep_notes(points))
     print_warnings(sweep_warnings(points, grid.parameters))
     if plot is not None:
-        result.plot(plot)
+        result.plot(plot, measured=rows)
+        print_overlay(result, rows)
+    if table is not None:
+        result.to_csv(table)
     if args.json:
         print_json(attach([p.as_dict() for p in points], result.provenance))
     else:
         print_sweep(grid, points)
-        if plot is not None:
-            console().print(f"plot written to {plot}")
+        _written(plot, table)
     return 0
+
+
+def _outputs(args: argparse.Namespace, axes: int = 1) -> tuple[Any, Any]:
+    """``--measured`` (read) and ``--csv`` (its path), checked before any work."""
+    check_paths(args, {"plot": args.plot, "csv": args.csv})
+    if args.measured is not None and axes != 1:
+        valid = "given with a sweep of one parameter (a grid of two draws heat maps)"
+        raise ParameterError("measured", valid, args.measured)
+    return measured_rows(args), csv_target(args)
+
+
+def _written(plot: Any, table: Any) -> None:
+    """Say which files were written (the table's output)."""
+    if plot is not None:
+        console().print(f"plot written to {plot}")
+    if table is not None:
+        console().print(f"table written to {table}")
 
 
 def workers(args: argparse.Namespace) -> int | str | None:
@@ -160,6 +188,7 @@ def _run_bounce(args: argparse.Namespace) -> int:
 
     for name in args.param:  # the base value the swept one replaces (a height sets |v0|)
         replaced = {"v0": "v0", "gap": "gap", "mass-ratio": "mass_ratio", "drop-height": "v0"}
+        replaced["damping"] = "damping"
         field = replaced.get(name)
         if field is not None and getattr(args, field, None) is not None:
             raise ParameterError(
@@ -168,6 +197,7 @@ def _run_bounce(args: argparse.Namespace) -> int:
     if len(args.values) != len(args.param):
         raise ParameterError("values", "given once per param, in the same order", args.values)
     plot = None if args.plot is None else check_figure_path(args.plot, "plot")
+    rows, csv_path = _outputs(args)
     args.drop_height = None
     if args.pair is not None and args.preset == "basketball":
         args.preset = None  # the default: the pair sets the lower ball
@@ -200,13 +230,17 @@ def _run_bounce(args: argparse.Namespace) -> int:
     print_notes(list(dict.fromkeys(n for r in done for n in r.notes)))
     print_warnings(bounce_sweep_warnings(result))
     if plot is not None:
-        result.plot(plot)
+        result.plot(plot, measured=rows)
+        print_overlay(result, rows)
+    if csv_path is not None:
+        result.to_csv(csv_path)
     if args.json:
         data = result.as_dict()
         print_json(attach(data["points"], result.provenance))
         return 0
-    if result.parameter in ("gap", "mass-ratio"):
+    if result.parameter in ("gap", "mass-ratio") or any(r.has_body for r in done):
         _print_whole(result)
+        _written(plot, csv_path)
         return 0
     table = Table(title=f"Drops on the floor against {result.parameter}")
     for column in (result.parameter, "|v0| [m/s]", "t_c [ms]", "e2", "phi_a,max", "flat. [mm]"):
@@ -224,6 +258,7 @@ def _run_bounce(args: argparse.Namespace) -> int:
             number(report.flattening_max_m, 1e3, 3),
         )
     console().print(table)
+    _written(plot, csv_path)
     return 0
 
 
@@ -365,8 +400,8 @@ def register(parser: argparse.ArgumentParser) -> None:
         required=True,
         action="append",
         choices=(*_choices.SWEEP_PARAMETERS, "drop-height", "gap"),
-        help="swept parameter; give twice for a 2-D grid (--bounce: v0, drop-height, gap or "
-        "mass-ratio, once)",
+        help="swept parameter; give twice for a 2-D grid (--bounce: v0, drop-height, gap, "
+        "mass-ratio or damping, once)",
     )
     parser.add_argument(
         "--bounce",
@@ -404,6 +439,8 @@ def register(parser: argparse.ArgumentParser) -> None:
         help="also write a figure (.png, .pdf, .svg, ... by the suffix): v_l/|v0| and t_l "
         "against the parameter (1-D) or as two heat maps (2-D)",
     )
+    add_measured_option(parser, "over the model's curves (a sweep of one parameter)")
+    add_csv_option(parser)
     run_group = parser.add_argument_group("execution")
     run_group.add_argument(
         "--workers",

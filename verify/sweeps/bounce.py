@@ -43,6 +43,7 @@ BOUNCE_PARAMETERS: dict[str, str] = {
     "drop-height": "drop_height",
     "gap": "gap",
     "mass-ratio": "mass_ratio",
+    "damping": "damping",
 }
 
 
@@ -70,8 +71,15 @@ def bounce_points(
     ``gap`` needs a body (or a pair, which the face resolves: ``body`` is then
     None and the gap is the drop's); ``mass-ratio`` replaces the body's mu (a
     body of that mu with the default contact radius and no restitution when
-    none is given).
+    none is given); ``damping`` the case's ratio D (refused with a Rayleigh law
+    of its own alpha and beta, which has no D).
     """
+    if parameter == "damping":
+        law = case.rayleigh
+        if law is not None and not law.fitted:
+            valid = "a parameter the case's damping law reads (a Rayleigh law of its own alpha, "
+            raise ParameterError("param", valid + "beta has no D)", "damping")
+        return [(case.derive(damping=float(v)), drop, body) for v in values]
     if parameter == "v0":
         if drop.drop_height is not None:
             raise ParameterError("drop_height", "left out when v0 is swept", drop.drop_height)
@@ -97,12 +105,12 @@ def bounce_points(
 
 @dataclass(frozen=True)
 class BounceSweep:
-    """Drops over one parameter (``v0``, ``drop-height``, ``gap`` or ``mass-ratio``), in SI.
+    """Drops over one parameter (``v0``, ``drop-height``, ``gap``, ``mass-ratio``, ``damping``).
 
     Attributes
     ----------
     parameter : str
-        ``v0``, ``drop-height``, ``gap`` or ``mass-ratio``.
+        ``v0``, ``drop-height``, ``gap``, ``mass-ratio`` or ``damping``.
     values : tuple of float
         Its values (m/s, m, m or none).
     reports : list of BounceReport or None
@@ -137,23 +145,68 @@ class BounceSweep:
             points.append(data)
         return {"parameter": self.parameter, "points": points, "provenance": self.provenance}
 
-    def plot(self, out: str | os.PathLike[str], *, dpi: float | None = None) -> Path:
+    def plot(
+        self, out: str | os.PathLike[str], *, dpi: float | None = None, measured: Any = None
+    ) -> Path:
         """phi_a,max and the flattening against |v0|, with eq. (3.7), pressure x area and the
-        measurements (Table 2; 3.07 mm per m/s); for a gap or mass-ratio sweep, v1/|v0|,
-        v2/|v0| and the lift-off time against it with the ICM and the lumped baselines."""
+        measurements (Table 2; 3.07 mm per m/s); for a gap or mass-ratio sweep (or a damping
+        sweep with a body), v1/|v0|, v2/|v0| and the lift-off time against it with the ICM
+        and the lumped baselines; for a damping sweep of the ball alone, e2, the contact time
+        and phi_a,max against D.
+
+        ``measured`` (a CSV path or a mapping of columns, as :func:`twoball.fit` reads
+        them) draws the user's points on the panels of the same quantities
+        (:mod:`twoball.verify.output.figures.measured`).
+        """
         from twoball.verify.output.figures import save_figure
         from twoball.verify.output.figures.bounce import speeds_figure
 
         done = [r for r in self.reports if r is not None]
         if not done:
             raise ParameterError("values", "at least one drop that ran, to plot", None)
-        if self.parameter in ("gap", "mass-ratio"):
+        data = None
+        if measured is not None:
+            from twoball.verify.fit.data import as_measurements
+
+            data = as_measurements(measured, "measured")
+        pairs = [(v, r) for v, r in zip(self.values, self.reports, strict=True) if r]
+        if self.parameter in ("gap", "mass-ratio") or any(r.has_body for r in done):
             from twoball.verify.output.figures.bounce import gap_figure
 
-            pairs = [(v, r) for v, r in zip(self.values, self.reports, strict=True) if r]
-            return save_figure(gap_figure(pairs, self.parameter), out, "plot", dpi)
-        rows = [(r.case.v0, r.phi_a_max_rad, r.flattening_max_m) for r in done]
-        return save_figure(speeds_figure(rows, done[0].case), out, "plot", dpi)
+            figure = gap_figure(pairs, self.parameter)
+            if self.parameter not in ("gap", "mass-ratio"):
+                from twoball.verify.output.figures.drop_sweep import sweep_axis_label
+
+                figure.axes[-1].set_xlabel(sweep_axis_label(self.parameter))
+        elif self.parameter in ("v0", "drop-height"):
+            rows = [(r.case.v0, r.phi_a_max_rad, r.flattening_max_m) for r in done]
+            figure = speeds_figure(rows, done[0].case)
+        else:
+            from twoball.verify.output.figures.drop_sweep import drop_sweep_figure
+
+            figure = drop_sweep_figure(pairs, self.parameter)
+        if data is not None:
+            from twoball.verify.output.figures.measured import draw_overlay, overlay_for
+
+            draw_overlay(figure, overlay_for(self, data))
+        return save_figure(figure, out, "plot", dpi)
+
+    def to_csv(self, path: str | os.PathLike[str]) -> Path:
+        """Write the table as CSV: one row per value, SI columns with the unit in the name.
+
+        The swept value first (``v0_m_s``, ``drop_height_m``, ``gap_m``,
+        ``mass_ratio`` or ``damping``), then ``v0_m_s``, ``drop_height_m``,
+        ``left_floor``, ``contact_time_s``, ``v2_m_s``, ``e2``, ``phi_a_max_rad``,
+        ``flattening_max_m``, ``t_max_compression_s``; with a body also
+        ``gap_m``, ``mass_ratio``, ``v1_m_s``, ``v1_ratio``, ``v2_ratio``,
+        ``t_liftoff_s``, ``t_liftoff_from_max_compression_s``,
+        ``body_left_first``, ``sequence``, ``e12_effective``; then ``warnings``
+        and ``error`` (blank: no value).  Returns the path written.
+        """
+        from twoball.verify.sweeps.table import bounce_table, write_table
+
+        header, rows = bounce_table(self.parameter, self.values, self.reports, self.errors)
+        return write_table(header, rows, path, "path")
 
 
 def check_point(
@@ -187,7 +240,8 @@ def bounce_sweep(
     progress: Any = None,
     monitor: Any = None,
 ) -> BounceSweep:
-    """Drops over ``values`` (``{"v0": [...]}``, ``drop_height``, ``gap`` or ``mass_ratio``), SI.
+    """Drops over ``values`` (``{"v0": [...]}``, ``drop_height``, ``gap``, ``mass_ratio`` or
+    ``damping``), SI.
 
     The points run in this process (``workers`` 1 or None), on a local process
     pool or on a Dask scheduler (:class:`~twoball.verify.sweeps.parallel.Runner`):
@@ -207,6 +261,15 @@ def bounce_sweep(
             "values", "a mapping of v0, drop_height, gap or mass_ratio to values", values
         )
     parameter, array = bounce_values(list(values), list(values.values()))
+    if (
+        parameter == "damping"
+        and damping is not None
+        and not (
+            getattr(damping, "fitted", False)  # Rayleigh() fitted to each point's D
+        )
+    ):
+        valid = "left out when damping is swept (the law would replace the swept D)"
+        raise ParameterError("damping", valid, damping.as_dict())
     if pair is not None and parameter == "mass-ratio":
         raise ParameterError("pair", "left out when the mass ratio is swept (it fixes mu)", pair)
     if parameter == "gap" and body is None and pair is None:
