@@ -258,9 +258,7 @@ def simulate(
         warnings += _body_warnings(result, whole, ball)
         lumped = None
         if baselines:
-            lumped = _baselines(
-                case, drop, whole, problem.inputs, result, monitor, problem.mass_kg
-            )
+            lumped = _baselines(case, drop, whole, problem.inputs, result, monitor, problem.mass_kg)
         extra = {"whole": whole, "baselines": lumped}
     return BounceReport(
         case,
