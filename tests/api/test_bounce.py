@@ -273,7 +273,7 @@ def test_sweep_of_the_drop():
     data = result.as_dict()
     assert [p["value"] for p in data["points"]] == [2.0, 4.1] and data["provenance"]
     with pytest.raises(twoball.ParameterError) as caught:
-        twoball.sweep({"damping": [0.1]}, drop=twoball.Drop(), solver=QUICK)
+        twoball.sweep({"wave_speed": [300.0]}, drop=twoball.Drop(), solver=QUICK)
     assert caught.value.name == "param"
 
 

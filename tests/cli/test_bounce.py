@@ -141,7 +141,7 @@ def test_sweep_of_the_drop_and_figures(capsys, tmp_path):
             ["sweep", "--param", "v0", "--values", "1,2", "--floor-restitution", "1"],
             "--floor-restitution",
         ),
-        (["sweep", "--bounce", "--param", "damping", "--values", "0.1"], "--param"),
+        (["sweep", "--bounce", "--param", "wave-speed", "--values", "300"], "--param"),
         (["bounce", "--plot", "drop.bogus"], "--plot"),
     ],
 )

@@ -105,6 +105,16 @@ RANGES: dict[str, Range] = {
     # the shell's wall and spectrum (--ball shell): C / N0, h / R, p = N0 / C (its breathing
     # mode stable: 2 (1 + nu) - 2 p > 0 at the default nu = 0.5, no gas)
     "--wall-stiffness-ratio": Range(0.0, 1e6, low_open=True),
+    # the elastic upper body (--body lumped|ball)
+    "--body-radius": Range(0.0, 10.0, low_open=True),
+    "--body-pressure": Range(0.0, 1e8, low_open=True),
+    "--body-modulus": Range(0.0, 1e13, low_open=True),
+    "--body-poisson": Range(-0.99, 0.5),
+    "--body-thickness": Range(0.0, 0.02, low_open=True),  # at most its radius, 0.02 m here
+    "--body-restitution": Range(0.0, 1.0, low_open=True),
+    "--body-steps": Range(8, 10_000, integer=True),
+    "--body-modes": Range(8, 2000, integer=True),
+    "--body-damping": Range(0.0, 1.0, high_open=True),
     "--thickness-ratio": Range(0.0, 0.5),
     "--prestress-ratio": Range(0.0, 1.5, high_open=True),
     "--bootstrap": Range(0, 10_000, integer=True),
@@ -116,6 +126,28 @@ ALSO_BAD: dict[str, tuple[str, ...]] = {
     "--modes": (),
     "--radius": (),
 }
+
+#: A valid lumped body of each law (the context of its flags' bad values).
+LUMPED_LAWS: dict[str, tuple[str, ...]] = {
+    "pressure": ("--body-radius", "--body-pressure"),
+    "reissner": ("--body-radius", "--body-modulus", "--body-poisson", "--body-thickness"),
+}
+_LUMPED_VALUES = {
+    "--body-radius": "0.02",
+    "--body-pressure": "1e5",
+    "--body-modulus": "2e9",
+    "--body-poisson": "0.35",
+    "--body-thickness": "0.0004",
+    "--body-restitution": "0.9",
+}
+
+
+def _lumped_body(flag: str, law: str) -> list[str]:
+    """A lumped body of ``law`` on the basketball, every option but ``flag`` given."""
+    given = [*LUMPED_LAWS[law], "--body-restitution"]
+    values = [v for other in given if other != flag for v in (other, _LUMPED_VALUES[other])]
+    return ["--mass-ratio", "0.05", "--body", "lumped", "--body-law", law, *values]
+
 
 #: A valid, cheap command line of each subcommand; ``{tmp}`` is the case's folder.
 BASE: dict[str, list[str]] = {
@@ -186,6 +218,18 @@ CONTEXT: dict[tuple[str, str], list[str]] = {
         )
     },
     ("bounce", "--wall-cells"): ["--ball", "thick"],
+    **{  # the lumped body's own law (a pressurised ball; a thin shell: Reissner)
+        ("bounce", flag): _lumped_body(flag, law)
+        for law, flags in (
+            ("pressure", LUMPED_LAWS["pressure"] + ("--body-restitution", "--body-steps")),
+            ("reissner", LUMPED_LAWS["reissner"]),
+        )
+        for flag in flags
+    },
+    **{
+        ("bounce", flag): ["--pair", "basketball-tennis", "--body", "ball"]
+        for flag in ("--body-modes", "--body-damping")
+    },
     # the shell (--ball shell): its wall on the drop, its spectrum dimensionless or physical
     ("bounce", "--wall-stiffness-ratio"): ["--ball", "shell"],
     ("bounce", "--thickness-ratio"): ["--ball", "shell", "--wall-stiffness-ratio", "4"],
@@ -222,6 +266,8 @@ CONTEXT: dict[tuple[str, str], list[str]] = {
 LEFT_OUT: dict[tuple[str, str], tuple[str, ...]] = {
     ("bounce", "--elements"): ("--modes",),
     ("bounce", "--order"): ("--modes",),
+    ("bounce", "--pole-levels"): ("--modes",),
+    ("bounce", "--top-levels"): ("--modes",),
 }
 #: Cases of the table the command line does not refuse yet, each with what it does instead:
 #: the test holds them apart and fails when one is refused (then delete its entry).
