@@ -219,6 +219,40 @@ def test_sweep_of_the_gap_on_two_workers(capsys, tmp_path):
     assert points[1]["sequence"] == "independent" and points[0]["body_left_first"] is True
 
 
+def test_the_table_says_the_artefact_and_the_undefined_e12(capsys):
+    code, out, err = run(capsys, "bounce", "--pair", "basketball-tennis", "--modes", "32")
+    section = "'The degree-1 artefact, and what depends on it'"
+    assert code == 0 and section in err  # stderr: twoball: warning: ...
+    rows = {line.split("│")[1].strip(): line for line in out.splitlines() if "│" in line}
+    assert "depends on that artefact" in rows["warning"]
+    assert "not defined" in rows["e12 effective (eq. (2.4))"]
+    assert "not defined" in rows["ICM (2.5), this e2 and e12_eff"]
+    assert "the contacts overlap" in err  # the note
+    code, out, _ = run(capsys, "bounce", "--pair", "basketball-tennis", "--modes", "32", "--json")
+    data = json.loads(out)
+    assert set(data["caveats"]) == {"artefact", "overlap"}
+    assert any(section in w for w in data["warnings"])
+
+
+def test_a_gap_sweep_marks_its_caveats_in_the_table_json_and_plot(capsys, tmp_path):
+    figure = tmp_path / "gap.svg"
+    argv = ["sweep", "--bounce", "--pair", "basketball-tennis", "--param", "gap"]
+    argv += ["--values", "0,0.25", "--modes", "32", "--workers", "1"]
+    code, out, err = run(capsys, *argv, "--plot", str(figure))
+    assert code == 0
+    rows = [line for line in out.splitlines() if line.startswith("│")]
+    assert "artefact, overlap" in rows[0] and "e12_low" in rows[1]
+    caption = " ".join(out.split())  # the table's caption, wrapped to the terminal
+    assert "'What the whole bounce reproduces, and what it does not'" in caption
+    assert "1 of 2 points (gap = 0.25): e12_effective below 0.5" in err
+    drawing = figure.read_text()
+    assert "depends on the degree-1 artefact" in drawing
+    assert "The degree-1 artefact, and what depends on it" in drawing
+    code, out, _ = run(capsys, *argv, "--json")
+    points = json.loads(out)["results"]
+    assert [p["caveats"] for p in points] == [["artefact", "overlap"], ["e12_low"]]
+
+
 @pytest.mark.parametrize(
     ("argv", "flag"),
     [

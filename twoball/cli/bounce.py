@@ -384,11 +384,19 @@ def whole_rows(report: twoball.BounceReport) -> list[tuple[str, str]]:
         ("body contacts", str(data["body_contacts"])),
         ("e12 effective (eq. (2.4))", number(data["e12_effective"])),
     ]
+    caveats = data.get("caveats") or []
     icm = data["icm_solver"]
     if icm is not None:
         rows.append(
             ("ICM (2.5), this e2 and e12_eff", f"{icm['v1_ratio']:.4f} / {icm['v2_ratio']:.4f}")
         )
+    elif "overlap" in caveats:  # said, not left blank
+        undefined = "not defined: the floor and body contacts overlap"
+        rows[-1] = (rows[-1][0], undefined)
+        rows.append(("ICM (2.5), this e2 and e12_eff", undefined))
+    from twoball._bounce import CAVEATS
+
+    rows += [("warning", CAVEATS[tag]) for tag in caveats if tag != "overlap"]
     for name, out in (data["baselines"] or {}).get("models", {}).items():
         text = out.get("error") or f"{out['v1_ratio']:.4f} / {out['v2_ratio']:.4f}"
         rows.append((f"{name} v1/|v0| / v2/|v0|", text))

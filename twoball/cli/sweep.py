@@ -183,6 +183,7 @@ def workers(args: argparse.Namespace) -> int | str | None:
 def _run_bounce(args: argparse.Namespace) -> int:
     """``twoball sweep --bounce``: one drop (or whole bounce) per value of one parameter."""
     import twoball
+    from twoball._bounce import OVERLAP_NOTE
     from twoball._plot import check_figure_path
     from twoball.cli.bounce import drop_case, drop_options, whole_body
 
@@ -227,7 +228,8 @@ def _run_bounce(args: argparse.Namespace) -> int:
             progress=bar.update,
         )
     done = [r for r in result.reports if r is not None]
-    print_notes(list(dict.fromkeys(n for r in done for n in r.notes)))
+    notes = [n for r in done for n in r.notes if n != OVERLAP_NOTE]  # said once, counted
+    print_notes(list(dict.fromkeys(notes)) + caveat_lines(result, ("overlap",)))
     print_warnings(bounce_sweep_warnings(result))
     if plot is not None:
         result.plot(plot, measured=rows)
@@ -303,7 +305,28 @@ def bounce_sweep_warnings(result: Any) -> list[str]:
     return [
         f"{len(flagged)} of {len(result.values)} points carry warnings (see --json), the first "
         f"at {result.parameter} = {value:g}: {report.warnings[0]}"
-    ]
+    ] + caveat_lines(result, ("artefact", "e12_low"))
+
+
+def caveat_lines(result: Any, tags: Sequence[str]) -> list[str]:
+    """One line per caveat of the whole bounce (``artefact``, ``e12_low``, ``overlap``) that
+    some points carry: how many, at which values, and what it means."""
+    from twoball._bounce import CAVEATS
+
+    out = []
+    for tag in tags:
+        at = [
+            f"{value:g}"
+            for value, report in zip(result.values, result.reports, strict=True)
+            if report is not None and tag in getattr(report, "caveats", ())
+        ]
+        if at:
+            where = ", ".join(at if len(at) <= 6 else [*at[:3], "...", *at[-2:]])
+            out.append(
+                f"{len(at)} of {len(result.values)} points ({result.parameter} = {where}): "
+                f"{CAVEATS[tag]}"
+            )
+    return out
 
 
 def _print_whole(result: Any) -> None:
@@ -320,12 +343,21 @@ def _print_whole(result: Any) -> None:
         "body first",
         "e12 eff",
         "ICM v1/v2",
+        "caveats",
     )
+    from twoball._bounce import CAVEATS
+
+    seen = [
+        tag for tag in CAVEATS if any(tag in getattr(r, "caveats", ()) for r in result.reports if r)
+    ]
+    if seen:  # each caveat said once under the table
+        table.caption = "\n".join(f"{tag}: {CAVEATS[tag]}" for tag in seen)
+        table.caption_justify = "left"
     for column in columns:
-        table.add_column(column, justify="right")
+        table.add_column(column, justify="left" if column == "caveats" else "right")
     for value, report, error in zip(result.values, result.reports, result.errors, strict=True):
         if report is None:
-            table.add_row(f"{value * scale:g}", error or "", *["-"] * 6)
+            table.add_row(f"{value * scale:g}", error or "", *["-"] * 7)
             continue
         icm = ((report.baselines or {}).get("models", {}).get("icm")) or {}
         table.add_row(
@@ -337,6 +369,7 @@ def _print_whole(result: Any) -> None:
             str(report.body_left_first),
             number(report.e12_effective),
             f"{icm['v1_ratio']:.3f}/{icm['v2_ratio']:.3f}" if "v1_ratio" in icm else "-",
+            ", ".join(getattr(report, "caveats", ())) or "-",
         )
     console().print(table)
 
