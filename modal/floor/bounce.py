@@ -221,7 +221,9 @@ def bounce_problem(
 
     # inputs far from any ball first (unit slips), then the model's
     warnings = case_warnings(
-        inputs.case, drop_height=drop.drop_height, gap=None if whole is None else drop.gap
+        inputs.case,
+        drop_height=drop.fall(inputs.case.radius),
+        gap=None if whole is None else drop.gap,
     )
     warnings += inputs.warnings
     step, window = drop_times(inputs.case, dt, t_end, drop.gap / inputs.case.radius)

@@ -75,6 +75,22 @@ def test_a_drop_height_below_the_radius_names_the_range_and_v0(capsys):
     assert ">= R = 0.12 m" in line and "--v0" in line and line.endswith("got 0.05")
 
 
+def test_the_centre_height_is_the_papers_x2(capsys):
+    # eq. (2.1): x2 = 0.92 m, R = 0.12 m -> a fall of 0.80 m -> sqrt(2 g 0.80) = 3.96 m/s
+    argv = ["bounce", "--modes", "16", "--json"]
+    code, out, err = run(capsys, *argv, "--centre-height", "0.92")
+    data = json.loads(out)
+    assert code == 0 and round(data["v0_m_s"], 2) == 3.96
+    assert data["v0_m_s"] == pytest.approx(math.sqrt(2 * 9.81 * 0.80), rel=1e-12)
+    assert data["drop_height_m"] == pytest.approx(0.80, rel=1e-12)
+    assert data["centre_height_m"] == 0.92 and "x2 - R = 0.8 m" in err
+    code, out, _ = run(capsys, *argv, "--drop-height", "0.80")
+    same = json.loads(out)
+    assert same["v0_m_s"] == pytest.approx(data["v0_m_s"], rel=1e-12)
+    assert same["e2"] == pytest.approx(data["e2"], rel=1e-9)
+    assert same["contact_time_s"] == pytest.approx(data["contact_time_s"], rel=1e-9)
+
+
 def test_fem_backend_with_its_mesh(capsys):
     code, out, _ = run(capsys, "bounce", "--backend", "fem", "--elements", "8", "--json")
     data = json.loads(out)
@@ -87,6 +103,10 @@ def test_fem_backend_with_its_mesh(capsys):
         (["--drop-height", "-1"], "--drop-height"),
         (["--drop-height", "0.05"], "--drop-height"),
         (["--v0", "3", "--drop-height", "1"], "--drop-height"),
+        (["--centre-height", "0.92", "--drop-height", "0.8"], "--centre-height"),
+        (["--centre-height", "0.92", "--v0", "4.1"], "--centre-height"),
+        (["--centre-height", "0.2"], "--centre-height"),
+        (["--centre-height", "-1"], "--centre-height"),
         (["--gas", "none", "--membrane", "pressurised"], "--gas"),
         (["--membrane", "flat"], "--membrane"),
         (["--floor-restitution", "2"], "--floor-restitution"),

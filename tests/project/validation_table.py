@@ -80,6 +80,7 @@ RANGES: dict[str, Range] = {
     "--e12": Range(0.0, 1.0),
     "--dx": Range(0.0, 1e6),
     "--drop-height": Range(0.0, 1e6, low_open=True),
+    "--centre-height": Range(0.0, 1e6, low_open=True),
     "--frames": Range(1, 2000, integer=True),
     "--time": Range(0.0, 4 * math.pi / 320),  # render: inside the default window
     "--fps": Range(1e-3, 1e3),
@@ -447,6 +448,10 @@ NOT_APPLICABLE: list[tuple[str, list[str]]] = [
     ("--drop-height", ["bounce", "--preset", "tennis", "--drop-height", "0.03"]),
     ("--values", ["sweep", "--bounce", "--param", "drop-height", "--values", "0.05,0.5"]),
     ("--drop-height", ["liftoff", "--drop-height", "1"]),
+    # the centre's height (the paper's x2): one height, not beside a speed, at least 2 R
+    ("--centre-height", ["bounce", "--centre-height", "0.92", "--drop-height", "0.8"]),
+    ("--centre-height", ["bounce", "--centre-height", "0.92", "--v0", "4.1"]),
+    ("--centre-height", ["bounce", "--centre-height", "0.2"]),
     ("--floor-restitution", ["liftoff", "--floor-restitution", "1"]),
     ("--elements", ["bounce", "--elements", "20"]),
     ("--mesh", ["bounce", "--backend", "fem", "--mesh", "sphere"]),

@@ -81,12 +81,16 @@ def bounce_points(
             raise ParameterError("param", valid + "beta has no D)", "damping")
         return [(case.derive(damping=float(v)), drop, body) for v in values]
     if parameter == "v0":
-        if drop.drop_height is not None:
-            raise ParameterError("drop_height", "left out when v0 is swept", drop.drop_height)
+        for name in ("drop_height", "centre_height"):  # a height sets |v0|
+            if getattr(drop, name) is not None:
+                raise ParameterError(name, "left out when v0 is swept", getattr(drop, name))
         return [(case.derive(v0=float(v)), drop, body) for v in values]
     if parameter == "drop-height":
         from twoball.modal.floor.inputs import check_drop_height
 
+        if drop.centre_height is not None:  # the swept heights are the lowest point's
+            valid = "left out when drop_height is swept"
+            raise ParameterError("centre_height", valid, drop.centre_height)
         points = [(case, replace(drop, drop_height=float(v)), body) for v in values]
         for _, point, _ in points:  # a height below the case's radius: before the first run
             check_drop_height(case, point.drop_height)
