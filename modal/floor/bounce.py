@@ -108,6 +108,8 @@ class BounceProblem:
         The time step and the window in units of 1/c.
     notes, warnings : tuple of str
         How the inputs were read, and what the reader must know (unit slips).
+    slips : tuple of str
+        The unit slips among the warnings (:func:`twoball.modal.guards.case_warnings`).
     """
 
     case: Case
@@ -119,6 +121,7 @@ class BounceProblem:
     t_end: float
     notes: tuple[str, ...] = ()
     warnings: tuple[str, ...] = ()
+    slips: tuple[str, ...] = ()
 
     @property
     def gap(self) -> float:
@@ -225,6 +228,7 @@ def bounce_problem(
         drop_height=drop.fall(inputs.case.radius),
         gap=None if whole is None else drop.gap,
     )
+    slips = tuple(warnings)
     warnings += inputs.warnings
     step, window = drop_times(inputs.case, dt, t_end, drop.gap / inputs.case.radius)
     # how the case was read (a negative v0: the paper's sign), then the drop's own notes
@@ -232,7 +236,7 @@ def bounce_problem(
     if whole is not None:
         notes += whole.notes
     return BounceProblem(
-        inputs.case, drop, ball, inputs, whole, step, window, notes, tuple(warnings)
+        inputs.case, drop, ball, inputs, whole, step, window, notes, tuple(warnings), slips
     )
 
 

@@ -827,7 +827,20 @@ UNIT_SLIPS: list[tuple[list[str], tuple[str, ...]]] = [
     ),
     (
         ["sweep", "--bounce", "--modes", "16", "--param", "drop-height", "--values", "500,1000"],
-        ("2 of 2 points", "drop-height = 500", "H = 500 m", "did you mean 0.5 m (500 mm)"),
+        ("2 of 2 values", "drop-height = 500", "H = 500 m", "did you mean 0.5 m (500 mm)"),
     ),
     (["liftoff", "--radius", "120"], ("R = 120 m", "did you mean 0.12 m (120 mm)")),
+    (["liftoff", "--wave-speed", "3.2e5"], ("c = 320000 1/s", "did you mean 320 1/s")),
+    (
+        ["liftoff", "--pressure", "77200", "--mass", "567"],
+        ("m = 567 kg", "did you mean 0.567 kg (567 g)"),
+    ),
+    (
+        ["bounce", "--modes", "16", "--pressure", "77200", "--mass", "567"],
+        ("m = 567 kg", "did you mean 0.567 kg (567 g)"),
+    ),
+    (
+        ["sweep", "--param", "wave-speed", "--values", "3.2e5,3.3e5"],
+        ("2 of 2 values", "wave-speed = 320000", "c = 320000 1/s", "did you mean 320 1/s"),
+    ),
 ]

@@ -3,7 +3,7 @@
 from __future__ import annotations
 
 import argparse
-from collections.abc import Iterator, Sequence
+from collections.abc import Collection, Iterator, Sequence
 from contextlib import contextmanager
 from typing import Any
 
@@ -141,7 +141,8 @@ def run(args: argparse.Namespace) -> int:
         )
     points = result.points
     print_notes(sweep_notes(points))
-    print_warnings(sweep_warnings(points, grid.parameters))
+    repeated = result.point_slips
+    print_warnings([*result.warnings, *sweep_warnings(points, grid.parameters, repeated)])
     if plot is not None:
         result.plot(plot, measured=rows)
         print_overlay(result, rows)
@@ -294,18 +295,24 @@ def bounce_sweep_warnings(result: Any) -> list[str]:
     The first is named by its swept value (``drop-height = 500``); each point's
     warnings are in the JSON.
     """
+    swept = list(getattr(result, "warnings", ()))  # the swept values' slips, found first
+    said = set(swept) and {w for slips in getattr(result, "slips", ()) for w in slips}
     flagged = [
-        (value, report)
+        (value, [w for w in report.warnings if w not in said])
         for value, report in zip(result.values, result.reports, strict=True)
-        if report is not None and report.warnings
+        if report is not None
     ]
+    flagged = [(value, rest) for value, rest in flagged if rest]
+    caveats = caveat_lines(result, ("artefact", "e12_low"))
     if not flagged:
-        return []
-    value, report = flagged[0]
+        return swept + caveats
+    value, rest = flagged[0]
     return [
+        *swept,
         f"{len(flagged)} of {len(result.values)} points carry warnings (see --json), the first "
-        f"at {result.parameter} = {value:g}: {report.warnings[0]}"
-    ] + caveat_lines(result, ("artefact", "e12_low"))
+        f"at {result.parameter} = {value:g}: {rest[0]}",
+        *caveats,
+    ]
 
 
 def caveat_lines(result: Any, tags: Sequence[str]) -> list[str]:
@@ -397,12 +404,20 @@ def sweep_notes(points: list[Any]) -> list[str]:
     return [f"phi_a from eq. (3.7) at {len(notes)} of {len(points)} points; {why}", *others]
 
 
-def sweep_warnings(points: list[Any], parameters: tuple[str, ...] = ()) -> list[str]:
+def sweep_warnings(
+    points: list[Any], parameters: tuple[str, ...] = (), said: Collection[str] = ()
+) -> list[str]:
     """One warning for the whole sweep: how many points carry accuracy warnings, the first.
 
     The first is named by its swept values (``v0 = 3.2``), not by its grid index.
+    Warnings in ``said`` (the swept values' slips, said for the sweep) are left out.
     """
-    flagged = [p for p in points if p.report is not None and p.report.warnings]
+    rest = {
+        p.index: [w for w in p.report.warnings if w not in said]
+        for p in points
+        if p.report is not None
+    }
+    flagged = [p for p in points if rest.get(p.index)]
     if not flagged:
         return []
     first = flagged[0]
@@ -415,7 +430,7 @@ def sweep_warnings(points: list[Any], parameters: tuple[str, ...] = ()) -> list[
     )
     return [
         f"{len(flagged)} of {len(points)} points carry warnings (see --json), the first "
-        f"at {where}: {first.report.warnings[0]}"
+        f"at {where}: {rest[first.index][0]}"
     ]
 
 

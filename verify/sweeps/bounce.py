@@ -123,6 +123,12 @@ class BounceSweep:
         failed; ``errors`` says why).
     errors : list of str or None
     provenance : dict
+    slips : tuple of tuple of str
+        Each point's unit slips (:func:`twoball.modal.guards.case_warnings`), found
+        before any point ran: kept in the JSON of a point that failed too.
+    warnings : tuple of str
+        The sweep's own: swept values far outside any ball
+        (:func:`twoball.modal.guards.sweep_slips`), checked before any point ran.
 
     Examples
     --------
@@ -138,16 +144,29 @@ class BounceSweep:
     reports: list[Any]
     errors: list[str | None]
     provenance: dict[str, Any] | None = field(default=None, compare=False, repr=False)
+    slips: tuple[tuple[str, ...], ...] = field(default=(), compare=False, repr=False)
+    warnings: tuple[str, ...] = ()
 
     def as_dict(self) -> dict[str, Any]:
-        """JSON-ready: the parameter and one drop per value (SI), with the provenance."""
+        """JSON-ready: the parameter and one drop per value (SI), with the provenance and
+        the sweep's own ``warnings``; a point that failed keeps its unit slips."""
         points = []
-        for value, report, error in zip(self.values, self.reports, self.errors, strict=True):
+        slips = self.slips or ((),) * len(self.values)
+        for value, report, error, slip in zip(
+            self.values, self.reports, self.errors, slips, strict=True
+        ):
             data = {"parameter": self.parameter, "value": value, "error": error}
             if report is not None:
                 data |= {k: v for k, v in report.as_dict().items() if k != "provenance"}
+            else:
+                data["warnings"] = list(slip)
             points.append(data)
-        return {"parameter": self.parameter, "points": points, "provenance": self.provenance}
+        return {
+            "parameter": self.parameter,
+            "warnings": list(self.warnings),
+            "points": points,
+            "provenance": self.provenance,
+        }
 
     def plot(
         self, out: str | os.PathLike[str], *, dpi: float | None = None, measured: Any = None
@@ -215,12 +234,12 @@ class BounceSweep:
 
 def check_point(
     case: Case | None, drop: Drop, body: Any, pair: str | None, *, solver: Any = None
-) -> None:
+) -> Any:
     """The checks a drop makes before its work (:func:`~twoball.modal.floor.bounce.bounce_problem`),
-    for one point of a sweep."""
+    for one point of a sweep; returns the resolved problem."""
     from twoball.modal.floor.bounce import bounce_problem
 
-    bounce_problem(case, drop, body=body, pair=pair, **_solver_options(solver))
+    return bounce_problem(case, drop, body=body, pair=pair, **_solver_options(solver))
 
 
 def _solver_options(solver: Any) -> dict[str, Any]:
@@ -291,8 +310,13 @@ def bounce_sweep(
         raise ParameterError("v0", valid, speed)
     check_drop_case(base, drop)  # a given phi_a: a v0 sweep would drop it unsaid
     points = [(*point, pair) for point in bounce_points(base, drop, parameter, array, body)]
-    for point in points:  # every point's values refused here, before the first run
-        check_point(*point, solver=solver)
+    # every point's values refused here, before the first run, and its unit slips found
+    slips = tuple(check_point(*point, solver=solver).slips for point in points)
+    from twoball.modal.guards import sweep_slips
+
+    field = BOUNCE_PARAMETERS[parameter]
+    swept = sweep_slips(field, parameter, array, base)
+    warnings = () if swept is None else (swept,)
     task = BounceTask(solver=solver, damping=damping, monitor=monitor)
     reports: list[Any] = []
     errors: list[str | None] = []
@@ -315,7 +339,8 @@ def bounce_sweep(
     from twoball._common.provenance import block
 
     provenance = block(base, "twoball.sweep", arguments)
-    return BounceSweep(parameter, tuple(float(v) for v in array), reports, errors, provenance)
+    values_ = tuple(float(v) for v in array)
+    return BounceSweep(parameter, values_, reports, errors, provenance, slips, warnings)
 
 
 def _short(error: str | None) -> str | None:
