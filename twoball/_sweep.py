@@ -108,6 +108,14 @@ class SweepResult:
 
         return phi_a_rule([p.case for p in self.points])
 
+    @property
+    def phi_a_note(self) -> str | None:
+        """The sweep's one note on phi_a when its rule replaced a preset's measured angle
+        (eq. (3.7) at every point, the preset's own point included), else None."""
+        from twoball.verify.sweeps.sweeps import phi_a_note
+
+        return phi_a_note([p.case for p in self.points])
+
     def as_dict(self) -> dict[str, Any]:
         """JSON-ready: parameters, shape, the phi_a rule, the points (SI) and the provenance."""
         return {

@@ -36,16 +36,18 @@ from twoball.cli.values import number as number_value
 __all__ = ["register", "run"]
 
 
-def print_sweep(grid: Any, points: list[Any]) -> None:
-    """Print one row per grid point (an ``error`` column appears only if a point failed)."""
+def print_sweep(grid: Any, points: list[Any], rule: str | None = None) -> None:
+    """Print one row per grid point (an ``error`` column appears only if a point failed);
+    the phi_a rule, one for the sweep (:attr:`twoball.SweepResult.phi_a_rule`), under it."""
     fields = [_choices.SWEEP_PARAMETERS[p] for p in grid.parameters]
     shape = " x ".join(str(n) for n in grid.shape)
     title = f"Sweep of {' x '.join(grid.parameters)} ({shape} values)"
     table = Table(title=title)
+    if rule is not None:
+        table.caption = f"phi_a: {rule}"
     columns = [
         *grid.parameters,
         "phi_a [rad]",
-        "phi_a from",
         "lifted",
         "t_l [ms]",
         "v_l [m/s]",
@@ -60,7 +62,6 @@ def print_sweep(grid: Any, points: list[Any]) -> None:
         r = p.report
         cells = [f"{getattr(p.case, f):g}" for f in fields]
         cells.append(f"{p.case.phi_a:.5f}")
-        cells.append(str(p.case.phi_a_source))
         if r is None:
             cells += ["error", "-", "-", "-"]
         else:
@@ -140,7 +141,7 @@ def run(args: argparse.Namespace) -> int:
             progress=bar.update,
         )
     points = result.points
-    print_notes(sweep_notes(points))
+    print_notes(sweep_notes(points, result.phi_a_note))
     repeated = result.point_slips
     print_warnings([*result.warnings, *sweep_warnings(points, grid.parameters, repeated)])
     if plot is not None:
@@ -151,7 +152,7 @@ def run(args: argparse.Namespace) -> int:
     if args.json:
         print_json(attach([p.as_dict() for p in points], result.provenance))
     else:
-        print_sweep(grid, points)
+        print_sweep(grid, points, result.phi_a_rule)
         _written(plot, table)
     return 0
 
@@ -392,16 +393,13 @@ def _sweep_body(args: argparse.Namespace, parameters: tuple[str, ...]) -> Any:
     return twoball.Body(0.0, **given) if given else None
 
 
-def sweep_notes(points: list[Any]) -> list[str]:
-    """One note for the whole sweep: at how many points eq. (3.7) replaced a preset's phi_a
-    (and, once each, any other remark, e.g. how a negative v0 was read)."""
+def sweep_notes(points: list[Any], phi_a: str | None = None) -> list[str]:
+    """One note for the whole sweep: the phi_a rule that replaced a preset's measured angle,
+    said once (``phi_a``, :attr:`twoball.SweepResult.phi_a_note`) in place of the points'
+    own; then, once each, any other remark (e.g. how a negative v0 was read)."""
     every = [n for p in points if p.report is not None for n in p.report.notes]
-    notes = [n for n in every if n.startswith("phi_a = ")]
     others = list(dict.fromkeys(n for n in every if not n.startswith("phi_a = ")))
-    if len(notes) <= 1:
-        return notes + others
-    why = notes[0].split("; ", 1)[-1]
-    return [f"phi_a from eq. (3.7) at {len(notes)} of {len(points)} points; {why}", *others]
+    return [phi_a, *others] if phi_a else others
 
 
 def sweep_warnings(
