@@ -223,7 +223,8 @@ class BounceSweep:
         ``flattening_max_m``, ``t_max_compression_s``; with a body also
         ``gap_m``, ``mass_ratio``, ``v1_m_s``, ``v1_ratio``, ``v2_ratio``,
         ``t_liftoff_s``, ``t_liftoff_from_max_compression_s``,
-        ``body_left_first``, ``sequence``, ``e12_effective``; then ``warnings``
+        ``body_left_first``, ``sequence``, ``e12_effective``, ``caveats`` (the
+        answer's tags, ``artefact | overlap``); then ``warnings``
         and ``error`` (blank: no value).  Returns the path written.
         """
         from twoball.verify.sweeps.table import bounce_table, write_table
