@@ -80,6 +80,7 @@ RANGES: dict[str, Range] = {
     "--e12": Range(0.0, 1.0),
     "--dx": Range(0.0, 1e6),
     "--drop-height": Range(0.0, 1e6, low_open=True),
+    "--centre-height": Range(0.0, 1e6, low_open=True),
     "--frames": Range(1, 2000, integer=True),
     "--time": Range(0.0, 4 * math.pi / 320),  # render: inside the default window
     "--fps": Range(1e-3, 1e3),
@@ -493,6 +494,10 @@ NOT_APPLICABLE: list[tuple[str, list[str]]] = [
     ("--drop-height", ["bounce", "--preset", "tennis", "--drop-height", "0.03"]),
     ("--values", ["sweep", "--bounce", "--param", "drop-height", "--values", "0.05,0.5"]),
     ("--drop-height", ["liftoff", "--drop-height", "1"]),
+    # the centre's height (the paper's x2): one height, not beside a speed, at least 2 R
+    ("--centre-height", ["bounce", "--centre-height", "0.92", "--drop-height", "0.8"]),
+    ("--centre-height", ["bounce", "--centre-height", "0.92", "--v0", "4.1"]),
+    ("--centre-height", ["bounce", "--centre-height", "0.2"]),
     ("--floor-restitution", ["liftoff", "--floor-restitution", "1"]),
     ("--elements", ["bounce", "--elements", "20"]),
     ("--mesh", ["bounce", "--backend", "fem", "--mesh", "sphere"]),
@@ -868,7 +873,20 @@ UNIT_SLIPS: list[tuple[list[str], tuple[str, ...]]] = [
     ),
     (
         ["sweep", "--bounce", "--modes", "16", "--param", "drop-height", "--values", "500,1000"],
-        ("2 of 2 points", "drop-height = 500", "H = 500 m", "did you mean 0.5 m (500 mm)"),
+        ("2 of 2 values", "drop-height = 500", "H = 500 m", "did you mean 0.5 m (500 mm)"),
     ),
     (["liftoff", "--radius", "120"], ("R = 120 m", "did you mean 0.12 m (120 mm)")),
+    (["liftoff", "--wave-speed", "3.2e5"], ("c = 320000 1/s", "did you mean 320 1/s")),
+    (
+        ["liftoff", "--pressure", "77200", "--mass", "567"],
+        ("m = 567 kg", "did you mean 0.567 kg (567 g)"),
+    ),
+    (
+        ["bounce", "--modes", "16", "--pressure", "77200", "--mass", "567"],
+        ("m = 567 kg", "did you mean 0.567 kg (567 g)"),
+    ),
+    (
+        ["sweep", "--param", "wave-speed", "--values", "3.2e5,3.3e5"],
+        ("2 of 2 values", "wave-speed = 320000", "c = 320000 1/s", "did you mean 320 1/s"),
+    ),
 ]

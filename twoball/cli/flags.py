@@ -110,6 +110,7 @@ FLAGS: dict[str, str] = {
     "drop_height": "--drop-height",
     # the drop on the floor, the whole bounce
     "floor_restitution": "--floor-restitution",
+    "centre_height": "--centre-height",
     "gap": "--gap",
     "pair": "--pair",
     "export": "--export",
