@@ -208,7 +208,7 @@ CONTEXT: dict[tuple[str, str], list[str]] = {
     },
     ("bounce", "--frames"): ["--render", "{tmp}/x.gif"],
     ("sweep", "--gap"): ["--bounce", "--mass-ratio", "0.05"],  # refused before the --param
-    **{  # the solid ball's and the thick wall's own flags (issue 33)
+    **{  # the solid ball's and the thick wall's own flags
         (command, flag): context
         for command in ("bounce", "liftoff")
         for flag, context in (
