@@ -402,7 +402,7 @@ def gap_figure(ctx: Context, pair: str) -> Any:
                                  mfc=face, label=f"{ball}, {kind} body")  # fmt: skip
         ax.set_ylabel(label("$t_l$ after the largest compression", "ms"))
         ax.set_xlabel(label(r"gap $\Delta x$", "mm"))
-        for a in axes:
+        for a in (axes[0], axes[2]):  # v2's markers and lines are v1's
             a.legend(loc="upper left", bbox_to_anchor=(1.01, 1.0), fontsize="small")
         fig.suptitle(f"{pair}: the whole bounce against the gap, N = {MODES}")
         return fig
