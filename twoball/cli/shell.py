@@ -168,8 +168,10 @@ def gas_value(text: str | None, si: bool) -> str | float:
         return "none" if text is None else text
     if text is None:
         return 0.0
+    from twoball._common.ranges import decimal
+
     try:
-        value = float(text)
+        value = decimal(text)
     except ValueError:
         valid = (
             "the dimensionless g = 3 kappa P_abs R / C >= 0 with the ratios (a gas law "
