@@ -41,6 +41,7 @@ import numpy as np
 from twoball.modal.balls.solid import SolidMaterial, check_material, material_of
 
 from twoball._common.errors import NumericalError, ParameterError, real_number
+from twoball._common.keywords import checked
 
 if TYPE_CHECKING:
     from skfem.mesh import MeshTri2
@@ -317,6 +318,7 @@ def _check_int(name: str, value: object, bounds: tuple[int, int]) -> int:
     return int(value)
 
 
+@checked
 @dataclass(frozen=True)
 class FESolidBall:
     """The elastic sphere on (r, z) P2 finite elements: a lower ball for the drop.
@@ -469,6 +471,7 @@ def _positive(name: str, value: object, high: float) -> float:
     return number
 
 
+@checked
 @dataclass(frozen=True)
 class ThickWall:
     """The thick wall of a hollow elastic ball (SI): E, nu, the thickness and the density.
@@ -555,6 +558,7 @@ THICK_WALLS: dict[str, ThickWall] = {
 }
 
 
+@checked
 @dataclass(frozen=True)
 class ThickBall:
     """A hollow elastic ball on the (r, z) half annulus in P2: the thick wall, with its gas.

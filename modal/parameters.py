@@ -31,6 +31,7 @@ from twoball.modal.scalings import (
 from twoball.modal.stiffness import ATMOSPHERE, GAS_MODELS, Stiffness, stiffness_from_si
 
 from twoball._common.errors import ParameterError, bounded, real_number
+from twoball._common.keywords import checked
 
 
 def _number(name: str, value: object, valid: str) -> float:
@@ -57,6 +58,7 @@ def _same(a: float, b: float) -> bool:
     return math.isclose(a, b, rel_tol=_SAME, abs_tol=0.0)
 
 
+@checked
 @dataclass(frozen=True)
 class Case:
     """One impact of the lower ball, in SI units, with one rule for phi_a.

@@ -13,6 +13,7 @@ from typing import Any
 
 from twoball._common.budget import timed
 from twoball._common.errors import ParameterError
+from twoball._common.keywords import checked
 from twoball._common.progress import Step, check_progress, silent
 from twoball._common.watch import Watch
 from twoball.fem_membrane.options import MeshOptions
@@ -20,6 +21,7 @@ from twoball.fem_membrane.options import MeshOptions
 __all__ = ["eigen", "shell_eigen", "solid_eigen"]
 
 
+@checked(name="twoball.fem.eigen")
 @timed
 def eigen(
     mesh: Any = None,
@@ -105,6 +107,7 @@ def eigen(
 SHELL_DEGREES = 10
 
 
+@checked(name="twoball.fem.shell_eigen")
 def shell_eigen(
     *,
     poisson: float = 0.5,
@@ -250,6 +253,7 @@ def shell_eigen(
     return rows
 
 
+@checked(name="twoball.fem.solid_eigen")
 @timed
 def solid_eigen(
     poisson: float,

@@ -37,6 +37,7 @@ import numpy as np
 from twoball.modal.balls.description import ModalBall
 
 from twoball._common.errors import ParameterError, real_number
+from twoball._common.keywords import checked
 
 if TYPE_CHECKING:
     from twoball.modal.parameters import Case
@@ -78,6 +79,7 @@ def _in(name: str, value: object, low: float, high: float, *, low_open: bool = T
     return number
 
 
+@checked
 @dataclass(frozen=True)
 class Wall:
     """The shell's wall: SI (E, h, nu) or dimensionless (C / N0, h / R, nu).
@@ -472,6 +474,7 @@ def shell_ball(parameters: ShellParameters, modes: int, law: Any, label: str = "
     )
 
 
+@checked
 @dataclass(frozen=True)
 class ShellBall:
     """The thin spherical shell on its closed-form modes: a lower ball for the drop.

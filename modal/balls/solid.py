@@ -55,6 +55,7 @@ import numpy as np
 from twoball.modal.presets import SUPERBALL_MATERIAL, SUPERBALL_RADIUS
 
 from twoball._common.errors import NumericalError, ParameterError, real_number
+from twoball._common.keywords import checked
 
 if TYPE_CHECKING:
     from twoball.modal.balls.description import ModalBall
@@ -102,6 +103,7 @@ def _in(name: str, value: object, low: float, high: float, *, high_open: bool = 
     return number
 
 
+@checked
 @dataclass(frozen=True)
 class SolidMaterial:
     """A homogeneous isotropic linearly elastic material (SI).
@@ -807,6 +809,7 @@ def _check_int(name: str, value: object, bounds: tuple[int, int]) -> int | None:
     return int(value)
 
 
+@checked
 @dataclass(frozen=True)
 class SolidBall:
     """The homogeneous elastic sphere on Lamb's modes (closed form): a lower ball for the drop.

@@ -50,6 +50,7 @@ from typing import Any
 from twoball.modal.nonsmooth.compliant import PowerLaw
 
 from twoball._common.errors import ParameterError, bounded
+from twoball._common.keywords import checked
 
 __all__ = ["LAWS", "ContactLaw"]
 
@@ -61,6 +62,7 @@ LAWS: dict[str, tuple[str, ...]] = {
 }
 
 
+@checked
 @dataclass(frozen=True)
 class ContactLaw:
     """A body's own contact law against a rigid surface (SI; module documentation).

@@ -29,6 +29,7 @@ from typing import Any
 from twoball.modal.upper.laws import ContactLaw
 
 from twoball._common.errors import ParameterError, bounded
+from twoball._common.keywords import checked
 
 __all__ = ["BODY_KINDS", "BallBody", "LumpedBody", "body_kind"]
 
@@ -47,6 +48,7 @@ def body_kind(body: object) -> str:
     return str(getattr(body, "kind", "rigid"))
 
 
+@checked
 @dataclass(frozen=True)
 class LumpedBody:
     """An elastic upper body lumped to a point mass with its own contact law (SI).
@@ -111,6 +113,7 @@ class LumpedBody:
         }
 
 
+@checked
 @dataclass(frozen=True)
 class BallBody:
     """A second modal ball as the upper body (SI); its mass is its own ball's.
