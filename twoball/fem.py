@@ -170,7 +170,6 @@ def shell_eigen(
     import numpy as np
 
     from twoball.modal.shell.modes import shell_modes
-    from twoball.modal.shell.parameters import ShellParameters
 
     check_progress(progress)
     if isinstance(count, bool) or not isinstance(count, Integral) or not 1 <= count <= 400:
@@ -195,16 +194,7 @@ def shell_eigen(
     else:
         if wall is not None:
             raise ParameterError("wall", "given with a case (the physical inputs)", wall)
-        from twoball._common.errors import real_number
-
-        p = real_number("prestress_ratio", prestress_ratio, "a number >= 0")
-        if isinstance(gas, str):
-            raise ParameterError("gas", "the dimensionless g >= 0 without a case", gas)
-        parameters = ShellParameters.from_ratios(
-            poisson, thickness_ratio, None if p == 0.0 else 1.0 / p, gas=gas or 0.0
-        )
-        if p < 0.0:
-            raise ParameterError("prestress_ratio", "a number >= 0", prestress_ratio)
+        parameters = _shell_ratios(poisson, thickness_ratio, prestress_ratio, gas)
     exact = shell_modes(parameters, count)
     values = np.array(exact.omega, dtype=float)
     if backend == "fem":
@@ -251,6 +241,36 @@ def shell_eigen(
             row["frequency_hz"] = None if omega is None else omega / (2.0 * np.pi)
         rows.append(row)
     return rows
+
+
+def _shell_ratios(poisson: Any, thickness_ratio: Any, prestress_ratio: Any, gas: Any) -> Any:
+    """The dimensionless shell of :func:`shell_eigen`, each ratio refused by its own name.
+
+    h / R in [0, 0.5] (:data:`~twoball.modal.balls.shell.MAX_THICKNESS_RATIO`, as
+    :class:`~twoball.Wall`); p = N0 / C >= 0 with the breathing mode stable,
+    ``Omega_0^2 = 2 (1 + nu) - 2 p + g > 0`` (the n = 0 row of the shell's spectrum).
+    """
+    from twoball._common.errors import bounded, real_number
+    from twoball.modal.balls.shell import MAX_THICKNESS_RATIO
+    from twoball.modal.shell.parameters import ShellParameters
+
+    ratio = bounded("thickness_ratio", thickness_ratio, 0.0, MAX_THICKNESS_RATIO)
+    p = real_number("prestress_ratio", prestress_ratio, "a number >= 0")
+    if p < 0.0:
+        raise ParameterError("prestress_ratio", "a number >= 0", prestress_ratio)
+    if isinstance(gas, str):
+        raise ParameterError("gas", "the dimensionless g >= 0 without a case", gas)
+    shell = ShellParameters.from_ratios(poisson, ratio, None, gas=gas or 0.0)
+    limit = 1.0 + shell.poisson + 0.5 * shell.gas  # Omega_0^2 > 0
+    if not p < limit:
+        valid = (
+            f"a number in [0, {limit:g}) at nu = {shell.poisson:g}, g = {shell.gas:g}: the "
+            "breathing mode stable, 2 (1 + nu) - 2 p + g > 0"
+        )
+        raise ParameterError("prestress_ratio", valid, prestress_ratio)
+    return ShellParameters.from_ratios(
+        poisson, ratio, None if p == 0.0 else 1.0 / p, gas=gas or 0.0
+    )
 
 
 @checked(name="twoball.fem.solid_eigen")

@@ -293,8 +293,9 @@ def shell_eigen_arguments(args: argparse.Namespace) -> dict[str, Any]:
                 raise ParameterError(name, valid, getattr(args, name))
         out |= {
             "poisson": 0.5 if args.poisson is None else args.poisson,
-            "thickness_ratio": args.thickness_ratio or 0.0,
-            "prestress_ratio": args.prestress_ratio or 0.0,
+            # a value given ('' or 0) goes to the API as typed: only a missing one is 0
+            "thickness_ratio": 0.0 if args.thickness_ratio is None else args.thickness_ratio,
+            "prestress_ratio": 0.0 if args.prestress_ratio is None else args.prestress_ratio,
             "gas": gas_value(args.gas, si=False),
         }
         return out
