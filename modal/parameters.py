@@ -450,7 +450,27 @@ class Case:
             changes["v0_given"] = None
         if "wave_speed" in changes or "radius" in changes:  # c no longer P's and m's
             changes["pressure_sets_c"] = False
+        documented = self._documented_pressure(changes)
+        if documented is not None:
+            changes["pressure"] = documented
         return replace(self, **changes)
+
+    def _documented_pressure(self, changes: dict[str, Any]) -> float | None:
+        """The preset's own pressure when ``changes`` make a case without one stiff.
+
+        A preset without bending or gas keeps no pressure (it would act on
+        nothing, :attr:`pressure_note`), though it has one: the basketball's 77200 Pa
+        (Table 2, with m = 0.567 kg its c of eq. (3.8)).  Bending or a gas given to it
+        need the tension ``T = P R / 2`` (§4(b)): they take that pressure, as the
+        drop does, rather than asking for it.
+        """
+        if self.pressure is not None or self.preset_name not in MEASURED:
+            return None
+        bending = changes.get("bending", self.bending)
+        gas = changes.get("gas", self.gas)
+        if not (bending or gas != "none"):
+            return None
+        return MEASURED[self.preset_name].pressure
 
     @classmethod
     def preset(cls, name: str = "basketball", **changes: Any) -> Case:
