@@ -13,6 +13,7 @@ from __future__ import annotations
 
 import functools
 import math
+import pickle
 import signal
 import warnings
 from collections.abc import Callable
@@ -793,6 +794,9 @@ def test_unknown_keywords_stay_a_type_error_too() -> None:
     with pytest.raises(TypeError) as missing:
         twoball.body_preset()
     assert isinstance(missing.value, twoball.ParameterError) and missing.value.name == "pair"
+    for error in (caught.value, missing.value):  # a process pool sends them back pickled
+        again = pickle.loads(pickle.dumps(error))
+        assert type(again) is type(error) and (again.name, str(again)) == (error.name, str(error))
 
 
 #: Public names that take no keywords of a user's: each with the reason.

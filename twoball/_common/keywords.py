@@ -42,9 +42,6 @@ class ArgumentError(ParameterError, TypeError):
         ParameterError.__init__(self, name, valid, got)
 
 
-ArgumentError.__module__ = "twoball"
-
-
 class _Shape:
     """The arguments a function takes, read on its first call for a check on every call.
 
