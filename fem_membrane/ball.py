@@ -48,6 +48,10 @@ def drop_elements(order: int) -> int:
     >>> [twoball.drop_elements(p) for p in (1, 2, 3, 4)]
     [192, 96, 64, 48]
     """
+    from numbers import Integral
+
+    if isinstance(order, bool) or not isinstance(order, Integral) or not 1 <= order <= 4:
+        raise ParameterError("order", "an element order 1, 2, 3 or 4", order)
     return -(-NODE_INTERVALS // int(order))
 
 

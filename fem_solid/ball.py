@@ -598,6 +598,8 @@ class ThickBall:
         across = _check_int("cells", self.cells[0], (1, 16))
         along = _check_int("cells", self.cells[1], (8, 1024))
         object.__setattr__(self, "cells", (across, along))
+        if not isinstance(self.gas, bool):
+            raise ParameterError("gas", "True or False (the enclosed gas's stiffness)", self.gas)
 
     @property
     def label(self) -> str:

@@ -179,7 +179,7 @@ class Case:
 
     def _check_stiffness(self) -> None:
         bending = bounded("bending", self.bending, *BENDING_RANGE, "N m")
-        if self.gas not in GAS_MODELS:
+        if not isinstance(self.gas, str) or self.gas not in GAS_MODELS:
             raise ParameterError("gas", "one of " + ", ".join(GAS_MODELS), self.gas)
         if self.pressure is not None:
             object.__setattr__(

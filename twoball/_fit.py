@@ -174,6 +174,8 @@ def fit(
     limits = check_bounds(names, bounds)
     check_tolerance(tolerance, model)
     check_bootstrap(bootstrap)
+    if seed is not None and (isinstance(seed, bool) or not isinstance(seed, int) or seed < 0):
+        raise ParameterError("seed", "an integer >= 0 or None (the bootstrap's)", seed)
     if model == "closed":
         for name, value in (("pair", pair), ("body", body), ("drop", drop)):
             if value is not None:

@@ -121,6 +121,10 @@ def reproduce(
     check_progress(progress)
     workers, scheduler = where("twoball.reproduce", workers)
     names = parse_only(only)
+    if not isinstance(command, str):
+        from twoball._common.errors import ParameterError
+
+        raise ParameterError("command", "a str (the command the report names)", command)
     if not scheduler:
         workers = check_workers(workers)
     out = DEFAULT_OUT if out is None else out

@@ -119,7 +119,7 @@ def shell_eigen(
     backend: str = "legendre",
     count: int = SHELL_DEGREES,
     elements: int | None = None,
-    order: int = 2,
+    order: int | None = None,
     progress: Step | None = None,
 ) -> list[dict[str, Any]]:
     """The thin shell's spectrum, degrees 0..count, both branches, beside the closed form.
@@ -146,7 +146,8 @@ def shell_eigen(
     count : int
         Highest degree listed, >= 1 (``2 count + 1`` rows).
     elements, order : int
-        With ``backend="fem"``: meridian elements (default 64) and v's Lagrange order.
+        With ``backend="fem"``: meridian elements (default 64) and v's Lagrange order
+        (default 2); left out with the closed form, which has no mesh.
     progress : callable, optional
         Told what is solved.
 
@@ -176,9 +177,18 @@ def shell_eigen(
         raise ParameterError("count", "an integer in [1, 400] (the highest degree)", count)
     if backend not in ("legendre", "fem"):
         raise ParameterError("backend", "one of legendre, fem", backend)
+    if backend == "legendre":
+        for name, value in (("elements", elements), ("order", order)):
+            if value is not None:
+                valid = "left out with backend legendre (the closed form has no mesh)"
+                raise ParameterError(name, valid, value)
     time_unit = None
     if case is not None:
         from twoball.modal.balls.shell import Wall, _wall_of
+        from twoball.modal.parameters import Case
+
+        if not isinstance(case, Case):
+            raise ParameterError("case", "a twoball.Case or None", type(case).__name__)
 
         given = {"thickness_ratio": thickness_ratio, "prestress_ratio": prestress_ratio}
         for name, value in given.items():
@@ -201,6 +211,7 @@ def shell_eigen(
         from twoball.fem_shell.ball import DEFAULT_SHELL_ELEMENTS, FEShellBall
         from twoball.fem_shell.modes import fem_shell_modes
 
+        order = 2 if order is None else order
         mesh = FEShellBall(elements=elements, order=order)  # validates elements and order
         e = DEFAULT_SHELL_ELEMENTS if elements is None else mesh.mesh_elements
         (progress or silent)(f"shell eigenpairs on {e} elements, v P{order}")

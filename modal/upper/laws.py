@@ -102,7 +102,7 @@ class ContactLaw:
     thickness: float | None = None
 
     def __post_init__(self) -> None:
-        if self.law not in LAWS:
+        if not isinstance(self.law, str) or self.law not in LAWS:
             raise ParameterError("law", "one of " + ", ".join(LAWS), self.law)
         bounded("radius", self.radius, 0.0, 10.0, "m", low_open=True)
         needed = LAWS[self.law]

@@ -707,6 +707,16 @@ NO_LONGER_IGNORED: list[tuple[str, Callable[[Path], Any]]] = [
     ("values", lambda _: twoball.sweep({"damping": "0_1,0.2"})),
     ("only", lambda tmp: twoball.reproduce(tmp / "r", only=5)),
     ("only", lambda tmp: twoball.reproduce(tmp / "r", only=[5])),
+    ("command", lambda tmp: twoball.reproduce(tmp / "r", only="table1", command=5)),
+    ("gas", lambda _: twoball.Case(gas=["adiabatic"])),  # was: unhashable type
+    ("law", lambda _: twoball.ContactLaw(["pressure"], 0.8, 0.03, pressure=8e4)),
+    ("order", lambda _: twoball.drop_elements(object())),
+    ("order", lambda _: twoball.drop_elements(5)),
+    ("gas", lambda _: twoball.ThickBall(gas="yes")),
+    ("seed", lambda _: twoball.fit({"v0_m_s": [3.0], "v1_m_s": [1.0]}, "damping", seed="x")),
+    ("case", lambda _: twoball.fem.shell_eigen(case=object())),
+    ("elements", lambda _: twoball.fem.shell_eigen(elements=32)),  # the closed form: no mesh
+    ("order", lambda _: twoball.fem.shell_eigen(order=3)),
     # digit separators and other scripts' digits in text read as numbers
     ("pole", lambda _: M(file=__file__, pole="0,0_1,1")),
     ("size", lambda _: R(size="64x4_8")),
