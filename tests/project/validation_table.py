@@ -874,6 +874,20 @@ MESSAGES: list[tuple[list[str], tuple[str, ...], tuple[str, ...]]] = [
         ("prestress_ratio", "--wall-stiffness-ratio"),
     ),
     (["render", "--pair", "basketball-tennis"], ("twoball bounce --pair NAME --render FILE",), ()),
+    # paths as the user typed them, relative ones too (the case runs in its own folder)
+    *[
+        (argv, (f"got '{path}'",), ("/" + path,))
+        for argv, path in (
+            (["render", "--level", "1", "--out", "nodir/x.png"], "nodir/x.png"),
+            (["bounce", "--modes", "16", "--plot", "nodir/x.png"], "nodir/x.png"),
+            (
+                ["sweep", "--param", "damping", "--values", "0,0.1", "--csv", "nodir/x.csv"],
+                "nodir/x.csv",
+            ),
+            (["export", "--mesh-file", "a-file", "--out", "a-file"], "a-file"),
+            (["reproduce", "--only", "table1", "--out", "a-file"], "a-file"),
+        )
+    ],
     # budget refusals: this subcommand's flags, the defaults said to be defaults
     (
         ["bounce", "--max-time", "0.01s"],
