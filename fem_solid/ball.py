@@ -40,7 +40,7 @@ from typing import TYPE_CHECKING, Any
 import numpy as np
 from twoball.modal.balls.solid import SolidMaterial, check_material, material_of
 
-from twoball._common.errors import NumericalError, ParameterError, real_number
+from twoball._common.errors import NumericalError, ParameterError, check_labels, real_number
 from twoball._common.keywords import checked
 
 if TYPE_CHECKING:
@@ -495,6 +495,7 @@ class ThickWall:
     source: str = field(default="", compare=False)
 
     def __post_init__(self) -> None:
+        check_labels(self, "source")
         set_ = object.__setattr__
         set_(self, "youngs_modulus", _positive("youngs_modulus", self.youngs_modulus, 1e12))
         if (self.thickness is None) == (self.thickness_ratio is None):

@@ -36,7 +36,7 @@ from typing import TYPE_CHECKING, Any
 import numpy as np
 from twoball.modal.balls.description import ModalBall
 
-from twoball._common.errors import ParameterError, real_number
+from twoball._common.errors import ParameterError, check_labels, real_number
 from twoball._common.keywords import checked
 
 if TYPE_CHECKING:
@@ -130,6 +130,7 @@ class Wall:
     source: str = field(default="", compare=False)
 
     def __post_init__(self) -> None:
+        check_labels(self, "source")
         set_ = object.__setattr__
         set_(self, "poisson", _in("poisson", self.poisson, 0.0, 0.5))
         si = self.youngs_modulus is not None or self.thickness is not None

@@ -717,6 +717,9 @@ NO_LONGER_IGNORED: list[tuple[str, Callable[[Path], Any]]] = [
     ("case", lambda _: twoball.fem.shell_eigen(case=object())),
     ("elements", lambda _: twoball.fem.shell_eigen(elements=32)),  # the closed form: no mesh
     ("order", lambda _: twoball.fem.shell_eigen(order=3)),
+    ("name", lambda _: twoball.BallBody(name=5)),  # labels are text, as the JSON shows them
+    ("source", lambda _: twoball.SolidMaterial(1000.0, 3e6, 0.25, source=["paper"])),
+    ("source", lambda _: twoball.Wall(wall_stiffness_ratio=4.0, source=2)),
     # digit separators and other scripts' digits in text read as numbers
     ("pole", lambda _: M(file=__file__, pole="0,0_1,1")),
     ("size", lambda _: R(size="64x4_8")),
