@@ -19,11 +19,18 @@ from typing import Any
 from twoball._common.errors import ParameterError
 from twoball._common.keywords import checked
 from twoball._common.staging import check_path_type
+from twoball.modal.floor.bounce import CAVEATS, OVERLAP_NOTE
 from twoball.modal.floor.options import Drop
 from twoball.modal.floor.report import BounceReport as Numbers
 from twoball.modal.parameters import Case
 
-__all__ = ["BounceReport", "bounce", "check_field_targets"]
+__all__ = [
+    "CAVEATS",
+    "OVERLAP_NOTE",
+    "BounceReport",
+    "bounce",
+    "check_field_targets",
+]
 
 
 @checked
