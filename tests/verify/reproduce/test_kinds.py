@@ -81,7 +81,14 @@ def test_table1_with_each_ball_and_body_is_the_single_bounces(ctx):
 def test_the_gap_with_each_ball_and_body(ctx):
     sec = part.part_kinds_gap(ctx)
     curves = sec.data["curves"]["basketball-tissue"]
-    assert len(curves) == 2 * 2 * 2  # two balls, two kinds, two gaps
+    # two gaps of the shell with both kinds and of the membrane with the lumped body (its
+    # rigid body's curves are whole_gap's)
+    assert sorted({(c["ball"], c["kind"]) for c in curves}) == [
+        ("membrane", "lumped"),
+        ("shell", "lumped"),
+        ("shell", "rigid"),
+    ]
+    assert len(curves) == 3 * 2
     far = next(c for c in curves if (c["ball"], c["kind"], c["gap_m"]) == ("shell", "lumped", 0.2))
     alone = single("shell", "basketball-tissue", "lumped", 0.2)
     assert far["v1_ratio"] == pytest.approx(alone.v1_ratio)
