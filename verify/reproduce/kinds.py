@@ -285,8 +285,9 @@ def part_kinds_table1(ctx: Context) -> Section:
     sec.figures.append(
         (
             save(ctx, table1_figure(data), "kinds_table1.png"),
-            "Table 1 at Delta x = 0 with the membrane (open) and the shell (filled), each body "
-            "kind, beside the measurements and the ICM (2.6)",
+            "Table 1 at Delta x = 0 with the membrane (open markers; its rows 1-4 hang on the "
+            "degree-1 artefact) and the shell (filled; predictions), each body kind, beside "
+            "the measurements and the ICM (2.6)",
         )
     )
     return sec
@@ -513,9 +514,10 @@ def part_kinds_gap(ctx: Context) -> Section:
         "(2.5) and eq. (2.2) with Table 1's coefficients, the lumped baselines (touching) and "
         "Table 1's point at Delta x -> 0.  The measured scatter of Figs. 3 and 8 is not in "
         "the paper's text; its t_l window 9-14 ms at small gaps (Fig. 9) is drawn.",
-        "At small gaps the membrane's values hang on the degree-1 artefact for the tennis "
-        f"ball (row 4) and move by under 1 % for the light bodies ({ARTEFACT_SECTION}); the "
-        "shell's are predictions.  At large gaps both balls stay below the ICM with the rigid "
+        "At small gaps (the runs marked *) the membrane's elastic bodies are first struck by "
+        "the top's degree-1 precursor: the tennis ball's v1 and v2 hang on it, and the light "
+        f"bodies' t_l (the top throws them after 2-3 ms) ({ARTEFACT_SECTION}); the shell's "
+        "values are predictions.  At large gaps both balls stay below the ICM with the rigid "
         "body (e12_effective below Table 1's e12: docs/whole_bounce.rst, 'What the whole "
         "bounce reproduces, and what it does not'); the elastic bodies carry their own "
         "restitution (docs/bodies.rst).",
