@@ -32,7 +32,8 @@ every exit path: exceptions and, through
 into :class:`~twoball._common.signals.Interrupted`), signals; commits and clean-ups
 run with signals held back (:func:`deferred_signals`), and once a commit is done a
 signal is held until the next work starts (:func:`committed_signals`): a run
-whose last output is in place reports success, never "interrupted".  Scratch left by a killed
+signalled while its last output was committed keeps that output whole and still
+ends as interrupted (130 / 143, :mod:`twoball.cli.guard`).  Scratch left by a killed
 (SIGKILL) process is swept by the next run that writes the same target, once
 its process id is gone.
 
