@@ -29,7 +29,8 @@ Testing hook: with ``TWOBALL_TEST_PAUSE=STAGE`` in the environment,
 stage and sleeps (up to 60 s) so a test can signal the process at a known
 point (the stages of :mod:`twoball._common.staging`: ``begin``, ``staged``,
 ``commit``, and ``commit-folder`` for a report folder, whose files may be
-committed inside it first).  Only the standard library is imported.
+committed inside it first; ``part`` after each part of a reproduction is
+committed).  Only the standard library is imported.
 """
 
 from __future__ import annotations

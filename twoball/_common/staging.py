@@ -526,6 +526,19 @@ def staged_folder(
                 os.rename(scratch, out)
 
 
+@contextlib.contextmanager
+def scratch_folder(path: str | os.PathLike[str], param: str = "out") -> Iterator[Path]:
+    """A private working folder beside the folder ``path``, removed on every exit path.
+
+    For a writer that commits its folder more than once (:func:`staged_folder`
+    for each state worth keeping, e.g. every finished part of a reproduction)
+    and keeps what it has made so far here between the commits.
+    """
+    out = check_folder(path, param)
+    with _scratch_dir(out) as scratch:
+        yield scratch
+
+
 _RENAME_EXCHANGE = 2
 _AT_FDCWD = -100
 
@@ -567,6 +580,7 @@ __all__ = [
     "check_folder",
     "deferred_signals",
     "foreign_entry",
+    "scratch_folder",
     "staged_collection",
     "staged_file",
     "staged_folder",
