@@ -266,9 +266,9 @@ def _main(argv: Sequence[str] | None = None) -> int:
 
         fail(cli_message(error, args))
     except DeadlineError as error:
-        from twoball.cli.flags import flag_of
+        from twoball.cli.flags import limit_flags
 
-        fail(" ".join(str(error).split()).replace("max_time", flag_of("max_time")), EXIT_NUMERICAL)
+        fail(limit_flags(" ".join(str(error).split())), EXIT_NUMERICAL)
     except NumericalError as error:
         fail(f"numerical trouble: {error}", EXIT_NUMERICAL)
     finally:  # main() called again in one process (tests, scripts) starts afresh
