@@ -170,6 +170,7 @@ def interrupted_render(folder: Path, signum: int, delay: float) -> tuple[int, st
 @pytest.mark.parametrize(
     ("signum", "status", "delay"),
     [
+        (signal.SIGINT, 130, 0.1),  # early: the renderer's child is starting VTK
         (signal.SIGINT, 130, 0.35),
         (signal.SIGTERM, 143, 0.65),
         *(
@@ -192,7 +193,7 @@ def test_interrupted_render_exits_cleanly_and_keeps_the_earlier_gif(
     assert err.strip().splitlines() == ["twoball: interrupted"], err[-2000:]
     assert out.read_bytes() == EARLIER
     assert scratch_entries(tmp_path) == []
-    assert latency < 10.0  # a frame or two; generous for a loaded machine
+    assert latency < 1.0  # the drawing runs in a child: the parent acts at once
 
 
 # --------------------------------------------------------------------------- the mechanism

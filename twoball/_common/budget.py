@@ -289,8 +289,9 @@ class Budget:
         if left is not None and not (mapped <= left):
             raise BudgetError(
                 option.split()[0] if option else "max_memory",
-                f"{option} needs ~{format_bytes(mapped)} of address space (sparse LU "
-                f"reserves its fill); {format_bytes(left)} left under the address-space "
+                f"{option} needs ~{format_bytes(mapped)} of address space (sparse LU and "
+                f"the renderer reserve more than they touch); {format_bytes(left)} left "
+                "under the address-space "
                 "limit (ulimit -v): choose a smaller size, or raise that limit",
             )
         return estimate
