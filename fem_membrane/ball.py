@@ -60,7 +60,10 @@ class FEBall:
         spacing pi / 192; :func:`drop_elements` gives that spacing at every
         order), or any :class:`~twoball.MeshOptions` used as given (a sphere
         mesh serves the body on the paper's start, not the drop: the floor's
-        contact is axisymmetric).
+        contact is axisymmetric).  ``MeshOptions("axisym")`` without
+        ``elements`` is the lift-off's line, 400 elements: for the drop's
+        spacing at another order give ``elements=drop_elements(order)``, as
+        ``--backend fem --order P`` does.
 
     Examples
     --------

@@ -20,7 +20,7 @@ tennis ball        pressure   2 pi R1 P1, 82.7 kPa       0.83 (Table 1 e2)   ten
 tissue ball        hertz      E = 1 MPa (assumed)        0.50 (assumed)      --
 =================  =========  =========================  ==================  =================
 
-The table tennis ball's continuum body would be the shell ball of issue 31
+The table tennis ball's continuum body would be the shell ball (docs/shell.rst)
 (tangential displacement and bending); the membrane has no in-plane stiffness
 and would hold it by pressure it does not have, so no ball body is offered.
 """

@@ -17,11 +17,18 @@ from pathlib import Path
 from typing import Any
 
 from twoball._common.errors import NumericalError, ParameterError
+from twoball.modal.floor.bounce import CAVEATS, OVERLAP_NOTE
 from twoball.modal.floor.options import Drop
 from twoball.modal.floor.report import BounceReport as Numbers
 from twoball.modal.parameters import Case
 
-__all__ = ["BounceReport", "bounce", "check_field_targets"]
+__all__ = [
+    "CAVEATS",
+    "OVERLAP_NOTE",
+    "BounceReport",
+    "bounce",
+    "check_field_targets",
+]
 
 
 def bounce(
