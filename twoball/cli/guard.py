@@ -78,6 +78,29 @@ def guarded(command: Callable[..., int], *args: Any, process: bool = False) -> i
     return status
 
 
+def leave(status: int) -> None:
+    """End this process now with ``status``: the interrupted console script's last step.
+
+    Every clean-up of the run has been done by then (scratch removed, workers and
+    child processes ended, the one line written); what is left is the
+    interpreter's teardown of a thousand modules, 0.6-0.8 s on a loaded two-core
+    machine (0.03 s this way), which would make an interrupt take longer than
+    the second it is promised.  The ``atexit`` functions still run; standard
+    output and error are flushed first.
+    """
+    import atexit
+
+    try:
+        atexit._run_exitfuncs()
+    finally:
+        for stream in (sys.stdout, sys.stderr):
+            try:
+                stream.flush()
+            except (OSError, ValueError, AttributeError):
+                pass
+        os._exit(status)
+
+
 def _outcome(command: Callable[..., int], *args: Any) -> int:
     """The status of ``command(*args)``, interrupts and I/O failures mapped to one line.
 

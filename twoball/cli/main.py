@@ -231,10 +231,13 @@ def main(argv: Sequence[str] | None = None) -> int:
     exit status 2 (3 if the cause is not the user's path); see
     :mod:`twoball.cli.guard`.
     """
-    from twoball.cli.guard import guarded
+    from twoball.cli.guard import guarded, leave
 
     # the console script (no argv): this process is the run, its handlers last to the end
-    return guarded(_main, argv, process=argv is None)
+    status = guarded(_main, argv, process=argv is None)
+    if argv is None and status in (130, 143):  # interrupted: end within the second
+        leave(status)
+    return status
 
 
 def _main(argv: Sequence[str] | None = None) -> int:
