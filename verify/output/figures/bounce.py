@@ -196,7 +196,7 @@ def _contact_angle_panel(ax: Any, r: DropResult, case: Case, to_ms: float) -> No
     span = math.pi - low
     ax.set_ylim(low - 0.9 * span, math.pi + 0.05 * span)
     ax.set_ylabel(label(r"$\phi_a$", "rad"))
-    ax.legend(loc="lower center", ncols=2, fontsize="small")
+    ax.legend(loc="lower center", ncols=2)
 
 
 @styled

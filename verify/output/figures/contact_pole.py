@@ -164,7 +164,7 @@ def _draw_backend(
             xy=(t_l, final * 1e3),
             xytext=(8, 8 if k == 0 else -14),
             textcoords="offset points",
-            fontsize=7,
+            fontsize=8,
             color=colour,
         )
 
@@ -183,7 +183,7 @@ def _figure_legend(figure: Any, axes: Any) -> None:
         list(entries),
         loc="outside lower center",
         ncol=3,
-        fontsize=7,
+        fontsize=8,
         frameon=False,
     )
 

@@ -145,7 +145,7 @@ def pole_figure(model: BallModel, samples: int = 2500) -> Figure:
                 xy=(t_l_ms, mark.u[0] * si[0] * 1e3),
                 xytext=(8, 8 if name == "legendre" else -14),
                 textcoords="offset points",
-                fontsize=7,
+                fontsize=8,
                 color=lines[0].get_color(),
             )
     axes[2].axhline(-case.g, color=REFERENCE_COLOUR, linewidth=0.8, linestyle=":", label="$-g$")
@@ -261,8 +261,8 @@ def pole_motion_figure(
         if compare:
             draw_differences(rows[1::2], ms, diffs)
         _liftoff_legend(axes[2])
-        axes[0].legend(loc="best", fontsize=7)
-        axes[2].legend(loc="lower right", fontsize=7)
+        axes[0].legend(loc="best", fontsize=8)
+        axes[2].legend(loc="lower right", fontsize=8)
         rows[-1].set_xlabel(time_label("after maximal compression"))
     title = "Pole motion of every backend; dots and dashed line: lift-off"
     if compare and reference is not None:

@@ -188,13 +188,13 @@ def precursor_figure(
         xytext=(-4, 0),
         textcoords="offset points",
         ha="right",
-        fontsize=7,
+        fontsize=8,
     )
     axes[2].set_ylim(1e-7, None)
     axes[0].set_ylabel(label("$u(t, 0)$", "mm"))
     axes[1].set_ylabel(label("$u(t, 0)$", "mm"))
     axes[2].set_ylabel(label(r"$|u(t, 0)|$", "mm"))
-    axes[0].legend(loc="best", fontsize=7)
+    axes[0].legend(loc="best", fontsize=8)
     axes[0].set_title(f"(a) N = {case.modes}, the case's series; dots: lift-off", fontsize=9)
     axes[1].set_title(
         f"(b) before the front (N = {CONVERGED_FACTOR * case.modes}, converged)", fontsize=9

@@ -1,10 +1,14 @@
 """The one figure style of twoball: fonts, colours, labels with units, curve limits.
 
-Every figure of ``plot``, ``verify``, ``converge`` and ``reproduce`` is built
-inside :func:`styled` (a decorator applying :data:`STYLE` through
-:func:`matplotlib.rc_context`, so no global state changes) and labels its axes
-with :func:`label`: a mathtext symbol and its SI unit in brackets, or
-:data:`DIMENSIONLESS` for a pure number.  An axis carries at most
+Every figure of ``plot``, ``verify``, ``converge``, ``reproduce``, ``bounce
+--plot`` and ``liftoff --plot`` is built inside :func:`styled` (a decorator
+applying :data:`STYLE` through :func:`matplotlib.rc_context`, so no global state
+changes; the figure carries :data:`MARK`) and labels its axes with
+:func:`label`: a mathtext symbol and its SI unit in brackets, or
+:data:`DIMENSIONLESS` for a pure number.  Text outside mathtext writes its
+symbols in Unicode (φ, μ, |v₀|), never as ASCII stand-ins; no text is smaller
+than :data:`MIN_FONT_PT` at the saved size; legends go where they cover no data
+(``loc="best"`` or beside the panel); titles name the ball, pair or preset.  An axis carries at most
 :data:`MAX_CURVES` curves (plus reference lines); crowded data is split into
 small multiples with :func:`chunks`.  Comparisons of two solutions get a
 difference panel below (:func:`difference_limits` zooms it past the first
@@ -44,7 +48,7 @@ STYLE: dict[str, Any] = {
     "axes.labelsize": 9.0,
     "xtick.labelsize": 8.0,
     "ytick.labelsize": 8.0,
-    "legend.fontsize": 7.5,
+    "legend.fontsize": 8.0,
     "legend.framealpha": 0.85,
     "figure.titlesize": 10.5,
     "lines.linewidth": 1.2,
@@ -62,11 +66,19 @@ STYLE: dict[str, Any] = {
     "image.cmap": "viridis",
 }
 
+#: Smallest font size of any text at the saved size [pt] (tick labels and legends).
+MIN_FONT_PT = 8.0
+#: Attribute set (True) on every figure a :func:`styled` builder returns.
+MARK = "twoball_styled"
+
 Builder = TypeVar("Builder", bound=Callable[..., Any])
 
 
 def styled(builder: Builder) -> Builder:
-    """Run ``builder`` (which creates and draws a figure) under :data:`STYLE`."""
+    """Run ``builder`` (which creates and draws a figure) under :data:`STYLE`.
+
+    The figure it returns carries the attribute :data:`MARK`.
+    """
 
     @functools.wraps(builder)
     def run(*args: Any, **kwargs: Any) -> Any:
@@ -78,7 +90,10 @@ def styled(builder: Builder) -> Builder:
             linestyle=LINE_STYLES
         )
         with matplotlib.rc_context(rc):
-            return builder(*args, **kwargs)
+            made = builder(*args, **kwargs)
+        if hasattr(made, "savefig"):  # a figure: it says it was built in the style
+            setattr(made, MARK, True)
+        return made
 
     return run  # type: ignore[return-value]
 

@@ -111,7 +111,7 @@ def waterfall_figure(
             xytext=(4, 0),
             textcoords="offset points",
             va="center",
-            fontsize=7,
+            fontsize=8,
         )
     axis.axvline(
         model.case.phi_a,

@@ -81,3 +81,14 @@ def test_mean_force_keeps_every_impulse():
 def test_event_clusters():
     assert event_clusters([], 1.0) == []
     assert event_clusters([3.0, 1.0, 1.5], 1.0) == [(1.0, 1.5), (3.0, 3.0)]
+
+
+def test_bounce_plot_title_names_the_pair(whole, monkeypatch, tmp_path):
+    import twoball.verify.output.figures as figures
+
+    drawn = []
+    monkeypatch.setattr(figures, "save_figure", lambda figure, *a, **k: drawn.append(figure))
+    whole.plot(tmp_path / "whole.png")
+    title = drawn[0]._suptitle.get_text()
+    assert title.startswith("Whole bounce: basketball-tennis; "), title
+    assert "|v_0|" in title  # mathtext, not the ASCII |v0|

@@ -11,6 +11,7 @@ from pathlib import Path
 import numpy as np
 from twoball.modal.legendre import displacement
 from twoball.verify.output.fields import ball_model, coupled_model, field_mesh
+from twoball.verify.output.figures.contact import contact_figure
 from twoball.verify.output.figures.contact_pole import contact_pole_figure
 from twoball.verify.output.figures.eigen import (
     EigenErrors,
@@ -23,8 +24,11 @@ from twoball.verify.output.figures.pole import Trace, pole_figure, pole_motion_f
 from twoball.verify.output.figures.study import legend_name, study_figure
 from twoball.verify.output.figures.style import (
     DIMENSIONLESS,
+    MARK,
     MAX_CURVES,
+    MIN_FONT_PT,
     STACKED,
+    STYLE,
     chunks,
     curves,
     label,
@@ -97,6 +101,7 @@ def every_figure(case, coarse, monkeypatch):
     coupled = coupled_model(case, ("fem", "legendre"), twoball.Body(0.004), mesh)
     yield "plot pole with a body", contact_pole_figure(coupled, 300)
     yield "plot eigen", eigen_figure([eigen_table(lv, od, 2) for od in (1, 2) for lv in (0, 1)])
+    yield "liftoff --plot", contact_figure(twoball.liftoff(case, body=twoball.Body(0.1)))
     # verify: pole.png (8 backends: split in columns), eigenvalues.png, energy.png
     yield "verify pole", pole_motion_figure(case, _traces(case, range(30, 70, 5)), t_end, 300)
     tables = [eigen_table(lv, 1, 2) for lv in (0, 1, 2)]
@@ -175,10 +180,29 @@ def axis_labels(axis) -> list[str]:
     return [text for text in labels if text]
 
 
-def test_every_figure_labels_units_and_counts_curves(case, coarse, monkeypatch):
+def check_fonts_and_style(name, figure):
+    """Every visible text at least MIN_FONT_PT; the style's marks and rcParams on the figure."""
+    from matplotlib.text import Text
+
+    assert getattr(figure, MARK, False), f"{name}: built outside the style (styled)"
+    texts = [t for t in figure.findobj(Text) if t.get_visible() and t.get_text().strip()]
+    assert texts, name
+    for text in texts:
+        assert text.get_fontsize() >= MIN_FONT_PT, (name, text.get_text(), text.get_fontsize())
+    for axis in figure.axes:
+        if not axis.get_visible() or not axis.axison:
+            continue
+        ticks = [t for t in axis.get_xticklabels() + axis.get_yticklabels() if t.get_text()]
+        assert all(t.get_fontsize() == STYLE["xtick.labelsize"] for t in ticks), name
+        grid = [g for g in axis.get_xgridlines() + axis.get_ygridlines() if g.get_visible()]
+        assert all(g.get_alpha() == STYLE["grid.alpha"] for g in grid), name
+
+
+def test_every_figure_labels_units_fonts_and_counts_curves(case, coarse, monkeypatch):
     seen = []
     for name, figure in every_figure(case, coarse, monkeypatch):
         seen.append(name)
+        check_fonts_and_style(name, figure)
         visible = [a for a in figure.axes if a.get_visible()]
         labelled = [text for a in visible for text in axis_labels(a)]
         assert labelled, name
@@ -207,7 +231,7 @@ def test_every_figure_labels_units_and_counts_curves(case, coarse, monkeypatch):
         for text in texts:
             box = text.get_window_extent(renderer)
             assert box.x0 >= -1 and box.x1 <= width + 1, f"{name}: {text.get_text()!r} cut off"
-    assert len(seen) == 23
+    assert len(seen) == 24
 
 
 def test_crowded_data_becomes_small_multiples(case, coarse):
