@@ -154,7 +154,7 @@ def pole_figure(model: BallModel, samples: int = 2500) -> Figure:
         axis.set_ylabel(label(symbol, unit))
     _liftoff_legend(axes[2])
     axes[1].legend(loc="best")
-    axes[2].legend(loc="lower right")
+    axes[2].legend(loc="best")
     if compare:
         fem, ref = states["fem"], states["legendre"]
         diff = [
@@ -260,9 +260,10 @@ def pole_motion_figure(
                 )
         if compare:
             draw_differences(rows[1::2], ms, diffs)
-        _liftoff_legend(axes[2])
         axes[0].legend(loc="best", fontsize=8)
-        axes[2].legend(loc="lower right", fontsize=8)
+        if column == len(groups) - 1:  # the same two entries in every column: once, beside
+            _liftoff_legend(axes[2])
+            axes[2].legend(loc="upper left", bbox_to_anchor=(1.01, 1.0), fontsize=8)
         rows[-1].set_xlabel(time_label("after maximal compression"))
     title = "Pole motion of every backend; dots and dashed line: lift-off"
     if compare and reference is not None:

@@ -130,7 +130,9 @@ def waterfall_figure(
     )
     axis.set_gid(STACKED)
     axis.set_ylim(_waterfall_limits(curves, offset_mm, len(times)))
-    axis.legend(loc="upper left", markerscale=5)
+    # the stacked curves fill the panel: the legend goes below the figure, covering none
+    handles, names = axis.get_legend_handles_labels()
+    figure.legend(handles, names, loc="outside lower center", ncols=3, markerscale=5)
     case = model.case
     axis.set_title(
         f"Radial displacement at {len(times)} instants (cf. Fig. 6): "

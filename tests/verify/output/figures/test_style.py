@@ -198,6 +198,24 @@ def check_fonts_and_style(name, figure):
         assert all(g.get_alpha() == STYLE["grid.alpha"] for g in grid), name
 
 
+def covered_points(axis, renderer) -> int:
+    """Data points (line vertices, scattered markers) of ``axis`` under its legend's frame."""
+    legend = axis.get_legend()
+    if legend is None:
+        return 0
+    box = legend.get_window_extent(renderer)
+    points = [axis.transData.transform(line.get_xydata()) for line in curves(axis)]
+    for collection in axis.collections:
+        offsets = collection.get_offsets()
+        if len(offsets) and collection.get_offset_transform() is not None:
+            points.append(collection.get_offset_transform().transform(offsets))
+    return sum(
+        int(np.count_nonzero((p[:, 0] > box.x0) & (p[:, 0] < box.x1) & (p[:, 1] > box.y0)
+                             & (p[:, 1] < box.y1)))
+        for p in points
+    )  # fmt: skip
+
+
 def test_every_figure_labels_units_fonts_and_counts_curves(case, coarse, monkeypatch):
     seen = []
     for name, figure in every_figure(case, coarse, monkeypatch):
@@ -231,6 +249,8 @@ def test_every_figure_labels_units_fonts_and_counts_curves(case, coarse, monkeyp
         for text in texts:
             box = text.get_window_extent(renderer)
             assert box.x0 >= -1 and box.x1 <= width + 1, f"{name}: {text.get_text()!r} cut off"
+        for axis in visible:  # legends at their best spot or beside: over no data
+            assert covered_points(axis, renderer) == 0, f"{name}: {axis.get_ylabel()!r}"
     assert len(seen) == 24
 
 
