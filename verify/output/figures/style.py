@@ -74,6 +74,21 @@ MARK = "twoball_styled"
 Builder = TypeVar("Builder", bound=Callable[..., Any])
 
 
+def style_rc() -> dict[str, Any]:
+    """:data:`STYLE` with its colour and line-style cycle: the rcParams of every figure.
+
+    Saving needs them too: a colour given as ``"C1"`` is looked up in the cycle
+    when the figure is drawn, not when the line is made.
+    """
+    from cycler import cycler
+
+    rc = dict(STYLE)
+    rc["axes.prop_cycle"] = cycler(color=COLOURS[: len(LINE_STYLES)]) + cycler(
+        linestyle=LINE_STYLES
+    )
+    return rc
+
+
 def styled(builder: Builder) -> Builder:
     """Run ``builder`` (which creates and draws a figure) under :data:`STYLE`.
 
@@ -83,19 +98,43 @@ def styled(builder: Builder) -> Builder:
     @functools.wraps(builder)
     def run(*args: Any, **kwargs: Any) -> Any:
         import matplotlib
-        from cycler import cycler
 
-        rc = dict(STYLE)
-        rc["axes.prop_cycle"] = cycler(color=COLOURS[: len(LINE_STYLES)]) + cycler(
-            linestyle=LINE_STYLES
-        )
-        with matplotlib.rc_context(rc):
+        with matplotlib.rc_context(style_rc()):
             made = builder(*args, **kwargs)
-        if hasattr(made, "savefig"):  # a figure: it says it was built in the style
-            setattr(made, MARK, True)
+            if hasattr(made, "savefig"):  # a figure: it says it was built in the style
+                _fix_cycle_colours(made)
+                setattr(made, MARK, True)
         return made
 
     return run  # type: ignore[return-value]
+
+
+def _fix_cycle_colours(figure: Any) -> None:
+    """Replace colours named ``"C0"``.. on lines and texts by the style's own (hex).
+
+    matplotlib looks such a name up in the colour cycle when it draws, so a
+    figure saved outside the style would take the default cycle's colours.
+    """
+    import re
+
+    from matplotlib.colors import to_hex
+    from matplotlib.lines import Line2D
+    from matplotlib.text import Text
+
+    cycle = re.compile(r"C\d+")
+    for line in figure.findobj(Line2D):
+        for get, put in (
+            (line.get_color, line.set_color),
+            (line.get_markerfacecolor, line.set_markerfacecolor),
+            (line.get_markeredgecolor, line.set_markeredgecolor),
+        ):
+            value = get()
+            if isinstance(value, str) and cycle.fullmatch(value):
+                put(to_hex(value))
+    for text in figure.findobj(Text):
+        value = text.get_color()
+        if isinstance(value, str) and cycle.fullmatch(value):
+            text.set_color(to_hex(value))
 
 
 def label(quantity: str, unit: str | None) -> str:

@@ -275,6 +275,28 @@ def test_crowded_data_becomes_small_multiples(case, coarse):
     assert [len(a.get_lines()) for a in eigen_figure(many).axes] == [4, 3]
 
 
+def test_cycle_colours_are_the_styles_wherever_the_figure_is_saved(tmp_path):
+    from matplotlib.colors import to_hex
+    from twoball.verify.output.figures import new_figure
+    from twoball.verify.output.figures.style import COLOURS, styled
+
+    @styled
+    def drawn():
+        figure = new_figure(3.0, 2.0)
+        axis = figure.subplots()
+        axis.plot([0, 1, 2], [0, 1, 0], color="C1", label="x")
+        axis.text(0.5, 0.5, "t", color="C2")
+        return figure
+
+    figure = drawn()
+    (line,) = figure.axes[0].get_lines()
+    # "C1" is looked up when drawn: outside the style it would be matplotlib's orange
+    assert to_hex(line.get_color()) == COLOURS[1].lower()
+    assert to_hex(figure.axes[0].texts[0].get_color()) == COLOURS[2].lower()
+    figure.savefig(tmp_path / "plain.png")  # saved by hand, not by save_figure: the same
+    assert to_hex(line.get_color()) == COLOURS[1].lower()
+
+
 def test_label_helpers():
     assert label("$t$", "ms") == "$t$ [ms]"
     assert label("$N$", None) == f"$N$ {DIMENSIONLESS}"
