@@ -22,6 +22,7 @@ from twoball.verify.output.figures.style import (
     REFERENCE_COLOUR,
     label,
     styled,
+    subject,
     time_label,
 )
 
@@ -96,9 +97,10 @@ def contact_pole_figure(model: CoupledModel, samples: int = 2500) -> Figure:
     _figure_legend(figure, grid)
     report = next(iter(model.backends.values())).report
     figure.suptitle(
-        rf"Cap ($a$ = {report.contact_radius_m * 1e3:.3g} mm) and body of mass ratio "
+        f"{subject(model.case)}: "
+        rf"cap ($a$ = {report.contact_radius_m * 1e3:.3g} mm) and body of mass ratio "
         rf"$\mu$ = {report.mass_ratio:g}, $e$ = {report.restitution:g}"
-        + (", finite elements − closed form below each" if compare else "")
+        + ("\nfinite elements − closed form below each" if compare else "")
     )
     return figure
 

@@ -28,6 +28,7 @@ from twoball.verify.output.figures.style import (
     difference_unit,
     label,
     styled,
+    subject,
     time_label,
 )
 
@@ -165,7 +166,8 @@ def pole_figure(model: BallModel, samples: int = 2500) -> Figure:
         grid[1].legend(loc="upper right")
     grid[-1].set_xlabel(time_label("after maximal compression"))
     figure.suptitle(
-        r"Motion of the pole ($\varphi = 0$)"
+        f"{subject(model.case)}: "
+        + r"motion of the pole ($\varphi = 0$)"
         + (", finite elements − closed form below each" if compare else ""),
     )
     return figure
@@ -265,7 +267,7 @@ def pole_motion_figure(
             _liftoff_legend(axes[2])
             axes[2].legend(loc="upper left", bbox_to_anchor=(1.01, 1.0), fontsize=8)
         rows[-1].set_xlabel(time_label("after maximal compression"))
-    title = "Pole motion of every backend; dots and dashed line: lift-off"
+    title = f"{subject(case)}: pole motion of every backend; dots and dashed line: lift-off"
     if compare and reference is not None:
         title += f"; below each: difference to {_pretty(reference.label)}"
     fig.suptitle(title)

@@ -198,6 +198,11 @@ def difference_unit(values_si: np.ndarray, unit: str) -> tuple[float, str]:
     return factor, prefix + unit
 
 
+def subject(case: Any) -> str:
+    """What a figure shows, for its title: the case's preset (``basketball``) or ``custom ball``."""
+    return getattr(case, "preset_name", None) or "custom ball"
+
+
 def time_label(after: str = "") -> str:
     """The time axis label, in ms (``after`` appended, e.g. "after maximal compression")."""
     return label("$t$", "ms") + (f" {after}" if after else "")

@@ -102,6 +102,8 @@ def every_figure(case, coarse, monkeypatch):
     yield "plot pole with a body", contact_pole_figure(coupled, 300)
     yield "plot eigen", eigen_figure([eigen_table(lv, od, 2) for od in (1, 2) for lv in (0, 1)])
     yield "liftoff --plot", contact_figure(twoball.liftoff(case, body=twoball.Body(0.1)))
+    yield "plot precursor", _precursor(case)
+    yield "fit --plot", _fit()
     # verify: pole.png (8 backends: split in columns), eigenvalues.png, energy.png
     yield "verify pole", pole_motion_figure(case, _traces(case, range(30, 70, 5)), t_end, 300)
     tables = [eigen_table(lv, 1, 2) for lv in (0, 1, 2)]
@@ -143,6 +145,32 @@ def every_figure(case, coarse, monkeypatch):
     yield from _whole_bounce_figures()
 
 
+def _precursor(case):
+    from twoball.modal.report import t_end_dimensionless
+    from twoball.verify.output.figures.precursor import law_curves, precursor_figure
+
+    solver = twoball.ClosedForm()
+    window = t_end_dimensionless(case, solver.t_end)
+    curves = law_curves(case, solver.sigma, solver.recontact, window)
+    return precursor_figure(case, curves, window)
+
+
+def _fit():
+    from twoball.verify.output.figures.fit import fit_figure
+
+    measured = np.array([[3.7, 0.0099], [4.4, np.nan]])
+    predicted = np.array([[3.6, 0.00985], [4.5, 0.0099]])
+    curve = {
+        "v0_m_s": np.linspace(4.0, 5.0, 5),
+        "v1_m_s": np.linspace(3.6, 4.5, 5),
+        "t_liftoff_s": np.full(5, 0.0099),
+    }
+    columns = ("v1_m_s", "t_liftoff_s")
+    inputs = {"v0_m_s": np.array([4.1, 4.9])}
+    errors = np.full((2, 2), 0.05)
+    return fit_figure(inputs, columns, measured, predicted, errors, curve, "basketball: a fit")
+
+
 def _whole_bounce_figures():
     """The drop's and the whole bounce's figures (coarse runs: N = 16)."""
     from twoball.verify.output.figures.bounce import drop_figure, gap_figure, whole_figure
@@ -151,6 +179,11 @@ def _whole_bounce_figures():
     coarse = twoball.MoreauJean(twoball.LegendreBall(16))
     drop = twoball.bounce(solver=coarse)
     yield "plot bounce", drop_figure(drop.result, drop.case, drop.mass_kg, "legendre")
+    from twoball.verify.output.figures.drop_sweep import drop_sweep_figure
+
+    swept = twoball.sweep({"damping": [0.1, 0.2]}, drop=twoball.Drop(), solver=coarse)
+    points = list(zip(swept.values, swept.reports, strict=True))
+    yield "bounce sweep --plot", drop_sweep_figure(points, "damping")
     whole = twoball.bounce(solver=coarse, pair="basketball-tennis")
     icm = (1.0, 2.0)
     yield "plot whole bounce", whole_figure(whole.result, whole.case, whole.mass_kg, "x", icm)
@@ -196,6 +229,20 @@ def check_fonts_and_style(name, figure):
         assert all(t.get_fontsize() == STYLE["xtick.labelsize"] for t in ticks), name
         grid = [g for g in axis.get_xgridlines() + axis.get_ygridlines() if g.get_visible()]
         assert all(g.get_alpha() == STYLE["grid.alpha"] for g in grid), name
+
+
+#: Figures whose title names what they show (the basketball preset, a pair).
+NAMED = {
+    "plot waterfall": "basketball",
+    "plot pole": "basketball",
+    "plot pole with a body": "basketball",
+    "verify pole": "basketball",
+    "verify energy": "basketball",
+    "plot precursor": "basketball",
+    "bounce sweep --plot": "basketball",
+    "plot whole bounce": "x",
+    "sweep gap": "x",
+}
 
 
 def covered_points(axis, renderer) -> int:
@@ -249,9 +296,12 @@ def test_every_figure_labels_units_fonts_and_counts_curves(case, coarse, monkeyp
         for text in texts:
             box = text.get_window_extent(renderer)
             assert box.x0 >= -1 and box.x1 <= width + 1, f"{name}: {text.get_text()!r} cut off"
+        if name in NAMED:  # the title says which ball (the preset) or pair is shown
+            titles = [title] + [a.get_title() for a in visible]
+            assert any(NAMED[name] in t for t in titles), (name, titles)
         for axis in visible:  # legends at their best spot or beside: over no data
             assert covered_points(axis, renderer) == 0, f"{name}: {axis.get_ylabel()!r}"
-    assert len(seen) == 24
+    assert len(seen) == 27
 
 
 def test_crowded_data_becomes_small_multiples(case, coarse):
