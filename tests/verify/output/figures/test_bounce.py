@@ -4,12 +4,8 @@ from __future__ import annotations
 
 import numpy as np
 import pytest
-from twoball.verify.output.figures.bounce import (
-    EVENT_LINE,
-    event_clusters,
-    mean_force,
-    whole_figure,
-)
+from twoball.verify.output.figures.bounce import EVENT_LINE, event_clusters, whole_figure
+from twoball.verify.output.forces import mean_force
 
 import twoball
 
@@ -92,3 +88,27 @@ def test_bounce_plot_title_names_the_pair(whole, monkeypatch, tmp_path):
     title = drawn[0]._suptitle.get_text()
     assert title.startswith("Whole bounce: basketball-tennis; "), title
     assert "|v_0|" in title  # mathtext, not the ASCII |v0|
+
+
+def test_exported_and_rendered_forces_are_the_figures(whole):
+    """The files' and pictures' frame forces read the figure's curves (no 0 N at touches)."""
+    from twoball.fem_membrane.mesh import sphere_mesh
+    from twoball.verify.output.drop_fields import drop_series
+
+    r, case = whole.result, whole.case
+    figure = whole_figure(r, case, whole.mass_kg, "basketball-tennis")
+    curves = {}
+    for name in ("floor on the ball", "ball on the body"):
+        _, line = _line(figure, name)
+        curves[name] = (np.asarray(line.get_xdata()), np.asarray(line.get_ydata()))
+    t_ms, floor = curves["floor on the ball"]
+    carried = t_ms[floor > 0]
+    times_s = np.linspace(carried[0], carried[-1], 97) * 1e-3
+    series = drop_series(r, case, sphere_mesh(1), times_s, whole.mass_kg, "x")
+    shown = series.frame_data["floor_force_N"]
+    assert np.all(shown > 0.0)
+    np.testing.assert_allclose(shown, np.interp(times_s * 1e3, t_ms, floor), rtol=1e-9)
+    t_body, body = curves["ball on the body"]
+    np.testing.assert_allclose(
+        series.frame_data["body_force_N"], np.interp(times_s * 1e3, t_body, body), rtol=1e-9
+    )
