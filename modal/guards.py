@@ -44,7 +44,16 @@ Inputs far from any ball (unit and sign slips)
     takes the place of the speed's check, and a gap between the body and the
     ball above :data:`GAP_LARGE` (1 m, several ball diameters; ``--gap 5``, meant
     mm) is said as well.  Each guess is the value read in mm (and cm, for a
-    length) that lands inside the range.  A window
+    length) that lands inside the range.  The wave speed c more than
+    :data:`SLIP_FACTOR` (100) times from its preset's (``--wave-speed 3.2e5``,
+    meant 320 1/s; without a preset, outside :data:`WAVE_SPEED_BAND`), and the
+    mass behind a pressure and mass (``--pressure 77200 --mass 567``, meant
+    0.567 kg: ``m = 2 pi R P / c^2`` by eq. (3.8)) more than 100 times from its
+    preset's (without one, outside :data:`BALL_MASS`) are said with the value
+    read as 1/1000 of it (or 1000 times it) when that lands within ten times the
+    preset's.  A sweep checks its values against the same ranges before any point
+    runs (:func:`sweep_slips`), so that a sweep of slips is said even when no
+    point is run.  A window
     in which nothing could lift off: longer than the flight ``2 |v0| / g`` of a
     body leaving at the impact speed, with the whole window as the re-contact
     horizon, every lift-off falls back inside it and is rejected (``t_end`` = 5,
@@ -77,6 +86,9 @@ BALL_RADIUS = (2e-3, 2.0)  # m: a 4 mm bead to a 4 m push ball
 IMPACT_SPEED = 100.0  # m/s: above the fastest ball sports (golf, jai alai ~80 m/s)
 DROP_HEIGHT = 100.0  # m: a drop from a tower (44 m/s without air drag)
 GAP_LARGE = 1.0  # m: several ball diameters between the body and the ball's top
+SLIP_FACTOR = 100.0  # c or m this many times from the preset's: a slip of units (x1000)
+WAVE_SPEED_BAND = (1.0, 1e5)  # 1/s, without a preset: the balls' 273-2000 1/s well inside
+BALL_MASS = (1e-4, 100.0)  # kg, without a preset: a 0.1 g bead to a 100 kg medicine ball
 REFOCUS_PERIOD = 2.0 * math.pi  # dimensionless: the wave is back at the pole after 2 pi / c
 
 
@@ -290,45 +302,154 @@ def _lengths_meant(value: float, bounds: tuple[float, float]) -> str:
     return f"; did you mean {' or '.join(meant)}?" if meant else ""
 
 
+def _preset_value(case: Case, name: str) -> float | None:
+    """The case's preset's measured ``wave_speed`` or ``mass`` (None without one)."""
+    from twoball.modal.presets import MEASURED
+
+    measured = MEASURED.get(case.preset_name or "")
+    value = None if measured is None else getattr(measured, name, None)
+    return None if value is None else float(value)
+
+
+def slip_range(field: str, case: Case) -> tuple[float, float] | None:
+    """The values of ``field`` said to be no slip of units for ``case`` (None: any value).
+
+    ``field``: ``radius``, ``v0``, ``wave_speed`` [1/s], ``mass`` [kg] (behind a
+    pressure and mass), ``drop_height`` or ``gap`` [m] (module docstring).
+    """
+    if field in ("wave_speed", "mass"):
+        preset = _preset_value(case, field)
+        if preset is None:
+            return WAVE_SPEED_BAND if field == "wave_speed" else BALL_MASS
+        return preset / SLIP_FACTOR, preset * SLIP_FACTOR
+    return {
+        "radius": BALL_RADIUS,
+        "v0": (0.0, IMPACT_SPEED),
+        "drop_height": (0.0, DROP_HEIGHT),
+        "gap": (0.0, GAP_LARGE),
+    }.get(field)
+
+
+def _thousand_meant(value: float, preset: float | None, unit: str, small: str = "") -> str:
+    """``"; did you mean 320 1/s?"``: ``value`` / 1000 (or x 1000) within ten times the preset's.
+
+    ``small``: the unit a thousandth of ``unit`` is (``g`` for ``kg``), named beside it.
+    """
+    if preset is None:
+        return ""
+    for meant in (value * 1e-3, value * 1e3):
+        if preset / 10.0 <= meant <= preset * 10.0:
+            typed = f" ({value:g} {small})" if small and meant < value else ""
+            return f"; did you mean {meant:g} {unit}{typed}?"
+    return ""
+
+
+def value_slip(field: str, value: float, case: Case) -> str | None:
+    """The warning for a value of ``field`` outside :func:`slip_range`, with the value meant.
+
+    None inside it (or for a field without a range).  ``case`` gives the preset and,
+    for a drop height or a mass, g, R and the pressure.
+    """
+    bounds = slip_range(field, case)
+    if bounds is None or _inside(value, bounds):
+        return None
+    if field == "radius":
+        size = "larger" if value > BALL_RADIUS[1] else "smaller"
+        return (
+            f"R = {value:g} m is far {size} than any ball ({BALL_RADIUS[0]:g} to "
+            f"{BALL_RADIUS[1]:g} m; lengths are in metres){_lengths_meant(value, BALL_RADIUS)}"
+        )
+    if field == "v0":
+        return (
+            f"|v0| = {value:g} m/s is far faster than any ball's impact (up to "
+            f"{IMPACT_SPEED:g} m/s; speeds are in m/s); did you mean {value * 1e-3:g} m/s "
+            f"({value:g} mm/s)?"
+        )
+    if field == "drop_height":
+        speed = math.sqrt(2.0 * case.g * value)
+        return (
+            f"the drop height H = {value:g} m is far higher than any drop of a ball "
+            f"(up to {DROP_HEIGHT:g} m; heights are in metres), an impact at |v0| = "
+            f"sqrt(2 g H) = {speed:.4g} m/s{_lengths_meant(value, (0.0, DROP_HEIGHT))}"
+        )
+    if field == "gap":
+        return (
+            f"the gap Delta x = {value:g} m between the body and the ball's top is far larger "
+            f"than in any stacked drop (up to {GAP_LARGE:g} m; lengths are in metres)"
+            f"{_lengths_meant(value, (0.0, GAP_LARGE))}"
+        )
+    preset = _preset_value(case, field)
+    if preset is None:
+        where = f"outside {bounds[0]:g} to {bounds[1]:g}"
+    else:
+        factor = max(value / preset, preset / value)
+        unit = "1/s" if field == "wave_speed" else "kg"
+        where = f"{factor:.4g} times from the {case.preset_name} preset's {preset:g} {unit}"
+    if field == "wave_speed":
+        return (
+            f"the wave speed c = {value:g} 1/s is {where} (c is the angular wave speed "
+            f"sqrt(T / rho) / R in 1/s){_thousand_meant(value, preset, '1/s')}"
+        )
+    return (
+        f"the mass m = {value:g} kg (with P = {case.pressure:g} Pa, c = "
+        f"{case.wave_speed:.4g} 1/s by eq. (3.8)) is {where} (masses are in kg)"
+        f"{_thousand_meant(value, preset, 'kg', 'g')}"
+    )
+
+
+def case_mass(case: Case) -> float | None:
+    """The mass [kg] a case was given with its pressure (``2 pi R P / c^2``, eq. (3.8)), or None."""
+    if not case.pressure_sets_c or case.pressure is None:
+        return None
+    return 2.0 * math.pi * case.radius * case.pressure / case.wave_speed**2
+
+
 def case_warnings(
     case: Case, *, drop_height: float | None = None, gap: float | None = None
 ) -> list[str]:
-    """R or ``|v0|`` far outside any ball, with the value probably meant (module docstring).
+    """R, ``|v0|``, c or the mass far outside any ball, with the value probably meant
+    (module docstring).
 
     ``drop_height`` [m]: the drop's height, which set ``|v0| = sqrt(2 g H)``; it is
     judged in place of the speed (the user typed the height).  ``gap`` [m]: the
-    whole bounce's gap between the body and the ball's top.
+    whole bounce's gap between the body and the ball's top.  A wave speed that came
+    from a pressure and a mass is judged by the mass (the user typed the mass).
     """
-    warnings = []
-    radius = case.radius
-    if not _inside(radius, BALL_RADIUS):
-        size = "larger" if radius > BALL_RADIUS[1] else "smaller"
-        warnings.append(
-            f"R = {radius:g} m is far {size} than any ball ({BALL_RADIUS[0]:g} to "
-            f"{BALL_RADIUS[1]:g} m; lengths are in metres){_lengths_meant(radius, BALL_RADIUS)}"
-        )
-    if drop_height is not None:
-        if drop_height > DROP_HEIGHT:
-            guess = _lengths_meant(drop_height, (0.0, DROP_HEIGHT))
-            warnings.append(
-                f"the drop height H = {drop_height:g} m is far higher than any drop of a ball "
-                f"(up to {DROP_HEIGHT:g} m; heights are in metres), an impact at |v0| = "
-                f"sqrt(2 g H) = {case.v0:.4g} m/s{guess}"
-            )
-    elif case.v0 > IMPACT_SPEED:
-        meant = case.v0 * 1e-3
-        warnings.append(
-            f"|v0| = {case.v0:g} m/s is far faster than any ball's impact (up to "
-            f"{IMPACT_SPEED:g} m/s; speeds are in m/s); did you mean {meant:g} m/s "
-            f"({case.v0:g} mm/s)?"
-        )
-    if gap is not None and gap > GAP_LARGE:
-        guess = _lengths_meant(gap, (0.0, GAP_LARGE))
-        warnings.append(
-            f"the gap Delta x = {gap:g} m between the body and the ball's top is far larger "
-            f"than in any stacked drop (up to {GAP_LARGE:g} m; lengths are in metres){guess}"
-        )
-    return warnings
+    mass = case_mass(case)
+    checks: list[tuple[str, float | None]] = [
+        ("radius", case.radius),
+        ("drop_height", drop_height) if drop_height is not None else ("v0", case.v0),
+        ("mass", mass) if mass is not None else ("wave_speed", case.wave_speed),
+        ("gap", gap),
+    ]
+    said = (value_slip(field, value, case) for field, value in checks if value is not None)
+    return [text for text in said if text is not None]
+
+
+def sweep_slips(field: str, name: str, values: Any, case: Case) -> str | None:
+    """One warning for the swept values of ``field`` (CLI ``name``) outside
+    :func:`slip_range` for the base ``case``: how many, and the first one's warning.
+
+    Checked on the values alone, before any point runs (and so also when the budget
+    refuses the sweep); None when none is a slip.
+    """
+    import numpy as np
+
+    bounds = slip_range(field, case)
+    if bounds is None:
+        return None
+    array = np.asarray(values, dtype=float)
+    outside = (array < bounds[0]) | (array > bounds[1])
+    count = int(outside.sum())
+    if count == 0:
+        return None
+    first = float(array[outside][0])
+    text = value_slip(field, first, case)
+    every = " (every value)" if count == array.size else ""
+    return (
+        f"{count} of {array.size} values of {name}{every} lie far outside any ball, the first "
+        f"{name} = {first:g}: {text}"
+    )
 
 
 def span_warnings(case: Case, result: LiftoffResult, window_given: bool = True) -> list[str]:

@@ -316,7 +316,13 @@ class Case:
                 ("|v0|", self.v0, m.v0, "m/s"),
             )
             if not _same(value, ref)
-        ] or [f"|v0| = {self.v0:g} m/s"]
+        ]
+        if not moved:  # asked for at the preset's own point (a sweep's one rule, or by name)
+            return (
+                f"phi_a = {self.phi_a:.4f} rad from eq. (3.7), as asked, at the "
+                f"{self.preset_name} preset's own R, c, |v0| (its measured {m.phi_a:g} rad "
+                "not used)"
+            )
         return (
             f"phi_a = {self.phi_a:.4f} rad from eq. (3.7) for {', '.join(moved)}; the "
             f"{self.preset_name} preset's measured {m.phi_a:g} rad applies only at its own "

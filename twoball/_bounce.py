@@ -17,11 +17,18 @@ from pathlib import Path
 from typing import Any
 
 from twoball._common.errors import NumericalError, ParameterError
+from twoball.modal.floor.bounce import CAVEATS, OVERLAP_NOTE
 from twoball.modal.floor.options import Drop
 from twoball.modal.floor.report import BounceReport as Numbers
 from twoball.modal.parameters import Case
 
-__all__ = ["BounceReport", "bounce", "check_bounce_cost", "check_field_targets"]
+__all__ = [
+    "CAVEATS",
+    "OVERLAP_NOTE",
+    "BounceReport",
+    "bounce",
+    "check_field_targets",
+]
 
 
 def bounce(
@@ -123,6 +130,8 @@ def bounce(
         t_end=solver.t_end,
         damping=damping,
     )
+    from twoball._costs import check_bounce_cost
+
     check_bounce_cost(problem)
     from twoball._common.watch import Watch
 
@@ -154,43 +163,6 @@ def _check_options(body: Any, damping: Any) -> None:
         raise ParameterError("body", valid, type(body).__name__)
     if damping is not None and not isinstance(damping, (ModalRatio, Rayleigh)):
         raise ParameterError("damping", "a twoball.ModalRatio or twoball.Rayleigh", damping)
-
-
-def check_bounce_cost(problem: Any) -> None:
-    """Refuse, before any work, a drop that cannot fit the budget (memory and time).
-
-    The likely cost of :func:`~twoball.modal.floor.cost.likely_drop` from the
-    problem's size; the run's monitor stops it at the deadline beyond that.  A
-    ball that cannot say its size before it is built is not refused here.
-    """
-    from twoball._common.budget import check
-    from twoball._common.estimate import options
-    from twoball.modal.floor.cost import expected_span, likely_drop
-
-    work = problem.work()
-    if work["size"] is None:
-        return
-    dofs, points = work["size"]
-    case = problem.case
-    ball = problem.ball
-    asked: dict[str, Any] = {}
-    if getattr(ball, "modes", None) is not None:
-        asked["modes"] = ball.modes
-    mesh = getattr(ball, "mesh", None)
-    if mesh is not None and getattr(mesh, "elements", None) is not None:
-        asked["elements"] = mesh.elements
-    asked |= {"dt": work["dt"] / case.wave_speed, "t_end": work["t_end"] / case.wave_speed}
-    estimate = likely_drop(
-        dofs,
-        points,
-        work["t_end"],
-        work["dt"],
-        work["dense"],
-        span=expected_span(work["body"], work["gap"], work["v0"]),
-        v0=work["v0"],
-        runs=work["runs"],
-    )
-    check(options(**asked), estimate)
 
 
 def check_field_targets(

@@ -28,6 +28,7 @@ if TYPE_CHECKING:
     from twoball.modal.stiffness import Stiffness
 
 __all__ = [
+    "check_bounce_cost",
     "check_contact",
     "check_fem",
     "check_fem_contact",
@@ -183,3 +184,40 @@ def check_stepped_contact(
     step = DEFAULT_DT if dt is None else dt
     steps = window / step + 10.0
     return check(options(modes=modes), drop_estimate(coordinates + 1, 1, steps))
+
+
+def check_bounce_cost(problem: Any) -> None:
+    """Refuse, before any work, a drop that cannot fit the budget (memory and time).
+
+    The likely cost of :func:`~twoball.modal.floor.cost.likely_drop` from the
+    problem's size; the run's monitor stops it at the deadline beyond that.  A
+    ball that cannot say its size before it is built is not refused here.
+    """
+    from twoball._common.budget import check
+    from twoball._common.estimate import options
+    from twoball.modal.floor.cost import expected_span, likely_drop
+
+    work = problem.work()
+    if work["size"] is None:
+        return
+    dofs, points = work["size"]
+    case = problem.case
+    ball = problem.ball
+    asked: dict[str, Any] = {}
+    if getattr(ball, "modes", None) is not None:
+        asked["modes"] = ball.modes
+    mesh = getattr(ball, "mesh", None)
+    if mesh is not None and getattr(mesh, "elements", None) is not None:
+        asked["elements"] = mesh.elements
+    asked |= {"dt": work["dt"] / case.wave_speed, "t_end": work["t_end"] / case.wave_speed}
+    estimate = likely_drop(
+        dofs,
+        points,
+        work["t_end"],
+        work["dt"],
+        work["dense"],
+        span=expected_span(work["body"], work["gap"], work["v0"]),
+        v0=work["v0"],
+        runs=work["runs"],
+    )
+    check(options(**asked), estimate)

@@ -299,7 +299,7 @@ def _bounce_options(
     case = with_damping(Case.preset("basketball") if case is None else case, damping)
     if solver.ball is None:
         solver = MoreauJean(LegendreBall(DEFAULT_FIT_MODES), dt=solver.dt, t_end=solver.t_end)
-    from twoball._bounce import check_bounce_cost
+    from twoball._costs import check_bounce_cost
     from twoball.modal.floor.bounce import bounce_problem
 
     # the base drop resolved and its budget checked: its options refused before the file
@@ -319,8 +319,8 @@ def _bounce_model(
     pair: str | None,
 ) -> Any:
     """The drop or the whole bounce on every row, each run's budget checked before any work."""
-    from twoball._bounce import check_bounce_cost
     from twoball._common.watch import Watch
+    from twoball._costs import check_bounce_cost
     from twoball.verify.fit.models import BounceModel
 
     fitted = BounceModel(

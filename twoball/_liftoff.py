@@ -134,8 +134,8 @@ def _dropped(case: Case, solver: Any, progress: Step | None) -> LiftoffReport:
     motion sampled to the window's end (:mod:`twoball.modal.floor.massless`);
     times after the ball's maximal compression.
     """
-    from twoball._bounce import check_bounce_cost
     from twoball._common.watch import Watch
+    from twoball._costs import check_bounce_cost
     from twoball.modal.floor.bounce import bounce_problem
     from twoball.modal.floor.drop import DropSettings
     from twoball.modal.floor.massless import massless_liftoff

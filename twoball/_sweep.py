@@ -13,7 +13,7 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
 
-from twoball._common.budget import timed
+from twoball._common.budget import BudgetError, timed
 from twoball._common.errors import ParameterError
 from twoball.modal.parameters import Case
 
@@ -34,6 +34,9 @@ class SweepResult:
         One per grid point: ``index``, ``case``, ``report`` (or ``error``).
     provenance : dict
         Versions, command line or call, UTC time, base case (:mod:`twoball._common.provenance`).
+    warnings : tuple of str
+        The sweep's own: swept values far outside any ball (unit slips), checked on the
+        values before any point ran (:func:`twoball.modal.guards.sweep_slips`).
 
     Examples
     --------
@@ -50,6 +53,9 @@ class SweepResult:
     points: list[Any]
     provenance: dict[str, Any] | None = field(default=None, compare=False, repr=False)
     values: tuple[Any, ...] = field(default=(), compare=False, repr=False)
+    warnings: tuple[str, ...] = ()
+    #: the points' own warnings that repeat the swept values' slips (said once, in warnings)
+    point_slips: frozenset[str] = field(default=frozenset(), compare=False, repr=False)
 
     def plot(self, out: str | os.PathLike[str], *, measured: Any = None) -> Path:
         r"""Write the figure of the sweep: v_l / \|v0\| and t_l against the parameter, or heat maps.
@@ -102,12 +108,21 @@ class SweepResult:
 
         return phi_a_rule([p.case for p in self.points])
 
+    @property
+    def phi_a_note(self) -> str | None:
+        """The sweep's one note on phi_a when its rule replaced a preset's measured angle
+        (eq. (3.7) at every point, the preset's own point included), else None."""
+        from twoball.verify.sweeps.sweeps import phi_a_note
+
+        return phi_a_note([p.case for p in self.points])
+
     def as_dict(self) -> dict[str, Any]:
         """JSON-ready: parameters, shape, the phi_a rule, the points (SI) and the provenance."""
         return {
             "parameters": list(self.parameters),
             "shape": list(self.shape),
             "phi_a_rule": self.phi_a_rule,
+            "warnings": list(self.warnings),
             "points": [p.as_dict() for p in self.points],
             "provenance": self.provenance,
         }
@@ -323,13 +338,19 @@ def sweep(
         case = case.derive(phi_a="eq. (3.7)")
     modes = int(max(arrays[parameters.index("modes")])) if "modes" in parameters else case.modes
     window = t_end_dimensionless(case, t_end)
-    check_sweep(
-        math.prod(grid.shape),
-        modes,
-        window,
-        workers,
-        per_point=_point_cost(case, grid, body, modes, window),
-    )
+    slips = _slips(grid, case)  # on the values, before the budget and any point
+    try:
+        check_sweep(
+            math.prod(grid.shape),
+            modes,
+            window,
+            workers,
+            per_point=_point_cost(case, grid, body, modes, window),
+        )
+    except BudgetError as error:  # the slips are said with the refusal: it may be their cost
+        if not slips:
+            raise
+        raise BudgetError(error.name, "; ".join([error.valid, *slips])) from None
     cases = grid.cases(case)
     workers = None if scheduler else check_workers(workers)
     if len(cases) < MIN_PARALLEL_ITEMS and not scheduler:
@@ -360,4 +381,34 @@ def sweep(
 
     arguments = {"values": {k: arrays[i] for i, k in enumerate(values)}, **call}
     provenance = block(case, "twoball.sweep", arguments)
-    return SweepResult(parameters, grid.shape, points, provenance, tuple(arrays))
+    repeated = _point_slips(points, parameters) if slips else frozenset()
+    return SweepResult(
+        parameters, grid.shape, points, provenance, tuple(arrays), tuple(slips), repeated
+    )
+
+
+def _point_slips(points: Sequence[Any], parameters: Sequence[str]) -> frozenset[str]:
+    """The points' warnings of their own swept values' slips (already said for the sweep)."""
+    from twoball.modal.guards import value_slip
+    from twoball.verify.sweeps.sweeps import SWEEP_PARAMETERS
+
+    fields = [SWEEP_PARAMETERS[name] for name in parameters]
+    said = (
+        value_slip(f, float(getattr(p.case, f)), p.case)
+        for p in points
+        for f in fields
+        if f not in ("mass_ratio", "modes")
+    )
+    return frozenset(text for text in said if text is not None)
+
+
+def _slips(grid: Any, case: Case) -> list[str]:
+    """One warning per swept parameter whose values lie far outside any ball (unit slips)."""
+    from twoball.modal.guards import sweep_slips
+    from twoball.verify.sweeps.sweeps import SWEEP_PARAMETERS
+
+    said = (
+        sweep_slips(SWEEP_PARAMETERS[name], name, values, case)
+        for name, values in zip(grid.parameters, grid.values, strict=True)
+    )
+    return [text for text in said if text is not None]

@@ -32,6 +32,7 @@ from twoball.modal.balls.membrane import mode_decay
 from twoball.modal.contact.events import ContactEvent, ContactHistory
 from twoball.modal.contact.states import ModalStates
 from twoball.modal.damping import ModalRatio
+from twoball.modal.nonsmooth.moreau_jean import ZENO_VELOCITY
 from twoball.modal.series import ModalSeries
 
 from twoball._common.errors import ParameterError
@@ -41,10 +42,6 @@ __all__ = ["DEFAULT_DT", "ExactMotion", "SteppedMotion", "series_ball", "stepped
 
 #: Time step of the body's contact in units of 1/c (the drop's step).
 DEFAULT_DT = 0.005
-#: Arrivals of the body slower than this (units R c) are held, not bounced: with
-#: Newton's e > 0 the bounces of a body settling on the cap shrink without end (a
-#: Zeno chain); the event-driven solver ends it at the same speed.
-ZENO_VELOCITY = 1e-6
 #: The contact core's units against the contact system's: the membrane's mass is
 #: ``m2 = 4 pi rho R^2``, so impulses and energies in units of m2 are 4 pi times
 #: fewer than in units of rho R^2 (:mod:`twoball.modal.contact.system`).

@@ -46,10 +46,45 @@ from twoball.modal.parameters import Case
 from twoball._common.errors import NumericalError, ParameterError
 from twoball._common.monitor import Monitor
 
-__all__ = ["MIN_CONTACT_POINTS", "BounceProblem", "bounce_problem", "simulate"]
+__all__ = [
+    "ARTEFACT_SECTION",
+    "CAVEATS",
+    "E12_FAR_BELOW",
+    "LARGE_GAP_SECTION",
+    "MIN_CONTACT_POINTS",
+    "OVERLAP_NOTE",
+    "BounceProblem",
+    "bounce_problem",
+    "simulate",
+]
 
 #: Fewest floor points across the largest contact before the result is flagged.
 MIN_CONTACT_POINTS = 6
+#: ``e12_effective`` below this fraction of the body's Newton e12 is flagged: the
+#: collision on the ball kept less than half the restitution the pair measures, so
+#: v1 is far from the ICM with Newton's e12 (docs/whole_bounce.rst, large gaps:
+#: e12_effective 0.1-0.5 against Table 1's 0.56-0.89).
+E12_FAR_BELOW = 0.5
+#: Where the docs measure what depends on the radial membrane's degree-1 artefact.
+ARTEFACT_SECTION = "docs/whole_bounce.rst, 'The degree-1 artefact, and what depends on it'"
+#: Where the docs say why the large gaps stay below the ICM.
+LARGE_GAP_SECTION = (
+    "docs/whole_bounce.rst, 'What the whole bounce reproduces, and what it does not'"
+)
+#: The note of a whole bounce whose contacts overlap (e12_effective undefined).
+OVERLAP_NOTE = (
+    "the body touched while the ball was still on the floor (the contacts overlap): "
+    "e12_effective (eq. (2.4)) and the ICM (2.5) with this run's e2 and e12 are not defined"
+)
+#: One line per caveat of :func:`answer_caveats`, for tables and figures.
+CAVEATS: dict[str, str] = {
+    "artefact": "first struck by the radial membrane's degree-1 precursor: the answer "
+    f"depends on that artefact (see {ARTEFACT_SECTION})",
+    "e12_low": f"e12_effective below {E12_FAR_BELOW:g} x the body's Newton e12 (see "
+    f"{LARGE_GAP_SECTION})",
+    "overlap": "the contacts overlap: e12_effective and the ICM with the run's e2 and e12 "
+    "are not defined",
+}
 
 
 @dataclass(frozen=True)
@@ -73,6 +108,8 @@ class BounceProblem:
         The time step and the window in units of 1/c.
     notes, warnings : tuple of str
         How the inputs were read, and what the reader must know (unit slips).
+    slips : tuple of str
+        The unit slips among the warnings (:func:`twoball.modal.guards.case_warnings`).
     """
 
     case: Case
@@ -84,6 +121,7 @@ class BounceProblem:
     t_end: float
     notes: tuple[str, ...] = ()
     warnings: tuple[str, ...] = ()
+    slips: tuple[str, ...] = ()
 
     @property
     def gap(self) -> float:
@@ -186,8 +224,11 @@ def bounce_problem(
 
     # inputs far from any ball first (unit slips), then the model's
     warnings = case_warnings(
-        inputs.case, drop_height=drop.drop_height, gap=None if whole is None else drop.gap
+        inputs.case,
+        drop_height=drop.fall(inputs.case.radius),
+        gap=None if whole is None else drop.gap,
     )
+    slips = tuple(warnings)
     warnings += inputs.warnings
     step, window = drop_times(inputs.case, dt, t_end, drop.gap / inputs.case.radius)
     # how the case was read (a negative v0: the paper's sign), then the drop's own notes
@@ -195,7 +236,7 @@ def bounce_problem(
     if whole is not None:
         notes += whole.notes
     return BounceProblem(
-        inputs.case, drop, ball, inputs, whole, step, window, notes, tuple(warnings)
+        inputs.case, drop, ball, inputs, whole, step, window, notes, tuple(warnings), slips
     )
 
 
@@ -254,12 +295,17 @@ def simulate(
         "t_end_s": problem.t_end / case.wave_speed,
     }
     extra: dict[str, Any] = {}
+    notes = problem.notes
     if whole is not None:
         warnings += _body_warnings(result, whole, ball)
+        caveats, said, remarks = answer_caveats(result, whole, problem.ball.kind, case)
+        warnings += said
+        notes += remarks
+        extra["caveats"] = caveats
         lumped = None
         if baselines:
             lumped = _baselines(case, drop, whole, problem.inputs, result, monitor, problem.mass_kg)
-        extra = {"whole": whole, "baselines": lumped}
+        extra |= {"whole": whole, "baselines": lumped}
     return BounceReport(
         case,
         drop,
@@ -269,7 +315,7 @@ def simulate(
         problem.inputs.pressure,
         problem.mass_kg,
         tuple(warnings),
-        problem.notes,
+        notes,
         **extra,
     )
 
@@ -400,3 +446,58 @@ def _body_warnings(result: Any, whole: WholeBody, ball: Any) -> list[str]:
             f"spacings of the ball's points ({spacing:.3g} rad): refine (modes, or elements)"
         )
     return out
+
+
+def newton_e12(whole: WholeBody) -> float | None:
+    """The body's Newton e12: a rigid body's restitution, else its Table 1 pair's (None)."""
+    if whole.kind == "rigid":
+        return float(whole.body.restitution)
+    return None if whole.pair is None else float(whole.pair.e12)
+
+
+def answer_caveats(
+    result: Any, whole: WholeBody, ball_kind: str, case: Case
+) -> tuple[tuple[str, ...], list[str], tuple[str, ...]]:
+    """What the whole bounce's answer is, beside its numbers: (tags, warnings, notes).
+
+    ``artefact``: on the radial-only membrane (``ball_kind`` "membrane") the body's first
+    impulsive contact came before the wave from the floor can reach the top, at
+    ``pi / c`` (unit wave speed, eq. (3.9)): it was struck by the top's degree-1
+    precursor (the top accelerates at ``-2 F / m2`` at the first floor force), so
+    v1, v2 and t_l depend on that artefact.  A shell, a solid or a thick ball moves
+    its translation as material motion: none there.  ``e12_low``: ``e12_effective``
+    (eq. (2.4)) below :data:`E12_FAR_BELOW` times the body's Newton e12.
+    ``overlap``: the floor contact was still on when the body first touched, so
+    ``e12_effective`` and the ICM with the run's own coefficients are not defined
+    (a note, not a warning: the numbers are still the model's).
+    """
+    body = result.body
+    tags: list[str] = []
+    warnings: list[str] = []
+    notes: list[str] = []
+    if body is None or not body.touched:
+        return (), [], ()
+    first = body.intervals[0].start if body.intervals else None
+    if ball_kind == "membrane" and first is not None and first < math.pi:
+        tags.append("artefact")
+        warnings.append(
+            f"the body was first struck at {first / case.wave_speed * 1e3:.3g} ms, before the "
+            f"wave from the floor can reach the top (pi / c = "
+            f"{math.pi / case.wave_speed * 1e3:.3g} ms): by the radial membrane's degree-1 "
+            "precursor, so v1, v2 and t_l depend on that artefact (measured: v1 by up to "
+            "0.25 |v0| for a tennis ball on the basketball, under 1 % for the light bodies); "
+            f"see {ARTEFACT_SECTION}"
+        )
+    e12, newton = body.e12_effective, newton_e12(whole)
+    if e12 is not None and newton is not None and e12 < E12_FAR_BELOW * newton:
+        tags.append("e12_low")
+        warnings.append(
+            f"e12_effective = {e12:.3g} is below half the body's Newton e12 = {newton:g}: "
+            "the collision on the ball loses most of its energy into the ball's waves, so v1 "
+            "stays far below the ICM with Newton's e12 (the measured large-gap rebounds follow "
+            f"it; this model does not); see {LARGE_GAP_SECTION}"
+        )
+    if body.left and body.sequence == "overlapping":
+        tags.append("overlap")
+        notes.append(OVERLAP_NOTE)
+    return tuple(tags), warnings, tuple(notes)

@@ -28,6 +28,7 @@ __all__ = [
     "MAX_DT",
     "DropModel",
     "WholeBody",
+    "check_centre_height",
     "check_drop_case",
     "check_drop_height",
     "drop_times",
@@ -127,6 +128,11 @@ def resolve_drop(
     notes: list[str] = []
     warnings: list[str] = []
     case = _impact(case, drop)
+    if drop.centre_height is not None:
+        notes.append(
+            f"centre height x2 = {drop.centre_height:g} m: the lowest point falls x2 - R = "
+            f"{drop.fall(case.radius):.4g} m, |v0| = sqrt(2 g (x2 - R)) = {case.v0:.4g} m/s"
+        )
     if pressurised:
         pressure = _pressure(case, notes)
         gas = drop.gas or (case.gas if case.gas != "none" else "adiabatic")
@@ -194,19 +200,48 @@ def check_drop_height(case: Case, height: float) -> float:
     return height
 
 
+def check_centre_height(case: Case, centre: float) -> float:
+    """The lowest point's fall ``x2 - R`` [m] of a centre height x2 [m]: at least R, else refused.
+
+    The paper's x2 (§2) is the centre's height; the drop's ``H`` is the lowest
+    point's, so ``H = x2 - R``, held to ``H >= R`` as :func:`check_drop_height`
+    holds it (a slower impact is given by its speed).
+
+    Raises
+    ------
+    ParameterError
+        Naming ``centre_height`` (``--centre-height``), with the valid range ``>= 2 R``.
+    """
+    fall = centre - case.radius
+    if not fall >= case.radius:
+        valid = (
+            f"a centre height >= 2 R = {2.0 * case.radius:g} m (the lowest point at least R "
+            "above the floor; a slower impact is given by its speed: the case's v0, --v0 on "
+            "the command line)"
+        )
+        raise ParameterError("centre_height", valid, centre)
+    return fall
+
+
 def _impact(case: Case, drop: Drop) -> Case:
-    """The case at the drop's impact speed ``sqrt(2 g H)``, eq. (2.1), if a height is given."""
-    if drop.drop_height is None:
+    """The case at the drop's impact speed ``sqrt(2 g H)``, eq. (2.1), if a height is given.
+
+    H is the lowest point's fall: ``drop_height``, or ``centre_height - R``.
+    """
+    if drop.centre_height is not None:
+        name, given = "centre_height", drop.centre_height
+        height = check_centre_height(case, drop.centre_height)
+    elif drop.drop_height is not None:
+        name, given = "drop_height", drop.drop_height
+        height = check_drop_height(case, drop.drop_height)
+    else:
         return case
-    check_drop_height(case, drop.drop_height)
-    speed = math.sqrt(2.0 * case.g * drop.drop_height)
+    speed = math.sqrt(2.0 * case.g * height)
     try:
         return case.derive(v0=speed)
     except ParameterError:
         raise ParameterError(
-            "drop_height",
-            "a height > 0 [m] whose impact speed sqrt(2 g H) the model can take",
-            drop.drop_height,
+            name, "a height > 0 [m] whose impact speed sqrt(2 g H) the model can take", given
         ) from None
 
 
@@ -379,13 +414,15 @@ def check_drop_case(case: Case, drop: Drop) -> None:
     if case.phi_a_source == "given":
         valid = "left out for the drop (the contact angle is its output, phi_a_max_rad)"
         raise ParameterError("phi_a", valid, case.phi_a)
-    if drop.drop_height is not None and v0_set(case):
+    name = "centre_height" if drop.centre_height is not None else "drop_height"
+    given = getattr(drop, name)
+    if given is not None and v0_set(case):
         speed = case.v0 if case.v0_given is None else case.v0_given
         valid = (
             f"given alone, not with the case's own v0 = {speed:g} m/s (the height sets "
             "|v0| = sqrt(2 g H); build the case without a v0 of its own)"
         )
-        raise ParameterError("drop_height", valid, drop.drop_height)
+        raise ParameterError(name, valid, given)
 
 
 def drop_times(

@@ -45,6 +45,11 @@ class Drop:
         operator of the lift-off verbs).  ``paper`` takes the paper's n(n + 1)
         for degrees n != 1 (its spring on degree 1 has nothing to act on: the
         translation is the centre's).
+    centre_height : float, optional
+        Height x2 [m] in (0, 1e6] of the ball's centre above the floor at release (the
+        paper's x2, §2), instead of ``drop_height``: the lowest point falls
+        ``x2 - R`` (R the case's radius), so ``|v0| = sqrt(2 g (x2 - R))``.
+        Refused with ``drop_height``, and below ``2 R`` (a fall below R).
     gap : float
         The whole bounce (with an upper body): the gap Delta x [m] in [0, 10]
         between the body's lowest point and the ball's top when the ball first
@@ -58,6 +63,8 @@ class Drop:
     0.857
     >>> twoball.Drop(gap=0.05).gap
     0.05
+    >>> twoball.Drop(centre_height=0.92).fall(0.12)  # the lowest point's fall [m]
+    0.8
     >>> twoball.Drop(drop_height=-1.0)  # doctest: +ELLIPSIS
     Traceback (most recent call last):
     ...
@@ -69,11 +76,15 @@ class Drop:
     floor_restitution: float = 0.0
     membrane: Any = None
     gap: float = 0.0
+    centre_height: float | None = None
 
     VALID = {  # noqa: RUF012 -- a class constant, not a field
         "drop_height": "a height in (0, "
         + f"{DROP_HEIGHT_MAX:g}".replace("e+0", "e")
         + "] [m] of the lowest point above the floor",
+        "centre_height": "a height in (0, "
+        + f"{DROP_HEIGHT_MAX:g}".replace("e+0", "e")
+        + "] [m] of the centre above the floor",
         "gas": "one of " + ", ".join(GAS_LAWS),
         "floor_restitution": "in [0, 1]",
         "gap": f"a gap in [0, {GAP_MAX:g}] [m] between the body and the ball's top",
@@ -85,6 +96,15 @@ class Drop:
             if not (0.0 < height <= DROP_HEIGHT_MAX):
                 raise ParameterError("drop_height", self.VALID["drop_height"], self.drop_height)
             object.__setattr__(self, "drop_height", height)
+        if self.centre_height is not None:
+            valid = self.VALID["centre_height"]
+            centre = real_number("centre_height", self.centre_height, valid)
+            if not (0.0 < centre <= DROP_HEIGHT_MAX):
+                raise ParameterError("centre_height", valid, self.centre_height)
+            if self.drop_height is not None:
+                valid = "left out with drop_height (one height: the centre's or the lowest point's)"
+                raise ParameterError("centre_height", valid, self.centre_height)
+            object.__setattr__(self, "centre_height", centre)
         if self.gas is not None and self.gas not in GAS_LAWS:
             raise ParameterError("gas", self.VALID["gas"], self.gas)
         valid = self.VALID["floor_restitution"]
@@ -100,6 +120,15 @@ class Drop:
             from twoball.modal.membrane import Membrane
 
             object.__setattr__(self, "membrane", Membrane.of(self.membrane))
+
+    def fall(self, radius: float) -> float | None:
+        """The lowest point's height H [m] above the floor at release (None: no height given).
+
+        ``drop_height`` as given, or ``centre_height - radius`` (the ball's radius R [m]).
+        """
+        if self.centre_height is not None:
+            return self.centre_height - radius
+        return self.drop_height
 
     def as_dict(self) -> dict[str, Any]:
         """The fields as given (None: the default), for JSON and provenance."""

@@ -66,6 +66,12 @@ class BounceReport:
     baselines : dict, optional
         The lumped models of §1(b) for the same drop
         (:func:`twoball.modal.lumped.baselines.baselines`), with their inputs.
+    caveats : tuple of str
+        With a body, what the answer is beside its numbers
+        (:func:`~twoball.modal.floor.bounce.answer_caveats`): ``artefact`` (the first
+        strike came from the radial membrane's degree-1 precursor), ``e12_low``
+        (``e12_effective`` below half the body's Newton e12), ``overlap`` (the
+        contacts overlap: ``e12_effective`` and ``icm_solver`` undefined).
 
     Examples
     --------
@@ -88,6 +94,7 @@ class BounceReport:
     provenance: dict[str, Any] | None = field(default=None, compare=False, repr=False)
     whole: Any = field(default=None, repr=False)
     baselines: dict[str, Any] | None = field(default=None, repr=False)
+    caveats: tuple[str, ...] = ()
 
     def light(self) -> BounceReport:
         """The report without the run's history (every number kept): a sweep's point."""
@@ -323,6 +330,7 @@ class BounceReport:
             "body_left_first": self.body_left_first,
             "sequence": body.sequence,
             "e12_effective": self.e12_effective,
+            "caveats": list(self.caveats),
             "e12_velocities_m_s": {"before_u1_u2": before, "after_v1_v2": after},
             "body_contacts": body.contacts,
             "body_impulse_N_s": body.impulse * self.mass_kg * speed,
@@ -451,7 +459,8 @@ class BounceReport:
             "point_events": r.point_events,
             "energy_J": self.energy_J,
             "v0_m_s": self.case.v0,
-            "drop_height_m": self.drop.drop_height,
+            "drop_height_m": self.drop.fall(self.case.radius),
+            "centre_height_m": self.drop.centre_height,
             "mass_kg": self.mass_kg,
             "pressure_Pa": self.pressure,
             "backend": self.backend,

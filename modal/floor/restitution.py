@@ -234,7 +234,7 @@ def body_liftoff(
     that does not move: the finite-mass model of :mod:`twoball.modal.contact`
     (``twoball.liftoff(case, body=Body(mu))``).
     """
-    from twoball.modal.contact.stepped import ZENO_VELOCITY
+    from twoball.modal.nonsmooth.moreau_jean import ZENO_VELOCITY
 
     ball = legendre_ball(modes, spectrum, law, anchored=anchored)
     q0 = legendre_start(ball, modes, phi_a, sigma)

@@ -75,6 +75,10 @@ from twoball._common.monitor import Monitor
 _MAX_LOCALISATIONS = 64  # shortened sub-steps inside one step (a guard)
 _ROOT_ITERATIONS = 60  # Illinois iterations of one localisation (a guard)
 ZENO_FRACTION = 1e-4  # Zeno speed over the largest initial normal speed
+#: Arrivals of a body slower than this (units R c) are held, not bounced: with
+#: Newton's e > 0 the bounces of a body settling on a cap shrink without end (a
+#: Zeno chain); the event-driven solver ends it at the same speed.
+ZENO_VELOCITY = 1e-6
 
 
 @dataclass(frozen=True)

@@ -59,7 +59,7 @@ class LumpedBody:
         Its stiffness law, restitution against a rigid floor and size.
     steps : int
         Steps per contact time on a rigid floor while it is compressed (default
-        100; the step error of e is then below 1e-4).
+        100, at most 10000; the step error of e is then below 1e-4).
     name, source : str
         What it is and where its values come from (the presets say).
 
@@ -90,8 +90,9 @@ class LumpedBody:
         )
         if not isinstance(self.law, ContactLaw):
             raise ParameterError("law", "a twoball.ContactLaw", type(self.law).__name__)
-        if isinstance(self.steps, bool) or not isinstance(self.steps, int) or self.steps < 8:
-            raise ParameterError("steps", "an integer >= 8", self.steps)
+        steps = self.steps
+        if isinstance(steps, bool) or not isinstance(steps, int) or not 8 <= steps <= 10_000:
+            raise ParameterError("steps", "an integer in [8, 10000]", self.steps)
 
     @property
     def restitution(self) -> float:

@@ -190,9 +190,13 @@ def test_no_clock_no_deadline() -> None:
         check_deadline("nothing")  # outside a verb nothing is timed
 
 
-def test_contact_event_loop() -> None:
+def test_body_contact_steps(monkeypatch) -> None:
+    """The body's stepped contact meets the deadline in its step loop (its estimate let through)."""
+    from twoball._common.budget import Budget
+
+    monkeypatch.setattr(Budget, "check", lambda self, option, estimate: estimate)
     text = past_the_deadline(lambda: twoball.liftoff(body=twoball.Body(0.1)))
-    assert "while the contact event loop at t = 0 of 12.57" in text
+    assert "while the body on the ball: step 0, 0 % of the window" in text
     assert text.startswith("stopped at the time limit 1 s after") and "max_time" in text
 
 
@@ -268,12 +272,12 @@ def test_the_drops_eigenpairs_and_steps(monkeypatch) -> None:
     from twoball._common.budget import Budget
 
     monkeypatch.setattr(Budget, "check", lambda self, option, estimate: estimate)
-    quick = twoball.Drop(modes=16)
+    quick = twoball.MoreauJean(twoball.LegendreBall(16))
     assert "while the drop: step 0, 0 % of the window" in past_the_deadline(
-        lambda: twoball.bounce(drop=quick)
+        lambda: twoball.bounce(solver=quick)
     )
     assert "while the whole bounce: step 0," in past_the_deadline(
-        lambda: twoball.bounce(drop=quick, body=twoball.Body(0.1))
+        lambda: twoball.bounce(solver=quick, body=twoball.Body(0.1))
     )
     text = past_the_deadline(
         lambda: axisym_ball(300, 2, Stiffness(), ModalRatio(0.1), monitor=Watch())
@@ -281,14 +285,22 @@ def test_the_drops_eigenpairs_and_steps(monkeypatch) -> None:
     assert "while dense eigenpairs of the drop's 601 unknowns (LAPACK)" in text
 
 
+def _legendre(modes: int) -> twoball.MoreauJean:
+    return twoball.MoreauJean(twoball.LegendreBall(modes))
+
+
+def _fem(mesh: twoball.MeshOptions) -> twoball.MoreauJean:
+    return twoball.MoreauJean(twoball.FEBall(mesh))
+
+
 @pytest.mark.parametrize(
     "call",
     [
-        {"drop": twoball.Drop(modes=64)},
-        {"drop": twoball.Drop(modes=64, drop_height=300.0)},  # 77 m/s: the points rattle
-        {"drop": twoball.Drop(modes=64), "body": twoball.Body(0.1)},
-        {"backend": "fem", "mesh": twoball.MeshOptions("axisym", elements=32, order=3)},
-        {"backend": "fem", "mesh": twoball.MeshOptions("axisym", elements=24, order=4),
+        {"solver": _legendre(64)},
+        {"solver": _legendre(64), "drop": twoball.Drop(drop_height=300.0)},  # 77 m/s: rattles
+        {"solver": _legendre(64), "body": twoball.Body(0.1)},
+        {"solver": _fem(twoball.MeshOptions("axisym", elements=32, order=3))},
+        {"solver": _fem(twoball.MeshOptions("axisym", elements=24, order=4)),
          "pair": "tennis-coin"},
     ],
 )  # fmt: skip
@@ -312,7 +324,7 @@ def test_the_drops_rattle_stops_growing_beyond_its_calibration(speed) -> None:
     and 8.4x at N = 64), not the v0^2 growth that refused a 1 s run as 7 min."""
     from twoball.modal.floor.cost import drop_steps, expected_span
 
-    report = twoball.bounce(twoball.Case(v0=speed), twoball.Drop(modes=64))
+    report = twoball.bounce(twoball.Case(v0=speed), solver=_legendre(64))
     case, model = report.case, report.model
     v0 = case.v0 / case.scalings.velocity
     span = expected_span(False, 0.0, v0)

@@ -98,14 +98,15 @@ def test_results_json_keeps_the_stable_part_provenance_json_the_whole():
 
 
 def test_api_results_carry_their_call():
-    report = twoball.liftoff(twoball.Case.preset("basketball"), stepping=twoball.Stepping(0.03))
+    solver = twoball.ClosedForm(t_end=0.03)
+    report = twoball.liftoff(twoball.Case.preset("basketball"), solver=solver)
     call = report.as_dict()["provenance"]["call"]
     assert call["function"] == "twoball.liftoff"
-    assert call["arguments"]["stepping"] == {
+    assert call["arguments"]["solver"] == {
+        "solver": "ClosedForm",
+        "sigma": "lanczos",
+        "recontact": "window",
         "t_end": 0.03,
-        "dt": None,
-        "scheme": None,
-        "route": None,
     }
     swept = twoball.sweep({"damping": [0.1, 0.2]})
     assert swept.as_dict()["provenance"]["call"]["arguments"]["values"] == {"damping": [0.1, 0.2]}

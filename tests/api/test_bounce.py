@@ -80,6 +80,29 @@ def test_drop_height_sets_the_impact_speed():
     assert abs(twoball.icm(0.5, 0.8, 0.9, drop_height=0.5).v0) == pytest.approx(report.case.v0)
 
 
+def test_the_centre_height_falls_its_lowest_point_x2_minus_r():
+    """The paper's x2 is the centre's: x2 = 0.92 m, R = 0.12 m falls 0.80 m at 3.96 m/s,
+    the same drop as ``drop_height=0.80``; the tennis ball's R = 33.5 mm comes off too."""
+    report = twoball.bounce(drop=twoball.Drop(centre_height=0.92), solver=QUICK)
+    assert round(report.case.v0, 2) == 3.96
+    assert report.case.v0 == pytest.approx(math.sqrt(2 * 9.81 * 0.80), rel=1e-12)
+    same = twoball.bounce(drop=twoball.Drop(drop_height=0.80), solver=QUICK)
+    assert same.e2 == pytest.approx(report.e2, rel=1e-9)
+    tennis = twoball.bounce(
+        twoball.Case.preset("tennis"), twoball.Drop(centre_height=0.5), solver=QUICK
+    )
+    assert tennis.case.v0 == pytest.approx(math.sqrt(2 * 9.81 * (0.5 - 0.0335)), rel=1e-12)
+    with pytest.raises(twoball.ParameterError) as caught:
+        twoball.Drop(centre_height=0.92, drop_height=0.8)
+    assert caught.value.name == "centre_height"
+    with pytest.raises(twoball.ParameterError) as caught:  # a fall below R: x2 < 2 R
+        twoball.bounce(drop=twoball.Drop(centre_height=0.2), solver=QUICK)
+    assert caught.value.name == "centre_height" and ">= 2 R = 0.24 m" in str(caught.value)
+    with pytest.raises(twoball.ParameterError) as caught:  # the case's own v0 beside it
+        twoball.bounce(twoball.Case.preset("basketball", v0=3.0), twoball.Drop(centre_height=1))
+    assert caught.value.name == "centre_height"
+
+
 def test_a_drop_height_below_the_radius_is_refused_naming_the_range():
     """H < R of the case is refused in the API (the message gives R and the v0 route);
     H = R is taken, and the tennis ball (R = 33.5 mm) takes 0.05 m."""
@@ -273,7 +296,7 @@ def test_sweep_of_the_drop():
     data = result.as_dict()
     assert [p["value"] for p in data["points"]] == [2.0, 4.1] and data["provenance"]
     with pytest.raises(twoball.ParameterError) as caught:
-        twoball.sweep({"damping": [0.1]}, drop=twoball.Drop(), solver=QUICK)
+        twoball.sweep({"wave_speed": [300.0]}, drop=twoball.Drop(), solver=QUICK)
     assert caught.value.name == "param"
 
 

@@ -75,6 +75,22 @@ def test_a_drop_height_below_the_radius_names_the_range_and_v0(capsys):
     assert ">= R = 0.12 m" in line and "--v0" in line and line.endswith("got 0.05")
 
 
+def test_the_centre_height_is_the_papers_x2(capsys):
+    # eq. (2.1): x2 = 0.92 m, R = 0.12 m -> a fall of 0.80 m -> sqrt(2 g 0.80) = 3.96 m/s
+    argv = ["bounce", "--modes", "16", "--json"]
+    code, out, err = run(capsys, *argv, "--centre-height", "0.92")
+    data = json.loads(out)
+    assert code == 0 and round(data["v0_m_s"], 2) == 3.96
+    assert data["v0_m_s"] == pytest.approx(math.sqrt(2 * 9.81 * 0.80), rel=1e-12)
+    assert data["drop_height_m"] == pytest.approx(0.80, rel=1e-12)
+    assert data["centre_height_m"] == 0.92 and "x2 - R = 0.8 m" in err
+    code, out, _ = run(capsys, *argv, "--drop-height", "0.80")
+    same = json.loads(out)
+    assert same["v0_m_s"] == pytest.approx(data["v0_m_s"], rel=1e-12)
+    assert same["e2"] == pytest.approx(data["e2"], rel=1e-9)
+    assert same["contact_time_s"] == pytest.approx(data["contact_time_s"], rel=1e-9)
+
+
 def test_fem_backend_with_its_mesh(capsys):
     code, out, _ = run(capsys, "bounce", "--backend", "fem", "--elements", "8", "--json")
     data = json.loads(out)
@@ -87,6 +103,10 @@ def test_fem_backend_with_its_mesh(capsys):
         (["--drop-height", "-1"], "--drop-height"),
         (["--drop-height", "0.05"], "--drop-height"),
         (["--v0", "3", "--drop-height", "1"], "--drop-height"),
+        (["--centre-height", "0.92", "--drop-height", "0.8"], "--centre-height"),
+        (["--centre-height", "0.92", "--v0", "4.1"], "--centre-height"),
+        (["--centre-height", "0.2"], "--centre-height"),
+        (["--centre-height", "-1"], "--centre-height"),
         (["--gas", "none", "--membrane", "pressurised"], "--gas"),
         (["--membrane", "flat"], "--membrane"),
         (["--floor-restitution", "2"], "--floor-restitution"),
@@ -141,7 +161,7 @@ def test_sweep_of_the_drop_and_figures(capsys, tmp_path):
             ["sweep", "--param", "v0", "--values", "1,2", "--floor-restitution", "1"],
             "--floor-restitution",
         ),
-        (["sweep", "--bounce", "--param", "damping", "--values", "0.1"], "--param"),
+        (["sweep", "--bounce", "--param", "wave-speed", "--values", "300"], "--param"),
         (["bounce", "--plot", "drop.bogus"], "--plot"),
     ],
 )
@@ -217,6 +237,40 @@ def test_sweep_of_the_gap_on_two_workers(capsys, tmp_path):
     points = json.loads(out)["results"]
     assert [p["value"] for p in points] == [0.0, 0.2]
     assert points[1]["sequence"] == "independent" and points[0]["body_left_first"] is True
+
+
+def test_the_table_says_the_artefact_and_the_undefined_e12(capsys):
+    code, out, err = run(capsys, "bounce", "--pair", "basketball-tennis", "--modes", "32")
+    section = "'The degree-1 artefact, and what depends on it'"
+    assert code == 0 and section in err  # stderr: twoball: warning: ...
+    rows = {line.split("│")[1].strip(): line for line in out.splitlines() if "│" in line}
+    assert "depends on that artefact" in rows["warning"]
+    assert "not defined" in rows["e12 effective (eq. (2.4))"]
+    assert "not defined" in rows["ICM (2.5), this e2 and e12_eff"]
+    assert "the contacts overlap" in err  # the note
+    code, out, _ = run(capsys, "bounce", "--pair", "basketball-tennis", "--modes", "32", "--json")
+    data = json.loads(out)
+    assert set(data["caveats"]) == {"artefact", "overlap"}
+    assert any(section in w for w in data["warnings"])
+
+
+def test_a_gap_sweep_marks_its_caveats_in_the_table_json_and_plot(capsys, tmp_path):
+    figure = tmp_path / "gap.svg"
+    argv = ["sweep", "--bounce", "--pair", "basketball-tennis", "--param", "gap"]
+    argv += ["--values", "0,0.25", "--modes", "32", "--workers", "1"]
+    code, out, err = run(capsys, *argv, "--plot", str(figure))
+    assert code == 0
+    rows = [line for line in out.splitlines() if line.startswith("│")]
+    assert "artefact, overlap" in rows[0] and "e12_low" in rows[1]
+    caption = " ".join(out.split())  # the table's caption, wrapped to the terminal
+    assert "'What the whole bounce reproduces, and what it does not'" in caption
+    assert "1 of 2 points (gap = 0.25): e12_effective below 0.5" in err
+    drawing = figure.read_text()
+    assert "depends on the degree-1 artefact" in drawing
+    assert "The degree-1 artefact, and what depends on it" in drawing
+    code, out, _ = run(capsys, *argv, "--json")
+    points = json.loads(out)["results"]
+    assert [p["caveats"] for p in points] == [["artefact", "overlap"], ["e12_low"]]
 
 
 @pytest.mark.parametrize(

@@ -81,3 +81,31 @@ def test_unreachable_scheduler_is_one_line_exit_2(capsys, monkeypatch):
         main(["sweep", "--param", "v0", "--values", "1:2:3", "--scheduler", "tcp://127.0.0.1:9"])
     err = capsys.readouterr().err.strip().splitlines()
     assert stop.value.code == 2 and len(err) == 1 and "--scheduler" in err[0]
+
+
+@pytest.mark.parametrize(
+    ("param", "values", "own"),
+    [("v0", "3,4.1,5", 1), ("wave-speed", "300,320,340", 1), ("v0", "3,5", None)],
+)
+def test_one_phi_a_rule_and_one_label_per_sweep(capsys, param, values, own):
+    """A sweep of v0 or c through the basketball's own point (4.1 m/s, 320 1/s) takes eq.
+    (3.7) there too, and says so once: one note, one caption, no label per row."""
+    from twoball.modal.initial import phi_a_from_v0
+
+    code, out, err = cli_run(capsys, "sweep", "--param", param, "--values", values)
+    assert code == 0
+    notes = [line for line in err.splitlines() if line.startswith("twoball: note: phi_a")]
+    assert len(notes) == 1 and "eq. (3.7) at every point" in notes[0]
+    assert ("own R, c, |v0| included" in notes[0]) == (own is not None)
+    assert out.count("eq. (3.7)") == 1 and "phi_a: eq. (3.7) at every point" in out
+    assert "phi_a from" not in out and "measured (basketball)" not in out
+    _, text, _ = cli_run(capsys, "sweep", "--param", param, "--values", values, "--json")
+    points = json.loads(text)["results"]
+    assert {p["phi_a_source"] for p in points} == {"eq. (3.7)"}
+    assert len({p["phi_a_rule"] for p in points}) == 1
+    if own is not None:  # the preset's own point: eq. (3.7)'s angle, not the measured 2.6
+        at = points[own]
+        assert at["phi_a_rad"] == pytest.approx(phi_a_from_v0(4.1, 0.12, 320.0), rel=1e-12)
+        assert at["phi_a_rad"] != 2.6
+        (note,) = [n for n in at["notes"] if n.startswith("phi_a = ")]
+        assert "as asked, at the basketball preset's own R, c, |v0|" in note

@@ -201,3 +201,54 @@ def test_drop_height_and_gap_far_from_any_drop_are_said() -> None:
     (gap,) = case_warnings(preset("basketball"), gap=5.0)
     assert "did you mean 0.005 m (5 mm) or 0.05 m (5 cm)?" in gap
     assert case_warnings(preset("basketball"), drop_height=1.0, gap=0.005) == []
+
+
+def test_a_wave_speed_a_thousand_times_the_presets_is_said_with_320() -> None:
+    """c = 3.2e5 1/s on the basketball (c = 320 1/s, Table 2): 1000 times, meant 320."""
+    from twoball.modal.guards import case_warnings
+
+    (text,) = case_warnings(preset("basketball").derive(wave_speed=3.2e5))
+    assert text.startswith("the wave speed c = 320000 1/s is 1000 times")
+    assert text.endswith("did you mean 320 1/s?")
+    assert case_warnings(preset("basketball").derive(wave_speed=3.2e4)) == []  # 100x: no slip
+    tennis = preset("tennis")  # c = sqrt(2 pi R P / m) = 549 1/s of its own preset
+    assert case_warnings(tennis.derive(wave_speed=549e3))[0].endswith("did you mean 549 1/s?")
+
+
+def test_a_mass_in_grams_with_the_pressure_is_said_with_the_kilograms() -> None:
+    """m = 567 kg with the basketball's P = 77200 Pa: c = sqrt(2 pi R P / m) = 10.13 1/s, eq.
+    (3.8), which lies inside c's range; the mass is judged, 1000 times Table 2's 0.567 kg."""
+    from twoball.modal.guards import case_mass, case_warnings
+
+    case = Case.from_pressure(77200.0, 567.0)
+    assert case.wave_speed == pytest.approx(math.sqrt(2 * math.pi * 0.12 * 77200 / 567), rel=1e-12)
+    assert case_mass(case) == pytest.approx(567.0, rel=1e-12)
+    (text,) = case_warnings(case)
+    assert text.startswith("the mass m = 567 kg (with P = 77200 Pa, c = 10.13 1/s")
+    assert text.endswith("did you mean 0.567 kg (567 g)?")
+    assert case_warnings(Case.from_pressure(77200.0, 0.567)) == []
+
+
+def test_a_sweep_of_slips_is_said_on_its_values_before_any_point() -> None:
+    from twoball.modal.guards import sweep_slips
+
+    base = preset("basketball")
+    text = sweep_slips("wave_speed", "wave-speed", [3.2e5, 3.3e5], base)
+    assert text is not None and text.startswith("2 of 2 values of wave-speed (every value)")
+    assert "did you mean 320 1/s?" in text
+    partly = sweep_slips("v0", "v0", [4.1, 4100.0], base)
+    assert partly is not None and partly.startswith("1 of 2 values of v0 lie")
+    assert "did you mean 4.1 m/s" in partly
+    assert sweep_slips("wave_speed", "wave-speed", [300.0, 340.0], base) is None
+    assert sweep_slips("damping", "damping", [0.1, 0.9], base) is None  # no unit to slip
+
+
+def test_a_sweep_the_budget_refuses_still_says_its_slips() -> None:
+    """2e5 points need more than the time budget: refused before any point, with the slip."""
+    from twoball._common.budget import BudgetError
+
+    values = {"wave_speed": [3.2e5 + k for k in range(200_000)]}
+    with pytest.raises(BudgetError) as caught:
+        twoball.sweep(values, workers=1)
+    assert "200000 of 200000 values of wave-speed (every value)" in str(caught.value)
+    assert "did you mean 320 1/s?" in str(caught.value)

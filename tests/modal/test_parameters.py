@@ -133,7 +133,8 @@ def test_invalid_case_names_parameter_and_range(changes, name):
 
 
 def test_unknown_preset():
-    with pytest.raises(ParameterError, match="preset must be one of basketball, tennis"):
+    valid = "basketball, superball, tennis, volleyball"
+    with pytest.raises(ParameterError, match=f"preset must be one of {valid}"):
         preset("squash")
 
 

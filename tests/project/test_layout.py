@@ -68,6 +68,7 @@ PROJECT_CHECKS = {
     "test_docs.py",
     "test_examples.py",
     "test_startup.py",
+    "test_removed.py",
 }
 
 

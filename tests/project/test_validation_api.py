@@ -67,7 +67,34 @@ SHORT = MJ(twoball.LegendreBall(16), t_end=0.05)  # a 5 m gap's default window: 
 
 
 #: parameter -> a function that passes the value to the public API, per entry point.
+def _law(law: str, **given: float) -> Any:
+    """A lumped body's contact law of ``law`` with ``given`` over valid values (SI)."""
+    fields = {"restitution": 0.9, "radius": 0.02}
+    if law == "pressure":
+        fields["pressure"] = 1e5
+    else:
+        fields |= {"youngs_modulus": 2e9, "poisson": 0.35, "thickness": 4e-4}
+    return twoball.ContactLaw(law, **(fields | given))
+
+
 CALLS: dict[str, dict[str, Callable[[Any, Path], Any]]] = {
+    "body_radius": {"ContactLaw": lambda v, _: _law("pressure", radius=v)},
+    "body_pressure": {"ContactLaw": lambda v, _: _law("pressure", pressure=v)},
+    "body_modulus": {"ContactLaw": lambda v, _: _law("reissner", youngs_modulus=v)},
+    "body_poisson": {"ContactLaw": lambda v, _: _law("reissner", poisson=v)},
+    "body_thickness": {"ContactLaw": lambda v, _: _law("reissner", thickness=v)},
+    "body_restitution": {"ContactLaw": lambda v, _: _law("pressure", restitution=v)},
+    "body_steps": {"LumpedBody": lambda v, _: twoball.LumpedBody(0.05, _law("pressure"), steps=v)},
+    "body_modes": {"BallBody": lambda v, _: twoball.BallBody(ball=twoball.LegendreBall(v))},
+    "body_damping": {"BallBody": lambda v, _: twoball.BallBody(damping=twoball.ModalRatio(v))},
+    "density": {"SolidMaterial": lambda v, _: twoball.SolidMaterial(v, 8e6, 0.45)},
+    "radial_orders": {"SolidBall": lambda v, _: twoball.SolidBall(radial_orders=v)},
+    "pole_levels": {"FESolidBall": lambda v, _: twoball.FESolidBall(pole_levels=v)},
+    "top_levels": {"FESolidBall": lambda v, _: twoball.FESolidBall(top_levels=v)},
+    "wall_cells": {"ThickBall": lambda v, _: twoball.ThickBall(cells=(v, 96))},
+    "bootstrap": {
+        "fit": lambda v, _: twoball.fit({"v0_m_s": [4.1], "v1_m_s": [3.7]}, "damping", bootstrap=v)
+    },
     "radius": {
         "Case": lambda v, _: twoball.Case(radius=v),
         "Case.preset": lambda v, _: twoball.Case.preset("basketball", radius=v),
@@ -274,6 +301,16 @@ CALLS: dict[str, dict[str, Callable[[Any, Path], Any]]] = {
 #: (for every entry point, or for one): the ratio D of --damping is ModalRatio's ``ratio``.
 API_NAME: dict[str | tuple[str, str], str] = {
     "time": "frames",
+    "body_radius": "radius",
+    "body_pressure": "pressure",
+    "body_modulus": "youngs_modulus",
+    "body_poisson": "poisson",
+    "body_thickness": "thickness",
+    "body_restitution": "restitution",
+    "body_steps": "steps",
+    "body_modes": "modes",
+    "body_damping": "ratio",
+    "wall_cells": "cells",
     ("damping", "ModalRatio"): "ratio",
     ("damping", "liftoff"): "ratio",
 }

@@ -80,6 +80,7 @@ RANGES: dict[str, Range] = {
     "--e12": Range(0.0, 1.0),
     "--dx": Range(0.0, 1e6),
     "--drop-height": Range(0.0, 1e6, low_open=True),
+    "--centre-height": Range(0.0, 1e6, low_open=True),
     "--frames": Range(1, 2000, integer=True),
     "--time": Range(0.0, 4 * math.pi / 320),  # render: inside the default window
     "--fps": Range(1e-3, 1e3),
@@ -105,6 +106,16 @@ RANGES: dict[str, Range] = {
     # the shell's wall and spectrum (--ball shell): C / N0, h / R, p = N0 / C (its breathing
     # mode stable: 2 (1 + nu) - 2 p > 0 at the default nu = 0.5, no gas)
     "--wall-stiffness-ratio": Range(0.0, 1e6, low_open=True),
+    # the elastic upper body (--body lumped|ball)
+    "--body-radius": Range(0.0, 10.0, low_open=True),
+    "--body-pressure": Range(0.0, 1e8, low_open=True),
+    "--body-modulus": Range(0.0, 1e13, low_open=True),
+    "--body-poisson": Range(-0.99, 0.5),
+    "--body-thickness": Range(0.0, 0.02, low_open=True),  # at most its radius, 0.02 m here
+    "--body-restitution": Range(0.0, 1.0, low_open=True),
+    "--body-steps": Range(8, 10_000, integer=True),
+    "--body-modes": Range(8, 2000, integer=True),
+    "--body-damping": Range(0.0, 1.0, high_open=True),
     "--thickness-ratio": Range(0.0, 0.5),
     "--prestress-ratio": Range(0.0, 1.5, high_open=True),
     "--bootstrap": Range(0, 10_000, integer=True),
@@ -116,6 +127,28 @@ ALSO_BAD: dict[str, tuple[str, ...]] = {
     "--modes": (),
     "--radius": (),
 }
+
+#: A valid lumped body of each law (the context of its flags' bad values).
+LUMPED_LAWS: dict[str, tuple[str, ...]] = {
+    "pressure": ("--body-radius", "--body-pressure"),
+    "reissner": ("--body-radius", "--body-modulus", "--body-poisson", "--body-thickness"),
+}
+_LUMPED_VALUES = {
+    "--body-radius": "0.02",
+    "--body-pressure": "1e5",
+    "--body-modulus": "2e9",
+    "--body-poisson": "0.35",
+    "--body-thickness": "0.0004",
+    "--body-restitution": "0.9",
+}
+
+
+def _lumped_body(flag: str, law: str) -> list[str]:
+    """A lumped body of ``law`` on the basketball, every option but ``flag`` given."""
+    given = [*LUMPED_LAWS[law], "--body-restitution"]
+    values = [v for other in given if other != flag for v in (other, _LUMPED_VALUES[other])]
+    return ["--mass-ratio", "0.05", "--body", "lumped", "--body-law", law, *values]
+
 
 #: A valid, cheap command line of each subcommand; ``{tmp}`` is the case's folder.
 BASE: dict[str, list[str]] = {
@@ -186,6 +219,18 @@ CONTEXT: dict[tuple[str, str], list[str]] = {
         )
     },
     ("bounce", "--wall-cells"): ["--ball", "thick"],
+    **{  # the lumped body's own law (a pressurised ball; a thin shell: Reissner)
+        ("bounce", flag): _lumped_body(flag, law)
+        for law, flags in (
+            ("pressure", LUMPED_LAWS["pressure"] + ("--body-restitution", "--body-steps")),
+            ("reissner", LUMPED_LAWS["reissner"]),
+        )
+        for flag in flags
+    },
+    **{
+        ("bounce", flag): ["--pair", "basketball-tennis", "--body", "ball"]
+        for flag in ("--body-modes", "--body-damping")
+    },
     # the shell (--ball shell): its wall on the drop, its spectrum dimensionless or physical
     ("bounce", "--wall-stiffness-ratio"): ["--ball", "shell"],
     ("bounce", "--thickness-ratio"): ["--ball", "shell", "--wall-stiffness-ratio", "4"],
@@ -222,6 +267,8 @@ CONTEXT: dict[tuple[str, str], list[str]] = {
 LEFT_OUT: dict[tuple[str, str], tuple[str, ...]] = {
     ("bounce", "--elements"): ("--modes",),
     ("bounce", "--order"): ("--modes",),
+    ("bounce", "--pole-levels"): ("--modes",),
+    ("bounce", "--top-levels"): ("--modes",),
 }
 #: Cases of the table the command line does not refuse yet, each with what it does instead:
 #: the test holds them apart and fails when one is refused (then delete its entry).
@@ -447,6 +494,10 @@ NOT_APPLICABLE: list[tuple[str, list[str]]] = [
     ("--drop-height", ["bounce", "--preset", "tennis", "--drop-height", "0.03"]),
     ("--values", ["sweep", "--bounce", "--param", "drop-height", "--values", "0.05,0.5"]),
     ("--drop-height", ["liftoff", "--drop-height", "1"]),
+    # the centre's height (the paper's x2): one height, not beside a speed, at least 2 R
+    ("--centre-height", ["bounce", "--centre-height", "0.92", "--drop-height", "0.8"]),
+    ("--centre-height", ["bounce", "--centre-height", "0.92", "--v0", "4.1"]),
+    ("--centre-height", ["bounce", "--centre-height", "0.2"]),
     ("--floor-restitution", ["liftoff", "--floor-restitution", "1"]),
     ("--elements", ["bounce", "--elements", "20"]),
     ("--mesh", ["bounce", "--backend", "fem", "--mesh", "sphere"]),
@@ -822,7 +873,20 @@ UNIT_SLIPS: list[tuple[list[str], tuple[str, ...]]] = [
     ),
     (
         ["sweep", "--bounce", "--modes", "16", "--param", "drop-height", "--values", "500,1000"],
-        ("2 of 2 points", "drop-height = 500", "H = 500 m", "did you mean 0.5 m (500 mm)"),
+        ("2 of 2 values", "drop-height = 500", "H = 500 m", "did you mean 0.5 m (500 mm)"),
     ),
     (["liftoff", "--radius", "120"], ("R = 120 m", "did you mean 0.12 m (120 mm)")),
+    (["liftoff", "--wave-speed", "3.2e5"], ("c = 320000 1/s", "did you mean 320 1/s")),
+    (
+        ["liftoff", "--pressure", "77200", "--mass", "567"],
+        ("m = 567 kg", "did you mean 0.567 kg (567 g)"),
+    ),
+    (
+        ["bounce", "--modes", "16", "--pressure", "77200", "--mass", "567"],
+        ("m = 567 kg", "did you mean 0.567 kg (567 g)"),
+    ),
+    (
+        ["sweep", "--param", "wave-speed", "--values", "3.2e5,3.3e5"],
+        ("2 of 2 values", "wave-speed = 320000", "c = 320000 1/s", "did you mean 320 1/s"),
+    ),
 ]

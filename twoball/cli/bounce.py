@@ -58,6 +58,13 @@ def add_drop_options(parser: argparse.ArgumentParser) -> None:
         "R: |v0| = sqrt(2 g H), eq. (2.1) (instead of --v0; a slower impact: --v0)",
     )
     group.add_argument(
+        "--centre-height",
+        type=numeric,
+        metavar="X2",
+        help="height [m] of the ball's centre above the floor at release, the paper's x2, at "
+        "least 2R: the lowest point falls x2 - R (instead of --drop-height or --v0)",
+    )
+    group.add_argument(
         "--floor-restitution",
         type=numeric,
         metavar="E",
@@ -153,6 +160,12 @@ def drop_case(args: argparse.Namespace) -> twoball.Case:
         )
     if args.drop_height is not None and args.v0 is not None:
         raise ParameterError("drop_height", "given alone, not with --v0", args.drop_height)
+    centre = getattr(args, "centre_height", None)
+    if centre is not None:
+        for name in ("drop_height", "v0"):
+            if getattr(args, name) is not None:
+                flag = "--" + name.replace("_", "-")
+                raise ParameterError("centre_height", f"given alone, not with {flag}", centre)
     for name, default in (("sigma", "lanczos"), ("recontact", "window")):
         if getattr(args, name, None) not in (None, default):
             valid = "left out for the drop (no lift-off criteria)"
@@ -179,9 +192,11 @@ def drop_case(args: argparse.Namespace) -> twoball.Case:
 
 
 def drop_options(args: argparse.Namespace) -> twoball.Drop:
-    """``--drop-height``, ``--gas``, ``--floor-restitution``, ``--membrane``, ``--gap``."""
+    """``--drop-height`` or ``--centre-height``, ``--gas``, ``--floor-restitution``,
+    ``--membrane``, ``--gap``."""
     fields: dict[str, Any] = {
         "drop_height": args.drop_height,
+        "centre_height": getattr(args, "centre_height", None),
         "gas": args.gas,
         "gap": getattr(args, "gap", None),
     }
@@ -384,11 +399,19 @@ def whole_rows(report: twoball.BounceReport) -> list[tuple[str, str]]:
         ("body contacts", str(data["body_contacts"])),
         ("e12 effective (eq. (2.4))", number(data["e12_effective"])),
     ]
+    caveats = data.get("caveats") or []
     icm = data["icm_solver"]
     if icm is not None:
         rows.append(
             ("ICM (2.5), this e2 and e12_eff", f"{icm['v1_ratio']:.4f} / {icm['v2_ratio']:.4f}")
         )
+    elif "overlap" in caveats:  # said, not left blank
+        undefined = "not defined: the floor and body contacts overlap"
+        rows[-1] = (rows[-1][0], undefined)
+        rows.append(("ICM (2.5), this e2 and e12_eff", undefined))
+    from twoball._bounce import CAVEATS
+
+    rows += [("warning", CAVEATS[tag]) for tag in caveats if tag != "overlap"]
     for name, out in (data["baselines"] or {}).get("models", {}).items():
         text = out.get("error") or f"{out['v1_ratio']:.4f} / {out['v2_ratio']:.4f}"
         rows.append((f"{name} v1/|v0| / v2/|v0|", text))

@@ -110,6 +110,7 @@ FLAGS: dict[str, str] = {
     "drop_height": "--drop-height",
     # the drop on the floor, the whole bounce
     "floor_restitution": "--floor-restitution",
+    "centre_height": "--centre-height",
     "gap": "--gap",
     "pair": "--pair",
     "export": "--export",
@@ -122,6 +123,22 @@ FLAGS: dict[str, str] = {
     "thickness_ratio": "--thickness-ratio",
     "prestress_ratio": "--prestress-ratio",
     "prestress": "--prestress-ratio",
+    # the elastic upper body (--body lumped|ball): the API's fields under their own flags
+    "body_radius": "--body-radius",
+    "body_pressure": "--body-pressure",
+    "body_modulus": "--body-modulus",
+    "body_poisson": "--body-poisson",
+    "body_thickness": "--body-thickness",
+    "body_restitution": "--body-restitution",
+    "body_steps": "--body-steps",
+    "body_modes": "--body-modes",
+    "body_damping": "--body-damping",
+    # the solid ball and the thick wall (--ball solid|thick)
+    "density": "--density",
+    "radial_orders": "--radial-orders",
+    "pole_levels": "--pole-levels",
+    "top_levels": "--top-levels",
+    "wall_cells": "--wall-cells",
 }
 
 
@@ -162,7 +179,11 @@ def flag_of(name: str, args: Namespace | None = None) -> str:
             if getattr(args, option, None) is not None and option != "g":
                 return FLAGS[option]
         return "--g"
-    return FLAGS.get(name, name)
+    if name in FLAGS:
+        return FLAGS[name]
+    if args is not None and hasattr(args, name):  # the option of the same name
+        return "--" + name.replace("_", "-")
+    return name
 
 
 def cli_message(error: ParameterError, args: Namespace | None = None) -> str:

@@ -3,7 +3,7 @@
 from __future__ import annotations
 
 import argparse
-from collections.abc import Iterator, Sequence
+from collections.abc import Collection, Iterator, Sequence
 from contextlib import contextmanager
 from typing import Any
 
@@ -36,16 +36,18 @@ from twoball.cli.values import number as number_value
 __all__ = ["register", "run"]
 
 
-def print_sweep(grid: Any, points: list[Any]) -> None:
-    """Print one row per grid point (an ``error`` column appears only if a point failed)."""
+def print_sweep(grid: Any, points: list[Any], rule: str | None = None) -> None:
+    """Print one row per grid point (an ``error`` column appears only if a point failed);
+    the phi_a rule, one for the sweep (:attr:`twoball.SweepResult.phi_a_rule`), under it."""
     fields = [_choices.SWEEP_PARAMETERS[p] for p in grid.parameters]
     shape = " x ".join(str(n) for n in grid.shape)
     title = f"Sweep of {' x '.join(grid.parameters)} ({shape} values)"
     table = Table(title=title)
+    if rule is not None:
+        table.caption = f"phi_a: {rule}"
     columns = [
         *grid.parameters,
         "phi_a [rad]",
-        "phi_a from",
         "lifted",
         "t_l [ms]",
         "v_l [m/s]",
@@ -60,7 +62,6 @@ def print_sweep(grid: Any, points: list[Any]) -> None:
         r = p.report
         cells = [f"{getattr(p.case, f):g}" for f in fields]
         cells.append(f"{p.case.phi_a:.5f}")
-        cells.append(str(p.case.phi_a_source))
         if r is None:
             cells += ["error", "-", "-", "-"]
         else:
@@ -140,8 +141,9 @@ def run(args: argparse.Namespace) -> int:
             progress=bar.update,
         )
     points = result.points
-    print_notes(sweep_notes(points))
-    print_warnings(sweep_warnings(points, grid.parameters))
+    print_notes(sweep_notes(points, result.phi_a_note))
+    repeated = result.point_slips
+    print_warnings([*result.warnings, *sweep_warnings(points, grid.parameters, repeated)])
     if plot is not None:
         result.plot(plot, measured=rows)
         print_overlay(result, rows)
@@ -150,7 +152,7 @@ def run(args: argparse.Namespace) -> int:
     if args.json:
         print_json(attach([p.as_dict() for p in points], result.provenance))
     else:
-        print_sweep(grid, points)
+        print_sweep(grid, points, result.phi_a_rule)
         _written(plot, table)
     return 0
 
@@ -183,6 +185,7 @@ def workers(args: argparse.Namespace) -> int | str | None:
 def _run_bounce(args: argparse.Namespace) -> int:
     """``twoball sweep --bounce``: one drop (or whole bounce) per value of one parameter."""
     import twoball
+    from twoball._bounce import OVERLAP_NOTE
     from twoball._plot import check_figure_path
     from twoball.cli.bounce import drop_case, drop_options, whole_body
 
@@ -227,7 +230,8 @@ def _run_bounce(args: argparse.Namespace) -> int:
             progress=bar.update,
         )
     done = [r for r in result.reports if r is not None]
-    print_notes(list(dict.fromkeys(n for r in done for n in r.notes)))
+    notes = [n for r in done for n in r.notes if n != OVERLAP_NOTE]  # said once, counted
+    print_notes(list(dict.fromkeys(notes)) + caveat_lines(result, ("overlap",)))
     print_warnings(bounce_sweep_warnings(result))
     if plot is not None:
         result.plot(plot, measured=rows)
@@ -292,18 +296,45 @@ def bounce_sweep_warnings(result: Any) -> list[str]:
     The first is named by its swept value (``drop-height = 500``); each point's
     warnings are in the JSON.
     """
+    swept = list(getattr(result, "warnings", ()))  # the swept values' slips, found first
+    said = set(swept) and {w for slips in getattr(result, "slips", ()) for w in slips}
     flagged = [
-        (value, report)
+        (value, [w for w in report.warnings if w not in said])
         for value, report in zip(result.values, result.reports, strict=True)
-        if report is not None and report.warnings
+        if report is not None
     ]
+    flagged = [(value, rest) for value, rest in flagged if rest]
+    caveats = caveat_lines(result, ("artefact", "e12_low"))
     if not flagged:
-        return []
-    value, report = flagged[0]
+        return swept + caveats
+    value, rest = flagged[0]
     return [
+        *swept,
         f"{len(flagged)} of {len(result.values)} points carry warnings (see --json), the first "
-        f"at {result.parameter} = {value:g}: {report.warnings[0]}"
+        f"at {result.parameter} = {value:g}: {rest[0]}",
+        *caveats,
     ]
+
+
+def caveat_lines(result: Any, tags: Sequence[str]) -> list[str]:
+    """One line per caveat of the whole bounce (``artefact``, ``e12_low``, ``overlap``) that
+    some points carry: how many, at which values, and what it means."""
+    from twoball._bounce import CAVEATS
+
+    out = []
+    for tag in tags:
+        at = [
+            f"{value:g}"
+            for value, report in zip(result.values, result.reports, strict=True)
+            if report is not None and tag in getattr(report, "caveats", ())
+        ]
+        if at:
+            where = ", ".join(at if len(at) <= 6 else [*at[:3], "...", *at[-2:]])
+            out.append(
+                f"{len(at)} of {len(result.values)} points ({result.parameter} = {where}): "
+                f"{CAVEATS[tag]}"
+            )
+    return out
 
 
 def _print_whole(result: Any) -> None:
@@ -320,12 +351,21 @@ def _print_whole(result: Any) -> None:
         "body first",
         "e12 eff",
         "ICM v1/v2",
+        "caveats",
     )
+    from twoball._bounce import CAVEATS
+
+    seen = [
+        tag for tag in CAVEATS if any(tag in getattr(r, "caveats", ()) for r in result.reports if r)
+    ]
+    if seen:  # each caveat said once under the table
+        table.caption = "\n".join(f"{tag}: {CAVEATS[tag]}" for tag in seen)
+        table.caption_justify = "left"
     for column in columns:
-        table.add_column(column, justify="right")
+        table.add_column(column, justify="left" if column == "caveats" else "right")
     for value, report, error in zip(result.values, result.reports, result.errors, strict=True):
         if report is None:
-            table.add_row(f"{value * scale:g}", error or "", *["-"] * 6)
+            table.add_row(f"{value * scale:g}", error or "", *["-"] * 7)
             continue
         icm = ((report.baselines or {}).get("models", {}).get("icm")) or {}
         table.add_row(
@@ -337,6 +377,7 @@ def _print_whole(result: Any) -> None:
             str(report.body_left_first),
             number(report.e12_effective),
             f"{icm['v1_ratio']:.3f}/{icm['v2_ratio']:.3f}" if "v1_ratio" in icm else "-",
+            ", ".join(getattr(report, "caveats", ())) or "-",
         )
     console().print(table)
 
@@ -352,24 +393,29 @@ def _sweep_body(args: argparse.Namespace, parameters: tuple[str, ...]) -> Any:
     return twoball.Body(0.0, **given) if given else None
 
 
-def sweep_notes(points: list[Any]) -> list[str]:
-    """One note for the whole sweep: at how many points eq. (3.7) replaced a preset's phi_a
-    (and, once each, any other remark, e.g. how a negative v0 was read)."""
+def sweep_notes(points: list[Any], phi_a: str | None = None) -> list[str]:
+    """One note for the whole sweep: the phi_a rule that replaced a preset's measured angle,
+    said once (``phi_a``, :attr:`twoball.SweepResult.phi_a_note`) in place of the points'
+    own; then, once each, any other remark (e.g. how a negative v0 was read)."""
     every = [n for p in points if p.report is not None for n in p.report.notes]
-    notes = [n for n in every if n.startswith("phi_a = ")]
     others = list(dict.fromkeys(n for n in every if not n.startswith("phi_a = ")))
-    if len(notes) <= 1:
-        return notes + others
-    why = notes[0].split("; ", 1)[-1]
-    return [f"phi_a from eq. (3.7) at {len(notes)} of {len(points)} points; {why}", *others]
+    return [phi_a, *others] if phi_a else others
 
 
-def sweep_warnings(points: list[Any], parameters: tuple[str, ...] = ()) -> list[str]:
+def sweep_warnings(
+    points: list[Any], parameters: tuple[str, ...] = (), said: Collection[str] = ()
+) -> list[str]:
     """One warning for the whole sweep: how many points carry accuracy warnings, the first.
 
     The first is named by its swept values (``v0 = 3.2``), not by its grid index.
+    Warnings in ``said`` (the swept values' slips, said for the sweep) are left out.
     """
-    flagged = [p for p in points if p.report is not None and p.report.warnings]
+    rest = {
+        p.index: [w for w in p.report.warnings if w not in said]
+        for p in points
+        if p.report is not None
+    }
+    flagged = [p for p in points if rest.get(p.index)]
     if not flagged:
         return []
     first = flagged[0]
@@ -382,7 +428,7 @@ def sweep_warnings(points: list[Any], parameters: tuple[str, ...] = ()) -> list[
     )
     return [
         f"{len(flagged)} of {len(points)} points carry warnings (see --json), the first "
-        f"at {where}: {first.report.warnings[0]}"
+        f"at {where}: {rest[first.index][0]}"
     ]
 
 

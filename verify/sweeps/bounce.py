@@ -81,12 +81,16 @@ def bounce_points(
             raise ParameterError("param", valid + "beta has no D)", "damping")
         return [(case.derive(damping=float(v)), drop, body) for v in values]
     if parameter == "v0":
-        if drop.drop_height is not None:
-            raise ParameterError("drop_height", "left out when v0 is swept", drop.drop_height)
+        for name in ("drop_height", "centre_height"):  # a height sets |v0|
+            if getattr(drop, name) is not None:
+                raise ParameterError(name, "left out when v0 is swept", getattr(drop, name))
         return [(case.derive(v0=float(v)), drop, body) for v in values]
     if parameter == "drop-height":
         from twoball.modal.floor.inputs import check_drop_height
 
+        if drop.centre_height is not None:  # the swept heights are the lowest point's
+            valid = "left out when drop_height is swept"
+            raise ParameterError("centre_height", valid, drop.centre_height)
         points = [(case, replace(drop, drop_height=float(v)), body) for v in values]
         for _, point, _ in points:  # a height below the case's radius: before the first run
             check_drop_height(case, point.drop_height)
@@ -119,6 +123,12 @@ class BounceSweep:
         failed; ``errors`` says why).
     errors : list of str or None
     provenance : dict
+    slips : tuple of tuple of str
+        Each point's unit slips (:func:`twoball.modal.guards.case_warnings`), found
+        before any point ran: kept in the JSON of a point that failed too.
+    warnings : tuple of str
+        The sweep's own: swept values far outside any ball
+        (:func:`twoball.modal.guards.sweep_slips`), checked before any point ran.
 
     Examples
     --------
@@ -134,16 +144,29 @@ class BounceSweep:
     reports: list[Any]
     errors: list[str | None]
     provenance: dict[str, Any] | None = field(default=None, compare=False, repr=False)
+    slips: tuple[tuple[str, ...], ...] = field(default=(), compare=False, repr=False)
+    warnings: tuple[str, ...] = ()
 
     def as_dict(self) -> dict[str, Any]:
-        """JSON-ready: the parameter and one drop per value (SI), with the provenance."""
+        """JSON-ready: the parameter and one drop per value (SI), with the provenance and
+        the sweep's own ``warnings``; a point that failed keeps its unit slips."""
         points = []
-        for value, report, error in zip(self.values, self.reports, self.errors, strict=True):
+        slips = self.slips or ((),) * len(self.values)
+        for value, report, error, slip in zip(
+            self.values, self.reports, self.errors, slips, strict=True
+        ):
             data = {"parameter": self.parameter, "value": value, "error": error}
             if report is not None:
                 data |= {k: v for k, v in report.as_dict().items() if k != "provenance"}
+            else:
+                data["warnings"] = list(slip)
             points.append(data)
-        return {"parameter": self.parameter, "points": points, "provenance": self.provenance}
+        return {
+            "parameter": self.parameter,
+            "warnings": list(self.warnings),
+            "points": points,
+            "provenance": self.provenance,
+        }
 
     def plot(
         self, out: str | os.PathLike[str], *, dpi: float | None = None, measured: Any = None
@@ -200,7 +223,8 @@ class BounceSweep:
         ``flattening_max_m``, ``t_max_compression_s``; with a body also
         ``gap_m``, ``mass_ratio``, ``v1_m_s``, ``v1_ratio``, ``v2_ratio``,
         ``t_liftoff_s``, ``t_liftoff_from_max_compression_s``,
-        ``body_left_first``, ``sequence``, ``e12_effective``; then ``warnings``
+        ``body_left_first``, ``sequence``, ``e12_effective``, ``caveats`` (the
+        answer's tags, ``artefact | overlap``); then ``warnings``
         and ``error`` (blank: no value).  Returns the path written.
         """
         from twoball.verify.sweeps.table import bounce_table, write_table
@@ -211,12 +235,12 @@ class BounceSweep:
 
 def check_point(
     case: Case | None, drop: Drop, body: Any, pair: str | None, *, solver: Any = None
-) -> None:
+) -> Any:
     """The checks a drop makes before its work (:func:`~twoball.modal.floor.bounce.bounce_problem`),
-    for one point of a sweep."""
+    for one point of a sweep; returns the resolved problem."""
     from twoball.modal.floor.bounce import bounce_problem
 
-    bounce_problem(case, drop, body=body, pair=pair, **_solver_options(solver))
+    return bounce_problem(case, drop, body=body, pair=pair, **_solver_options(solver))
 
 
 def _solver_options(solver: Any) -> dict[str, Any]:
@@ -287,8 +311,13 @@ def bounce_sweep(
         raise ParameterError("v0", valid, speed)
     check_drop_case(base, drop)  # a given phi_a: a v0 sweep would drop it unsaid
     points = [(*point, pair) for point in bounce_points(base, drop, parameter, array, body)]
-    for point in points:  # every point's values refused here, before the first run
-        check_point(*point, solver=solver)
+    # every point's values refused here, before the first run, and its unit slips found
+    slips = tuple(check_point(*point, solver=solver).slips for point in points)
+    from twoball.modal.guards import sweep_slips
+
+    field = BOUNCE_PARAMETERS[parameter]
+    swept = sweep_slips(field, parameter, array, base)
+    warnings = () if swept is None else (swept,)
     task = BounceTask(solver=solver, damping=damping, monitor=monitor)
     reports: list[Any] = []
     errors: list[str | None] = []
@@ -311,7 +340,8 @@ def bounce_sweep(
     from twoball._common.provenance import block
 
     provenance = block(base, "twoball.sweep", arguments)
-    return BounceSweep(parameter, tuple(float(v) for v in array), reports, errors, provenance)
+    values_ = tuple(float(v) for v in array)
+    return BounceSweep(parameter, values_, reports, errors, provenance, slips, warnings)
 
 
 def _short(error: str | None) -> str | None:

@@ -114,6 +114,32 @@ def phi_a_rule(cases: Sequence[Any]) -> str:
     return "mixed: " + ", ".join(sorted(str(s) for s in sources))
 
 
+def phi_a_note(cases: Sequence[Any]) -> str | None:
+    """The one note of a sweep whose rule replaced a preset's measured phi_a (else None).
+
+    Said once for the sweep, its preset's own point included, in place of each
+    point's own note (:attr:`~twoball.modal.parameters.Case.phi_a_note`).
+    """
+    notes = [c.phi_a_note for c in cases]
+    if not any(notes):
+        return None
+    first = next(c for c, n in zip(cases, notes, strict=True) if n)
+    from twoball.modal.presets import MEASURED
+
+    measured = MEASURED[first.preset_name].phi_a
+    own = [c for c in cases if c.at_measured_point]
+    where = (
+        f", the {first.preset_name} preset's own R, c, |v0| included: one rule for the sweep"
+        if own
+        else ""
+    )
+    return (
+        f"phi_a from {phi_a_rule(cases)}{where}; the {first.preset_name} preset's measured "
+        f"{measured:g} rad holds only at its own R, c, |v0|"
+        + (" and is used at none of the points" if own else "")
+    )
+
+
 @dataclass(frozen=True)
 class SweepGrid:
     """The swept parameters (CLI names) and their values; one or two axes."""

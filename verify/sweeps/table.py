@@ -78,6 +78,7 @@ BODY_COLUMNS: tuple[str, ...] = (
     "body_left_first",
     "sequence",
     "e12_effective",
+    "caveats",
 )
 
 

@@ -318,6 +318,14 @@ def _baseline(reports: Sequence[object], name: str, key: str) -> np.ndarray:
     return np.array([row.get(key, np.nan) for row in rows], dtype=float)
 
 
+#: The marks of the whole bounce's caveats (:data:`twoball.modal.floor.bounce.CAVEATS`)
+#: on its v1 and v2 curves: marker, size, legend text.
+CAVEAT_MARKS: dict[str, tuple[str, float, str]] = {
+    "artefact": ("X", 8.0, "depends on the degree-1 artefact"),
+    "e12_low": ("v", 8.0, "$e_{12,eff}$ < 0.5 Newton's $e_{12}$"),
+}
+
+
 @styled
 def gap_figure(
     points: Sequence[tuple[float, object]],
@@ -356,6 +364,11 @@ def gap_figure(
         whole = [getattr(r, key) for r in reports]
         whole = np.array([np.nan if v is None else v for v in whole], dtype=float)
         ax.plot(x, whole, color=colour, ls="-", marker=marker, ms=4, label="whole bounce")
+        for tag, (mark, size, text) in CAVEAT_MARKS.items():  # the answers that say what they are
+            flagged = np.array([tag in getattr(r, "caveats", ()) for r in reports])
+            if flagged.any():
+                ax.plot(x[flagged], whole[flagged], mark, color="crimson", ms=size, mfc="none",
+                        ls="none", label=text)  # fmt: skip
         for name, (c, style, mark, text) in BASELINE_STYLES.items():
             values = _baseline(reports, name, key)
             if np.all(np.isnan(values)):
@@ -408,4 +421,12 @@ def gap_figure(
     axes[2].legend(**beside)
     case = reports[0].case
     fig.suptitle(f"Whole bounce{': ' + title if title else ''} ($|v_0|$ = {case.v0:g} m/s)")
+    from twoball.modal.floor.bounce import CAVEATS
+
+    seen = [t for t in CAVEAT_MARKS if any(t in getattr(r, "caveats", ()) for r in reports)]
+    if seen:  # what the marked points mean, and where the docs measure it
+        import textwrap
+
+        lines = [textwrap.fill(f"{CAVEAT_MARKS[t][2]}: {CAVEATS[t]}", 150) for t in seen]
+        fig.supxlabel("\n".join(lines), fontsize=6.5, x=0.01, ha="left")
     return fig

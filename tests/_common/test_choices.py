@@ -57,6 +57,11 @@ USERS = {
     "REPRODUCTION_PARTS": [("twoball.verify.reproduce.driver", "REPRODUCTION_PARTS")],
     "REPRODUCTION_DIR": [("twoball.verify.reproduce.driver", "REPRODUCTION_DIR")],
     "REPRODUCTION_REPORT": [("twoball.verify.reproduce.driver", "REPRODUCTION_REPORT")],
+    "FIT_MODELS": [("twoball.cli.fit", "_choices.FIT_MODELS")],
+    "FIT_PARAMETERS": [("twoball.verify.fit.models", "FIT_PARAMETERS")],
+    "FIT_MODEL_COLUMNS": [("twoball.verify.fit.models", "FIT_MODEL_COLUMNS")],
+    "MEASURED_COLUMNS": [("twoball.verify.fit.data", "MEASURED_COLUMNS")],
+    "SIGMA_PREFIX": [("twoball.verify.fit.data", "SIGMA_PREFIX")],
 }
 
 
@@ -65,7 +70,9 @@ def test_each_user_holds_the_choices_own_object(name):
     """Not an equal copy: the same object, so a change in choices.py reaches every user."""
     value = getattr(choices, name)
     for module, attribute in USERS[name]:
-        held = getattr(importlib.import_module(module), attribute)
+        held = importlib.import_module(module)
+        for part in attribute.split("."):
+            held = getattr(held, part)
         assert held is value, (module, attribute, held, value)
 
 
