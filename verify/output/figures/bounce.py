@@ -427,6 +427,6 @@ def gap_figure(
     if seen:  # what the marked points mean, and where the docs measure it
         import textwrap
 
-        lines = [textwrap.fill(f"{CAVEAT_MARKS[t][2]}: {CAVEATS[t]}", 150) for t in seen]
-        fig.supxlabel("\n".join(lines), fontsize=6.5, x=0.01, ha="left")
+        lines = [textwrap.fill(f"{CAVEAT_MARKS[t][2]}: {CAVEATS[t]}", 120) for t in seen]
+        fig.supxlabel("\n".join(lines), fontsize=8, x=0.01, ha="left")
     return fig
