@@ -1,4 +1,4 @@
-"""twoball.fem_shell -- the thin spherical shell ball in finite elements on the meridian (issue 31).
+"""twoball.fem_shell -- the thin spherical shell ball in finite elements on the meridian.
 
 Cubic Hermite w and Lagrange v on a 1-D mesh of the polar angle (scikit-fem),
 the pole conditions of axisymmetry, the energy of :mod:`twoball.modal.shell`

@@ -20,7 +20,7 @@ tennis ball        pressure   2 pi R1 P1, 82.7 kPa       0.83 (Table 1 e2)   ten
 tissue ball        hertz      E = 1 MPa (assumed)        0.50 (assumed)      --
 =================  =========  =========================  ==================  =================
 
-The table tennis ball's continuum body would be the shell ball of issue 31
+The table tennis ball's continuum body would be the shell ball (docs/shell.rst)
 (tangential displacement and bending); the membrane has no in-plane stiffness
 and would hold it by pressure it does not have, so no ball body is offered.
 """
@@ -35,6 +35,7 @@ from twoball.modal.upper.laws import ContactLaw
 from twoball.modal.upper.options import BODY_KINDS, BallBody, LumpedBody
 
 from twoball._common.errors import ParameterError
+from twoball._common.keywords import checked
 
 __all__ = ["BODIES", "TENNIS_BALL_DAMPING", "BodyPreset", "preset_body"]
 
@@ -165,6 +166,7 @@ def _ball_body(preset: BodyPreset, lower: str) -> BallBody:
     )
 
 
+@checked(name="twoball.body_preset")
 def preset_body(pair: str, kind: str = "lumped", **changes: Any) -> Any:
     """The upper body of a Table 1 pair as ``kind`` (``rigid``, ``lumped`` or ``ball``).
 

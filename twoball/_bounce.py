@@ -16,7 +16,9 @@ from dataclasses import dataclass, replace
 from pathlib import Path
 from typing import Any
 
-from twoball._common.errors import NumericalError, ParameterError
+from twoball._common.errors import ParameterError
+from twoball._common.keywords import checked
+from twoball._common.staging import check_path_type
 from twoball.modal.floor.bounce import CAVEATS, OVERLAP_NOTE
 from twoball.modal.floor.options import Drop
 from twoball.modal.floor.report import BounceReport as Numbers
@@ -31,6 +33,7 @@ __all__ = [
 ]
 
 
+@checked
 def bounce(
     case: Case | None = None,
     drop: Drop | None = None,
@@ -206,6 +209,7 @@ def check_field_targets(
     return target, picture, count
 
 
+@checked
 @dataclass(frozen=True)
 class BounceReport(Numbers):
     """One drop of the lower ball on the floor, in SI, with its files.
@@ -229,6 +233,7 @@ class BounceReport(Numbers):
     """
 
     # --- files ------------------------------------------------------------------------
+    @checked
     def plot(
         self, out: str | os.PathLike[str], *, dpi: float | None = None, measured: Any = None
     ) -> Path:
@@ -241,9 +246,10 @@ class BounceReport(Numbers):
         reads them): the rows at this drop's ``|v0|`` (and gap) drawn over it,
         v1 and v2 on the velocities, the lift-off time, phi_a on the contact angle.
         """
-        from twoball.verify.output.figures import save_figure
+        from twoball.verify.output.figures import figure_format, save_figure
         from twoball.verify.output.figures.bounce import drop_figure, whole_figure
 
+        figure_format(Path(check_path_type(out)), "out")  # before the figure is drawn
         self._require_history()
         title = f"{self._subject}; {self.backend}, {self._physics}"
         if self.has_body:
@@ -260,10 +266,13 @@ class BounceReport(Numbers):
         return save_figure(figure, out, "plot", dpi)
 
     def _require_history(self) -> None:
+        """Refuse a light report (a sweep point): a usage error, not a numerical one."""
         if not self.result.has_history:
-            raise NumericalError(
-                "a light report keeps no history (a sweep point): run twoball.bounce for its "
-                "figure, fields and pictures"
+            raise ParameterError(
+                "report",
+                "one of twoball.bounce with its history for a figure, fields or pictures "
+                "(a sweep point keeps none: run twoball.bounce at its value)",
+                "a light report",
             )
 
     def _mesh_and_times(self, mesh: Any, frames: int) -> tuple[Any, Any]:
@@ -279,6 +288,7 @@ class BounceReport(Numbers):
         count = check_frames(frames)
         return sphere_mesh(spec.level, spec.order, None), drop_frames(self.result, count, self.case)
 
+    @checked
     def export(
         self,
         out: str | os.PathLike[str],
@@ -307,6 +317,7 @@ class BounceReport(Numbers):
         from twoball.verify.output.drop_fields import drop_series
         from twoball.verify.output.series import write_series
 
+        check_path_type(out)
         sphere, times = self._mesh_and_times(mesh, frames)
         if _view(view, mesh) == "cut":
             from twoball.verify.output.solid_cut import cut_series
@@ -322,6 +333,7 @@ class BounceReport(Numbers):
             )
         return write_series(out, series, format)
 
+    @checked
     def render(
         self,
         out: str | os.PathLike[str],
@@ -345,6 +357,7 @@ class BounceReport(Numbers):
         from twoball.verify.output.drop_fields import drop_scene
         from twoball.verify.output.render import DEFAULT_SIZE, render_scene
 
+        check_path_type(out)
         sphere, times = self._mesh_and_times(mesh, frames)
         if Path(out).suffix.lower() == ".png":  # one picture: the largest compression
             times = times[:1] * 0.0 + self.t_max_compression_s

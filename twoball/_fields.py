@@ -17,6 +17,7 @@ from typing import Any
 from twoball._common.budget import timed
 from twoball._common.choices import DEFAULT_ANIMATION_FRAMES
 from twoball._common.errors import ParameterError
+from twoball._common.keywords import checked
 from twoball._common.progress import Step, check_progress, silent
 from twoball._common.provenance import block
 from twoball._common.staging import check_path_type
@@ -96,6 +97,7 @@ def _frames(frames: Any) -> tuple[int | None, Sequence[float] | None, str]:
     return frames, None, name
 
 
+@checked
 @timed
 def export(
     out: str | os.PathLike[str],
@@ -264,6 +266,7 @@ def _shown(frames: int | None, times: Any) -> Any:
     return frames if times is None else [float(t) for t in times]
 
 
+@checked
 @timed
 def render(
     out: str | os.PathLike[str],

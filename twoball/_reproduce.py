@@ -9,10 +9,12 @@ from pathlib import Path
 from typing import Any
 
 from twoball._common.budget import timed
+from twoball._common.keywords import checked
 
 __all__ = ["Reproduction", "reproduce"]
 
 
+@checked
 @dataclass(frozen=True)
 class Reproduction:
     """What :func:`reproduce` wrote: the directory and one section per part.
@@ -69,6 +71,7 @@ class Reproduction:
         }
 
 
+@checked
 @timed
 def reproduce(
     out: str | os.PathLike[str] | None = None,
@@ -117,9 +120,11 @@ def reproduce(
 
     check_progress(progress)
     workers, scheduler = where("twoball.reproduce", workers)
-    if only is not None and not isinstance(only, str):
-        only = ",".join(str(part) for part in only)
     names = parse_only(only)
+    if not isinstance(command, str):
+        from twoball._common.errors import ParameterError
+
+        raise ParameterError("command", "a str (the command the report names)", command)
     if not scheduler:
         workers = check_workers(workers)
     out = DEFAULT_OUT if out is None else out

@@ -1,4 +1,4 @@
-"""twoball.modal.shell -- the thin spherical shell ball in closed form (issue 31).
+"""twoball.modal.shell -- the thin spherical shell ball in closed form.
 
 Radial and meridional displacement on Love-Kirchhoff kinematics, inflation
 prestress and enclosed gas: per Legendre degree a 2 x 2 eigenproblem with two

@@ -1,6 +1,6 @@
 r"""The axisymmetric spectrum of the thin spherical shell, degree by degree, in closed form.
 
-Model (issue 31; Love-Kirchhoff kinematics, Kraus 1967 ch. 2, paper ref. [23])
+Model (Love-Kirchhoff kinematics, Kraus 1967 ch. 2, paper ref. [23])
 --------------------------------------------------------------------------------
 A complete sphere of radius R, axisymmetric, radial displacement w(phi) (outward)
 and meridional displacement v(phi) (towards increasing phi), ``' = d/dphi``:

@@ -146,9 +146,50 @@ def test_parser_registers_store_once_for_every_value_option() -> None:
         ),
         (["liftoff", "--mass-ratio", "0.1", "--geometry", "exact"], "--geometry must be left out"),
         (["liftoff", "--radius", "1", "--radius", "2"], "--radius given more than once (1.0, then"),
+        # an option of another subcommand: where it is (a pair's pictures: bounce --render)
+        (
+            ["render", "--pair", "basketball-tennis", "--out", "x.png"],
+            "--pair is not an option of twoball render; a pair's drop is drawn by twoball "
+            "bounce --pair NAME --render FILE (see twoball render --help)",
+        ),
+        (
+            ["export", "--gap", "0.01", "--out", "x.vtu"],
+            "--gap is not an option of twoball export; it is an option of twoball bounce, "
+            "sweep, fit",
+        ),
+        # digit separators: float("0_01") is 1.0, a typo for 0.01
+        (["bounce", "--mass-ratio", "0.1", "--gap", "0_01"], "--gap must be"),
+        (["liftoff", "--v0", "4_1"], "--v0 must be"),
+        (["liftoff", "--preset", "basketball", "--modes", "3_0"], "--modes must be"),
+        # the keywords of the valid range as flags too
+        (
+            ["bounce", "--restitution", "0.5"],
+            "--restitution must be given only with --mass-ratio or --pair, got 0.5",
+        ),
     ],
 )
 def test_the_line_names_the_option_given(argv: list[str], expected: str, tmp_path: Path) -> None:
     [result] = run_child([("", argv)], tmp_path)
     assert result["status"] == 2
     assert result["stderr"].startswith(f"twoball: error: {expected}"), result["stderr"]
+
+
+def test_bounce_help_lists_no_option_it_only_refuses(tmp_path: Path) -> None:
+    """The shared case options the drop only refuses are parsed (the refusal says why) but
+    not offered in ``twoball bounce --help``."""
+    from twoball.cli.bounce import REFUSED
+
+    text = table.subparsers(full_parser())["bounce"].format_help()
+    for flag in REFUSED:
+        assert flag not in text.split(), flag
+    cases = [
+        (flag, ["bounce", flag, value])
+        for flag, value in (
+            ("--phi-a", "2.6"),
+            ("--sigma", "none"),
+            ("--recontact", "paper"),
+            ("--energy", "both"),
+        )
+    ]
+    assert {flag for flag, _ in cases} == set(REFUSED)
+    assert not check_refusals(cases, run_child(cases, tmp_path))

@@ -88,7 +88,7 @@ def test_the_whole_bounce_with_the_pair(capsys):
         (["--ball", "shell", "--wall-stiffness-ratio", "-1"], "--wall-stiffness-ratio"),
         (["--ball", "shell", "--modes", "4"], "--modes"),
         (["--wall-stiffness-ratio", "3"], "--wall-stiffness-ratio"),
-        (["--ball", "rubber"], "--ball"),  # solid and thick are balls now (issue 33)
+        (["--ball", "rubber"], "--ball"),  # solid and thick are balls now
     ],
 )
 def test_flags_that_do_not_apply_are_refused_by_name(capsys, argv, flag):

@@ -1,6 +1,6 @@
 """What version 0.3 removed has no shim: the 0.2 keywords, Stepping, Series, the callable verify.
 
-The project was a week old (issue 29): the keywords of version 0.2 and the
+The project was a week old: the keywords of version 0.2 and the
 option bags they moved into are gone, and a call that still uses them is a
 ``TypeError`` naming the keyword (Python's own, before any work), never a
 warning that lets it run.  The new spellings are tested with each verb.

@@ -212,7 +212,33 @@ def refuse_unknown_options(parser: argparse.ArgumentParser, argv: Sequence[str])
         if name in known or len([k for k in known if k.startswith(name)]) == 1:
             continue
         where = f"twoball {command}" if command else "twoball"
-        fail(f"{name} is not an option of {where} (see {where} --help)")
+        hint = ELSEWHERE.get((command, name)) or _other_commands(name, command)
+        fail(f"{name} is not an option of {where}{hint} (see {where} --help)")
+
+
+#: Where an option that a subcommand lacks does what was asked: a pair (the whole two-ball
+#: bounce) is dropped by ``twoball bounce``, which writes its own figure, fields and pictures.
+ELSEWHERE: dict[tuple[str | None, str], str] = {
+    ("render", "--pair"): "; a pair's drop is drawn by twoball bounce --pair NAME --render FILE",
+    ("export", "--pair"): "; a pair's drop is written by twoball bounce --pair NAME --export FILE",
+    ("plot", "--pair"): "; a pair's figure is drawn by twoball bounce --pair NAME --plot FILE",
+    ("liftoff", "--pair"): "; a pair's whole bounce is twoball bounce --pair NAME",
+}
+
+
+def _other_commands(flag: str, command: str | None) -> str:
+    """``; it is an option of twoball bounce, sweep`` (empty if of no other subcommand)."""
+    if command is None:
+        return ""
+    parser = full_parser()
+    others = [
+        name
+        for action in parser._actions
+        if isinstance(action, argparse._SubParsersAction)
+        for name, sub in action.choices.items()
+        if name != command and any(flag in a.option_strings for a in sub._actions)
+    ]
+    return f"; it is an option of twoball {', '.join(others)}" if others else ""
 
 
 def chosen_command(argv: Sequence[str]) -> str | None:

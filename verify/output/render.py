@@ -146,9 +146,11 @@ def check_size(size: tuple[int, int] | str, flag: str = "size") -> tuple[int, in
     """Image size ``(width, height)`` in pixels from a tuple or a ``WxH`` string."""
     valid = f"WIDTHxHEIGHT in pixels, each an integer in [16, {MAX_SIZE}]"
     if isinstance(size, str):
+        from twoball._common.ranges import whole
+
         parts = size.lower().replace(" ", "").split("x")
         try:
-            width, height = (int(p) for p in parts)
+            width, height = (whole(p) for p in parts)
         except ValueError:
             raise ParameterError(flag, valid, size) from None
     else:
@@ -568,7 +570,9 @@ def render_scene(
     size = check_size(size)
     warp = check_warp(warp)
     check_scene_warp(scene, warp)
-    if not (math.isfinite(fps) and fps > 0):
+    from twoball._common.errors import real_number
+
+    if not real_number("fps", fps, "a finite number > 0") > 0:
         raise ParameterError("fps", "a finite number > 0", fps)
     if kind == ".mp4":
         size = round_size(size)

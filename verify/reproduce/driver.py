@@ -59,10 +59,16 @@ DATA = "reproduction.json"
 PROVENANCE = "provenance.json"
 
 
-def parse_only(text: str | None) -> list[str]:
-    """``only="a,b"`` -> part names in report order; None or empty -> all parts."""
+def parse_only(text: str | Sequence[str] | None) -> list[str]:
+    """``only="a,b"`` or ``["a", "b"]`` -> part names in report order; None -> all parts."""
     if text is None:
         return list(PARTS)
+    valid = "a comma-separated subset of " + ",".join(PARTS)
+    if not isinstance(text, str):
+        parts = list(text) if isinstance(text, list | tuple) else None
+        if parts is None or not all(isinstance(part, str) for part in parts):
+            raise ParameterError("only", valid + " (a str or a list of str)", text)
+        text = ",".join(parts)
     names = [t.strip() for t in text.split(",") if t.strip()]
     unknown = [n for n in names if n not in PARTS]
     if not names or unknown:

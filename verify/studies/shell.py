@@ -1,4 +1,4 @@
-"""Tables of the shell ball (issue 31): spectrum, causality, the wall's ratio, Table 1.
+"""Tables of the shell ball: spectrum, causality, the wall's ratio, Table 1.
 
 ``python -m twoball.verify.studies.shell [names...]`` prints the Markdown tables
 docs/shell.rst quotes:

@@ -1,4 +1,4 @@
-"""Tables of the solid ball and the thick wall (issue 33): spectrum, Hertz, backends, Table 1.
+"""Tables of the solid ball and the thick wall: spectrum, Hertz, backends, Table 1.
 
 ``python -m twoball.verify.studies.solid [names...]`` prints the Markdown tables
 docs/solid.rst quotes:

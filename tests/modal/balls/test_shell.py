@@ -1,4 +1,4 @@
-"""The shell ball (issue 31) through the drop and the whole bounce, unchanged.
+"""The shell ball through the drop and the whole bounce, unchanged.
 
 The wall, the closed-form ball's description, the books at D = 0 and e = 1 on
 both backends, the backends' agreement, the large gap against the ICM with the

@@ -43,7 +43,7 @@ def test_modes_are_orthonormal_in_mass_with_modal_mass_m(shell):
 
 @pytest.mark.parametrize("shell", SHELLS)
 def test_modes_are_orthogonal_in_stiffness_with_omega_squared(shell):
-    """The modal stiffnesses are Omega^2: K's energy of the sampled fields (strains of issue 31)."""
+    """The modal stiffnesses are Omega^2: K's energy of the sampled fields."""
     nu, bh, p = shell.poisson, shell.bending, shell.prestress
     modes = shell_modes(shell, 12)
     nodes, weights = np.polynomial.legendre.leggauss(120)

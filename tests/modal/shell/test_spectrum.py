@@ -84,7 +84,7 @@ def test_branches_are_the_generalized_eigenvalues_of_the_degree_matrices():
 def _energy_matrix(shell: ShellParameters, n: int) -> tuple[np.ndarray, np.ndarray]:
     """K and M of degree n by quadrature of the strain energy (R = 1, C = 1, rho_s = 1).
 
-    Independent of the module's algebra: the strains of issue 31 are evaluated
+    Independent of the module's algebra: the Love-Kirchhoff strains are evaluated
     pointwise from numpy's Legendre series and integrated over phi with
     Gauss-Legendre (interior points: cot(phi) is never evaluated at a pole).
     """
@@ -227,7 +227,7 @@ def test_degree_one_is_the_translation_exactly():
 def test_vanishing_wall_stiffness_gives_the_pressurised_membrane_on_the_upper_branch():
     """C -> 0 at fixed N0: the upper branch's rho_s R^2 omega^2 / N0 = Omega^2 / p -> (n-1)(n+2).
 
-    Not the lower branch, as issue 31 says: that one is tangential and its
+    Not the lower branch: that one is tangential and its
     ``Omega^2 -> (lambda - 1 + nu)(1 + beta_h)``, i.e. omega^2 ~ C -> 0.  The
     upper branch's error is ``(2 (1 + nu) + beta_h L) / p + O(1/p^2)``
     (``L = lambda (lambda - 1 + nu)``: the trace minus the lower root).

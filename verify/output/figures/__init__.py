@@ -126,9 +126,9 @@ def save_figure(
     import matplotlib
     from twoball.verify.output.figures.style import style_rc
 
-    from twoball._common.staging import staged_file
+    from twoball._common.staging import check_path_type, staged_file
 
-    out = Path(path).expanduser()
+    out = Path(check_path_type(path, flag)).expanduser()
     kind = figure_format(out, flag)
     resolution = check_dpi(dpi, dpi_flag)
     metadata = {"Creator": "twoball"} if kind in ("pdf", "svg", "png", "eps", "ps") else None
