@@ -255,7 +255,7 @@ class BounceReport(Numbers):
 
         figure_format(Path(check_path_type(out)), "out")  # before the figure is drawn
         self._require_history()
-        title = f"{self.backend}, {self._physics}"
+        title = f"{self._subject}; {self.backend}, {self._physics}"
         if self.has_body:
             icm = self.icm_solver
             lines = None if icm is None else (icm["v1_m_s"], icm["v2_m_s"])
@@ -377,6 +377,15 @@ class BounceReport(Numbers):
             scene = drop_scene(self.result, self.case, sphere, times, self.mass_kg, self._text)
         size = size or DEFAULT_SIZE
         return render_scene(out, scene, warp=warp, size=size, fps=fps, monitor=Watch())
+
+    @property
+    def _subject(self) -> str:
+        """What was dropped, for titles: the Table 1 pair, the lower ball's preset or
+        ``custom ball``."""
+        arguments = ((self.provenance or {}).get("call") or {}).get("arguments") or {}
+        if arguments.get("pair"):
+            return str(arguments["pair"])
+        return self.case.preset_name or "custom ball"
 
     @property
     def _physics(self) -> str:
