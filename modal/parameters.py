@@ -472,6 +472,11 @@ class Case:
         """
         if self.pressure is not None or self.preset_name not in MEASURED:
             return None
+        own = MEASURED[self.preset_name]
+        radius = changes.get("radius", self.radius)
+        wave_speed = changes.get("wave_speed", self.wave_speed)
+        if radius != own.radius or wave_speed != own.wave_speed:
+            return None  # another ball: the preset's pressure is not its own
         bending = changes.get("bending", self.bending)
         gas = changes.get("gas", self.gas)
         if not (bending or gas != "none"):

@@ -179,7 +179,7 @@ def check_field_targets(
     picture path (``.png``, ``.gif``, ``.mp4``) and the number of instants
     (default 40; 1 for a ``.vtu``).  Refuses a folder, a link, an existing
     side file twoball did not write, an unknown suffix, and ``frames`` without
-    a file.
+    a file; a picture whose drawing cannot fit the budget (time, memory).
     """
     from twoball._common.staging import check_file, check_path_type
     from twoball.verify.output.fields import check_frames
@@ -202,8 +202,12 @@ def check_field_targets(
             count = 1
     if render is not None:
         check_path_type(render, "render")
-        image_kind(render, "render")
+        kind = image_kind(render, "render")
         picture = check_file(render, "render")
+        from twoball._fields import check_render_budget
+        from twoball.verify.output.render import DEFAULT_SIZE
+
+        check_render_budget(1 if kind == ".png" else count, DEFAULT_SIZE, kind)  # its drawing
     if frames is not None and target is None and picture is None:
         raise ParameterError("frames", "given with export or render", frames)
     return target, picture, count
@@ -251,7 +255,7 @@ class BounceReport(Numbers):
 
         figure_format(Path(check_path_type(out)), "out")  # before the figure is drawn
         self._require_history()
-        title = f"{self.backend}, {self._physics}"
+        title = f"{self._subject}; {self.backend}, {self._physics}"
         if self.has_body:
             icm = self.icm_solver
             lines = None if icm is None else (icm["v1_m_s"], icm["v2_m_s"])
@@ -354,10 +358,14 @@ class BounceReport(Numbers):
         a ball with a volume, coloured by the displacement along the radius (the
         compression wave inside).
         """
+        from twoball._common.watch import Watch
+        from twoball._fields import check_render_budget
         from twoball.verify.output.drop_fields import drop_scene
-        from twoball.verify.output.render import DEFAULT_SIZE, render_scene
+        from twoball.verify.output.render import DEFAULT_SIZE, image_kind, render_scene
 
         check_path_type(out)
+        kind = image_kind(out, "render")
+        check_render_budget(1 if kind == ".png" else frames, size or DEFAULT_SIZE, kind)
         sphere, times = self._mesh_and_times(mesh, frames)
         if Path(out).suffix.lower() == ".png":  # one picture: the largest compression
             times = times[:1] * 0.0 + self.t_max_compression_s
@@ -367,7 +375,17 @@ class BounceReport(Numbers):
             scene = cut_scene(self.result, self.case, times, self.mass_kg, self._text)
         else:
             scene = drop_scene(self.result, self.case, sphere, times, self.mass_kg, self._text)
-        return render_scene(out, scene, warp=warp, size=size or DEFAULT_SIZE, fps=fps)
+        size = size or DEFAULT_SIZE
+        return render_scene(out, scene, warp=warp, size=size, fps=fps, monitor=Watch())
+
+    @property
+    def _subject(self) -> str:
+        """What was dropped, for titles: the Table 1 pair, the lower ball's preset or
+        ``custom ball``."""
+        arguments = ((self.provenance or {}).get("call") or {}).get("arguments") or {}
+        if arguments.get("pair"):
+            return str(arguments["pair"])
+        return self.case.preset_name or "custom ball"
 
     @property
     def _physics(self) -> str:

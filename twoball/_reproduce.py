@@ -2,13 +2,14 @@
 
 from __future__ import annotations
 
+import math
 import os
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
 
-from twoball._common.budget import timed
+from twoball._common.budget import timed, verb_default
 from twoball._common.keywords import checked
 
 __all__ = ["Reproduction", "reproduce"]
@@ -88,7 +89,7 @@ def reproduce(
     out : path, optional
         Output directory (default ``./twoball-reproduction``); its parent must
         exist, and an existing one must be empty or an earlier reproduction.  It
-        is replaced only when everything is written.
+        is replaced as each part finishes (see Notes).
     only : str or sequence of str, optional
         A subset of the parts (``"table1,fig11"`` or a list); default all.
     workers : int or str, optional
@@ -99,6 +100,16 @@ def reproduce(
         ``update(done)`` (:meth:`twoball.Reporter.task`).
     command : str
         How the run is named in the report's header.
+
+    Notes
+    -----
+    As each part finishes, ``out`` is replaced by everything finished so far.
+    Stopped at a time limit given (``twoball.limits(max_time=...)``,
+    ``TWOBALL_MAX_TIME``; by default there is none) it raises
+    :class:`~twoball.NumericalError` and, by SIGINT/SIGTERM,
+    :class:`KeyboardInterrupt`, leaving every finished part in ``out`` with a
+    report (``reproduction.md``, ``reproduction.json``: ``missing``,
+    ``stopped``) naming the parts that are missing.
 
     Returns
     -------
@@ -131,6 +142,8 @@ def reproduce(
     check_output(out)  # fail before any work
     from twoball._common.watch import Watch
 
-    with Runner(workers, scheduler) as runner:
+    # no default deadline: the whole reproduction is legitimately long (2 min idle, over
+    # 10 min on a shared machine); each piece's estimate is still refused above the limit
+    with verb_default(math.inf), Runner(workers, scheduler) as runner:
         target, sections = run_reproduction(out, names, runner, progress, command, Watch())
     return Reproduction(target, sections)

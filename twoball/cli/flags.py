@@ -206,9 +206,7 @@ def cli_message(error: ParameterError, args: Namespace | None = None) -> str:
     if isinstance(error, BudgetError):  # "modes 100000 t_end 2 needs ...": every name a flag
         asked, needs, rest = text.partition(" needs ")
         asked = budget_flags(asked, args)
-        for name in ("max_memory", "max_time"):  # the advice names the limit's flag
-            rest = rest.replace(name, FLAGS[name])
-        return asked + needs + rest
+        return asked + needs + limit_flags(rest)  # the advice names the limit's flag
     name = str(error.name)
     valid = " ".join(str(error.valid).split())
     if valid and valid in text:  # the keywords the valid range names, as flags too
@@ -216,6 +214,17 @@ def cli_message(error: ParameterError, args: Namespace | None = None) -> str:
     if text.startswith(name):
         return flag_of(name, args) + text[len(name) :]
     return text
+
+
+def limit_flags(text: str) -> str:
+    """``text`` with the limits' parameter names as their flags (``max_time`` -> ``--max-time``).
+
+    For messages that reach the command line by another way than a raised error: a
+    sweep point's error, a report written by a stopped run.
+    """
+    import re
+
+    return re.sub(r"(?<![\w-])(max_time|max_memory)\b", lambda m: FLAGS[m.group(1)], text)
 
 
 def keywords_as_flags(text: str, args: Namespace | None = None) -> str:

@@ -257,10 +257,13 @@ def main(argv: Sequence[str] | None = None) -> int:
     exit status 2 (3 if the cause is not the user's path); see
     :mod:`twoball.cli.guard`.
     """
-    from twoball.cli.guard import guarded
+    from twoball.cli.guard import guarded, leave
 
     # the console script (no argv): this process is the run, its handlers last to the end
-    return guarded(_main, argv, process=argv is None)
+    status = guarded(_main, argv, process=argv is None)
+    if argv is None and status in (130, 143):  # interrupted: end within the second
+        leave(status)
+    return status
 
 
 def _main(argv: Sequence[str] | None = None) -> int:
@@ -292,9 +295,9 @@ def _main(argv: Sequence[str] | None = None) -> int:
 
         fail(cli_message(error, args))
     except DeadlineError as error:
-        from twoball.cli.flags import flag_of
+        from twoball.cli.flags import limit_flags
 
-        fail(" ".join(str(error).split()).replace("max_time", flag_of("max_time")), EXIT_NUMERICAL)
+        fail(limit_flags(" ".join(str(error).split())), EXIT_NUMERICAL)
     except NumericalError as error:
         fail(f"numerical trouble: {error}", EXIT_NUMERICAL)
     finally:  # main() called again in one process (tests, scripts) starts afresh

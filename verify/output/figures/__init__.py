@@ -124,7 +124,7 @@ def save_figure(
         Writing failed (full disk, ...); it names ``path``, and ``path`` is unchanged.
     """
     import matplotlib
-    from twoball.verify.output.figures.style import STYLE
+    from twoball.verify.output.figures.style import style_rc
 
     from twoball._common.staging import check_path_type, staged_file
 
@@ -132,7 +132,8 @@ def save_figure(
     kind = figure_format(out, flag)
     resolution = check_dpi(dpi, dpi_flag)
     metadata = {"Creator": "twoball"} if kind in ("pdf", "svg", "png", "eps", "ps") else None
-    with staged_file(out, flag) as scratch, matplotlib.rc_context(STYLE):
+    # the style's rcParams again: colours named "C0".."C5" resolve when drawn
+    with staged_file(out, flag) as scratch, matplotlib.rc_context(style_rc()):
         figure.savefig(scratch, dpi=resolution, format=kind, metadata=metadata)
     return out
 
