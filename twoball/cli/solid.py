@@ -265,7 +265,7 @@ def thick_ball(args: argparse.Namespace) -> Any:
     except ParameterError as error:  # the API's one ``cells``: across first, then along
         if error.name != "cells":
             raise
-        name = "wall_cells" if error.got == across else "elements"
+        name = "wall_cells" if repr(error.got) == repr(across) else "elements"  # nan too
         raise ParameterError(name, error.valid, error.got) from None
 
 
