@@ -48,7 +48,10 @@ def test_table1_and_icm_curves(tmp_path):
     }
 
 
-def test_failure_leaves_no_partial_output(tmp_path, monkeypatch):
+def test_failure_keeps_the_finished_parts_and_none_of_the_broken_one(tmp_path, monkeypatch):
+    """A part that fails leaves no file of its own; the parts finished before it stay, with
+    a report that names the missing part."""
+
     def broken(ctx):
         (ctx.directory / "half.png").write_bytes(b"x")
         raise RuntimeError("disk full")
@@ -56,4 +59,7 @@ def test_failure_leaves_no_partial_output(tmp_path, monkeypatch):
     monkeypatch.setitem(rep.PARTS, "fig10", broken)
     with pytest.raises(RuntimeError):
         rep.reproduce(tmp_path / "rep", ["table2", "fig10"])
-    assert list(tmp_path.iterdir()) == []
+    assert [p.name for p in tmp_path.iterdir()] == ["rep"]
+    assert not (tmp_path / "rep" / "half.png").exists()
+    report = (tmp_path / "rep" / "reproduction.md").read_text()
+    assert "Incomplete: 1 part(s) missing: fig10." in report
