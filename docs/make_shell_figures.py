@@ -24,13 +24,25 @@ TARGET = Path(__file__).resolve().parent / "_static" / "shell" / "causality.png"
 
 def main(target: Path = TARGET) -> Path:
     """Compute the four responses and save the two-panel figure to ``target``."""
-    import matplotlib
+    from twoball.verify.output.figures import save_figure
 
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
+    target.parent.mkdir(parents=True, exist_ok=True)
+    return save_figure(causality_figure(), target, dpi=110)
+
+
+def causality_figure():  # noqa: ANN201 -- a matplotlib Figure
+    """The two panels, in the package's figure style (:mod:`twoball.verify.output.figures`)."""
+    from twoball.verify.output.figures.style import styled
+
+    return styled(_draw)()
+
+
+def _draw():  # noqa: ANN202
     import numpy as np
     from twoball.modal.balls.membrane import LegendreBall
     from twoball.modal.balls.shell import WALLS, ShellBall
+    from twoball.verify.output.figures import new_figure
+    from twoball.verify.output.figures.style import DIMENSIONLESS, label, time_label
     from twoball.verify.studies.shell import responses, without_gas
 
     c = 320.0
@@ -40,35 +52,35 @@ def main(target: Path = TARGET) -> Path:
         ("shell, adiabatic gas, D = 0.13", ShellBall(), 0.13, "C0", "-"),
         ("shell, no gas, D = 0", without_gas(ShellBall()), 0.0, "C0", "--"),
     ]
-    figure, (top_axis, ratio_axis) = plt.subplots(2, 1, figsize=(7.0, 6.4), sharex=True)
-    for label, ball, damping, colour, style in runs:
+    figure = new_figure(7.0, 6.6)
+    top_axis, ratio_axis = figure.subplots(2, 1, sharex=True)
+    for name, ball, damping, colour, style in runs:
         t, top, centre = responses(ball, damping=damping)
         keep = t <= 0.012
         ms = t[keep] * 1e3
-        top_axis.plot(ms, top[keep] * 1e3, color=colour, ls=style, label=f"top, {label}")
+        top_axis.plot(ms, top[keep] * 1e3, color=colour, ls=style, label=f"top, {name}")
         if style == "-":
-            top_axis.plot(ms, centre[keep] * 1e3, color=colour, ls=":", label=f"centre, {label}")
+            top_axis.plot(ms, centre[keep] * 1e3, color=colour, ls=":", label=f"centre, {name}")
         ratio = np.where(centre == 0.0, 0.0, top / np.where(centre == 0.0, 1.0, centre))
-        ratio_axis.plot(ms, ratio[keep], color=colour, ls=style, label=label)
-    for axis in (top_axis, ratio_axis):
-        axis.axvline(arrival * 1e3, color="0.4", lw=0.8)
-        axis.axvline(0.5 * arrival * 1e3, color="0.7", lw=0.8, ls="--")
-        axis.axvline(math.pi / c * 1e3, color="0.4", lw=0.8, ls="-.")
-        axis.grid(alpha=0.3)
-    top_axis.set_ylabel("vertical displacement [mm]\n(from the free fall)")
-    top_axis.legend(fontsize=7, loc="lower left")
-    ratio_axis.set_ylim(-2.5, 1.5)
-    ratio_axis.set_ylabel("top / centre")
-    ratio_axis.set_xlabel(
-        "time after the first floor touch [ms]  (lines: 0.5 pi R/c_e, pi R/c_e, pi/c)"
+        ratio_axis.plot(ms, ratio[keep], color=colour, ls=style, label=name)
+    marks = (
+        (0.5 * arrival, {"color": "0.7", "ls": "--"}, r"$\pi R/(2 c_e)$"),
+        (arrival, {"color": "0.4", "ls": "-"}, r"$\pi R/c_e$"),
+        (math.pi / c, {"color": "0.4", "ls": "-."}, r"$\pi/c$"),
     )
-    ratio_axis.legend(fontsize=7, loc="lower right")
+    for axis in (top_axis, ratio_axis):
+        for when, style, name in marks:
+            axis.axvline(
+                when * 1e3, lw=0.8, zorder=0.5, **style, label=name if axis is ratio_axis else None
+            )
+    top_axis.set_ylabel(label("vertical displacement from the free fall", "mm"))
+    top_axis.legend(loc="upper left")
+    ratio_axis.set_ylim(-2.5, 1.5)
+    ratio_axis.set_ylabel(f"top / centre {DIMENSIONLESS}")
+    ratio_axis.set_xlabel(time_label("after the first floor touch"))
+    ratio_axis.legend(loc="lower right", ncols=2)
     top_axis.set_title("Basketball at 4.1 m/s: the top learns of the floor by a wave (shell)")
-    figure.tight_layout()
-    target.parent.mkdir(parents=True, exist_ok=True)
-    figure.savefig(target, dpi=110)
-    plt.close(figure)
-    return target
+    return figure
 
 
 if __name__ == "__main__":

@@ -19,6 +19,7 @@ from typing import TYPE_CHECKING, Any
 from twoball.fem_membrane.options import MeshOptions
 
 from twoball._common.errors import ParameterError
+from twoball._common.keywords import checked
 
 if TYPE_CHECKING:
     from twoball.modal.balls.description import ModalBall
@@ -32,6 +33,7 @@ DEFAULT_ELEMENTS = 96
 NODE_INTERVALS = 2 * DEFAULT_ELEMENTS
 
 
+@checked
 def drop_elements(order: int) -> int:
     """Default axisymmetric elements of the drop at ``order``: the node spacing pi / 192.
 
@@ -46,9 +48,14 @@ def drop_elements(order: int) -> int:
     >>> [twoball.drop_elements(p) for p in (1, 2, 3, 4)]
     [192, 96, 64, 48]
     """
+    from numbers import Integral
+
+    if isinstance(order, bool) or not isinstance(order, Integral) or not 1 <= order <= 4:
+        raise ParameterError("order", "an element order 1, 2, 3 or 4", order)
     return -(-NODE_INTERVALS // int(order))
 
 
+@checked
 @dataclass(frozen=True)
 class FEBall:
     """The case's membrane on finite elements: a lower ball for the drop and the body's contact.
@@ -60,7 +67,10 @@ class FEBall:
         spacing pi / 192; :func:`drop_elements` gives that spacing at every
         order), or any :class:`~twoball.MeshOptions` used as given (a sphere
         mesh serves the body on the paper's start, not the drop: the floor's
-        contact is axisymmetric).
+        contact is axisymmetric).  ``MeshOptions("axisym")`` without
+        ``elements`` is the lift-off's line, 400 elements: for the drop's
+        spacing at another order give ``elements=drop_elements(order)``, as
+        ``--backend fem --order P`` does.
 
     Examples
     --------

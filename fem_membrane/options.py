@@ -41,6 +41,7 @@ from twoball._common.choices import (
     SPHERE_KINDS,
 )
 from twoball._common.errors import ParameterError
+from twoball._common.keywords import checked
 
 #: Discrete sphere: the order-p interpolant through the nodes, or the sphere itself.
 DEFAULT_GEOMETRY = "isoparametric"
@@ -66,6 +67,7 @@ __all__ = [
 ]
 
 
+@checked
 @dataclass(frozen=True)
 class MeshOptions:
     """A finite-element mesh choice (dimensionless, unit sphere), validated when built.

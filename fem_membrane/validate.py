@@ -95,9 +95,11 @@ def check_mesh_source(source: object, name: str = "file") -> object:
 
 def check_pole(pole: object, name: str = "pole") -> tuple[float, float, float]:
     """A pole direction: three finite numbers, not all zero, or the text ``"X,Y,Z"``."""
+    from twoball._common.ranges import decimal
+
     try:
         if isinstance(pole, str):
-            values = tuple(float(part) for part in pole.split(","))
+            values = tuple(decimal(part.strip()) for part in pole.split(","))
         elif isinstance(pole, (bytes, dict)) or not hasattr(pole, "__iter__"):
             raise TypeError
         else:

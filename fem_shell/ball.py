@@ -22,6 +22,7 @@ from typing import TYPE_CHECKING, Any
 from twoball.modal.balls.shell import Wall, _check_wall, _wall_of, shell_summary
 
 from twoball._common.errors import ParameterError
+from twoball._common.keywords import checked
 
 if TYPE_CHECKING:
     from twoball.fem_shell.modes import ShellFEModes
@@ -98,6 +99,7 @@ def fe_shell_ball(
     )
 
 
+@checked
 @dataclass(frozen=True)
 class FEShellBall:
     """The thin spherical shell on finite elements of the meridian: a lower ball for the drop.

@@ -40,7 +40,8 @@ from typing import TYPE_CHECKING, Any
 import numpy as np
 from twoball.modal.balls.solid import SolidMaterial, check_material, material_of
 
-from twoball._common.errors import NumericalError, ParameterError, real_number
+from twoball._common.errors import NumericalError, ParameterError, check_labels, real_number
+from twoball._common.keywords import checked
 
 if TYPE_CHECKING:
     from skfem.mesh import MeshTri2
@@ -317,6 +318,7 @@ def _check_int(name: str, value: object, bounds: tuple[int, int]) -> int:
     return int(value)
 
 
+@checked
 @dataclass(frozen=True)
 class FESolidBall:
     """The elastic sphere on (r, z) P2 finite elements: a lower ball for the drop.
@@ -469,6 +471,7 @@ def _positive(name: str, value: object, high: float) -> float:
     return number
 
 
+@checked
 @dataclass(frozen=True)
 class ThickWall:
     """The thick wall of a hollow elastic ball (SI): E, nu, the thickness and the density.
@@ -492,6 +495,7 @@ class ThickWall:
     source: str = field(default="", compare=False)
 
     def __post_init__(self) -> None:
+        check_labels(self, "source")
         set_ = object.__setattr__
         set_(self, "youngs_modulus", _positive("youngs_modulus", self.youngs_modulus, 1e12))
         if (self.thickness is None) == (self.thickness_ratio is None):
@@ -555,6 +559,7 @@ THICK_WALLS: dict[str, ThickWall] = {
 }
 
 
+@checked
 @dataclass(frozen=True)
 class ThickBall:
     """A hollow elastic ball on the (r, z) half annulus in P2: the thick wall, with its gas.
@@ -594,6 +599,8 @@ class ThickBall:
         across = _check_int("cells", self.cells[0], (1, 16))
         along = _check_int("cells", self.cells[1], (8, 1024))
         object.__setattr__(self, "cells", (across, along))
+        if not isinstance(self.gas, bool):
+            raise ParameterError("gas", "True or False (the enclosed gas's stiffness)", self.gas)
 
     @property
     def label(self) -> str:

@@ -35,6 +35,7 @@ from twoball.modal.upper.laws import ContactLaw
 from twoball.modal.upper.options import BODY_KINDS, BallBody, LumpedBody
 
 from twoball._common.errors import ParameterError
+from twoball._common.keywords import checked
 
 __all__ = ["BODIES", "TENNIS_BALL_DAMPING", "BodyPreset", "preset_body"]
 
@@ -165,6 +166,7 @@ def _ball_body(preset: BodyPreset, lower: str) -> BallBody:
     )
 
 
+@checked(name="twoball.body_preset")
 def preset_body(pair: str, kind: str = "lumped", **changes: Any) -> Any:
     """The upper body of a Table 1 pair as ``kind`` (``rigid``, ``lumped`` or ``ball``).
 

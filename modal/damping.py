@@ -32,6 +32,7 @@ from dataclasses import dataclass
 from typing import Any
 
 from twoball._common.errors import ParameterError, real_number
+from twoball._common.keywords import checked
 
 __all__ = ["DAMPING_LAWS", "ModalRatio", "Rayleigh", "damping_law", "is_law", "with_damping"]
 
@@ -39,6 +40,7 @@ __all__ = ["DAMPING_LAWS", "ModalRatio", "Rayleigh", "damping_law", "is_law", "w
 RAYLEIGH_LOW = math.sqrt(2.0)
 
 
+@checked
 @dataclass(frozen=True)
 class ModalRatio:
     """The paper's modal damping: ratio ``ratio`` on every mode, eq. (3.14).
@@ -91,6 +93,7 @@ class ModalRatio:
         return {"law": self.name, "ratio": self.ratio}
 
 
+@checked
 @dataclass(frozen=True)
 class Rayleigh:
     """Rayleigh (Kelvin-Voigt) damping ``C = alpha M + beta K``: local and causal.

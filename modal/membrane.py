@@ -47,6 +47,7 @@ from typing import Any
 import numpy as np
 
 from twoball._common.errors import ParameterError
+from twoball._common.keywords import checked
 
 __all__ = ["MEMBRANES", "Membrane", "square_integral"]
 
@@ -75,6 +76,7 @@ def square_integral(phi_a: float) -> float:
         k += 1
 
 
+@checked
 @dataclass(frozen=True)
 class Membrane:
     """The membrane operator: ``paper`` (eq. (3.1)) or ``pressurised`` (``T = P R / 2``).

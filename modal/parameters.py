@@ -31,6 +31,7 @@ from twoball.modal.scalings import (
 from twoball.modal.stiffness import ATMOSPHERE, GAS_MODELS, Stiffness, stiffness_from_si
 
 from twoball._common.errors import ParameterError, bounded, real_number
+from twoball._common.keywords import checked
 
 
 def _number(name: str, value: object, valid: str) -> float:
@@ -57,6 +58,7 @@ def _same(a: float, b: float) -> bool:
     return math.isclose(a, b, rel_tol=_SAME, abs_tol=0.0)
 
 
+@checked
 @dataclass(frozen=True)
 class Case:
     """One impact of the lower ball, in SI units, with one rule for phi_a.
@@ -177,7 +179,7 @@ class Case:
 
     def _check_stiffness(self) -> None:
         bending = bounded("bending", self.bending, *BENDING_RANGE, "N m")
-        if self.gas not in GAS_MODELS:
+        if not isinstance(self.gas, str) or self.gas not in GAS_MODELS:
             raise ParameterError("gas", "one of " + ", ".join(GAS_MODELS), self.gas)
         if self.pressure is not None:
             object.__setattr__(
@@ -454,7 +456,32 @@ class Case:
             changes["v0_given"] = None
         if "wave_speed" in changes or "radius" in changes:  # c no longer P's and m's
             changes["pressure_sets_c"] = False
+        documented = self._documented_pressure(changes)
+        if documented is not None:
+            changes["pressure"] = documented
         return replace(self, **changes)
+
+    def _documented_pressure(self, changes: dict[str, Any]) -> float | None:
+        """The preset's own pressure when ``changes`` make a case without one stiff.
+
+        A preset without bending or gas keeps no pressure (it would act on
+        nothing, :attr:`pressure_note`), though it has one: the basketball's 77200 Pa
+        (Table 2, with m = 0.567 kg its c of eq. (3.8)).  Bending or a gas given to it
+        need the tension ``T = P R / 2`` (§4(b)): they take that pressure, as the
+        drop does, rather than asking for it.
+        """
+        if self.pressure is not None or self.preset_name not in MEASURED:
+            return None
+        own = MEASURED[self.preset_name]
+        radius = changes.get("radius", self.radius)
+        wave_speed = changes.get("wave_speed", self.wave_speed)
+        if radius != own.radius or wave_speed != own.wave_speed:
+            return None  # another ball: the preset's pressure is not its own
+        bending = changes.get("bending", self.bending)
+        gas = changes.get("gas", self.gas)
+        if not (bending or gas != "none"):
+            return None
+        return MEASURED[self.preset_name].pressure
 
     @classmethod
     def preset(cls, name: str = "basketball", **changes: Any) -> Case:

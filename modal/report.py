@@ -15,6 +15,7 @@ from twoball.modal.legendre import legendre_series
 from twoball.modal.liftoff import DEFAULT_T_END, Horizon, LiftoffResult, PoleMotion, find_liftoff
 from twoball.modal.parameters import Case
 
+from twoball._common.keywords import checked
 from twoball._common.monitor import Monitor
 
 FLOOR_TIME_ESTIMATE = (
@@ -23,6 +24,7 @@ FLOOR_TIME_ESTIMATE = (
 )
 
 
+@checked
 @dataclass(frozen=True)
 class LiftoffReport:
     """A lift-off result with its case, in SI units (seconds, m/s).

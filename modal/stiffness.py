@@ -209,7 +209,7 @@ def stiffness_from_si(
         raise ParameterError(
             "pressure",
             "given with bending or gas: it sets the tension T = P R / 2 (Case.from_pressure, "
-            "or a preset that has one: tennis, volleyball)",
+            "or a preset's own: Case.preset(name, bending=...))",
             None,
         )
     if not (math.isfinite(pressure) and pressure > 0):

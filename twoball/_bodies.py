@@ -11,10 +11,12 @@ from __future__ import annotations
 from typing import Any
 
 from twoball._common.errors import ParameterError
+from twoball._common.keywords import checked
 
 __all__ = ["floor_alone"]
 
 
+@checked
 def floor_alone(
     body: Any = None,
     *,

@@ -16,7 +16,9 @@ from dataclasses import dataclass, replace
 from pathlib import Path
 from typing import Any
 
-from twoball._common.errors import NumericalError, ParameterError
+from twoball._common.errors import ParameterError
+from twoball._common.keywords import checked
+from twoball._common.staging import check_path_type
 from twoball.modal.floor.bounce import CAVEATS, OVERLAP_NOTE
 from twoball.modal.floor.options import Drop
 from twoball.modal.floor.report import BounceReport as Numbers
@@ -31,6 +33,7 @@ __all__ = [
 ]
 
 
+@checked
 def bounce(
     case: Case | None = None,
     drop: Drop | None = None,
@@ -176,7 +179,7 @@ def check_field_targets(
     picture path (``.png``, ``.gif``, ``.mp4``) and the number of instants
     (default 40; 1 for a ``.vtu``).  Refuses a folder, a link, an existing
     side file twoball did not write, an unknown suffix, and ``frames`` without
-    a file.
+    a file; a picture whose drawing cannot fit the budget (time, memory).
     """
     from twoball._common.staging import check_file, check_path_type
     from twoball.verify.output.fields import check_frames
@@ -199,13 +202,18 @@ def check_field_targets(
             count = 1
     if render is not None:
         check_path_type(render, "render")
-        image_kind(render, "render")
+        kind = image_kind(render, "render")
         picture = check_file(render, "render")
+        from twoball._fields import check_render_budget
+        from twoball.verify.output.render import DEFAULT_SIZE
+
+        check_render_budget(1 if kind == ".png" else count, DEFAULT_SIZE, kind)  # its drawing
     if frames is not None and target is None and picture is None:
         raise ParameterError("frames", "given with export or render", frames)
     return target, picture, count
 
 
+@checked
 @dataclass(frozen=True)
 class BounceReport(Numbers):
     """One drop of the lower ball on the floor, in SI, with its files.
@@ -229,6 +237,7 @@ class BounceReport(Numbers):
     """
 
     # --- files ------------------------------------------------------------------------
+    @checked
     def plot(
         self, out: str | os.PathLike[str], *, dpi: float | None = None, measured: Any = None
     ) -> Path:
@@ -241,11 +250,12 @@ class BounceReport(Numbers):
         reads them): the rows at this drop's ``|v0|`` (and gap) drawn over it,
         v1 and v2 on the velocities, the lift-off time, phi_a on the contact angle.
         """
-        from twoball.verify.output.figures import save_figure
+        from twoball.verify.output.figures import figure_format, save_figure
         from twoball.verify.output.figures.bounce import drop_figure, whole_figure
 
+        figure_format(Path(check_path_type(out)), "out")  # before the figure is drawn
         self._require_history()
-        title = f"{self.backend}, {self._physics}"
+        title = f"{self._subject}; {self.backend}, {self._physics}"
         if self.has_body:
             icm = self.icm_solver
             lines = None if icm is None else (icm["v1_m_s"], icm["v2_m_s"])
@@ -260,10 +270,13 @@ class BounceReport(Numbers):
         return save_figure(figure, out, "plot", dpi)
 
     def _require_history(self) -> None:
+        """Refuse a light report (a sweep point): a usage error, not a numerical one."""
         if not self.result.has_history:
-            raise NumericalError(
-                "a light report keeps no history (a sweep point): run twoball.bounce for its "
-                "figure, fields and pictures"
+            raise ParameterError(
+                "report",
+                "one of twoball.bounce with its history for a figure, fields or pictures "
+                "(a sweep point keeps none: run twoball.bounce at its value)",
+                "a light report",
             )
 
     def _mesh_and_times(self, mesh: Any, frames: int) -> tuple[Any, Any]:
@@ -279,6 +292,7 @@ class BounceReport(Numbers):
         count = check_frames(frames)
         return sphere_mesh(spec.level, spec.order, None), drop_frames(self.result, count, self.case)
 
+    @checked
     def export(
         self,
         out: str | os.PathLike[str],
@@ -307,6 +321,7 @@ class BounceReport(Numbers):
         from twoball.verify.output.drop_fields import drop_series
         from twoball.verify.output.series import write_series
 
+        check_path_type(out)
         sphere, times = self._mesh_and_times(mesh, frames)
         if _view(view, mesh) == "cut":
             from twoball.verify.output.solid_cut import cut_series
@@ -322,6 +337,7 @@ class BounceReport(Numbers):
             )
         return write_series(out, series, format)
 
+    @checked
     def render(
         self,
         out: str | os.PathLike[str],
@@ -342,9 +358,14 @@ class BounceReport(Numbers):
         a ball with a volume, coloured by the displacement along the radius (the
         compression wave inside).
         """
+        from twoball._common.watch import Watch
+        from twoball._fields import check_render_budget
         from twoball.verify.output.drop_fields import drop_scene
-        from twoball.verify.output.render import DEFAULT_SIZE, render_scene
+        from twoball.verify.output.render import DEFAULT_SIZE, image_kind, render_scene
 
+        check_path_type(out)
+        kind = image_kind(out, "render")
+        check_render_budget(1 if kind == ".png" else frames, size or DEFAULT_SIZE, kind)
         sphere, times = self._mesh_and_times(mesh, frames)
         if Path(out).suffix.lower() == ".png":  # one picture: the largest compression
             times = times[:1] * 0.0 + self.t_max_compression_s
@@ -354,7 +375,17 @@ class BounceReport(Numbers):
             scene = cut_scene(self.result, self.case, times, self.mass_kg, self._text)
         else:
             scene = drop_scene(self.result, self.case, sphere, times, self.mass_kg, self._text)
-        return render_scene(out, scene, warp=warp, size=size or DEFAULT_SIZE, fps=fps)
+        size = size or DEFAULT_SIZE
+        return render_scene(out, scene, warp=warp, size=size, fps=fps, monitor=Watch())
+
+    @property
+    def _subject(self) -> str:
+        """What was dropped, for titles: the Table 1 pair, the lower ball's preset or
+        ``custom ball``."""
+        arguments = ((self.provenance or {}).get("call") or {}).get("arguments") or {}
+        if arguments.get("pair"):
+            return str(arguments["pair"])
+        return self.case.preset_name or "custom ball"
 
     @property
     def _physics(self) -> str:

@@ -17,13 +17,14 @@ from typing import Any
 from twoball._common.budget import timed
 from twoball._common.choices import DEFAULT_ANIMATION_FRAMES
 from twoball._common.errors import ParameterError
+from twoball._common.keywords import checked
 from twoball._common.progress import Step, check_progress, silent
 from twoball._common.provenance import block
 from twoball._common.staging import check_path_type
 from twoball.modal.parameters import Case
 from twoball.verify.output.results import ExportResult, RenderResult
 
-__all__ = ["export", "render"]
+__all__ = ["check_render_budget", "export", "render"]
 
 DEFAULT_FPS = 20.0
 
@@ -96,6 +97,7 @@ def _frames(frames: Any) -> tuple[int | None, Sequence[float] | None, str]:
     return frames, None, name
 
 
+@checked
 @timed
 def export(
     out: str | os.PathLike[str],
@@ -264,6 +266,7 @@ def _shown(frames: int | None, times: Any) -> Any:
     return frames if times is None else [float(t) for t in times]
 
 
+@checked
 @timed
 def render(
     out: str | os.PathLike[str],
@@ -362,9 +365,11 @@ def render(
     if times is not None:
         times = check_times(window_s(case, t_end), times, name)
     field = field_mesh(given.mesh, cells=True)  # reads a file
+    number = 1
     if kind != ".png":
         number = len(times) if times is not None else count or DEFAULT_ANIMATION_FRAMES
         check_frame_budget(case, number, "frames", field)
+    check_render_budget(number, size, kind)
     say = progress or silent
     model = ball_model(
         case,
@@ -384,7 +389,9 @@ def render(
     scene = (ball_scene if given.body is None else contact_scene)(model, times, backend)
     say(f"drawing {len(times)} frame(s) into {target}")
     drawn = None if len(times) < 2 else lambda k: say(f"frame {k}/{len(times)} into {target}")
-    render_scene(target, scene, warp=view.warp, size=size, fps=fps, progress=drawn)
+    from twoball._common.watch import Watch
+
+    render_scene(target, scene, warp=view.warp, size=size, fps=fps, progress=drawn, monitor=Watch())
     shown = round_size(size) if kind == ".mp4" else size
     arguments = {"out": out, "backend": backend, "frames": _shown(count, times)}
     arguments |= {"view": view.as_dict()}
@@ -399,6 +406,20 @@ def render(
         provenance=block(case, "twoball.render", {**arguments, **given.as_dict()})
         | mesh_block(field),
     )
+
+
+def check_render_budget(frames: int, size: Any, kind: str) -> None:
+    """Refuse, before any work, drawing ``frames`` of ``size`` that cannot fit the budget.
+
+    The drawing's time (VTK, the GIF's encoding), the frames a GIF keeps and the
+    renderer's address space (:func:`twoball.verify.output.render.render_estimate`).
+    """
+    from twoball._common.budget import check
+    from twoball.verify.output.render import check_size, render_estimate
+
+    width, height = check_size(size)
+    asked = f"size {width}x{height}" if kind == ".png" else f"frames {frames} size {width}x{height}"
+    check(asked, render_estimate(frames, (width, height), kind))
 
 
 def mesh_block(field: Any) -> dict[str, object]:

@@ -11,36 +11,19 @@ docs/fit.rst explains the columns and the statistics.
 
 from __future__ import annotations
 
-import functools
-import inspect
 import os
 from collections.abc import Callable, Mapping, Sequence
-from typing import Any, TypeVar
+from typing import Any
 
 from twoball._common.budget import timed
-from twoball._common.errors import ParameterError, UnknownKeywordError
+from twoball._common.errors import ParameterError
+from twoball._common.keywords import checked
 
 __all__ = ["DEFAULT_FIT_MODES", "fit", "overlay_notes", "read_measured"]
 
 #: Legendre degree of the whole bounce's ball in a fit (each row runs many times;
 #: ``twoball.bounce`` takes 192): a coarse ball keeps a fit to minutes.
 DEFAULT_FIT_MODES = 32
-
-_F = TypeVar("_F", bound=Callable[..., Any])
-
-
-def _keywords(function: _F) -> _F:
-    """Refuse an unknown keyword as a :class:`~twoball.ParameterError` naming it."""
-    signature = inspect.signature(function)
-
-    @functools.wraps(function)
-    def wrapper(*args: Any, **kwargs: Any) -> Any:
-        for key in kwargs:
-            if key not in signature.parameters:
-                raise UnknownKeywordError(key, f"twoball.{function.__name__}")
-        return function(*args, **kwargs)
-
-    return wrapper  # type: ignore[return-value]
 
 
 def read_measured(data: Any, name: str = "data") -> Any:
@@ -64,7 +47,7 @@ def overlay_notes(result: Any, measured: Any) -> list[str]:
     return list(overlay_for(result, read_measured(measured, "measured")).notes)
 
 
-@_keywords
+@checked
 @timed
 def fit(
     data: str | os.PathLike[str] | Mapping[str, Sequence[float]],
@@ -191,6 +174,8 @@ def fit(
     limits = check_bounds(names, bounds)
     check_tolerance(tolerance, model)
     check_bootstrap(bootstrap)
+    if seed is not None and (isinstance(seed, bool) or not isinstance(seed, int) or seed < 0):
+        raise ParameterError("seed", "an integer >= 0 or None (the bootstrap's)", seed)
     if model == "closed":
         for name, value in (("pair", pair), ("body", body), ("drop", drop)):
             if value is not None:

@@ -17,6 +17,7 @@ from typing import Any
 
 from twoball._common.budget import timed
 from twoball._common.errors import ParameterError
+from twoball._common.keywords import checked
 from twoball._common.progress import Step, check_progress, silent
 from twoball.modal.parameters import Case
 from twoball.modal.report import LiftoffReport
@@ -24,6 +25,7 @@ from twoball.modal.report import LiftoffReport
 __all__ = ["liftoff"]
 
 
+@checked
 @timed
 def liftoff(
     case: Case | None = None,

@@ -13,6 +13,7 @@ from typing import Any
 
 from twoball._common.budget import timed
 from twoball._common.errors import ParameterError
+from twoball._common.keywords import checked
 from twoball._common.progress import Step, check_progress, silent
 from twoball._common.provenance import block
 from twoball._common.staging import check_path_type
@@ -23,6 +24,7 @@ from twoball.verify.output.results import PlotResult
 __all__ = ["check_figure_path", "plot", "save_report_figure"]
 
 
+@checked
 @timed
 def plot(
     kind: str,

@@ -2,17 +2,20 @@
 
 from __future__ import annotations
 
+import math
 import os
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
 
-from twoball._common.budget import timed
+from twoball._common.budget import timed, verb_default
+from twoball._common.keywords import checked
 
 __all__ = ["Reproduction", "reproduce"]
 
 
+@checked
 @dataclass(frozen=True)
 class Reproduction:
     """What :func:`reproduce` wrote: the directory and one section per part.
@@ -69,6 +72,7 @@ class Reproduction:
         }
 
 
+@checked
 @timed
 def reproduce(
     out: str | os.PathLike[str] | None = None,
@@ -85,7 +89,7 @@ def reproduce(
     out : path, optional
         Output directory (default ``./twoball-reproduction``); its parent must
         exist, and an existing one must be empty or an earlier reproduction.  It
-        is replaced only when everything is written.
+        is replaced as each part finishes (see Notes).
     only : str or sequence of str, optional
         A subset of the parts (``"table1,fig11"`` or a list); default all.
     workers : int or str, optional
@@ -96,6 +100,16 @@ def reproduce(
         ``update(done)`` (:meth:`twoball.Reporter.task`).
     command : str
         How the run is named in the report's header.
+
+    Notes
+    -----
+    As each part finishes, ``out`` is replaced by everything finished so far.
+    Stopped at a time limit given (``twoball.limits(max_time=...)``,
+    ``TWOBALL_MAX_TIME``; by default there is none) it raises
+    :class:`~twoball.NumericalError` and, by SIGINT/SIGTERM,
+    :class:`KeyboardInterrupt`, leaving every finished part in ``out`` with a
+    report (``reproduction.md``, ``reproduction.json``: ``missing``,
+    ``stopped``) naming the parts that are missing.
 
     Returns
     -------
@@ -117,15 +131,19 @@ def reproduce(
 
     check_progress(progress)
     workers, scheduler = where("twoball.reproduce", workers)
-    if only is not None and not isinstance(only, str):
-        only = ",".join(str(part) for part in only)
     names = parse_only(only)
+    if not isinstance(command, str):
+        from twoball._common.errors import ParameterError
+
+        raise ParameterError("command", "a str (the command the report names)", command)
     if not scheduler:
         workers = check_workers(workers)
     out = DEFAULT_OUT if out is None else out
     check_output(out)  # fail before any work
     from twoball._common.watch import Watch
 
-    with Runner(workers, scheduler) as runner:
+    # no default deadline: the whole reproduction is legitimately long (2 min idle, over
+    # 10 min on a shared machine); each piece's estimate is still refused above the limit
+    with verb_default(math.inf), Runner(workers, scheduler) as runner:
         target, sections = run_reproduction(out, names, runner, progress, command, Watch())
     return Reproduction(target, sections)

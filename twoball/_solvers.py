@@ -29,6 +29,7 @@ from typing import Any
 
 from twoball._common.choices import FILTER_KINDS, HORIZONS, ROUTES
 from twoball._common.errors import ParameterError, real_number
+from twoball._common.keywords import checked
 
 __all__ = ["SOLVERS", "ClosedForm", "GeneralizedAlpha", "MoreauJean", "Superposition"]
 
@@ -79,6 +80,7 @@ class _Solver:
         return out
 
 
+@checked
 @dataclass(frozen=True)
 class ClosedForm(_Solver):
     """The closed-form Legendre series of the lift-off, eqs. (3.12)-(3.16), on the case's N modes.
@@ -118,6 +120,7 @@ class ClosedForm(_Solver):
         self._check()
 
 
+@checked
 @dataclass(frozen=True)
 class Superposition(_Solver):
     """Modal superposition on finite elements, eqs. (3.14)-(3.16), for the lift-off.
@@ -157,6 +160,7 @@ class Superposition(_Solver):
         self._check()
 
 
+@checked
 @dataclass(frozen=True)
 class GeneralizedAlpha(_Solver):
     """Generalized-alpha time stepping on finite elements (Chung & Hulbert), for the lift-off.
@@ -199,6 +203,7 @@ class GeneralizedAlpha(_Solver):
         self._check()
 
 
+@checked
 @dataclass(frozen=True)
 class MoreauJean(_Solver):
     """Nonsmooth time stepping with unilateral contacts (Moreau-Jean, theta = 1/2), on a ball.

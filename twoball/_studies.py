@@ -12,6 +12,7 @@ from typing import TYPE_CHECKING, Any
 
 from twoball._common.budget import timed
 from twoball._common.errors import ParameterError
+from twoball._common.keywords import checked
 from twoball._common.progress import Step, check_progress, silent
 from twoball.modal.parameters import Case
 
@@ -43,6 +44,7 @@ def parse_levels(text: str, mesh: str, study: str = "h") -> tuple[int, ...]:
     return tuple(int(v) for v in levels)
 
 
+@checked
 @timed
 def converge(
     case: Case | None = None,
@@ -186,6 +188,7 @@ def converge(
     return result
 
 
+@checked
 @timed
 def check(
     case: Case | None = None,

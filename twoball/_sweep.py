@@ -15,11 +15,14 @@ from typing import Any
 
 from twoball._common.budget import BudgetError, timed
 from twoball._common.errors import ParameterError
+from twoball._common.keywords import checked
+from twoball._common.ranges import real
 from twoball.modal.parameters import Case
 
 __all__ = ["SweepResult", "sweep"]
 
 
+@checked
 @dataclass(frozen=True)
 class SweepResult:
     """Lift-off over a grid of cases (row-major: the first parameter varies slowest).
@@ -57,6 +60,7 @@ class SweepResult:
     #: the points' own warnings that repeat the swept values' slips (said once, in warnings)
     point_slips: frozenset[str] = field(default=frozenset(), compare=False, repr=False)
 
+    @checked
     def plot(self, out: str | os.PathLike[str], *, measured: Any = None) -> Path:
         r"""Write the figure of the sweep: v_l / \|v0\| and t_l against the parameter, or heat maps.
 
@@ -87,6 +91,7 @@ class SweepResult:
         draw_overlay(figure, overlay_for(self, data))
         return save_figure(figure, target, "plot", dpi=REPORT_DPI)
 
+    @checked
     def to_csv(self, path: str | os.PathLike[str]) -> Path:
         """Write the table as CSV: one row per point, SI columns with the unit in the name.
 
@@ -165,6 +170,7 @@ def where(verb: str, workers: Any) -> tuple[Any, str | None]:
     return workers, None
 
 
+@checked
 @timed
 def sweep(
     values: Mapping[str, Sequence[float]],
@@ -318,8 +324,8 @@ def sweep(
         valid = f"a non-empty list of finite numbers for {name}"
         if isinstance(items, (str, bytes)):
             raise ParameterError("values", valid, items)
-        try:
-            array = np.atleast_1d(np.asarray(items, dtype=float))
+        try:  # numbers only: a string ("0_01" is 1.0 to float) or a bool is refused
+            array = np.array([real(v) for v in np.atleast_1d(np.asarray(items, dtype=object))])
         except (TypeError, ValueError):
             raise ParameterError("values", valid, items) from None
         if array.ndim != 1 or array.size < 1 or not np.all(np.isfinite(array)):

@@ -13,6 +13,7 @@ from typing import Any
 
 from twoball._common.budget import timed
 from twoball._common.errors import ParameterError
+from twoball._common.keywords import checked
 from twoball._common.progress import Step, check_progress, silent
 from twoball._common.watch import Watch
 from twoball.fem_membrane.options import MeshOptions
@@ -20,6 +21,7 @@ from twoball.fem_membrane.options import MeshOptions
 __all__ = ["eigen", "shell_eigen", "solid_eigen"]
 
 
+@checked(name="twoball.fem.eigen")
 @timed
 def eigen(
     mesh: Any = None,
@@ -105,6 +107,7 @@ def eigen(
 SHELL_DEGREES = 10
 
 
+@checked(name="twoball.fem.shell_eigen")
 def shell_eigen(
     *,
     poisson: float = 0.5,
@@ -116,7 +119,7 @@ def shell_eigen(
     backend: str = "legendre",
     count: int = SHELL_DEGREES,
     elements: int | None = None,
-    order: int = 2,
+    order: int | None = None,
     progress: Step | None = None,
 ) -> list[dict[str, Any]]:
     """The thin shell's spectrum, degrees 0..count, both branches, beside the closed form.
@@ -143,7 +146,8 @@ def shell_eigen(
     count : int
         Highest degree listed, >= 1 (``2 count + 1`` rows).
     elements, order : int
-        With ``backend="fem"``: meridian elements (default 64) and v's Lagrange order.
+        With ``backend="fem"``: meridian elements (default 64) and v's Lagrange order
+        (default 2); left out with the closed form, which has no mesh.
     progress : callable, optional
         Told what is solved.
 
@@ -167,16 +171,24 @@ def shell_eigen(
     import numpy as np
 
     from twoball.modal.shell.modes import shell_modes
-    from twoball.modal.shell.parameters import ShellParameters
 
     check_progress(progress)
     if isinstance(count, bool) or not isinstance(count, Integral) or not 1 <= count <= 400:
         raise ParameterError("count", "an integer in [1, 400] (the highest degree)", count)
     if backend not in ("legendre", "fem"):
         raise ParameterError("backend", "one of legendre, fem", backend)
+    if backend == "legendre":
+        for name, value in (("elements", elements), ("order", order)):
+            if value is not None:
+                valid = "left out with backend legendre (the closed form has no mesh)"
+                raise ParameterError(name, valid, value)
     time_unit = None
     if case is not None:
         from twoball.modal.balls.shell import Wall, _wall_of
+        from twoball.modal.parameters import Case
+
+        if not isinstance(case, Case):
+            raise ParameterError("case", "a twoball.Case or None", type(case).__name__)
 
         given = {"thickness_ratio": thickness_ratio, "prestress_ratio": prestress_ratio}
         for name, value in given.items():
@@ -192,22 +204,14 @@ def shell_eigen(
     else:
         if wall is not None:
             raise ParameterError("wall", "given with a case (the physical inputs)", wall)
-        from twoball._common.errors import real_number
-
-        p = real_number("prestress_ratio", prestress_ratio, "a number >= 0")
-        if isinstance(gas, str):
-            raise ParameterError("gas", "the dimensionless g >= 0 without a case", gas)
-        parameters = ShellParameters.from_ratios(
-            poisson, thickness_ratio, None if p == 0.0 else 1.0 / p, gas=gas or 0.0
-        )
-        if p < 0.0:
-            raise ParameterError("prestress_ratio", "a number >= 0", prestress_ratio)
+        parameters = _shell_ratios(poisson, thickness_ratio, prestress_ratio, gas)
     exact = shell_modes(parameters, count)
     values = np.array(exact.omega, dtype=float)
     if backend == "fem":
         from twoball.fem_shell.ball import DEFAULT_SHELL_ELEMENTS, FEShellBall
         from twoball.fem_shell.modes import fem_shell_modes
 
+        order = 2 if order is None else order
         mesh = FEShellBall(elements=elements, order=order)  # validates elements and order
         e = DEFAULT_SHELL_ELEMENTS if elements is None else mesh.mesh_elements
         (progress or silent)(f"shell eigenpairs on {e} elements, v P{order}")
@@ -250,6 +254,37 @@ def shell_eigen(
     return rows
 
 
+def _shell_ratios(poisson: Any, thickness_ratio: Any, prestress_ratio: Any, gas: Any) -> Any:
+    """The dimensionless shell of :func:`shell_eigen`, each ratio refused by its own name.
+
+    h / R in [0, 0.5] (:data:`~twoball.modal.balls.shell.MAX_THICKNESS_RATIO`, as
+    :class:`~twoball.Wall`); p = N0 / C >= 0 with the breathing mode stable,
+    ``Omega_0^2 = 2 (1 + nu) - 2 p + g > 0`` (the n = 0 row of the shell's spectrum).
+    """
+    from twoball._common.errors import bounded, real_number
+    from twoball.modal.balls.shell import MAX_THICKNESS_RATIO
+    from twoball.modal.shell.parameters import ShellParameters
+
+    ratio = bounded("thickness_ratio", thickness_ratio, 0.0, MAX_THICKNESS_RATIO)
+    p = real_number("prestress_ratio", prestress_ratio, "a number >= 0")
+    if p < 0.0:
+        raise ParameterError("prestress_ratio", "a number >= 0", prestress_ratio)
+    if isinstance(gas, str):
+        raise ParameterError("gas", "the dimensionless g >= 0 without a case", gas)
+    shell = ShellParameters.from_ratios(poisson, ratio, None, gas=gas or 0.0)
+    limit = 1.0 + shell.poisson + 0.5 * shell.gas  # Omega_0^2 > 0
+    if not p < limit:
+        valid = (
+            f"a number in [0, {limit:g}) at nu = {shell.poisson:g}, g = {shell.gas:g}: the "
+            "breathing mode stable, 2 (1 + nu) - 2 p + g > 0"
+        )
+        raise ParameterError("prestress_ratio", valid, prestress_ratio)
+    return ShellParameters.from_ratios(
+        poisson, ratio, None if p == 0.0 else 1.0 / p, gas=gas or 0.0
+    )
+
+
+@checked(name="twoball.fem.solid_eigen")
 @timed
 def solid_eigen(
     poisson: float,

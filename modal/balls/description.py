@@ -38,10 +38,12 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from twoball._common.errors import NumericalError, ParameterError
+from twoball._common.keywords import checked
 
 __all__ = ["ModalBall"]
 
 
+@checked
 @dataclass(frozen=True, eq=False)
 class ModalBall:
     """A ball in modal coordinates with the points where it may touch the floor.

@@ -41,6 +41,7 @@ from twoball.modal.damping import ModalRatio, Rayleigh
 from twoball.modal.stiffness import Stiffness
 
 from twoball._common.errors import ParameterError
+from twoball._common.keywords import checked
 
 if TYPE_CHECKING:
     from twoball.modal.parameters import Case
@@ -223,6 +224,7 @@ def legendre_ball(
     )
 
 
+@checked
 @dataclass(frozen=True)
 class LegendreBall:
     """The case's membrane on its Legendre modes: a lower ball for the drop and the body's contact.

@@ -36,7 +36,8 @@ from typing import TYPE_CHECKING, Any
 import numpy as np
 from twoball.modal.balls.description import ModalBall
 
-from twoball._common.errors import ParameterError, real_number
+from twoball._common.errors import ParameterError, check_labels, real_number
+from twoball._common.keywords import checked
 
 if TYPE_CHECKING:
     from twoball.modal.parameters import Case
@@ -78,6 +79,7 @@ def _in(name: str, value: object, low: float, high: float, *, low_open: bool = T
     return number
 
 
+@checked
 @dataclass(frozen=True)
 class Wall:
     """The shell's wall: SI (E, h, nu) or dimensionless (C / N0, h / R, nu).
@@ -128,6 +130,7 @@ class Wall:
     source: str = field(default="", compare=False)
 
     def __post_init__(self) -> None:
+        check_labels(self, "source")
         set_ = object.__setattr__
         set_(self, "poisson", _in("poisson", self.poisson, 0.0, 0.5))
         si = self.youngs_modulus is not None or self.thickness is not None
@@ -472,6 +475,7 @@ def shell_ball(parameters: ShellParameters, modes: int, law: Any, label: str = "
     )
 
 
+@checked
 @dataclass(frozen=True)
 class ShellBall:
     """The thin spherical shell on its closed-form modes: a lower ball for the drop.

@@ -54,7 +54,8 @@ from typing import TYPE_CHECKING, Any
 import numpy as np
 from twoball.modal.presets import SUPERBALL_MATERIAL, SUPERBALL_RADIUS
 
-from twoball._common.errors import NumericalError, ParameterError, real_number
+from twoball._common.errors import NumericalError, ParameterError, check_labels, real_number
+from twoball._common.keywords import checked
 
 if TYPE_CHECKING:
     from twoball.modal.balls.description import ModalBall
@@ -102,6 +103,7 @@ def _in(name: str, value: object, low: float, high: float, *, high_open: bool = 
     return number
 
 
+@checked
 @dataclass(frozen=True)
 class SolidMaterial:
     """A homogeneous isotropic linearly elastic material (SI).
@@ -135,6 +137,7 @@ class SolidMaterial:
     source: str = field(default="", compare=False)
 
     def __post_init__(self) -> None:
+        check_labels(self, "source")
         set_ = object.__setattr__
         set_(self, "density", _in("density", self.density, 0.0, 1e5))
         set_(self, "youngs_modulus", _in("youngs_modulus", self.youngs_modulus, 0.0, 1e12))
@@ -807,6 +810,7 @@ def _check_int(name: str, value: object, bounds: tuple[int, int]) -> int | None:
     return int(value)
 
 
+@checked
 @dataclass(frozen=True)
 class SolidBall:
     """The homogeneous elastic sphere on Lamb's modes (closed form): a lower ball for the drop.

@@ -8,6 +8,7 @@ from typing import Any
 
 from twoball._common.choices import ENERGY_OPTIONS, MAX_MASS_RATIO
 from twoball._common.errors import ParameterError, real_number
+from twoball._common.keywords import checked
 
 __all__ = ["ENERGY_OPTIONS", "MAX_MASS_RATIO", "Body"]
 
@@ -17,6 +18,7 @@ __all__ = ["ENERGY_OPTIONS", "MAX_MASS_RATIO", "Body"]
 DEFAULT_RADIUS_FRACTION = 0.1
 
 
+@checked
 @dataclass(frozen=True)
 class Body:
     """A rigid upper body of finite mass in unilateral contact with the ball (SI).

@@ -50,6 +50,7 @@ from twoball.modal.report import t_end_dimensionless
 from twoball.modal.series import ModalSeries
 
 from twoball._common.errors import ParameterError
+from twoball._common.keywords import checked
 from twoball._common.monitor import Monitor
 
 CONTACT_REFERENCE_MIN_MODES = 60  # twice the paper's N = 30
@@ -87,6 +88,7 @@ def membrane_case(case: Case, mass_ratio: float, energy: str) -> Case:
     return case.derive(v0=case.v0 * math.sqrt(1.0 + mass_ratio), phi_a=FROM_V0)
 
 
+@checked
 @dataclass(frozen=True)
 class ContactReport:
     """Finite-mass lift-off of the upper body, in SI (seconds, m/s, N s).

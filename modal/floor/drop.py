@@ -220,9 +220,11 @@ class DropResult:
 
     def _history(self) -> Trajectory:
         if not self.has_history:
-            raise NumericalError(
-                "a light drop result keeps no history (a sweep point): run it alone for "
-                "its forces, figure and fields"
+            raise ParameterError(
+                "result",
+                "one with its history for its forces, figure and fields (a sweep point "
+                "keeps none: run it alone)",
+                "a light drop result",
             )
         return self.trajectory
 

@@ -11,6 +11,7 @@ from typing import Any
 
 from twoball._common.choices import GAS_MODELS as GAS_LAWS
 from twoball._common.errors import ParameterError, real_number
+from twoball._common.keywords import checked
 
 __all__ = ["GAS_LAWS", "Drop"]
 #: Largest drop height H [m] (as ``twoball icm`` takes, :data:`twoball.modal.icm.inputs.UPPER`).
@@ -19,6 +20,7 @@ DROP_HEIGHT_MAX = 1e6
 GAP_MAX = 10.0
 
 
+@checked
 @dataclass(frozen=True)
 class Drop:
     """One drop of the lower ball on a rigid floor, validated when built (SI).

@@ -23,7 +23,10 @@ from twoball.modal.icm.inputs import (
 )
 from twoball.modal.scalings import STANDARD_GRAVITY
 
+from twoball._common.keywords import checked
 
+
+@checked
 @dataclass(frozen=True)
 class ICMResult:
     """Outcome of the independent collision model for one drop (§2), SI units.
@@ -96,6 +99,7 @@ class ICMResult:
         }
 
 
+@checked
 def icm(
     mu: float,
     e2: float,

@@ -12,6 +12,7 @@ from dataclasses import dataclass
 from twoball.modal.icm.limits import touching_ratios
 
 from twoball._common.errors import ParameterError
+from twoball._common.keywords import checked
 
 #: Significant figures of the ICM columns in Table 1.
 TABLE1_DIGITS = 2
@@ -124,6 +125,7 @@ class Table1Check:
         return self.v2 - self.row.icm_v2
 
 
+@checked(name="twoball.table1")
 def table1_check(rows: tuple[Table1Row, ...] = TABLE1) -> tuple[Table1Check, ...]:
     """Recompute the ICM columns of Table 1 from mu, e2, e12 via eq. (2.6).
 

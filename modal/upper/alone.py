@@ -30,10 +30,12 @@ from twoball.modal.nonsmooth.compliant import CompliantMoreauJean, CompliantRow
 from twoball.modal.upper.options import BallBody, LumpedBody
 
 from twoball._common.errors import NumericalError, ParameterError
+from twoball._common.keywords import checked
 
 __all__ = ["AloneResult", "ball_alone", "lumped_alone"]
 
 
+@checked
 @dataclass(frozen=True)
 class AloneResult:
     """A body dropped alone on a rigid floor (SI).

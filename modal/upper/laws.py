@@ -50,6 +50,7 @@ from typing import Any
 from twoball.modal.nonsmooth.compliant import PowerLaw
 
 from twoball._common.errors import ParameterError, bounded
+from twoball._common.keywords import checked
 
 __all__ = ["LAWS", "ContactLaw"]
 
@@ -61,6 +62,7 @@ LAWS: dict[str, tuple[str, ...]] = {
 }
 
 
+@checked
 @dataclass(frozen=True)
 class ContactLaw:
     """A body's own contact law against a rigid surface (SI; module documentation).
@@ -100,7 +102,7 @@ class ContactLaw:
     thickness: float | None = None
 
     def __post_init__(self) -> None:
-        if self.law not in LAWS:
+        if not isinstance(self.law, str) or self.law not in LAWS:
             raise ParameterError("law", "one of " + ", ".join(LAWS), self.law)
         bounded("radius", self.radius, 0.0, 10.0, "m", low_open=True)
         needed = LAWS[self.law]

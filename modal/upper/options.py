@@ -28,7 +28,8 @@ from typing import Any
 
 from twoball.modal.upper.laws import ContactLaw
 
-from twoball._common.errors import ParameterError, bounded
+from twoball._common.errors import ParameterError, bounded, check_labels
+from twoball._common.keywords import checked
 
 __all__ = ["BODY_KINDS", "BallBody", "LumpedBody", "body_kind"]
 
@@ -47,6 +48,7 @@ def body_kind(body: object) -> str:
     return str(getattr(body, "kind", "rigid"))
 
 
+@checked
 @dataclass(frozen=True)
 class LumpedBody:
     """An elastic upper body lumped to a point mass with its own contact law (SI).
@@ -85,6 +87,7 @@ class LumpedBody:
     kind = "lumped"
 
     def __post_init__(self) -> None:
+        check_labels(self, "name", "source")
         object.__setattr__(
             self, "mass_ratio", bounded("mass_ratio", self.mass_ratio, 0.0, 100.0, low_open=True)
         )
@@ -112,6 +115,7 @@ class LumpedBody:
         }
 
 
+@checked
 @dataclass(frozen=True)
 class BallBody:
     """A second modal ball as the upper body (SI); its mass is its own ball's.
@@ -155,6 +159,7 @@ class BallBody:
     kind = "ball"
 
     def __post_init__(self) -> None:
+        check_labels(self, "name", "source")
         from twoball.modal.balls.membrane import LegendreBall
         from twoball.modal.balls.protocol import check_ball
         from twoball.modal.damping import ModalRatio, Rayleigh

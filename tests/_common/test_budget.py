@@ -9,6 +9,7 @@ with its one-line message, i.e. it happened before the allocation.
 from __future__ import annotations
 
 import json
+import math
 import os
 import subprocess
 import sys
@@ -25,18 +26,22 @@ import twoball
 from tests import ROOT
 from twoball._common import budget
 from twoball._common.budget import (
+    DEFAULT_MAX_SECONDS,
+    ESTIMATE_SLACK,
     Budget,
     BudgetError,
     DeadlineError,
     Estimate,
     GiB,
     MiB,
+    check,
     check_deadline,
     format_bytes,
     limits,
     parse_bytes,
     parse_seconds,
     running,
+    verb_default,
 )
 from twoball._common.errors import ParameterError
 from twoball._common.watch import Watch
@@ -458,3 +463,69 @@ def test_budget_refusals_name_this_subcommands_flags_and_its_defaults() -> None:
     assert budget_flags("modes 30") == "--modes 30"  # no command line: the flag
     sweep = argparse.Namespace(values=["0:0.5:1000000"], _given_once={})  # given in turns
     assert budget_flags("values (1000000 points)", sweep) == "--values (1000000 points)"
+
+
+def _started_ago(seconds: float) -> None:
+    """Put the running clock's start ``seconds`` in the past (and re-read the limit)."""
+    budget._clock.update(start=time.monotonic() - seconds, read=None)
+
+
+def test_off_is_no_limit() -> None:
+    assert budget.parse_seconds("off") == math.inf == budget.parse_seconds(" None ")
+    assert budget.format_seconds(math.inf) == "off"
+    assert Budget.from_options(None, "off").max_seconds == math.inf
+    with pytest.raises(budget.ParameterError, match="or off"):
+        budget.parse_seconds("soon")
+
+
+def test_the_default_follows_and_a_given_limit_does_not(monkeypatch) -> None:
+    monkeypatch.delenv(budget.TIME_ENV, raising=False)
+    assert Budget.from_options(None, None).follows
+    assert not Budget.from_options(None, "5min").follows
+    monkeypatch.setenv(budget.TIME_ENV, "5min")
+    assert not Budget.from_options(None, None).follows  # the environment gives one too
+
+
+def test_the_default_deadline_follows_an_accepted_estimate(monkeypatch) -> None:
+    """Left at the default, a run the estimates accepted (4 min) is not stopped at 5 min
+    (a loaded machine), only past ESTIMATE_SLACK times its estimate."""
+    monkeypatch.delenv(budget.TIME_ENV, raising=False)
+    with limits(), running():
+        check("work", Estimate(MiB, 240.0))
+        _started_ago(DEFAULT_MAX_SECONDS + 60)
+        check_deadline("the work")  # 6 min: within 10 x 4 min
+        _started_ago(ESTIMATE_SLACK * 240.0 + 5)
+        with pytest.raises(DeadlineError, match="the default time limit 40 min"):
+            check_deadline("the work")
+
+
+def test_without_an_estimate_the_default_deadline_is_five_minutes(monkeypatch) -> None:
+    monkeypatch.delenv(budget.TIME_ENV, raising=False)
+    with limits(), running():
+        _started_ago(DEFAULT_MAX_SECONDS - 5)
+        check_deadline("the work")
+        _started_ago(DEFAULT_MAX_SECONDS + 1)
+        with pytest.raises(DeadlineError, match="the default time limit 5 min"):
+            check_deadline("the work")
+
+
+def test_a_given_limit_is_the_deadline_whatever_the_estimates() -> None:
+    with limits(max_time="5min"), running():
+        check("work", Estimate(MiB, 240.0))
+        _started_ago(DEFAULT_MAX_SECONDS + 1)
+        with pytest.raises(DeadlineError, match=r"at the time limit 5 min .*max_time\)"):
+            check_deadline("the work")
+
+
+def test_a_verb_without_a_default_deadline(monkeypatch) -> None:
+    """reproduce: no default deadline (inf) and nothing refused for time; a limit given
+    (the option or the environment) stands."""
+    monkeypatch.delenv(budget.TIME_ENV, raising=False)
+    with limits(), running(), verb_default(math.inf):
+        check("work", Estimate(MiB, 86400.0))  # a day: not refused
+        _started_ago(86400.0 * 20)
+        check_deadline("the work")
+    monkeypatch.setenv(budget.TIME_ENV, "20s")
+    with limits(), running(), verb_default(math.inf):
+        with pytest.raises(budget.BudgetError, match="limit 20 s"):
+            check("work", Estimate(MiB, 60.0))

@@ -55,3 +55,18 @@ def test_range_matches_linspace_to_the_last_bit_at_the_ends():
 def test_refused_with_the_syntax_named(text, integer):
     with pytest.raises(ParameterError, match=r"^x must be v1,v2,\.\.\. or START:STOP"):
         parse_values(text, "x", integer=integer)
+
+
+@pytest.mark.parametrize("text", ["0_1,0.2", "0:0_5:3", "1_0:20", "0:1:1_0", "\u0661,2", "1, 2_0"])
+def test_digit_separators_and_other_digits_are_refused(text):
+    """float("0_5") is 5.0 and float("\u0661") is 1.0: neither is a number as written."""
+    with pytest.raises(ParameterError) as caught:
+        parse_values(text, "values", integer=":" in text and text.count(":") == 1)
+    assert caught.value.name == "values"
+
+
+def test_a_python_list_takes_numbers_only():
+    assert parse_values([1, 2.5, np.float64(3.0)], "x") == (1.0, 2.5, 3.0)
+    for items in (["1"], [True], [None], [[1.0]]):
+        with pytest.raises(ParameterError):
+            parse_values(items, "x")

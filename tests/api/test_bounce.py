@@ -436,8 +436,11 @@ def test_light_report_pickles_and_keeps_every_number(tmp_path, touching):
     again = pickle.loads(pickle.dumps(light))
     assert again.as_dict()["v1_ratio"] == touching.as_dict()["v1_ratio"]
     assert again.energy_J == touching.energy_J
-    with pytest.raises(twoball.NumericalError):
-        again.plot(tmp_path / "no.png")
+    for write in (again.plot, again.export, again.render):  # no history: a usage error
+        with pytest.raises(twoball.ParameterError) as caught:
+            write(tmp_path / "no.png")
+        assert caught.value.name == "report" and "twoball.bounce" in str(caught.value)
+    assert list(tmp_path.iterdir()) == []
 
 
 def test_files_of_the_whole_bounce(tmp_path, touching):

@@ -11,7 +11,7 @@ import pytest
 
 from tests.project import validation_table as table
 from tests.project.test_validation import check_refusals, run_child
-from twoball.cli.main import full_parser, join_negative_values, main
+from twoball.cli.main import build_parser, full_parser, join_negative_values, main
 
 
 @pytest.mark.parametrize(
@@ -146,9 +146,83 @@ def test_parser_registers_store_once_for_every_value_option() -> None:
         ),
         (["liftoff", "--mass-ratio", "0.1", "--geometry", "exact"], "--geometry must be left out"),
         (["liftoff", "--radius", "1", "--radius", "2"], "--radius given more than once (1.0, then"),
+        # an option of another subcommand: where it is (a pair's pictures: bounce --render)
+        (
+            ["render", "--pair", "basketball-tennis", "--out", "x.png"],
+            "--pair is not an option of twoball render; a pair's drop is drawn by twoball "
+            "bounce --pair NAME --render FILE (see twoball render --help)",
+        ),
+        (
+            ["export", "--gap", "0.01", "--out", "x.vtu"],
+            "--gap is not an option of twoball export; it is an option of twoball bounce, "
+            "sweep, fit",
+        ),
+        # digit separators: float("0_01") is 1.0, a typo for 0.01
+        (["bounce", "--mass-ratio", "0.1", "--gap", "0_01"], "--gap must be"),
+        (["liftoff", "--v0", "4_1"], "--v0 must be"),
+        (["liftoff", "--preset", "basketball", "--modes", "3_0"], "--modes must be"),
+        # the keywords of the valid range as flags too
+        (
+            ["bounce", "--restitution", "0.5"],
+            "--restitution must be given only with --mass-ratio or --pair, got 0.5",
+        ),
     ],
 )
 def test_the_line_names_the_option_given(argv: list[str], expected: str, tmp_path: Path) -> None:
     [result] = run_child([("", argv)], tmp_path)
     assert result["status"] == 2
     assert result["stderr"].startswith(f"twoball: error: {expected}"), result["stderr"]
+
+
+#: Each long verb, with options that make it do real work (a file or folder: OUT).
+LONG = {
+    "reproduce": ["--only", "table2,fig11", "--workers", "1", "--out", "OUT"],
+    "converge": ["modes", "--out", "OUT"],
+    "verify": ["--fast", "--out", "OUT"],
+    "sweep": ["--param", "damping", "--values", "0:0.6:121", "--workers", "1"],
+    "bounce": [],
+    "render": ["--level", "1", "--frames", "30", "--out", "OUT.gif"],
+    "export": ["--level", "2", "--out", "OUT.pvd"],
+}
+
+
+@pytest.mark.parametrize("verb", sorted(LONG))
+def test_every_long_verb_has_both_limits(verb):
+    parser = build_parser(verb)
+    command = parser._subparsers._group_actions[0].choices[verb]
+    flags = {s for action in command._actions for s in action.option_strings}
+    assert {"--max-time", "--max-memory"} <= flags
+
+
+@pytest.mark.parametrize("verb", sorted(LONG))
+def test_a_budget_stop_names_the_flag(verb, tmp_path, capsys):
+    """Under a 50 ms limit each is refused (status 2) or stopped (status 3) in one line
+    that names --max-time, never the Python keyword max_time."""
+    argv = [verb, *(a.replace("OUT", str(tmp_path / "out")) for a in LONG[verb])]
+    capsys.readouterr()
+    with pytest.raises(SystemExit) as stop:
+        main(["-q", *argv, "--max-time", "0.05s"])
+    err = capsys.readouterr().err.strip().splitlines()
+    assert stop.value.code in (2, 3) and len(err) == 1, err
+    assert "--max-time" in err[0] and "max_time" not in err[0].replace("--max-time", ""), err
+
+
+def test_bounce_help_lists_no_option_it_only_refuses(tmp_path: Path) -> None:
+    """The shared case options the drop only refuses are parsed (the refusal says why) but
+    not offered in ``twoball bounce --help``."""
+    from twoball.cli.bounce import REFUSED
+
+    text = table.subparsers(full_parser())["bounce"].format_help()
+    for flag in REFUSED:
+        assert flag not in text.split(), flag
+    cases = [
+        (flag, ["bounce", flag, value])
+        for flag, value in (
+            ("--phi-a", "2.6"),
+            ("--sigma", "none"),
+            ("--recontact", "paper"),
+            ("--energy", "both"),
+        )
+    ]
+    assert {flag for flag, _ in cases} == set(REFUSED)
+    assert not check_refusals(cases, run_child(cases, tmp_path))

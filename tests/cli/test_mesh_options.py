@@ -166,4 +166,4 @@ def test_a_body_of_finite_mass_needs_a_generated_mesh(ball_files, tmp_path, caps
     assert line.startswith("twoball: error: --mesh-file must be a generated mesh"), line
     argv = [*COMMANDS[command], "--mass-ratio", "0.01", "--geometry", "exact"]
     line = refused(argv, tmp_path / "b", capsys)
-    assert "--geometry must be isoparametric with mass_ratio" in line, line
+    assert "--geometry must be isoparametric with --mass-ratio" in line, line

@@ -89,3 +89,67 @@ def test_cli_render_bad_out(tmp_path, capsys, name):
         main(["render", "--level", "1", "--out", str(tmp_path / name)])
     err = capsys.readouterr().err
     assert stop.value.code == 2 and len(err.strip().splitlines()) == 1 and "--out" in err
+
+
+# --------------------------------------------------------------------------- the budget
+def _twoball(argv: list[str], address_space: int | None = None) -> subprocess.CompletedProcess:
+    """``python -m twoball ARGV``, optionally under an address-space limit [bytes]."""
+    import resource
+
+    def limit() -> None:
+        if address_space is not None:
+            resource.setrlimit(resource.RLIMIT_AS, (address_space, resource.RLIM_INFINITY))
+
+    env = dict(os.environ, PYTHONPATH=str(ROOT), OPENBLAS_NUM_THREADS="1")
+    env.pop("TWOBALL_MAX_MEMORY", None)
+    env.pop("TWOBALL_MAX_TIME", None)
+    return subprocess.run(
+        [sys.executable, "-m", "twoball", *argv],
+        cwd="/",
+        env=env,
+        preexec_fn=limit,
+        capture_output=True,
+        text=True,
+        timeout=300,
+    )
+
+
+def test_a_long_drawing_is_refused_before_the_drop(tmp_path):
+    """2000 frames of 640x480 take minutes to draw: refused under --max-time 20s before
+    the drop is simulated, one line naming --max-time, no file."""
+    out = tmp_path / "x.gif"
+    argv = ["bounce", "--render", str(out), "--frames", "2000", "--max-time", "20s"]
+    done = _twoball(argv)
+    lines = done.stderr.strip().splitlines()
+    assert done.returncode == 2 and len(lines) == 1, done.stderr[-2000:]
+    assert lines[0].startswith("twoball: error: --frames 2000 size 640x480 needs ~")
+    assert lines[0].endswith("limit 20 s (raise the time limit, --max-time)")
+    assert done.stdout == "" and list(tmp_path.iterdir()) == []
+
+
+@pytest.mark.parametrize("kilobytes", [1_000_000, 1_300_000])
+def test_a_render_under_an_address_space_limit_ends_in_one_line(tmp_path, kilobytes):
+    """Under ``ulimit -v`` the renderer's address space (VTK maps ~1 GiB) is refused up
+    front (status 2), or, where the estimate lets it start, the failed allocation is one
+    line of out of memory (status 3): never an abort, never a scratch file."""
+    out = tmp_path / "u.gif"
+    argv = ["render", "-q", "--level", "1", "--frames", "5", "--out", str(out)]
+    done = _twoball(argv, kilobytes * 1024)
+    lines = done.stderr.strip().splitlines()
+    assert done.returncode in (2, 3) and len(lines) == 1, (done.returncode, done.stderr[-2000:])
+    if done.returncode == 2:
+        assert "(ulimit -v)" in lines[0] or "--max-memory" in lines[0], lines
+    else:
+        assert lines[0].startswith("twoball: error: out of memory ("), lines
+    assert list(tmp_path.iterdir()) == []
+
+
+def test_a_render_over_the_memory_limit_is_refused(tmp_path):
+    """--max-memory: the frames a GIF keeps (7 bytes a pixel) count."""
+    out = tmp_path / "m.gif"
+    argv = ["render", "--level", "1", "--frames", "400", "--max-memory", "1GiB", "--out", str(out)]
+    done = _twoball(argv)
+    lines = done.stderr.strip().splitlines()
+    assert done.returncode == 2 and len(lines) == 1, done.stderr[-2000:]
+    assert "of memory; limit 1 GiB (raise the memory limit, --max-memory)" in lines[0]
+    assert list(tmp_path.iterdir()) == []

@@ -101,3 +101,75 @@ def test_full_reproduction(tmp_path):
         assert number in text
     fig12 = data["sections"]["fig12"]["data"]
     assert fig12["solves"] == 1200 and fig12["failed"] == 0  # time: bench_sweeps.py
+
+
+# --------------------------------------------------------------------------- stopped runs
+def _report(out):
+    return json.loads((out / "reproduction.json").read_text()), (
+        out / "reproduction.md"
+    ).read_text()
+
+
+def test_time_limit_keeps_the_finished_parts(tmp_path):
+    """Stopped at --max-time: table2 (0.1 s) is kept, fig11 (half a minute on one core)
+    is named missing; status 3, one line naming the flag, within 2T + 3 s, no scratch."""
+    import time
+
+    from tests._common.commands import messages, no_scratch, start
+
+    out = tmp_path / "rep"
+    limit = 8.0
+    argv = ["reproduce", "--only", "table2,fig11", "--workers", "1", "--out", str(out)]
+    began = time.monotonic()
+    process = start([*argv, "--max-time", f"{limit:g}s"])
+    _, err = process.communicate(timeout=120)
+    took = time.monotonic() - began
+    lines = messages(err.decode())
+    assert process.returncode == 3, err.decode()[-2000:]
+    assert took < 2 * limit + 3 + 5  # the interpreter's and numpy's start-up on top
+    assert len(lines) == 1 and "--max-time" in lines[0] and "max_time" not in lines[0], lines
+    assert "kept the finished parts table2" in lines[0]
+    data, text = _report(out)
+    assert list(data["sections"]) == ["table2"] and data["missing"] == ["fig11"]
+    assert data["stopped"].startswith("stopped at the time limit 8 s")
+    assert "**Incomplete: 1 part(s) missing: fig11.**" in text and "max_time" not in text
+    no_scratch(tmp_path)
+
+
+def test_interrupt_after_a_part_keeps_it(tmp_path):
+    """SIGTERM once the first part is committed: it stays, the report names the rest
+    missing and why, and the status is 143."""
+    import signal
+
+    from tests._common.commands import messages, no_scratch, start, wait_for_pause
+
+    out = tmp_path / "rep"
+    argv = ["reproduce", "--only", "table2,fig11", "--workers", "1", "--out", str(out)]
+    process = start(argv, "part")
+    wait_for_pause(process, "part")
+    process.send_signal(signal.SIGTERM)
+    _, err = process.communicate(timeout=60)
+    assert process.returncode == 143, err.decode()[-2000:]
+    assert messages(err.decode()) == ["twoball: interrupted"]
+    data, text = _report(out)
+    assert list(data["sections"]) == ["table2"] and data["missing"] == ["fig11"]
+    assert data["stopped"] == "interrupted by SIGTERM"
+    assert "The run was interrupted by SIGTERM." in text
+    no_scratch(tmp_path)
+
+
+def test_reproduce_has_no_default_deadline_and_takes_the_limits(tmp_path, capsys):
+    """The whole reproduction is legitimately long: no default time limit; the flags
+    are there, and a bad one is refused by its name."""
+    from twoball._common.budget import Budget, current_budget, verb_default
+
+    with verb_default(float("inf")):
+        assert current_budget().max_seconds == float("inf")
+    from twoball._common.budget import limits
+
+    with limits(max_time="30s"), verb_default(float("inf")):  # a limit given stands
+        assert current_budget() == Budget(current_budget().max_memory, 30.0)
+    with pytest.raises(SystemExit) as stop:
+        main(["reproduce", "--only", "table2", "--out", str(tmp_path / "r"), "--max-time", "x"])
+    err = capsys.readouterr().err.strip().splitlines()
+    assert stop.value.code == 2 and err[-1].startswith("twoball: error: --max-time must be")

@@ -83,6 +83,43 @@ def test_unreachable_scheduler_is_one_line_exit_2(capsys, monkeypatch):
     assert stop.value.code == 2 and len(err) == 1 and "--scheduler" in err[0]
 
 
+def test_a_sweep_in_which_no_point_could_run_is_an_error(tmp_path, capsys):
+    """Every point over the budget (each N's series with its reference above 3 s, the
+    sweep's total of 3 s on two workers not): one line naming --max-time, status 2, and
+    no table or file; the point's estimate is the cost model's own number."""
+    from twoball.modal.cost import case_liftoff_work
+    from twoball.modal.parameters import Case
+
+    from twoball._common.budget import Budget, BudgetError
+    from twoball._common.budget import format_seconds as shown
+
+    option, estimate = case_liftoff_work(Case.preset("basketball", modes=1400), None)
+    assert estimate.seconds > 3.0  # the premise: the point alone is over the limit
+    with pytest.raises(BudgetError):
+        Budget(2**40, 3.0).check(option, estimate)
+    csv = tmp_path / "s.csv"
+    argv = ["sweep", "--param", "modes", "--values", "1400,1500", "--workers", "2"]
+    capsys.readouterr()
+    with pytest.raises(SystemExit) as stop:
+        main([*argv, "--max-time", "3s", "--csv", str(csv)])
+    out, err = capsys.readouterr()
+    lines = err.strip().splitlines()
+    assert stop.value.code == 2 and out == "" and not csv.exists()
+    assert lines[-1] == (
+        "twoball: error: no point of the sweep could run (all 2 points failed); at modes = "
+        f"1400: modes 1400 needs ~{shown(estimate.seconds)}; limit 3 s (raise the time limit, "
+        "--max-time)"
+    )
+
+
+def test_a_point_over_the_budget_is_named_by_the_flag(capsys):
+    """Some points run: the table shows them and the others' errors, flags not keywords."""
+    argv = ["sweep", "--param", "modes", "--values", "30,1500", "--workers", "2"]
+    assert main([*argv, "--max-time", "3s"]) == 0
+    out = capsys.readouterr().out
+    assert "--max-time" in out and "max_time" not in out.replace("--max-time", "")
+
+
 @pytest.mark.parametrize(
     ("param", "values", "own"),
     [("v0", "3,4.1,5", 1), ("wave-speed", "300,320,340", 1), ("v0", "3,5", None)],

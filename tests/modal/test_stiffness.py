@@ -190,3 +190,17 @@ def test_gas_energy_enters_the_contact_angle_of_eq_3_7():
     assert 2 * math.pi * v0**2 == pytest.approx(energy, rel=1e-12)
     membrane = case.derive(gas="none")  # the rule applies again: less energy stored, deeper
     assert membrane.phi_a < case.phi_a
+
+
+def test_a_preset_without_stiffness_takes_its_own_pressure_for_bending() -> None:
+    """The basketball keeps no pressure (it acts on nothing), though Table 2 gives one:
+    bending or a gas given to it take P = 77200 Pa, so T = P R / 2 and beta = B / (T R^2)."""
+    bent = Case.preset("basketball", bending=1.0)
+    assert bent.pressure == 77200.0
+    assert bent.stiffness.beta == pytest.approx(1.0 / (77200.0 * 0.12 / 2.0 * 0.12**2), rel=1e-14)
+    assert Case.preset("basketball", gas="isothermal").pressure == 77200.0
+    assert Case.preset("basketball").pressure is None  # nothing stiff: no pressure kept
+    assert Case.preset("tennis", bending=0.02).pressure == Case.preset("tennis").pressure
+    with pytest.raises(ParameterError) as info:  # no preset: no pressure to take
+        Case(preset_name=None, bending=1.0)
+    assert info.value.name == "pressure"

@@ -181,6 +181,45 @@ def test_cli_reference_lists_every_subcommand_and_option(html: Path) -> None:
         assert listed <= names, f"twoball {name}: unknown options listed: {sorted(listed - names)}"
 
 
+#: A dash that typography put where two hyphens were typed: "–flag" for "--flag".
+DASHED_OPTION = re.compile("[\u2013\u2014](?=[A-Za-z])")
+#: Curly quotes: in code they break what a reader copies (JSON, shell).
+CURLY = re.compile("[\u2018\u2019\u201c\u201d]")
+#: Code as the HTML shows it: blocks, inline literals (``<code>`` with ``<span class="pre">``),
+#: keyboard input (the CLI reference's options).
+CODE = re.compile(r"<(pre|code|kbd|samp|tt)\b[^>]*>(.*?)</\1>", re.DOTALL)
+
+
+@SLOW
+def test_cli_reference_shows_options_as_typed(html: Path) -> None:
+    text = (html / "cli_reference.html").read_text(encoding="utf-8")
+    assert text.count("--") > 200  # the options are there, with their two hyphens
+    dashed = [text[max(0, m.start() - 40) : m.end() + 20] for m in DASHED_OPTION.finditer(text)]
+    assert not dashed, f"dashes where -- was typed: {dashed[:5]}"
+
+
+@SLOW
+def test_no_curly_quotes_in_code(html: Path) -> None:
+    found = [
+        f"{page.relative_to(html)}: {block[:80]!r}"
+        for page in pages(html)
+        for _, block in CODE.findall(page.read_text(encoding="utf-8"))
+        if CURLY.search(block) or DASHED_OPTION.search(block)
+    ]
+    assert not found, "typographic quotes or dashes in code:\n" + "\n".join(found[:20])
+
+
+def test_readme_says_how_to_build_the_docs_and_keeps_a_two_line_quick_start() -> None:
+    readme = (ROOT / "README.md").read_text()
+    quick = readme.split("## Quick start", 1)[1].split("\n## ", 1)[0]
+    block = re.search(r"```\n(.*?)```", quick, re.DOTALL)
+    assert block is not None
+    commands = [line for line in block.group(1).splitlines() if line.strip()]
+    assert len(commands) == 2, commands
+    docs = re.search(r"python -m sphinx [^\n`]*\bdocs\b", readme)
+    assert docs is not None and "[docs]" in readme, "no command that builds the docs"
+
+
 @SLOW
 def test_every_example_shows_a_figure_made_by_the_build(html: Path) -> None:
     if not os.environ.get("TWOBALL_DOCS_HTML"):

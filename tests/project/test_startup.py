@@ -139,3 +139,40 @@ def test_fem_liftoff_json_loads_no_plotting_rendering_or_dask():
     assert {"numpy", "scipy", "skfem"} <= packages  # the finite elements did run
     assert not packages & {"matplotlib", "pyvista", "vtk", "dask", "distributed", "meshio", "rich"}
     assert json.loads(report["stdout"])["backend"] == "fem"
+
+
+def _missing_numpy(tmp_path: Path, *argv: str) -> subprocess.CompletedProcess[str]:
+    """``python -m twoball ARGV`` in the source tree, where ``import numpy`` fails as if
+    numpy were not installed (a package of that name on PYTHONPATH that raises)."""
+    fake = tmp_path / "numpy"
+    fake.mkdir(parents=True)
+    (fake / "__init__.py").write_text(
+        'raise ModuleNotFoundError("No module named \'numpy\'", name="numpy")\n'
+    )
+    env = {**os.environ, "PYTHONPATH": f"{tmp_path}{os.pathsep}{ROOT}"}
+    return subprocess.run(
+        [sys.executable, "-m", "twoball", *argv],
+        capture_output=True,
+        text=True,
+        cwd=ROOT,
+        env=env,
+        timeout=120,
+    )
+
+
+def test_python_m_twoball_without_numpy_says_what_to_install(tmp_path):
+    proc = _missing_numpy(tmp_path, "liftoff")
+    assert proc.returncode == 2, proc.stderr
+    assert proc.stdout == ""
+    assert proc.stderr == "twoball: numpy is missing; install with: pip install .\n"
+    # the help needs no numerical library: it still prints
+    helped = _missing_numpy(tmp_path / "help", "--help")
+    assert helped.returncode == 0 and "liftoff" in helped.stdout, helped.stderr
+
+
+def test_missing_message_names_the_extra():
+    from twoball.__main__ import missing_message
+
+    assert missing_message("rich.console").startswith("twoball: rich is missing; install with: ")
+    assert "[render]'" in missing_message("pyvista")
+    assert missing_message("twoball.modal") is None

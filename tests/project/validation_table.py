@@ -272,14 +272,7 @@ LEFT_OUT: dict[tuple[str, str], tuple[str, ...]] = {
 }
 #: Cases of the table the command line does not refuse yet, each with what it does instead:
 #: the test holds them apart and fails when one is refused (then delete its entry).
-_SHELL_EIGEN = ("eigen", "--json", "--ball", "shell")
-KNOWN_GAPS: dict[tuple[str, ...], str] = {
-    (*_SHELL_EIGEN, "--thickness-ratio", "1e308"): "OverflowError in ShellParameters.from_ratios",
-    (*_SHELL_EIGEN, "--thickness-ratio", PI_MINUS): "runs: no upper bound h / R <= 0.5",
-    (*_SHELL_EIGEN, "--thickness-ratio", ""): "runs: '' read as h / R = 0",
-    (*_SHELL_EIGEN, "--prestress-ratio", "-1"): "refused naming --wall-stiffness-ratio",
-    (*_SHELL_EIGEN, "--prestress-ratio", ""): "runs: '' read as p = 0",
-}
+KNOWN_GAPS: dict[tuple[str, ...], str] = {}
 #: Options the base line already gives (a bad value replaces the base's).
 PATH_OPTIONS = (
     "--out",
@@ -812,6 +805,44 @@ FIT_REFUSALS: list[tuple[str, list[str]]] = [
 ]
 NOT_APPLICABLE.extend(FIT_REFUSALS)
 
+#: Numbers written with a digit separator (Python's float("0_01") is 1.0, int("4_1") 41)
+#: or in another script's digits (float("\u0664.\u0661") is 4.1): refused as not numbers,
+#: wherever text is read as a number.
+DIGIT_SEPARATORS: list[tuple[str, list[str]]] = [
+    ("--gap", ["bounce", "--mass-ratio", "0.05", "--gap", "0_01"]),
+    ("--v0", ["liftoff", "--v0", "4_1"]),
+    ("--v0", ["liftoff", "--v0", "\u0664.\u0661"]),
+    ("--modes", ["liftoff", "--modes", "3_0"]),
+    ("--drop-height", ["bounce", "--drop-height", "1_0"]),
+    ("--mu", ["icm", "--mu", "0_5", "--e2", "0.8", "--e12", "0.9"]),
+    ("--start", [*_FIT, "--start", "damping=0_1"]),
+    ("--bounds", [*_FIT, "--bounds", "damping=0_1:0.2"]),
+    ("--values", ["sweep", "--param", "damping", "--values", "0_1,0.2"]),
+    ("--values", ["sweep", "--param", "damping", "--values", "0:0_5:3"]),
+    ("--values", ["sweep", "--bounce", "--param", "drop-height", "--values", "0_5,1"]),
+    ("--max-time", ["liftoff", "--max-time", "2_0s"]),
+    ("--max-memory", ["liftoff", "--max-memory", "1_0GiB"]),
+    ("--times", ["export", "--level", "1", "--times", "0,0_001", "--out", "{tmp}/x.pvd"]),
+    (
+        "--pole",
+        ["export", "--mesh-file", "{tmp}/ball.vtu", "--pole", "0,0_1,1"] + ["--out", "{tmp}/y.vtu"],
+    ),
+    ("--size", ["render", "--level", "1", "--size", "64x4_8", "--out", "{tmp}/x.png"]),
+    ("--rayleigh", ["liftoff", "--rayleigh", "1_0,0"]),
+    ("--levels", ["converge", "h", "--levels", "0:1_0", "--out", "{tmp}/c"]),
+    ("--modes-list", ["converge", "modes", "--modes-list", "30,6_0", "--out", "{tmp}/c"]),
+    ("--levels", ["plot", "eigen", "--levels", "1_0", "--out", "{tmp}/p.png"]),
+    ("--gas", ["eigen", "--ball", "shell", "--gas", "0_1"]),
+    # the shell's ratios as typed: '' is not 0, h / R at most 0.5, p >= 0 by its own name
+    ("--thickness-ratio", ["eigen", "--ball", "shell", "--thickness-ratio", "0.6"]),
+    ("--prestress-ratio", ["eigen", "--ball", "shell", "--prestress-ratio", "1.5"]),
+    (
+        "--prestress-ratio",
+        ["eigen", "--ball", "shell", "--poisson", "0.3", "--prestress-ratio", "1.31"],
+    ),
+]
+NOT_APPLICABLE.extend(DIGIT_SEPARATORS)
+
 #: Refusals whose line must also say the right value or leave out a wrong one:
 #: (argv, words the line holds, words it must not hold).
 MESSAGES: list[tuple[list[str], tuple[str, ...], tuple[str, ...]]] = [
@@ -833,6 +864,38 @@ MESSAGES: list[tuple[list[str], tuple[str, ...], tuple[str, ...]]] = [
         (),
     ),
     (["converge", "--out", "{tmp}/c"], ("converge STUDY must be given", "h, order"), ("'none'",)),
+    # the keywords a valid range names are flags too; a body comes from either flag
+    (
+        ["bounce", "--gap", "0.1"],
+        ("--gap must be", "(--mass-ratio or --pair)", "got 0.1"),
+        ("mass_ratio",),
+    ),
+    (["liftoff", "--restitution", "0.5"], ("given only with --mass-ratio, got 0.5",), ("--pair",)),
+    (
+        ["converge", "modes", "--levels", "1:2", "--out", "{tmp}/c"],
+        ("use --modes-list",),
+        ("modes_list",),
+    ),
+    (
+        ["eigen", "--ball", "shell", "--poisson", "0.3", "--prestress-ratio", "1.31"],
+        ("--prestress-ratio must be a number in [0, 1.3) at nu = 0.3, g = 0", "got 1.31"),
+        ("prestress_ratio", "--wall-stiffness-ratio"),
+    ),
+    (["render", "--pair", "basketball-tennis"], ("twoball bounce --pair NAME --render FILE",), ()),
+    # paths as the user typed them, relative ones too (the case runs in its own folder)
+    *[
+        (argv, (f"got '{path}'",), ("/" + path,))
+        for argv, path in (
+            (["render", "--level", "1", "--out", "nodir/x.png"], "nodir/x.png"),
+            (["bounce", "--modes", "16", "--plot", "nodir/x.png"], "nodir/x.png"),
+            (
+                ["sweep", "--param", "damping", "--values", "0,0.1", "--csv", "nodir/x.csv"],
+                "nodir/x.csv",
+            ),
+            (["export", "--mesh-file", "a-file", "--out", "a-file"], "a-file"),
+            (["reproduce", "--only", "table1", "--out", "a-file"], "a-file"),
+        )
+    ],
     # budget refusals: this subcommand's flags, the defaults said to be defaults
     (
         ["bounce", "--max-time", "0.01s"],

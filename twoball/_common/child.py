@@ -43,7 +43,7 @@ import time
 from collections.abc import Callable
 from typing import Any, TypeVar
 
-__all__ = ["POLL_SECONDS", "can_spawn", "in_child"]
+__all__ = ["POLL_SECONDS", "ChildDied", "can_spawn", "in_child"]
 
 #: Seconds between two checks of the parent while the child works.
 POLL_SECONDS = 0.1
@@ -82,6 +82,8 @@ try:
         sys.path[:] = path
         try:
             function, args = pickle.load(source)
+        except MemoryError as error:  # out of memory here: the call would be no better off
+            outcome = (False, error)
         except BaseException as error:
             outcome = ("load", f"{type(error).__name__}: {error}")
         else:
@@ -127,6 +129,24 @@ def can_spawn() -> bool:
     )
 
 
+class ChildDied(RuntimeError):
+    """The child ended without an outcome: killed, or crashed in compiled code.
+
+    ``returncode`` is the child's exit status, ``-N`` when signal N ended it (an
+    abort after a failed C++ allocation: SIGABRT; the OOM killer: SIGKILL).
+    """
+
+    def __init__(self, doing: str, returncode: int | None) -> None:
+        super().__init__(
+            f"the child process computing {doing} ended without a result (exit status {returncode})"
+        )
+        self.doing = doing
+        self.returncode = returncode
+
+    def __reduce__(self) -> tuple[type, tuple[str, int | None]]:
+        return (type(self), (self.doing, self.returncode))
+
+
 def in_child(function: Callable[..., _T], *args: Any, doing: str = "a long computation") -> _T:
     """``function(*args)`` computed in a child process; its result (or exception) returned here.
 
@@ -144,7 +164,8 @@ def in_child(function: Callable[..., _T], *args: Any, doing: str = "a long compu
     ------
     Whatever ``function`` raised; :class:`~twoball._common.budget.DeadlineError`
     past the time limit; the signal's exception on SIGINT/SIGTERM.  In each case
-    the child is killed and reaped first.
+    the child is killed and reaped first.  :class:`ChildDied` if the child ended
+    without an outcome (a crash in compiled code, the OOM killer).
     """
     if not can_spawn():
         return function(*args)
@@ -210,10 +231,7 @@ def in_child(function: Callable[..., _T], *args: Any, doing: str = "a long compu
         if process is not None and not finished:  # an interrupt, the deadline: not wanted
             _end(process)
     if not chunks:
-        raise RuntimeError(
-            f"the child process computing {doing} ended without a result "
-            f"(exit status {process.returncode})"
-        )
+        raise ChildDied(doing, process.returncode)
     ok, value = pickle.loads(b"".join(chunks))
     if ok == "load":  # the child could not import the call: compute it here
         return function(*args)

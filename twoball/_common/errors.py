@@ -123,6 +123,14 @@ def bounded(
     return out
 
 
+def check_labels(owner: object, *names: str) -> None:
+    """Refuse a label field of ``owner`` (``name``, ``source``) that is not a str, naming it."""
+    for name in names:
+        value = getattr(owner, name)
+        if not isinstance(value, str):
+            raise ParameterError(name, "a str (a label, in the JSON as written)", value)
+
+
 def refuse_given(valid: str, **options: object) -> None:
     """Refuse the first of ``options`` that is not None: ``name must be VALID``.
 

@@ -33,6 +33,8 @@ import time
 from collections.abc import Callable
 from typing import Any, TextIO
 
+from twoball._common.keywords import checked
+
 __all__ = [
     "INTERVAL",
     "activity",
@@ -93,6 +95,7 @@ def _ignore(_: int) -> None:
     return None
 
 
+@checked
 class Reporter:
     """Progress of one command on standard error (a context manager).
 

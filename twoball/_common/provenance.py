@@ -26,6 +26,7 @@ from datetime import UTC, datetime
 from pathlib import PurePath
 from typing import Any
 
+from twoball._common.keywords import checked
 from twoball._version import __version__
 
 __all__ = [
@@ -208,6 +209,7 @@ def attach(data: Any, provenance: Mapping[str, Any] | None) -> Any:
 
 
 # --------------------------------------------------------------------------- report()
+@checked
 @dataclass(frozen=True)
 class Report:
     """The installation: platform, Python and package versions (``print(twoball.report())``).
@@ -264,6 +266,7 @@ class Report:
         return f"<table><caption>twoball report {self.generated}</caption>{cells}</table>"
 
 
+@checked
 def report(additional: str | Sequence[str] = ()) -> Report:
     """Versions of twoball, Python and its dependencies, and the platform.
 

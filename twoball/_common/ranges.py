@@ -21,11 +21,40 @@ from collections.abc import Sequence
 
 from twoball._common.errors import ParameterError
 
-__all__ = ["SYNTAX", "parse_values"]
+__all__ = ["SYNTAX", "decimal", "parse_values", "real", "whole"]
 
 SYNTAX = "v1,v2,... or START:STOP:COUNT"
 INTEGER_SYNTAX = "v1,v2,... or START:STOP[:COUNT]"
 MAX_VALUES = 1_000_000  # a list longer than this is a typo, not a study
+
+
+def decimal(text: str) -> float:
+    """``float(text)`` for a number as a person writes it, else :class:`ValueError`.
+
+    Python's ``float`` also reads digit separators (``float("0_01")`` is 1.0,
+    ``float("4_1")`` 41.0) and digits of other scripts (``float("\u0663")`` is
+    3.0): a typo for 0.01 or 4.1 would run as another value, so both are refused.
+    ``inf`` and ``nan`` are read (the ranges refuse them, naming the option).
+    """
+    if "_" in text or not text.isascii():
+        raise ValueError(f"not a number as written: {text!r}")
+    return float(text)
+
+
+def whole(text: str) -> int:
+    """``int(text)`` under the rules of :func:`decimal`, else :class:`ValueError`."""
+    if "_" in text or not text.isascii():
+        raise ValueError(f"not a whole number as written: {text!r}")
+    return int(text)
+
+
+def real(value: object) -> float:
+    """A list item of the Python API as a float: a real number, not a string or a bool."""
+    from numbers import Real
+
+    if isinstance(value, bool) or not isinstance(value, Real):
+        raise ValueError(f"not a number: {value!r}")
+    return float(value)
 
 
 def parse_values(
@@ -66,16 +95,16 @@ def parse_values(
     expected = syntax + ("" if not valid else f" ({valid})")
     if not isinstance(text, str):
         try:
-            values = [float(v) for v in text]
+            values = [real(v) for v in text]
         except (TypeError, ValueError):
             raise ParameterError(name, expected, text) from None
         return _finish(values, name, expected, integer, text)
     parts = [p.strip() for p in text.split(":")]
     try:
         if len(parts) == 1:
-            values = [float(p) for p in text.split(",")]
+            values = [decimal(p) for p in text.split(",")]
         elif len(parts) in (2, 3) and "," not in text:
-            start, stop = float(parts[0]), float(parts[1])
+            start, stop = decimal(parts[0]), decimal(parts[1])
             if len(parts) == 3:
                 count = _count(parts[2])
             elif integer and start == round(start) and stop == round(stop):
@@ -98,7 +127,7 @@ def parse_values(
 
 
 def _count(text: str) -> int:
-    count = float(text)
+    count = decimal(text)
     if count != round(count):
         raise ValueError
     return int(count)

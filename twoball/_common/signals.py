@@ -14,7 +14,8 @@ After a commit
     anything, so it is *held* (:func:`committed_signals`): raised at the next
     piece of work (:func:`resume`, called by every long loop through the
     deadline check and by the next writer), or, if the command ends first,
-    dropped -- the run reports the success it had.  A held signal is delivered
+    returned by :func:`finish` -- the command line then reports the interrupt
+    (status 130 / 143) with its output complete.  A held signal is delivered
     again after :data:`HOLD_SECONDS` if the work goes on without a check, so an
     interrupt still acts within a second.
 The end of a run
@@ -28,7 +29,8 @@ Testing hook: with ``TWOBALL_TEST_PAUSE=STAGE`` in the environment,
 stage and sleeps (up to 60 s) so a test can signal the process at a known
 point (the stages of :mod:`twoball._common.staging`: ``begin``, ``staged``,
 ``commit``, and ``commit-folder`` for a report folder, whose files may be
-committed inside it first).  Only the standard library is imported.
+committed inside it first; ``part`` after each part of a reproduction is
+committed).  Only the standard library is imported.
 """
 
 from __future__ import annotations
@@ -187,8 +189,8 @@ def resume() -> None:
             raise Interrupted(pending)
 
 
-def finish(process: bool = False) -> None:
-    """The run's status is decided: signals from now on are ignored, a held one is dropped.
+def finish(process: bool = False) -> int | None:
+    """The run's status is decided: signals from now on are ignored; the held one is returned.
 
     Called by the command line when its command has ended (any way); the
     outermost :func:`raise_on_signals` starts afresh when it restores the
@@ -197,11 +199,21 @@ def finish(process: bool = False) -> None:
     (``SIG_IGN``) -- the interpreter's finalisation puts back the default action
     for Python handlers (measured: killed by the raw signal after the output was
     written), not for an ignored signal.
+
+    Returns
+    -------
+    int or None
+        The signal held since the last commit and not yet acted on (the output
+        is complete, the run was interrupted all the same), else None.
     """
+    held = _deferral["pending"] if _deferral["hold"] or _deferral["depth"] else None
+    if _deferral["finished"]:
+        held = None
     _deferral.update(finished=True, pending=None, hold=False)
     if process and _in_main_thread():
         for s in _HANDLED:
             signal.signal(s, signal.SIG_IGN)
+    return None if held is None else int(held)  # type: ignore[call-overload]
 
 
 @contextlib.contextmanager

@@ -32,7 +32,8 @@ every exit path: exceptions and, through
 into :class:`~twoball._common.signals.Interrupted`), signals; commits and clean-ups
 run with signals held back (:func:`deferred_signals`), and once a commit is done a
 signal is held until the next work starts (:func:`committed_signals`): a run
-whose last output is in place reports success, never "interrupted".  Scratch left by a killed
+signalled while its last output was committed keeps that output whole and still
+ends as interrupted (130 / 143, :mod:`twoball.cli.guard`).  Scratch left by a killed
 (SIGKILL) process is swept by the next run that writes the same target, once
 its process id is gone.
 
@@ -525,6 +526,19 @@ def staged_folder(
                 os.rename(scratch, out)
 
 
+@contextlib.contextmanager
+def scratch_folder(path: str | os.PathLike[str], param: str = "out") -> Iterator[Path]:
+    """A private working folder beside the folder ``path``, removed on every exit path.
+
+    For a writer that commits its folder more than once (:func:`staged_folder`
+    for each state worth keeping, e.g. every finished part of a reproduction)
+    and keeps what it has made so far here between the commits.
+    """
+    out = check_folder(path, param)
+    with _scratch_dir(out) as scratch:
+        yield scratch
+
+
 _RENAME_EXCHANGE = 2
 _AT_FDCWD = -100
 
@@ -566,6 +580,7 @@ __all__ = [
     "check_folder",
     "deferred_signals",
     "foreign_entry",
+    "scratch_folder",
     "staged_collection",
     "staged_file",
     "staged_folder",

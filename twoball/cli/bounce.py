@@ -107,10 +107,6 @@ def add_drop_options(parser: argparse.ArgumentParser) -> None:
 DROP_HELP = {
     "--membrane": "membrane operator: pressurised ((n-1)(n+2), default: degree 1 a free "
     "translation) or paper (n(n+1) for n != 1)",
-    "--phi-a": "refused: the contact angle is an output of the drop (phi_a_max_rad)",
-    "--sigma": "refused: no spectral filter (the drop's modes are not filtered)",
-    "--recontact": "refused: no lift-off criteria in a drop",
-    "--energy": "refused: both bodies fall at |v0| in the whole bounce (ball only)",
     "--restitution": "Newton's e12 in [0, 1] at the body's impacts on the ball (default 0)",
     "--contact-radius": "radius a [m] of the cap where the body touches (default R/10)",
     "--youngs-modulus": "wall Young's modulus E [Pa]: the membrane's bending, or with --ball "
@@ -124,6 +120,13 @@ DROP_HELP = {
     "--order": "element order 1, 2, 3 or 4 (default 2); --ball shell: the Lagrange order 1, 2 "
     "or 3 of the meridional displacement",
 }
+
+
+#: Shared case options the drop only refuses (or takes at their default, which changes
+#: nothing): parsed, so that the refusal says why, but left out of ``--help``.  The
+#: contact angle is the drop's output (phi_a_max_rad), its modes are not filtered, it
+#: has no lift-off criteria, and both bodies fall at |v0| in the whole bounce.
+REFUSED = ("--phi-a", "--sigma", "--recontact", "--energy")
 
 
 def _action(parser: argparse.ArgumentParser, flag: str) -> argparse.Action:
@@ -529,6 +532,8 @@ def register(parser: argparse.ArgumentParser) -> None:
     add_body_options(parser)
     for flag, text in DROP_HELP.items():  # the shared case options, as the drop reads them
         _action(parser, flag).help = text
+    for flag in REFUSED:
+        _action(parser, flag).help = argparse.SUPPRESS
     preset = _action(parser, "--preset")
     preset.default = None  # the pair's lower ball, else the basketball
     preset.help = "named case: basketball (default), tennis, volleyball; --pair sets it"

@@ -80,9 +80,29 @@ def add_case_options(parser: argparse.ArgumentParser, window: str = "4 pi / c") 
     model.add_argument(
         "--t-end", type=number, metavar="SECONDS", help=f"modelled window [s] (default {window})"
     )
-    limits = parser.add_argument_group("resource limits (refused before the work starts)")
+    add_limit_options(parser)
+
+
+#: ``--max-time``'s default, as the help says it (the rule: :mod:`twoball._common.budget`).
+TIME_DEFAULT_HELP = (
+    "default: work estimated above 5min is refused, and a run stops at 10 times its "
+    "estimate, at least 5min"
+)
+
+
+def add_limit_options(
+    parser: argparse.ArgumentParser, time_default: str = TIME_DEFAULT_HELP
+) -> None:
+    """``--max-memory`` and ``--max-time``, the resource limits of every long verb."""
+    limits = parser.add_argument_group(
+        "resource limits (refused before the work starts, stopped at the deadline)"
+    )
     limits.add_argument("--max-memory", metavar="SIZE", help="e.g. 8GiB (default: half the RAM)")
-    limits.add_argument("--max-time", metavar="DURATION", help="e.g. 90min (default: 5min)")
+    limits.add_argument(
+        "--max-time",
+        metavar="DURATION",
+        help=f"e.g. 90min, 2h or off; refusal and deadline at once ({time_default})",
+    )
 
 
 def case_from_options(args: argparse.Namespace) -> twoball.Case:
@@ -195,6 +215,7 @@ def _stiffness_changes(args: argparse.Namespace) -> dict[str, float | str]:
 
 __all__ = [
     "add_case_options",
+    "add_limit_options",
     "apply_limits",
     "case_from_options",
     "case_options_given",

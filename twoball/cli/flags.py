@@ -133,6 +133,9 @@ FLAGS: dict[str, str] = {
     "body_steps": "--body-steps",
     "body_modes": "--body-modes",
     "body_damping": "--body-damping",
+    "body_law": "--body-law",
+    "body_preset": "--body-preset",
+    "floor_alone": "--floor-alone",
     # the solid ball and the thick wall (--ball solid|thick)
     "density": "--density",
     "radial_orders": "--radial-orders",
@@ -140,6 +143,11 @@ FLAGS: dict[str, str] = {
     "top_levels": "--top-levels",
     "wall_cells": "--wall-cells",
 }
+#: Names that are also the paper's symbols (phi_a: the contact angle of eq. (3.7)): in the
+#: prose of a message they stay the symbol; as the parameter refused they become the flag.
+SYMBOLS = frozenset({"phi_a"})
+#: A snake_case word of a message (a Python keyword), not inside quotes or a dotted name.
+_KEYWORD = r"(?<![\w.'\"-])[a-z][a-z0-9]*(?:_[a-z0-9]+)+(?![\w'\"(-])"
 
 
 def flag_of(name: str, args: Namespace | None = None) -> str:
@@ -198,13 +206,46 @@ def cli_message(error: ParameterError, args: Namespace | None = None) -> str:
     if isinstance(error, BudgetError):  # "modes 100000 t_end 2 needs ...": every name a flag
         asked, needs, rest = text.partition(" needs ")
         asked = budget_flags(asked, args)
-        for name in ("max_memory", "max_time"):  # the advice names the limit's flag
-            rest = rest.replace(name, FLAGS[name])
-        return asked + needs + rest
+        return asked + needs + limit_flags(rest)  # the advice names the limit's flag
     name = str(error.name)
+    valid = " ".join(str(error.valid).split())
+    if valid and valid in text:  # the keywords the valid range names, as flags too
+        text = text.replace(valid, keywords_as_flags(valid, args), 1)
     if text.startswith(name):
         return flag_of(name, args) + text[len(name) :]
     return text
+
+
+def limit_flags(text: str) -> str:
+    """``text`` with the limits' parameter names as their flags (``max_time`` -> ``--max-time``).
+
+    For messages that reach the command line by another way than a raised error: a
+    sweep point's error, a report written by a stopped run.
+    """
+    import re
+
+    return re.sub(r"(?<![\w-])(max_time|max_memory)\b", lambda m: FLAGS[m.group(1)], text)
+
+
+def keywords_as_flags(text: str, args: Namespace | None = None) -> str:
+    """``text`` with each Python keyword that has a flag written as the flag the user types.
+
+    ``given only with mass_ratio`` -> ``given only with --mass-ratio or --pair`` (where
+    the subcommand takes a pair: it sets the body too); ``use modes_list`` -> ``use
+    --modes-list``.  The paper's symbols (:data:`SYMBOLS`) and quoted words stay.
+    """
+    import re
+
+    def flag(match: re.Match[str]) -> str:
+        word = match.group(0)
+        if word in SYMBOLS or word not in FLAGS:
+            return word
+        shown = flag_of(word, args)
+        if word == "mass_ratio" and args is not None and hasattr(args, "pair"):
+            return f"{shown} or --pair"
+        return shown
+
+    return re.sub(_KEYWORD, flag, text)
 
 
 def budget_flags(asked: str, args: Namespace | None = None) -> str:

@@ -212,7 +212,33 @@ def refuse_unknown_options(parser: argparse.ArgumentParser, argv: Sequence[str])
         if name in known or len([k for k in known if k.startswith(name)]) == 1:
             continue
         where = f"twoball {command}" if command else "twoball"
-        fail(f"{name} is not an option of {where} (see {where} --help)")
+        hint = ELSEWHERE.get((command, name)) or _other_commands(name, command)
+        fail(f"{name} is not an option of {where}{hint} (see {where} --help)")
+
+
+#: Where an option that a subcommand lacks does what was asked: a pair (the whole two-ball
+#: bounce) is dropped by ``twoball bounce``, which writes its own figure, fields and pictures.
+ELSEWHERE: dict[tuple[str | None, str], str] = {
+    ("render", "--pair"): "; a pair's drop is drawn by twoball bounce --pair NAME --render FILE",
+    ("export", "--pair"): "; a pair's drop is written by twoball bounce --pair NAME --export FILE",
+    ("plot", "--pair"): "; a pair's figure is drawn by twoball bounce --pair NAME --plot FILE",
+    ("liftoff", "--pair"): "; a pair's whole bounce is twoball bounce --pair NAME",
+}
+
+
+def _other_commands(flag: str, command: str | None) -> str:
+    """``; it is an option of twoball bounce, sweep`` (empty if of no other subcommand)."""
+    if command is None:
+        return ""
+    parser = full_parser()
+    others = [
+        name
+        for action in parser._actions
+        if isinstance(action, argparse._SubParsersAction)
+        for name, sub in action.choices.items()
+        if name != command and any(flag in a.option_strings for a in sub._actions)
+    ]
+    return f"; it is an option of twoball {', '.join(others)}" if others else ""
 
 
 def chosen_command(argv: Sequence[str]) -> str | None:
@@ -231,10 +257,13 @@ def main(argv: Sequence[str] | None = None) -> int:
     exit status 2 (3 if the cause is not the user's path); see
     :mod:`twoball.cli.guard`.
     """
-    from twoball.cli.guard import guarded
+    from twoball.cli.guard import guarded, leave
 
     # the console script (no argv): this process is the run, its handlers last to the end
-    return guarded(_main, argv, process=argv is None)
+    status = guarded(_main, argv, process=argv is None)
+    if argv is None and status in (130, 143):  # interrupted: end within the second
+        leave(status)
+    return status
 
 
 def _main(argv: Sequence[str] | None = None) -> int:
@@ -266,9 +295,9 @@ def _main(argv: Sequence[str] | None = None) -> int:
 
         fail(cli_message(error, args))
     except DeadlineError as error:
-        from twoball.cli.flags import flag_of
+        from twoball.cli.flags import limit_flags
 
-        fail(" ".join(str(error).split()).replace("max_time", flag_of("max_time")), EXIT_NUMERICAL)
+        fail(limit_flags(" ".join(str(error).split())), EXIT_NUMERICAL)
     except NumericalError as error:
         fail(f"numerical trouble: {error}", EXIT_NUMERICAL)
     finally:  # main() called again in one process (tests, scripts) starts afresh

@@ -168,8 +168,10 @@ def gas_value(text: str | None, si: bool) -> str | float:
         return "none" if text is None else text
     if text is None:
         return 0.0
+    from twoball._common.ranges import decimal
+
     try:
-        value = float(text)
+        value = decimal(text)
     except ValueError:
         valid = (
             "the dimensionless g = 3 kappa P_abs R / C >= 0 with the ratios (a gas law "
@@ -291,8 +293,9 @@ def shell_eigen_arguments(args: argparse.Namespace) -> dict[str, Any]:
                 raise ParameterError(name, valid, getattr(args, name))
         out |= {
             "poisson": 0.5 if args.poisson is None else args.poisson,
-            "thickness_ratio": args.thickness_ratio or 0.0,
-            "prestress_ratio": args.prestress_ratio or 0.0,
+            # a value given ('' or 0) goes to the API as typed: only a missing one is 0
+            "thickness_ratio": 0.0 if args.thickness_ratio is None else args.thickness_ratio,
+            "prestress_ratio": 0.0 if args.prestress_ratio is None else args.prestress_ratio,
             "gas": gas_value(args.gas, si=False),
         }
         return out

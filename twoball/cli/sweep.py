@@ -21,6 +21,7 @@ from twoball.cli.console import (
     print_warnings,
 )
 from twoball.cli.contact_options import add_contact_options, body_options
+from twoball.cli.flags import limit_flags
 from twoball.cli.measured import (
     add_csv_option,
     add_measured_option,
@@ -34,6 +35,29 @@ from twoball.cli.values import integer
 from twoball.cli.values import number as number_value
 
 __all__ = ["register", "run"]
+
+
+def refuse_if_none_ran(labels: Sequence[str], errors: Sequence[str | None]) -> None:
+    """End the command with one error line if no point of the sweep could run.
+
+    ``labels`` name the points (``modes = 1400``), ``errors`` their error texts (None:
+    the point ran).  A sweep whose every point was refused -- each over the budget,
+    say -- has no result to show: its status is that of a refusal (2, e.g. a point's
+    budget), or 3 if a point failed for a numerical reason.  Some points failing is
+    not this: their errors are shown beside the others' results.
+    """
+    if not errors or any(e is None for e in errors):
+        return
+    from twoball.cli.main import EXIT_NUMERICAL, EXIT_USAGE, fail
+
+    kind, _, text = str(errors[0]).partition(": ")
+    refused = all(str(e).startswith(("BudgetError: ", "ParameterError: ")) for e in errors)
+    text = limit_flags(" ".join((text or kind).split()))
+    count = "the one point" if len(errors) == 1 else f"all {len(errors)} points"
+    fail(
+        f"no point of the sweep could run ({count} failed); at {labels[0]}: {text}",
+        EXIT_USAGE if refused else EXIT_NUMERICAL,
+    )
 
 
 def print_sweep(grid: Any, points: list[Any], rule: str | None = None) -> None:
@@ -72,7 +96,7 @@ def print_sweep(grid: Any, points: list[Any], rule: str | None = None) -> None:
                 number(r.ratio),
             ]
         if failed:
-            cells.append(p.error or "")
+            cells.append(limit_flags(p.error or ""))
         table.add_row(*cells)
     console(wide=failed).print(table)
 
@@ -141,6 +165,9 @@ def run(args: argparse.Namespace) -> int:
             progress=bar.update,
         )
     points = result.points
+    fields = [(name, _choices.SWEEP_PARAMETERS[name]) for name in grid.parameters]
+    labels = [", ".join(f"{n} = {getattr(p.case, f):g}" for n, f in fields) for p in points]
+    refuse_if_none_ran(labels, [p.error for p in points])
     print_notes(sweep_notes(points, result.phi_a_note))
     repeated = result.point_slips
     print_warnings([*result.warnings, *sweep_warnings(points, grid.parameters, repeated)])
@@ -229,6 +256,7 @@ def _run_bounce(args: argparse.Namespace) -> int:
             workers=workers(args),
             progress=bar.update,
         )
+    refuse_if_none_ran([f"{result.parameter} = {v:g}" for v in result.values], list(result.errors))
     done = [r for r in result.reports if r is not None]
     notes = [n for r in done for n in r.notes if n != OVERLAP_NOTE]  # said once, counted
     print_notes(list(dict.fromkeys(notes)) + caveat_lines(result, ("overlap",)))

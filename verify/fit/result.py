@@ -16,6 +16,7 @@ from typing import Any
 import numpy as np
 
 from twoball._common.errors import ParameterError
+from twoball._common.keywords import checked
 
 __all__ = ["FitResult", "Residuals"]
 
@@ -65,6 +66,7 @@ def _number(value: float | None) -> float | None:
     return None if value is None or not math.isfinite(value) else float(value)
 
 
+@checked
 @dataclass(frozen=True)
 class FitResult:
     """Model parameters fitted to measured rows by least squares, in SI.
@@ -383,6 +385,7 @@ class FitResult:
         return ", ".join(parts)
 
     # --- files ---------------------------------------------------------------------------
+    @checked
     def plot(self, out: str | os.PathLike[str], *, dpi: float | None = None) -> Path:
         """Figure of the data and the fitted model: each measured column against the rows'
         varying input (|v0|, the gap, or the row), with the residuals below.

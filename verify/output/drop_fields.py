@@ -20,7 +20,9 @@ pole on +z) at chosen instants and written through the field machinery of
 Frame data: ``Z_m`` (the centre's height) and ``floor_force_N``; with an upper
 body (the whole bounce) also ``body_height_m`` (the body's lowest point above
 the floor), ``body_gap_m`` (its gap above the ball's top, eq. (B2)) and
-``body_force_N`` (the contact force between them).
+``body_force_N`` (the contact force between them).  The forces are the
+impulse per 0.1 ms window (:mod:`twoball.verify.output.forces`), read at the
+frame's instant: a step cut short at a touch shows no force of its own.
 
 Field data: ``contact_time_s``, ``e2``, ``phi_a_max_rad``; with a body
 ``mass_ratio``, ``gap_m``, ``cap_angle_rad``, ``v1_ratio``, ``v2_ratio``,
@@ -42,6 +44,7 @@ import numpy as np
 from twoball.fem_membrane.mesh import SphereMesh
 from twoball.modal.floor.drop import DropResult
 from twoball.modal.parameters import Case
+from twoball.verify.output.forces import contact_forces
 from twoball.verify.output.render import BallScene
 from twoball.verify.output.series import TimeSeries
 
@@ -86,7 +89,7 @@ def _coordinates(
     tr = result.trajectory
     t = np.asarray(times_s, dtype=float) * case.wave_speed
     q = np.column_stack([np.interp(t, tr.t, tr.q[:, j]) for j in range(tr.q.shape[1])])
-    mid, force = result.force
+    mid, force = contact_forces(result, case)[1]["floor"]
     return q, np.interp(t, mid, force, left=0.0, right=0.0)
 
 
@@ -99,7 +102,7 @@ def body_frames(
         return {}
     q, _ = _coordinates(result, times_s, case)
     t = np.asarray(times_s, dtype=float) * case.wave_speed
-    mid, force = result.body_force
+    mid, force = contact_forces(result, case)[1]["body"]
     force_unit = mass * case.radius * case.wave_speed**2
     return {
         "body_height_m": q[:, system.body_coordinate] * case.radius,

@@ -12,6 +12,7 @@ from typing import Any
 
 from twoball._common.choices import FIELD_BACKENDS
 from twoball._common.errors import ParameterError
+from twoball._common.keywords import checked
 
 __all__ = [
     "BACKENDS",
@@ -55,6 +56,7 @@ def check_frame_choice(frames: Any, name: str = "frames") -> int | tuple[float, 
     return tuple(float(t) for t in times)
 
 
+@checked
 @dataclass(frozen=True)
 class RenderOptions:
     """Which instants are drawn, and how: one picture or an animation.
@@ -116,6 +118,7 @@ class RenderOptions:
         return {"warp": self.warp, "size": size, "fps": self.fps, "frames": frames}
 
 
+@checked
 @dataclass(frozen=True)
 class PlotOptions:
     """What a figure of :func:`twoball.plot` shows and at what resolution.

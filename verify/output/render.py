@@ -24,11 +24,14 @@ import os
 from collections.abc import Callable, Iterator
 from dataclasses import dataclass, field
 from pathlib import Path
+from typing import Any
 
 import numpy as np
 
+from twoball._common.child import ChildDied
 from twoball._common.choices import DEFAULT_SIZE
-from twoball._common.errors import ParameterError
+from twoball._common.errors import NumericalError, ParameterError
+from twoball._common.estimate import BASE_MEMORY, Estimate
 from twoball._common.signals import checkpoint, held_signals
 from twoball._common.staging import staged_file
 
@@ -146,9 +149,11 @@ def check_size(size: tuple[int, int] | str, flag: str = "size") -> tuple[int, in
     """Image size ``(width, height)`` in pixels from a tuple or a ``WxH`` string."""
     valid = f"WIDTHxHEIGHT in pixels, each an integer in [16, {MAX_SIZE}]"
     if isinstance(size, str):
+        from twoball._common.ranges import whole
+
         parts = size.lower().replace(" ", "").split("x")
         try:
-            width, height = (int(p) for p in parts)
+            width, height = (whole(p) for p in parts)
         except ValueError:
             raise ParameterError(flag, valid, size) from None
     else:
@@ -531,6 +536,38 @@ def _check_mp4(target: Path) -> None:
     )
 
 
+#: Drawing one frame [s per pixel] and its fixed part [s]: VTK off-screen at 640x480, the
+#: GIF's quantisation included (measured 0.19 s a frame at a load of 5.5 on two cores,
+#: 0.07 s idle; a level-1 ball: the mesh's size hardly counts).
+RENDER_SECONDS_PER_PIXEL = 2.0e-7
+RENDER_SECONDS_PER_FRAME = 0.01
+#: Starting the renderer: its child process, VTK's import and its window [s].
+RENDER_START_SECONDS = 3.0
+#: Address space the renderer maps beyond the interpreter's (VTK's off-screen window and
+#: its thread pools; measured 0.95-1.0 GiB of VmPeak at 5 and 60 frames of 640x480).
+RENDER_ADDRESS = 1 << 30
+#: Resident memory of the renderer beside the frames [bytes].
+RENDER_MEMORY = 200 << 20
+#: Bytes a GIF holds per pixel of every frame: the RGB frames, their stack, the indexed one.
+GIF_BYTES_PER_PIXEL = 7
+
+
+def render_estimate(frames: int, size: tuple[int, int], kind: str) -> Estimate:
+    """Memory, address space and time of drawing ``frames`` of ``size`` into a ``kind`` file.
+
+    A GIF keeps every frame until it is encoded (one palette for all); PNG and MP4
+    keep one at a time.  The fields themselves are estimated apart
+    (:func:`twoball.verify.output.fields.frames_estimate`).
+    """
+    pixels = float(size[0]) * float(size[1])
+    kept = frames if kind == ".gif" else 1
+    memory = BASE_MEMORY + RENDER_MEMORY + GIF_BYTES_PER_PIXEL * pixels * kept
+    seconds = RENDER_START_SECONDS + frames * (
+        RENDER_SECONDS_PER_FRAME + RENDER_SECONDS_PER_PIXEL * pixels
+    )
+    return Estimate(memory, seconds, address=memory + RENDER_ADDRESS)
+
+
 def render_scene(
     path: str | os.PathLike[str],
     scene: BallScene,
@@ -539,6 +576,7 @@ def render_scene(
     size: tuple[int, int] | str = DEFAULT_SIZE,
     fps: float = 20.0,
     progress: Callable[[int], None] | None = None,
+    monitor: Any = None,
 ) -> Path:
     """Render ``scene`` to a PNG (its first frame), an animated GIF or an MP4.
 
@@ -556,7 +594,15 @@ def render_scene(
     fps : float
         Frames per second of an animation.
     progress : callable, optional
-        Called with the number of frames drawn so far, after each frame.
+        Called with the number of frames drawn so far, after each frame (drawn
+        in process only).
+    monitor : Monitor, optional
+        The caller's monitor (:class:`~twoball._common.monitor.Monitor`).  One with
+        ``long_call`` (the verbs' :class:`~twoball._common.watch.Watch`) draws in
+        a child process: the time limit and a signal act within a fraction of a
+        second whatever VTK is doing, and an allocation that fails inside VTK (a
+        C++ abort under an address-space limit) ends the child, not this
+        process -- it is raised here as :class:`MemoryError`.
 
     Returns
     -------
@@ -568,24 +614,84 @@ def render_scene(
     size = check_size(size)
     warp = check_warp(warp)
     check_scene_warp(scene, warp)
-    if not (math.isfinite(fps) and fps > 0):
+    from twoball._common.errors import real_number
+
+    if not real_number("fps", fps, "a finite number > 0") > 0:
         raise ParameterError("fps", "a finite number > 0", fps)
     if kind == ".mp4":
         size = round_size(size)
     with staged_file(out) as target:
-        images = render_frames(scene, warp, size)
-        if progress is not None:
-            images = _counted(images, progress)
-        try:
-            if kind == ".png":
-                _write_png(target, images)
-            elif kind == ".gif":
-                _write_gif(target, images, fps)
-            else:
-                _write_mp4(target, images, fps)
-        finally:
-            images.close()
+        runner = getattr(monitor, "long_call", None)
+        if runner is None:
+            draw(str(target), scene, warp, size, fps, progress)
+        else:
+            doing = f"drawing {scene.times.size} frame(s) into {out.name}"
+            try:
+                runner(draw, str(target), scene, warp, size, fps, doing=doing)
+            except ChildDied as died:
+                raise renderer_died(died) from None
     return out
+
+
+def draw(
+    target: str,
+    scene: BallScene,
+    warp: float | None,
+    size: tuple[int, int],
+    fps: float,
+    progress: Callable[[int], None] | None = None,
+) -> int:
+    """Draw ``scene`` into the file ``target`` (its suffix the kind); the frames written.
+
+    In the renderer's child process (:func:`render_scene` with a monitor) the C
+    libraries' own messages on standard error (the EGL loader's warnings when an
+    allocation fails) are dropped: what the child has to say comes back as its
+    outcome, and the command's error stays one line.
+    """
+    from twoball._common.child import CHILD_ENV
+
+    if os.environ.get(CHILD_ENV):
+        null = os.open(os.devnull, os.O_WRONLY)
+        os.dup2(null, 2)
+        os.close(null)
+    path = Path(target)
+    kind = path.suffix.lower()
+    images = render_frames(scene, warp, size)
+    if progress is not None:
+        images = _counted(images, progress)
+    try:
+        if kind == ".png":
+            return _write_png(path, images)
+        if kind == ".gif":
+            return _write_gif(path, images, fps)
+        return _write_mp4(path, images, fps)
+    finally:
+        images.close()  # type: ignore[attr-defined]
+
+
+def renderer_died(died: ChildDied) -> BaseException:
+    """What a renderer's child that ended without an outcome means here.
+
+    Ended by SIGABRT (a C++ ``bad_alloc``), SIGSEGV or SIGBUS (a failed ``malloc``
+    used all the same) under an address-space limit, or by SIGKILL (the OOM
+    killer): out of memory (:class:`MemoryError`: one line, exit status 3).
+    Anything else: :class:`~twoball.NumericalError` naming the status (exit 3).
+    """
+    import resource
+    import signal
+
+    code = died.returncode if died.returncode is not None else 0
+    number = -code
+    try:
+        limited = resource.getrlimit(resource.RLIMIT_AS)[0] != resource.RLIM_INFINITY
+    except (OSError, ValueError):
+        limited = False
+    crashes = {signal.SIGABRT, signal.SIGSEGV, signal.SIGBUS}
+    if number == signal.SIGKILL or (limited and number in crashes):
+        name = signal.Signals(number).name
+        where = " under the address-space limit (ulimit -v)" if limited else ""
+        return MemoryError(f"the renderer (VTK) ended by {name}{where}")
+    return NumericalError(str(died))
 
 
 def _counted(images: Iterator[np.ndarray], progress: Callable[[int], None]) -> Iterator[np.ndarray]:

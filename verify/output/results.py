@@ -11,9 +11,12 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
 
+from twoball._common.keywords import checked
+
 __all__ = ["ExportResult", "PlotResult", "RenderResult"]
 
 
+@checked
 @dataclass(frozen=True)
 class ExportResult:
     """Files written by :func:`export` and what they hold (SI).
@@ -64,6 +67,7 @@ class ExportResult:
         }
 
 
+@checked
 @dataclass(frozen=True)
 class RenderResult:
     """The picture or animation written by :func:`render`: ``file`` (and ``files``, one).
@@ -107,6 +111,7 @@ class RenderResult:
         }
 
 
+@checked
 @dataclass(frozen=True)
 class PlotResult:
     """The figure written by :func:`plot` (``file``, and ``files``, one), with one line per

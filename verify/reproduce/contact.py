@@ -51,7 +51,7 @@ def part_contact(ctx: Context) -> Section:
     ax.set_ylabel("v1 / |v0|")
     ax.set_title("Basketball, |v0| = 4.1 m/s, D = 0.13, N = 30")
     ax.grid(True, alpha=0.3)
-    ax.legend(fontsize=7)
+    ax.legend(fontsize=8)
     name = save(ctx, fig, "contact_mass_ratio.png")
     sec = Section("contact", "Beyond the paper: an upper body of finite mass (docs: contact)")
     sec.paragraphs.append(

@@ -1,13 +1,14 @@
 """``twoball reproduce``: recompute the paper's figures and numbers, side by side with ours.
 
 The parts (see :data:`PARTS`) each write their PNG figures and return a section of
-the report; :func:`reproduce` runs the selected parts into a scratch folder and
-puts it in place of the output folder only when everything has been written
-(:func:`twoball._common.staging.staged_folder`), so a failed or interrupted run leaves no
-partial output.  The output folder is recognised by twoball's marker file and
-its list of files, never by a file name: a folder holding anything else is
-refused.  ``reproduction.json`` is byte-identical for the same inputs; the
-date and run times go to ``provenance.json``.
+the report; :func:`reproduce` runs the selected parts in a private working folder
+and, as each part finishes, puts everything finished so far in place of the
+output folder (:func:`twoball._common.staging.staged_folder`) with a report that
+names the parts still missing.  A run stopped at its time limit or by a signal
+keeps its finished parts, each whole; no part is ever half written.  The output
+folder is recognised by twoball's marker file and its list of files, never by a
+file name: a folder holding anything else is refused.  ``reproduction.json`` is
+byte-identical for the same inputs; the date and run times go to ``provenance.json``.
 """
 
 from __future__ import annotations
@@ -17,6 +18,7 @@ import os
 import platform
 import time
 from collections.abc import Callable, Sequence
+from dataclasses import dataclass
 from datetime import UTC, datetime
 from pathlib import Path
 from typing import Any
@@ -59,10 +61,16 @@ DATA = "reproduction.json"
 PROVENANCE = "provenance.json"
 
 
-def parse_only(text: str | None) -> list[str]:
-    """``only="a,b"`` -> part names in report order; None or empty -> all parts."""
+def parse_only(text: str | Sequence[str] | None) -> list[str]:
+    """``only="a,b"`` or ``["a", "b"]`` -> part names in report order; None -> all parts."""
     if text is None:
         return list(PARTS)
+    valid = "a comma-separated subset of " + ",".join(PARTS)
+    if not isinstance(text, str):
+        parts = list(text) if isinstance(text, list | tuple) else None
+        if parts is None or not all(isinstance(part, str) for part in parts):
+            raise ParameterError("only", valid + " (a str or a list of str)", text)
+        text = ",".join(parts)
     names = [t.strip() for t in text.split(",") if t.strip()]
     unknown = [n for n in names if n not in PARTS]
     if not names or unknown:
@@ -91,16 +99,21 @@ def reproduce(
 ) -> tuple[Path, list[Section]]:
     """Run the selected parts and write figures, ``reproduction.md`` and ``.json`` to ``out``.
 
-    Returns the output directory and the sections.  Nothing is written to ``out``
-    unless every part succeeded.  ``progress(label, total)`` starts a counted task
-    and returns its ``update(done)``: :meth:`twoball._common.progress.Reporter.task`.
+    Returns the output directory and the sections.  The parts run in a private
+    working folder; as each finishes, ``out`` is replaced by everything finished
+    so far (:func:`publish`), its report listing the parts still missing.  A run
+    stopped at the time limit (:class:`~twoball._common.budget.DeadlineError`) or
+    by SIGINT/SIGTERM therefore leaves every finished part in ``out`` with a
+    report that says which parts are missing and why, and then raises as before
+    (exit status 3, 130, 143); stopped before its first part finished, it leaves
+    ``out`` as it was.  ``progress(label, total)`` starts a counted task and
+    returns its ``update(done)``: :meth:`twoball._common.progress.Reporter.task`.
     ``monitor`` (:class:`~twoball._common.monitor.Monitor`) is handed to the runs
     of the parts (the whole bounce's drops).
     """
-    from twoball.verify.output.report_files import result_files
-
-    from twoball._common.provenance import block
-    from twoball._common.staging import staged_folder
+    from twoball._common.budget import DeadlineError
+    from twoball._common.signals import pause
+    from twoball._common.staging import scratch_folder
 
     target = check_output(out)
     names = list(PARTS) if only is None else list(only)
@@ -108,35 +121,113 @@ def reproduce(
     try:
         if own_runner:
             runner = Runner(workers=1).__enter__()
-        with staged_folder(target, "out", "twoball reproduce") as staging:
-            ctx = Context(staging, runner, monitor=monitor)
+        assert runner is not None
+        with scratch_folder(target, "out") as work:
+            ctx = Context(work, runner, monitor=monitor)
             if progress is not None:
                 ctx.progress = progress
-            sections = []
+            sections: list[Section] = []
             started = time.perf_counter()
-            for name in names:
-                update = ctx.progress(f"part {name}", 1)
-                t0 = time.perf_counter()
-                section = PARTS[name](ctx)
-                section.seconds = time.perf_counter() - t0
-                sections.append(section)
-                update(1)
-            total = time.perf_counter() - started
-            (staging / REPORT).write_text(
-                render_markdown(sections, runner.describe(), total, command), encoding="utf-8"
-            )
-            data = json.loads(
-                json.dumps(report_data(sections, runner.describe(), total), default=_json)
-            )
-            arguments = {"out": out, "only": names, "runner": runner.describe()}
-            data["provenance"] = block(None, "twoball.verify.reproduce.driver.reproduce", arguments)
-            files = result_files(data, ("seconds", "generated", "runner"))
-            (staging / DATA).write_text(files["results.json"], encoding="utf-8")
-            (staging / PROVENANCE).write_text(files[PROVENANCE], encoding="utf-8")
+            run = Run(target, work, names, runner.describe(), command, out, started)
+            try:
+                for name in names:
+                    update = ctx.progress(f"part {name}", 1)
+                    t0 = time.perf_counter()
+                    section = PARTS[name](ctx)
+                    section.seconds = time.perf_counter() - t0
+                    sections.append(section)
+                    update(1)
+                    run.publish(sections)
+                    pause("part")  # test hook: a part is committed, more may follow
+            except DeadlineError as stop:
+                if not sections:
+                    raise
+                why = " ".join(str(stop).split()).replace(" (raise the time limit, max_time)", "")
+                run.publish(sections, why)
+                raise DeadlineError(f"{stop}; {run.kept(sections)}") from None
+            except KeyboardInterrupt as stop:
+                if sections:
+                    name = getattr(stop, "signum", None)
+                    how = "SIGTERM" if name == 15 else "SIGINT" if name == 2 else "an interrupt"
+                    run.publish(sections, f"interrupted by {how}")
+                raise
     finally:
         if own_runner and runner is not None:
             runner.close()
     return target, sections
+
+
+@dataclass(frozen=True)
+class Run:
+    """One reproduction in progress: where it works, what it was asked, when it started."""
+
+    target: Path
+    work: Path
+    names: list[str]
+    where: str
+    command: str
+    out: str | os.PathLike
+    started: float
+
+    def missing(self, sections: Sequence[Section]) -> list[str]:
+        """The asked parts not (yet) in ``sections``, in report order."""
+        done = {s.key for s in sections}
+        return [n for n in self.names if n not in done]
+
+    def kept(self, sections: Sequence[Section]) -> str:
+        """``kept the finished parts a, b in DIR (reproduction.md lists the missing ones)``."""
+        done = ", ".join(s.key for s in sections)
+        return f"kept the finished parts {done} in {self.target} ({REPORT} lists the missing ones)"
+
+    def publish(self, sections: Sequence[Section], stopped: str | None = None) -> None:
+        """Replace the output folder by the finished parts and their report.
+
+        ``stopped``: why the run ended early (None: it goes on, or is complete).
+        """
+        import shutil
+
+        from twoball.verify.output.report_files import result_files
+
+        from twoball._common.provenance import block
+        from twoball._common.staging import staged_folder
+
+        missing = self.missing(sections)
+        total = time.perf_counter() - self.started
+        with staged_folder(self.target, "out", "twoball reproduce") as staging:
+            shutil.copytree(self.work, staging, dirs_exist_ok=True)
+            text = render_markdown(list(sections), self.where, total, self.command)
+            if missing:
+                text = incomplete_note(text, missing, stopped)
+            (staging / REPORT).write_text(text, encoding="utf-8")
+            plain = json.dumps(report_data(list(sections), self.where, total), default=_json)
+            data = json.loads(plain)
+            if missing:
+                data["missing"] = missing
+                data["stopped"] = stopped
+            arguments = {"out": self.out, "only": self.names, "runner": self.where}
+            data["provenance"] = block(None, "twoball.verify.reproduce.driver.reproduce", arguments)
+            files = result_files(data, ("seconds", "generated", "runner"))
+            (staging / DATA).write_text(files["results.json"], encoding="utf-8")
+            (staging / PROVENANCE).write_text(files[PROVENANCE], encoding="utf-8")
+
+
+def incomplete_note(text: str, missing: Sequence[str], stopped: str | None) -> str:
+    """``text`` (the report) with a paragraph after its title naming the missing parts."""
+    why = (
+        f"The run was {stopped}."
+        if stopped is not None and stopped.startswith("interrupted")
+        else f"The run {stopped}."
+        if stopped is not None
+        else "It was written while the run went on; if the run has ended since, it was "
+        "stopped (killed) before these parts finished."
+    )
+    note = (
+        f"**Incomplete: {len(missing)} part(s) missing: {', '.join(missing)}.**  {why}  "
+        f"Every part listed below is complete.  `twoball reproduce --only "
+        f"{','.join(missing)}` recomputes the missing ones (into another folder)."
+    )
+    title, _, rest = text.partition("\n\n")
+    return f"{title}\n\n{note}\n\n{rest}"
 
 
 def _json(value: Any) -> Any:

@@ -26,6 +26,7 @@ from twoball.modal.parameters import Case
 from twoball.verify.sweeps.sweeps import parse_range
 
 from twoball._common.errors import ParameterError
+from twoball._common.keywords import checked
 
 __all__ = [
     "BOUNCE_PARAMETERS",
@@ -56,10 +57,18 @@ def bounce_values(parameters: Sequence[str], values: Sequence[object]) -> tuple[
     if len(values) != 1:
         raise ParameterError("values", "given once, for the one parameter", list(values))
     items = values[0]
-    array = parse_range(items) if isinstance(items, str) else np.asarray(items, dtype=float)
-    array = np.atleast_1d(array).astype(float)
+    valid = "a non-empty list of finite numbers"
+    if isinstance(items, str):
+        array = np.atleast_1d(parse_range(items)).astype(float)
+    else:
+        from twoball._common.ranges import real
+
+        try:  # numbers only: float("0_01") and bools would pass as other values
+            array = np.array([real(v) for v in np.atleast_1d(np.asarray(items, dtype=object))])
+        except (TypeError, ValueError):
+            raise ParameterError("values", valid, items) from None
     if array.ndim != 1 or array.size < 1 or not np.all(np.isfinite(array)):
-        raise ParameterError("values", "a non-empty list of finite numbers", items)
+        raise ParameterError("values", valid, items)
     return parameters[0], array
 
 
@@ -107,6 +116,7 @@ def bounce_points(
     return [(case, drop, replace(base, mass_ratio=float(v))) for v in values]
 
 
+@checked
 @dataclass(frozen=True)
 class BounceSweep:
     """Drops over one parameter (``v0``, ``drop-height``, ``gap``, ``mass-ratio``, ``damping``).
@@ -168,6 +178,7 @@ class BounceSweep:
             "provenance": self.provenance,
         }
 
+    @checked
     def plot(
         self, out: str | os.PathLike[str], *, dpi: float | None = None, measured: Any = None
     ) -> Path:
@@ -181,9 +192,12 @@ class BounceSweep:
         them) draws the user's points on the panels of the same quantities
         (:mod:`twoball.verify.output.figures.measured`).
         """
-        from twoball.verify.output.figures import save_figure
+        from twoball.verify.output.figures import figure_format, save_figure
         from twoball.verify.output.figures.bounce import speeds_figure
 
+        from twoball._common.staging import check_path_type
+
+        figure_format(Path(check_path_type(out)), "out")  # before the figure is drawn
         done = [r for r in self.reports if r is not None]
         if not done:
             raise ParameterError("values", "at least one drop that ran, to plot", None)
@@ -214,6 +228,7 @@ class BounceSweep:
             draw_overlay(figure, overlay_for(self, data))
         return save_figure(figure, out, "plot", dpi)
 
+    @checked
     def to_csv(self, path: str | os.PathLike[str]) -> Path:
         """Write the table as CSV: one row per value, SI columns with the unit in the name.
 

@@ -124,15 +124,16 @@ def save_figure(
         Writing failed (full disk, ...); it names ``path``, and ``path`` is unchanged.
     """
     import matplotlib
-    from twoball.verify.output.figures.style import STYLE
+    from twoball.verify.output.figures.style import style_rc
 
-    from twoball._common.staging import staged_file
+    from twoball._common.staging import check_path_type, staged_file
 
-    out = Path(path).expanduser()
+    out = Path(check_path_type(path, flag)).expanduser()
     kind = figure_format(out, flag)
     resolution = check_dpi(dpi, dpi_flag)
     metadata = {"Creator": "twoball"} if kind in ("pdf", "svg", "png", "eps", "ps") else None
-    with staged_file(out, flag) as scratch, matplotlib.rc_context(STYLE):
+    # the style's rcParams again: colours named "C0".."C5" resolve when drawn
+    with staged_file(out, flag) as scratch, matplotlib.rc_context(style_rc()):
         figure.savefig(scratch, dpi=resolution, format=kind, metadata=metadata)
     return out
 

@@ -29,6 +29,7 @@ from twoball.verify.output.figures.style import (
     styled,
     time_label,
 )
+from twoball.verify.output.forces import contact_forces
 
 from twoball._common.errors import ParameterError
 
@@ -39,6 +40,33 @@ __all__ = ["TABLE2", "drop_figure", "speeds_figure", "whole_figure"]
 
 #: Table 2 of the paper: the basketball's measured contact angle at 4.1 m/s.
 TABLE2 = (4.1, 2.6)
+#: Lines marking events (touches, separations, the contact's end): thin, light and
+#: behind the data (zorder below the curves' 2 and the stacks' 1), so they cover none.
+EVENT_LINE = {"lw": 0.4, "alpha": 0.35, "zorder": 0.5}
+#: A run of events closer together than this share of the time axis (a chatter) is
+#: drawn as one band from its first to its last event instead of a line each.
+EVENT_CLUSTER = 0.01
+EVENT_BAND = {"lw": 0.0, "alpha": 0.12, "zorder": 0.5}
+
+
+def event_clusters(times: Sequence[float], gap: float) -> list[tuple[float, float]]:
+    """``times`` grouped into runs whose neighbours lie closer than ``gap``: (first, last).
+
+    >>> event_clusters([0.0, 5.0, 5.1, 5.15, 9.0], 0.2)
+    [(0.0, 0.0), (5.0, 5.15), (9.0, 9.0)]
+    """
+    runs: list[tuple[float, float]] = []
+    for t in sorted(times):
+        if runs and t - runs[-1][1] < gap:
+            runs[-1] = (runs[-1][0], t)
+        else:
+            runs.append((t, t))
+    return runs
+
+
+def force_label(window_s: float) -> str:
+    """The force axis label: the mean over windows of ``window_s`` seconds, in N."""
+    return label(rf"$\bar F$, impulse per {window_s * 1e3:.2g} ms window", "N")
 
 
 @styled
@@ -53,11 +81,12 @@ def drop_figure(r: DropResult, case: Case, mass: float, title: str = "") -> Figu
     tr, system = r.trajectory, r.system
     fig = new_figure(8.0, 8.0)
     axes = fig.subplots(4, 1, sharex=True)
-    mid, force = r.force
+    window, forces = contact_forces(r, case)
+    mid, force = forces["floor"]
     axes[0].plot(mid * to_ms, force * force_unit, label="floor force")
     weight = mass * case.g
     axes[0].axhline(weight, color=REFERENCE_COLOUR, lw=0.8, ls=":", label="weight $m_2 g$")
-    axes[0].set_ylabel(label("$F$", "N"))
+    axes[0].set_ylabel(force_label(window))
     axes[0].legend(loc="upper right")
     _contact_angle_panel(axes[1], r, case, to_ms)
     height = (tr.q[:, r.system.centre] - 1.0) * case.radius * 1e3
@@ -65,7 +94,7 @@ def drop_figure(r: DropResult, case: Case, mass: float, title: str = "") -> Figu
     axes[2].axhline(0.0, color=REFERENCE_COLOUR, lw=0.6)
     if r.contact_time is not None:
         for ax in axes:
-            ax.axvline(r.contact_time * to_ms, color=REFERENCE_COLOUR, lw=0.6, ls="-.")
+            ax.axvline(r.contact_time * to_ms, **EVENT_LINE, color=REFERENCE_COLOUR, ls="-.")
     axes[2].set_ylabel(label("$Z - R$", "mm"))
     axes[2].legend(loc="lower right")
     parts = system.energies(tr.q, tr.v)
@@ -121,7 +150,7 @@ def _contact_angle_panel(ax: Any, r: DropResult, case: Case, to_ms: float) -> No
     span = math.pi - low
     ax.set_ylim(low - 0.9 * span, math.pi + 0.05 * span)
     ax.set_ylabel(label(r"$\phi_a$", "rad"))
-    ax.legend(loc="lower center", ncols=2, fontsize="small")
+    ax.legend(loc="lower center", ncols=2)
 
 
 @styled
@@ -180,11 +209,13 @@ def whole_figure(
     Heights above the floor of the ball's lowest point, centre and top (the
     cap's mean) and of the body's lowest point; the gap between the body and
     the top (eq. (B2): the degree-1 precursor opens it at once when they start
-    touching); the floor's and the body's contact forces; the centre's and the
-    body's velocities (with ``icm`` = (v1, v2) [m/s] of eq. (2.5) as dashed
-    lines); the energy books, the body's kinetic energy among them.  Touches
-    and separations of both contacts are marked: floor (grey) and body
-    (orange).  Legends stand beside the panels.
+    touching); the floor's and the body's contact forces, each the impulse per
+    window of :data:`FORCE_WINDOW_S` (:func:`mean_force`, impacts included);
+    the centre's and the body's velocities (with ``icm`` = (v1, v2) [m/s] of
+    eq. (2.5) as dashed lines); the energy books, the body's kinetic energy
+    among them.  Touches and separations of both contacts are marked behind
+    the data: floor (grey) and body (orange), thin lines, a chatter of them as
+    one light band (:func:`event_clusters`).  Legends stand beside the panels.
     """
     system = r.system
     if system.body is None or r.body is None:
@@ -215,11 +246,14 @@ def whole_figure(
     axes[1].axhline(0.0, color=REFERENCE_COLOUR, lw=0.8)
     axes[1].set_ylabel(label("gap", "mm"))
     axes[1].legend(**beside)
-    mid, floor_force = r.force
-    _, body_force = r.body_force
-    axes[2].plot(mid * to_ms, floor_force * force_unit, color="C2", label="floor on the ball")
-    axes[2].plot(mid * to_ms, body_force * force_unit, color="C1", label="ball on the body")
-    axes[2].set_ylabel(label("$F$", "N"))
+    window, forces = contact_forces(r, case)
+    for name, colour, text in (
+        ("floor", "C2", "floor on the ball"),
+        ("body", "C1", "ball on the body"),
+    ):
+        mid, force = forces[name]
+        axes[2].plot(mid * to_ms, force * force_unit, color=colour, label=text)
+    axes[2].set_ylabel(force_label(window))
     axes[2].legend(**beside)
     axes[3].plot(t_ms, tr.v[:, system.centre] * speed, color="C0", label="ball's centre $Z'$")
     axes[3].plot(t_ms, tr.v[:, system.body_coordinate] * speed, color="C1", label="body $s'$")
@@ -246,11 +280,15 @@ def whole_figure(
     axes[4].set_ylabel(label("$E$", "J"))
     axes[4].set_xlabel(time_label("after the first floor touch"))
     axes[4].legend(**beside)
-    for event in r.body.events:
-        colour = REFERENCE_COLOUR if event.contact == "floor" else "C1"
-        style = "-" if event.kind == "touch" else ":"
-        for ax in axes:
-            ax.axvline(event.t * to_ms, color=colour, lw=0.4, ls=style, alpha=0.5)
+    span = float(t_ms[-1] - t_ms[0]) if t_ms.size > 1 else 1.0
+    for contact, colour in (("floor", REFERENCE_COLOUR), ("body", "C1")):
+        events = [e for e in r.body.events if e.contact == contact]
+        for first, last in event_clusters([e.t * to_ms for e in events], EVENT_CLUSTER * span):
+            for ax in axes:
+                if first == last:
+                    ax.axvline(first, **EVENT_LINE, color=colour)
+                else:  # a chatter of touches and separations: one light band
+                    ax.axvspan(first, last, **EVENT_BAND, color=colour)
     b = r.body
     v1 = "–" if b.v1 is None else f"{b.v1 / r.settings.v0:.3f}"
     v2 = "–" if b.v2 is None else f"{b.v2 / r.settings.v0:.3f}"
@@ -389,6 +427,6 @@ def gap_figure(
     if seen:  # what the marked points mean, and where the docs measure it
         import textwrap
 
-        lines = [textwrap.fill(f"{CAVEAT_MARKS[t][2]}: {CAVEATS[t]}", 150) for t in seen]
-        fig.supxlabel("\n".join(lines), fontsize=6.5, x=0.01, ha="left")
+        lines = [textwrap.fill(f"{CAVEAT_MARKS[t][2]}: {CAVEATS[t]}", 120) for t in seen]
+        fig.supxlabel("\n".join(lines), fontsize=8, x=0.01, ha="left")
     return fig

@@ -22,6 +22,7 @@ from twoball.verify.output.figures.style import (
     REFERENCE_COLOUR,
     label,
     styled,
+    subject,
     time_label,
 )
 
@@ -96,9 +97,10 @@ def contact_pole_figure(model: CoupledModel, samples: int = 2500) -> Figure:
     _figure_legend(figure, grid)
     report = next(iter(model.backends.values())).report
     figure.suptitle(
-        rf"Cap ($a$ = {report.contact_radius_m * 1e3:.3g} mm) and body of mass ratio "
+        f"{subject(model.case)}: "
+        rf"cap ($a$ = {report.contact_radius_m * 1e3:.3g} mm) and body of mass ratio "
         rf"$\mu$ = {report.mass_ratio:g}, $e$ = {report.restitution:g}"
-        + (", finite elements − closed form below each" if compare else "")
+        + ("\nfinite elements − closed form below each" if compare else "")
     )
     return figure
 
@@ -164,7 +166,7 @@ def _draw_backend(
             xy=(t_l, final * 1e3),
             xytext=(8, 8 if k == 0 else -14),
             textcoords="offset points",
-            fontsize=7,
+            fontsize=8,
             color=colour,
         )
 
@@ -183,7 +185,7 @@ def _figure_legend(figure: Any, axes: Any) -> None:
         list(entries),
         loc="outside lower center",
         ncol=3,
-        fontsize=7,
+        fontsize=8,
         frameon=False,
     )
 

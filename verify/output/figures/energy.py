@@ -15,6 +15,7 @@ from twoball.verify.output.figures.style import (
     chunks,
     label,
     styled,
+    subject,
     time_label,
 )
 
@@ -89,5 +90,8 @@ def energy_figure(
             below.ticklabel_format(axis="y", style="sci", scilimits=(-2, 3))
         grid[-1, column].set_xlabel(time_label())
     grid[0, 0].set_ylabel(label("$E/m$", "J/kg"))
-    fig.suptitle("Energy per kilogram of membrane: time stepping against the modal closed form")
+    fig.suptitle(
+        f"{subject(case)}: energy per kilogram of membrane,\n"
+        "time stepping against the modal closed form"
+    )
     return fig

@@ -28,6 +28,7 @@ from twoball.verify.output.figures.style import (
     difference_unit,
     label,
     styled,
+    subject,
     time_label,
 )
 
@@ -145,7 +146,7 @@ def pole_figure(model: BallModel, samples: int = 2500) -> Figure:
                 xy=(t_l_ms, mark.u[0] * si[0] * 1e3),
                 xytext=(8, 8 if name == "legendre" else -14),
                 textcoords="offset points",
-                fontsize=7,
+                fontsize=8,
                 color=lines[0].get_color(),
             )
     axes[2].axhline(-case.g, color=REFERENCE_COLOUR, linewidth=0.8, linestyle=":", label="$-g$")
@@ -154,7 +155,7 @@ def pole_figure(model: BallModel, samples: int = 2500) -> Figure:
         axis.set_ylabel(label(symbol, unit))
     _liftoff_legend(axes[2])
     axes[1].legend(loc="best")
-    axes[2].legend(loc="lower right")
+    axes[2].legend(loc="best")
     if compare:
         fem, ref = states["fem"], states["legendre"]
         diff = [
@@ -165,7 +166,8 @@ def pole_figure(model: BallModel, samples: int = 2500) -> Figure:
         grid[1].legend(loc="upper right")
     grid[-1].set_xlabel(time_label("after maximal compression"))
     figure.suptitle(
-        r"Motion of the pole ($\varphi = 0$)"
+        f"{subject(model.case)}: "
+        + r"motion of the pole ($\varphi = 0$)"
         + (", finite elements − closed form below each" if compare else ""),
     )
     return figure
@@ -260,11 +262,12 @@ def pole_motion_figure(
                 )
         if compare:
             draw_differences(rows[1::2], ms, diffs)
-        _liftoff_legend(axes[2])
-        axes[0].legend(loc="best", fontsize=7)
-        axes[2].legend(loc="lower right", fontsize=7)
+        axes[0].legend(loc="best", fontsize=8)
+        if column == len(groups) - 1:  # the same two entries in every column: once, beside
+            _liftoff_legend(axes[2])
+            axes[2].legend(loc="upper left", bbox_to_anchor=(1.01, 1.0), fontsize=8)
         rows[-1].set_xlabel(time_label("after maximal compression"))
-    title = "Pole motion of every backend; dots and dashed line: lift-off"
+    title = f"{subject(case)}: pole motion of every backend; dots and dashed line: lift-off"
     if compare and reference is not None:
         title += f"; below each: difference to {_pretty(reference.label)}"
     fig.suptitle(title)

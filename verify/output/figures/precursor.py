@@ -39,6 +39,7 @@ from twoball.verify.output.figures.style import (
     REFERENCE_COLOUR,
     label,
     styled,
+    subject,
     time_label,
 )
 
@@ -120,7 +121,12 @@ def law_curves(
     else:
         laws.append((ratio, own))
         matched = matched_rayleigh(case, base)
-        laws.append((_rayleigh_label("Rayleigh, same ratio at ω₁ and ω_E", matched), matched))
+        laws.append(
+            (
+                _rayleigh_label(r"Rayleigh, same ratio at $\omega_1$ and $\omega_E$", matched),
+                matched,
+            )
+        )
     laws.append(("undamped (D = 0)", ModalRatio(0.0)))
     curves = []
     for name, law in laws:
@@ -188,13 +194,15 @@ def precursor_figure(
         xytext=(-4, 0),
         textcoords="offset points",
         ha="right",
-        fontsize=7,
+        fontsize=8,
     )
     axes[2].set_ylim(1e-7, None)
     axes[0].set_ylabel(label("$u(t, 0)$", "mm"))
     axes[1].set_ylabel(label("$u(t, 0)$", "mm"))
     axes[2].set_ylabel(label(r"$|u(t, 0)|$", "mm"))
-    axes[0].legend(loc="best", fontsize=7)
+    # the laws' curves fill panel (a): their legend goes below the figure, over no data
+    handles, names = axes[0].get_legend_handles_labels()
+    figure.legend(handles, names, loc="outside lower center", ncols=2)
     axes[0].set_title(f"(a) N = {case.modes}, the case's series; dots: lift-off", fontsize=9)
     axes[1].set_title(
         f"(b) before the front (N = {CONVERGED_FACTOR * case.modes}, converged)", fontsize=9
@@ -205,8 +213,9 @@ def precursor_figure(
     for axis in axes:
         axis.set_xlabel(time_label("after maximal compression"))
     figure.suptitle(
-        "Pole displacement under each damping law: the paper's ratio is non-local "
-        f"(R = {case.radius:g} m, c = {case.wave_speed:g} 1/s, "
+        f"{subject(case)}: pole displacement under each damping law, the paper's ratio "
+        "is non-local\n"
+        f"($R$ = {case.radius:g} m, $c$ = {case.wave_speed:g} 1/s, "
         + r"$\varphi_a$"
         + f" = {case.phi_a:.4g})",
         fontsize=9,

@@ -119,7 +119,7 @@ def study_figure(study: StudyResult) -> Figure:
                 )
         axis.set_ylabel(label("relative error", None))
         if group:
-            axis.legend(loc="best", fontsize=7)
+            axis.legend(loc="best", fontsize=8)
     for axis in axes[len(groups) :]:
         axis.set_visible(False)
     for axis in axes[max(0, len(groups) - columns) : len(groups)]:

@@ -1,10 +1,14 @@
 """The one figure style of twoball: fonts, colours, labels with units, curve limits.
 
-Every figure of ``plot``, ``verify``, ``converge`` and ``reproduce`` is built
-inside :func:`styled` (a decorator applying :data:`STYLE` through
-:func:`matplotlib.rc_context`, so no global state changes) and labels its axes
-with :func:`label`: a mathtext symbol and its SI unit in brackets, or
-:data:`DIMENSIONLESS` for a pure number.  An axis carries at most
+Every figure of ``plot``, ``verify``, ``converge``, ``reproduce``, ``bounce
+--plot`` and ``liftoff --plot`` is built inside :func:`styled` (a decorator
+applying :data:`STYLE` through :func:`matplotlib.rc_context`, so no global state
+changes; the figure carries :data:`MARK`) and labels its axes with
+:func:`label`: a mathtext symbol and its SI unit in brackets, or
+:data:`DIMENSIONLESS` for a pure number.  Text outside mathtext writes its
+symbols in Unicode (φ, μ, |v₀|), never as ASCII stand-ins; no text is smaller
+than :data:`MIN_FONT_PT` at the saved size; legends go where they cover no data
+(``loc="best"`` or beside the panel); titles name the ball, pair or preset.  An axis carries at most
 :data:`MAX_CURVES` curves (plus reference lines); crowded data is split into
 small multiples with :func:`chunks`.  Comparisons of two solutions get a
 difference panel below (:func:`difference_limits` zooms it past the first
@@ -44,7 +48,7 @@ STYLE: dict[str, Any] = {
     "axes.labelsize": 9.0,
     "xtick.labelsize": 8.0,
     "ytick.labelsize": 8.0,
-    "legend.fontsize": 7.5,
+    "legend.fontsize": 8.0,
     "legend.framealpha": 0.85,
     "figure.titlesize": 10.5,
     "lines.linewidth": 1.2,
@@ -62,25 +66,75 @@ STYLE: dict[str, Any] = {
     "image.cmap": "viridis",
 }
 
+#: Smallest font size of any text at the saved size [pt] (tick labels and legends).
+MIN_FONT_PT = 8.0
+#: Attribute set (True) on every figure a :func:`styled` builder returns.
+MARK = "twoball_styled"
+
 Builder = TypeVar("Builder", bound=Callable[..., Any])
 
 
+def style_rc() -> dict[str, Any]:
+    """:data:`STYLE` with its colour and line-style cycle: the rcParams of every figure.
+
+    Saving needs them too: a colour given as ``"C1"`` is looked up in the cycle
+    when the figure is drawn, not when the line is made.
+    """
+    from cycler import cycler
+
+    rc = dict(STYLE)
+    rc["axes.prop_cycle"] = cycler(color=COLOURS[: len(LINE_STYLES)]) + cycler(
+        linestyle=LINE_STYLES
+    )
+    return rc
+
+
 def styled(builder: Builder) -> Builder:
-    """Run ``builder`` (which creates and draws a figure) under :data:`STYLE`."""
+    """Run ``builder`` (which creates and draws a figure) under :data:`STYLE`.
+
+    The figure it returns carries the attribute :data:`MARK`.
+    """
 
     @functools.wraps(builder)
     def run(*args: Any, **kwargs: Any) -> Any:
         import matplotlib
-        from cycler import cycler
 
-        rc = dict(STYLE)
-        rc["axes.prop_cycle"] = cycler(color=COLOURS[: len(LINE_STYLES)]) + cycler(
-            linestyle=LINE_STYLES
-        )
-        with matplotlib.rc_context(rc):
-            return builder(*args, **kwargs)
+        with matplotlib.rc_context(style_rc()):
+            made = builder(*args, **kwargs)
+            if hasattr(made, "savefig"):  # a figure: it says it was built in the style
+                _fix_cycle_colours(made)
+                setattr(made, MARK, True)
+        return made
 
     return run  # type: ignore[return-value]
+
+
+def _fix_cycle_colours(figure: Any) -> None:
+    """Replace colours named ``"C0"``.. on lines and texts by the style's own (hex).
+
+    matplotlib looks such a name up in the colour cycle when it draws, so a
+    figure saved outside the style would take the default cycle's colours.
+    """
+    import re
+
+    from matplotlib.colors import to_hex
+    from matplotlib.lines import Line2D
+    from matplotlib.text import Text
+
+    cycle = re.compile(r"C\d+")
+    for line in figure.findobj(Line2D):
+        for get, put in (
+            (line.get_color, line.set_color),
+            (line.get_markerfacecolor, line.set_markerfacecolor),
+            (line.get_markeredgecolor, line.set_markeredgecolor),
+        ):
+            value = get()
+            if isinstance(value, str) and cycle.fullmatch(value):
+                put(to_hex(value))
+    for text in figure.findobj(Text):
+        value = text.get_color()
+        if isinstance(value, str) and cycle.fullmatch(value):
+            text.set_color(to_hex(value))
 
 
 def label(quantity: str, unit: str | None) -> str:
@@ -142,6 +196,11 @@ def difference_unit(values_si: np.ndarray, unit: str) -> tuple[float, str]:
             return factor, prefix + unit
     factor, prefix = PREFIXES[-1]
     return factor, prefix + unit
+
+
+def subject(case: Any) -> str:
+    """What a figure shows, for its title: the case's preset (``basketball``) or ``custom ball``."""
+    return getattr(case, "preset_name", None) or "custom ball"
 
 
 def time_label(after: str = "") -> str:

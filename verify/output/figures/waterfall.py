@@ -8,7 +8,7 @@ from typing import TYPE_CHECKING, Any
 import numpy as np
 from twoball.verify.output.fields import BallModel, node_polar_angles
 from twoball.verify.output.figures import LABELS, new_figure
-from twoball.verify.output.figures.style import STACKED, difference_unit, label, styled
+from twoball.verify.output.figures.style import STACKED, difference_unit, label, styled, subject
 
 from twoball._common.choices import WATERFALL_INSTANTS
 from twoball._common.errors import ParameterError
@@ -111,7 +111,7 @@ def waterfall_figure(
             xytext=(4, 0),
             textcoords="offset points",
             va="center",
-            fontsize=7,
+            fontsize=8,
         )
     axis.axvline(
         model.case.phi_a,
@@ -130,10 +130,12 @@ def waterfall_figure(
     )
     axis.set_gid(STACKED)
     axis.set_ylim(_waterfall_limits(curves, offset_mm, len(times)))
-    axis.legend(loc="upper left", markerscale=5)
+    # the stacked curves fill the panel: the legend goes below the figure, covering none
+    handles, names = axis.get_legend_handles_labels()
+    figure.legend(handles, names, loc="outside lower center", ncols=3, markerscale=5)
     case = model.case
     axis.set_title(
-        f"Radial displacement at {len(times)} instants (cf. Fig. 6): "
+        f"{subject(case)}: radial displacement at {len(times)} instants (cf. Fig. 6), "
         rf"$\varphi_a$ = {case.phi_a:.3g} rad, $R$ = {case.radius:g} m, "
         f"$c$ = {case.wave_speed:g} 1/s, $D$ = {case.damping:g}"
     )

@@ -11,6 +11,7 @@ from pathlib import Path
 import numpy as np
 from twoball.modal.legendre import displacement
 from twoball.verify.output.fields import ball_model, coupled_model, field_mesh
+from twoball.verify.output.figures.contact import contact_figure
 from twoball.verify.output.figures.contact_pole import contact_pole_figure
 from twoball.verify.output.figures.eigen import (
     EigenErrors,
@@ -23,8 +24,11 @@ from twoball.verify.output.figures.pole import Trace, pole_figure, pole_motion_f
 from twoball.verify.output.figures.study import legend_name, study_figure
 from twoball.verify.output.figures.style import (
     DIMENSIONLESS,
+    MARK,
     MAX_CURVES,
+    MIN_FONT_PT,
     STACKED,
+    STYLE,
     chunks,
     curves,
     label,
@@ -97,6 +101,9 @@ def every_figure(case, coarse, monkeypatch):
     coupled = coupled_model(case, ("fem", "legendre"), twoball.Body(0.004), mesh)
     yield "plot pole with a body", contact_pole_figure(coupled, 300)
     yield "plot eigen", eigen_figure([eigen_table(lv, od, 2) for od in (1, 2) for lv in (0, 1)])
+    yield "liftoff --plot", contact_figure(twoball.liftoff(case, body=twoball.Body(0.1)))
+    yield "plot precursor", _precursor(case)
+    yield "fit --plot", _fit()
     # verify: pole.png (8 backends: split in columns), eigenvalues.png, energy.png
     yield "verify pole", pole_motion_figure(case, _traces(case, range(30, 70, 5)), t_end, 300)
     tables = [eigen_table(lv, 1, 2) for lv in (0, 1, 2)]
@@ -138,6 +145,32 @@ def every_figure(case, coarse, monkeypatch):
     yield from _whole_bounce_figures()
 
 
+def _precursor(case):
+    from twoball.modal.report import t_end_dimensionless
+    from twoball.verify.output.figures.precursor import law_curves, precursor_figure
+
+    solver = twoball.ClosedForm()
+    window = t_end_dimensionless(case, solver.t_end)
+    curves = law_curves(case, solver.sigma, solver.recontact, window)
+    return precursor_figure(case, curves, window)
+
+
+def _fit():
+    from twoball.verify.output.figures.fit import fit_figure
+
+    measured = np.array([[3.7, 0.0099], [4.4, np.nan]])
+    predicted = np.array([[3.6, 0.00985], [4.5, 0.0099]])
+    curve = {
+        "v0_m_s": np.linspace(4.0, 5.0, 5),
+        "v1_m_s": np.linspace(3.6, 4.5, 5),
+        "t_liftoff_s": np.full(5, 0.0099),
+    }
+    columns = ("v1_m_s", "t_liftoff_s")
+    inputs = {"v0_m_s": np.array([4.1, 4.9])}
+    errors = np.full((2, 2), 0.05)
+    return fit_figure(inputs, columns, measured, predicted, errors, curve, "basketball: a fit")
+
+
 def _whole_bounce_figures():
     """The drop's and the whole bounce's figures (coarse runs: N = 16)."""
     from twoball.verify.output.figures.bounce import drop_figure, gap_figure, whole_figure
@@ -146,6 +179,11 @@ def _whole_bounce_figures():
     coarse = twoball.MoreauJean(twoball.LegendreBall(16))
     drop = twoball.bounce(solver=coarse)
     yield "plot bounce", drop_figure(drop.result, drop.case, drop.mass_kg, "legendre")
+    from twoball.verify.output.figures.drop_sweep import drop_sweep_figure
+
+    swept = twoball.sweep({"damping": [0.1, 0.2]}, drop=twoball.Drop(), solver=coarse)
+    points = list(zip(swept.values, swept.reports, strict=True))
+    yield "bounce sweep --plot", drop_sweep_figure(points, "damping")
     whole = twoball.bounce(solver=coarse, pair="basketball-tennis")
     icm = (1.0, 2.0)
     yield "plot whole bounce", whole_figure(whole.result, whole.case, whole.mass_kg, "x", icm)
@@ -175,10 +213,61 @@ def axis_labels(axis) -> list[str]:
     return [text for text in labels if text]
 
 
-def test_every_figure_labels_units_and_counts_curves(case, coarse, monkeypatch):
+def check_fonts_and_style(name, figure):
+    """Every visible text at least MIN_FONT_PT; the style's marks and rcParams on the figure."""
+    from matplotlib.text import Text
+
+    assert getattr(figure, MARK, False), f"{name}: built outside the style (styled)"
+    texts = [t for t in figure.findobj(Text) if t.get_visible() and t.get_text().strip()]
+    assert texts, name
+    for text in texts:
+        assert text.get_fontsize() >= MIN_FONT_PT, (name, text.get_text(), text.get_fontsize())
+    for axis in figure.axes:
+        if not axis.get_visible() or not axis.axison:
+            continue
+        ticks = [t for t in axis.get_xticklabels() + axis.get_yticklabels() if t.get_text()]
+        assert all(t.get_fontsize() == STYLE["xtick.labelsize"] for t in ticks), name
+        grid = [g for g in axis.get_xgridlines() + axis.get_ygridlines() if g.get_visible()]
+        assert all(g.get_alpha() == STYLE["grid.alpha"] for g in grid), name
+
+
+#: Figures whose title names what they show (the basketball preset, a pair).
+NAMED = {
+    "plot waterfall": "basketball",
+    "plot pole": "basketball",
+    "plot pole with a body": "basketball",
+    "verify pole": "basketball",
+    "verify energy": "basketball",
+    "plot precursor": "basketball",
+    "bounce sweep --plot": "basketball",
+    "plot whole bounce": "x",
+    "sweep gap": "x",
+}
+
+
+def covered_points(axis, renderer) -> int:
+    """Data points (line vertices, scattered markers) of ``axis`` under its legend's frame."""
+    legend = axis.get_legend()
+    if legend is None:
+        return 0
+    box = legend.get_window_extent(renderer)
+    points = [axis.transData.transform(line.get_xydata()) for line in curves(axis)]
+    for collection in axis.collections:
+        offsets = collection.get_offsets()
+        if len(offsets) and collection.get_offset_transform() is not None:
+            points.append(collection.get_offset_transform().transform(offsets))
+    return sum(
+        int(np.count_nonzero((p[:, 0] > box.x0) & (p[:, 0] < box.x1) & (p[:, 1] > box.y0)
+                             & (p[:, 1] < box.y1)))
+        for p in points
+    )  # fmt: skip
+
+
+def test_every_figure_labels_units_fonts_and_counts_curves(case, coarse, monkeypatch):
     seen = []
     for name, figure in every_figure(case, coarse, monkeypatch):
         seen.append(name)
+        check_fonts_and_style(name, figure)
         visible = [a for a in figure.axes if a.get_visible()]
         labelled = [text for a in visible for text in axis_labels(a)]
         assert labelled, name
@@ -207,7 +296,12 @@ def test_every_figure_labels_units_and_counts_curves(case, coarse, monkeypatch):
         for text in texts:
             box = text.get_window_extent(renderer)
             assert box.x0 >= -1 and box.x1 <= width + 1, f"{name}: {text.get_text()!r} cut off"
-    assert len(seen) == 23
+        if name in NAMED:  # the title says which ball (the preset) or pair is shown
+            titles = [title] + [a.get_title() for a in visible]
+            assert any(NAMED[name] in t for t in titles), (name, titles)
+        for axis in visible:  # legends at their best spot or beside: over no data
+            assert covered_points(axis, renderer) == 0, f"{name}: {axis.get_ylabel()!r}"
+    assert len(seen) == 27
 
 
 def test_crowded_data_becomes_small_multiples(case, coarse):
@@ -229,6 +323,28 @@ def test_crowded_data_becomes_small_multiples(case, coarse):
     # eigen: 7 discretisations -> 2 panels of at most 6
     many = [eigen_table(lv, od, 2) for od in (1, 2) for lv in (0, 1, 2)] + [eigen_table(3, 1, 2)]
     assert [len(a.get_lines()) for a in eigen_figure(many).axes] == [4, 3]
+
+
+def test_cycle_colours_are_the_styles_wherever_the_figure_is_saved(tmp_path):
+    from matplotlib.colors import to_hex
+    from twoball.verify.output.figures import new_figure
+    from twoball.verify.output.figures.style import COLOURS, styled
+
+    @styled
+    def drawn():
+        figure = new_figure(3.0, 2.0)
+        axis = figure.subplots()
+        axis.plot([0, 1, 2], [0, 1, 0], color="C1", label="x")
+        axis.text(0.5, 0.5, "t", color="C2")
+        return figure
+
+    figure = drawn()
+    (line,) = figure.axes[0].get_lines()
+    # "C1" is looked up when drawn: outside the style it would be matplotlib's orange
+    assert to_hex(line.get_color()) == COLOURS[1].lower()
+    assert to_hex(figure.axes[0].texts[0].get_color()) == COLOURS[2].lower()
+    figure.savefig(tmp_path / "plain.png")  # saved by hand, not by save_figure: the same
+    assert to_hex(line.get_color()) == COLOURS[1].lower()
 
 
 def test_label_helpers():
