@@ -83,56 +83,30 @@ def run(args: argparse.Namespace) -> int:
 def run_solid(args: argparse.Namespace) -> int:
     """``twoball converge h --ball solid``: the half disc's eigenvalues against Lamb's roots.
 
-    :func:`~twoball.verify.studies.solid_orders.run_solid_h_study` at the superball's
-    Poisson ratio; the report (``report.md``, ``results.json``, ``results.csv``) in ``--out``.
+    :func:`twoball._studies.converge_solid`; the report (``report.md``,
+    ``results.json``, ``results.csv``) in ``--out``.
     """
     from twoball._common.progress import Reporter
-    from twoball.modal.presets import SUPERBALL_MATERIAL
-    from twoball.verify.output.report_files import (
-        check_output_dir,
-        result_files,
-        study_csv,
-        write_report_dir,
-    )
-    from twoball.verify.studies.solid_orders import (
-        parse_solid_levels,
-        run_solid_h_study,
-        solid_markdown,
-    )
+    from twoball._studies import converge_solid, solid_rows
 
     if args.study != "h":
         valid = "h with --ball solid (the half disc refined; its eigenvalues against Lamb's)"
         raise ParameterError("study", valid, args.study)
     for name in ("mesh", "geometry", "modes_list"):
-        if getattr(args, name) is not None:
-            raise ParameterError(
-                name, "left out with --ball solid (the half disc)", getattr(args, name)
-            )
-    element = 2 if args.order is None else args.order
-    if element not in (1, 2):
-        raise ParameterError("order", "1 or 2 with --ball solid", element)
-    levels = parse_solid_levels(args.levels, element)
+        value = getattr(args, name)
+        if value is not None:
+            raise ParameterError(name, "left out with --ball solid (the half disc)", value)
     out = args.out if args.out is not None else "twoball-converge-h-solid"
-    target = check_output_dir(out)
     with Reporter("converge h --ball solid") as progress:
-        study = run_solid_h_study(
-            float(SUPERBALL_MATERIAL["poisson"]), element=element, levels=levels, progress=progress
-        )
-    table = solid_markdown(study)
-    report = f"# twoball converge h --ball solid\n\n{study.title}\n\n{table}\n\n"
-    report += "".join(f"* {note}\n" for note in study.notes)
-    write_report_dir(
-        target,
-        {"report.md": report, **result_files(study.as_dict()), "results.csv": study_csv(study)},
-        "twoball converge",
-    )
+        study = converge_solid(order=args.order, levels=args.levels, out=out, progress=progress)
+    target = Path(out).expanduser()
     if args.json:
         data = study.as_dict()
         data["out"] = str(target)
         sys.stdout.write(json_text(data))
     else:
         out_console = console(wide=True)
-        out_console.print(table)
+        out_console.print(solid_rows(study))
         for note in study.notes:
             out_console.print("* " + note)
         verdict = "PASS" if study.passed else "FAIL"
