@@ -54,3 +54,13 @@ def test_converge_h_ball_solid_cli(capsys, tmp_path):
         main(["converge", "dt", "--ball", "solid"])
     with pytest.raises((ParameterError, SystemExit)):
         main(["converge", "h", "--ball", "solid", "--order", "3"])
+
+
+def test_the_element_order_is_checked():
+    from twoball.fem_solid.eigen import axisymmetric_eigen
+    from twoball.fem_solid.mesh import half_disc
+
+    with pytest.raises(ParameterError, match="element"):
+        axisymmetric_eigen(half_disc(1), 0.45, 6, element=4)
+    with pytest.raises(ParameterError, match="order"):
+        run_solid_h_study(0.45, element=3)
