@@ -205,7 +205,11 @@ def sweep(
     body : Body, optional
         An upper body on every point (docs/contact.rst); a ``mass_ratio`` sweep
         takes its other fields from it (default: contact radius R/10, no
-        restitution, the ball's energy).
+        restitution, the ball's energy).  With ``drop`` also an elastic body
+        (:class:`~twoball.LumpedBody`, :class:`~twoball.BallBody`) or, with
+        ``pair``, a kind name (``"rigid"``, ``"lumped"``, ``"ball"``: the pair's
+        preset body of that kind), as :func:`~twoball.bounce` takes it
+        (docs/bodies.rst); a ``mass_ratio`` sweep takes a rigid body only.
     damping : ModalRatio or Rayleigh, optional
         The damping law of every point, as in :func:`~twoball.liftoff` (a
         Rayleigh law with alpha, beta of its own refuses a ``damping`` sweep).
@@ -239,9 +243,9 @@ def sweep(
     from twoball.modal.damping import with_damping
 
     workers, scheduler = where("twoball.sweep", workers)
-    if body is not None and not isinstance(body, Body):
+    if body is not None and drop is None and not isinstance(body, Body):
         raise ParameterError("body", "a twoball.Body", type(body).__name__)
-    if drop is not None:
+    if drop is not None:  # the body of every drop checked as twoball.bounce checks it
         from twoball._common.watch import Watch
         from twoball.verify.sweeps.bounce import bounce_sweep
 

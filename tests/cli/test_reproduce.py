@@ -92,9 +92,10 @@ def test_full_reproduction(tmp_path):
     data = json.loads((out / "reproduction.json").read_text())
     assert list(data["sections"]) == list(rep.PARTS)
     figures = [f for s in data["sections"].values() for f in s["figures"]]
-    assert len(figures) == 13 and all((out / f).is_file() for f in figures)
+    assert len(figures) == 17 and all((out / f).is_file() for f in figures)
     whole = {"whole_table1.png", "whole_timing.png", "whole_gap_basketball-tennis.png"}
-    assert whole <= set(figures)
+    kinds = {"kinds_table1.png", "kinds_gap_basketball-tissue.png"}  # the shell, each body
+    assert whole | kinds <= set(figures)
     text = (out / "reproduction.md").read_text()
     numbers = ("0.602", "0.29 m/s", "13.3 1/s", "0.091 mm", "1.02", "8.7 m/s", "180 1/s")
     for number in (*numbers, "2.090 / 0.488", "1.108 / 0.877"):  # (2.6) row 4; whole row 5

@@ -146,3 +146,101 @@ def test_one_phi_a_rule_and_one_label_per_sweep(capsys, param, values, own):
         assert at["phi_a_rad"] != 2.6
         (note,) = [n for n in at["notes"] if n.startswith("phi_a = ")]
         assert "as asked, at the basketball preset's own R, c, |v0|" in note
+
+
+# --- ``twoball sweep --bounce`` with the lower ball's and the body's kinds -----------------
+
+KINDS = ["--ball", "shell", "--body", "lumped", "--pair", "basketball-tennis", "--modes", "16"]
+
+
+def test_a_gap_sweep_of_the_shell_and_a_lumped_body_is_two_bounces(capsys):
+    argv = ["sweep", "--bounce", "--param", "gap", "--values", "0,0.01", *KINDS]
+    code, out, _ = cli_run(capsys, *argv, "--workers", "1", "--json")
+    points = json.loads(out)["results"]
+    assert code == 0 and [p["value"] for p in points] == [0.0, 0.01]
+    for point in points:
+        code, out, _ = cli_run(capsys, "bounce", *KINDS, "--gap", f"{point['value']:g}", "--json")
+        single = json.loads(out)
+        assert code == 0 and single["body"]["kind"] == "lumped" == point["body"]["kind"]
+        assert single["model"]["ball"] == "shell" == point["model"]["ball"]
+        for key in ("v1_ratio", "v2_ratio", "t_liftoff_s", "e2", "body_contacts"):
+            assert point[key] == pytest.approx(single[key], rel=1e-9, abs=1e-12), key
+    assert "artefact" not in points[0]["caveats"]  # the shell: no degree-1 precursor
+
+
+def test_the_api_sweeps_a_pairs_body_by_its_kind():
+    import twoball
+
+    solver = twoball.MoreauJean(twoball.ShellBall(modes=16))
+    drop = twoball.Drop(gap=0.01)
+    result = twoball.sweep(
+        {"v0": [4.1]}, drop=drop, body="lumped", pair="basketball-tennis", solver=solver
+    )
+    single = twoball.bounce(drop=drop, body="lumped", pair="basketball-tennis", solver=solver)
+    (report,) = result.reports
+    assert report.v1_ratio == pytest.approx(single.v1_ratio, rel=1e-9)
+    assert result.provenance["call"]["arguments"]["body"] == "lumped"
+    with pytest.raises(twoball.ParameterError, match="body"):  # an elastic body's mu is its own
+        twoball.sweep({"mass_ratio": [0.1]}, drop=twoball.Drop(), body="lumped", solver=solver)
+
+
+@pytest.mark.parametrize(
+    ("argv", "flag"),
+    [
+        (["--param", "v0", "--values", "2,3", "--ball", "shell"], "--ball"),
+        (["--param", "v0", "--values", "2,3", "--body", "lumped"], "--body"),
+        (["--param", "v0", "--values", "2,3", "--backend", "fem"], "--backend"),
+        (["--param", "v0", "--values", "2,3", "--wall-stiffness-ratio", "5"], "--wall-stiffness"),
+        (["--param", "v0", "--values", "2,3", "--floor-alone"], "--floor-alone"),
+        (["--bounce", "--param", "gap", "--values", "0,0.1", "--ball", "bogus"], "--ball"),
+        (["--bounce", "--param", "mass-ratio", "--values", "0.1", "--body", "lumped"], "--body"),
+        (
+            ["--bounce", "--param", "gap", "--values", "0", "--pair", "tennis-coin", "--body", "x"],
+            "--body",
+        ),  # fmt: skip
+        (
+            [
+                "--bounce",
+                "--param",
+                "gap",
+                "--values",
+                "0",
+                "--pair",
+                "tennis-coin",
+                "--body",
+                "ball",
+            ],
+            "--body",
+        ),  # fmt: skip
+        (["--bounce", "--param", "v0", "--values", "3", "--body-law", "hertz"], "--body-law"),
+        (
+            [
+                "--bounce",
+                "--param",
+                "v0",
+                "--values",
+                "3",
+                "--ball",
+                "solid",
+                "--pair",
+                "tennis-coin",
+            ],
+            "--pair",
+        ),  # fmt: skip
+        (
+            ["--bounce", "--param", "v0", "--values", "3", "--thickness-ratio", "0.1"],
+            "--thickness-ratio",
+        ),  # fmt: skip
+        (
+            ["--bounce", "--param", "v0", "--values", "3", "--ball", "shell", "--bending", "1"],
+            "--bending",
+        ),  # fmt: skip
+        (["--bounce", "--param", "v0", "--values", "3", "--floor-alone"], "--floor-alone"),
+    ],
+)
+def test_kinds_that_do_not_apply_are_one_line_naming_the_flag(capsys, argv, flag):
+    with pytest.raises(SystemExit) as stop:
+        main(["sweep", *argv])
+    err = capsys.readouterr().err.strip().splitlines()
+    assert stop.value.code == 2 and len(err) == 1, err
+    assert err[0].startswith(f"twoball: error: {flag}"), err[0]

@@ -257,10 +257,21 @@ CONTEXT: dict[tuple[str, str], list[str]] = {
     },
     # twoball fit: the whole bounce's options checked with --model bounce
     ("fit", "--mass-ratio"): ["--model", "bounce"],
+    # twoball sweep --bounce: the lower ball's and the body's kinds as bounce reads them
+    ("sweep", "--elements"): ["--bounce", "--backend", "fem"],
+    ("sweep", "--order"): ["--bounce", "--backend", "fem"],
     **{
         ("fit", flag): ["--model", "bounce", "--mass-ratio", "0.05"]
         for flag in ("--gap", "--contact-radius", "--restitution", "--floor-restitution", "--dt")
     },
+}
+CONTEXT |= {  # the kinds' own flags: bounce's context, on a sweep of the drop
+    ("sweep", flag): ["--bounce", *context]
+    for (command, flag), context in list(CONTEXT.items())
+    if command == "bounce"
+    and (flag.startswith("--body-") or flag in ("--wall-stiffness-ratio", "--thickness-ratio"))
+    or flag in ("--density", "--radial-orders", "--wall-cells", "--pole-levels", "--top-levels")
+    and command == "bounce"
 }
 #: Options of the base line that do not apply in a context (the drop's --modes is the
 #: Legendre ball's: refused with --backend fem, where the mesh sets the resolution).

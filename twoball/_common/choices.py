@@ -116,6 +116,8 @@ REPRODUCTION_PARTS: tuple[str, ...] = (
     "whole_table1",
     "whole_gap",
     "whole_timing",
+    "kinds_table1",
+    "kinds_gap",
 )
 #: The reproduction's folder and report.
 REPRODUCTION_DIR = "twoball-reproduction"

@@ -36,6 +36,8 @@ from twoball.cli.values import number as numeric
 
 __all__ = [
     "add_drop_options",
+    "add_kind_options",
+    "add_mesh_options",
     "bounce_rows",
     "bounce_from_options",
     "drop_ball",
@@ -93,6 +95,10 @@ def add_drop_options(parser: argparse.ArgumentParser) -> None:
         "(tennis-coin, tennis-nut, tennis-table-tennis, basketball-tennis, "
         "basketball-tissue, basketball-table-tennis)",
     )
+
+
+def add_mesh_options(parser: argparse.ArgumentParser) -> None:
+    """The drop's finite-element mesh: ``--mesh``, ``--elements``, ``--order``."""
     mesh = parser.add_argument_group("finite-element mesh (--backend fem)")
     mesh.add_argument("--mesh", help="axisym (the line x = cos phi; default)")
     mesh.add_argument(
@@ -101,6 +107,30 @@ def add_drop_options(parser: argparse.ArgumentParser) -> None:
         help="axisymmetric line elements (default 192 / order: 96 at P2, node spacing pi / 192)",
     )
     mesh.add_argument("--order", type=integer, help="element order 1, 2, 3 or 4 (default 2)")
+
+
+def add_kind_options(parser: argparse.ArgumentParser, *, view: bool = False) -> None:
+    """The lower ball's and the upper body's kinds with their options.
+
+    ``--backend``, ``--ball`` (membrane, shell, solid, thick) with the mesh, the
+    shell's wall and the solid's options, and ``--body`` (rigid, lumped, ball)
+    with the body's own: the options of ``twoball bounce`` that ``twoball sweep
+    --bounce`` shares (:func:`drop_ball`, :func:`twoball.cli.body_options.elastic_body`
+    read them).  ``view`` adds ``--view`` (the field files' cut).
+    """
+    from twoball.cli.shell import add_ball_option, add_wall_options
+    from twoball.cli.solid import add_solid_options
+
+    parser.add_argument(
+        "--backend", default="legendre", help="legendre (Legendre modes, default) or fem"
+    )
+    add_ball_option(parser)
+    add_mesh_options(parser)
+    add_wall_options(parser)
+    add_solid_options(parser, view=view)
+    add_body_options(parser)
+    for flag in ("--elements", "--order"):  # the drop's reading, with --ball shell's
+        _action(parser, flag).help = DROP_HELP[flag]
 
 
 #: Help of shared case options where the drop reads them differently.
@@ -514,22 +544,12 @@ def run(args: argparse.Namespace) -> int:
 
 def register(parser: argparse.ArgumentParser) -> None:
     """The options of ``twoball bounce``."""
-    from twoball.cli.shell import add_ball_option, add_wall_options
-
-    parser.add_argument(
-        "--backend", default="legendre", help="legendre (Legendre modes, default) or fem"
-    )
-    add_ball_option(parser)
     add_case_options(parser, window="10 pi / c + 2 gap / |v0|")
     add_drop_options(parser)
-    add_wall_options(parser)
-    from twoball.cli.solid import add_solid_options
-
-    add_solid_options(parser, view=True)
+    add_kind_options(parser, view=True)
     add_contact_options(
         parser, "the whole bounce: mass ratio m1/m2 in (0, 100] of a body on the ball's top"
     )
-    add_body_options(parser)
     for flag, text in DROP_HELP.items():  # the shared case options, as the drop reads them
         _action(parser, flag).help = text
     for flag in REFUSED:

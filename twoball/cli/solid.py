@@ -260,7 +260,13 @@ def thick_ball(args: argparse.Namespace) -> Any:
         raise ParameterError(name, "given with a wall (--youngs-modulus, --thickness)", None)
     along = 96 if args.elements is None else args.elements
     across = 2 if args.wall_cells is None else args.wall_cells
-    return twoball.ThickBall(wall, cells=(across, along))
+    try:
+        return twoball.ThickBall(wall, cells=(across, along))
+    except ParameterError as error:  # the API's one ``cells``: across first, then along
+        if error.name != "cells":
+            raise
+        name = "wall_cells" if repr(error.got) == repr(across) else "elements"  # nan too
+        raise ParameterError(name, error.valid, error.got) from None
 
 
 def thick_case_args(args: argparse.Namespace) -> argparse.Namespace:

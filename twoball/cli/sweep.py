@@ -108,6 +108,7 @@ def run(args: argparse.Namespace) -> int:
 
     if args.bounce:
         return _run_bounce(args)
+    refuse_kind_options(args)
     for name in ("floor_restitution", "gap", "pair"):
         if getattr(args, name, None) is not None:
             valid = "left out without --bounce (a sweep of the drop or the whole bounce)"
@@ -184,6 +185,55 @@ def run(args: argparse.Namespace) -> int:
     return 0
 
 
+#: The options of the kinds (:func:`twoball.cli.bounce.add_kind_options`) a lift-off sweep
+#: refuses when given: they describe the drop's lower ball and the whole bounce's body.
+KIND_FLAGS = (
+    "backend",
+    "mesh",
+    "elements",
+    "order",
+    "wall_stiffness_ratio",
+    "thickness_ratio",
+    "density",
+    "radial_orders",
+    "level",
+    "pole_levels",
+    "top_levels",
+    "wall_cells",
+    "body_law",
+    "body_radius",
+    "body_pressure",
+    "body_modulus",
+    "body_poisson",
+    "body_thickness",
+    "body_restitution",
+    "body_steps",
+    "body_preset",
+    "body_modes",
+    "body_damping",
+)
+
+
+def _action(parser: argparse.ArgumentParser, flag: str) -> argparse.Action:
+    return next(a for a in parser._actions if flag in a.option_strings)
+
+
+def refuse_kind_options(args: argparse.Namespace) -> None:
+    """A lift-off sweep refuses ``--ball`` other than the membrane, ``--body`` other than
+    rigid, ``--floor-alone`` and the kinds' own options, each by its flag."""
+    valid = "given with --bounce (a sweep of the drop or the whole bounce)"
+    if args.ball not in (None, "membrane"):
+        raise ParameterError("ball", valid, args.ball)
+    if args.body not in (None, "rigid"):
+        raise ParameterError("--body", valid, args.body)
+    if args.floor_alone:
+        raise ParameterError("--floor-alone", "left out of a sweep (twoball bounce)", True)
+    for name in KIND_FLAGS:
+        value = getattr(args, name, None)
+        if value is not None:
+            raise ParameterError(name, valid, value)
+
+
 def _outputs(args: argparse.Namespace, axes: int = 1) -> tuple[Any, Any]:
     """``--measured`` (read) and ``--csv`` (its path), checked before any work."""
     check_paths(args, {"plot": args.plot, "csv": args.csv})
@@ -214,7 +264,8 @@ def _run_bounce(args: argparse.Namespace) -> int:
     import twoball
     from twoball._bounce import OVERLAP_NOTE
     from twoball._plot import check_figure_path
-    from twoball.cli.bounce import drop_case, drop_options, whole_body
+    from twoball.cli.body_options import elastic_body
+    from twoball.cli.bounce import drop_ball, drop_case, drop_options, whole_body
 
     for name in args.param:  # the base value the swept one replaces (a height sets |v0|)
         replaced = {"v0": "v0", "gap": "gap", "mass-ratio": "mass_ratio", "drop-height": "v0"}
@@ -231,16 +282,23 @@ def _run_bounce(args: argparse.Namespace) -> int:
     args.drop_height = None
     if args.pair is not None and args.preset == "basketball":
         args.preset = None  # the default: the pair sets the lower ball
+    if args.floor_alone:
+        raise ParameterError("--floor-alone", "left out of a sweep (twoball bounce)", True)
     if "mass-ratio" in args.param:
+        if args.body != "rigid":  # the swept mu is a rigid body's (its cap and e12)
+            valid = "rigid when --param mass-ratio is swept"
+            raise ParameterError("--body", valid, args.body)
+        elastic_body(args)  # the elastic body's own options refused by name
         body = _sweep_body(args, tuple(args.param))
         if args.pair is not None:
             raise ParameterError("pair", "left out when --param mass-ratio is swept", args.pair)
     else:
-        body = whole_body(args)
-    modes = args.modes
+        elastic = elastic_body(args)  # --body lumped|ball (None: the rigid body's options)
+        body = whole_body(args) if elastic is None else elastic
+    args.backend = args.backend or "legendre"
     case = drop_case(args)
     drop = drop_options(args)
-    solver = twoball.MoreauJean(twoball.LegendreBall(modes), t_end=args.t_end)
+    solver = twoball.MoreauJean(drop_ball(args), t_end=args.t_end)
     pairs = zip(args.param, args.values, strict=True)
     values = {name.replace("-", "_"): text for name, text in pairs}
     from twoball._common.progress import QUICK, Reporter
@@ -531,6 +589,10 @@ def register(parser: argparse.ArgumentParser) -> None:
     add_contact_options(
         parser, "m1/m2 in [0, 100] on every point (or --param mass-ratio and its values)"
     )
+    from twoball.cli.bounce import add_kind_options
+
+    add_kind_options(parser)  # --bounce: the lower ball's and the body's kinds, as bounce's
+    _action(parser, "--backend").default = None  # said only when given (refused without --bounce)
     parser.add_argument(
         "--json",
         action="store_true",

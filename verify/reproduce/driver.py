@@ -26,6 +26,7 @@ from typing import Any
 from twoball.verify.reproduce import cem as reproduce_cem
 from twoball.verify.reproduce import contact as reproduce_contact
 from twoball.verify.reproduce import icm as reproduce_icm
+from twoball.verify.reproduce import kinds as reproduce_kinds
 from twoball.verify.reproduce import whole as reproduce_whole
 from twoball.verify.reproduce.common import Context, Section, comparison_table
 from twoball.verify.sweeps.parallel import Runner
@@ -51,6 +52,8 @@ PARTS: dict[str, Callable[[Context], Section]] = dict(
             reproduce_whole.part_whole_table1,
             reproduce_whole.part_whole_gap,
             reproduce_whole.part_whole_timing,
+            reproduce_kinds.part_kinds_table1,
+            reproduce_kinds.part_kinds_gap,
         ),
         strict=True,
     )
@@ -315,6 +318,12 @@ MODELS_USED = (
         "top (Legendre modes N = 192 of the pressurised membrane with its gas, floor points "
         "at the Gauss-Radau nodes, the Moreau-Jean scheme at dt = 0.005/c; the pair's preset "
         "and Table 1's mu, e12), beside the lumped baselines.",
+    ),
+    (
+        ("kinds_table1", "kinds_gap"),
+        "The parts of the balls and bodies run the same whole bounce with the lower ball a "
+        "radial membrane or a thin shell (the preset's wall), both on Legendre modes "
+        "N = 64, and the body rigid, lumped or a second ball (the pair's presets).",
     ),
 )
 

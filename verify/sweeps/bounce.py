@@ -110,6 +110,9 @@ def bounce_points(
         return [(case, replace(drop, gap=float(v)), body) for v in values]
     from twoball.modal.contact.body import Body
 
+    if body is not None and not isinstance(body, Body):  # an elastic body's mu is its own
+        valid = "a twoball.Body (rigid) when the mass ratio is swept"
+        raise ParameterError("body", valid, body if isinstance(body, str) else type(body).__name__)
     if body is not None and body.mass_ratio != 0.0:
         raise ParameterError("mass_ratio", "left out when the mass ratio is swept", body.mass_ratio)
     base = Body(0.0) if body is None else body
@@ -343,8 +346,8 @@ def bounce_sweep(
         reports.append(outcome.value if outcome.ok else None)
         errors.append(None if outcome.ok else _short(outcome.error))
     arguments: dict[str, Any] = {"values": {parameter: array}, "drop": drop.as_dict()}
-    if body is not None:
-        arguments["body"] = body.as_dict()
+    if body is not None:  # a kind name with the pair: the pair's preset body of that kind
+        arguments["body"] = body if isinstance(body, str) else body.as_dict()
     if pair is not None:
         arguments["pair"] = pair
     if solver is not None:
