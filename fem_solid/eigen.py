@@ -35,8 +35,8 @@ from dataclasses import dataclass
 import numpy as np
 from scipy.sparse.linalg import LinearOperator, eigsh, splu
 from scipy.special import eval_legendre, lpmv, sph_harm_y_all
-from skfem import Basis, ElementTriP2, ElementVector, FacetBasis, asm
-from skfem.mesh import MeshTet1, MeshTet2, MeshTri2
+from skfem import Basis, ElementTriP1, ElementTriP2, ElementTriP3, ElementVector, FacetBasis, asm
+from skfem.mesh import MeshTet1, MeshTet2, MeshTri1, MeshTri2
 from twoball.fem_solid.assembly import elasticity_matrices
 from twoball.fem_solid.forms import axisymmetric_elasticity, axisymmetric_mass, lame
 
@@ -168,6 +168,7 @@ def axisymmetric_eigen(
     sigma: float = -0.5,
     max_degree: int | None = None,
     rigid_tol: float = 1e-8,
+    element: int = 2,
 ) -> SolidEigen:
     """Lowest ``count`` axisymmetric eigenpairs of eqs. (A2)-(A3) on an (r, z) mesh.
 
@@ -185,6 +186,11 @@ def axisymmetric_eigen(
         Highest degree of the classification (default: ``count + 4``).
     rigid_tol : float, optional
         Eigenvalues below it are rigid (the axial translation).
+    element : {1, 2, 3}, optional
+        The Lagrange order of the displacement (default 2).  P1 takes the mesh's
+        straight-sided triangles (the inscribed polygon, geometric error O(h^2) like
+        its own); P2 and P3 take its quadratic arcs (P3 is then subparametric: the
+        arc's O(h^3) position error bounds its eigenvalues).
 
     Returns
     -------
@@ -192,7 +198,12 @@ def axisymmetric_eigen(
     """
     if not -1.0 < poisson < 0.5:
         raise ParameterError("poisson", "in (-1, 0.5)", poisson)
-    basis = Basis(mesh, ElementVector(ElementTriP2()), intorder=6)
+    if element not in (1, 2, 3) or isinstance(element, bool):
+        raise ParameterError("element", "1, 2 or 3", element)
+    if element == 1 and isinstance(mesh, MeshTri2):
+        mesh = MeshTri1(mesh.p, mesh.t)  # the vertices only: straight sides
+    lagrange = {1: ElementTriP1, 2: ElementTriP2, 3: ElementTriP3}[element]()
+    basis = Basis(mesh, ElementVector(lagrange), intorder=6)
     lam, mu = lame(poisson)
     k = asm(axisymmetric_elasticity(lam, mu), basis)
     m = asm(axisymmetric_mass(1.0), basis)

@@ -292,6 +292,81 @@ def verify_steps(thorough: bool = False, fast: bool = False, out: bool = True) -
     return 2 + len(c.fem) + len(c.krylov) + len(c.alpha) + len(energy) + int(out)
 
 
+def converge_solid(
+    *,
+    order: int | None = None,
+    levels: str | None = None,
+    out: str | os.PathLike[str] | None = None,
+    progress: Step = silent,
+) -> Any:
+    """The solid ball's half disc refined: its eigenvalues against Lamb's roots, observed orders.
+
+    :func:`~twoball.verify.studies.solid_orders.run_solid_h_study` at the superball
+    preset's Poisson ratio (``twoball converge h --ball solid``).
+
+    Parameters
+    ----------
+    order : {1, 2}, optional
+        The element order (default 2).
+    levels : str, optional
+        Consecutive half-disc levels, ``"1:4"`` or ``"1,2,3,4"`` (default 2:5 for P1,
+        1:4 for P2).
+    out : path, optional
+        Report directory (``report.md``, ``results.json``, ``results.csv``).
+    progress : callable
+        Called with a short text as each level starts.
+
+    Returns
+    -------
+    StudyResult
+        ``passed`` is False if an observed order leaves its band.
+    """
+    from twoball.modal.presets import SUPERBALL_MATERIAL
+    from twoball.verify.studies.solid_orders import (
+        parse_solid_levels,
+        run_solid_h_study,
+        solid_markdown,
+    )
+
+    check_progress(progress)
+    element = 2 if order is None else order
+    if element not in (1, 2) or isinstance(element, bool):
+        raise ParameterError("order", "1 or 2 with --ball solid", element)
+    chosen = parse_solid_levels(levels, element)
+    target = None
+    if out is not None:
+        from twoball.verify.output.report_files import check_output_dir
+
+        target = check_output_dir(out)
+    study = run_solid_h_study(
+        float(SUPERBALL_MATERIAL["poisson"]), element=element, levels=chosen, progress=progress
+    )
+    from twoball._common.provenance import block
+
+    arguments = {"study": "h", "ball": "solid", "order": order, "levels": levels, "out": out}
+    study.provenance = block(None, "twoball.converge", arguments)
+    if target is not None:
+        from twoball.verify.output.report_files import result_files, study_csv, write_report_dir
+
+        progress(f"writing {target}")
+        report = f"# twoball converge h --ball solid\n\n{study.title}\n\n"
+        report += solid_markdown(study) + "\n\n" + "".join(f"* {n}\n" for n in study.notes)
+        files = {
+            "report.md": report,
+            **result_files(study.as_dict()),
+            "results.csv": study_csv(study),
+        }
+        write_report_dir(target, files, "twoball converge")
+    return study
+
+
+def solid_rows(study: Any) -> str:
+    """The solid study's Markdown table (errors per level, observed orders, verdicts)."""
+    from twoball.verify.studies.solid_orders import solid_markdown
+
+    return solid_markdown(study)
+
+
 def summary_rows(study: Any) -> tuple[list[str], list[list[str]]]:
     """Header and rows of a study's one-line-per-quantity summary (as in its ``report.md``)."""
     from twoball.verify.output.report_files import study_summary_rows

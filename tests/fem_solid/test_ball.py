@@ -112,21 +112,34 @@ def test_the_thick_wall_and_its_gas():
 def test_the_backends_agree_on_the_body(tmp_path):
     """The superball with a body of mu = 0.01 (a = R / 10, e12 = 0): lift-off time and speed.
 
-    Measured: closed form N = 160-192 (K = 12, static): t_l = 1.4614-1.4627 ms, v1 =
-    5.4005-5.4012 m/s; finite elements level 4: 1.4653 ms, 5.379 m/s (2e-3 and 4e-3
-    apart), level 4 + 1 top: 1.4673 ms, 5.4041 m/s (3e-3 and 5e-4 apart): the issue's
-    1e-3 is reached on v1 with the top refined, not on t_l (the body's chattering
-    contacts' last separation).
+    Closed form N = 192, K = 12 (static) against P2 level 4 with the top refined once
+    (the body's cap resolved), default step 2.496 us.  Measured: v1 5.4012 and 5.4041
+    m/s (5e-4 apart), the body's impulse centroid t_J = int t F dt / int F dt 1.14415
+    and 1.14355 ms (5e-4), the contact time 2.3073 and 2.3030 ms (1.9e-3), the last
+    separation t_l 1.46141 and 1.46729 ms (4.0e-3).  t_l is not converged to 1e-3 on
+    either backend: halving the step moves it by up to 3e-3 (N = 128: 1.46121,
+    1.46466, 1.46024, 1.46114 ms at dt = 2.50, 1.25, 0.62, 0.31 us), because the
+    rigid body of e12 = 0 chatters and the top's ringing (3-5 % of the force) moves
+    the zero of the force by about a step (docs/solid.rst); t_J, an integral of the
+    force, moves by 2e-4 and then 6e-5 under the same halvings.
     """
+    from twoball.verify.studies.solid import impulse_centroid_s
+
     case = solid_case("superball")
     body = twoball.Body(0.01)
     modal = twoball.bounce(
-        case, solver=twoball.MoreauJean(twoball.SolidBall(modes=128, radial_orders=8)), body=body
+        case, solver=twoball.MoreauJean(twoball.SolidBall(modes=192, radial_orders=12)), body=body
     )
-    fe = twoball.bounce(case, solver=twoball.MoreauJean(twoball.FESolidBall(level=4)), body=body)
-    assert fe.t_liftoff_s == pytest.approx(modal.t_liftoff_s, rel=3e-3)
-    assert fe.v1_m_s == pytest.approx(modal.v1_m_s, rel=6e-3)
-    assert fe.contact_time_s == pytest.approx(modal.contact_time_s, rel=2e-3)
+    fe = twoball.bounce(
+        case, solver=twoball.MoreauJean(twoball.FESolidBall(level=4, top_levels=1)), body=body
+    )
+    assert fe.v1_m_s == pytest.approx(modal.v1_m_s, rel=1e-3)
+    assert impulse_centroid_s(fe) == pytest.approx(impulse_centroid_s(modal), rel=1e-3)
+    assert fe.contact_time_s == pytest.approx(modal.contact_time_s, rel=2.5e-3)
+    assert fe.t_liftoff_s == pytest.approx(modal.t_liftoff_s, rel=5e-3)
+    for report in (modal, fe):  # D = 0: the books close
+        energy = report.energy_J
+        assert abs(energy["balance_error"]) < 1e-9 * energy["initial_kinetic"]
 
 
 @pytest.mark.slow

@@ -20,6 +20,8 @@ from twoball.cli.console import Table, console, print_notes, print_warnings
 from twoball.cli.solver_options import closed_form
 
 MESHES = ("sphere", "axisym")
+#: The lower balls a study refines: the membrane (every study), the solid ball (h only).
+CONVERGE_BALLS = ("membrane", "solid")
 
 
 def print_study(study: Any, out: Path, said: Sequence[str] = ()) -> None:
@@ -48,6 +50,8 @@ def run(args: argparse.Namespace) -> int:
     import twoball
 
     args.study = chosen_study(args.study, args.study_option)
+    if args.ball == "solid":
+        return run_solid(args)
     out = args.out if args.out is not None else f"twoball-converge-{args.study}"
     options = {
         "study": args.study,
@@ -73,6 +77,40 @@ def run(args: argparse.Namespace) -> int:
         sys.stdout.write(json_text(data))
     else:
         print_study(study, target, case.notes)
+    return 0 if study.passed else 1
+
+
+def run_solid(args: argparse.Namespace) -> int:
+    """``twoball converge h --ball solid``: the half disc's eigenvalues against Lamb's roots.
+
+    :func:`twoball._studies.converge_solid`; the report (``report.md``,
+    ``results.json``, ``results.csv``) in ``--out``.
+    """
+    from twoball._common.progress import Reporter
+    from twoball._studies import converge_solid, solid_rows
+
+    if args.study != "h":
+        valid = "h with --ball solid (the half disc refined; its eigenvalues against Lamb's)"
+        raise ParameterError("study", valid, args.study)
+    for name in ("mesh", "geometry", "modes_list"):
+        value = getattr(args, name)
+        if value is not None:
+            raise ParameterError(name, "left out with --ball solid (the half disc)", value)
+    out = args.out if args.out is not None else "twoball-converge-h-solid"
+    with Reporter("converge h --ball solid") as progress:
+        study = converge_solid(order=args.order, levels=args.levels, out=out, progress=progress)
+    target = Path(out).expanduser()
+    if args.json:
+        data = study.as_dict()
+        data["out"] = str(target)
+        sys.stdout.write(json_text(data))
+    else:
+        out_console = console(wide=True)
+        out_console.print(solid_rows(study))
+        for note in study.notes:
+            out_console.print("* " + note)
+        verdict = "PASS" if study.passed else "FAIL"
+        out_console.print(f"{verdict} ({study.seconds:.1f} s); report in {target}/")
     return 0 if study.passed else 1
 
 
@@ -136,6 +174,14 @@ def register(parser: argparse.ArgumentParser) -> None:
         "--modes-list",
         metavar="LIST",
         help="mode counts of study modes, 3 to 16 increasing (default 30,60,120,240,480)",
+    )
+    parser.add_argument(
+        "--ball",
+        choices=CONVERGE_BALLS,
+        default="membrane",
+        help="the lower ball: membrane (default) or solid (study h only: the (r, z) half "
+        "disc's P1 or P2 eigenvalues against Lamb's roots at the superball's nu; --levels "
+        "are half-disc levels, default 2:5 for P1, 1:4 for P2)",
     )
     add_case_options(parser)
     parser.add_argument(
