@@ -49,10 +49,9 @@ def main() -> int:
     parser.add_argument("--quick", action="store_true", help="fewer repeats")
     repeats = 5 if parser.parse_args().quick else 21
 
-    from twoball.modal.report import legendre_liftoff
-
     import twoball
     from twoball.cli.main import main as cli
+    from twoball.modal.report import legendre_liftoff
 
     case = twoball.Case.preset("basketball")
     slower = case.derive(v0=3.0)

@@ -79,11 +79,10 @@ def check_series_estimate(modes: int, stiffness: object) -> object:
 
 def main() -> None:
     """Print the table."""
+    from twoball._common import budget
     from twoball.fem_membrane.cost import fem_dofs, fem_estimate
     from twoball.modal.contact.cost import contact_estimate
     from twoball.modal.cost import legendre_omega, reference_estimate, series_estimate
-
-    from twoball._common import budget
 
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--quick", action="store_true")

@@ -18,6 +18,7 @@ import math
 import time
 
 import numpy as np
+
 from twoball.fem_membrane.build import build_space
 from twoball.fem_membrane.eigen import lowest_eigenpairs
 from twoball.fem_membrane.solve import alpha_motion, modal_model

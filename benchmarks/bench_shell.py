@@ -58,10 +58,9 @@ def main(argv: list[str] | None = None) -> int:
     args = parser.parse_args(argv)
     repeats = 3 if args.quick else 5
 
+    import twoball
     from twoball.modal.floor.inputs import resolve_drop
     from twoball.modal.floor.options import Drop
-
-    import twoball
 
     def whole(ball: object) -> Callable[[], object]:
         return lambda: twoball.bounce(pair=PAIR, solver=twoball.MoreauJean(ball))

@@ -43,9 +43,8 @@ CASES = {
 
 def run_case(name: str) -> dict:
     """One case in this process."""
-    from twoball.modal.balls.solid import solid_case
-
     import twoball
+    from twoball.modal.balls.solid import solid_case
 
     verb, backend, fields = CASES[name]
     ball = twoball.SolidBall(**fields) if backend == "lamb" else twoball.FESolidBall(**fields)

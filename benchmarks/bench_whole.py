@@ -61,9 +61,8 @@ def main(argv: list[str] | None = None) -> int:
     parser.add_argument("--quick", action="store_true", help="3 repeats, a 16-point sweep")
     args = parser.parse_args(argv)
     repeats = 3 if args.quick else 5
-    from twoball.verify.sweeps.parallel import default_workers
-
     import twoball
+    from twoball.verify.sweeps.parallel import default_workers
 
     tasks: list[tuple[str, Callable[[], object], float | None]] = [
         ("baseline: twoball.liftoff()", lambda: twoball.liftoff(), None),

@@ -34,6 +34,7 @@ def gap_figure(pair: str, data: dict, path: Path) -> None:
     """v1 and v2 against the gap with each kind, the ICM and Table 1's point."""
     import matplotlib.pyplot as plt
     import numpy as np
+
     from twoball.modal.icm.impacts import icm_velocities
     from twoball.modal.pairs import PAIRS
 
@@ -70,6 +71,7 @@ def gap_figure(pair: str, data: dict, path: Path) -> None:
 def e12_figure(means: dict, path: Path) -> None:
     """Mean e12_effective at 100-250 mm of each pair and kind against the measured e12."""
     import matplotlib.pyplot as plt
+
     from twoball.modal.pairs import PAIRS
 
     fig, ax = plt.subplots(figsize=(6, 5))
@@ -96,6 +98,7 @@ def e12_figure(means: dict, path: Path) -> None:
 def table1_figure(rows: dict, path: Path) -> None:
     """v1 / |v0| at Delta x = 0 of each pair and kind, the measurements and the ICM printed."""
     import matplotlib.pyplot as plt
+
     from twoball.modal.pairs import PAIRS
 
     names = list(rows)

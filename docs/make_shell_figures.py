@@ -39,6 +39,7 @@ def causality_figure():  # noqa: ANN201 -- a matplotlib Figure
 
 def _draw():  # noqa: ANN202
     import numpy as np
+
     from twoball.modal.balls.membrane import LegendreBall
     from twoball.modal.balls.shell import WALLS, ShellBall
     from twoball.verify.output.figures import new_figure

@@ -21,9 +21,9 @@ discretisation.
 # quadratic line elements (the same node spacing, pi / 192), the time step
 # 0.005 / c.
 import matplotlib.pyplot as plt
-from twoball.verify.output.figures.style import STYLE  # internal, see below
 
 import twoball
+from twoball.verify.output.figures.style import STYLE  # internal, see below
 
 case = twoball.Case.preset("basketball")
 balls = {"Legendre": twoball.LegendreBall(), "finite elements": twoball.FEBall()}

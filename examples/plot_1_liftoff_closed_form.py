@@ -14,11 +14,11 @@ reference every other backend is checked against.
 # The case: the ``basketball`` preset (Table 2 of the paper), in SI units.
 import matplotlib.pyplot as plt
 import numpy as np
+
+import twoball
 from twoball.modal.filters import SpectralFilter  # internal, see below
 from twoball.modal.legendre import legendre_series  # internal, see below
 from twoball.verify.output.figures.style import STYLE  # internal, see below
-
-import twoball
 
 case = twoball.Case.preset("basketball")
 print(f"R = {case.radius} m, c = {case.wave_speed} 1/s, |v0| = {case.v0} m/s")

@@ -20,9 +20,9 @@ from pathlib import Path
 
 import matplotlib.pyplot as plt
 import numpy as np
-from twoball.verify.output.series import read_series  # internal, see below
 
 import twoball
+from twoball.verify.output.series import read_series  # internal, see below
 
 case = twoball.Case.preset("basketball")
 folder = Path(tempfile.mkdtemp())

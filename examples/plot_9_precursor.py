@@ -16,10 +16,10 @@ energy-weighted mean frequency of the motion (5.76): comparable dissipation
 
 # %%
 import matplotlib.pyplot as plt
-from twoball.modal.report import t_end_dimensionless
-from twoball.verify.output.figures.precursor import law_curves, precursor_figure
 
 import twoball
+from twoball.modal.report import t_end_dimensionless
+from twoball.verify.output.figures.precursor import law_curves, precursor_figure
 
 case = twoball.Case.preset("basketball")
 curves = law_curves(case)

@@ -31,12 +31,12 @@ import numpy as np
 import scipy.linalg as sl
 import scipy.sparse as sp
 from scipy.sparse.linalg import splu
-from twoball.fem_membrane.damping import ModalDamping
-from twoball.fem_membrane.space import PoleFunctional, pole_value
-from twoball.fem_membrane.validate import check_dt, check_rho_inf, check_t_end
 
 from twoball._common.errors import NumericalError
 from twoball._common.monitor import Monitor
+from twoball.fem_membrane.damping import ModalDamping
+from twoball.fem_membrane.space import PoleFunctional, pole_value
+from twoball.fem_membrane.validate import check_dt, check_rho_inf, check_t_end
 
 
 @dataclass(frozen=True)

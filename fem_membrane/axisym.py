@@ -22,6 +22,7 @@ import numpy as np
 from skfem import CellBasis, ElementLineP1, ElementLineP2, MeshLine1, asm
 from skfem.element import ElementH1
 from skfem.refdom import RefLine
+
 from twoball.fem_membrane.forms import AZIMUTH, axisym_mass, axisym_stiffness
 from twoball.fem_membrane.space import Discretisation, line_polar_cosine
 from twoball.fem_membrane.validate import check_elements, check_order

@@ -16,10 +16,9 @@ from __future__ import annotations
 from dataclasses import dataclass
 from typing import TYPE_CHECKING, Any
 
-from twoball.fem_membrane.options import MeshOptions
-
 from twoball._common.errors import ParameterError
 from twoball._common.keywords import checked
+from twoball.fem_membrane.options import MeshOptions
 
 if TYPE_CHECKING:
     from twoball.modal.balls.description import ModalBall

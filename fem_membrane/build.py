@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+from twoball._common.choices import DEFAULT_ELEMENTS, DEFAULT_LEVEL, MESH_KINDS
+from twoball._common.errors import ParameterError
 from twoball.fem_membrane.axisym import axisym_space
 from twoball.fem_membrane.mesh import SphereMesh, icosphere, ring_sphere
 from twoball.fem_membrane.space import Discretisation, sphere_space
@@ -13,9 +15,6 @@ from twoball.fem_membrane.validate import (
     check_order,
 )
 from twoball.modal.initial import check_phi_a
-
-from twoball._common.choices import DEFAULT_ELEMENTS, DEFAULT_LEVEL, MESH_KINDS
-from twoball._common.errors import ParameterError
 
 
 def build_space(

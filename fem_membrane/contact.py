@@ -18,14 +18,14 @@ from typing import Any
 
 import numpy as np
 import scipy.sparse as sp
+
+from twoball._common.errors import ParameterError
+from twoball._common.monitor import Monitor
 from twoball.fem_membrane.build import DEFAULT_LEVEL
 from twoball.fem_membrane.locate import locate_pole
 from twoball.fem_membrane.mesh import SphereMesh, icosphere, ring_sphere
 from twoball.fem_membrane.space import Discretisation
 from twoball.modal.contact.caps import cap_rule, sphere_cap_points
-
-from twoball._common.errors import ParameterError
-from twoball._common.monitor import Monitor
 
 #: Cap quadrature: Gauss points in cos(phi), and azimuthal points on the sphere.
 CAP_RINGS = 12

@@ -17,9 +17,8 @@ from __future__ import annotations
 import math
 from typing import Any
 
-from twoball.modal.cost import legendre_omega
-
 from twoball._common.estimate import BASE_MEMORY, Estimate, KiB, options
+from twoball.modal.cost import legendre_omega
 
 __all__ = ["alpha_estimate", "fem_contact_work", "fem_dofs", "fem_estimate", "fem_work"]
 
@@ -157,12 +156,11 @@ def fem_contact_work(
     ``body``, ``mesh`` and the window ``t_end_s`` [s] are checked first, as the
     solve checks them.
     """
+    from twoball._common.errors import ParameterError
     from twoball.fem_membrane.options import MeshOptions
     from twoball.modal.contact.cost import legendre_contact_work, solve_work
     from twoball.modal.contact.report import check_contact_options
     from twoball.modal.report import t_end_dimensionless
-
-    from twoball._common.errors import ParameterError
 
     check_contact_options(case, body)
     spec = MeshOptions.of(mesh).require(files=False)

@@ -23,6 +23,7 @@ from dataclasses import dataclass
 
 import numpy as np
 import scipy.sparse as sp
+
 from twoball.fem_membrane.eigen import Eigenpairs
 from twoball.modal.damping import Rayleigh
 from twoball.modal.series import check_damping

@@ -18,6 +18,9 @@ from typing import Any
 
 import numpy as np
 import scipy.sparse as sp
+
+from twoball._common.errors import NumericalError, ParameterError
+from twoball._common.monitor import Monitor
 from twoball.fem_membrane.slicing import (
     ORTHONORMALITY,
     RESIDUAL_LIMIT,
@@ -32,9 +35,6 @@ from twoball.fem_membrane.slicing import (
     use_dense,
 )
 from twoball.fem_membrane.slicing import m_orthonormal as m_orthonormalise
-
-from twoball._common.errors import NumericalError, ParameterError
-from twoball._common.monitor import Monitor
 
 __all__ = [
     "Eigenpairs",

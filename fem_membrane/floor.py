@@ -34,15 +34,15 @@ import math
 import numpy as np
 import scipy.linalg as sla
 from skfem import Basis, MeshLine1, asm
+
+from twoball._common.errors import NumericalError, ParameterError
+from twoball._common.monitor import Monitor, long_call
 from twoball.fem_membrane.axisym import LINE_ELEMENTS
 from twoball.fem_membrane.forms import axisym_mass, axisym_stiffness
 from twoball.modal.balls.description import ModalBall
 from twoball.modal.balls.membrane import membrane_rows, mode_decay, mode_spectrum
 from twoball.modal.damping import ModalRatio, Rayleigh
 from twoball.modal.stiffness import Stiffness
-
-from twoball._common.errors import NumericalError, ParameterError
-from twoball._common.monitor import Monitor, long_call
 
 __all__ = ["axisym_ball", "axisym_matrices", "cap_functional_exact"]
 

@@ -48,6 +48,7 @@ from __future__ import annotations
 import math
 
 import numpy as np
+
 from twoball.fem_membrane.alpha import AlphaParameters
 from twoball.modal.filters import SpectralFilter, legendre_frequency
 

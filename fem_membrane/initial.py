@@ -26,6 +26,7 @@ from scipy.sparse.linalg import splu
 from skfem import CellBasis, LinearForm, MeshLine1, MeshTri1
 from skfem.quadrature import get_quadrature
 from skfem.refdom import RefLine, RefTri
+
 from twoball.fem_membrane.space import Discretisation
 from twoball.fem_membrane.validate import INITIAL_METHODS, check_choice
 from twoball.modal.initial import check_phi_a, initial_displacement_x

@@ -76,6 +76,10 @@ from typing import Any
 import numpy as np
 import scipy.sparse as sp
 from threadpoolctl import threadpool_limits
+
+from twoball._common.choices import ROUTES
+from twoball._common.errors import NumericalError, ParameterError
+from twoball._common.monitor import Monitor
 from twoball.fem_membrane.eigen import Eigenpairs
 from twoball.fem_membrane.ritz_field import FieldChange
 from twoball.fem_membrane.slicing import factorise
@@ -83,10 +87,6 @@ from twoball.fem_membrane.space import Discretisation, PoleFunctional, pole_valu
 from twoball.modal.filters import SpectralFilter
 from twoball.modal.liftoff import DEFAULT_T_END
 from twoball.modal.series import ModalSeries, check_law
-
-from twoball._common.choices import ROUTES
-from twoball._common.errors import NumericalError, ParameterError
-from twoball._common.monitor import Monitor
 
 TOLERANCE = 1e-10  # relative change of the filtered pole trajectory (u and u_tt)
 SHIFT_COUNT = 3  # default number of shifts (factorisations of K - sigma M)

@@ -9,9 +9,9 @@ and :func:`shape_functions` gives the values there (dimensionless, unit R).
 from __future__ import annotations
 
 import numpy as np
-from twoball.fem_membrane.mesh import NODES_PER_TRIANGLE, SphereMesh
 
 from twoball._common.errors import NumericalError
+from twoball.fem_membrane.mesh import NODES_PER_TRIANGLE, SphereMesh
 
 
 def shape_functions(order: int, xi: np.ndarray) -> tuple[np.ndarray, np.ndarray]:

@@ -30,9 +30,9 @@ from pathlib import Path
 
 import numpy as np
 from skfem import MeshTri1
-from twoball.fem_membrane.validate import check_level, check_order
 
 from twoball._common.errors import ParameterError
+from twoball.fem_membrane.validate import check_level, check_order
 
 POLE = np.array([0.0, 0.0, 1.0])
 _POLE_TOLERANCE = 1e-12

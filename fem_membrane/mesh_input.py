@@ -39,6 +39,7 @@ from pathlib import Path
 from typing import Any
 
 import numpy as np
+
 from twoball.fem_membrane.mesh import SphereMesh, elevate, flatten
 from twoball.fem_membrane.surface_validate import (
     MAX_RADIAL_DEVIATION,

@@ -14,12 +14,12 @@ from __future__ import annotations
 from typing import Any
 
 import numpy as np
+
+from twoball._common.monitor import Monitor
 from twoball.fem_membrane.eigen import Eigenpairs
 from twoball.fem_membrane.space import PoleFunctional, pole_value
 from twoball.modal.filters import SpectralFilter
 from twoball.modal.series import ModalSeries
-
-from twoball._common.monitor import Monitor
 
 
 def modal_series(

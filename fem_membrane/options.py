@@ -21,17 +21,6 @@ from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
 
-from twoball.fem_membrane.validate import (
-    GEOMETRIES,
-    INITIAL_METHODS,
-    ORDERS,
-    check_elements,
-    check_level,
-    check_mesh_source,
-    check_order,
-    check_pole,
-)
-
 from twoball._common.choices import (
     DEFAULT_ELEMENTS,
     DEFAULT_LEVEL,
@@ -42,6 +31,16 @@ from twoball._common.choices import (
 )
 from twoball._common.errors import ParameterError
 from twoball._common.keywords import checked
+from twoball.fem_membrane.validate import (
+    GEOMETRIES,
+    INITIAL_METHODS,
+    ORDERS,
+    check_elements,
+    check_level,
+    check_mesh_source,
+    check_order,
+    check_pole,
+)
 
 #: Discrete sphere: the order-p interpolant through the nodes, or the sphere itself.
 DEFAULT_GEOMETRY = "isoparametric"

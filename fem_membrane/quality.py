@@ -30,6 +30,7 @@ from __future__ import annotations
 import math
 
 import numpy as np
+
 from twoball.fem_membrane.surface_validate import POLE_CAP, refuse
 
 __all__ = [

@@ -27,6 +27,7 @@ from __future__ import annotations
 import math
 
 import numpy as np
+
 from twoball.modal.series import ModalSeries
 
 SAMPLES_PER_PERIOD = 4  # field samples per period of omega_cut

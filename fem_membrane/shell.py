@@ -40,6 +40,8 @@ import numpy as np
 import scipy.linalg as sl
 import scipy.sparse as sp
 from scipy.sparse.linalg import LinearOperator, eigsh, splu
+
+from twoball._common.errors import NumericalError
 from twoball.fem_membrane.alpha import AlphaParameters, GeneralizedAlpha
 from twoball.fem_membrane.damping import ModalDamping
 from twoball.fem_membrane.eigen import Eigenpairs
@@ -48,8 +50,6 @@ from twoball.fem_membrane.validate import check_dt
 from twoball.modal.damping import Rayleigh
 from twoball.modal.series import ModalSeries
 from twoball.modal.stiffness import Stiffness, stiffen
-
-from twoball._common.errors import NumericalError
 
 
 class ShellOperator(LinearOperator):

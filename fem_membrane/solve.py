@@ -27,6 +27,9 @@ from dataclasses import dataclass, field
 from typing import Any
 
 import numpy as np
+
+from twoball._common.errors import ParameterError
+from twoball._common.monitor import Monitor, silent
 from twoball.fem_membrane.alpha import GeneralizedAlpha, automatic_step
 from twoball.fem_membrane.build import build_space
 from twoball.fem_membrane.damping import ModalDamping, rayleigh_matrix, rayleigh_table
@@ -52,9 +55,6 @@ from twoball.modal.initial import check_phi_a
 from twoball.modal.liftoff import DEFAULT_T_END, PoleMotion, SampledPoleMotion
 from twoball.modal.series import ModalSeries, check_law
 from twoball.modal.stiffness import Stiffness
-
-from twoball._common.errors import ParameterError
-from twoball._common.monitor import Monitor, silent
 
 STEP_ACCURACY = 0.2  # automatic dt: omega_cut * dt <= 0.2
 

@@ -24,13 +24,13 @@ import scipy.sparse as sp
 from skfem import CellBasis, ElementTriP1, ElementTriP2, ElementTriP3, ElementTriP4, MeshTri1, asm
 from skfem.assembly import Dofs
 from skfem.element import Element
+
+from twoball._common.errors import ParameterError
 from twoball.fem_membrane.forms import mass, stiffness
 from twoball.fem_membrane.locate import locate_pole
 from twoball.fem_membrane.mapping import RadialProjectionMapping, SurfaceMapping
 from twoball.fem_membrane.mesh import SphereMesh, elevate, flatten, topology
 from twoball.fem_membrane.validate import GEOMETRIES, check_choice, check_order
-
-from twoball._common.errors import ParameterError
 
 PoleFunctional = int | sp.spmatrix
 """A degree-of-freedom index at the pole, or a sparse row (1, dofs) evaluating u there."""

@@ -19,10 +19,9 @@ from __future__ import annotations
 from dataclasses import dataclass
 from typing import TYPE_CHECKING, Any
 
-from twoball.modal.balls.shell import Wall, _check_wall, _wall_of, shell_summary
-
 from twoball._common.errors import ParameterError
 from twoball._common.keywords import checked
+from twoball.modal.balls.shell import Wall, _check_wall, _wall_of, shell_summary
 
 if TYPE_CHECKING:
     from twoball.fem_shell.modes import ShellFEModes
@@ -75,6 +74,7 @@ def fe_shell_ball(
     Dimensionless (R, 1/c, m).  Floor points: the nodes with phi > pi/2.
     """
     import numpy as np
+
     from twoball.fem_shell.modes import fem_shell_modes
     from twoball.modal.balls.shell import shell_description
 

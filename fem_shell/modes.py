@@ -32,6 +32,7 @@ from functools import cached_property
 
 import numpy as np
 import scipy.linalg
+
 from twoball.fem_shell.space import ShellSpace, shell_space
 from twoball.modal.shell.impulse import (
     ImpulseResponse,

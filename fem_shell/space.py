@@ -67,6 +67,7 @@ from skfem import (
     MeshLine1,
     asm,
 )
+
 from twoball.modal.shell.parameters import ShellParameters
 
 __all__ = ["ElementLineHermiteLocal", "ShellSpace", "shell_space"]

@@ -38,13 +38,14 @@ from dataclasses import dataclass, field
 from typing import TYPE_CHECKING, Any
 
 import numpy as np
-from twoball.modal.balls.solid import SolidMaterial, check_material, material_of
 
 from twoball._common.errors import NumericalError, ParameterError, check_labels, real_number
 from twoball._common.keywords import checked
+from twoball.modal.balls.solid import SolidMaterial, check_material, material_of
 
 if TYPE_CHECKING:
     from skfem.mesh import MeshTri2
+
     from twoball.modal.balls.description import ModalBall
     from twoball.modal.parameters import Case
 
@@ -80,6 +81,7 @@ def pole_refined_disc(
     every new arc vertex moved onto the circle; P2 geometry.
     """
     from skfem import MeshTri1, MeshTri2
+
     from twoball.fem_solid.mesh import _project_arc, _quadratic_on_circle
 
     angles = np.linspace(0.0, math.pi, 5)
@@ -193,6 +195,7 @@ def solid_space(
     """
     import scipy.linalg as sla
     from skfem import Basis, ElementTriP2, ElementVector, FacetBasis, LinearForm, asm
+
     from twoball.fem_solid.eigen import _volume
     from twoball.fem_solid.forms import axisymmetric_elasticity, axisymmetric_mass, lame
 

@@ -37,10 +37,10 @@ from scipy.sparse.linalg import LinearOperator, eigsh, splu
 from scipy.special import eval_legendre, lpmv, sph_harm_y_all
 from skfem import Basis, ElementTriP1, ElementTriP2, ElementTriP3, ElementVector, FacetBasis, asm
 from skfem.mesh import MeshTet1, MeshTet2, MeshTri1, MeshTri2
-from twoball.fem_solid.assembly import elasticity_matrices
-from twoball.fem_solid.forms import axisymmetric_elasticity, axisymmetric_mass, lame
 
 from twoball._common.errors import NumericalError, ParameterError
+from twoball.fem_solid.assembly import elasticity_matrices
+from twoball.fem_solid.forms import axisymmetric_elasticity, axisymmetric_mass, lame
 
 __all__ = ["SolidEigen", "axisymmetric_eigen", "ball_eigen", "legendre_content", "vsh_content"]
 

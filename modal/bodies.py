@@ -31,11 +31,10 @@ import math
 from dataclasses import dataclass, field, replace
 from typing import Any
 
-from twoball.modal.upper.laws import ContactLaw
-from twoball.modal.upper.options import BODY_KINDS, BallBody, LumpedBody
-
 from twoball._common.errors import ParameterError
 from twoball._common.keywords import checked
+from twoball.modal.upper.laws import ContactLaw
+from twoball.modal.upper.options import BODY_KINDS, BallBody, LumpedBody
 
 __all__ = ["BODIES", "TENNIS_BALL_DAMPING", "BodyPreset", "preset_body"]
 

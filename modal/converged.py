@@ -12,6 +12,8 @@ import time
 from dataclasses import dataclass
 
 import numpy as np
+
+from twoball._common.monitor import Monitor
 from twoball.modal.decay import DecayingSeries, reduced, significant
 from twoball.modal.filters import FilterKind, SpectralFilter, legendre_frequency
 from twoball.modal.legendre import legendre_coefficients_recurrence, legendre_series
@@ -25,8 +27,6 @@ from twoball.modal.liftoff import (
 from twoball.modal.parameters import Case
 from twoball.modal.roots import bracketed_roots
 from twoball.modal.series import ModalSeries
-
-from twoball._common.monitor import Monitor
 
 PAPER_MODES = 30  # the truncation used throughout the paper (§3(b))
 REFERENCE_TOLERANCE = 1e-7  # relative change of v_l that stops the doubling of N

@@ -25,12 +25,12 @@ from __future__ import annotations
 import math
 
 import numpy as np
+
+from twoball._common.estimate import BASE_MEMORY, Estimate, options
 from twoball.modal.legendre import MAX_QUADRATURE
 from twoball.modal.parameters import Case
 from twoball.modal.series import CHUNK
 from twoball.modal.stiffness import Stiffness
-
-from twoball._common.estimate import BASE_MEMORY, Estimate, options
 
 __all__ = [
     "case_liftoff_work",

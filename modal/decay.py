@@ -22,6 +22,7 @@ import math
 
 import numpy as np
 from numpy.typing import ArrayLike
+
 from twoball.modal.filters import SpectralFilter
 from twoball.modal.series import ModalSeries, PoleState
 

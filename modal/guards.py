@@ -76,10 +76,9 @@ import math
 from dataclasses import dataclass
 from typing import Any
 
+from twoball._common.monitor import Monitor
 from twoball.modal.liftoff import LiftoffResult
 from twoball.modal.parameters import Case
-
-from twoball._common.monitor import Monitor
 
 TRUNCATION_WARNING = 0.05  # relative difference of t_l or v_l from the converged series
 BALL_RADIUS = (2e-3, 2.0)  # m: a 4 mm bead to a 4 m push ball

@@ -7,9 +7,9 @@ from typing import Any
 
 import numpy as np
 from numpy.typing import ArrayLike
-from twoball.modal.roots import bracketed_roots
 
 from twoball._common.errors import ParameterError, real_number
+from twoball.modal.roots import bracketed_roots
 
 _EPS = float(np.finfo(float).eps)
 _S_MIN = 1e-6  # smallest pi - phi_a resolved: (3.7) is ~ s^4 / 8 there

@@ -15,13 +15,13 @@ from functools import lru_cache
 import numpy as np
 from numpy.polynomial.legendre import legvander
 from numpy.typing import ArrayLike
+
+from twoball._common.errors import NumericalError, ParameterError
+from twoball._common.monitor import Monitor
 from twoball.modal.filters import FilterKind, SpectralFilter, legendre_frequency
 from twoball.modal.initial import check_phi_a
 from twoball.modal.series import ModalSeries
 from twoball.modal.stiffness import Stiffness
-
-from twoball._common.errors import NumericalError, ParameterError
-from twoball._common.monitor import Monitor
 
 MAX_QUADRATURE = 20000
 

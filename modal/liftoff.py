@@ -20,11 +20,11 @@ from typing import Literal, Protocol, runtime_checkable
 
 import numpy as np
 from numpy.typing import ArrayLike
-from twoball.modal.roots import bracketed_roots, newton_bracketed
-from twoball.modal.series import PoleState
 
 from twoball._common.choices import HORIZONS
 from twoball._common.errors import NumericalError, ParameterError
+from twoball.modal.roots import bracketed_roots, newton_bracketed
+from twoball.modal.series import PoleState
 
 Horizon = Literal["window", "paper"]
 DEFAULT_T_END = 4.0 * math.pi  # dimensionless window: two transits of the wave (4 pi / c seconds)

@@ -32,10 +32,9 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
+from twoball._common.errors import ParameterError
 from twoball.modal.icm.table1 import TABLE1, Table1Row
 from twoball.modal.presets import MEASURED, Measured
-
-from twoball._common.errors import ParameterError
 
 
 @dataclass(frozen=True)

@@ -12,6 +12,8 @@ import math
 from dataclasses import dataclass, field, replace
 from typing import Any
 
+from twoball._common.errors import ParameterError, bounded, real_number
+from twoball._common.keywords import checked
 from twoball.modal.damping import ModalRatio, Rayleigh
 from twoball.modal.initial import check_phi_a, phi_a_from_v0
 from twoball.modal.membrane import Membrane
@@ -29,9 +31,6 @@ from twoball.modal.scalings import (
     wave_speed_from_pressure,
 )
 from twoball.modal.stiffness import ATMOSPHERE, GAS_MODELS, Stiffness, stiffness_from_si
-
-from twoball._common.errors import ParameterError, bounded, real_number
-from twoball._common.keywords import checked
 
 
 def _number(name: str, value: object, valid: str) -> float:

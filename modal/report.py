@@ -10,13 +10,12 @@ from collections.abc import Sequence
 from dataclasses import dataclass, field
 from typing import Any
 
+from twoball._common.keywords import checked
+from twoball._common.monitor import Monitor
 from twoball.modal.filters import FilterKind, SpectralFilter
 from twoball.modal.legendre import legendre_series
 from twoball.modal.liftoff import DEFAULT_T_END, Horizon, LiftoffResult, PoleMotion, find_liftoff
 from twoball.modal.parameters import Case
-
-from twoball._common.keywords import checked
-from twoball._common.monitor import Monitor
 
 FLOOR_TIME_ESTIMATE = (
     "pi/(2c): half period of the pressure spring k = 2 pi R P of a ball flattened on the "

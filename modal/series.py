@@ -35,11 +35,11 @@ from typing import NamedTuple
 
 import numpy as np
 from numpy.typing import ArrayLike
-from twoball.modal.damping import ModalRatio, Rayleigh, is_law
-from twoball.modal.filters import SpectralFilter
 
 from twoball._common.errors import NumericalError, ParameterError
 from twoball._common.monitor import Monitor
+from twoball.modal.damping import ModalRatio, Rayleigh, is_law
+from twoball.modal.filters import SpectralFilter
 
 CHUNK = 4096  # time samples evaluated at once; bounds memory for large mode counts
 CRITICAL_BAND = 1e-10  # |zeta - 1| below which a mode is taken as critically damped

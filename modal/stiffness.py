@@ -55,11 +55,11 @@ import math
 from dataclasses import dataclass, replace
 
 import numpy as np
-from twoball.modal.membrane import Membrane
-from twoball.modal.series import ModalSeries
 
 from twoball._common.choices import GAS_MODELS as GAS_LAWS
 from twoball._common.errors import NumericalError, ParameterError
+from twoball.modal.membrane import Membrane
+from twoball.modal.series import ModalSeries
 
 GAS_MODELS: dict[str, float] = dict(zip(GAS_LAWS, (0.0, 1.0, 1.4), strict=True))
 """Polytropic exponent kappa of the enclosed gas (0: no gas term)."""
@@ -280,9 +280,8 @@ def flexural_rigidity(youngs_modulus: float, thickness: float, poisson: float = 
     A B above the range of :class:`~twoball.modal.parameters.Case` (1e6 N m) is
     refused here, naming ``youngs_modulus`` (what was given), not ``bending``.
     """
-    from twoball.modal.scalings import BENDING_RANGE
-
     from twoball._common.errors import bounded
+    from twoball.modal.scalings import BENDING_RANGE
 
     youngs_modulus = bounded("youngs_modulus", youngs_modulus, 0.0, 1e15, "Pa", low_open=True)
     thickness = bounded("thickness", thickness, 0.0, 1.0, "m", low_open=True)

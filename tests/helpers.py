@@ -12,12 +12,12 @@ import textwrap
 import matplotlib.image as mpimg
 import numpy as np
 import pytest
-from twoball.modal.filters import SpectralFilter
-from twoball.modal.legendre import legendre_series
-from twoball.modal.series import ModalSeries
 
 from tests import ROOT
 from twoball.cli.main import main
+from twoball.modal.filters import SpectralFilter
+from twoball.modal.legendre import legendre_series
+from twoball.modal.series import ModalSeries
 
 
 def cli_run(capsys, *argv):

@@ -6,6 +6,7 @@ import warnings
 
 import meshio
 import numpy as np
+
 from twoball.fem_membrane.mesh import SphereMesh
 
 RADIUS = 0.12  # m, the lower ball of the paper's case

@@ -35,13 +35,13 @@ from typing import TYPE_CHECKING, Any
 
 import numpy as np
 from numpy.polynomial.legendre import legvander
+
+from twoball._common.errors import ParameterError
+from twoball._common.keywords import checked
 from twoball.modal.balls.description import ModalBall
 from twoball.modal.contact.caps import legendre_cap_averages
 from twoball.modal.damping import ModalRatio, Rayleigh
 from twoball.modal.stiffness import Stiffness
-
-from twoball._common.errors import ParameterError
-from twoball._common.keywords import checked
 
 if TYPE_CHECKING:
     from twoball.modal.parameters import Case

@@ -34,10 +34,10 @@ from dataclasses import dataclass, field
 from typing import TYPE_CHECKING, Any
 
 import numpy as np
-from twoball.modal.balls.description import ModalBall
 
 from twoball._common.errors import ParameterError, check_labels, real_number
 from twoball._common.keywords import checked
+from twoball.modal.balls.description import ModalBall
 
 if TYPE_CHECKING:
     from twoball.modal.parameters import Case

@@ -52,10 +52,10 @@ from dataclasses import dataclass, field
 from typing import TYPE_CHECKING, Any
 
 import numpy as np
-from twoball.modal.presets import SUPERBALL_MATERIAL, SUPERBALL_RADIUS
 
 from twoball._common.errors import NumericalError, ParameterError, check_labels, real_number
 from twoball._common.keywords import checked
+from twoball.modal.presets import SUPERBALL_MATERIAL, SUPERBALL_RADIUS
 
 if TYPE_CHECKING:
     from twoball.modal.balls.description import ModalBall
@@ -437,6 +437,7 @@ def _amplitudes(
 ) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
     """Normalised A, B and the surface values U(1), V(1) of the modes of degree n at ``eta``."""
     from scipy.special import spherical_jn
+
     from twoball.modal.solid.lamb import boundary_matrix, speed_ratio
 
     ratio = speed_ratio(poisson)

@@ -134,6 +134,7 @@ def legendre_contact_work(
 def _legendre_top(modes: int) -> float:
     """The highest frequency of the Legendre series of N modes, as the solver reads it."""
     import numpy as np
+
     from twoball.modal.filters import legendre_frequency
 
     return float(np.max(legendre_frequency(np.arange(modes + 1)), initial=0.0))

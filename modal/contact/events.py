@@ -25,11 +25,11 @@ from typing import Any
 
 import numpy as np
 from scipy.linalg import expm
-from twoball.modal.contact.system import ContactSystem
-from twoball.modal.roots import bracketed_roots
 
 from twoball._common.errors import NumericalError, ParameterError
 from twoball._common.monitor import Monitor
+from twoball.modal.contact.system import ContactSystem
+from twoball.modal.roots import bracketed_roots
 
 TIME_TOLERANCE = 1e-12
 MAX_EVENTS = 10000

@@ -39,6 +39,10 @@ from dataclasses import dataclass, field
 from typing import Any
 
 import numpy as np
+
+from twoball._common.errors import ParameterError
+from twoball._common.keywords import checked
+from twoball._common.monitor import Monitor
 from twoball.modal.contact.body import Body
 from twoball.modal.contact.caps import cap_angle, legendre_cap_averages
 from twoball.modal.contact.events import ContactHistory
@@ -48,10 +52,6 @@ from twoball.modal.liftoff import find_liftoff
 from twoball.modal.parameters import FROM_V0, Case
 from twoball.modal.report import t_end_dimensionless
 from twoball.modal.series import ModalSeries
-
-from twoball._common.errors import ParameterError
-from twoball._common.keywords import checked
-from twoball._common.monitor import Monitor
 
 CONTACT_REFERENCE_MIN_MODES = 60  # twice the paper's N = 30
 CONTACT_REFERENCE_MAX_MODES = 240  # one contact solve: 2.7 s at 240 modes, 44 s at 480

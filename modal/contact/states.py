@@ -15,6 +15,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 import numpy as np
+
 from twoball.modal.contact.events import _DENSE_EXPM_MAX, ContactHistory, grid_step, make_phases
 from twoball.modal.contact.system import ContactSystem
 from twoball.modal.contact.trajectory import phases

@@ -27,6 +27,9 @@ from dataclasses import dataclass, field
 from typing import Any
 
 import numpy as np
+
+from twoball._common.errors import ParameterError
+from twoball._common.monitor import Monitor
 from twoball.modal.balls.description import ModalBall
 from twoball.modal.balls.membrane import mode_decay
 from twoball.modal.contact.events import ContactEvent, ContactHistory
@@ -34,9 +37,6 @@ from twoball.modal.contact.states import ModalStates
 from twoball.modal.damping import ModalRatio
 from twoball.modal.nonsmooth.moreau_jean import ZENO_VELOCITY
 from twoball.modal.series import ModalSeries
-
-from twoball._common.errors import ParameterError
-from twoball._common.monitor import Monitor
 
 __all__ = ["DEFAULT_DT", "ExactMotion", "SteppedMotion", "series_ball", "stepped_contact"]
 

@@ -28,9 +28,9 @@ from dataclasses import dataclass
 from functools import cached_property
 
 import numpy as np
-from twoball.modal.series import ModalSeries
 
 from twoball._common.errors import NumericalError, ParameterError
+from twoball.modal.series import ModalSeries
 
 
 @dataclass(frozen=True)

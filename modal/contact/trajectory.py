@@ -8,6 +8,7 @@ Rebuilds the phases from a :class:`~twoball.modal.contact.events.ContactHistory`
 from __future__ import annotations
 
 import numpy as np
+
 from twoball.modal.contact.events import ContactHistory, grid_step, make_phases
 from twoball.modal.contact.system import ContactSystem
 

@@ -36,6 +36,7 @@ import math
 from dataclasses import dataclass
 
 import numpy as np
+
 from twoball.modal.floor.measure import ContactInterval, contact_intervals
 from twoball.modal.floor.system import FloorSystem
 from twoball.modal.nonsmooth import Trajectory

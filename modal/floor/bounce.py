@@ -27,6 +27,8 @@ import math
 from dataclasses import dataclass, replace
 from typing import Any
 
+from twoball._common.errors import NumericalError, ParameterError
+from twoball._common.monitor import Monitor
 from twoball.modal.balls.membrane import LegendreBall
 from twoball.modal.balls.protocol import Ball, check_ball
 from twoball.modal.floor.inputs import (
@@ -42,9 +44,6 @@ from twoball.modal.floor.inputs import (
 from twoball.modal.floor.options import Drop
 from twoball.modal.floor.report import BounceReport
 from twoball.modal.parameters import Case
-
-from twoball._common.errors import NumericalError, ParameterError
-from twoball._common.monitor import Monitor
 
 __all__ = [
     "ARTEFACT_SECTION",

@@ -30,6 +30,7 @@ from dataclasses import dataclass, field, replace
 from typing import TYPE_CHECKING, Any
 
 import numpy as np
+
 from twoball.modal.floor.measure import (
     ContactInterval,
     contact_edge,

@@ -14,13 +14,12 @@ import math
 from dataclasses import dataclass, replace
 from typing import Any
 
+from twoball._common.errors import ParameterError
 from twoball.modal.damping import ModalRatio, Rayleigh
 from twoball.modal.floor.options import Drop
 from twoball.modal.membrane import Membrane
 from twoball.modal.parameters import Case
 from twoball.modal.stiffness import Stiffness
-
-from twoball._common.errors import ParameterError
 
 __all__ = [
     "DEFAULT_DT",

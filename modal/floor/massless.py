@@ -26,12 +26,12 @@ from dataclasses import dataclass
 from typing import Any
 
 import numpy as np
+
+from twoball._common.errors import NumericalError
 from twoball.modal.floor.drop import DropResult, DropSettings, run_drop
 from twoball.modal.floor.system import FloorSystem
 from twoball.modal.liftoff import LiftoffResult, SampledPoleMotion, find_liftoff
 from twoball.modal.nonsmooth import ContactProblem, MoreauJean
-
-from twoball._common.errors import NumericalError
 
 __all__ = ["MasslessDrop", "massless_liftoff"]
 

@@ -15,11 +15,10 @@ import math
 from dataclasses import dataclass, field, replace
 from typing import Any
 
+from twoball._common.errors import ParameterError
 from twoball.modal.floor.drop import DropResult
 from twoball.modal.floor.options import Drop
 from twoball.modal.parameters import Case
-
-from twoball._common.errors import ParameterError
 
 __all__ = ["BounceReport"]
 

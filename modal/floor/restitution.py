@@ -28,6 +28,7 @@ from dataclasses import dataclass
 from typing import Any
 
 import numpy as np
+
 from twoball.modal.balls.description import ModalBall
 from twoball.modal.balls.membrane import legendre_ball
 from twoball.modal.damping import ModalRatio, Rayleigh

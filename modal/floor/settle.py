@@ -17,6 +17,7 @@ import time
 from dataclasses import dataclass
 
 import numpy as np
+
 from twoball.modal.floor.measure import contact_edge
 from twoball.modal.floor.system import FloorSystem
 from twoball.modal.nonsmooth import MoreauJean

@@ -43,10 +43,10 @@ import math
 from dataclasses import dataclass
 
 import numpy as np
-from twoball.modal.balls.description import ModalBall
-from twoball.modal.nonsmooth import ContactProblem, MoreauJean
 
 from twoball._common.errors import NumericalError, ParameterError
+from twoball.modal.balls.description import ModalBall
+from twoball.modal.nonsmooth import ContactProblem, MoreauJean
 
 __all__ = ["BodyOnTop", "FloorSystem", "floor_system", "release_delay"]
 

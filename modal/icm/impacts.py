@@ -8,6 +8,8 @@ restitution (eqs. (2.3)-(2.5)).  SI units; velocities positive upwards.
 from __future__ import annotations
 
 import numpy as np
+
+from twoball._common.errors import ParameterError
 from twoball.modal.icm.inputs import (
     check_drop_height,
     check_dx,
@@ -16,8 +18,6 @@ from twoball.modal.icm.inputs import (
     check_restitution,
 )
 from twoball.modal.scalings import STANDARD_GRAVITY
-
-from twoball._common.errors import ParameterError
 
 
 def impact_velocity(drop_height: float, g: float = STANDARD_GRAVITY) -> float:

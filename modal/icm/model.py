@@ -7,6 +7,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
+from twoball._common.keywords import checked
 from twoball.modal.icm.impacts import (
     impact_time,
     impact_velocity,
@@ -22,8 +23,6 @@ from twoball.modal.icm.inputs import (
     check_restitution,
 )
 from twoball.modal.scalings import STANDARD_GRAVITY
-
-from twoball._common.keywords import checked
 
 
 @checked

@@ -9,10 +9,9 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
-from twoball.modal.icm.limits import touching_ratios
-
 from twoball._common.errors import ParameterError
 from twoball._common.keywords import checked
+from twoball.modal.icm.limits import touching_ratios
 
 #: Significant figures of the ICM columns in Table 1.
 TABLE1_DIGITS = 2

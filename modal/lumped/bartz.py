@@ -54,6 +54,7 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 
+from twoball._common.errors import bounded
 from twoball.modal.lumped.drop import check_gap, check_gravity, impact_speed
 from twoball.modal.lumped.fitting import linear_restitution
 from twoball.modal.lumped.laws import LinearLaw
@@ -62,8 +63,6 @@ from twoball.modal.lumped.result import LumpedResult
 from twoball.modal.lumped.solver import simulate
 from twoball.modal.pairs import Pair
 from twoball.modal.scalings import MASS_RANGE, STANDARD_GRAVITY
-
-from twoball._common.errors import bounded
 
 MU_RANGE = (1e-12, 1e6)
 KAPPA_RANGE = (1e-9, 1e9)

@@ -22,14 +22,13 @@ import math
 from dataclasses import dataclass
 from typing import Any
 
+from twoball._common.errors import NumericalError, ParameterError
 from twoball.modal.lumped.bartz import Bartz2020
 from twoball.modal.lumped.hertz import HertzViscoelastic
 from twoball.modal.lumped.icm_baseline import ICMBaseline
 from twoball.modal.lumped.pair_inputs import PairContacts, pair_contacts
 from twoball.modal.lumped.spring_dashpot import TwoSpringDashpot
 from twoball.modal.pairs import Pair
-
-from twoball._common.errors import NumericalError, ParameterError
 
 __all__ = ["BASELINE_NAMES", "BaselineInputs", "baselines", "body_inputs", "pair_inputs"]
 

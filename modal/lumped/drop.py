@@ -11,10 +11,9 @@ from __future__ import annotations
 
 from typing import Any
 
+from twoball._common.errors import ParameterError, bounded
 from twoball.modal.icm import impact_velocity
 from twoball.modal.scalings import STANDARD_GRAVITY, V0_MAX
-
-from twoball._common.errors import ParameterError, bounded
 
 __all__ = ["DX_MAX", "TwoContacts", "check_gap", "check_gravity", "impact_speed"]
 

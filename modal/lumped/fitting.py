@@ -37,9 +37,9 @@ import numpy as np
 from scipy.integrate import solve_ivp
 from scipy.optimize import brentq
 from scipy.special import beta as beta_function
-from twoball.modal.lumped.laws import HertzLaw, LinearLaw
 
 from twoball._common.errors import NumericalError, ParameterError, bounded
+from twoball.modal.lumped.laws import HertzLaw, LinearLaw
 
 #: Lowest restitution of a linear spring-dashpot that never pulls (zeta -> 1).
 LINEAR_FORCE_RULE_MIN_E = math.exp(-2.0)

@@ -26,6 +26,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
+from twoball._common.errors import ParameterError, bounded
 from twoball.modal.lumped.drop import TwoContacts
 from twoball.modal.lumped.fitting import fit_hertz
 from twoball.modal.lumped.laws import DAMPING_EXPONENTS, HertzLaw
@@ -33,8 +34,6 @@ from twoball.modal.lumped.pair_inputs import pair_contacts
 from twoball.modal.lumped.spring_dashpot import DURATION_RANGE
 from twoball.modal.pairs import Pair
 from twoball.modal.scalings import MASS_RANGE
-
-from twoball._common.errors import ParameterError, bounded
 
 #: Impact speed at which Table 1's pairs were measured and the presets' ``|v0|`` [m/s]
 #: (basketball drops from x2 = 0.92 m, §4(b)).

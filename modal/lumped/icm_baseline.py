@@ -10,14 +10,13 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
+from twoball._common.errors import bounded
 from twoball.modal.icm import icm
 from twoball.modal.icm.inputs import check_mu, check_restitution
 from twoball.modal.lumped.drop import check_gap, impact_speed
 from twoball.modal.lumped.result import ContactEvent, EnergyBudget, LumpedResult
 from twoball.modal.pairs import Pair
 from twoball.modal.scalings import MASS_RANGE, STANDARD_GRAVITY
-
-from twoball._common.errors import bounded
 
 
 @dataclass(frozen=True)

@@ -21,9 +21,8 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 
-from twoball.modal.pairs import Pair
-
 from twoball._common.errors import ParameterError
+from twoball.modal.pairs import Pair
 
 
 @dataclass(frozen=True)

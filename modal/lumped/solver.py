@@ -35,9 +35,9 @@ from typing import Protocol
 
 import numpy as np
 from scipy.integrate import solve_ivp
-from twoball.modal.lumped.result import ContactEvent, EnergyBudget, LumpedResult
 
 from twoball._common.errors import NumericalError
+from twoball.modal.lumped.result import ContactEvent, EnergyBudget, LumpedResult
 
 # state vector: z2, v2, z1, v1, floor impulse, pair impulse, floor and pair dashpot work
 _Z2, _V2, _Z1, _V1, _JF, _JP, _DF, _DP = range(8)

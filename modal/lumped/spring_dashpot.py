@@ -18,14 +18,13 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
+from twoball._common.errors import bounded
 from twoball.modal.lumped.drop import TwoContacts
 from twoball.modal.lumped.fitting import check_linear_e, fit_linear
 from twoball.modal.lumped.laws import LinearLaw
 from twoball.modal.lumped.pair_inputs import pair_contacts
 from twoball.modal.pairs import Pair
 from twoball.modal.scalings import MASS_RANGE
-
-from twoball._common.errors import bounded
 
 DURATION_RANGE = (1e-9, 1e3)  # s
 

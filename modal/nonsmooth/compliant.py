@@ -68,6 +68,8 @@ from collections.abc import Callable, Sequence
 from dataclasses import dataclass, field, replace
 
 import numpy as np
+
+from twoball._common.errors import NumericalError, ParameterError
 from twoball.modal.nonsmooth.lcp import solve_lcp
 from twoball.modal.nonsmooth.moreau_jean import (
     ContactEvent,
@@ -76,8 +78,6 @@ from twoball.modal.nonsmooth.moreau_jean import (
     StepRecord,
 )
 from twoball.modal.nonsmooth.problem import ContactProblem
-
-from twoball._common.errors import NumericalError, ParameterError
 
 __all__ = ["CompliantMoreauJean", "CompliantRow", "PowerLaw"]
 

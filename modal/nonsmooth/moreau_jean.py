@@ -64,13 +64,13 @@ from collections.abc import Callable
 from dataclasses import dataclass, field
 
 import numpy as np
+
+from twoball._common.errors import NumericalError, ParameterError, real_number
+from twoball._common.monitor import Monitor
 from twoball.modal.nonsmooth.crossing import first_crossings
 from twoball.modal.nonsmooth.lcp import solve_lcp
 from twoball.modal.nonsmooth.linear import Factorised, combine
 from twoball.modal.nonsmooth.problem import ContactProblem
-
-from twoball._common.errors import NumericalError, ParameterError, real_number
-from twoball._common.monitor import Monitor
 
 _MAX_LOCALISATIONS = 64  # shortened sub-steps inside one step (a guard)
 _ROOT_ITERATIONS = 60  # Illinois iterations of one localisation (a guard)

@@ -19,9 +19,9 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 import numpy as np
-from twoball.modal.nonsmooth.linear import MatrixLike, Operator, as_operator, as_rows
 
 from twoball._common.errors import ParameterError
+from twoball.modal.nonsmooth.linear import MatrixLike, Operator, as_operator, as_rows
 
 
 @dataclass(frozen=True, eq=False)

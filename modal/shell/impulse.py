@@ -42,6 +42,7 @@ from collections.abc import Callable
 from dataclasses import dataclass
 
 import numpy as np
+
 from twoball.modal.shell.modes import ShellModes, shell_modes
 from twoball.modal.shell.parameters import ShellParameters
 from twoball.modal.shell.spectrum import branches

@@ -31,6 +31,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 import numpy as np
+
 from twoball.modal.shell.parameters import ShellParameters
 from twoball.modal.shell.spectrum import branches, mode_vectors
 

@@ -30,9 +30,9 @@ import math
 from dataclasses import dataclass
 
 import numpy as np
-from twoball.modal.stiffness import ATMOSPHERE, GAS_MODELS
 
 from twoball._common.errors import ParameterError, bounded, real_number
+from twoball.modal.stiffness import ATMOSPHERE, GAS_MODELS
 
 __all__ = ["ShellParameters", "ShellSI", "shell_from_si"]
 

@@ -105,6 +105,7 @@ Everything here is dimensionless (units of :mod:`twoball.modal.shell.parameters`
 from __future__ import annotations
 
 import numpy as np
+
 from twoball.modal.shell.parameters import ShellParameters
 
 __all__ = [

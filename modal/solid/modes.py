@@ -38,9 +38,9 @@ from dataclasses import dataclass
 
 import numpy as np
 from scipy.special import eval_legendre, lpmv, spherical_jn
-from twoball.modal.solid.lamb import boundary_matrix, lamb_roots, scaled_bessel_pair, speed_ratio
 
 from twoball._common.errors import ParameterError
+from twoball.modal.solid.lamb import boundary_matrix, lamb_roots, scaled_bessel_pair, speed_ratio
 
 __all__ = ["SphereMode", "modal_coefficients", "spheroidal_modes", "translation_mode"]
 

@@ -6,9 +6,9 @@ import math
 from dataclasses import dataclass
 
 import numpy as np
-from twoball.modal.solid.lamb import lamb_roots, speed_ratio
 
 from twoball._common.errors import ParameterError
+from twoball.modal.solid.lamb import lamb_roots, speed_ratio
 
 __all__ = ["ElasticSphere"]
 

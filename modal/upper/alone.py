@@ -25,12 +25,12 @@ from dataclasses import dataclass, field
 from typing import Any
 
 import numpy as np
-from twoball.modal.nonsmooth import ContactProblem
-from twoball.modal.nonsmooth.compliant import CompliantMoreauJean, CompliantRow
-from twoball.modal.upper.options import BallBody, LumpedBody
 
 from twoball._common.errors import NumericalError, ParameterError
 from twoball._common.keywords import checked
+from twoball.modal.nonsmooth import ContactProblem
+from twoball.modal.nonsmooth.compliant import CompliantMoreauJean, CompliantRow
+from twoball.modal.upper.options import BallBody, LumpedBody
 
 __all__ = ["AloneResult", "ball_alone", "lumped_alone"]
 

@@ -26,11 +26,11 @@ import math
 from dataclasses import dataclass
 
 import numpy as np
+
+from twoball._common.errors import NumericalError, ParameterError
 from twoball.modal.balls.description import ModalBall
 from twoball.modal.nonsmooth import MoreauJean, Trajectory
 from twoball.modal.upper.system import BallSystem, ball_system
-
-from twoball._common.errors import NumericalError, ParameterError
 
 __all__ = ["CollisionResult", "free_collision"]
 

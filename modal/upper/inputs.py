@@ -11,11 +11,10 @@ from __future__ import annotations
 import math
 from typing import Any
 
+from twoball._common.errors import ParameterError
 from twoball.modal.floor.options import Drop
 from twoball.modal.parameters import Case
 from twoball.modal.upper.options import BODY_KINDS, BallBody, LumpedBody
-
-from twoball._common.errors import ParameterError
 
 __all__ = ["pair_body", "resolve_elastic"]
 

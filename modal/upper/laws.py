@@ -47,10 +47,9 @@ import math
 from dataclasses import asdict, dataclass
 from typing import Any
 
-from twoball.modal.nonsmooth.compliant import PowerLaw
-
 from twoball._common.errors import ParameterError, bounded
 from twoball._common.keywords import checked
+from twoball.modal.nonsmooth.compliant import PowerLaw
 
 __all__ = ["LAWS", "ContactLaw"]
 

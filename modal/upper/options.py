@@ -26,10 +26,9 @@ import math
 from dataclasses import dataclass, field
 from typing import Any
 
-from twoball.modal.upper.laws import ContactLaw
-
 from twoball._common.errors import ParameterError, bounded, check_labels
 from twoball._common.keywords import checked
+from twoball.modal.upper.laws import ContactLaw
 
 __all__ = ["BODY_KINDS", "BallBody", "LumpedBody", "body_kind"]
 

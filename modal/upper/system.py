@@ -47,12 +47,12 @@ from dataclasses import dataclass, field
 from typing import Any
 
 import numpy as np
+
+from twoball._common.errors import NumericalError, ParameterError
 from twoball.modal.balls.description import ModalBall
 from twoball.modal.floor.system import BodyOnTop, FloorSystem, floor_system
 from twoball.modal.nonsmooth import ContactProblem
 from twoball.modal.nonsmooth.compliant import CompliantMoreauJean, CompliantRow, PowerLaw
-
-from twoball._common.errors import NumericalError, ParameterError
 
 __all__ = [
     "CAP_RATIO",

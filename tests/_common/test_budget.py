@@ -19,8 +19,6 @@ from pathlib import Path
 
 import numpy as np
 import pytest
-from twoball.modal.cost import series_estimate
-from twoball.modal.filters import SpectralFilter
 
 import twoball
 from tests import ROOT
@@ -46,6 +44,8 @@ from twoball._common.budget import (
 from twoball._common.errors import ParameterError
 from twoball._common.watch import Watch
 from twoball._costs import check_series
+from twoball.modal.cost import series_estimate
+from twoball.modal.filters import SpectralFilter
 
 ABSURD = [
     ["liftoff", "--modes", "20000"],
@@ -270,11 +270,10 @@ def test_dense_eigenpairs_in_a_child_stop_at_the_deadline() -> None:
 def test_the_drops_eigenpairs_and_steps(monkeypatch) -> None:
     """The drop, the whole bounce and the finite elements' dense eigenpairs stop at the
     deadline; from 500 unknowns the eigenpairs run in a child (its check comes first)."""
+    from twoball._common.budget import Budget
     from twoball.fem_membrane.floor import axisym_ball
     from twoball.modal.damping import ModalRatio
     from twoball.modal.stiffness import Stiffness
-
-    from twoball._common.budget import Budget
 
     monkeypatch.setattr(Budget, "check", lambda self, option, estimate: estimate)
     quick = twoball.MoreauJean(twoball.LegendreBall(16))

@@ -95,12 +95,11 @@ def test_choices_imports_the_standard_library_only():
 def test_the_command_lines_helpers_are_the_models_own():
     """``twoball/_lookup.py`` (what the command line calls at run time) loads the model's
     functions themselves, on first use."""
+    from twoball import _lookup
     from twoball.modal.pairs import pair
     from twoball.modal.stiffness import flexural_rigidity
     from twoball.verify.output.fields import parse_times
     from twoball.verify.sweeps.sweeps import make_grid
-
-    from twoball import _lookup
 
     assert _lookup.pair is pair and _lookup.flexural_rigidity is flexural_rigidity
     assert _lookup.parse_times is parse_times and _lookup.make_grid is make_grid

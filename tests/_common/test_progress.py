@@ -20,12 +20,12 @@ from pathlib import Path
 import imageio.v3 as iio
 import numpy as np
 import pytest
-from twoball.verify.output.report_files import split_provenance
-from twoball.verify.output.series import read_series
 
 from tests import ROOT
 from twoball._common.errors import ParameterError
 from twoball._common.progress import INTERVAL, Reporter, is_quiet, set_quiet
+from twoball.verify.output.report_files import split_provenance
+from twoball.verify.output.series import read_series
 
 LINE = re.compile(r"twoball: (?P<name>[\w -]+): (?P<text>.*) \((?P<seconds>\d+) s\)")
 

@@ -17,11 +17,11 @@ import meshio
 import numpy as np
 import pytest
 import scipy
-from twoball.verify.output.report_files import PROVENANCE, result_files
 
 import twoball
 from twoball._common import provenance
 from twoball.cli.main import main
+from twoball.verify.output.report_files import PROVENANCE, result_files
 
 KEYS = {"twoball", "versions", "platform", "generated", "command", "call", "case"}
 

@@ -16,7 +16,6 @@ import time
 from pathlib import Path
 
 import pytest
-from twoball.verify.output.series import read_series
 
 from tests import ROOT
 from tests._common.commands import (
@@ -33,6 +32,7 @@ from tests._common.commands import (
 )
 from twoball._common.signals import Interrupted, checkpoint, held_signals
 from twoball._common.staging import MARKER, foreign_entry
+from twoball.verify.output.series import read_series
 
 SIGNALS = [(signal.SIGINT, 130), (signal.SIGTERM, 143)]
 POOL_SWEEP = ["sweep", "--param", "damping", "--values", "0:0.3:40", "--workers", "2"]

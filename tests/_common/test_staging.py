@@ -12,7 +12,6 @@ import subprocess
 import sys
 
 import pytest
-from twoball.verify.output.series import read_series
 
 from tests._common.commands import (
     FAST,
@@ -27,6 +26,7 @@ from tests._common.commands import (
 )
 from twoball._common.staging import MARKER, SCRATCH_TAG, foreign_entry, sweep_stale
 from twoball.cli.main import main
+from twoball.verify.output.series import read_series
 
 
 # --------------------------------------------------------------------------- full disk
@@ -216,6 +216,7 @@ def test_an_existing_output_on_a_read_only_mount_is_refused_before_work(
 def test_outputs_onto_inputs_or_each_other_are_refused(capsys, tmp_path):
     """--out onto the --mesh-file, --render onto --plot: refused, nothing replaced."""
     import meshio
+
     from twoball.fem_membrane.mesh import icosphere
 
     ball = icosphere(2)

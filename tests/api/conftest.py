@@ -8,6 +8,7 @@ import pytest
 def ball_file(tmp_path_factory):
     """An icosphere of level 2 as a 0.12 m ball centred at (1, 2, 3), written by meshio."""
     import meshio
+
     from twoball.fem_membrane.mesh import icosphere
 
     mesh = icosphere(2, 1)

@@ -8,10 +8,10 @@ import pickle
 
 import numpy as np
 import pytest
-from twoball.modal.icm.limits import touching_ratios
-from twoball.modal.pairs import PAIRS
 
 import twoball
+from twoball.modal.icm.limits import touching_ratios
+from twoball.modal.pairs import PAIRS
 
 BASKETBALL = twoball.Case.preset("basketball")
 
@@ -643,6 +643,7 @@ def test_the_picture_draws_the_floor_and_a_short_footer(tmp_path):
     centre's frame, magnified like the membrane), one mention of the backend, no overlap of
     the floor and the footer (the footer's band below the floor holds no floor pixel)."""
     import imageio.v3 as iio
+
     from twoball.fem_membrane.mesh import sphere_mesh
     from twoball.verify.output.drop_fields import drop_frames, drop_scene
     from twoball.verify.output.render import FLOOR_COLOUR

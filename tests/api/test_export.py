@@ -6,14 +6,14 @@ import json
 
 import numpy as np
 import pytest
-from twoball.modal.filters import SpectralFilter
-from twoball.modal.legendre import displacement, legendre_series
-from twoball.modal.parameters import Case, preset
-from twoball.verify.output.series import read_series
 
 import twoball
 from tests.meshes import CENTER, OFF_NODE_POLES, RADIUS
 from twoball._common.errors import ParameterError
+from twoball.modal.filters import SpectralFilter
+from twoball.modal.legendre import displacement, legendre_series
+from twoball.modal.parameters import Case, preset
+from twoball.verify.output.series import read_series
 
 CASE = preset("basketball").derive(modes=10)
 MU = 0.1

@@ -6,9 +6,9 @@ import json
 
 import numpy as np
 import pytest
-from twoball.verify.fit.data import MeasurementError
 
 import twoball
+from twoball.verify.fit.data import MeasurementError
 
 PAPER = {"v0_m_s": [4.1], "phi_a_rad": [2.6], "v1_m_s": [3.7]}
 

@@ -6,12 +6,12 @@ import dataclasses
 import math
 
 import pytest
-from twoball.modal.parameters import Case
 
 import twoball
 from tests.helpers import cli_json, same_numbers
 from twoball import Body
 from twoball.cli.main import main
+from twoball.modal.parameters import Case
 
 BASKETBALL = Case.preset("basketball")
 

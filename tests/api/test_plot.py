@@ -4,11 +4,11 @@ from __future__ import annotations
 
 import matplotlib.image as mpimg
 import pytest
-from twoball.verify.output.figures.eigen import eigen_figure, eigen_table
 
 import twoball
 from tests.meshes import RADIUS
 from twoball._common.errors import ParameterError
+from twoball.verify.output.figures.eigen import eigen_figure, eigen_table
 
 BASKETBALL = twoball.Case.preset("basketball")
 MM = 1000.0  # the .msh file is in millimetres

@@ -6,11 +6,11 @@ import json
 
 import numpy as np
 import pytest
-from twoball.modal.parameters import Case
 
 import twoball
 from tests.helpers import cli_json
 from twoball import Body
+from twoball.modal.parameters import Case
 
 BASKETBALL = Case.preset("basketball")
 

@@ -32,10 +32,9 @@ def test_options_that_do_not_apply_are_refused(argv, flag, tmp_path, capsys):
 def test_cli_option_constants_match_the_model():
     """The option group offers the model's own limits (modal/contact/body.py), both read
     from twoball/_common/choices.py."""
-    from twoball.modal.contact import body
-
     from twoball._common import choices
     from twoball.cli.main import full_parser
+    from twoball.modal.contact import body
 
     assert choices.MAX_MASS_RATIO is body.MAX_MASS_RATIO and body.MAX_MASS_RATIO == 100.0
     assert choices.ENERGY_OPTIONS is body.ENERGY_OPTIONS == ("ball", "both")

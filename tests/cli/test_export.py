@@ -10,12 +10,12 @@ import meshio
 import numpy as np
 import pytest
 import pyvista as pv
-from twoball.verify.output.series import read_series
 
 import twoball
 from tests.helpers import text_of
 from tests.meshes import OFF_NODE_POLES
 from twoball.cli.main import main
+from twoball.verify.output.series import read_series
 
 FIELDS = ("u_m", "u_t_m_s", "u_tt_m_s2", "displacement_m", "u_fem_m", "u_legendre_m", "u_diff_m")
 

@@ -35,6 +35,7 @@ INTERRUPT_S = 1.0
 def ball_file(tmp_path: Path) -> Path:
     """An icosphere of 2562 nodes as a gmsh file: the full route solves it densely."""
     import meshio
+
     from twoball.fem_membrane.mesh import icosphere
 
     mesh = icosphere(4, 1)

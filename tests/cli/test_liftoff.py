@@ -8,13 +8,13 @@ import subprocess
 import sys
 
 import pytest
-from twoball.modal.parameters import Case
 
 import twoball
 from tests import ROOT
 from tests.helpers import cli_run
 from twoball import Body
 from twoball.cli.main import main
+from twoball.modal.parameters import Case
 
 BASKETBALL = Case.preset("basketball")
 

@@ -4,9 +4,9 @@ import json
 import os
 
 import pytest
-from twoball.verify.reproduce import driver as rep
 
 from twoball.cli.main import main
+from twoball.verify.reproduce import driver as rep
 
 
 def missing_parent(p):

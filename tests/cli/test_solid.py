@@ -3,12 +3,12 @@
 from __future__ import annotations
 
 import pytest
-from twoball.modal.balls.solid import solid_case
-from twoball.modal.solid.lamb import lamb_function, lamb_roots
 
 import twoball
 from tests._common.commands import refused
 from tests.helpers import cli_json, cli_run
+from twoball.modal.balls.solid import solid_case
+from twoball.modal.solid.lamb import lamb_function, lamb_roots
 
 SMALL = ("--modes", "16", "--radial-orders", "3")
 

@@ -3,11 +3,11 @@
 import json
 
 import pytest
-from twoball.verify.sweeps import parallel
 
 from tests.helpers import cli_run
 from tests.verify.sweeps.helpers import FailAbove
 from twoball.cli.main import main
+from twoball.verify.sweeps import parallel
 
 
 def test_sweep_json_in_order(capsys):
@@ -87,11 +87,10 @@ def test_a_sweep_in_which_no_point_could_run_is_an_error(tmp_path, capsys):
     """Every point over the budget (each N's series with its reference above 3 s, the
     sweep's total of 3 s on two workers not): one line naming --max-time, status 2, and
     no table or file; the point's estimate is the cost model's own number."""
-    from twoball.modal.cost import case_liftoff_work
-    from twoball.modal.parameters import Case
-
     from twoball._common.budget import Budget, BudgetError
     from twoball._common.budget import format_seconds as shown
+    from twoball.modal.cost import case_liftoff_work
+    from twoball.modal.parameters import Case
 
     option, estimate = case_liftoff_work(Case.preset("basketball", modes=1400), None)
     assert estimate.seconds > 3.0  # the premise: the point alone is over the limit

@@ -3,9 +3,9 @@
 import json
 
 import pytest
-from twoball.verify.checks.config import config
 
 from twoball.cli.main import main
+from twoball.verify.checks.config import config
 
 FILES = {
     "report.md",

@@ -1,6 +1,7 @@
 """The axisymmetric P2 model of the paper's case shared by the time-stepping tests."""
 
 import pytest
+
 from twoball.fem_membrane.solve import modal_model
 
 PHI_A, DAMPING = 2.6, 0.13

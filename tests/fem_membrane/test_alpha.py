@@ -8,6 +8,8 @@ from __future__ import annotations
 import numpy as np
 import pytest
 import scipy.sparse as sp
+
+from tests.meshes import OFF_NODE_POLES
 from twoball.fem_membrane.alpha import AlphaParameters, GeneralizedAlpha
 from twoball.fem_membrane.damping import ModalDamping
 from twoball.fem_membrane.eigen import Eigenpairs
@@ -17,8 +19,6 @@ from twoball.fem_membrane.mesh_input import (
 )
 from twoball.fem_membrane.modal import filtered_displacement
 from twoball.fem_membrane.space import sphere_space
-
-from tests.meshes import OFF_NODE_POLES
 
 DAMPING = 0.13
 

@@ -7,6 +7,7 @@ from __future__ import annotations
 
 import numpy as np
 import pytest
+
 from twoball.fem_membrane.axisym import axisym_space
 from twoball.fem_membrane.eigen import lowest_eigenpairs
 

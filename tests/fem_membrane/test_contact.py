@@ -4,14 +4,14 @@ from __future__ import annotations
 
 import numpy as np
 import pytest
+
+import twoball
+from twoball import Body
 from twoball.fem_membrane.build import build_space
 from twoball.fem_membrane.contact import cap_functional
 from twoball.fem_membrane.mesh import icosphere
 from twoball.fem_membrane.space import sphere_space
 from twoball.modal.parameters import Case
-
-import twoball
-from twoball import Body
 
 BASKETBALL = Case.preset("basketball")
 

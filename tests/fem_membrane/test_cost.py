@@ -3,9 +3,9 @@
 from __future__ import annotations
 
 import pytest
-from twoball.fem_membrane.cost import fem_dofs, fem_estimate
 
 from tests.helpers import peak_child
+from twoball.fem_membrane.cost import fem_dofs, fem_estimate
 
 
 def test_sizes_in_closed_form_match_the_meshes() -> None:

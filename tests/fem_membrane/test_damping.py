@@ -14,6 +14,8 @@ import math
 
 import numpy as np
 import pytest
+
+import twoball
 from twoball.fem_membrane.solve import alpha_motion, fem_pole_motion, modal_model
 from twoball.modal.damping import Rayleigh
 from twoball.modal.filters import SpectralFilter
@@ -23,8 +25,6 @@ from twoball.modal.membrane import Membrane
 from twoball.modal.series import ModalSeries
 from twoball.modal.stiffness import Stiffness
 from twoball.verify.studies.orders import OrderBand, step_orders
-
-import twoball
 
 PHI_A, DAMPING = 2.6, 0.13
 

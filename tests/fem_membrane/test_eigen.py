@@ -7,6 +7,9 @@ import math
 import numpy as np
 import pytest
 import scipy.linalg as sl
+
+from tests.fem_membrane.helpers import force_slicing, model
+from twoball._common.errors import ParameterError
 from twoball.fem_membrane.axisym import axisym_space
 from twoball.fem_membrane.build import build_space
 from twoball.fem_membrane.eigen import (
@@ -17,9 +20,6 @@ from twoball.fem_membrane.eigen import (
 from twoball.fem_membrane.mesh import icosphere
 from twoball.fem_membrane.space import sphere_space
 from twoball.modal.filters import SpectralFilter
-
-from tests.fem_membrane.helpers import force_slicing, model
-from twoball._common.errors import ParameterError
 
 COUNT = 25  # nonzero eigenvalues checked: l = 1 .. 4 and the first of l = 5
 BANDS = {1: (1.7, 2.3), 2: (3.5, 4.6)}

@@ -14,6 +14,7 @@ import numpy as np
 import pytest
 import scipy.linalg as sla
 import scipy.sparse as sp
+
 from twoball.fem_membrane.floor import axisym_ball, axisym_matrices
 from twoball.modal.balls.membrane import legendre_ball
 from twoball.modal.damping import ModalRatio, Rayleigh

@@ -9,6 +9,9 @@ import gmsh
 import meshio
 import numpy as np
 import pytest
+
+import twoball
+from tests.helpers import assert_printed, run_json
 from twoball.fem_membrane.guards import (
     EIGENVALUE_ERROR,
     FREQUENCY_ERROR,
@@ -22,9 +25,6 @@ from twoball.fem_membrane.guards import (
 from twoball.fem_membrane.mesh import icosphere
 from twoball.fem_membrane.mesh_input import load_sphere_mesh
 from twoball.modal.filters import SpectralFilter
-
-import twoball
-from tests.helpers import assert_printed, run_json
 
 
 def _cluster_error(mesh: str, order: int, degree: int, **size: int) -> float:

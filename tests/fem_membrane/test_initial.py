@@ -4,13 +4,13 @@ from __future__ import annotations
 
 import numpy as np
 import pytest
+
+from tests.fem_membrane.helpers import model
+from tests.helpers import rates
 from twoball.fem_membrane.initial import initial_load
 from twoball.fem_membrane.mesh import icosphere
 from twoball.fem_membrane.space import sphere_space
 from twoball.modal.legendre import mean_displacement
-
-from tests.fem_membrane.helpers import model
-from tests.helpers import rates
 
 PHI_A = 2.6
 BAND = 0.3  # observed order within +-0.3 of the expected one (too high fails too)

@@ -4,6 +4,9 @@ from __future__ import annotations
 
 import numpy as np
 import pytest
+
+from tests.meshes import OFF_NODE_POLES
+from twoball._common.errors import NumericalError, ParameterError
 from twoball.fem_membrane.build import build_space
 from twoball.fem_membrane.eigen import eigenpairs
 from twoball.fem_membrane.initial import initial_moments
@@ -17,9 +20,6 @@ from twoball.fem_membrane.space import sphere_space
 from twoball.modal.filters import SpectralFilter
 from twoball.modal.liftoff import find_liftoff
 from twoball.modal.series import ModalSeries
-
-from tests.meshes import OFF_NODE_POLES
-from twoball._common.errors import NumericalError, ParameterError
 
 PHI_A = 2.6
 DAMPING = 0.13
@@ -129,9 +129,8 @@ def test_default_shifts_lie_in_gaps():
 
 
 def test_choose_route():
-    from twoball.fem_membrane.krylov import AUTO_THRESHOLD, choose_route
-
     from twoball._common.errors import ParameterError
+    from twoball.fem_membrane.krylov import AUTO_THRESHOLD, choose_route
 
     assert choose_route("auto", AUTO_THRESHOLD) == "krylov"
     assert choose_route("auto", AUTO_THRESHOLD - 1) == "full"

@@ -7,6 +7,8 @@ from __future__ import annotations
 
 import numpy as np
 import pytest
+
+from tests.meshes import OFF_NODE_POLES
 from twoball.fem_membrane.alpha import GeneralizedAlpha
 from twoball.fem_membrane.eigen import eigenpairs
 from twoball.fem_membrane.initial import initial_moments
@@ -19,8 +21,6 @@ from twoball.fem_membrane.mesh_input import (
 from twoball.fem_membrane.modal import modal_series
 from twoball.fem_membrane.space import pole_value, sphere_space
 from twoball.modal.filters import SpectralFilter
-
-from tests.meshes import OFF_NODE_POLES
 
 PHI_A, DAMPING = 2.6, 0.13
 FILTER = SpectralFilter("lanczos", 30)

@@ -14,6 +14,8 @@ import scipy.sparse as sp
 from scipy.special import eval_legendre
 from skfem import BilinearForm, CellBasis, LinearForm, asm
 from skfem.helpers import dot, grad
+
+import twoball
 from twoball.fem_membrane.axisym import axisym_space
 from twoball.fem_membrane.eigen import eigenpairs, lowest_eigenpairs
 from twoball.fem_membrane.mapping import RadialProjectionMapping
@@ -23,8 +25,6 @@ from twoball.fem_membrane.solve import modal_model
 from twoball.fem_membrane.space import dof_nodes, pole_value, sphere_space, surface_basis
 from twoball.modal.filters import SpectralFilter
 from twoball.modal.legendre import legendre_coefficients
-
-import twoball
 
 BAND = 0.3  # observed order within +-0.3 of the expected one (too high fails too)
 GEOMETRIC_RATE = {1: 2.0, 2: 4.0, 3: 4.0, 4: 6.0}  # isoparametric: min(2p, p+1 | p+2)

@@ -9,6 +9,8 @@ import math
 
 import numpy as np
 import pytest
+
+from twoball._common.errors import ParameterError
 from twoball.fem_membrane.axisym import axisym_space
 from twoball.fem_membrane.mesh import (
     _edges,
@@ -18,8 +20,6 @@ from twoball.fem_membrane.mesh import (
     ring_sphere,
     topology,
 )
-
-from twoball._common.errors import ParameterError
 
 PHI_A = 2.6
 

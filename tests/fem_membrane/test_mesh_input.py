@@ -15,6 +15,11 @@ import meshio
 import numpy as np
 import pytest
 from skfem import MeshTri1, MeshTri2
+
+import twoball
+from tests.meshes import CENTER, OFF_NODE_POLES, RADIUS, on_ball, write
+from twoball._common.errors import ParameterError
+from twoball.cli.main import main
 from twoball.fem_membrane.build import build_space
 from twoball.fem_membrane.eigen import eigenpairs, lowest_eigenpairs
 from twoball.fem_membrane.initial import initial_moments
@@ -39,11 +44,6 @@ from twoball.modal.filters import SpectralFilter
 from twoball.modal.legendre import legendre_series
 from twoball.modal.liftoff import find_liftoff
 from twoball.modal.parameters import Case
-
-import twoball
-from tests.meshes import CENTER, OFF_NODE_POLES, RADIUS, on_ball, write
-from twoball._common.errors import ParameterError
-from twoball.cli.main import main
 
 CENTRE = (0.01, -0.02, 0.03)  # m
 
@@ -164,6 +164,7 @@ def test_file_mesh_of_radius_012_gives_the_generated_exact_space(tmp_path):
 def test_file_mesh_raised_to_order_p_and_the_pole_inside_an_element(order):
     """A P1 mesh given as data, raised to P3/P4: the generated mesh's space; then a tilted pole."""
     import meshio
+
     from twoball.fem_membrane.mesh_input import load_sphere_mesh
 
     generated = icosphere(2)

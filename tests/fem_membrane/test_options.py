@@ -3,12 +3,12 @@
 from __future__ import annotations
 
 import pytest
+
+from twoball._common.errors import ParameterError
 from twoball.fem_membrane.build import build_space
 from twoball.fem_membrane.mesh import ring_sphere
 from twoball.fem_membrane.options import MeshOptions
 from twoball.fem_membrane.space import sphere_space
-
-from twoball._common.errors import ParameterError
 
 
 @pytest.mark.parametrize(

@@ -13,13 +13,13 @@ import math
 import meshio
 import numpy as np
 import pytest
-from twoball.fem_membrane.mesh import icosphere
-from twoball.fem_membrane.mesh_input import load_sphere_mesh
-from twoball.fem_membrane.quality import DEGENERATE_ANGLE, POOR_ANGLE, smallest_angles
 
 import twoball
 from tests.meshes import CENTER, RADIUS, write
 from twoball.cli.main import main
+from twoball.fem_membrane.mesh import icosphere
+from twoball.fem_membrane.mesh_input import load_sphere_mesh
+from twoball.fem_membrane.quality import DEGENERATE_ANGLE, POOR_ANGLE, smallest_angles
 
 
 def test_smallest_angles_of_triangles_drawn_by_hand():

@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import numpy as np
 import pytest
+
 from twoball.fem_membrane.build import build_space
 from twoball.fem_membrane.eigen import eigenpairs
 from twoball.fem_membrane.initial import initial_moments

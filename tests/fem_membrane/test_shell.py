@@ -11,6 +11,9 @@ import math
 import numpy as np
 import pytest
 import scipy.linalg as sl
+
+import twoball
+from twoball import Case
 from twoball.fem_membrane.axisym import axisym_space
 from twoball.fem_membrane.eigen import eigen_table, lowest_eigenpairs
 from twoball.fem_membrane.mesh import icosphere
@@ -24,9 +27,6 @@ from twoball.modal.liftoff import find_liftoff
 from twoball.modal.membrane import Membrane
 from twoball.modal.stiffness import ATMOSPHERE, Stiffness
 from twoball.verify.studies.orders import OrderBand, step_orders
-
-import twoball
-from twoball import Case
 
 STIFF = Stiffness(beta=0.02, gas=18.7)  # about the tennis preset's
 BANDS = {1: (1.7, 2.3), 2: (3.5, 4.6)}  # h^(2p), as the membrane's (tests/test_fem_eigen.py)

@@ -5,12 +5,12 @@ from __future__ import annotations
 import numpy as np
 import pytest
 import scipy.linalg as sl
+
 import twoball.fem_membrane.slicing as slicing
+from tests.fem_membrane.helpers import force_slicing
 from twoball.fem_membrane.eigen import eigenpairs, inertia, lowest_eigenpairs
 from twoball.fem_membrane.mesh import icosphere
 from twoball.fem_membrane.space import sphere_space
-
-from tests.fem_membrane.helpers import force_slicing
 
 
 @pytest.mark.parametrize("path", ["dense", "slicing"])

@@ -9,16 +9,16 @@ import math
 
 import numpy as np
 import pytest
+
+from tests.fem_membrane.helpers import model
+from tests.helpers import rates
+from twoball._common.errors import ParameterError
 from twoball.fem_membrane.alpha import automatic_step
 from twoball.fem_membrane.solve import alpha_motion, fem_pole_motion, modal_model
 from twoball.modal.filters import SpectralFilter
 from twoball.modal.legendre import legendre_coefficients, legendre_series
 from twoball.modal.liftoff import SampledPoleMotion, find_liftoff
 from twoball.modal.parameters import Case
-
-from tests.fem_membrane.helpers import model
-from tests.helpers import rates
-from twoball._common.errors import ParameterError
 
 PHI_A, DAMPING = 2.6, 0.13
 

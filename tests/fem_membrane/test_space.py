@@ -8,11 +8,11 @@ from __future__ import annotations
 import numpy as np
 import pytest
 from skfem import ElementTriP3, ElementTriP4
+
+from tests.helpers import rates
 from twoball.fem_membrane.eigen import eigenpairs, lowest_eigenpairs
 from twoball.fem_membrane.mesh import _edges, icosphere, ring_sphere
 from twoball.fem_membrane.space import dof_nodes, sphere_space
-
-from tests.helpers import rates
 
 PHI_A = 2.6
 BAND = 0.3  # observed order within +-0.3 of the expected one (too high fails too)

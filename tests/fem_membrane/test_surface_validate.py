@@ -7,6 +7,10 @@ from pathlib import Path
 import meshio
 import numpy as np
 import pytest
+
+import twoball
+from tests.meshes import CENTER, RADIUS, on_ball
+from twoball.cli.main import main
 from twoball.fem_membrane.mesh import icosphere, ring_sphere
 from twoball.fem_membrane.mesh_input import load_sphere_mesh
 from twoball.fem_membrane.surface_validate import (
@@ -15,10 +19,6 @@ from twoball.fem_membrane.surface_validate import (
     MAX_RADIAL_DEVIATION,
     sphere_fit,
 )
-
-import twoball
-from tests.meshes import CENTER, RADIUS, on_ball
-from twoball.cli.main import main
 
 PHI_A = 2.6
 

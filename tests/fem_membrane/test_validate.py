@@ -7,6 +7,8 @@ import math
 import meshio
 import pytest
 from skfem import MeshTri1, MeshTri2
+
+from twoball import ParameterError
 from twoball.fem_membrane.cost import fem_dofs, fem_estimate
 from twoball.fem_membrane.mesh import icosphere
 from twoball.fem_membrane.validate import (
@@ -15,8 +17,6 @@ from twoball.fem_membrane.validate import (
     check_mesh_source,
     check_pole,
 )
-
-from twoball import ParameterError
 
 
 def test_levels_from_0_to_10():

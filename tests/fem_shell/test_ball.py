@@ -6,12 +6,12 @@ import math
 
 import numpy as np
 import pytest
+
+import twoball
 from twoball.fem_shell.ball import FEShellBall, exact_translation, fe_shell_ball
 from twoball.fem_shell.modes import fem_shell_modes
 from twoball.modal.balls.shell import ShellBall, Wall
 from twoball.modal.shell import ShellParameters
-
-import twoball
 
 
 def test_the_translation_is_made_exact():

@@ -6,6 +6,7 @@ import math
 
 import numpy as np
 import pytest
+
 from twoball.fem_shell.modes import fem_impulse, fem_shell_modes
 from twoball.modal.shell.impulse import causality_study
 from twoball.modal.shell.modes import shell_modes

@@ -7,6 +7,7 @@ import math
 import numpy as np
 import pytest
 from skfem import Basis, BilinearForm, ElementLineHermite, MeshLine1, asm
+
 from twoball.fem_shell.space import ElementLineHermiteLocal, shell_space
 from twoball.modal.shell.parameters import ShellParameters
 

@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import numpy as np
 from skfem import Basis, ElementTetP2, ElementVector, asm
+
 from twoball.fem_solid.assembly import elasticity_matrices
 from twoball.fem_solid.forms import elasticity, mass
 from twoball.fem_solid.mesh import ball

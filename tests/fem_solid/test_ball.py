@@ -6,6 +6,8 @@ import math
 
 import numpy as np
 import pytest
+
+import twoball
 from twoball.fem_solid.ball import THICK_WALLS, pole_refined_disc, solid_space
 from twoball.fem_solid.eigen import axisymmetric_eigen
 from twoball.fem_solid.mesh import circle_error, half_annulus
@@ -13,8 +15,6 @@ from twoball.modal.balls.solid import solid_case
 from twoball.modal.shell.parameters import ShellParameters
 from twoball.modal.shell.spectrum import branches
 from twoball.modal.solid.lamb import lamb_roots
-
-import twoball
 
 
 def test_the_half_disc_refined_towards_the_south_pole():
@@ -47,6 +47,7 @@ def test_every_eigenpair_with_the_translation_exact():
 
 def _mass(space):
     from skfem import asm
+
     from twoball.fem_solid.forms import axisymmetric_mass
 
     return asm(axisymmetric_mass(1.0), space.basis).toarray()

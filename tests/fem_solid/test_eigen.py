@@ -14,6 +14,7 @@ import numpy as np
 import pytest
 from scipy.optimize import brentq
 from scipy.special import spherical_jn, spherical_yn
+
 from twoball.fem_solid.eigen import axisymmetric_eigen, ball_eigen
 from twoball.fem_solid.mesh import ball, half_annulus, half_disc, half_disc_gmsh
 from twoball.modal.solid.lamb import lamb_roots, speed_ratio

@@ -7,6 +7,7 @@ import math
 import numpy as np
 import pytest
 from skfem import Basis, ElementTriP2, ElementVector, asm
+
 from twoball.fem_solid.forms import axisymmetric_elasticity, axisymmetric_mass, lame
 from twoball.fem_solid.mesh import half_disc
 

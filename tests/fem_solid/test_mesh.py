@@ -7,9 +7,9 @@ import math
 import numpy as np
 import pytest
 from skfem import Basis, ElementTetP2, ElementTriP2, Functional
-from twoball.fem_solid.mesh import ball, ball_gmsh, circle_error, half_annulus, half_disc
 
 from twoball._common.errors import ParameterError
+from twoball.fem_solid.mesh import ball, ball_gmsh, circle_error, half_annulus, half_disc
 
 
 @Functional

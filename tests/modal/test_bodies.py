@@ -8,12 +8,12 @@ tennis ball's ball body returns Table 1's 0.83.
 from __future__ import annotations
 
 import pytest
+
+import twoball
 from twoball.modal.bodies import BODIES, TENNIS_BALL_DAMPING, preset_body
 from twoball.modal.pairs import PAIRS
 from twoball.modal.upper.alone import ball_alone, lumped_alone
 from twoball.modal.upper.laws import LAWS
-
-import twoball
 
 
 def test_every_value_has_a_source():

@@ -4,6 +4,8 @@ import math
 
 import numpy as np
 import pytest
+
+from twoball._costs import check_series
 from twoball.modal.converged import converged_legendre, filtered_liftoff, unfiltered_series
 from twoball.modal.cost import decaying_work, reference_estimate
 from twoball.modal.decay import DecayingSeries
@@ -13,8 +15,6 @@ from twoball.modal.legendre import legendre_series
 from twoball.modal.liftoff import DEFAULT_T_END, find_liftoff
 from twoball.modal.parameters import preset
 from twoball.modal.report import legendre_liftoff
-
-from twoball._costs import check_series
 
 
 def test_converged_reference_settles_to_1e7():

@@ -7,13 +7,13 @@ import math
 import numpy as np
 import pytest
 from scipy.integrate import solve_ivp
+
+import twoball
+from twoball import Case, ParameterError
 from twoball.modal.damping import ModalRatio, Rayleigh
 from twoball.modal.filters import SpectralFilter
 from twoball.modal.legendre import legendre_series
 from twoball.modal.series import CRITICAL_BAND, ModalSeries
-
-import twoball
-from twoball import Case, ParameterError
 
 DAMPING = 0.13
 

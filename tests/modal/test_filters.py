@@ -4,9 +4,9 @@ import math
 
 import numpy as np
 import pytest
-from twoball.modal.filters import SpectralFilter, legendre_frequency
 
 from twoball._common.errors import ParameterError
+from twoball.modal.filters import SpectralFilter, legendre_frequency
 
 
 def test_lanczos_is_sinc_with_pi_and_zero_at_cutoff():

@@ -14,6 +14,7 @@ import math
 import numpy as np
 import pytest
 from numpy.polynomial.legendre import legval
+
 from twoball.modal.balls.membrane import legendre_ball, mode_decay, mode_spectrum
 from twoball.modal.damping import ModalRatio, Rayleigh
 from twoball.modal.floor.drop import DropSettings, run_drop

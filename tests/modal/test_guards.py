@@ -9,14 +9,14 @@ import json
 import math
 
 import pytest
-from twoball.modal.converged import converged_legendre
-from twoball.modal.guards import TRUNCATION_WARNING, truncation, window_warnings
-from twoball.modal.parameters import Case, preset
-from twoball.modal.report import legendre_liftoff
 
 import twoball
 from tests.helpers import assert_printed, run_json
 from twoball.cli.main import main
+from twoball.modal.converged import converged_legendre
+from twoball.modal.guards import TRUNCATION_WARNING, truncation, window_warnings
+from twoball.modal.parameters import Case, preset
+from twoball.modal.report import legendre_liftoff
 
 
 def test_legendre_default_is_quiet_and_reports_the_converged_series(capsys) -> None:

@@ -7,6 +7,8 @@ import numpy as np
 import pytest
 from scipy.integrate import quad
 from scipy.optimize import brentq
+
+from twoball._common.errors import ParameterError
 from twoball.modal.initial import (
     _energy_shape,
     deformation_work,
@@ -16,8 +18,6 @@ from twoball.modal.initial import (
     v0_dimensionless,
     v0_from_phi_a,
 )
-
-from twoball._common.errors import ParameterError
 
 V0 = np.geomspace(1e-10, 1e4, 241)
 

@@ -7,6 +7,7 @@ import numpy as np
 import pytest
 from scipy.linalg import eigvalsh_tridiagonal
 from scipy.special import eval_legendre
+
 from twoball.modal.filters import SpectralFilter
 from twoball.modal.initial import (
     deformation_work,

@@ -4,13 +4,13 @@ import math
 
 import numpy as np
 import pytest
+
+from twoball._common.errors import NumericalError, ParameterError
 from twoball.modal.filters import SpectralFilter
 from twoball.modal.legendre import legendre_series
 from twoball.modal.liftoff import SampledPoleMotion, find_liftoff
 from twoball.modal.parameters import preset
 from twoball.modal.series import ModalSeries
-
-from twoball._common.errors import NumericalError, ParameterError
 
 
 def single_mode(amplitude: float, omega: float) -> ModalSeries:

@@ -12,6 +12,8 @@ from __future__ import annotations
 import math
 
 import pytest
+
+from twoball._common.errors import ParameterError
 from twoball.modal.icm import TABLE1, light_touching_limit, post_impact_velocities
 from twoball.modal.lumped import (
     MODELS,
@@ -30,8 +32,6 @@ from twoball.modal.lumped.fitting import (
 from twoball.modal.lumped.laws import HertzLaw, LinearLaw
 from twoball.modal.lumped.pair_inputs import pair_contacts
 from twoball.modal.pairs import PAIRS
-
-from twoball._common.errors import ParameterError
 
 SPEED = 4.1  # m/s, the paper's basketball impact speed (§4(b))
 CONTACT_MODELS = ("two-spring-dashpot", "bartz2020", "hertz-viscoelastic")

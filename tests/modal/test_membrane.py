@@ -7,15 +7,15 @@ import math
 import numpy as np
 import pytest
 from scipy.integrate import quad
+
+import twoball
+from twoball import Case, ParameterError
 from twoball.modal.damping import ModalRatio, Rayleigh
 from twoball.modal.filters import SpectralFilter
 from twoball.modal.initial import phi_a_from_v0
 from twoball.modal.legendre import legendre_coefficients_recurrence, legendre_series
 from twoball.modal.membrane import Membrane, square_integral
 from twoball.modal.stiffness import ATMOSPHERE, Stiffness, stiffness_from_si
-
-import twoball
-from twoball import Case, ParameterError
 
 PRESSURISED = Membrane("pressurised")
 P, M, R = 77200.0, 0.567, 0.12  # the paper's basketball (Table 2)

@@ -13,10 +13,10 @@ import math
 import numpy as np
 import pytest
 import scipy.sparse as sp
-from twoball.modal.nonsmooth import ContactProblem, MoreauJean, solve_lcp
-from twoball.verify.studies.orders import OrderBand, least_squares_order
 
 from twoball._common.errors import ParameterError
+from twoball.modal.nonsmooth import ContactProblem, MoreauJean, solve_lcp
+from twoball.verify.studies.orders import OrderBand, least_squares_order
 
 # --- LCP ----------------------------------------------------------------------------
 

@@ -5,13 +5,13 @@ from __future__ import annotations
 import math
 
 import pytest
+
+from twoball._common.errors import ParameterError
 from twoball.modal.icm import TABLE1
 from twoball.modal.lumped.pair_inputs import pair_contacts
 from twoball.modal.pairs import BODIES, PAIRS, pair
 from twoball.modal.presets import MEASURED
 from twoball.modal.scalings import wave_speed_from_pressure
-
-from twoball._common.errors import ParameterError
 
 # Table 1 as printed (the paper, §4): lower ball, upper body, mu, e2, e12.
 PRINTED = [

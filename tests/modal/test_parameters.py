@@ -5,10 +5,10 @@ from __future__ import annotations
 import math
 
 import pytest
-from twoball.modal.parameters import PRESETS, Case, Scalings, preset, wave_speed_from_pressure
 
 import twoball
 from twoball._common.errors import ParameterError
+from twoball.modal.parameters import PRESETS, Case, Scalings, preset, wave_speed_from_pressure
 
 
 def v0_of_phi_a(phi_a: float, radius: float = 0.12, wave_speed: float = 320.0) -> float:

@@ -2,6 +2,7 @@
 
 import numpy as np
 import pytest
+
 from twoball.modal.parameters import preset
 from twoball.modal.report import legendre_liftoff
 

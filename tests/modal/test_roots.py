@@ -4,9 +4,9 @@ import math
 
 import numpy as np
 import pytest
-from twoball.modal.roots import bracketed_roots
 
 from twoball._common.errors import NumericalError
+from twoball.modal.roots import bracketed_roots
 
 
 def test_bracketed_roots_vectorised_to_1e_12():

@@ -8,6 +8,10 @@ from dataclasses import replace
 import numpy as np
 import pytest
 from numpy.polynomial import legendre as npleg
+
+import twoball
+from twoball import Case
+from twoball._common.errors import ParameterError
 from twoball.modal.filters import SpectralFilter
 from twoball.modal.legendre import legendre_series
 from twoball.modal.parameters import PRESETS, wave_speed_from_pressure
@@ -18,10 +22,6 @@ from twoball.modal.stiffness import (
     stiffen,
     stiffness_from_si,
 )
-
-import twoball
-from twoball import Case
-from twoball._common.errors import ParameterError
 
 # today's results (main at d34289e, `twoball liftoff --json ...`), bit for bit
 MAIN = {

@@ -120,6 +120,7 @@ def test_the_edge_may_import_it() -> None:
 def test_a_numerical_loop_tells_its_monitor_what_it_does() -> None:
     """The texts the deadline and the progress line show come from the monitor's calls."""
     import numpy as np
+
     from twoball.modal.filters import SpectralFilter
     from twoball.modal.legendre import legendre_series
 

@@ -18,12 +18,12 @@ from pathlib import Path
 import numpy as np
 import pytest
 import scipy
-from twoball.modal.initial import phi_a_from_v0
-from twoball.modal.parameters import preset
-from twoball.modal.report import legendre_liftoff
 
 from tests import ROOT
 from twoball.cli.main import COMMANDS
+from twoball.modal.initial import phi_a_from_v0
+from twoball.modal.parameters import preset
+from twoball.modal.report import legendre_liftoff
 
 
 def _modules_after(code: str) -> set[str]:

@@ -18,12 +18,12 @@ import sys
 from pathlib import Path
 
 import pytest
-from twoball.fem_membrane.mesh import icosphere
 
 from tests import ROOT
 from tests.meshes import on_ball, write
 from tests.project import validation_table as table
 from twoball.cli.main import COMMANDS, full_parser
+from twoball.fem_membrane.mesh import icosphere
 
 CHILD = Path(__file__).with_name("validation_child.py")
 #: CPU seconds a refusal may take (imports of the subcommand's modules included).

@@ -21,14 +21,14 @@ from pathlib import Path
 from typing import Any
 
 import pytest
-from twoball.fem_membrane.mesh import icosphere
-from twoball.modal import icm
-from twoball.modal.stiffness import flexural_rigidity
 
 import twoball
 from tests.meshes import on_ball, write
 from tests.project import validation_table as table
 from twoball.cli.flags import FLAGS
+from twoball.fem_membrane.mesh import icosphere
+from twoball.modal import icm
+from twoball.modal.stiffness import flexural_rigidity
 
 CPU_LIMIT_S = 3.0
 
@@ -547,6 +547,7 @@ def _bumped(level: int, scale: float) -> Any:
     """A meshio icosphere (radius 0.12 m) with its pole node's radius times ``scale``."""
     import meshio
     import numpy as np
+
     from twoball.fem_membrane.mesh import icosphere
 
     mesh = icosphere(level)

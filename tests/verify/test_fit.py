@@ -11,6 +11,8 @@ import pickle
 
 import numpy as np
 import pytest
+
+from twoball._common.errors import ParameterError
 from twoball.modal.balls.membrane import LegendreBall
 from twoball.modal.contact.body import Body
 from twoball.modal.floor.options import Drop
@@ -24,8 +26,6 @@ from twoball.verify.fit.data import (
 )
 from twoball.verify.fit.models import BounceModel, ClosedModel, parameter_names
 from twoball.verify.fit.solve import check_bounds, fit_model
-
-from twoball._common.errors import ParameterError
 
 BASKETBALL = Case.preset("basketball")
 #: The synthetic data set: eight impact speeds, made by the model at D = 0.17.

@@ -13,6 +13,8 @@ from dataclasses import dataclass
 from typing import Any
 
 import numpy as np
+
+from twoball._common.watch import Watch
 from twoball.modal.converged import ConvergedReference
 from twoball.modal.liftoff import Horizon, find_liftoff
 from twoball.modal.parameters import Case
@@ -23,8 +25,6 @@ from twoball.verify.studies.fem_runs import FEMRun
 from twoball.verify.studies.reference import LegendreRun
 from twoball.verify.studies.result import time_step_text
 from twoball.verify.studies.trajectory import TrajectoryNorm, hermite_resample
-
-from twoball._common.watch import Watch
 
 
 @dataclass

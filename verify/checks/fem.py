@@ -7,6 +7,7 @@ eigenvalues l (l + 1) of the sphere, and the deformation work W of eq. (3.5).
 from __future__ import annotations
 
 import numpy as np
+
 from twoball.modal.filters import FilterKind
 from twoball.modal.initial import deformation_work
 from twoball.modal.liftoff import Horizon

@@ -13,6 +13,7 @@ from dataclasses import dataclass, field
 from typing import Any
 
 import numpy as np
+
 from twoball.modal.converged import ConvergedReference
 from twoball.modal.parameters import Case
 from twoball.verify.checks.config import VerifyConfig

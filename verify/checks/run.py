@@ -18,6 +18,8 @@ from __future__ import annotations
 import time
 
 import numpy as np
+
+from twoball._common.watch import Watch
 from twoball.modal.converged import ConvergedReference, converged_legendre
 from twoball.modal.filters import FilterKind
 from twoball.modal.liftoff import Horizon
@@ -32,8 +34,6 @@ from twoball.verify.output.figures.pole import Trace
 from twoball.verify.studies.fem_runs import FEMRun, FEMSpec, fem_run
 from twoball.verify.studies.reference import LegendreRun, legendre_run
 from twoball.verify.studies.result import Progress, case_settings, si, time_step_text
-
-from twoball._common.watch import Watch
 
 
 def run_verify(

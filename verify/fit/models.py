@@ -42,13 +42,13 @@ from dataclasses import dataclass, replace
 from typing import Any
 
 import numpy as np
-from twoball.modal.parameters import Case
-from twoball.modal.scalings import WAVE_SPEED_RANGE
-from twoball.verify.fit.data import Measurements
 
 from twoball._common.choices import FIT_MODEL_COLUMNS, FIT_PARAMETERS
 from twoball._common.errors import ParameterError
 from twoball._common.monitor import Monitor
+from twoball.modal.parameters import Case
+from twoball.modal.scalings import WAVE_SPEED_RANGE
+from twoball.verify.fit.data import Measurements
 
 __all__ = [
     "PARAMETERS",

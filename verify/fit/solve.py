@@ -33,10 +33,10 @@ from collections.abc import Callable, Mapping
 from typing import Any
 
 import numpy as np
-from twoball.verify.fit.models import PARAMETERS
-from twoball.verify.fit.result import FitResult, Residuals
 
 from twoball._common.errors import NumericalError, ParameterError
+from twoball.verify.fit.models import PARAMETERS
+from twoball.verify.fit.result import FitResult, Residuals
 
 __all__ = [
     "DEFAULT_TOLERANCE",

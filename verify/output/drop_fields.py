@@ -41,6 +41,7 @@ from dataclasses import dataclass
 from typing import Any
 
 import numpy as np
+
 from twoball.fem_membrane.mesh import SphereMesh
 from twoball.modal.floor.drop import DropResult
 from twoball.modal.parameters import Case

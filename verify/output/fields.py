@@ -28,6 +28,12 @@ from dataclasses import dataclass, field, replace
 from typing import Any, Literal
 
 import numpy as np
+
+from twoball._common.budget import BASE_MEMORY, Estimate, check, check_all
+from twoball._common.choices import DEFAULT_FRAMES
+from twoball._common.errors import ParameterError
+from twoball._common.progress import Step, silent
+from twoball._common.watch import Watch
 from twoball.fem_membrane.mesh import SphereMesh, elevate, flatten, sphere_mesh
 from twoball.fem_membrane.options import DEFAULT_INITIAL, FILE, SPHERE_KINDS, MeshOptions
 from twoball.modal.contact.body import MAX_MASS_RATIO, Body
@@ -41,12 +47,6 @@ from twoball.modal.series import ModalSeries
 from twoball.verify.output.options import BACKENDS, MAX_FRAMES
 from twoball.verify.output.render import BallScene
 from twoball.verify.output.series import TimeSeries
-
-from twoball._common.budget import BASE_MEMORY, Estimate, check, check_all
-from twoball._common.choices import DEFAULT_FRAMES
-from twoball._common.errors import ParameterError
-from twoball._common.progress import Step, silent
-from twoball._common.watch import Watch
 
 BackendName = Literal["fem", "legendre"]
 #: A generated mesh kind, or the user's mesh (unit sphere, pole on +z; from a file).
@@ -715,9 +715,8 @@ def eigen_sizes(
     levels: Sequence[int] | None, orders: Sequence[int] | None, max_degree: int | None
 ) -> tuple[list[int], list[int]]:
     """Levels and orders of the eigenvalue plot, each mesh checked against the budget."""
-    from twoball.fem_membrane.cost import fem_dofs, fem_estimate
-
     from twoball._common.budget import check, options
+    from twoball.fem_membrane.cost import fem_dofs, fem_estimate
 
     levels = [1, 2, 3] if levels is None else levels
     orders = [1, 2] if orders is None else orders

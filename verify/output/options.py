@@ -99,9 +99,8 @@ class RenderOptions:
     frames: Any = None
 
     def __post_init__(self) -> None:
-        from twoball.verify.output.render import check_size, check_warp
-
         from twoball._common.errors import bounded
+        from twoball.verify.output.render import check_size, check_warp
 
         warp = None if self.warp == "auto" else self.warp
         object.__setattr__(self, "warp", check_warp(warp, "warp"))

@@ -18,11 +18,11 @@ from pathlib import Path
 from typing import Any
 
 import numpy as np
+
+from twoball._common.strict_json import json_text
 from twoball.verify.checks.results import VerifyResult
 from twoball.verify.studies.quantities import QuantityResult
 from twoball.verify.studies.result import StudyResult
-
-from twoball._common.strict_json import json_text
 
 Writer = Callable[[Path], None]
 PROVENANCE = "provenance.json"  # run times and dates: the one file that differs between runs

@@ -15,6 +15,9 @@ from typing import Any
 
 import numpy as np
 from scipy.optimize import minimize_scalar
+
+from twoball._common.progress import TaskHook
+from twoball._common.watch import Watch
 from twoball.modal.filters import SpectralFilter, legendre_frequency
 from twoball.modal.legendre import (
     legendre_coefficients_recurrence,
@@ -26,9 +29,6 @@ from twoball.modal.parameters import Case
 from twoball.modal.report import LiftoffReport, report_liftoff
 from twoball.modal.series import ModalSeries
 from twoball.verify.sweeps.parallel import Runner
-
-from twoball._common.progress import TaskHook
-from twoball._common.watch import Watch
 
 #: Above this many Gauss points the coefficients come from the exact recurrence instead:
 #: numpy's ``leggauss`` is a dense O(m^3) eigenproblem (0.3 s at m = 1000, 16 s at 3800),

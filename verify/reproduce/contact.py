@@ -8,6 +8,9 @@ CEM, the ICM touching limit (2.6) and Table 1's measured basketball rows.
 from __future__ import annotations
 
 import numpy as np
+
+from twoball._common.budget import check, check_all
+from twoball._common.watch import Watch
 from twoball.modal.contact.body import Body
 from twoball.modal.contact.cost import legendre_contact_work
 from twoball.modal.contact.report import ContactReport, legendre_contact
@@ -17,9 +20,6 @@ from twoball.modal.icm.table1 import TABLE1
 from twoball.modal.parameters import Case
 from twoball.modal.report import legendre_liftoff
 from twoball.verify.reproduce.common import Comparison, Context, Section, new_figure, save
-
-from twoball._common.budget import check, check_all
-from twoball._common.watch import Watch
 
 MASS_RATIOS = np.geomspace(1e-4, 0.2, 12)
 

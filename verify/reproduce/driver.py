@@ -23,6 +23,9 @@ from datetime import UTC, datetime
 from pathlib import Path
 from typing import Any
 
+from twoball._common.choices import REPRODUCTION_DIR, REPRODUCTION_PARTS, REPRODUCTION_REPORT
+from twoball._common.errors import ParameterError
+from twoball._common.progress import TaskHook
 from twoball.verify.reproduce import cem as reproduce_cem
 from twoball.verify.reproduce import contact as reproduce_contact
 from twoball.verify.reproduce import icm as reproduce_icm
@@ -30,10 +33,6 @@ from twoball.verify.reproduce import kinds as reproduce_kinds
 from twoball.verify.reproduce import whole as reproduce_whole
 from twoball.verify.reproduce.common import Context, Section, comparison_table
 from twoball.verify.sweeps.parallel import Runner
-
-from twoball._common.choices import REPRODUCTION_DIR, REPRODUCTION_PARTS, REPRODUCTION_REPORT
-from twoball._common.errors import ParameterError
-from twoball._common.progress import TaskHook
 
 #: Part name -> function(Context) -> Section, in report order (the names: REPRODUCTION_PARTS).
 PARTS: dict[str, Callable[[Context], Section]] = dict(
@@ -189,10 +188,9 @@ class Run:
         """
         import shutil
 
-        from twoball.verify.output.report_files import result_files
-
         from twoball._common.provenance import block
         from twoball._common.staging import staged_folder
+        from twoball.verify.output.report_files import result_files
 
         missing = self.missing(sections)
         total = time.perf_counter() - self.started

@@ -9,6 +9,7 @@ from __future__ import annotations
 from typing import TYPE_CHECKING
 
 import numpy as np
+
 from twoball.modal import icm
 from twoball.modal.parameters import preset
 from twoball.modal.scalings import STANDARD_GRAVITY, wave_speed_from_pressure

@@ -30,6 +30,7 @@ from dataclasses import dataclass
 from typing import Any
 
 import numpy as np
+
 from twoball.modal.floor.bounce import ARTEFACT_SECTION
 from twoball.modal.icm.table1 import TABLE1
 from twoball.modal.pairs import PAIRS

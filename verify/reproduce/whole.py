@@ -28,12 +28,12 @@ from __future__ import annotations
 from typing import Any
 
 import numpy as np
-from twoball.modal.icm.table1 import TABLE1
-from twoball.modal.pairs import PAIRS
-from twoball.verify.reproduce.common import Comparison, Context, Section, markdown_table, save
 
 from twoball._common.budget import check
 from twoball._common.watch import Watch
+from twoball.modal.icm.table1 import TABLE1
+from twoball.modal.pairs import PAIRS
+from twoball.verify.reproduce.common import Comparison, Context, Section, markdown_table, save
 
 __all__ = ["GAPS", "GAP_PAIRS", "part_whole_gap", "part_whole_table1", "part_whole_timing"]
 
@@ -74,10 +74,9 @@ _CURVES: dict[str, dict[str, list[tuple[float, Any]]]] = {}
 
 def _run(ctx: Context, items: list[tuple[str, float]], label: str) -> list[Any]:
     """Whole bounces of Table 1 pairs at gaps [m], on the context's runner."""
+    from twoball._common.errors import NumericalError
     from twoball.modal.floor.options import Drop
     from twoball.verify.sweeps.bounce import BounceTask
-
-    from twoball._common.errors import NumericalError
 
     task = BounceTask(monitor=ctx.monitor)
     runs = [(None, Drop(gap=gap), None, pair) for pair, gap in items]

@@ -43,10 +43,10 @@ from dataclasses import dataclass
 
 import numpy as np
 import scipy.sparse as sp
-from twoball.modal.nonsmooth import ContactProblem, MoreauJean, Trajectory
-from twoball.verify.studies.orders import OrderBand, least_squares_order, step_orders
 
 from twoball._common.errors import ParameterError
+from twoball.modal.nonsmooth import ContactProblem, MoreauJean, Trajectory
+from twoball.verify.studies.orders import OrderBand, least_squares_order, step_orders
 
 CASES = ("clamped", "free")
 

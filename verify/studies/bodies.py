@@ -67,12 +67,11 @@ def run_one(key: tuple[str, str, float, str]) -> dict[str, Any]:
     """One whole bounce ``(pair, kind, gap [m], backend)`` at the defaults: its numbers (SI)."""
     import time
 
+    from twoball._common.errors import NumericalError
     from twoball.fem_membrane.ball import FEBall
     from twoball.modal.balls.membrane import LegendreBall
     from twoball.modal.floor.bounce import bounce_problem, simulate
     from twoball.modal.floor.options import Drop
-
-    from twoball._common.errors import NumericalError
 
     pair, kind, gap, backend = key
     ball = LegendreBall() if backend == "legendre" else FEBall()

@@ -15,15 +15,15 @@ from dataclasses import dataclass
 from typing import Any
 
 import numpy as np
+
+from twoball._common.budget import check_all
+from twoball._common.watch import Watch
 from twoball.modal.filters import FilterKind, SpectralFilter
 from twoball.modal.liftoff import Horizon, find_liftoff
 from twoball.modal.parameters import Case
 from twoball.modal.series import ModalSeries
 from twoball.verify.studies.reference import LegendreRun
 from twoball.verify.studies.result import Progress, si
-
-from twoball._common.budget import check_all
-from twoball._common.watch import Watch
 
 MESH_LABELS = {"sphere": "icosphere", "axisym": "axisym"}
 # level 0 of the icosphere resolves no complete degree l >= 1 (nothing to compare)

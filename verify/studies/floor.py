@@ -17,6 +17,9 @@ from collections.abc import Callable, Sequence
 from dataclasses import dataclass, field
 
 import numpy as np
+
+from twoball._common.budget import check
+from twoball._common.watch import Watch
 from twoball.fem_membrane.floor import axisym_ball
 from twoball.modal.balls.membrane import legendre_ball
 from twoball.modal.damping import ModalRatio, Rayleigh
@@ -28,9 +31,6 @@ from twoball.modal.floor.settle import settle
 from twoball.modal.floor.system import floor_system
 from twoball.modal.parameters import Case
 from twoball.verify.studies.orders import least_squares_order, step_orders
-
-from twoball._common.budget import check
-from twoball._common.watch import Watch
 
 __all__ = [
     "DT_RESOLUTION",

@@ -9,6 +9,8 @@ import time
 from collections.abc import Sequence
 from typing import Any
 
+from twoball._common.errors import ParameterError
+from twoball._common.watch import Watch
 from twoball.modal.converged import (
     PAPER_MODES,
     ConvergedReference,
@@ -25,9 +27,6 @@ from twoball.verify.studies.quantities import evaluate_quantity, liftoff_specs
 from twoball.verify.studies.reference import LegendreRun, legendre_row, legendre_run
 from twoball.verify.studies.result import Progress, StudyResult, case_settings, quiet, si
 from twoball.verify.studies.trajectory import TrajectoryNorm
-
-from twoball._common.errors import ParameterError
-from twoball._common.watch import Watch
 
 DEFAULT_MODES: tuple[int, ...] = (30, 60, 120, 240, 480)
 MODES_BANDS: dict[str, OrderBand | None] = {
@@ -60,9 +59,8 @@ def check_modes_study(modes: Sequence[int], t_end: float) -> None:
     Its work: one closed-form lift-off per N (:func:`twoball.modal.cost.series_estimate`),
     the converged reference and the unfiltered trajectory reference at 4 max(N).
     """
-    from twoball.modal.cost import reference_estimate, series_estimate
-
     from twoball._common.budget import check
+    from twoball.modal.cost import reference_estimate, series_estimate
 
     estimate = reference_estimate(t_end) + series_estimate(4 * max(modes), t_end)
     for n in modes:

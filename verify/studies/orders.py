@@ -16,6 +16,7 @@ from typing import Literal
 
 import numpy as np
 from numpy.typing import ArrayLike
+
 from twoball.verify.studies.gci import SAFETY_FACTOR, GCIResult, gci, positive_finite, richardson
 
 

@@ -14,6 +14,7 @@ from dataclasses import dataclass, replace
 from typing import Any
 
 import numpy as np
+
 from twoball.modal.parameters import Case
 from twoball.verify.studies.gci import finite_or_none
 from twoball.verify.studies.orders import (

@@ -12,14 +12,14 @@ from dataclasses import dataclass
 from typing import Any
 
 import numpy as np
+
+from twoball._common.watch import Watch
 from twoball.modal.filters import FilterKind, SpectralFilter
 from twoball.modal.legendre import legendre_series
 from twoball.modal.liftoff import Horizon, find_liftoff
 from twoball.modal.parameters import Case
 from twoball.modal.series import ModalSeries
 from twoball.verify.studies.result import si
-
-from twoball._common.watch import Watch
 
 __all__ = [
     "LegendreRun",

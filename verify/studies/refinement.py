@@ -13,6 +13,7 @@ from collections.abc import Sequence
 from dataclasses import replace
 
 import numpy as np
+
 from twoball.modal.filters import FilterKind
 from twoball.modal.initial import deformation_work
 from twoball.modal.liftoff import Horizon

@@ -10,14 +10,13 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 from typing import Any
 
-from twoball.modal.parameters import Case
-from twoball.verify.studies.quantities import QuantityResult
-
 from twoball._common.choices import STUDIES
 from twoball._common.progress import (
     Step as Progress,  # the one progress mechanism (twoball._common.progress)
 )
 from twoball._common.progress import silent as quiet
+from twoball.modal.parameters import Case
+from twoball.verify.studies.quantities import QuantityResult
 
 __all__ = ["STUDIES", "Progress", "StudyResult", "case_settings", "quiet", "si", "time_step_text"]
 

@@ -41,6 +41,7 @@ from dataclasses import dataclass, replace
 from typing import Any
 
 import numpy as np
+
 from twoball.modal.balls.membrane import LegendreBall
 from twoball.modal.balls.shell import WALLS, ShellBall, Wall
 from twoball.modal.contact.body import Body
@@ -194,6 +195,7 @@ def allowed_range() -> tuple[float, float, float]:
     Returns (low, high, match); ``match`` gives degree 2 exactly c = 320 1/s.
     """
     from scipy.optimize import brentq
+
     from twoball.modal.shell import branches
 
     case = _pressurised("basketball")

@@ -23,11 +23,11 @@ import time
 from collections.abc import Sequence
 
 import numpy as np
+
+from twoball._common.errors import ParameterError
 from twoball.verify.studies.orders import OrderBand
 from twoball.verify.studies.quantities import QuantitySpec, evaluate_quantity
 from twoball.verify.studies.result import Progress, StudyResult, quiet
-
-from twoball._common.errors import ParameterError
 
 __all__ = [
     "SOLID_BANDS",

@@ -13,6 +13,8 @@ from collections.abc import Sequence
 from typing import Any
 
 import numpy as np
+
+from twoball._common.watch import Watch
 from twoball.modal.filters import FilterKind
 from twoball.modal.liftoff import Horizon, find_liftoff
 from twoball.modal.parameters import Case
@@ -35,8 +37,6 @@ from twoball.verify.studies.result import (
     time_step_text,
 )
 from twoball.verify.studies.trajectory import TrajectoryNorm, hermite_resample
-
-from twoball._common.watch import Watch
 
 DT_LEVEL_LIMITS = (0, 8)
 DT_BASE = 0.01  # dt of level 0 (dimensionless; omega_N dt = 0.3 for N = 30)

@@ -10,6 +10,7 @@ from typing import Any
 
 import numpy as np
 from numpy.polynomial.legendre import leggauss
+
 from twoball.modal.liftoff import PoleMotion, SampledPoleMotion
 
 

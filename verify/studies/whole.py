@@ -17,6 +17,8 @@ from collections.abc import Sequence
 from dataclasses import dataclass
 
 import numpy as np
+
+from twoball._common.watch import Watch
 from twoball.fem_membrane.floor import axisym_ball
 from twoball.modal.balls.membrane import legendre_ball
 from twoball.modal.contact.body import Body
@@ -29,8 +31,6 @@ from twoball.modal.floor.system import BodyOnTop, floor_system, release_delay
 from twoball.modal.parameters import Case
 from twoball.modal.stiffness import Stiffness
 from twoball.verify.studies.orders import least_squares_order
-
-from twoball._common.watch import Watch
 
 __all__ = ["TABLES", "Precursor", "WholeRun", "main", "precursor", "whole"]
 

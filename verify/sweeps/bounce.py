@@ -20,13 +20,13 @@ from pathlib import Path
 from typing import Any
 
 import numpy as np
+
+from twoball._common.errors import ParameterError
+from twoball._common.keywords import checked
 from twoball.modal.floor.options import Drop
 from twoball.modal.floor.report import BounceReport
 from twoball.modal.parameters import Case
 from twoball.verify.sweeps.sweeps import parse_range
-
-from twoball._common.errors import ParameterError
-from twoball._common.keywords import checked
 
 __all__ = [
     "BOUNCE_PARAMETERS",
@@ -195,10 +195,9 @@ class BounceSweep:
         them) draws the user's points on the panels of the same quantities
         (:mod:`twoball.verify.output.figures.measured`).
         """
+        from twoball._common.staging import check_path_type
         from twoball.verify.output.figures import figure_format, save_figure
         from twoball.verify.output.figures.bounce import speeds_figure
-
-        from twoball._common.staging import check_path_type
 
         figure_format(Path(check_path_type(out)), "out")  # before the figure is drawn
         done = [r for r in self.reports if r is not None]

@@ -4,10 +4,9 @@ from __future__ import annotations
 
 import os
 
-from twoball.modal.cost import reference_estimate, series_estimate
-
 from twoball._common.budget import BASE_MEMORY, Estimate, KiB, MiB, check
 from twoball._common.errors import ParameterError
+from twoball.modal.cost import reference_estimate, series_estimate
 
 __all__ = ["check_count", "check_sweep", "check_worker_budget", "sweep_estimate"]
 

@@ -24,14 +24,14 @@ from dataclasses import dataclass
 from typing import Any
 
 import numpy as np
-from twoball.modal.cost import case_liftoff_work
-from twoball.modal.parameters import FROM_V0, Case
-from twoball.modal.report import LiftoffReport, legendre_liftoff
-from twoball.verify.sweeps.parallel import Runner
 
 from twoball._common.budget import check, check_all
 from twoball._common.choices import SWEEP_PARAMETERS
 from twoball._common.errors import ParameterError
+from twoball.modal.cost import case_liftoff_work
+from twoball.modal.parameters import FROM_V0, Case
+from twoball.modal.report import LiftoffReport, legendre_liftoff
+from twoball.verify.sweeps.parallel import Runner
 
 #: Axis labels (SI) of the swept parameters.
 PARAMETER_LABELS: dict[str, str] = {
@@ -51,9 +51,8 @@ def parse_range(text: str, name: str = "values") -> np.ndarray:
     ``START:STOP:COUNT`` gives ``COUNT`` evenly spaced values from START to STOP
     inclusive; ``v1,v2,...`` the values as written.
     """
-    from twoball.verify.sweeps.cost import check_count
-
     from twoball._common.ranges import parse_values
+    from twoball.verify.sweeps.cost import check_count
 
     if isinstance(text, str) and text.count(":") == 2:  # the budget before building the list
         try:

@@ -14,13 +14,13 @@ import pickle
 
 import numpy as np
 import pytest
+
+from twoball._common.errors import NumericalError
 from twoball.modal.balls.description import ModalBall
 from twoball.modal.balls.membrane import legendre_ball, membrane_rows
 from twoball.modal.damping import ModalRatio
 from twoball.modal.floor.system import floor_system
 from twoball.modal.stiffness import Stiffness
-
-from twoball._common.errors import NumericalError
 
 GAS = 6.0 * 1.4 * (77.2e3 + 101325.0) / 77.2e3
 PRESSURISED = Stiffness(gas=GAS, membrane="pressurised")

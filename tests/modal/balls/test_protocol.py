@@ -24,9 +24,9 @@ from typing import Any
 
 import numpy as np
 import pytest
-from twoball.modal.balls.description import ModalBall
 
 import twoball
+from twoball.modal.balls.description import ModalBall
 
 
 @dataclass(frozen=True)

@@ -15,11 +15,11 @@ from typing import Any
 
 import numpy as np
 import pytest
+
+import twoball
 from twoball.fem_shell.ball import FEShellBall
 from twoball.modal.balls.shell import WALLS, ShellBall, Wall, shell_ball
 from twoball.modal.shell import ShellParameters, shell_modes
-
-import twoball
 
 
 def _case(name: str = "basketball", **changes: Any) -> twoball.Case:

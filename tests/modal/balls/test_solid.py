@@ -6,6 +6,8 @@ import math
 
 import numpy as np
 import pytest
+
+import twoball
 from twoball.modal.balls.solid import (
     MATERIALS,
     hertz_reference,
@@ -15,8 +17,6 @@ from twoball.modal.balls.solid import (
 )
 from twoball.modal.solid.lamb import lamb_function, lamb_roots
 from twoball.modal.solid.modes import spheroidal_modes
-
-import twoball
 
 #: The issue's reference roots of omega R / c_s (Lamb 1882; Saviot's calculator).
 REFERENCES = {

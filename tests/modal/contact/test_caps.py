@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import numpy as np
 import pytest
+
 from twoball.modal.contact.caps import (
     legendre_cap_averages,
     legendre_cap_averages_closed,

@@ -12,6 +12,8 @@ import numpy as np
 import pytest
 import scipy.linalg
 import scipy.sparse.linalg
+
+import twoball
 import twoball.modal.contact.events as events
 from twoball.modal.contact.caps import (
     cap_angle,
@@ -24,8 +26,6 @@ from twoball.modal.contact.system import ContactSystem
 from twoball.modal.legendre import legendre_series
 from twoball.modal.parameters import Case
 from twoball.modal.series import ModalSeries
-
-import twoball
 
 BASKETBALL = Case.preset("basketball")
 

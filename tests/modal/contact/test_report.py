@@ -6,12 +6,12 @@ import math
 
 import numpy as np
 import pytest
-from twoball.modal.contact.report import CONTACT_WARNING, legendre_contact
-from twoball.modal.parameters import Case, preset
 
 import twoball
 from twoball import Body
 from twoball._common.errors import ParameterError
+from twoball.modal.contact.report import CONTACT_WARNING, legendre_contact
+from twoball.modal.parameters import Case, preset
 
 BASKETBALL = Case.preset("basketball")
 

@@ -16,6 +16,8 @@ import math
 import numpy as np
 import pytest
 from numpy.polynomial.legendre import leggauss, legval
+
+import twoball
 from twoball.fem_membrane.floor import axisym_ball, cap_functional_exact
 from twoball.modal.balls.membrane import legendre_ball
 from twoball.modal.contact.caps import legendre_cap_averages_closed
@@ -25,8 +27,6 @@ from twoball.modal.floor.restitution import body_liftoff
 from twoball.modal.floor.system import BodyOnTop, floor_system
 from twoball.modal.nonsmooth import MoreauJean
 from twoball.modal.stiffness import Stiffness
-
-import twoball
 
 R, C = 0.12, 320.0
 V0 = 4.1 / (R * C)

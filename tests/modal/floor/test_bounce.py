@@ -13,6 +13,9 @@ import math
 from functools import cache
 
 import pytest
+
+import twoball
+from tests import ROOT
 from twoball.modal.floor.bounce import (
     ARTEFACT_SECTION,
     E12_FAR_BELOW,
@@ -20,9 +23,6 @@ from twoball.modal.floor.bounce import (
     OVERLAP_NOTE,
     answer_caveats,
 )
-
-import twoball
-from tests import ROOT
 
 MODES = 32
 

@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import pytest
+
 from twoball.modal.balls.membrane import LegendreBall
 from twoball.modal.contact.body import Body
 from twoball.modal.floor.bounce import bounce_problem, simulate

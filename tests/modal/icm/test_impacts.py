@@ -5,6 +5,8 @@ from __future__ import annotations
 import math
 
 import pytest
+
+from twoball._common.errors import ParameterError
 from twoball.modal.icm import (
     icm,
     impact_time,
@@ -18,8 +20,6 @@ from twoball.modal.icm import (
     touching_ratios,
 )
 from twoball.modal.parameters import STANDARD_GRAVITY
-
-from twoball._common.errors import ParameterError
 
 
 def test_impact_closed_forms_hand_values():

@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import pytest
+
 from twoball.modal.icm import (
     light_touching_limit,
     touching_limit,

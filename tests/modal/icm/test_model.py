@@ -7,14 +7,14 @@ import math
 
 import numpy as np
 import pytest
+
+from twoball._common.errors import ParameterError
 from twoball.modal.icm import (
     ICMResult,
     icm,
     light_touching_limit,
     touching_limit,
 )
-
-from twoball._common.errors import ParameterError
 
 # A hand-worked case.  With g = 9.81 and H = g / 2 the impact speed is
 # |v0| = g = 9.81 m/s and t0 = 1 s.  e2 = 0.5: u0 = 4.905 m/s.

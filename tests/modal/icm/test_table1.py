@@ -3,13 +3,13 @@
 from __future__ import annotations
 
 import pytest
+
+from twoball._common.errors import ParameterError
 from twoball.modal.icm import (
     TABLE1,
     round_significant,
     table1_check,
 )
-
-from twoball._common.errors import ParameterError
 
 
 def test_table1_data_complete():

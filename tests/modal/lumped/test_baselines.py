@@ -5,6 +5,7 @@ from __future__ import annotations
 import math
 
 import pytest
+
 from twoball.modal.icm.limits import touching_ratios
 from twoball.modal.lumped import MODELS
 from twoball.modal.lumped.baselines import BASELINE_NAMES, baselines, body_inputs, pair_inputs

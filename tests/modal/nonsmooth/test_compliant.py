@@ -16,6 +16,8 @@ import math
 
 import numpy as np
 import pytest
+
+import twoball
 from twoball.modal.lumped.fitting import (
     _q_from_e,
     hertz_damping,
@@ -25,8 +27,6 @@ from twoball.modal.lumped.fitting import (
 from twoball.modal.nonsmooth import ContactProblem, MoreauJean
 from twoball.modal.nonsmooth.compliant import CompliantMoreauJean, CompliantRow, PowerLaw
 from twoball.modal.solid.hertz import hertz_contact_time
-
-import twoball
 
 
 def _drop(law: PowerLaw, mass=1.0, speed=1.0, steps=200, update=None):

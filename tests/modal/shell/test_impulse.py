@@ -7,6 +7,7 @@ import math
 import numpy as np
 import pytest
 import scipy.integrate
+
 from twoball.modal.presets import MEASURED
 from twoball.modal.shell.impulse import (
     causality_study,

@@ -6,6 +6,7 @@ import numpy as np
 import pytest
 import scipy.integrate
 from numpy.polynomial import legendre
+
 from twoball.modal.shell.modes import legendre_table, shell_modes
 from twoball.modal.shell.parameters import ShellParameters
 

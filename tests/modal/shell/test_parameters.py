@@ -5,10 +5,10 @@ from __future__ import annotations
 import math
 
 import pytest
-from twoball.modal.shell.parameters import ShellParameters, shell_from_si
-from twoball.modal.stiffness import ATMOSPHERE
 
 from twoball._common.errors import ParameterError
+from twoball.modal.shell.parameters import ShellParameters, shell_from_si
+from twoball.modal.stiffness import ATMOSPHERE
 
 
 @pytest.mark.parametrize(

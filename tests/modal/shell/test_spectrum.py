@@ -8,6 +8,7 @@ import numpy as np
 import pytest
 import scipy.linalg
 from numpy.polynomial import legendre
+
 from twoball.modal.shell.parameters import ShellParameters, shell_from_si
 from twoball.modal.shell.spectrum import (
     branches,

@@ -7,6 +7,8 @@ import math
 import numpy as np
 import pytest
 from scipy.integrate import solve_ivp
+
+from twoball._common.errors import ParameterError
 from twoball.modal.solid.hertz import (
     HERTZ_TIME_COEFFICIENT,
     effective_modulus,
@@ -15,8 +17,6 @@ from twoball.modal.solid.hertz import (
     hertz_max_compression,
     hertz_peak_force,
 )
-
-from twoball._common.errors import ParameterError
 
 # a superball-like sphere: 25 mm radius, 1000 kg/m^3, E = 5 MPa, nu = 0.45
 R, RHO, E, NU = 0.025, 1000.0, 5e6, 0.45

@@ -15,6 +15,8 @@ import mpmath
 import numpy as np
 import pytest
 from scipy.special import jv
+
+from twoball._common.errors import ParameterError
 from twoball.modal.solid.lamb import (
     boundary_matrix,
     lamb_function,
@@ -22,8 +24,6 @@ from twoball.modal.solid.lamb import (
     scaled_bessel_pair,
     speed_ratio,
 )
-
-from twoball._common.errors import ParameterError
 
 #: Reference roots eta = omega R / c_s, (nu, n, k) -> eta, as quoted to 4-5 digits in the
 #: project's physics-source notes (an independent solution of Lamb's equation).

@@ -7,6 +7,8 @@ import numpy as np
 import pytest
 from scipy.integrate import quad
 from scipy.special import eval_legendre, lpmv
+
+from twoball._common.errors import ParameterError
 from twoball.modal.solid.lamb import speed_ratio
 from twoball.modal.solid.modes import (
     SphereMode,
@@ -14,8 +16,6 @@ from twoball.modal.solid.modes import (
     spheroidal_modes,
     translation_mode,
 )
-
-from twoball._common.errors import ParameterError
 
 NU = 0.3
 

@@ -5,9 +5,9 @@ from __future__ import annotations
 import math
 
 import pytest
-from twoball.modal.solid.sphere import ElasticSphere
 
 from twoball._common.errors import ParameterError
+from twoball.modal.solid.sphere import ElasticSphere
 
 
 def test_derived_quantities():

@@ -12,12 +12,12 @@ from __future__ import annotations
 import math
 
 import pytest
+
+import twoball
 from twoball.modal.solid.hertz import hertz_contact_time, hertz_max_compression
 from twoball.modal.upper.alone import lumped_alone
 from twoball.modal.upper.laws import ContactLaw
 from twoball.modal.upper.options import LumpedBody
-
-import twoball
 
 
 @pytest.mark.parametrize("speed", [0.05, 0.5])

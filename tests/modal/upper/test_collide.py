@@ -10,14 +10,14 @@ docs quote it): the kinetic energy of the centres left after separation.
 from __future__ import annotations
 
 import pytest
+
+import twoball
 from twoball.modal.balls.membrane import LegendreBall
 from twoball.modal.damping import ModalRatio
 from twoball.modal.floor.inputs import resolve_drop
 from twoball.modal.floor.options import Drop
 from twoball.modal.parameters import Case
 from twoball.modal.upper.collide import free_collision
-
-import twoball
 
 
 def _tennis(modes=32, damping=0.0):

@@ -5,11 +5,11 @@ from __future__ import annotations
 import math
 
 import pytest
+
+import twoball
 from twoball.modal.lumped.fitting import linear_restitution
 from twoball.modal.solid.hertz import hertz_contact_time
 from twoball.modal.upper.laws import ContactLaw
-
-import twoball
 
 
 def test_the_three_stiffness_laws():

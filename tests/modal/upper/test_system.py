@@ -14,12 +14,12 @@ from dataclasses import replace
 
 import numpy as np
 import pytest
+
+import twoball
 from twoball.modal.balls.membrane import legendre_ball
 from twoball.modal.damping import ModalRatio
 from twoball.modal.stiffness import Stiffness
 from twoball.modal.upper.system import lower_rows
-
-import twoball
 
 COARSE = {
     "legendre": lambda: twoball.LegendreBall(24),

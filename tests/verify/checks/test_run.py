@@ -4,6 +4,7 @@ Every check passes, rows state both references.
 """
 
 import pytest
+
 from twoball.modal.parameters import preset
 from twoball.verify.checks.config import config
 from twoball.verify.checks.run import run_verify

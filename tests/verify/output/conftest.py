@@ -1,6 +1,8 @@
 """Solved balls shared by the tests of files, pictures and figures (SI, basketball preset)."""
 
 import pytest
+
+import twoball
 from twoball.fem_membrane.options import MeshOptions
 from twoball.modal.parameters import preset
 from twoball.verify.output.fields import (
@@ -10,8 +12,6 @@ from twoball.verify.output.fields import (
     field_series,
     frame_times,
 )
-
-import twoball
 
 #: The contact case: few Legendre modes keep the coupled solves short.
 CONTACT_CASE = preset("basketball").derive(modes=10)

@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import numpy as np
+
 from twoball.modal.filters import SpectralFilter
 from twoball.modal.legendre import displacement, legendre_series
 

@@ -12,12 +12,12 @@ import sys
 from pathlib import Path
 
 import numpy as np
-from twoball.modal.parameters import preset
-from twoball.verify.output.fields import ball_model, ball_scene, field_mesh
-from twoball.verify.output.render import render_scene
 
 import twoball
 from twoball._common.watch import Watch
+from twoball.modal.parameters import preset
+from twoball.verify.output.fields import ball_model, ball_scene, field_mesh
+from twoball.verify.output.render import render_scene
 
 
 def mapped() -> int:

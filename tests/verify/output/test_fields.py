@@ -5,6 +5,9 @@ from __future__ import annotations
 import numpy as np
 import pytest
 import pyvista as pv
+
+import twoball
+from twoball._common.budget import BudgetError, limits
 from twoball.fem_membrane.initial import initial_load
 from twoball.fem_membrane.options import MeshOptions
 from twoball.fem_membrane.space import sphere_space
@@ -18,9 +21,6 @@ from twoball.verify.output.fields import (
     frames_estimate,
 )
 from twoball.verify.output.series import write_series
-
-import twoball
-from twoball._common.budget import BudgetError, limits
 
 BASKETBALL = twoball.Case.preset("basketball")
 

@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import imageio.v3 as iio
 import numpy as np
+
 from twoball.verify.output.palette import (
     FIXED_COLOURS,
     colour_map_samples,

@@ -14,6 +14,13 @@ from pathlib import Path
 import imageio.v3 as iio
 import numpy as np
 import pytest
+
+import twoball
+from tests import ROOT
+from twoball._common.budget import DeadlineError, limits, running
+from twoball._common.errors import ParameterError
+from twoball._common.staging import SCRATCH_TAG
+from twoball._common.watch import Watch
 from twoball.modal.parameters import preset
 from twoball.verify.output.fields import (
     ball_model,
@@ -35,13 +42,6 @@ from twoball.verify.output.render import (
     round_size,
     surface_triangles,
 )
-
-import twoball
-from tests import ROOT
-from twoball._common.budget import DeadlineError, limits, running
-from twoball._common.errors import ParameterError
-from twoball._common.staging import SCRATCH_TAG
-from twoball._common.watch import Watch
 
 CASE = preset("basketball").derive(modes=10)
 LEVEL_1 = twoball.MeshOptions("sphere", level=1)

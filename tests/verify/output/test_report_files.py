@@ -1,6 +1,7 @@
 """Report folders (verify/output/report_files.py): written whole, never over a user's folder."""
 
 import pytest
+
 from twoball.verify.output.report_files import write_report_dir
 
 
@@ -21,10 +22,9 @@ def test_old_report_survives_a_failed_write(tmp_path):
 
 
 def test_out_refuses_a_folder_that_is_not_a_report(tmp_path):
-    from twoball.verify.output.report_files import check_output_dir, write_report_dir
-
     from twoball._common.errors import ParameterError
     from twoball._common.staging import MARKER
+    from twoball.verify.output.report_files import check_output_dir, write_report_dir
 
     foreign = tmp_path / "home"
     foreign.mkdir()

@@ -19,16 +19,6 @@ import meshio
 import numpy as np
 import pytest
 import pyvista as pv
-from twoball.verify.output import series as export
-from twoball.verify.output.series import (
-    H5_MARK,
-    TimeSeries,
-    check_side_entries,
-    is_twoball_h5,
-    read_series,
-    text_value,
-    write_series,
-)
 from vtkmodules.util.numpy_support import vtk_to_numpy
 from vtkmodules.vtkIOXdmf2 import vtkXdmfReader
 from vtkmodules.vtkIOXML import vtkXMLUnstructuredGridReader
@@ -39,6 +29,16 @@ from tests.helpers import text_of
 from tests.verify.output.nodal import closed_form, fem_values
 from twoball._common.errors import ParameterError
 from twoball._common.staging import staged_collection
+from twoball.verify.output import series as export
+from twoball.verify.output.series import (
+    H5_MARK,
+    TimeSeries,
+    check_side_entries,
+    is_twoball_h5,
+    read_series,
+    text_value,
+    write_series,
+)
 
 FIELDS = ("u_m", "u_t_m_s", "u_tt_m_s2", "displacement_m", "u_fem_m", "u_legendre_m", "u_diff_m")
 

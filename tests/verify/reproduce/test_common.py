@@ -5,6 +5,7 @@ Thresholds, minima, comparison tables.
 
 import numpy as np
 import pytest
+
 from twoball.modal.parameters import preset
 from twoball.verify.reproduce.common import (
     Comparison,

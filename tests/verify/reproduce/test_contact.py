@@ -2,10 +2,9 @@
 
 from __future__ import annotations
 
-from twoball.modal.parameters import Case
-
 import twoball
 from twoball import Body
+from twoball.modal.parameters import Case
 
 BASKETBALL = Case.preset("basketball")
 

@@ -1,6 +1,7 @@
 """The reproduction's parts (verify/reproduce/driver.py): single numbers, no partial output."""
 
 import pytest
+
 from twoball.verify.reproduce import driver as rep
 from twoball.verify.reproduce.common import (
     Context,

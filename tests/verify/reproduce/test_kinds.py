@@ -9,6 +9,8 @@ the same inputs, Table 1 as printed and eq. (2.6).
 from __future__ import annotations
 
 import pytest
+
+import twoball
 from twoball.modal.icm.limits import touching_ratios
 from twoball.modal.icm.table1 import TABLE1
 from twoball.modal.pairs import PAIRS
@@ -16,8 +18,6 @@ from twoball.verify.reproduce import driver
 from twoball.verify.reproduce import kinds as part
 from twoball.verify.reproduce.common import Context
 from twoball.verify.sweeps.parallel import Runner
-
-import twoball
 
 CHOSEN = ("basketball-tennis", "basketball-tissue")
 

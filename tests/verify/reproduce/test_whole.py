@@ -9,6 +9,8 @@ Independent values: Table 1 as printed and eq. (2.6).
 from __future__ import annotations
 
 import pytest
+
+import twoball
 from twoball.modal.icm.limits import touching_ratios
 from twoball.modal.icm.table1 import TABLE1
 from twoball.verify.reproduce import driver
@@ -16,8 +18,6 @@ from twoball.verify.reproduce import whole as part
 from twoball.verify.reproduce.common import Context
 from twoball.verify.sweeps import bounce as sweeps
 from twoball.verify.sweeps.parallel import Runner
-
-import twoball
 
 COARSE = twoball.MoreauJean(twoball.LegendreBall(16))
 TASK = sweeps.BounceTask

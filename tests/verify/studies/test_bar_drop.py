@@ -11,6 +11,7 @@ from __future__ import annotations
 import numpy as np
 import pytest
 import scipy.sparse.linalg as spla
+
 from twoball.modal.nonsmooth import MoreauJean
 from twoball.verify.studies.bar_drop import (
     BAR_BANDS,

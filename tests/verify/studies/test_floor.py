@@ -16,6 +16,7 @@ from __future__ import annotations
 
 import numpy as np
 import pytest
+
 from twoball.verify.studies.floor import resolution_study, time_step_study
 from twoball.verify.studies.orders import OrderBand
 

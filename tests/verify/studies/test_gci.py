@@ -3,6 +3,7 @@
 import math
 
 import pytest
+
 from twoball.verify.studies.gci import classify, gci, three_grid_order
 
 

@@ -1,10 +1,10 @@
 """The study in the number of modes N (verify/studies/modes.py)."""
 
 import pytest
-from twoball.modal.parameters import preset
-from twoball.verify.studies.modes import parse_modes, run_modes_study
 
 from twoball._common.errors import ParameterError
+from twoball.modal.parameters import preset
+from twoball.verify.studies.modes import parse_modes, run_modes_study
 
 
 def test_modes_study_is_second_order_and_states_the_n30_truncation():

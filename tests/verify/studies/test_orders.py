@@ -4,6 +4,7 @@ import math
 
 import numpy as np
 import pytest
+
 from twoball.verify.studies.gci import richardson
 from twoball.verify.studies.orders import (
     OrderBand,

@@ -2,10 +2,10 @@
 
 import numpy as np
 import pytest
-from twoball.modal.parameters import preset
-from twoball.verify.studies.refinement import run_h_study, run_order_study
 
 from tests.helpers import by_key
+from twoball.modal.parameters import preset
+from twoball.verify.studies.refinement import run_h_study, run_order_study
 
 
 @pytest.mark.parametrize(("order", "expected"), [(1, 2.0), (2, 4.0)])

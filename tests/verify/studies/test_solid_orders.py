@@ -3,12 +3,12 @@
 import json
 
 import pytest
-from twoball.verify.studies.orders import OrderBand
-from twoball.verify.studies.quantities import QuantitySpec, evaluate_quantity
-from twoball.verify.studies.solid_orders import SOLID_BANDS, run_solid_h_study
 
 from twoball._common.errors import ParameterError
 from twoball.cli.main import main
+from twoball.verify.studies.orders import OrderBand
+from twoball.verify.studies.quantities import QuantitySpec, evaluate_quantity
+from twoball.verify.studies.solid_orders import SOLID_BANDS, run_solid_h_study
 
 
 @pytest.mark.parametrize(

@@ -3,12 +3,12 @@
 import re
 
 import pytest
-from twoball.modal.parameters import preset
-from twoball.verify.output.report_files import study_csv, study_markdown, verify_markdown
-from twoball.verify.studies.time_step import run_dt_study
 
 import twoball
 from tests.helpers import by_key
+from twoball.modal.parameters import preset
+from twoball.verify.output.report_files import study_csv, study_markdown, verify_markdown
+from twoball.verify.studies.time_step import run_dt_study
 
 
 @pytest.mark.slow

@@ -3,10 +3,10 @@
 from __future__ import annotations
 
 import numpy as np
-from twoball.modal.parameters import Case, preset
-from twoball.verify.sweeps.sweeps import SweepSolver, sweep_cases
 
 from twoball._common.errors import NumericalError
+from twoball.modal.parameters import Case, preset
+from twoball.verify.sweeps.sweeps import SweepSolver, sweep_cases
 
 
 def cases(count=40):

@@ -7,11 +7,11 @@ import os
 import time
 
 import pytest
+
+from tests.verify.sweeps.helpers import FailAbove, cases
 from twoball.verify.sweeps import parallel
 from twoball.verify.sweeps.parallel import MIN_PARALLEL_ITEMS, Outcome, Runner, chunk_size
 from twoball.verify.sweeps.sweeps import SweepSolver, run_sweep
-
-from tests.verify.sweeps.helpers import FailAbove, cases
 
 
 def dicts(points):

@@ -5,15 +5,15 @@ import math
 
 import numpy as np
 import pytest
+
+import twoball
+from tests.verify.sweeps.helpers import FailAbove, cases
+from twoball.cli.main import main
 from twoball.modal.initial import phi_a_from_v0
 from twoball.modal.parameters import preset
 from twoball.verify.output.figures.sweep import sweep_figure
 from twoball.verify.sweeps.parallel import Runner
 from twoball.verify.sweeps.sweeps import SweepGrid, make_grid, run_sweep
-
-import twoball
-from tests.verify.sweeps.helpers import FailAbove, cases
-from twoball.cli.main import main
 
 
 def test_a_failed_point_is_a_row_with_its_parameters():

@@ -5,9 +5,9 @@ from __future__ import annotations
 import csv
 
 import pytest
-from twoball.verify.sweeps.table import BOUNCE_COLUMNS, LIFTOFF_COLUMNS
 
 import twoball
+from twoball.verify.sweeps.table import BOUNCE_COLUMNS, LIFTOFF_COLUMNS
 
 
 def read(path) -> list[dict[str, str]]:

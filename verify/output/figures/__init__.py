@@ -124,9 +124,9 @@ def save_figure(
         Writing failed (full disk, ...); it names ``path``, and ``path`` is unchanged.
     """
     import matplotlib
-    from twoball.verify.output.figures.style import style_rc
 
     from twoball._common.staging import check_path_type, staged_file
+    from twoball.verify.output.figures.style import style_rc
 
     out = Path(check_path_type(path, flag)).expanduser()
     kind = figure_format(out, flag)

@@ -17,6 +17,8 @@ from collections.abc import Sequence
 from typing import TYPE_CHECKING, Any
 
 import numpy as np
+
+from twoball._common.errors import ParameterError
 from twoball.modal.floor.drop import DropResult
 from twoball.modal.floor.references import MEASURED_COMPRESSION, pressure_area
 from twoball.modal.parameters import Case
@@ -30,8 +32,6 @@ from twoball.verify.output.figures.style import (
     time_label,
 )
 from twoball.verify.output.forces import contact_forces
-
-from twoball._common.errors import ParameterError
 
 if TYPE_CHECKING:
     from matplotlib.figure import Figure

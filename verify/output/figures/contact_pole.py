@@ -14,6 +14,7 @@ from __future__ import annotations
 from typing import TYPE_CHECKING, Any
 
 import numpy as np
+
 from twoball.verify.output.fields import CoupledModel
 from twoball.verify.output.figures import LABELS, new_figure
 from twoball.verify.output.figures.pole import clip_acceleration, draw_differences

@@ -12,6 +12,7 @@ from collections.abc import Sequence
 from typing import TYPE_CHECKING, Any
 
 import numpy as np
+
 from twoball.verify.output.figures import new_figure
 from twoball.verify.output.figures.style import label, styled
 

@@ -8,11 +8,11 @@ from dataclasses import dataclass
 from typing import TYPE_CHECKING
 
 import numpy as np
-from twoball.verify.output.figures import new_figure
-from twoball.verify.output.figures.style import chunks, label, styled
 
 from twoball._common.errors import ParameterError
 from twoball._common.watch import Watch
+from twoball.verify.output.figures import new_figure
+from twoball.verify.output.figures.style import chunks, label, styled
 
 if TYPE_CHECKING:
     from matplotlib.figure import Figure

@@ -7,6 +7,7 @@ from collections.abc import Sequence
 from typing import TYPE_CHECKING
 
 import numpy as np
+
 from twoball.modal.parameters import Case
 from twoball.verify.output.figures import new_figure
 from twoball.verify.output.figures.style import (

@@ -14,6 +14,7 @@ from collections.abc import Mapping, Sequence
 from typing import TYPE_CHECKING
 
 import numpy as np
+
 from twoball.verify.output.figures import new_figure
 from twoball.verify.output.figures.measured import MARKER, MEASURED_COLOUR
 from twoball.verify.output.figures.style import REFERENCE_COLOUR, label, styled

@@ -42,6 +42,7 @@ from pathlib import Path
 from typing import Any
 
 import numpy as np
+
 from twoball.verify.fit.data import Measurements
 from twoball.verify.output.figures.style import styled
 

@@ -14,6 +14,7 @@ from dataclasses import dataclass
 from typing import TYPE_CHECKING, Any
 
 import numpy as np
+
 from twoball.modal.liftoff import PoleMotion
 from twoball.modal.parameters import Case
 from twoball.verify.output.fields import BallModel

@@ -26,6 +26,8 @@ from dataclasses import dataclass
 from typing import TYPE_CHECKING, Any
 
 import numpy as np
+
+from twoball._common.watch import Watch
 from twoball.modal.damping import ModalRatio, Rayleigh
 from twoball.modal.filters import SpectralFilter
 from twoball.modal.legendre import legendre_series
@@ -42,8 +44,6 @@ from twoball.verify.output.figures.style import (
     subject,
     time_label,
 )
-
-from twoball._common.watch import Watch
 
 if TYPE_CHECKING:
     from matplotlib.figure import Figure

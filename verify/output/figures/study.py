@@ -11,6 +11,7 @@ import re
 from typing import TYPE_CHECKING
 
 import numpy as np
+
 from twoball.verify.output.figures import new_figure
 from twoball.verify.output.figures.style import (
     MAX_CURVES,

@@ -7,6 +7,7 @@ from pathlib import Path
 from typing import TYPE_CHECKING
 
 import numpy as np
+
 from twoball.verify.output.figures import new_figure
 from twoball.verify.output.figures.style import label, styled
 from twoball.verify.sweeps.sweeps import PARAMETER_LABELS, SweepGrid, SweepPoint, phi_a_rule

@@ -6,12 +6,12 @@ import math
 from typing import TYPE_CHECKING, Any
 
 import numpy as np
-from twoball.verify.output.fields import BallModel, node_polar_angles
-from twoball.verify.output.figures import LABELS, new_figure
-from twoball.verify.output.figures.style import STACKED, difference_unit, label, styled, subject
 
 from twoball._common.choices import WATERFALL_INSTANTS
 from twoball._common.errors import ParameterError
+from twoball.verify.output.fields import BallModel, node_polar_angles
+from twoball.verify.output.figures import LABELS, new_figure
+from twoball.verify.output.figures.style import STACKED, difference_unit, label, styled, subject
 
 if TYPE_CHECKING:
     from matplotlib.figure import Figure

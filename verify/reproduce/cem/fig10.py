@@ -6,6 +6,7 @@ import math
 from typing import TYPE_CHECKING
 
 import numpy as np
+
 from twoball.modal.initial import phi_a_from_v0, v0_dimensionless
 from twoball.verify.output.figures.style import label, styled
 from twoball.verify.reproduce.common import Comparison, Context, Section, new_figure, save

@@ -11,6 +11,7 @@ from typing import TYPE_CHECKING, Any
 
 import numpy as np
 from scipy.optimize import brentq
+
 from twoball.modal.parameters import preset
 from twoball.modal.scalings import STANDARD_GRAVITY as G
 from twoball.verify.output.figures.style import REFERENCE_COLOUR, label, styled

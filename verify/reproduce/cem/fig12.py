@@ -11,6 +11,7 @@ from typing import TYPE_CHECKING
 
 import numpy as np
 from scipy.optimize import minimize_scalar
+
 from twoball.modal.parameters import Case, preset
 from twoball.modal.scalings import STANDARD_GRAVITY as G
 from twoball.verify.output.figures.style import label, styled

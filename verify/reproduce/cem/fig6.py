@@ -6,13 +6,13 @@ import math
 from typing import TYPE_CHECKING
 
 import numpy as np
+
+from twoball._common.watch import Watch
 from twoball.modal.filters import SpectralFilter
 from twoball.modal.legendre import displacement, legendre_series
 from twoball.modal.parameters import preset
 from twoball.verify.output.figures.style import STACKED, label, styled
 from twoball.verify.reproduce.common import Context, Section, liftoff, new_figure, save
-
-from twoball._common.watch import Watch
 
 if TYPE_CHECKING:
     from matplotlib.figure import Figure

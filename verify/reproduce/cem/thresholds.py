@@ -10,6 +10,7 @@ import math
 
 import numpy as np
 from scipy.optimize import brentq
+
 from twoball.modal.legendre import (
     legendre_coefficients,
     legendre_coefficients_recurrence,

@@ -4,10 +4,10 @@ from __future__ import annotations
 
 import numpy as np
 import pytest
-from twoball.verify.output.figures.bounce import EVENT_LINE, event_clusters, whole_figure
-from twoball.verify.output.forces import mean_force
 
 import twoball
+from twoball.verify.output.figures.bounce import EVENT_LINE, event_clusters, whole_figure
+from twoball.verify.output.forces import mean_force
 
 
 @pytest.fixture(scope="module")

@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import numpy as np
+
 from twoball.verify.output.figures.contact_pole import BODY_GID, EVENT_GID, contact_pole_figure
 from twoball.verify.output.figures.style import curves
 

@@ -3,9 +3,9 @@
 from __future__ import annotations
 
 import numpy as np
-from twoball.verify.output.figures.drop_sweep import drop_sweep_figure, sweep_axis_label
 
 import twoball
+from twoball.verify.output.figures.drop_sweep import drop_sweep_figure, sweep_axis_label
 
 
 def test_three_panels_against_the_swept_value():

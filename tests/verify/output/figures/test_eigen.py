@@ -4,11 +4,11 @@ from __future__ import annotations
 
 import numpy as np
 import pytest
-from twoball.verify.output.figures import save_figure
-from twoball.verify.output.figures.eigen import eigen_figure, eigen_table
 
 from tests.helpers import drawn
 from twoball._common.errors import ParameterError
+from twoball.verify.output.figures import save_figure
+from twoball.verify.output.figures.eigen import eigen_figure, eigen_table
 
 
 def test_eigen_errors_decrease_with_refinement(tmp_path):

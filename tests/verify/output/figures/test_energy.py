@@ -4,6 +4,8 @@ from __future__ import annotations
 
 import numpy as np
 import pytest
+
+from tests.helpers import closed_form_series
 from twoball.modal.filters import SpectralFilter
 from twoball.modal.legendre import legendre_series
 from twoball.modal.parameters import preset
@@ -12,8 +14,6 @@ from twoball.verify.output.figures.style import (
     DIMENSIONLESS,
     curves,
 )
-
-from tests.helpers import closed_form_series
 
 
 def test_energy_per_kilogram_starts_at_the_impact_energy():

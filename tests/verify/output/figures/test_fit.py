@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import numpy as np
+
 from twoball.verify.output.figures.fit import fit_figure, x_axis
 
 

@@ -3,10 +3,10 @@
 from __future__ import annotations
 
 import pytest
-from twoball.verify.output.figures import save_figure
-from twoball.verify.output.figures.eigen import eigen_figure, eigen_table
 
 from twoball._common.errors import ParameterError
+from twoball.verify.output.figures import save_figure
+from twoball.verify.output.figures.eigen import eigen_figure, eigen_table
 
 
 def test_save_figure_checks_the_path(model, tmp_path):

@@ -4,6 +4,8 @@ from __future__ import annotations
 
 import numpy as np
 import pytest
+
+import twoball
 from twoball.verify.fit.data import Measurements
 from twoball.verify.output.figures.measured import (
     MEASURED_COLOUR,
@@ -13,8 +15,6 @@ from twoball.verify.output.figures.measured import (
     overlay_for,
     sweep_overlay,
 )
-
-import twoball
 
 
 def measured_artists(figure) -> int:

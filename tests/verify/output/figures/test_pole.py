@@ -4,14 +4,14 @@ from __future__ import annotations
 
 import numpy as np
 import pytest
+
+from tests.helpers import drawn
 from twoball.fem_membrane.options import MeshOptions
 from twoball.modal.parameters import preset
 from twoball.verify.output.fields import ball_model, field_mesh
 from twoball.verify.output.figures import save_figure
 from twoball.verify.output.figures.pole import pole_figure
 from twoball.verify.output.figures.style import curves
-
-from tests.helpers import drawn
 
 
 def test_pole_plot_marks_liftoff(model, tmp_path):

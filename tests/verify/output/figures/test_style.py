@@ -9,6 +9,9 @@ import re
 from pathlib import Path
 
 import numpy as np
+
+import twoball
+from tests.helpers import closed_form_series
 from twoball.modal.legendre import displacement
 from twoball.verify.output.fields import ball_model, coupled_model, field_mesh
 from twoball.verify.output.figures.contact import contact_figure
@@ -43,9 +46,6 @@ from twoball.verify.reproduce.common import acceleration_minima, liftoff
 from twoball.verify.studies.modes import run_modes_study
 from twoball.verify.studies.refinement import run_h_study
 from twoball.verify.sweeps.sweeps import SweepSolver, make_grid, run_sweep
-
-import twoball
-from tests.helpers import closed_form_series
 
 UNIT = re.compile(r"\[[^\[\]]+\]")
 #: ASCII pseudo-math the style replaces by mathtext (outside $...$).
@@ -327,6 +327,7 @@ def test_crowded_data_becomes_small_multiples(case, coarse):
 
 def test_cycle_colours_are_the_styles_wherever_the_figure_is_saved(tmp_path):
     from matplotlib.colors import to_hex
+
     from twoball.verify.output.figures import new_figure
     from twoball.verify.output.figures.style import COLOURS, styled
 

@@ -4,14 +4,14 @@ from __future__ import annotations
 
 import numpy as np
 import pytest
+
+from tests.helpers import drawn
+from twoball._common.errors import ParameterError
 from twoball.fem_membrane.options import MeshOptions
 from twoball.modal.parameters import preset
 from twoball.verify.output.fields import ball_model, field_mesh
 from twoball.verify.output.figures import save_figure
 from twoball.verify.output.figures.waterfall import waterfall_figure, waterfall_times
-
-from tests.helpers import drawn
-from twoball._common.errors import ParameterError
 
 
 def test_waterfall_has_24_curves_of_each_backend(model, tmp_path):

@@ -1,6 +1,7 @@
 """Fig. 11 of the paper (verify/reproduce/cem/fig11.py): the fitted damping."""
 
 import pytest
+
 from twoball.verify.reproduce.cem.fig11 import _fit_damping
 
 

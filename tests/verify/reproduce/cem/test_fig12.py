@@ -3,6 +3,7 @@
 import math
 
 import pytest
+
 from twoball.verify.reproduce.cem.fig12 import OptimumTask, fig12_base, main_branch
 
 

@@ -1,6 +1,7 @@
 """Threshold tasks of the reproduction (verify/reproduce/cem/tasks.py)."""
 
 import pytest
+
 from twoball.modal.parameters import preset
 from twoball.verify.reproduce.cem.fig12 import fig12_base
 from twoball.verify.reproduce.cem.tasks import ThresholdTask
