@@ -88,30 +88,24 @@ sphinx_gallery_conf = {
 }
 
 
-def _shell_figures(app) -> None:  # noqa: ANN001
-    """Draw docs/_static/shell/causality.png (docs/shell.rst) anew at every build."""
-    import importlib.util
+def _figures(script: str):  # noqa: ANN202
+    """A builder-inited hook that runs ``docs/<script>.py``'s ``main()`` at every build."""
 
-    spec = importlib.util.spec_from_file_location(
-        "make_shell_figures", Path(__file__).resolve().parent / "make_shell_figures.py"
-    )
-    module = importlib.util.module_from_spec(spec)
-    spec.loader.exec_module(module)
-    module.main()
+    def draw(app) -> None:  # noqa: ANN001
+        import importlib.util
 
+        spec = importlib.util.spec_from_file_location(
+            script, Path(__file__).resolve().parent / f"{script}.py"
+        )
+        module = importlib.util.module_from_spec(spec)
+        spec.loader.exec_module(module)
+        module.main()
 
-def _fit_figures(app) -> None:  # noqa: ANN001
-    """Draw docs/_static/fit/drops_fit.png (docs/fit.rst) anew at every build."""
-    import importlib.util
-
-    spec = importlib.util.spec_from_file_location(
-        "make_fit_figures", Path(__file__).resolve().parent / "make_fit_figures.py"
-    )
-    module = importlib.util.module_from_spec(spec)
-    spec.loader.exec_module(module)
-    module.main()
+    return draw
 
 
 def setup(app):  # noqa: ANN001, ANN201
-    app.connect("builder-inited", _shell_figures)
-    app.connect("builder-inited", _fit_figures)
+    # docs/_static/shell/causality.png (docs/shell.rst), docs/_static/fit/drops_fit.png
+    # (docs/fit.rst), drawn anew at every build
+    for script in ("make_shell_figures", "make_fit_figures"):
+        app.connect("builder-inited", _figures(script))
