@@ -26,29 +26,17 @@ for _name in ("OPENBLAS_NUM_THREADS", "OMP_NUM_THREADS", "MKL_NUM_THREADS"):
 import argparse  # noqa: E402
 import platform  # noqa: E402
 import sys  # noqa: E402
-import time  # noqa: E402
 from collections.abc import Callable  # noqa: E402
 from pathlib import Path  # noqa: E402
 
 import numpy as np  # noqa: E402
+from timing import timed  # noqa: E402
 
 ROOT = Path(__file__).resolve().parent.parent
 if str(ROOT) not in sys.path:
     sys.path.insert(0, str(ROOT))
 
 PAIR = "basketball-tennis"
-
-
-def timed(task: Callable[[], object], repeats: int) -> tuple[np.ndarray, np.ndarray]:
-    """Wall and CPU times [s] of ``repeats`` runs after one untimed warm-up."""
-    task()
-    wall, cpu = [], []
-    for _ in range(repeats):
-        start, start_cpu = time.perf_counter(), time.process_time()
-        task()
-        wall.append(time.perf_counter() - start)
-        cpu.append(time.process_time() - start_cpu)
-    return np.array(wall), np.array(cpu)
 
 
 def main(argv: list[str] | None = None) -> int:

@@ -40,19 +40,9 @@ ROOT = Path(__file__).resolve().parent.parent
 if str(ROOT) not in sys.path:
     sys.path.insert(0, str(ROOT))
 
+from timing import timed  # noqa: E402
+
 PAIR = "basketball-tennis"
-
-
-def timed(task: Callable[[], object], repeats: int) -> tuple[np.ndarray, np.ndarray]:
-    """Wall and CPU times [s] of ``repeats`` runs after one untimed warm-up."""
-    task()
-    wall, cpu = [], []
-    for _ in range(repeats):
-        start, start_cpu = time.perf_counter(), time.process_time()
-        task()
-        wall.append(time.perf_counter() - start)
-        cpu.append(time.process_time() - start_cpu)
-    return np.array(wall), np.array(cpu)
 
 
 def main(argv: list[str] | None = None) -> int:

@@ -72,7 +72,6 @@ import numpy as np
 from twoball._common.errors import NumericalError, ParameterError
 from twoball.modal.nonsmooth.lcp import solve_lcp
 from twoball.modal.nonsmooth.moreau_jean import (
-    ContactEvent,
     MoreauJean,
     StepperState,
     StepRecord,
@@ -359,28 +358,9 @@ class CompliantMoreauJean(MoreauJean):
         return state
 
     # --- one step -----------------------------------------------------------------------
-    def _impacts(self, state: StepperState, record: StepRecord) -> np.ndarray:
-        """Newton's law (MJ4) on the rigid rows in contact (a compliant row has no impact)."""
-        p = self.problem
-        gap = p.gap(state.q)
-        touching = ((gap <= self.gap_tolerance) | state.arrived) & ~self._mask
-        U = p.normal_velocity(state.v)
-        striking = touching & (U < -max(self.velocity_tolerance, self.zeno_velocity))
-        if not striking.any():
-            return touching
-        idx = np.flatnonzero(touching)
-        D = self._mass_delassus[idx[:, None], idx]
-        b = (1.0 + p.restitution[idx]) * U[idx]
-        sol = solve_lcp(D, b, guess=striking[idx])
-        dv = self._mass_y[:, idx] @ sol.z
-        v_after = state.v + dv
-        U_after = p.normal_velocity(v_after)
-        state.impact_work += 0.5 * float(sol.z @ (U[idx] + U_after[idx]))
-        state.v = v_after
-        record.impact_impulse[idx] += sol.z
-        for i in np.flatnonzero(striking):
-            record.events.append(ContactEvent(state.t, int(i), "impact", float(U[i])))
-        return touching
+    def _touching(self, state: StepperState) -> np.ndarray:
+        """The rigid rows in contact: a compliant row has no impact (Newton's law, MJ4)."""
+        return super()._touching(state) & ~self._mask
 
     def _smooth(
         self, q: np.ndarray, v: np.ndarray, h: float, active: np.ndarray, guess: np.ndarray

@@ -302,11 +302,14 @@ class MoreauJean:
         none = np.zeros(m, dtype=bool)
         return StepperState(float(t0), q, v, none.copy(), none.copy())
 
+    def _touching(self, state: StepperState) -> np.ndarray:
+        """The constraints in contact at the state: closed or arrived in the last step."""
+        return (self.problem.gap(state.q) <= self.gap_tolerance) | state.arrived
+
     def _impacts(self, state: StepperState, record: StepRecord) -> np.ndarray:
         """Newton's law (MJ4) on the constraints in contact; returns the contact mask."""
         p = self.problem
-        gap = p.gap(state.q)
-        touching = (gap <= self.gap_tolerance) | state.arrived
+        touching = self._touching(state)
         U = p.normal_velocity(state.v)
         # arrivals slower than the Zeno speed are no impacts: the step's LCP holds
         # them (its contact work, 1/2 P U0 <= 0, books the small loss)
