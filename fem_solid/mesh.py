@@ -245,24 +245,7 @@ def ball_gmsh(size: float, surface_size: float | None = None) -> MeshTet2:
         gmsh.model.add("ball")
         gmsh.model.occ.addSphere(0, 0, 0, 1.0)
         gmsh.model.occ.synchronize()
-        if surface < size:
-            field = gmsh.model.mesh.field
-            dist = field.add("MathEval")
-            # the size grows linearly with the depth below the surface
-            field.setString(
-                dist, "F", f"{surface} + ({size} - {surface}) * (1 - sqrt(x^2+y^2+z^2)) / 0.3"
-            )
-            cap = field.add("Min")
-            const = field.add("MathEval")
-            field.setString(const, "F", f"{size}")
-            field.setNumbers(cap, "FieldsList", [dist, const])
-            field.setAsBackgroundMesh(cap)
-            gmsh.option.setNumber("Mesh.MeshSizeFromPoints", 0)
-            gmsh.option.setNumber("Mesh.MeshSizeExtendFromBoundary", 0)
-            gmsh.option.setNumber("Mesh.MeshSizeFromCurvature", 0)
-        else:
-            gmsh.option.setNumber("Mesh.MeshSizeMin", size)
-            gmsh.option.setNumber("Mesh.MeshSizeMax", size)
+        _size_field(gmsh, size, surface)
         gmsh.option.setNumber("Mesh.Optimize", 1)
         gmsh.model.mesh.generate(3)
         tags, coords, _ = gmsh.model.mesh.getNodes()
