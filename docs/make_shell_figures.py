@@ -44,14 +44,14 @@ def _draw():  # noqa: ANN202
     from twoball.modal.balls.shell import WALLS, ShellBall
     from twoball.verify.output.figures import new_figure
     from twoball.verify.output.figures.style import DIMENSIONLESS, label, time_label
-    from twoball.verify.studies.shell import responses, without_gas
+    from twoball.verify.studies.shell import WithoutGas, responses
 
     c = 320.0
     arrival = math.pi / (c * math.sqrt(WALLS["basketball"].wall_stiffness_ratio))
     runs = [
         ("membrane (radial), D = 0.13", LegendreBall(), 0.13, "C3", "-"),
         ("shell, adiabatic gas, D = 0.13", ShellBall(), 0.13, "C0", "-"),
-        ("shell, no gas, D = 0", without_gas(ShellBall()), 0.0, "C0", "--"),
+        ("shell, no gas, D = 0", WithoutGas(ShellBall()), 0.0, "C0", "--"),
     ]
     figure = new_figure(7.0, 6.6)
     top_axis, ratio_axis = figure.subplots(2, 1, sharex=True)

@@ -54,6 +54,7 @@ from twoball.modal.parameters import Case
 __all__ = [
     "RATIOS",
     "TABLES",
+    "WithoutGas",
     "allowed_range",
     "causality",
     "main",
@@ -229,40 +230,42 @@ def allowed_table() -> str:
 # --- causality --------------------------------------------------------------------------
 
 
-def without_gas(ball: Any) -> Any:
-    """The ball with its breathing mode's gas share taken away (the wall's own causality)."""
+@dataclass(frozen=True)
+class WithoutGas:
+    """A shell ball whose breathing mode keeps its wall stiffness but loses the gas's.
 
-    @dataclass(frozen=True)
-    class WithoutGas:
-        inner: Any
-        kind = "shell"
+    The enclosed gas acts as a uniform pressure: it moves the top at once (a real
+    gas carries that signal at its speed of sound), so the wall's own causality is
+    measured without it.
+    """
 
-        @property
-        def backend(self) -> str:
-            return self.inner.backend
+    inner: Any
+    kind = "shell"
 
-        @property
-        def label(self) -> str:
-            return f"{self.inner.label}, no gas"
+    @property
+    def backend(self) -> str:
+        return self.inner.backend
 
-        def mass(self, case: Case) -> float:
-            return self.inner.mass(case)
+    @property
+    def label(self) -> str:
+        return f"{self.inner.label}, no gas"
 
-        def size(self, case: Case) -> Any:
-            return self.inner.size(case)
+    def mass(self, case: Case) -> float:
+        return self.inner.mass(case)
 
-        def summary(self, case: Case) -> dict[str, Any]:
-            return self.inner.summary(case)
+    def size(self, case: Case) -> Any:
+        return self.inner.size(case)
 
-        def describe(self, case: Case, monitor: Any = None) -> Any:
-            b = self.inner.describe(case, monitor)
-            w2 = b.omega_squared - b.gas_squared
-            return replace(b, omega_squared=w2, gas_squared=0.0 * w2)
+    def summary(self, case: Case) -> dict[str, Any]:
+        return self.inner.summary(case)
 
-        def as_dict(self) -> dict[str, Any]:
-            return {"ball": "no gas", "inner": self.inner.as_dict()}
+    def describe(self, case: Case, monitor: Any = None) -> Any:
+        b = self.inner.describe(case, monitor)
+        w2 = b.omega_squared - b.gas_squared
+        return replace(b, omega_squared=w2, gas_squared=0.0 * w2)
 
-    return WithoutGas(ball)
+    def as_dict(self) -> dict[str, Any]:
+        return {"ball": "no gas", "inner": self.inner.as_dict()}
 
 
 def responses(
@@ -311,11 +314,11 @@ def causality_table(fractions: Sequence[float] = (0.05, 0.25, 0.5, 0.75, 1.0, 1.
     from twoball.fem_shell.ball import FEShellBall
 
     cases = [
-        ("shell, legendre N = 128, no gas, D = 0", without_gas(ShellBall()), 0.0),
-        ("shell, P2 64 elements, no gas, D = 0", without_gas(FEShellBall()), 0.0),
-        ("shell, P2 128 elements, no gas, D = 0", without_gas(FEShellBall(elements=128)), 0.0),
+        ("shell, legendre N = 128, no gas, D = 0", WithoutGas(ShellBall()), 0.0),
+        ("shell, P2 64 elements, no gas, D = 0", WithoutGas(FEShellBall()), 0.0),
+        ("shell, P2 128 elements, no gas, D = 0", WithoutGas(FEShellBall(elements=128)), 0.0),
         ("shell, legendre N = 128, adiabatic gas, D = 0", ShellBall(), 0.0),
-        ("shell, legendre N = 128, no gas, D = 0.13", without_gas(ShellBall()), 0.13),
+        ("shell, legendre N = 128, no gas, D = 0.13", WithoutGas(ShellBall()), 0.13),
         ("shell, legendre N = 128, adiabatic gas, D = 0.13", ShellBall(), 0.13),
         ("membrane, legendre N = 192, D = 0", LegendreBall(), 0.0),
         ("membrane, legendre N = 192, D = 0.13", LegendreBall(), 0.13),

@@ -9,7 +9,6 @@ membrane's top moves down at once (the degree-1 artefact).
 
 from __future__ import annotations
 
-import dataclasses
 import math
 from typing import Any
 
@@ -20,6 +19,7 @@ import twoball
 from twoball.fem_shell.ball import FEShellBall
 from twoball.modal.balls.shell import WALLS, ShellBall, Wall, shell_ball
 from twoball.modal.shell import ShellParameters, shell_modes
+from twoball.verify.studies.shell import WithoutGas
 
 
 def _case(name: str = "basketball", **changes: Any) -> twoball.Case:
@@ -288,44 +288,6 @@ def test_a_large_gap_under_gravity_is_the_icm_within_g_tc():
 
 
 # --- causality in the drop --------------------------------------------------------------
-
-
-@dataclasses.dataclass(frozen=True)
-class WithoutGas:
-    """A shell ball whose breathing mode keeps its wall stiffness but loses the gas's.
-
-    The enclosed gas acts as a uniform pressure: it moves the top at once (a real
-    gas carries that signal at its speed of sound), so the wall's own causality
-    is measured without it.
-    """
-
-    inner: Any
-    kind = "shell"
-
-    @property
-    def backend(self) -> str:
-        return self.inner.backend
-
-    @property
-    def label(self) -> str:
-        return f"{self.inner.label} without the gas"
-
-    def mass(self, case: Any) -> float:
-        return self.inner.mass(case)
-
-    def size(self, case: Any) -> Any:
-        return self.inner.size(case)
-
-    def summary(self, case: Any) -> dict[str, Any]:
-        return self.inner.summary(case)
-
-    def describe(self, case: Any, monitor: Any = None) -> Any:
-        ball = self.inner.describe(case, monitor)
-        w2 = ball.omega_squared - ball.gas_squared
-        return dataclasses.replace(ball, omega_squared=w2, gas_squared=0.0 * w2)
-
-    def as_dict(self) -> dict[str, Any]:
-        return {"ball": "shell without gas", "inner": self.inner.as_dict()}
 
 
 def top_over_centre(ball: Any, case: twoball.Case, cap: float | None, t_end: float | None = None):
