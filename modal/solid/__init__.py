@@ -10,7 +10,6 @@ from twoball._common.lazy import attach
 __getattr__, __dir__ = attach(
     __name__,
     {
-        "ElasticSphere": ".sphere",
         "HERTZ_TIME_COEFFICIENT": ".hertz",
         "SphereMode": ".modes",
         "boundary_matrix": ".lamb",

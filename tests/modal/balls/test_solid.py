@@ -169,3 +169,17 @@ def test_the_slow_impact_tends_to_hertz():
     forces = [abs(e[1]) for e in errors]
     assert times[0] > times[1] > times[2] and forces[0] > forces[2]
     assert times[2] < 0.045 and forces[2] < 0.055
+
+
+def test_the_materials_derived_moduli_and_speeds():
+    """nu = 1/4: Lame's lambda equals mu, so c_p / c_s = sqrt(3); c = c_s / R puts Lamb's
+    n = 2 root 2.6399 (the reference value) at omega = eta c_s / R."""
+    m = twoball.SolidMaterial(density=1100.0, youngs_modulus=5e6, poisson=0.25)
+    mu = m.shear_modulus
+    assert mu == pytest.approx(2e6)
+    assert m.pressure_speed == pytest.approx(math.sqrt((mu + 2 * mu) / 1100.0))
+    assert m.pressure_speed / m.shear_speed == pytest.approx(math.sqrt(3))
+    assert m.mass(0.025) == pytest.approx(4 / 3 * math.pi * 0.025**3 * 1100)
+    eta = lamb_roots(2, 0.25, 1)[0]
+    omega = eta * m.wave_speed(0.025)
+    assert omega * 0.025 / m.shear_speed == pytest.approx(2.6399, abs=6e-5)
